@@ -1,0 +1,57 @@
+#include "core/grid.hpp"
+
+#include <cmath>
+#include <limits>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+
+void check_grid_fits(long long width, long long height, long long bytes_per_cell, const std::string& what) {
+  if (width <= 0 || height <= 0) {
+    throw InputError(fmt::format("{}: size {}x{} is empty", what, width, height));
+  }
+  constexpr long long max_side = 1 << 20;
+  if (width > max_side || height > max_side) {
+    throw InputError(fmt::format("{}: size {}x{} exceeds the largest supported side of {} cells", what, width,
+                                 height, max_side));
+  }
+  const long long pages = sysconf(_SC_PHYS_PAGES);
+  const long long page_size = sysconf(_SC_PAGE_SIZE);
+  const double physical = static_cast<double>(pages) * static_cast<double>(page_size);
+  const double needed = static_cast<double>(width) * static_cast<double>(height) * static_cast<double>(bytes_per_cell);
+  if (pages > 0 && needed > 0.5 * physical) {
+    throw InputError(fmt::format("{}: size {}x{} needs {:.1f} GiB, more than half of this machine's {:.1f} GiB",
+                                 what, width, height, needed / (1 << 30), physical / (1 << 30)));
+  }
+}
+
+template <class T>
+void check_finite(const Grid<T>& grid, const std::string& what) {
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      if (grid.is_valid(x, y) && !std::isfinite(static_cast<double>(grid.at(x, y)))) {
+        throw InputError(fmt::format("{}: cell (x={}, y={}) is {}; mark no-data cells with a mask instead", what,
+                                     x, y, static_cast<double>(grid.at(x, y))));
+      }
+    }
+  }
+}
+
+template <class T>
+std::size_t count_valid(const Grid<T>& grid) {
+  if (!grid.has_mask()) return grid.size();
+  std::size_t n = 0;
+  for (auto v : grid.valid) n += v != 0;
+  return n;
+}
+
+template void check_finite(const Grid<float>&, const std::string&);
+template void check_finite(const Grid<double>&, const std::string&);
+template std::size_t count_valid(const Grid<float>&);
+template std::size_t count_valid(const Grid<double>&);
+
+}  // namespace gt

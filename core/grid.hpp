@@ -1,0 +1,76 @@
+// Grid<T>: a row-major 2-D field with physical cell size, units and an optional no-data mask.
+//
+// Conventions
+//   - value(x, y) with x in [0, width) (columns, east) and y in [0, height) (rows). Row 0 is the
+//     first row stored in the source file (north for DEMs, top for images); no flip is applied.
+//   - cell_size_x, cell_size_y: spacing of cell centres in `horizontal_unit` (default metres).
+//   - values are in `vertical_unit` (default metres). A heightmap is Grid<double>.
+//   - valid: empty means every cell is valid; otherwise one byte per cell, 0 = no data. Values of
+//     invalid cells are unspecified (readers store 0) and are never used by algorithms or sums.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gt {
+
+template <class T>
+struct Grid {
+  int width = 0;
+  int height = 0;
+  double cell_size_x = 1.0;
+  double cell_size_y = 1.0;
+  std::string horizontal_unit = "m";
+  std::string vertical_unit = "m";
+  std::vector<T> values;
+  std::vector<std::uint8_t> valid;
+
+  Grid() = default;
+  Grid(int width_, int height_, T fill = T{}) : width(width_), height(height_),
+      values(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), fill) {}
+
+  std::size_t size() const { return values.size(); }
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x);
+  }
+  T& at(int x, int y) { return values[index(x, y)]; }
+  const T& at(int x, int y) const { return values[index(x, y)]; }
+  bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
+  bool has_mask() const { return !valid.empty(); }
+  bool is_valid(std::size_t i) const { return valid.empty() || valid[i] != 0; }
+  bool is_valid(int x, int y) const { return is_valid(index(x, y)); }
+
+  // Same geometry, units and mask; values converted to U.
+  template <class U>
+  Grid<U> cast() const {
+    Grid<U> out;
+    out.width = width;
+    out.height = height;
+    out.cell_size_x = cell_size_x;
+    out.cell_size_y = cell_size_y;
+    out.horizontal_unit = horizontal_unit;
+    out.vertical_unit = vertical_unit;
+    out.valid = valid;
+    out.values.assign(values.begin(), values.end());
+    return out;
+  }
+};
+
+using Heightmap = Grid<double>;
+
+// Throws InputError when a width x height grid of `bytes_per_cell` bytes per cell (all the
+// buffers an algorithm keeps for it, summed) is empty, overflows, or exceeds half of the
+// machine's physical memory. `what` names the grid in the message.
+void check_grid_fits(long long width, long long height, long long bytes_per_cell, const std::string& what);
+
+// Throws InputError naming the first NaN or infinite valid cell.
+template <class T>
+void check_finite(const Grid<T>& grid, const std::string& what);
+
+// Number of valid cells.
+template <class T>
+std::size_t count_valid(const Grid<T>& grid);
+
+}  // namespace gt

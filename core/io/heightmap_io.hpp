@@ -1,0 +1,44 @@
+// Reading and writing heightmaps.
+//
+// read_heightmap picks the reader by file extension:
+//   .png .tif .tiff .exr (.jpg .pgm ... anything OpenImageIO reads): channel 0 as height.
+//       8/16-bit integer images map to [0,1] (OpenImageIO's normalisation) then times
+//       `image_vertical_scale`; float and signed int16 TIFF/GeoTIFF keep their values (int16 read
+//       as raw integers, metres for DEMs). GeoTIFF: GDAL_NODATA (tag 42113) cells become invalid,
+//       ModelPixelScale (tag 33550) gives the cell size (degrees are converted to metres at the
+//       grid's centre latitude from ModelTiepoint, tag 33922). EXR/TIFF float NaN cells become
+//       invalid. Multi-channel images: channel 0 is used and a note says so.
+//   .json: the vega-datasets volcano format {width, height, values[row-major]} (10 m cells).
+//   .npz: matplotlib's sample DEMs: jacksboro_fault_dem.npz (`elevation`, int16, cell size from
+//       dx/dy in arc-seconds) and topobathy.npz (`topo`, float32, longitude/latitude arrays).
+// Every reader throws InputError with the path in the message for unreadable or malformed files
+// and checks the size with check_grid_fits before allocating.
+//
+// write_heightmap picks the format by extension: .exr (float32, no-data as NaN), .tif/.tiff
+// (float32, no-data as NaN), .png (16-bit, valid range mapped to 0..65535, no-data 0).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/grid.hpp"
+
+namespace gt {
+
+struct HeightmapFile {
+  Heightmap heights;
+  std::string format;               // "png", "tiff", "geotiff", "exr", "volcano-json", "npz"
+  std::vector<std::string> notes;   // what the reader decided (channel used, no-data value, units)
+};
+
+struct HeightmapReadOptions {
+  double image_vertical_scale = 1.0;  // multiplies [0,1] heights read from 8/16-bit images
+  double cell_size = 0.0;             // overrides the file's cell size when > 0
+};
+
+HeightmapFile read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options = {});
+
+void write_heightmap(const Heightmap& heights, const std::filesystem::path& path);
+
+}  // namespace gt

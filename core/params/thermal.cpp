@@ -1,0 +1,118 @@
+#include "core/params/thermal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace gt {
+namespace {
+
+std::pair<double, double> valid_range(const Heightmap& heights) {
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    if (!heights.is_valid(i)) continue;
+    low = std::min(low, heights.values[i]);
+    high = std::max(high, heights.values[i]);
+  }
+  if (low > high) return {0.0, 0.0};
+  return {low, high};
+}
+
+}  // namespace
+
+const ParamSpecs& thermal_param_specs() {
+  static const ParamSpecs specs = {
+      {"iterations", ParamKind::integer, 100, 0, 100000, {}, "count", "iterations (two passes each); odd counts allowed"},
+      {"talus_angle", ParamKind::real, 45.0, 0.0, 85.0, {}, "degree", "talus angle α; Hydra's UI range 0..85"},
+      {"strength", ParamKind::real, 1.0, 0.0, 2.0, {}, "1", "Hydra's strength; request factor f_s = strength/2"},
+      {"neighbourhood", ParamKind::choice, "alternating", 0, 0, {"cardinal", "diagonal", "alternating"}, "",
+       "cardinal, diagonal (distance sqrt(lx²+ly²)), or alternating (even iterations cardinal, odd diagonal)"},
+      {"normalised", ParamKind::boolean, false, 0, 0, {}, "",
+       "seed 000's [0,1] heights with T from eq. 4.10 instead of physical heights with T = tan α"},
+      {"vertical_aspect", ParamKind::real, 0.0, 0.0, 1e6, {}, "1",
+       "d_z of eq. 4.3 for normalised heights; 0 derives it from the grid (2·range/extent_x)"},
+  };
+  return specs;
+}
+
+const ParamSpecs& thermal_jako_param_specs() {
+  static const ParamSpecs specs = {
+      {"iterations", ParamKind::integer, 100, 0, 100000, {}, "count", "iterations (outflow + gather each)"},
+      {"talus_angle", ParamKind::real, 30.0, 0.0, 85.0, {}, "degree", "talus angle: tan = C_a·R + C_i of eq. 2.33"},
+      {"rate", ParamKind::real, 0.5, 0.0, 1.0, {}, "1",
+       "Δt·C_t·R of eq. 2.32: the share of half the largest excess difference moved per iteration"},
+  };
+  return specs;
+}
+
+ThermalParams thermal_params_from_json(const nlohmann::json& resolved) {
+  ThermalParams params;
+  params.iterations = resolved.at("iterations").get<int>();
+  params.talus_angle_deg = resolved.at("talus_angle").get<double>();
+  params.strength = resolved.at("strength").get<double>();
+  const auto neighbourhood = resolved.at("neighbourhood").get<std::string>();
+  params.neighbourhood = neighbourhood == "cardinal"   ? Neighbourhood::cardinal
+                         : neighbourhood == "diagonal" ? Neighbourhood::diagonal
+                                                       : Neighbourhood::alternating;
+  params.normalised = resolved.at("normalised").get<bool>();
+  params.vertical_aspect = resolved.at("vertical_aspect").get<double>();
+  return params;
+}
+
+ThermalJakoParams thermal_jako_params_from_json(const nlohmann::json& resolved) {
+  ThermalJakoParams params;
+  params.iterations = resolved.at("iterations").get<int>();
+  params.talus_angle_deg = resolved.at("talus_angle").get<double>();
+  params.rate = resolved.at("rate").get<double>();
+  return params;
+}
+
+double talus_threshold_eq_4_10(double angle_deg, int width, double vertical_aspect) {
+  return std::tan(std::numbers::pi / 180.0 * angle_deg) / (static_cast<double>(width) * vertical_aspect);
+}
+
+ThermalConstants thermal_constants(const ThermalParams& params, const Heightmap& original) {
+  ThermalConstants constants;
+  constants.request_factor = params.strength * 0.5;
+  if (params.normalised) {
+    const auto [low, high] = valid_range(original);
+    const double extent_x = original.width * original.cell_size_x;
+    const double derived_aspect = high > low ? 2.0 * (high - low) / extent_x : 1.0;
+    const double aspect = params.vertical_aspect > 0.0 ? params.vertical_aspect : derived_aspect;
+    constants.talus_slope = talus_threshold_eq_4_10(params.talus_angle_deg, original.width, aspect);
+    constants.length_x = 1.0;
+    constants.length_y = original.cell_size_y / original.cell_size_x;
+    constants.clamp_unit = true;
+  } else {
+    constants.talus_slope = std::tan(std::numbers::pi / 180.0 * params.talus_angle_deg);
+    constants.length_x = original.cell_size_x;
+    constants.length_y = original.cell_size_y;
+  }
+  constants.length_diagonal = std::hypot(constants.length_x, constants.length_y);
+  return constants;
+}
+
+ThermalConstants thermal_jako_constants(const ThermalJakoParams& params, const Heightmap& heights) {
+  ThermalConstants constants;
+  constants.talus_slope = std::tan(std::numbers::pi / 180.0 * params.talus_angle_deg);
+  constants.length_x = heights.cell_size_x;
+  constants.length_y = heights.cell_size_y;
+  constants.length_diagonal = std::hypot(constants.length_x, constants.length_y);
+  constants.request_factor = params.rate;
+  return constants;
+}
+
+Heightmap normalise_heights(const Heightmap& heights) {
+  Heightmap out = heights;
+  const auto [low, high] = valid_range(heights);
+  const double range = high - low;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out.values[i] = heights.is_valid(i) && range > 0.0 ? (heights.values[i] - low) / range : 0.0;
+  }
+  out.vertical_unit = "1";
+  return out;
+}
+
+}  // namespace gt

@@ -1,0 +1,64 @@
+// Parameters of the two thermal-erosion models and the per-run constants both twins derive from
+// them. Shared by reference/erosion/thermal*.cpp and gpu/erosion/thermal*.cpp (parameter structs
+// are the only thing the twins share besides core data types and the RNG).
+//
+// erosion.thermal (seed 000, Hydra, digest 000 §4.6): talus angle α in degrees, strength in
+// Hydra's UI units (0..2; the request factor f_s = strength/2), neighbourhood cardinal |
+// diagonal | alternating (even iterations cardinal, odd diagonal), heights physical (metres, the
+// default: T = tan α, lengths in metres) or normalised (seed 000's [0,1] heights, T from eq. 4.10).
+//
+// erosion.thermal_jako (Jákó & Tóth 2011, digest 000 §3.6): 8 neighbours, talus angle, and the
+// fraction `rate` = Δt·C_t·R of eq. 2.32 (R = 1, no hardness map).
+#pragma once
+
+#include "core/grid.hpp"
+#include "core/params.hpp"
+
+namespace gt {
+
+enum class Neighbourhood { cardinal, diagonal, alternating };
+
+struct ThermalParams {
+  int iterations = 100;
+  double talus_angle_deg = 45.0;
+  double strength = 1.0;
+  Neighbourhood neighbourhood = Neighbourhood::alternating;
+  bool normalised = false;
+  double vertical_aspect = 0.0;  // d_z of eq. 4.3 for normalised heights; 0 = derived from the grid
+};
+
+struct ThermalJakoParams {
+  int iterations = 100;
+  double talus_angle_deg = 30.0;
+  double rate = 0.5;
+};
+
+const ParamSpecs& thermal_param_specs();
+const ParamSpecs& thermal_jako_param_specs();
+ThermalParams thermal_params_from_json(const nlohmann::json& resolved);
+ThermalJakoParams thermal_jako_params_from_json(const nlohmann::json& resolved);
+
+// Everything one iteration needs, in the units of the heights it is applied to.
+struct ThermalConstants {
+  double talus_slope = 0.0;      // T: largest stable height difference per unit length
+  double length_x = 1.0;         // distance to the x neighbours
+  double length_y = 1.0;         // distance to the y neighbours
+  double length_diagonal = 1.0;  // distance to the diagonal neighbours, sqrt(lx² + ly²)
+  double request_factor = 0.5;   // f_s of Algorithm 10 (Hydra) or `rate` (Jákó)
+  bool clamp_unit = false;       // clamp results to [0, 1] (Hydra, normalised heights only)
+};
+
+// T_α = tan(π/180·α) / (width·d_z), eq. 4.10 of seed 000 taken literally. The digest shows it is a
+// factor 2 steeper than the geometry implies (effective angle atan(tan α / 2)); kept for parity.
+double talus_threshold_eq_4_10(double angle_deg, int width, double vertical_aspect);
+
+// Constants for Hydra's model on `heights` (already normalised when params.normalised).
+// Physical: T = tan α, lengths = cell sizes. Normalised: l_x = 1, l_y = cell_y/cell_x (eq. 4.3),
+// d_z = 2·range/(width·cell_x) unless given, T from eq. 4.10.
+ThermalConstants thermal_constants(const ThermalParams& params, const Heightmap& original);
+ThermalConstants thermal_jako_constants(const ThermalJakoParams& params, const Heightmap& heights);
+
+// Seed 000's normalised heights: (h - min) / (max - min) over valid cells (a flat field maps to 0).
+Heightmap normalise_heights(const Heightmap& heights);
+
+}  // namespace gt

