@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""Plot groundtruth benchmark rows: median ms per run and Mcell-iterations/s over grid size.
+
+Usage: plot_timings.py ROWS.json OUT.png
+
+ROWS.json is the "benchmarks" array of report.json (or a whole report.json). One line per
+(algorithm, backend), log-log axes, the devices named in the title. Rows whose numbers are null
+(non-finite in the run) are left out. Exits 3 with a one-line reason when matplotlib is missing,
+2 on bad input; compare/report/plots.cpp shows the last line of output as the reason.
+"""
+import json
+import sys
+from collections import defaultdict
+
+
+def load_rows(path):
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    rows = data["benchmarks"] if isinstance(data, dict) else data
+    return [r for r in rows if r.get("median_ms") is not None and r.get("size")]
+
+
+def series_by_line(rows):
+    """{(algorithm, backend): [(size, median_ms, mcell_per_s), ...] sorted by size}."""
+    lines = defaultdict(list)
+    for r in rows:
+        lines[(r["algorithm"], r["backend"])].append(
+            (r["size"], r["median_ms"], r.get("mcell_iterations_per_s")))
+    return {key: sorted(points) for key, points in sorted(lines.items())}
+
+
+def devices_title(rows):
+    by_backend = defaultdict(set)
+    for r in rows:
+        by_backend[r["backend"]].add(r.get("device") or "unknown device")
+    return "\n".join(f"{backend}: {', '.join(sorted(devices))}" for backend, devices in sorted(by_backend.items()))
+
+
+def plot(rows, out_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (time_axis, rate_axis) = plt.subplots(1, 2, figsize=(12, 5), constrained_layout=True)
+    for (algorithm, backend), points in series_by_line(rows).items():
+        style = "-o" if backend == "gpu" else "--s"
+        label = f"{algorithm} ({backend})"
+        sizes = [p[0] for p in points]
+        time_axis.plot(sizes, [p[1] for p in points], style, label=label)
+        rated = [p for p in points if p[2] is not None and p[2] > 0]
+        rate_axis.plot([p[0] for p in rated], [p[2] for p in rated], style, label=label)
+
+    time_axis.set(xscale="log", yscale="log", xlabel="grid side n (n × n cells)", ylabel="median ms per run",
+                  title="Time per run (lower is better)")
+    rate_axis.set(xscale="log", yscale="log", xlabel="grid side n (n × n cells)", ylabel="Mcell-iterations / s",
+                  title="Throughput (higher is better)")
+    for axis in (time_axis, rate_axis):
+        axis.grid(True, which="both", alpha=0.3)
+        axis.legend(fontsize="small")
+    fig.suptitle(devices_title(rows), fontsize="medium")
+    fig.savefig(out_path, dpi=100)
+
+
+def main(argv):
+    if len(argv) != 3:
+        print("usage: plot_timings.py ROWS.json OUT.png", file=sys.stderr)
+        return 2
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError as e:
+        print(f"matplotlib is not available to {sys.executable}: {e}", file=sys.stderr)
+        return 3
+    try:
+        rows = load_rows(argv[1])
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        print(f"cannot read benchmark rows from {argv[1]}: {e}", file=sys.stderr)
+        return 2
+    if not rows:
+        print("no benchmark rows with finite times", file=sys.stderr)
+        return 2
+    plot(rows, argv[2])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

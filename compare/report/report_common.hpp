@@ -1,0 +1,61 @@
+// Helpers shared by the report writers (internal to compare/report/): outcome counts, number
+// formatting, markup escaping and the write-then-rename file output.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/result.hpp"
+
+namespace gt::report_detail {
+
+// The "benchmarks" array of report.json (also the input of plot_timings.py).
+nlohmann::json benchmarks_to_json(const std::vector<BenchmarkRow>& rows);
+
+// The environment's fields with their labels, GL renderer first.
+struct LabelledField {
+  const char* label;
+  const std::string* value;
+};
+std::array<LabelledField, 7> environment_fields(const Environment& environment);
+
+// Every outcome in the order the writers list them.
+inline constexpr std::array<Outcome, 5> all_outcomes = {Outcome::pass, Outcome::warn, Outcome::fail,
+                                                        Outcome::skip, Outcome::error};
+
+struct OutcomeCounts {
+  std::array<int, all_outcomes.size()> by_outcome{};  // indexed like all_outcomes
+  int expected_failures = 0;                         // cases with an expectation entry
+
+  int& operator[](Outcome outcome);
+  int operator[](Outcome outcome) const;
+  int total() const;
+};
+
+OutcomeCounts count_case_outcomes(const Report& report);
+OutcomeCounts count_check_outcomes(const CaseResult& result);
+
+// "pass 3 · warn 1" style list of the non-zero counts; "none" when all are zero.
+std::string format_counts(const OutcomeCounts& counts, std::string_view separator);
+
+// %.3g, with "nan", "inf", "-inf" for non-finite values.
+std::string format_value(double value);
+// Milliseconds: whole numbers from 1000 ms up, %.3g below; "–" when absent.
+std::string format_ms(std::optional<double> ms);
+// "≤ threshold" plus "(warn ≤ loose)" when a loose bound exists; "" when neither exists.
+std::string format_bounds(const Check& check);
+
+// Escapes & < > " ' for HTML and XML text and attributes; control characters that XML 1.0
+// forbids become U+FFFD.
+std::string escape_markup(std::string_view text);
+
+// Writes `contents` to `file` through a temporary file in the same folder and a rename.
+void write_file_atomically(const std::filesystem::path& file, std::string_view contents);
+
+}  // namespace gt::report_detail

@@ -1,0 +1,220 @@
+// index.html: a self-contained static page (inline CSS, no JavaScript) for reading a report.
+//
+// Layout: header with the environment (GL renderer first and large), summary badges, a table of
+// all cases linking to their sections; per case its parameters, image artifacts in a row
+// (intended order: before / after CPU / after GPU / difference, as the caller lists them), other
+// artifacts as links, the checks table and the timings; then the Performance section with the
+// benchmark table and the report-level plots. Every piece of text goes through escape_markup.
+#include <fmt/format.h>
+
+#include "compare/report/report_common.hpp"
+#include "compare/report/writers.hpp"
+
+namespace gt {
+
+namespace {
+
+using namespace report_detail;
+
+constexpr std::string_view style = R"(
+body { font: 14px/1.45 system-ui, sans-serif; color: #222; max-width: 1280px; margin: 0 auto; padding: 1em 2em; }
+h1 { margin-bottom: .2em; }
+.renderer { font-size: 1.35em; font-weight: 600; margin: .2em 0 .6em; }
+table { border-collapse: collapse; margin: .6em 0 1em; }
+th, td { border: 1px solid #ddd; padding: .25em .6em; text-align: left; vertical-align: top; }
+th { background: #f3f3f3; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+table.environment th { width: 9em; }
+.badge { display: inline-block; min-width: 3em; text-align: center; padding: .05em .6em; border-radius: .8em;
+         color: #fff; font-weight: 600; font-size: .9em; }
+.badge.pass { background: #2e7d32; } .badge.fail { background: #c62828; } .badge.warn { background: #f9a825; color: #222; }
+.badge.skip { background: #757575; } .badge.error { background: #6a1b9a; } .badge.zero { opacity: .35; }
+.summary .badge { font-size: 1.05em; margin-right: .4em; }
+section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
+.note { color: #555; font-style: italic; }
+pre.error { background: #fbeaea; padding: .6em; white-space: pre-wrap; }
+.figures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
+figure { margin: 0; }
+figure img { width: 280px; height: auto; image-rendering: pixelated; border: 1px solid #ccc; }
+figure.plot img { width: 100%; max-width: 1100px; image-rendering: auto; }
+figcaption { text-align: center; font-size: .9em; color: #444; }
+)";
+
+std::string h(std::string_view text) { return escape_markup(text); }
+
+// ASCII letters, digits and - . _ ~ (RFC 3986 unreserved characters).
+bool unreserved(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '.' ||
+         c == '_' || c == '~';
+}
+
+// A relative path as a URL: bytes other than unreserved characters and '/' are percent-encoded.
+std::string url(std::string_view path) {
+  std::string encoded;
+  for (char c : path) {
+    encoded += unreserved(c) || c == '/' ? std::string(1, c) : fmt::format("%{:02X}", static_cast<unsigned char>(c));
+  }
+  return encoded;
+}
+
+std::string badge(Outcome outcome) {
+  return fmt::format("<span class=\"badge {0}\">{0}</span>", outcome_name(outcome));
+}
+
+std::string anchor(const CaseResult& result) {
+  std::string id = "case-";
+  for (char c : result.name) id += unreserved(c) ? c : '_';
+  return id;
+}
+
+void append_header(std::string& out, const Report& report) {
+  const Environment& environment = report.environment;
+  out += fmt::format("<header>\n<h1>groundtruth report</h1>\n<div class=\"renderer\">GL renderer: {}</div>\n",
+                     h(environment.gl_renderer));
+  out += "<table class=\"environment\">\n";
+  for (const auto& [label, value] : environment_fields(environment)) {
+    out += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", label, h(*value));
+  }
+  out += "</table>\n<p>Also as <a href=\"report.json\">report.json</a>, <a href=\"report.md\">report.md</a>, "
+         "<a href=\"junit.xml\">junit.xml</a>.</p>\n</header>\n";
+}
+
+void append_summary(std::string& out, const Report& report) {
+  const OutcomeCounts counts = count_case_outcomes(report);
+  out += "<section class=\"summary\">\n<h2>Summary</h2>\n<p>";
+  for (Outcome outcome : all_outcomes) {
+    out += fmt::format("<span class=\"badge {}{}\">{} {}</span>", outcome_name(outcome),
+                       counts[outcome] == 0 ? " zero" : "", counts[outcome], outcome_name(outcome));
+  }
+  out += fmt::format("</p>\n<p>{} cases, expected failures: {}. Run <span class=\"badge {}\">{}</span></p>\n",
+                     counts.total(), counts.expected_failures, run_failed(report) ? "fail" : "pass",
+                     run_failed(report) ? "failed" : "ok");
+  out += "</section>\n";
+}
+
+void append_case_table(std::string& out, const Report& report) {
+  out += "<section>\n<h2>Cases</h2>\n<table>\n<tr><th>status</th><th>case</th><th>algorithm</th><th>input</th>"
+         "<th>size</th><th>cpu ms</th><th>gpu ms</th><th>checks</th></tr>\n";
+  for (const CaseResult& result : report.cases) {
+    out += fmt::format(
+        "<tr><td>{}{}</td><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td><td class=\"num\">{}×{}</td>"
+        "<td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td></tr>\n",
+        badge(result.status), result.expected_failure.empty() ? "" : " expected", anchor(result), h(result.name),
+        h(result.algorithm), h(result.input), result.width, result.height, format_ms(result.timings.cpu_ms),
+        format_ms(result.timings.gpu_ms), h(format_counts(count_check_outcomes(result), " · ")));
+  }
+  out += "</table>\n</section>\n";
+}
+
+void append_params(std::string& out, const nlohmann::json& params) {
+  if (!params.is_object()) {
+    out += fmt::format("<pre>{}</pre>\n", h(params.dump(2, ' ', false, nlohmann::json::error_handler_t::replace)));
+    return;
+  }
+  if (params.empty()) return;
+  out += "<table class=\"params\">\n<tr><th>parameter</th><th>value</th></tr>\n";
+  for (const auto& [key, value] : params.items()) {
+    const std::string text =
+        value.is_string() ? value.get<std::string>() : value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    out += fmt::format("<tr><td>{}</td><td>{}</td></tr>\n", h(key), h(text));
+  }
+  out += "</table>\n";
+}
+
+void append_figure(std::string& out, const Artifact& artifact, std::string_view figure_class) {
+  out += fmt::format("<figure class=\"{}\"><a href=\"{}\"><img src=\"{}\" alt=\"{}\"></a><figcaption>{}</figcaption></figure>\n",
+                     figure_class, url(artifact.path), url(artifact.path), h(artifact.caption), h(artifact.caption));
+}
+
+void append_artifacts(std::string& out, const CaseResult& result) {
+  std::string figures;
+  std::string links;
+  for (const Artifact& artifact : result.artifacts) {
+    if (artifact.kind == "image") {
+      append_figure(figures, artifact, "image");
+    } else {
+      links += fmt::format("<li><a href=\"{}\">{}</a> {}</li>\n", url(artifact.path), h(artifact.path),
+                           h(artifact.caption));
+    }
+  }
+  if (!figures.empty()) out += fmt::format("<div class=\"figures\">\n{}</div>\n", figures);
+  if (!links.empty()) out += fmt::format("<ul class=\"files\">\n{}</ul>\n", links);
+}
+
+void append_checks(std::string& out, const CaseResult& result) {
+  if (result.checks.empty()) {
+    out += "<p class=\"note\">No checks.</p>\n";
+    return;
+  }
+  out += "<table class=\"checks\">\n<tr><th>check</th><th>value</th><th>bound</th><th>status</th><th>detail</th></tr>\n";
+  for (const Check& check : result.checks) {
+    out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
+                       h(check.name), format_value(check.value), h(format_bounds(check)), badge(check.status),
+                       h(check.detail));
+  }
+  out += "</table>\n";
+}
+
+void append_timings(std::string& out, const Timings& timings) {
+  out += fmt::format("<p>Timings (median of one run): CPU reference {} ms over {} reps · GPU {} ms over {} reps</p>\n",
+                     format_ms(timings.cpu_ms), timings.cpu_reps, format_ms(timings.gpu_ms), timings.gpu_reps);
+}
+
+void append_case_section(std::string& out, const CaseResult& result) {
+  out += fmt::format("<section class=\"case\" id=\"{}\">\n<h2>{} {}</h2>\n", anchor(result), badge(result.status),
+                     h(result.name));
+  out += fmt::format("<p>{} on {} ({}×{})</p>\n", h(result.algorithm), h(result.input), result.width, result.height);
+  if (!result.expected_failure.empty()) {
+    out += fmt::format("<p class=\"note\">Expected failure: {}</p>\n", h(result.expected_failure));
+  }
+  if (!result.error.empty()) out += fmt::format("<pre class=\"error\">{}</pre>\n", h(result.error));
+  append_params(out, result.params);
+  append_artifacts(out, result);
+  append_checks(out, result);
+  append_timings(out, result.timings);
+  out += "</section>\n";
+}
+
+void append_performance(std::string& out, const Report& report) {
+  out += "<section class=\"performance\">\n<h2>Performance</h2>\n";
+  if (report.benchmarks.empty()) {
+    out += "<p class=\"note\">No benchmarks in this run.</p>\n";
+  } else {
+    out += "<table>\n<tr><th>device</th><th>algorithm</th><th>backend</th><th>size</th><th>iterations</th>"
+           "<th>reps</th><th>median ms</th><th>Mcell-it/s</th></tr>\n";
+    for (const BenchmarkRow& row : report.benchmarks) {
+      out += fmt::format(
+          "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}×{}</td><td class=\"num\">{}</td>"
+          "<td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td></tr>\n",
+          h(row.device), h(row.algorithm), h(row.backend), row.size, row.size, row.iterations, row.reps,
+          format_ms(row.median_ms), format_value(row.mcell_iterations_per_s));
+    }
+    out += "</table>\n";
+  }
+  for (const Artifact& plot : report.plots) {
+    if (plot.path.empty()) {
+      out += fmt::format("<p class=\"note\">{}</p>\n", h(plot.caption));
+    } else {
+      append_figure(out, plot, "plot");
+    }
+  }
+  out += "</section>\n";
+}
+
+}  // namespace
+
+void write_report_html(const Report& report, const std::filesystem::path& file) {
+  std::string out = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>groundtruth report</title>\n"
+      "<style>{}</style>\n</head>\n<body>\n",
+      style);
+  append_header(out, report);
+  append_summary(out, report);
+  append_case_table(out, report);
+  for (const CaseResult& result : report.cases) append_case_section(out, result);
+  append_performance(out, report);
+  out += "</body>\n</html>\n";
+  write_file_atomically(file, out);
+}
+
+}  // namespace gt

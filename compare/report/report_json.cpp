@@ -1,0 +1,107 @@
+// report.json, schema 1 of DESIGN.md.
+//
+// Optional fields (threshold, loose_threshold, detail, cpu_ms, gpu_ms, expected_failure, error)
+// are left out when absent or empty. Non-finite numbers become null so the file stays valid
+// JSON; a check keeps its status, and its value's spelling ("nan", "inf", "-inf") is added as
+// "value_text". Strings that are not valid UTF-8 are written with U+FFFD replacements.
+#include <cmath>
+
+#include "compare/report/report_common.hpp"
+#include "compare/report/writers.hpp"
+
+namespace gt {
+
+namespace {
+
+using nlohmann::json;
+using report_detail::all_outcomes;
+
+json number_or_null(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+json environment_to_json(const Environment& environment) {
+  return {{"gl_renderer", environment.gl_renderer}, {"gl_version", environment.gl_version},
+          {"gl_platform", environment.gl_platform}, {"cpu", environment.cpu},
+          {"compiler", environment.compiler},       {"build_type", environment.build_type},
+          {"git", environment.git}};
+}
+
+json check_to_json(const Check& check) {
+  json out = {{"name", check.name}, {"value", number_or_null(check.value)}};
+  if (!std::isfinite(check.value)) out["value_text"] = report_detail::format_value(check.value);
+  if (check.threshold) out["threshold"] = number_or_null(*check.threshold);
+  if (check.loose_threshold) out["loose_threshold"] = number_or_null(*check.loose_threshold);
+  out["status"] = outcome_name(check.status);
+  if (!check.detail.empty()) out["detail"] = check.detail;
+  return out;
+}
+
+json timings_to_json(const Timings& timings) {
+  json out = json::object();
+  if (timings.cpu_ms) out["cpu_ms"] = number_or_null(*timings.cpu_ms);
+  if (timings.gpu_ms) out["gpu_ms"] = number_or_null(*timings.gpu_ms);
+  out["cpu_reps"] = timings.cpu_reps;
+  out["gpu_reps"] = timings.gpu_reps;
+  return out;
+}
+
+json case_to_json(const CaseResult& result) {
+  json out = {{"name", result.name},     {"algorithm", result.algorithm}, {"input", result.input},
+              {"width", result.width},   {"height", result.height},
+              {"status", outcome_name(result.status)}};
+  if (!result.expected_failure.empty()) out["expected_failure"] = result.expected_failure;
+  out["params"] = result.params;
+  out["checks"] = json::array();
+  for (const Check& check : result.checks) out["checks"].push_back(check_to_json(check));
+  out["timings"] = timings_to_json(result.timings);
+  out["artifacts"] = json::array();
+  for (const Artifact& artifact : result.artifacts) out["artifacts"].push_back(artifact.path);
+  if (!result.error.empty()) out["error"] = result.error;
+  return out;
+}
+
+json benchmark_to_json(const BenchmarkRow& row) {
+  return {{"algorithm", row.algorithm},
+          {"backend", row.backend},
+          {"size", row.size},
+          {"iterations", row.iterations},
+          {"reps", row.reps},
+          {"median_ms", number_or_null(row.median_ms)},
+          {"mcell_iterations_per_s", number_or_null(row.mcell_iterations_per_s)},
+          {"device", row.device}};
+}
+
+}  // namespace
+
+json report_detail::benchmarks_to_json(const std::vector<BenchmarkRow>& rows) {
+  json out = json::array();
+  for (const BenchmarkRow& row : rows) out.push_back(benchmark_to_json(row));
+  return out;
+}
+
+namespace {
+
+json summary_to_json(const Report& report) {
+  const auto counts = report_detail::count_case_outcomes(report);
+  json out = json::object();
+  for (Outcome outcome : all_outcomes) out[outcome_name(outcome)] = counts[outcome];
+  out["failed"] = run_failed(report);
+  return out;
+}
+
+}  // namespace
+
+json report_to_json(const Report& report) {
+  json out = {{"schema", 1}, {"environment", environment_to_json(report.environment)}};
+  out["cases"] = json::array();
+  for (const CaseResult& result : report.cases) out["cases"].push_back(case_to_json(result));
+  out["benchmarks"] = report_detail::benchmarks_to_json(report.benchmarks);
+  out["summary"] = summary_to_json(report);
+  return out;
+}
+
+void write_report_json(const Report& report, const std::filesystem::path& file) {
+  const std::string text = report_to_json(report).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+  report_detail::write_file_atomically(file, text);
+}
+
+}  // namespace gt

@@ -1,0 +1,126 @@
+// report.md: a Markdown summary for reading in a terminal or a code-hosting web view.
+//
+// Sections: environment, summary line, case table, one section per case that has something
+// other than passing checks (error, expectation, warn/fail/skip checks), benchmark table, plots.
+// Table cells escape '|' and '<' and fold line breaks into spaces.
+#include <fmt/format.h>
+
+#include "compare/report/report_common.hpp"
+#include "compare/report/writers.hpp"
+
+namespace gt {
+
+namespace {
+
+using namespace report_detail;
+
+std::string cell(std::string_view text) {
+  std::string escaped;
+  for (char c : text) {
+    switch (c) {
+      case '|': escaped += "\\|"; break;
+      case '<': escaped += "&lt;"; break;
+      case '\n':
+      case '\r': escaped += ' '; break;
+      default: escaped += c;
+    }
+  }
+  return escaped;
+}
+
+void append_environment(std::string& out, const Environment& environment) {
+  out += "| environment | |\n|---|---|\n";
+  for (const auto& [label, value] : environment_fields(environment)) {
+    out += fmt::format("| {} | {} |\n", label, cell(*value));
+  }
+  out += '\n';
+}
+
+void append_summary(std::string& out, const Report& report) {
+  const OutcomeCounts counts = count_case_outcomes(report);
+  out += fmt::format("**{}** — {} cases: {}; expected failures: {}\n\n",
+                     run_failed(report) ? "RUN FAILED" : "run ok", counts.total(), format_counts(counts, ", "),
+                     counts.expected_failures);
+}
+
+std::string size_text(const CaseResult& result) { return fmt::format("{}×{}", result.width, result.height); }
+
+void append_case_table(std::string& out, const Report& report) {
+  out += "## Cases\n\n| case | status | algorithm | input | size | cpu ms (reps) | gpu ms (reps) | checks |\n"
+         "|---|---|---|---|---|---:|---:|---|\n";
+  for (const CaseResult& result : report.cases) {
+    const std::string expected = result.expected_failure.empty() ? "" : " (expected)";
+    out += fmt::format("| {} | **{}**{} | {} | {} | {} | {} ({}) | {} ({}) | {} |\n", cell(result.name),
+                       outcome_name(result.status), expected, cell(result.algorithm), cell(result.input),
+                       size_text(result), format_ms(result.timings.cpu_ms), result.timings.cpu_reps,
+                       format_ms(result.timings.gpu_ms), result.timings.gpu_reps,
+                       format_counts(count_check_outcomes(result), ", "));
+  }
+  out += '\n';
+}
+
+bool has_details(const CaseResult& result) {
+  if (!result.error.empty() || !result.expected_failure.empty()) return true;
+  for (const Check& check : result.checks) {
+    if (check.status != Outcome::pass) return true;
+  }
+  return false;
+}
+
+void append_case_details(std::string& out, const CaseResult& result) {
+  out += fmt::format("### {} — {}\n\n", result.name, outcome_name(result.status));
+  if (!result.expected_failure.empty()) out += fmt::format("Expected failure: {}\n\n", cell(result.expected_failure));
+  if (!result.error.empty()) out += fmt::format("Error: {}\n\n", cell(result.error));
+  bool header_written = false;
+  for (const Check& check : result.checks) {
+    if (check.status == Outcome::pass) continue;
+    if (!header_written) {
+      out += "| check | value | bound | status | detail |\n|---|---:|---|---|---|\n";
+      header_written = true;
+    }
+    out += fmt::format("| {} | {} | {} | **{}** | {} |\n", cell(check.name), format_value(check.value),
+                       format_bounds(check), outcome_name(check.status), cell(check.detail));
+  }
+  if (header_written) out += '\n';
+}
+
+void append_benchmarks(std::string& out, const Report& report) {
+  out += "## Benchmarks\n\n";
+  if (report.benchmarks.empty()) {
+    out += "No benchmarks in this run.\n\n";
+  } else {
+    out += "| algorithm | backend | device | size | iterations | reps | median ms | Mcell-it/s |\n"
+           "|---|---|---|---:|---:|---:|---:|---:|\n";
+    for (const BenchmarkRow& row : report.benchmarks) {
+      out += fmt::format("| {} | {} | {} | {}×{} | {} | {} | {} | {} |\n", cell(row.algorithm), cell(row.backend),
+                         cell(row.device), row.size, row.size, row.iterations, row.reps,
+                         format_ms(row.median_ms), format_value(row.mcell_iterations_per_s));
+    }
+    out += '\n';
+  }
+  for (const Artifact& plot : report.plots) {
+    out += plot.path.empty() ? fmt::format("{}\n\n", cell(plot.caption))
+                             : fmt::format("![{}]({})\n\n", cell(plot.caption), plot.path);
+  }
+}
+
+}  // namespace
+
+void write_report_markdown(const Report& report, const std::filesystem::path& file) {
+  std::string out = "# groundtruth report\n\n";
+  append_environment(out, report.environment);
+  append_summary(out, report);
+  append_case_table(out, report);
+  out += "## Details\n\n";
+  bool any_details = false;
+  for (const CaseResult& result : report.cases) {
+    if (!has_details(result)) continue;
+    append_case_details(out, result);
+    any_details = true;
+  }
+  if (!any_details) out += "Every check of every case passed.\n\n";
+  append_benchmarks(out, report);
+  write_file_atomically(file, out);
+}
+
+}  // namespace gt

@@ -1,0 +1,438 @@
+// Tests of compare/result.cpp and compare/report/: outcome arithmetic, the four report formats
+// written from one fabricated Report, the height/difference pictures and the benchmark plot.
+// Files go to a fresh folder under the system temporary directory, removed afterwards.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "compare/report/images.hpp"
+#include "compare/report/plots.hpp"
+#include "compare/report/writers.hpp"
+#include "compare/result.hpp"
+
+namespace gt {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+class TemporaryFolder : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    folder = fs::temp_directory_path() / fmt::format("gt_report_test_{}_{}_{}", getpid(), test->test_suite_name(),
+                                                     test->name());
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+  }
+  void TearDown() override { fs::remove_all(folder); }
+  fs::path folder;
+};
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int count_of(const std::string& text, const std::string& needle) {
+  int count = 0;
+  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + needle.size())) ++count;
+  return count;
+}
+
+struct Picture {
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  std::vector<unsigned char> pixels;
+
+  const unsigned char* at(int x, int y) const { return &pixels[(static_cast<std::size_t>(y) * width + x) * channels]; }
+};
+
+Picture read_picture(const fs::path& png) {
+  auto input = OIIO::ImageInput::open(png.string());
+  if (!input) throw std::runtime_error(OIIO::geterror());
+  const OIIO::ImageSpec& spec = input->spec();
+  Picture picture{spec.width, spec.height, spec.nchannels, {}};
+  picture.pixels.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, picture.pixels.data());
+  return picture;
+}
+
+Check make_check(std::string name, double value, std::optional<double> threshold, Outcome status,
+                 std::string detail = "") {
+  Check check;
+  check.name = std::move(name);
+  check.value = value;
+  check.threshold = threshold;
+  check.status = status;
+  check.detail = std::move(detail);
+  return check;
+}
+
+CaseResult make_case(std::string name, std::string algorithm, std::vector<Check> checks) {
+  CaseResult result;
+  result.name = std::move(name);
+  result.algorithm = std::move(algorithm);
+  result.input = "volcano.json (87x61, 10 m)";
+  result.width = 87;
+  result.height = 61;
+  result.params = {{"iterations", 50}, {"talus_angle_deg", 33.0}, {"neighbourhood", "cardinal"}};
+  result.checks = std::move(checks);
+  result.status = case_outcome(result);
+  return result;
+}
+
+// One case of each outcome, an expected failure and a NaN value; `detail` holds markup.
+Report sample_report() {
+  Report report;
+  report.environment = {"llvmpipe (LLVM 15.0.6, 256 bits)", "4.5 (Core Profile) Mesa 22.3.6", "egl-surfaceless",
+                        "Intel Xeon", "GCC 12.2.0", "Release", "3a932b0"};
+  CaseResult pass = make_case("erosion.thermal.cardinal.volcano", "erosion.thermal",
+                              {make_check("mass.relative_drift.gpu", 3.1e-7, 1e-5, Outcome::pass)});
+  pass.timings = {812.0, 35.2, 3, 5};
+  pass.artifacts = {{"erosion.thermal.cardinal.volcano/before.png", "image", "before"},
+                    {"erosion.thermal.cardinal.volcano/gpu.exr", "field", "GPU heights"}};
+  CaseResult fail = make_case("erosion.thermal.diagonal.volcano", "erosion.thermal",
+                              {make_check("parity.max_abs", 0.5, 1e-3, Outcome::fail, "<b>far</b> apart & off")});
+  Check warned = make_check("parity.rms", 2e-4, 1e-4, Outcome::warn, "between the bounds");
+  warned.loose_threshold = 1e-3;
+  CaseResult warn = make_case("erosion.thermal.cardinal.ramp", "erosion.thermal", {warned});
+  CaseResult skip = make_case("cave.marching_tetrahedra.sphere", "cave.marching_tetrahedra",
+                              {make_check("mesh.closed.gpu", 0.0, std::nullopt, Outcome::skip, "no GL context")});
+  CaseResult error = make_case("planet.plates.seed1", "planet.plates", {});
+  error.error = "shader failed to compile";
+  error.status = case_outcome(error);
+  CaseResult expected = make_case("cave.marching_cubes.sphere", "cave.marching_cubes",
+                                  {make_check("mesh.closed.cpu", 12.0, 0.0, Outcome::fail, "12 boundary edges")});
+  expected.expected_failure = "the seed's marching cubes leaves holes";
+  CaseResult nan_value = make_case("noise.perlin3.nan", "noise.perlin3",
+                                   {make_check("parity.max_abs", std::numeric_limits<double>::quiet_NaN(), 1e-6,
+                                               Outcome::fail, "GPU produced NaN")});
+  report.cases = {pass, fail, warn, skip, error, expected, nan_value};
+  report.benchmarks = {{"erosion.thermal", "cpu", 256, 50, 3, 120.0, 27.3, "Intel Xeon"},
+                       {"erosion.thermal", "gpu", 256, 50, 5, 12.0, 273.0, "llvmpipe"}};
+  report.plots = {{"", "plot", "plot unavailable: test"}};
+  return report;
+}
+
+// ---- outcomes ----------------------------------------------------------------------------------
+
+TEST(Outcomes, NamesAndOrder) {
+  EXPECT_STREQ(outcome_name(Outcome::pass), "pass");
+  EXPECT_STREQ(outcome_name(Outcome::fail), "fail");
+  EXPECT_STREQ(outcome_name(Outcome::warn), "warn");
+  EXPECT_STREQ(outcome_name(Outcome::skip), "skip");
+  EXPECT_STREQ(outcome_name(Outcome::error), "error");
+  const std::vector<Outcome> best_to_worst = {Outcome::skip, Outcome::pass, Outcome::warn, Outcome::fail,
+                                              Outcome::error};
+  for (std::size_t i = 0; i < best_to_worst.size(); ++i) {
+    for (std::size_t j = 0; j < best_to_worst.size(); ++j) {
+      EXPECT_EQ(worse(best_to_worst[i], best_to_worst[j]), best_to_worst[std::max(i, j)]);
+    }
+  }
+}
+
+TEST(Outcomes, CaseOutcomeFromChecks) {
+  CaseResult result;
+  EXPECT_EQ(case_outcome(result), Outcome::skip);
+  result.checks = {make_check("a", 0, {}, Outcome::skip), make_check("b", 0, {}, Outcome::skip)};
+  EXPECT_EQ(case_outcome(result), Outcome::skip);
+  result.checks.push_back(make_check("c", 0, {}, Outcome::pass));
+  EXPECT_EQ(case_outcome(result), Outcome::pass);
+  result.checks.push_back(make_check("d", 0, {}, Outcome::warn));
+  EXPECT_EQ(case_outcome(result), Outcome::warn);
+  result.checks.push_back(make_check("e", 0, {}, Outcome::fail));
+  EXPECT_EQ(case_outcome(result), Outcome::fail);
+  result.error = "could not run";
+  EXPECT_EQ(case_outcome(result), Outcome::error);
+}
+
+TEST(Outcomes, RunFailedHonoursExpectations) {
+  auto run_with = [](Outcome status, std::string expectation) {
+    Report report;
+    report.cases.resize(2);  // a passing case beside the one under test
+    report.cases[1].status = status;
+    report.cases[1].expected_failure = std::move(expectation);
+    return run_failed(report);
+  };
+  EXPECT_FALSE(run_with(Outcome::pass, ""));
+  EXPECT_FALSE(run_with(Outcome::warn, ""));
+  EXPECT_FALSE(run_with(Outcome::skip, ""));
+  EXPECT_TRUE(run_with(Outcome::fail, ""));
+  EXPECT_TRUE(run_with(Outcome::error, ""));
+  EXPECT_FALSE(run_with(Outcome::fail, "known"));
+  EXPECT_TRUE(run_with(Outcome::pass, "known"));  // stale expectation
+  EXPECT_TRUE(run_with(Outcome::warn, "known"));
+  EXPECT_FALSE(run_with(Outcome::skip, "known"));
+}
+
+// ---- report formats ----------------------------------------------------------------------------
+
+using ReportFiles = TemporaryFolder;
+
+TEST_F(ReportFiles, WritesAllFourAndNoTemporaries) {
+  write_report_files(sample_report(), folder);
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"index.html", "junit.xml", "report.json", "report.md"}));
+}
+
+TEST_F(ReportFiles, JsonFollowsSchema1) {
+  write_report_json(sample_report(), folder / "report.json");
+  const json report = json::parse(read_text(folder / "report.json"));  // throws if invalid
+  EXPECT_EQ(report["schema"], 1);
+  for (const char* key : {"gl_renderer", "gl_version", "gl_platform", "cpu", "compiler", "build_type", "git"}) {
+    EXPECT_TRUE(report["environment"].contains(key)) << key;
+  }
+  EXPECT_EQ(report["environment"]["gl_renderer"], "llvmpipe (LLVM 15.0.6, 256 bits)");
+  ASSERT_EQ(report["cases"].size(), 7u);
+
+  const json& pass = report["cases"][0];
+  EXPECT_EQ(pass["name"], "erosion.thermal.cardinal.volcano");
+  EXPECT_EQ(pass["algorithm"], "erosion.thermal");
+  EXPECT_EQ(pass["status"], "pass");
+  EXPECT_EQ(pass["width"], 87);
+  EXPECT_EQ(pass["height"], 61);
+  EXPECT_EQ(pass["params"]["iterations"], 50);
+  EXPECT_FALSE(pass.contains("expected_failure"));
+  EXPECT_FALSE(pass.contains("error"));
+  EXPECT_EQ(pass["checks"][0]["name"], "mass.relative_drift.gpu");
+  EXPECT_DOUBLE_EQ(pass["checks"][0]["value"].get<double>(), 3.1e-7);
+  EXPECT_DOUBLE_EQ(pass["checks"][0]["threshold"].get<double>(), 1e-5);
+  EXPECT_FALSE(pass["checks"][0].contains("loose_threshold"));
+  EXPECT_FALSE(pass["checks"][0].contains("detail"));
+  EXPECT_EQ(pass["timings"], json({{"cpu_ms", 812.0}, {"gpu_ms", 35.2}, {"cpu_reps", 3}, {"gpu_reps", 5}}));
+  EXPECT_EQ(pass["artifacts"], json({"erosion.thermal.cardinal.volcano/before.png",
+                                     "erosion.thermal.cardinal.volcano/gpu.exr"}));
+
+  EXPECT_EQ(report["cases"][2]["checks"][0]["loose_threshold"], 1e-3);
+  EXPECT_EQ(report["cases"][3]["status"], "skip");
+  EXPECT_FALSE(report["cases"][3]["timings"].contains("cpu_ms"));
+  EXPECT_EQ(report["cases"][4]["status"], "error");
+  EXPECT_EQ(report["cases"][4]["error"], "shader failed to compile");
+  EXPECT_EQ(report["cases"][5]["expected_failure"], "the seed's marching cubes leaves holes");
+
+  const json& nan_check = report["cases"][6]["checks"][0];
+  EXPECT_TRUE(nan_check["value"].is_null());
+  EXPECT_EQ(nan_check["value_text"], "nan");
+  EXPECT_EQ(nan_check["status"], "fail");
+
+  ASSERT_EQ(report["benchmarks"].size(), 2u);
+  EXPECT_EQ(report["benchmarks"][1]["device"], "llvmpipe");
+  EXPECT_EQ(report["benchmarks"][1]["mcell_iterations_per_s"], 273.0);
+  EXPECT_EQ(report["summary"], json({{"pass", 1}, {"fail", 3}, {"warn", 1}, {"skip", 1}, {"error", 1},
+                                     {"failed", true}}));
+}
+
+TEST_F(ReportFiles, JunitCountsAndEscapes) {
+  write_report_junit(sample_report(), folder / "junit.xml");
+  const std::string xml = read_text(folder / "junit.xml");
+  EXPECT_EQ(count_of(xml, "<testsuite "), 5);  // thermal, tetrahedra, plates, cubes, perlin3
+  EXPECT_EQ(count_of(xml, "<testcase "), 7);
+  EXPECT_EQ(count_of(xml, "<failure "), 2);  // thermal diagonal, perlin NaN; the expected one passes
+  EXPECT_EQ(count_of(xml, "<error "), 1);
+  EXPECT_EQ(count_of(xml, "<skipped "), 1);
+  EXPECT_NE(xml.find("classname=\"erosion.thermal\""), std::string::npos);
+  EXPECT_NE(xml.find("name=\"erosion.thermal.diagonal.volcano\""), std::string::npos);
+  EXPECT_NE(xml.find("&lt;b&gt;far&lt;/b&gt; apart &amp; off"), std::string::npos);
+  EXPECT_EQ(xml.find("<b>"), std::string::npos);
+  EXPECT_NE(xml.find("expected failure (fail): the seed&#39;s marching cubes leaves holes"), std::string::npos);
+  EXPECT_NE(xml.find("warn parity.rms = 0.0002"), std::string::npos);
+  EXPECT_NE(xml.find("<testsuites name=\"groundtruth\" tests=\"7\" failures=\"2\" errors=\"1\" skipped=\"1\">"),
+            std::string::npos);
+}
+
+TEST_F(ReportFiles, JunitFailsAStaleExpectation) {
+  Report report;
+  report.cases = {make_case("a.b.c", "a.b", {make_check("spec.vector", 0, 1, Outcome::pass)})};
+  report.cases[0].expected_failure = "used to fail";
+  write_report_junit(report, folder / "junit.xml");
+  const std::string xml = read_text(folder / "junit.xml");
+  EXPECT_EQ(count_of(xml, "<failure "), 1);
+  EXPECT_NE(xml.find("expected to fail (used to fail) but pass"), std::string::npos);
+}
+
+TEST_F(ReportFiles, HtmlNamesEveryCaseAndEscapes) {
+  const Report report = sample_report();
+  write_report_html(report, folder / "index.html");
+  const std::string html = read_text(folder / "index.html");
+  for (const CaseResult& result : report.cases) {
+    EXPECT_NE(html.find(result.name), std::string::npos) << result.name;
+    EXPECT_NE(html.find(fmt::format("id=\"case-{}\"", result.name)), std::string::npos) << result.name;
+  }
+  EXPECT_NE(html.find("&lt;b&gt;far&lt;/b&gt;"), std::string::npos);
+  EXPECT_EQ(html.find("<b>far"), std::string::npos);
+  EXPECT_NE(html.find("llvmpipe (LLVM 15.0.6, 256 bits)"), std::string::npos);
+  EXPECT_NE(html.find("<img src=\"erosion.thermal.cardinal.volcano/before.png\""), std::string::npos);
+  EXPECT_EQ(html.find("<img src=\"erosion.thermal.cardinal.volcano/gpu.exr\""), std::string::npos);
+  EXPECT_NE(html.find("plot unavailable: test"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+}
+
+TEST_F(ReportFiles, MarkdownHasSummaryDetailsAndBenchmarks) {
+  write_report_markdown(sample_report(), folder / "report.md");
+  const std::string markdown = read_text(folder / "report.md");
+  EXPECT_NE(markdown.find("RUN FAILED"), std::string::npos);
+  EXPECT_NE(markdown.find("### erosion.thermal.diagonal.volcano — fail"), std::string::npos);
+  EXPECT_EQ(markdown.find("### erosion.thermal.cardinal.volcano"), std::string::npos);  // all checks pass
+  EXPECT_NE(markdown.find("| erosion.thermal | gpu | llvmpipe | 256×256 | 50 | 5 | 12 | 273 |"), std::string::npos);
+  EXPECT_NE(markdown.find("| nan |"), std::string::npos);
+}
+
+// ---- pictures ----------------------------------------------------------------------------------
+
+using Pictures = TemporaryFolder;
+
+bool reddish(const unsigned char* rgb) { return rgb[0] > 150 && rgb[1] < 100 && rgb[2] < 100; }
+bool bluish(const unsigned char* rgb) { return rgb[2] > 200 && rgb[2] > rgb[0] + 50; }
+bool white(const unsigned char* rgb) { return rgb[0] == 255 && rgb[1] == 255 && rgb[2] == 255; }
+bool grey(const unsigned char* rgb) { return rgb[0] == rgb[1] && rgb[1] == rgb[2] && rgb[0] > 100 && rgb[0] < 230; }
+
+TEST_F(Pictures, DifferenceStatsAndColours) {
+  Heightmap a(8, 6, 10.0);
+  Heightmap b = a;
+  b.at(2, 3) += 2.0;
+  b.at(5, 1) -= 1.0;
+  const DifferenceStats stats = write_difference_image(a, b, folder / "difference.png");
+  EXPECT_DOUBLE_EQ(stats.max_abs, 2.0);
+  EXPECT_DOUBLE_EQ(stats.rms, std::sqrt(5.0 / 48.0));
+  EXPECT_DOUBLE_EQ(stats.scale_used, 2.0);
+  EXPECT_EQ(stats.compared_cells, 48u);
+
+  const Picture picture = read_picture(folder / "difference.png");
+  ASSERT_EQ(picture.channels, 3);
+  EXPECT_EQ(picture.width, 256);  // 8 cells enlarged by 32
+  EXPECT_EQ(picture.height, 192);
+  EXPECT_TRUE(reddish(picture.at(2 * 32 + 16, 3 * 32 + 16)));
+  EXPECT_TRUE(bluish(picture.at(5 * 32 + 16, 1 * 32 + 16)));
+  EXPECT_TRUE(white(picture.at(0, 0)));
+}
+
+TEST_F(Pictures, DifferenceWithMaskNanAndGivenScale) {
+  Heightmap a(4, 4, 0.0);
+  a.valid.assign(16, 1);
+  a.valid[a.index(0, 0)] = 0;
+  Heightmap b(4, 4, 0.0);
+  b.at(0, 0) = 100.0;  // no data in a: not compared
+  b.at(3, 3) = std::numeric_limits<double>::quiet_NaN();
+  b.at(1, 2) = 0.5;
+  const DifferenceStats stats = write_difference_image(a, b, folder / "difference.png", 4.0);
+  EXPECT_EQ(stats.compared_cells, 15u);
+  EXPECT_TRUE(std::isinf(stats.max_abs));
+  EXPECT_DOUBLE_EQ(stats.scale_used, 4.0);
+  const Picture picture = read_picture(folder / "difference.png");
+  EXPECT_EQ(picture.width, 256);
+  EXPECT_TRUE(grey(picture.at(10, 10)));
+  const unsigned char* nan_pixel = picture.at(3 * 64 + 32, 3 * 64 + 32);
+  EXPECT_EQ(nan_pixel[0] + nan_pixel[1] + nan_pixel[2], 0);
+  const unsigned char* small = picture.at(1 * 64 + 32, 2 * 64 + 32);  // 0.5 of scale 4: pale red
+  EXPECT_GT(small[0], small[2] + 20);
+  EXPECT_GT(small[2], 200);
+}
+
+TEST_F(Pictures, AllZeroDifferenceIsWhite) {
+  const Heightmap a(87, 61, 3.0);
+  const DifferenceStats stats = write_difference_image(a, a, folder / "difference.png");
+  EXPECT_EQ(stats.max_abs, 0.0);
+  EXPECT_EQ(stats.scale_used, 0.0);
+  const Picture picture = read_picture(folder / "difference.png");
+  EXPECT_EQ(picture.width, 87 * 3);
+  EXPECT_EQ(picture.height, 61 * 3);
+  EXPECT_TRUE(std::all_of(picture.pixels.begin(), picture.pixels.end(), [](unsigned char v) { return v == 255; }));
+}
+
+TEST_F(Pictures, LargeGridsAreReducedKeepingSpikes) {
+  Heightmap a(2100, 30, 0.0);
+  Heightmap b = a;
+  b.at(1000, 15) = 1.0;  // a single cell in a 3 x 3 block
+  write_difference_image(a, b, folder / "difference.png");
+  const Picture difference = read_picture(folder / "difference.png");
+  EXPECT_EQ(difference.width, 700);
+  EXPECT_EQ(difference.height, 10);
+  EXPECT_TRUE(reddish(difference.at(1000 / 3, 15 / 3)));
+  write_height_image(b, 0.0, 1.0, folder / "height.png");
+  const Picture heights = read_picture(folder / "height.png");
+  EXPECT_EQ(heights.width, 700);
+  EXPECT_EQ(heights.height, 10);
+}
+
+TEST_F(Pictures, HeightImageSizeShadingAndNoData) {
+  Heightmap cone(87, 61, 0.0);
+  cone.cell_size_x = cone.cell_size_y = 10.0;
+  cone.valid.assign(cone.size(), 1);
+  for (int y = 0; y < cone.height; ++y) {
+    for (int x = 0; x < cone.width; ++x) cone.at(x, y) = std::max(0.0, 300.0 - 10.0 * std::hypot(x - 43, y - 30));
+  }
+  for (int x = 0; x < 10; ++x) cone.valid[cone.index(x, 0)] = 0;
+  const double exaggeration = write_height_image(cone, 0.0, 300.0, folder / "height.png");
+  EXPECT_GT(exaggeration, 0.0);
+  const Picture picture = read_picture(folder / "height.png");
+  EXPECT_EQ(picture.width, 261);
+  EXPECT_EQ(picture.height, 183);
+  EXPECT_TRUE(grey(picture.at(1, 1)));
+  // The north-west flank faces the light, the south-east flank faces away.
+  const unsigned char* lit = picture.at((43 - 10) * 3, (30 - 10) * 3);
+  const unsigned char* shadowed = picture.at((43 + 10) * 3, (30 + 10) * 3);
+  EXPECT_GT(lit[0] + lit[1] + lit[2], shadowed[0] + shadowed[1] + shadowed[2] + 60);
+  EXPECT_EQ(write_height_image(cone, 0.0, 300.0, folder / "again.png", exaggeration), exaggeration);
+}
+
+TEST_F(Pictures, FlatAndSingleCellGrids) {
+  EXPECT_EQ(write_height_image(Heightmap(1, 1, 5.0), 5.0, 5.0, folder / "one.png"), 1.0);
+  const Picture one = read_picture(folder / "one.png");
+  EXPECT_EQ(one.width, 256);
+  EXPECT_EQ(one.height, 256);
+  EXPECT_EQ(write_height_image(Heightmap(300, 2, 0.0), 0.0, 1.0, folder / "flat.png"), 1.0);
+  EXPECT_EQ(read_picture(folder / "flat.png").height, 2);
+}
+
+TEST_F(Pictures, MismatchedGridsThrow) {
+  EXPECT_THROW(write_difference_image(Heightmap(4, 4), Heightmap(4, 5), folder / "d.png"), std::invalid_argument);
+}
+
+// ---- plot ---------------------------------------------------------------------------------------
+
+using Plots = TemporaryFolder;
+
+TEST_F(Plots, BenchmarkPlotIsAPng) {
+  std::vector<BenchmarkRow> rows;
+  for (int size : {64, 128, 256, 512}) {
+    const double cells = static_cast<double>(size) * size * 50;
+    rows.push_back({"erosion.thermal", "cpu", size, 50, 3, cells * 4e-6, cells / (cells * 4e-3), "Intel Xeon"});
+    rows.push_back({"erosion.thermal", "gpu", size, 50, 5, 1.0 + cells * 2e-7, cells / ((1.0 + cells * 2e-7) * 1e3),
+                    "llvmpipe"});
+  }
+  std::string reason;
+  const auto plot = plot_benchmarks(rows, folder, reason);
+  if (!plot && reason.starts_with("no Python with matplotlib")) GTEST_SKIP() << reason;
+  ASSERT_TRUE(plot) << reason;
+  EXPECT_EQ(plot->path, "timings.png");
+  EXPECT_EQ(plot->kind, "plot");
+  const Picture picture = read_picture(folder / plot->path);
+  EXPECT_GT(picture.width, 0);
+  EXPECT_GT(picture.height, 0);
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1);
+}
+
+TEST_F(Plots, NoRowsGiveAReason) {
+  std::string reason;
+  EXPECT_FALSE(plot_benchmarks({}, folder, reason));
+  EXPECT_EQ(reason, "no benchmark rows");
+}
+
+}  // namespace
+}  // namespace gt
