@@ -1,0 +1,54 @@
+// GlBuffer: creation, upload, download and binding of immutable DSA buffers (see buffer.hpp).
+#include "gpu/buffer.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace gt {
+namespace {
+
+void require_within(std::size_t bytes, std::size_t size_bytes, const char* operation) {
+  if (bytes > size_bytes) {
+    throw std::out_of_range(fmt::format("{} of {} bytes from a buffer of {} bytes", operation, bytes, size_bytes));
+  }
+}
+
+}  // namespace
+
+GlBuffer::GlBuffer(std::size_t bytes) : size_bytes_(bytes) {
+  if (bytes == 0) throw std::invalid_argument("a GL buffer needs at least one byte");
+  glCreateBuffers(1, &id_);
+  glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+GlBuffer::GlBuffer(GlBuffer&& other) noexcept
+    : id_(std::exchange(other.id_, 0)), size_bytes_(std::exchange(other.size_bytes_, 0)) {}
+
+GlBuffer& GlBuffer::operator=(GlBuffer&& other) noexcept {
+  if (this != &other) {
+    if (id_ != 0) glDeleteBuffers(1, &id_);
+    id_ = std::exchange(other.id_, 0);
+    size_bytes_ = std::exchange(other.size_bytes_, 0);
+  }
+  return *this;
+}
+
+GlBuffer::~GlBuffer() {
+  if (id_ != 0) glDeleteBuffers(1, &id_);
+}
+
+void GlBuffer::upload(const void* data, std::size_t bytes) {
+  require_within(bytes, size_bytes_, "upload");
+  glNamedBufferSubData(id_, 0, static_cast<GLsizeiptr>(bytes), data);
+}
+
+void GlBuffer::read_bytes(void* destination, std::size_t bytes) const {
+  require_within(bytes, size_bytes_, "download");
+  glGetNamedBufferSubData(id_, 0, static_cast<GLsizeiptr>(bytes), destination);
+}
+
+void GlBuffer::bind_base(GLenum target, GLuint binding) const { glBindBufferBase(target, binding, id_); }
+
+}  // namespace gt

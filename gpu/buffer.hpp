@@ -1,0 +1,93 @@
+// GL buffers for the GPU twins: shader storage buffers (std430 arrays) and uniform buffers (one
+// std140 block each).
+//
+// Conventions: immutable storage of a fixed byte size made with DSA (glCreateBuffers,
+// glNamedBufferStorage with GL_DYNAMIC_STORAGE_BIT), so contents change only through upload().
+// Move-only RAII; a current GlContext is needed. Element types must be trivially copyable and
+// laid out like their GLSL block (each parameter struct static_asserts its own offsets).
+// Sizes are checked: a zero-byte buffer, or an upload/download past the end, throws
+// std::invalid_argument / std::out_of_range. download() waits for the GPU (glGetNamedBufferSubData);
+// shaders that wrote the buffer must be followed by the matching glMemoryBarrier first.
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+#include <glad/gl.h>
+
+namespace gt {
+
+// What the two buffer kinds share; not used on its own.
+class GlBuffer {
+ public:
+  GlBuffer(GlBuffer&& other) noexcept;
+  GlBuffer& operator=(GlBuffer&& other) noexcept;
+  GlBuffer(const GlBuffer&) = delete;
+  GlBuffer& operator=(const GlBuffer&) = delete;
+  ~GlBuffer();
+
+  GLuint id() const { return id_; }
+  std::size_t size_bytes() const { return size_bytes_; }
+
+  // Writes `bytes` bytes at the start of the buffer.
+  void upload(const void* data, std::size_t bytes);
+
+  template <class T>
+  std::vector<T> download(std::size_t count) const {
+    static_assert(std::is_trivially_copyable_v<T>);
+    std::vector<T> values(count);
+    read_bytes(values.data(), count * sizeof(T));
+    return values;
+  }
+
+ protected:
+  explicit GlBuffer(std::size_t bytes);
+  void bind_base(GLenum target, GLuint binding) const;
+
+ private:
+  void read_bytes(void* destination, std::size_t bytes) const;
+
+  GLuint id_ = 0;
+  std::size_t size_bytes_ = 0;
+};
+
+// A GL_SHADER_STORAGE_BUFFER: an array of T (std430) bound to `layout(binding = N) buffer`.
+class StorageBuffer : public GlBuffer {
+ public:
+  explicit StorageBuffer(std::size_t bytes) : GlBuffer(bytes) {}
+
+  template <class T>
+  static StorageBuffer from(const std::vector<T>& values) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    StorageBuffer buffer(values.size() * sizeof(T));
+    buffer.upload(values.data(), values.size() * sizeof(T));
+    return buffer;
+  }
+
+  void bind(GLuint binding) const { bind_base(GL_SHADER_STORAGE_BUFFER, binding); }
+};
+
+// A GL_UNIFORM_BUFFER holding one std140 block, bound to `layout(std140, binding = N) uniform`.
+class UniformBuffer : public GlBuffer {
+ public:
+  explicit UniformBuffer(std::size_t bytes) : GlBuffer(bytes) {}
+
+  template <class Block>
+  static UniformBuffer from(const Block& block) {
+    UniformBuffer buffer(sizeof(Block));
+    buffer.upload(block);
+    return buffer;
+  }
+
+  using GlBuffer::upload;
+  template <class Block>
+  void upload(const Block& block) {
+    static_assert(std::is_trivially_copyable_v<Block> && !std::is_pointer_v<Block>);
+    upload(&block, sizeof(Block));
+  }
+
+  void bind(GLuint binding) const { bind_base(GL_UNIFORM_BUFFER, binding); }
+};
+
+}  // namespace gt

@@ -1,0 +1,256 @@
+// ComputeProgram and the #include expander behind it; conventions are in shader_program.hpp.
+#include "gpu/shader_program.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace gt {
+namespace {
+
+// The path shown in messages: relative to the project when inside it, else absolute.
+std::string display_path(const std::filesystem::path& path) {
+  const auto absolute = std::filesystem::absolute(path).lexically_normal();
+  const auto relative = absolute.lexically_relative(GT_PROJECT_DIR);
+  const bool inside_project = !relative.empty() && *relative.begin() != "..";
+  return (inside_project ? relative : absolute).generic_string();
+}
+
+std::vector<std::string> read_lines(std::ifstream& file) {
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(file, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+// "NAME" or "NAME=VALUE" as "#define NAME VALUE".
+std::string define_line(const std::string& define) {
+  static const std::regex define_pattern(R"(([A-Za-z_][A-Za-z0-9_]*)(=(.*))?)");
+  std::smatch match;
+  if (!std::regex_match(define, match, define_pattern)) {
+    throw std::invalid_argument(fmt::format("shader define \"{}\" is not NAME or NAME=VALUE", define));
+  }
+  return fmt::format("#define {} {}", match[1].str(), match[3].str());
+}
+
+// Pastes a file and, recursively, the files it includes into an ExpandedShader, inserting the
+// defines after the top file's #version line.
+class IncludeExpander {
+ public:
+  IncludeExpander(std::filesystem::path root, const std::vector<std::string>& defines) : root_(std::move(root)) {
+    std::transform(defines.begin(), defines.end(), std::back_inserter(define_lines_), define_line);
+  }
+
+  ExpandedShader expand(const std::string& relative_path) {
+    expand_file(relative_path, nullptr);
+    if (!version_seen_) throw std::runtime_error(fmt::format("{}: no #version line", display_path(root_ / relative_path)));
+    return std::move(result_);
+  }
+
+ private:
+  void expand_file(const std::string& relative_path, const ExpandedShader::Origin* included_from) {
+    const auto path = root_ / relative_path;
+    const std::string name = display_path(path);
+    std::ifstream file(path);
+    if (!file) throw std::runtime_error(cannot_open_message(relative_path, name, included_from));
+    if (std::find(active_.begin(), active_.end(), name) != active_.end()) {
+      throw std::runtime_error(fmt::format("{}:{}: #include \"{}\" forms a cycle: {} -> {}", included_from->file,
+                                           included_from->line, relative_path, fmt::join(active_, " -> "), name));
+    }
+    active_.push_back(name);
+    const auto lines = read_lines(file);
+    for (std::size_t index = 0; index < lines.size(); ++index) {
+      expand_line(lines[index], {name, static_cast<int>(index + 1)});
+    }
+    active_.pop_back();
+  }
+
+  void expand_line(const std::string& line, const ExpandedShader::Origin& origin) {
+    static const std::regex directive_pattern(R"(\s*#\s*include\b.*)");
+    static const std::regex include_pattern(R"re(\s*#\s*include\s+"([^"]+)"\s*(//.*)?)re");
+    static const std::regex version_pattern(R"(\s*#\s*version\b.*)");
+    std::smatch match;
+    if (std::regex_match(line, match, include_pattern)) {
+      expand_file(match[1].str(), &origin);
+    } else if (std::regex_match(line, directive_pattern)) {
+      throw std::runtime_error(
+          fmt::format("{}:{}: malformed #include (expected #include \"path/from/shader/root\")", origin.file, origin.line));
+    } else {
+      append(line, origin);
+      if (active_.size() == 1 && !version_seen_ && std::regex_match(line, version_pattern)) append_defines();
+    }
+  }
+
+  void append_defines() {
+    version_seen_ = true;
+    for (std::size_t index = 0; index < define_lines_.size(); ++index) {
+      append(define_lines_[index], {"<defines>", static_cast<int>(index + 1)});
+    }
+  }
+
+  void append(const std::string& line, ExpandedShader::Origin origin) {
+    result_.source += line;
+    result_.source += '\n';
+    result_.origins.push_back(std::move(origin));
+  }
+
+  std::string cannot_open_message(const std::string& relative_path, const std::string& name,
+                                  const ExpandedShader::Origin* included_from) const {
+    if (included_from == nullptr) return fmt::format("cannot open shader {}", name);
+    return fmt::format("{}:{}: cannot open included file \"{}\" (looked for {})", included_from->file,
+                       included_from->line, relative_path, name);
+  }
+
+  std::filesystem::path root_;
+  std::vector<std::string> define_lines_;
+  ExpandedShader result_;
+  std::vector<std::string> active_;  // the chain of files being expanded, outermost first
+  bool version_seen_ = false;
+};
+
+// The info log of a shader (glGetShaderiv, glGetShaderInfoLog) or program (glGetProgram...).
+std::string info_log(GLuint object, PFNGLGETSHADERIVPROC get_parameter, PFNGLGETSHADERINFOLOGPROC get_log) {
+  GLint length = 0;
+  get_parameter(object, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<std::size_t>(length), '\0');
+  get_log(object, length, nullptr, log.data());
+  if (!log.empty() && log.back() == '\0') log.pop_back();
+  return log;
+}
+
+std::string describe(const std::string& name, const std::vector<std::string>& defines) {
+  if (defines.empty()) return name;
+  return fmt::format("{} (defines {})", name, fmt::join(defines, ", "));
+}
+
+GLuint compile_compute_shader(const ExpandedShader& shader, const std::string& description) {
+  const GLuint id = glCreateShader(GL_COMPUTE_SHADER);
+  const char* source = shader.source.c_str();
+  glShaderSource(id, 1, &source, nullptr);
+  glCompileShader(id);
+  GLint compiled = GL_FALSE;
+  glGetShaderiv(id, GL_COMPILE_STATUS, &compiled);
+  const std::string log = shader.locate_info_log(info_log(id, glGetShaderiv, glGetShaderInfoLog));
+  if (!compiled) {
+    glDeleteShader(id);
+    throw std::runtime_error(fmt::format("compiling {} failed:\n{}", description, log));
+  }
+  if (!log.empty()) fmt::print(stderr, "[gl] compiling {}:\n{}\n", description, log);
+  return id;
+}
+
+// Links the shader into a program and deletes the shader, whether linking succeeds or not.
+GLuint link_compute_program(GLuint shader, const ExpandedShader& expanded, const std::string& description) {
+  const GLuint id = glCreateProgram();
+  glAttachShader(id, shader);
+  glLinkProgram(id);
+  glDetachShader(id, shader);
+  glDeleteShader(shader);
+  GLint linked = GL_FALSE;
+  glGetProgramiv(id, GL_LINK_STATUS, &linked);
+  if (!linked) {
+    const std::string log = expanded.locate_info_log(info_log(id, glGetProgramiv, glGetProgramInfoLog));
+    glDeleteProgram(id);
+    throw std::runtime_error(fmt::format("linking {} failed:\n{}", description, log));
+  }
+  return id;
+}
+
+int group_count(int size, int local_size) { return (size + local_size - 1) / local_size; }
+
+}  // namespace
+
+std::filesystem::path shader_root() {
+  const char* override_dir = std::getenv("GROUNDTRUTH_SHADER_DIR");
+  return (override_dir && *override_dir) ? std::filesystem::path(override_dir) : std::filesystem::path(GT_SHADER_DIR);
+}
+
+std::string ExpandedShader::locate_info_log(const std::string& info_log) const {
+  static const std::regex mesa_prefix(R"(\d+:(\d+)\((\d+)\): (.*))");
+  static const std::regex nvidia_prefix(R"(\d+\((\d+)\) : (.*))");
+  std::string located;
+  std::istringstream lines(info_log);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch match;
+    const bool mesa = std::regex_match(line, match, mesa_prefix);
+    if (mesa || std::regex_match(line, match, nvidia_prefix)) {
+      const auto expanded_line = std::stoul(match[1].str());
+      if (expanded_line >= 1 && expanded_line <= origins.size()) {
+        const Origin& origin = origins[expanded_line - 1];
+        line = mesa ? fmt::format("{}:{}:{}: {}", origin.file, origin.line, match[2].str(), match[3].str())
+                    : fmt::format("{}:{}: {}", origin.file, origin.line, match[2].str());
+      }
+    }
+    if (!located.empty()) located += '\n';
+    located += line;
+  }
+  return located;
+}
+
+ExpandedShader expand_shader(const std::filesystem::path& root, const std::string& relative_path,
+                             const std::vector<std::string>& defines) {
+  return IncludeExpander(root, defines).expand(relative_path);
+}
+
+ComputeProgram ComputeProgram::load(const std::string& relative_path, const std::vector<std::string>& defines) {
+  return load_from(shader_root(), relative_path, defines);
+}
+
+ComputeProgram ComputeProgram::load_from(const std::filesystem::path& root, const std::string& relative_path,
+                                         const std::vector<std::string>& defines) {
+  const ExpandedShader expanded = expand_shader(root, relative_path, defines);
+  const std::string description = describe(display_path(root / relative_path), defines);
+  const GLuint shader = compile_compute_shader(expanded, description);
+  return ComputeProgram(link_compute_program(shader, expanded, description));
+}
+
+ComputeProgram::ComputeProgram(GLuint id) : id_(id) {
+  glGetProgramiv(id_, GL_COMPUTE_WORK_GROUP_SIZE, local_size_.data());
+}
+
+ComputeProgram::ComputeProgram(ComputeProgram&& other) noexcept
+    : id_(std::exchange(other.id_, 0)), local_size_(other.local_size_) {}
+
+ComputeProgram& ComputeProgram::operator=(ComputeProgram&& other) noexcept {
+  if (this != &other) {
+    if (id_ != 0) glDeleteProgram(id_);
+    id_ = std::exchange(other.id_, 0);
+    local_size_ = other.local_size_;
+  }
+  return *this;
+}
+
+ComputeProgram::~ComputeProgram() {
+  if (id_ != 0) glDeleteProgram(id_);
+}
+
+GLuint ComputeProgram::id() const { return id_; }
+
+void ComputeProgram::use() const { glUseProgram(id_); }
+
+GLint ComputeProgram::uniform(const char* name) const { return glGetUniformLocation(id_, name); }
+
+void ComputeProgram::dispatch(int width, int height, int local_x, int local_y) const {
+  if (local_x != local_size_[0] || local_y != local_size_[1] || local_size_[2] != 1) {
+    throw std::invalid_argument(fmt::format("dispatch with local size {}x{}, the shader declares {}x{}x{}", local_x,
+                                            local_y, local_size_[0], local_size_[1], local_size_[2]));
+  }
+  if (width < 0 || height < 0) {
+    throw std::invalid_argument(fmt::format("dispatch over a negative extent {}x{}", width, height));
+  }
+  use();
+  glDispatchCompute(static_cast<GLuint>(group_count(width, local_x)), static_cast<GLuint>(group_count(height, local_y)),
+                    1);
+}
+
+}  // namespace gt

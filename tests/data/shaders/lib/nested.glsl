@@ -1,0 +1,2 @@
+// Second include level of counting.comp.
+uint nested_answer() { return 42u; }
