@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/gl_test.hpp"
+
 #include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "gpu/buffer.hpp"
@@ -75,21 +77,7 @@ TEST(Rng, Uniform01StaysInTheHalfOpenUnitInterval) {
   EXPECT_NEAR(sum / cell_count, 0.5, 0.01);
 }
 
-class RngParity : public testing::TestWithParam<Counters> {
- protected:
-  static void SetUpTestSuite() {
-    try {
-      context = gt::GlContext::create(gt::GlBackend::egl);
-    } catch (const gt::GpuUnavailable& unavailable) {
-      context_failure = unavailable.what();
-    }
-  }
-  static void TearDownTestSuite() { context.reset(); }
-  void SetUp() override { ASSERT_TRUE(context) << "no GL context: " << context_failure; }
-
-  static inline std::unique_ptr<gt::GlContext> context;
-  static inline std::string context_failure;
-};
+class RngParity : public gt::testing::GlTestWithParam<Counters> {};
 
 TEST_P(RngParity, GpuDrawsTheSameBitsAsTheCpu) {
   const Counters counters = GetParam();

@@ -13,6 +13,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "tests/support/gl_test.hpp"
+
 #include "core/errors.hpp"
 #include "gpu/buffer.hpp"
 #include "gpu/context/context.hpp"
@@ -103,21 +105,7 @@ TEST(LocateInfoLog, RewritesMesaAndNvidiaPrefixes) {
   EXPECT_EQ(shader.locate_info_log("error: linking failed"), "error: linking failed");
 }
 
-class ComputeProgramTest : public testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    try {
-      context = gt::GlContext::create(gt::GlBackend::egl);
-    } catch (const gt::GpuUnavailable& unavailable) {
-      context_failure = unavailable.what();
-    }
-  }
-  static void TearDownTestSuite() { context.reset(); }
-  void SetUp() override { ASSERT_TRUE(context) << "no GL context: " << context_failure; }
-
-  static inline std::unique_ptr<gt::GlContext> context;
-  static inline std::string context_failure;
-};
+class ComputeProgramTest : public gt::testing::GlTest {};
 
 TEST_F(ComputeProgramTest, RunsWithIncludesDefinesAndRoundedUpGroups) {
   const auto program = gt::ComputeProgram::load_from(test_shaders, "counting.comp", {"OFFSET=5"});

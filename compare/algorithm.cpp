@@ -1,0 +1,24 @@
+#include "compare/algorithm.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+
+const std::vector<Algorithm>& algorithms() {
+  static const std::vector<Algorithm> all = {thermal_algorithm(), thermal_jako_algorithm()};
+  return all;
+}
+
+const Algorithm& find_algorithm(const std::string& name) {
+  std::vector<std::string> names;
+  for (const auto& algorithm : algorithms()) {
+    if (algorithm.name == name) return algorithm;
+    names.push_back(algorithm.name);
+  }
+  throw InputError(fmt::format("unknown algorithm '{}'; known: {}", name, fmt::join(names, ", ")));
+}
+
+}  // namespace gt

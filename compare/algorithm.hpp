@@ -1,0 +1,44 @@
+// The algorithms the driver knows: name, where it comes from, its parameter declarations and how
+// to run a case of it. `groundtruth list` prints this table.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/field_twin.hpp"
+#include "compare/result.hpp"
+#include "core/grid.hpp"
+#include "core/params.hpp"
+
+namespace gt {
+
+// An algorithm's twins set up for one input and parameter set.
+struct PreparedTwin {
+  FieldTwin twin;
+  Heightmap input;  // what the twins run on (seed 000's normalised heights, for example)
+  // Checks that belong to the algorithm rather than to field twins (spec vectors of its formulas).
+  std::function<void(const nlohmann::json& expect, CaseResult& result)> extra_checks;
+};
+
+struct Algorithm {
+  std::string name;     // e.g. erosion.thermal
+  std::string summary;  // one line
+  std::string source;   // seed / paper and equations
+  const ParamSpecs* params = nullptr;
+  // `resolved` holds every parameter (defaults filled in, ranges checked).
+  std::function<PreparedTwin(const nlohmann::json& resolved, const Heightmap& input)> prepare;
+};
+
+const std::vector<Algorithm>& algorithms();
+
+// Throws InputError listing the known names.
+const Algorithm& find_algorithm(const std::string& name);
+
+// Defined by each file of compare/algorithms/.
+Algorithm thermal_algorithm();
+Algorithm thermal_jako_algorithm();
+
+}  // namespace gt

@@ -1,0 +1,68 @@
+#include "compare/benchmark.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/inputs.hpp"
+#include "compare/timing.hpp"
+#include "gpu/timing.hpp"
+
+namespace gt {
+namespace {
+
+BenchmarkRow row(const std::string& algorithm, const std::string& backend, int size, const BenchmarkOptions& options,
+                 const std::vector<double>& times, const std::string& device) {
+  BenchmarkRow result{algorithm, backend, size, options.iterations, options.reps, median(times), 0.0, device};
+  result.mcell_iterations_per_s =
+      static_cast<double>(size) * size * options.iterations / (result.median_ms * 1e-3) / 1e6;
+  return result;
+}
+
+// A cone steep enough everywhere on its flank that every iteration moves material, with noise
+// so that flat ground is active too.
+Heightmap benchmark_input(int size) {
+  const nlohmann::json input = {{"generator", "cone"}, {"width", size}, {"height", size}, {"cell_size", 1.0},
+                                {"peak", 0.8 * size}, {"noise", 2.0}, {"seed", 7}};
+  return load_input(input, nullptr, {}).heights;
+}
+
+}  // namespace
+
+std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool gpu_available,
+                                         const Environment& environment) {
+  std::vector<BenchmarkRow> rows;
+  int index = 0;
+  Progress progress(static_cast<int>(algorithms().size() * options.sizes.size()));
+  for (const auto& algorithm : algorithms()) {
+    const auto params = resolve_params(algorithm.name, *algorithm.params, {{"iterations", options.iterations}});
+    for (int size : options.sizes) {
+      progress.start_case(++index, fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
+      const PreparedTwin prepared = algorithm.prepare(params, benchmark_input(size));
+      std::vector<double> cpu_times;
+      progress.stage("cpu");
+      prepared.twin.reference_double(prepared.input);
+      for (int rep = 0; rep < options.reps; ++rep) {
+        cpu_times.push_back(cpu_wall_ms([&] { prepared.twin.reference_double(prepared.input); }));
+      }
+      rows.push_back(row(algorithm.name, "cpu", size, options, cpu_times, environment.cpu));
+      if (!gpu_available) continue;
+      progress.stage("gpu");
+      const auto input = prepared.input.cast<float>();
+      GpuFieldRunner runner = prepared.twin.make_gpu();
+      runner.load(input);
+      runner.run();
+      std::vector<double> gpu_times;
+      for (int rep = 0; rep < options.reps; ++rep) {
+        runner.load(input);
+        gpu_times.push_back(gpu_wall_ms(runner.run));
+      }
+      rows.push_back(row(algorithm.name, "gpu", size, options, gpu_times, environment.gl_renderer));
+    }
+  }
+  progress.finish();
+  return rows;
+}
+
+}  // namespace gt

@@ -1,0 +1,92 @@
+// Loading and selecting case files; see compare/cases.hpp for the format.
+#include "compare/cases.hpp"
+
+#include <algorithm>
+#include <fnmatch.h>
+#include <fstream>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+const std::set<std::string> known_case_keys = {"name", "algorithm", "params", "input", "crop", "expect", "description"};
+
+std::vector<std::filesystem::path> case_files(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  if (error) throw InputError(fmt::format("cannot read the case folder {}: {}", folder.string(), error.message()));
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) {
+  if (!entry.is_object()) throw InputError(fmt::format("{}: a case must be a JSON object", origin));
+  for (const auto& [key, value] : entry.items()) {
+    if (!known_case_keys.contains(key)) throw InputError(fmt::format("{}: unknown case field '{}'", origin, key));
+  }
+  if (!entry.contains("name") || !entry["name"].is_string() || !entry.contains("algorithm") ||
+      !entry["algorithm"].is_string() || !entry.contains("input") || !entry["input"].is_object()) {
+    throw InputError(fmt::format("{}: a case needs string 'name', string 'algorithm' and object 'input'", origin));
+  }
+  CaseSpec spec;
+  spec.name = entry["name"].get<std::string>();
+  spec.algorithm = entry["algorithm"].get<std::string>();
+  spec.params = entry.value("params", nlohmann::json::object());
+  spec.input = entry["input"];
+  spec.crop = entry.value("crop", nlohmann::json());
+  spec.expect = entry.value("expect", nlohmann::json());
+  spec.origin = origin;
+  return spec;
+}
+
+std::vector<CaseSpec> load_cases(const std::filesystem::path& folder) {
+  std::vector<CaseSpec> cases;
+  std::set<std::string> names;
+  for (const auto& file : case_files(folder)) {
+    std::ifstream stream(file);
+    nlohmann::json document;
+    try {
+      document = nlohmann::json::parse(stream);
+    } catch (const nlohmann::json::exception& error) {
+      throw InputError(fmt::format("{}: not valid JSON: {}", file.string(), error.what()));
+    }
+    if (!document.is_array()) throw InputError(fmt::format("{}: expected an array of cases", file.string()));
+    for (const auto& entry : document) {
+      auto spec = case_from_json(entry, file.filename().string());
+      if (!names.insert(spec.name).second) {
+        throw InputError(fmt::format("{}: case name '{}' is used twice", file.string(), spec.name));
+      }
+      cases.push_back(std::move(spec));
+    }
+  }
+  return cases;
+}
+
+std::vector<CaseSpec> select_cases(const std::vector<CaseSpec>& cases, const std::vector<std::string>& patterns) {
+  std::vector<CaseSpec> selected;
+  for (const auto& pattern : patterns) {
+    const auto before = selected.size();
+    for (const auto& spec : cases) {
+      const bool already = std::any_of(selected.begin(), selected.end(),
+                                       [&](const CaseSpec& chosen) { return chosen.name == spec.name; });
+      if (!already && fnmatch(pattern.c_str(), spec.name.c_str(), 0) == 0) selected.push_back(spec);
+    }
+    if (selected.size() == before && std::none_of(cases.begin(), cases.end(), [&](const CaseSpec& spec) {
+          return fnmatch(pattern.c_str(), spec.name.c_str(), 0) == 0;
+        })) {
+      throw InputError(fmt::format("no case matches '{}'; `groundtruth list` shows the case names", pattern));
+    }
+  }
+  return selected;
+}
+
+}  // namespace gt

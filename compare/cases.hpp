@@ -1,0 +1,44 @@
+// Cases are data (piglit-style declarative files): datasets/cases/*.json hold arrays of cases,
+// each naming the algorithm, its parameters, its input and what is expected. Ad-hoc cases from
+// `groundtruth run --algorithm --input --set` become the same CaseSpec.
+//
+// Case file entry:
+//   {"name": "erosion.thermal.cardinal.volcano",          stable dotted name
+//    "algorithm": "erosion.thermal",
+//    "params": {"iterations": 100, ...},                   checked against the algorithm's specs
+//    "input": {"file": "real/volcano.json"}                path relative to datasets/, or absolute
+//          | {"generator": "cone", "width": 128, ...}      see compare/inputs.hpp
+//    "crop": [x, y, width, height],                        optional, applied to the input
+//    "expect": {"cells": [[x, y, value], ...],             optional spec vectors (spec.* checks)
+//               "total": 1.0, "tolerance": 1e-12}}
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace gt {
+
+struct CaseSpec {
+  std::string name;
+  std::string algorithm;
+  nlohmann::json params = nlohmann::json::object();
+  nlohmann::json input = nlohmann::json::object();
+  nlohmann::json crop;     // null or [x, y, width, height]
+  nlohmann::json expect;   // null or {"cells": [...], "total": ..., "tolerance": ...}
+  std::string origin;      // the case file it came from, or "command line"
+};
+
+// Every case of every *.json in `folder`, in file-name order then file order. Throws InputError
+// for malformed files and for duplicate names.
+std::vector<CaseSpec> load_cases(const std::filesystem::path& folder);
+
+CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin);
+
+// The cases whose names match any of the shell-style patterns (fnmatch), in load order.
+// Throws InputError when a pattern matches nothing, listing how to see the names.
+std::vector<CaseSpec> select_cases(const std::vector<CaseSpec>& cases, const std::vector<std::string>& patterns);
+
+}  // namespace gt

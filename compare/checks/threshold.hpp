@@ -1,0 +1,34 @@
+// Turning a measured value and its bounds into a Check with an outcome.
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "compare/result.hpp"
+
+namespace gt {
+
+// pass when value <= strict, warn when value <= loose (if given), fail otherwise; a NaN value
+// always fails.
+inline Check bounded_check(std::string name, double value, double strict, std::optional<double> loose,
+                           std::string detail) {
+  Check check{std::move(name), value, strict, loose, Outcome::fail, std::move(detail)};
+  if (value <= strict) {
+    check.status = Outcome::pass;
+  } else if (loose && value <= *loose) {
+    check.status = Outcome::warn;
+  }
+  return check;
+}
+
+inline Check skipped_check(std::string name, std::string reason) {
+  Check check;
+  check.name = std::move(name);
+  check.value = std::nan("");
+  check.status = Outcome::skip;
+  check.detail = std::move(reason);
+  return check;
+}
+
+}  // namespace gt

@@ -1,0 +1,175 @@
+// groundtruth: the command line of DESIGN.md.
+//   list [--json]                      algorithms (parameters, defaults, ranges, units) and cases
+//   run PATTERN... | --algorithm A --input FILE [--set k=v]... [--backend] [--out] [--gl]
+//   report [--out] [--gl]              the default suite and benchmarks into reports/latest
+//   bench [--sizes] [--iterations]     only the performance table
+// Exit status: 0 nothing unexpected failed, 1 something did, 2 bad usage or bad input.
+#include <cstdio>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/cases.hpp"
+#include "compare/driver.hpp"
+#include "core/errors.hpp"
+
+namespace {
+
+using gt::Backends;
+
+constexpr int exit_bad_input = 2;
+
+struct Shared {
+  std::string gl = "egl";
+  std::string backend = "both";
+  std::string out;
+  int cpu_reps = 3;
+  int gpu_reps = 5;
+};
+
+void add_shared_options(CLI::App& command, Shared& shared, const std::string& default_out) {
+  shared.out = default_out;
+  command.add_option("--gl", shared.gl, "GL context: egl (hardware device, else surfaceless llvmpipe) or osmesa")
+      ->check(CLI::IsMember({"egl", "osmesa"}))
+      ->capture_default_str();
+  command.add_option("--out", shared.out, "report folder (written atomically; an existing report is replaced)")
+      ->capture_default_str();
+  command.add_option("--cpu-reps", shared.cpu_reps, "timed repetitions of the CPU reference")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  command.add_option("--gpu-reps", shared.gpu_reps, "timed repetitions of the GPU twin")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+}
+
+gt::DriverOptions driver_options(const Shared& shared) {
+  gt::DriverOptions options;
+  options.gl = gt::parse_gl_backend(shared.gl);
+  options.backends = shared.backend == "cpu" ? Backends::cpu : shared.backend == "gpu" ? Backends::gpu : Backends::both;
+  options.out = shared.out;
+  options.dataset_dir = GT_DATASET_DIR;
+  options.cpu_reps = shared.cpu_reps;
+  options.gpu_reps = shared.gpu_reps;
+  return options;
+}
+
+nlohmann::json list_json() {
+  nlohmann::json out = {{"algorithms", nlohmann::json::array()}, {"cases", nlohmann::json::array()}};
+  for (const auto& algorithm : gt::algorithms()) {
+    nlohmann::json params = nlohmann::json::array();
+    for (const auto& spec : *algorithm.params) params.push_back(gt::to_json(spec));
+    out["algorithms"].push_back(
+        {{"name", algorithm.name}, {"summary", algorithm.summary}, {"source", algorithm.source}, {"params", params}});
+  }
+  for (const auto& spec : gt::load_cases(std::filesystem::path(GT_DATASET_DIR) / "cases")) {
+    out["cases"].push_back({{"name", spec.name}, {"algorithm", spec.algorithm}, {"params", spec.params},
+                            {"input", spec.input}, {"file", spec.origin}});
+  }
+  return out;
+}
+
+void print_list(bool as_json) {
+  const auto listing = list_json();
+  if (as_json) {
+    fmt::print("{}\n", listing.dump(2));
+    return;
+  }
+  fmt::print("Algorithms\n");
+  for (const auto& algorithm : listing["algorithms"]) {
+    fmt::print("  {}  {}\n    source: {}\n", algorithm["name"].get<std::string>(),
+               algorithm["summary"].get<std::string>(), algorithm["source"].get<std::string>());
+    for (const auto& param : algorithm["params"]) {
+      const auto range = param.contains("choices") ? param["choices"].dump()
+                                                   : (param.contains("min") ? fmt::format("[{}, {}]", param["min"].dump(), param["max"].dump()) : "true|false");
+      fmt::print("    {:16} default {:12} {:22} {:8} {}\n", param["name"].get<std::string>(), param["default"].dump(),
+                 range, param["unit"].get<std::string>(), param["description"].get<std::string>());
+    }
+  }
+  fmt::print("Cases\n");
+  for (const auto& spec : listing["cases"]) fmt::print("  {}\n", spec["name"].get<std::string>());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"groundtruth: CPU references and GPU twins of terrain and cave algorithms, compared"};
+  app.require_subcommand(1);
+
+  bool list_as_json = false;
+  auto* list = app.add_subcommand("list", "algorithms with their parameters, and the cases");
+  list->add_flag("--json", list_as_json, "machine-readable");
+
+  Shared run_shared;
+  std::vector<std::string> patterns;
+  gt::AdHocCase ad_hoc;
+  auto* run = app.add_subcommand("run", "run cases (globs over case names) or one ad-hoc case");
+  run->add_option("patterns", patterns, "case-name patterns, e.g. 'erosion.thermal.*'");
+  run->add_option("--algorithm", ad_hoc.algorithm, "ad-hoc case: the algorithm");
+  run->add_option("--input", ad_hoc.input, "ad-hoc case: a heightmap file (PNG, TIFF/GeoTIFF, EXR, volcano JSON, npz)");
+  run->add_option("--set", ad_hoc.assignments, "ad-hoc case: a parameter, name=value (repeatable)");
+  run->add_option("--backend", run_shared.backend, "cpu (references only), gpu, or both")
+      ->check(CLI::IsMember({"cpu", "gpu", "both"}))
+      ->capture_default_str();
+  add_shared_options(*run, run_shared, "groundtruth-report");
+
+  Shared report_shared;
+  bool skip_benchmark = false;
+  auto* report = app.add_subcommand("report", "the main job: every bundled case and the benchmarks");
+  add_shared_options(*report, report_shared, std::string(GT_SOURCE_DIR) + "/reports/latest");
+  report->add_flag("--no-benchmark", skip_benchmark, "leave out the performance table");
+
+  Shared bench_shared;
+  gt::BenchmarkOptions bench_options;
+  auto* bench = app.add_subcommand("bench", "only the performance table");
+  add_shared_options(*bench, bench_shared, "groundtruth-bench");
+  bench->add_option("--sizes", bench_options.sizes, "grid sides")->check(CLI::Range(8, 8192))->capture_default_str();
+  bench->add_option("--iterations", bench_options.iterations, "iterations per run")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  bench->add_option("--reps", bench_options.reps, "timed runs per size")->check(CLI::Range(1, 100))->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int status = app.exit(error);
+    return status == 0 ? 0 : exit_bad_input;
+  }
+
+  try {
+    if (list->parsed()) {
+      print_list(list_as_json);
+      return 0;
+    }
+    if (run->parsed()) {
+      auto options = driver_options(run_shared);
+      options.patterns = patterns;
+      const bool partial_ad_hoc = ad_hoc.algorithm.empty() != ad_hoc.input.empty();
+      if (partial_ad_hoc) throw gt::InputError("an ad-hoc run needs both --algorithm and --input");
+      if (!ad_hoc.assignments.empty() && ad_hoc.algorithm.empty()) {
+        throw gt::InputError("--set applies to an ad-hoc run: give --algorithm and --input too");
+      }
+      if (!ad_hoc.algorithm.empty()) options.ad_hoc = ad_hoc;
+      if (patterns.empty() && !options.ad_hoc) {
+        throw gt::InputError("nothing to run: name case patterns (see `groundtruth list`) or --algorithm with --input");
+      }
+      return gt::run_driver(options);
+    }
+    if (report->parsed()) {
+      auto options = driver_options(report_shared);
+      options.patterns = {"*"};
+      if (!skip_benchmark) options.benchmark = gt::BenchmarkOptions{};
+      return gt::run_driver(options);
+    }
+    auto options = driver_options(bench_shared);
+    options.benchmark = bench_options;
+    return gt::run_driver(options);
+  } catch (const gt::InputError& error) {
+    fmt::print(stderr, "groundtruth: {}\n", error.what());
+    return exit_bad_input;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "groundtruth: internal error: {}\n", error.what());
+    return 1;
+  }
+}

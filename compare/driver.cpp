@@ -1,0 +1,236 @@
+// The comparison driver; see driver.hpp.
+#include "compare/driver.hpp"
+
+#include <fstream>
+#include <map>
+#include <memory>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/benchmark.hpp"
+#include "compare/cases.hpp"
+#include "compare/inputs.hpp"
+#include "compare/report/plots.hpp"
+#include "compare/report/writers.hpp"
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+// A case ready to run: its algorithm found, parameters resolved, input loaded and checked.
+struct Job {
+  CaseSpec spec;
+  const Algorithm* algorithm = nullptr;
+  nlohmann::json resolved;
+  LoadedInput input;
+};
+
+CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
+  const auto& algorithm = find_algorithm(ad_hoc.algorithm);
+  CaseSpec spec;
+  spec.algorithm = ad_hoc.algorithm;
+  spec.origin = "command line";
+  spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
+  for (const auto& assignment : ad_hoc.assignments) {
+    const auto equals = assignment.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw InputError(fmt::format("--set '{}': expected name=value", assignment));
+    }
+    const auto name = assignment.substr(0, equals);
+    spec.params[name] = parse_param_text(spec.algorithm, *algorithm.params, name, assignment.substr(equals + 1));
+  }
+  spec.name = fmt::format("adhoc.{}.{}", ad_hoc.algorithm, std::filesystem::path(ad_hoc.input).stem().string());
+  return spec;
+}
+
+std::vector<CaseSpec> selected_specs(const DriverOptions& options) {
+  std::vector<CaseSpec> specs;
+  if (!options.patterns.empty()) specs = select_cases(load_cases(options.dataset_dir / "cases"), options.patterns);
+  if (options.ad_hoc) specs.push_back(ad_hoc_spec(*options.ad_hoc));
+  if (specs.empty()) throw InputError("nothing to run: name case patterns or an --algorithm with an --input");
+  return specs;
+}
+
+std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::filesystem::path& dataset_dir) {
+  std::vector<Job> jobs;
+  for (const auto& spec : specs) {
+    Job job;
+    job.spec = spec;
+    job.algorithm = &find_algorithm(spec.algorithm);
+    job.resolved = resolve_params(spec.name, *job.algorithm->params, spec.params);
+    try {
+      job.input = load_input(spec.input, spec.crop, dataset_dir);
+    } catch (const InputError& error) {
+      throw InputError(fmt::format("case {}: {}", spec.name, error.what()));
+    }
+    jobs.push_back(std::move(job));
+  }
+  return jobs;
+}
+
+// datasets/expectations.txt: "<case name> <reason>" per line, '#' starts a comment.
+std::map<std::string, std::string> load_expectations(const std::filesystem::path& file) {
+  std::map<std::string, std::string> expectations;
+  std::ifstream stream(file);
+  std::string line;
+  while (std::getline(stream, line)) {
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const auto space = line.find_first_of(" \t", first);
+    const auto name = line.substr(first, space - first);
+    const auto reason_start = space == std::string::npos ? std::string::npos : line.find_first_not_of(" \t", space);
+    expectations[name] = reason_start == std::string::npos ? "expected to fail" : line.substr(reason_start);
+  }
+  return expectations;
+}
+
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown CPU";
+}
+
+Environment base_environment() {
+  Environment environment;
+  environment.cpu = fmt::format("{} ({} logical cores)", cpu_model(), sysconf(_SC_NPROCESSORS_ONLN));
+  environment.compiler = fmt::format("GCC {}", __VERSION__);
+  environment.build_type = GT_BUILD_TYPE;
+  environment.git = GT_GIT_DESCRIBE;
+  return environment;
+}
+
+CaseResult run_job(const Job& job, const RunOptions& options, const std::map<std::string, std::string>& expectations) {
+  CaseResult result;
+  result.name = job.spec.name;
+  result.algorithm = job.spec.algorithm;
+  result.input = job.input.description;
+  result.width = job.input.heights.width;
+  result.height = job.input.heights.height;
+  result.params = job.resolved;
+  try {
+    const PreparedTwin prepared = job.algorithm->prepare(job.resolved, job.input.heights);
+    run_field_twin(prepared.twin, prepared.input, job.spec.expect, options, result);
+    if (prepared.extra_checks) prepared.extra_checks(job.spec.expect, result);
+  } catch (const std::exception& error) {
+    result.error = error.what();
+  }
+  if (const auto expected = expectations.find(result.name); expected != expectations.end()) {
+    result.expected_failure = expected->second;
+  }
+  result.status = case_outcome(result);
+  return result;
+}
+
+void print_summary(const Report& report, const std::filesystem::path& out) {
+  std::map<Outcome, int> counts;
+  for (const auto& result : report.cases) {
+    ++counts[result.status];
+    fmt::print("{:5} {}{}\n", outcome_name(result.status), result.name,
+               result.expected_failure.empty() ? "" : " (expected failure)");
+  }
+  fmt::print("groundtruth: {} cases: {} pass, {} warn, {} fail, {} error, {} skip; report in {}\n", report.cases.size(),
+             counts[Outcome::pass], counts[Outcome::warn], counts[Outcome::fail], counts[Outcome::error],
+             counts[Outcome::skip], (out / "index.html").string());
+}
+
+}  // namespace
+
+void check_output_folder(const std::filesystem::path& out) {
+  const auto absolute = std::filesystem::absolute(out).lexically_normal();
+  const auto parent = absolute.has_filename() ? absolute.parent_path() : absolute.parent_path().parent_path();
+  if (!std::filesystem::is_directory(parent)) {
+    throw InputError(fmt::format("output folder {}: its parent {} does not exist; create it first", out.string(),
+                                 parent.string()));
+  }
+  if (!std::filesystem::exists(out)) return;
+  if (!std::filesystem::is_directory(out)) {
+    throw InputError(fmt::format("output {} exists and is not a folder; refusing to overwrite it", out.string()));
+  }
+  if (!std::filesystem::is_empty(out) && !std::filesystem::exists(out / "report.json")) {
+    throw InputError(fmt::format("output folder {} holds files that are not a groundtruth report; refusing to "
+                                 "overwrite them (choose another --out)",
+                                 out.string()));
+  }
+}
+
+void write_folder_atomically(const std::filesystem::path& out,
+                             const std::function<void(const std::filesystem::path&)>& fill) {
+  const auto target = std::filesystem::absolute(out).lexically_normal();
+  const auto base = (target.has_filename() ? target : target.parent_path()).string();
+  const std::filesystem::path staging = fmt::format("{}.tmp-{}", base, getpid());
+  std::filesystem::remove_all(staging);
+  std::filesystem::create_directory(staging);
+  try {
+    fill(staging);
+  } catch (...) {
+    std::filesystem::remove_all(staging);
+    throw;
+  }
+  if (std::filesystem::exists(target)) {
+    const std::filesystem::path previous = fmt::format("{}.old-{}", base, getpid());
+    std::filesystem::rename(target, previous);
+    std::filesystem::rename(staging, target);
+    std::filesystem::remove_all(previous);
+  } else {
+    std::filesystem::rename(staging, target);
+  }
+}
+
+int run_driver(const DriverOptions& options) {
+  const auto specs = options.patterns.empty() && !options.ad_hoc ? std::vector<CaseSpec>{} : selected_specs(options);
+  const auto jobs = prepare_jobs(specs, options.dataset_dir);
+  const auto expectations = load_expectations(options.dataset_dir / "expectations.txt");
+  check_output_folder(options.out);
+
+  Report report;
+  report.environment = base_environment();
+  RunOptions run_options;
+  run_options.cpu_reps = options.backends == Backends::gpu ? 0 : options.cpu_reps;
+  run_options.gpu_reps = options.gpu_reps;
+  std::unique_ptr<GlContext> context;
+  if (options.backends == Backends::cpu) {
+    run_options.gpu_unavailable_reason = "GPU backend not requested (--backend cpu)";
+  } else {
+    try {
+      context = GlContext::create(options.gl);
+      run_options.gpu_available = true;
+    } catch (const GpuUnavailable& error) {
+      run_options.gpu_unavailable_reason = fmt::format("no GL context: {}", error.what());
+      fmt::print(stderr, "groundtruth: {}; GPU checks are skipped, the CPU side still runs\n", error.what());
+    }
+  }
+  report.environment.gl_renderer = context ? context->info().renderer : "none: " + run_options.gpu_unavailable_reason;
+  report.environment.gl_version = context ? context->info().version : "";
+  report.environment.gl_platform = context ? context->info().platform : "none";
+
+  write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
+    run_options.report_dir = folder;
+    Progress progress(static_cast<int>(jobs.size()));
+    run_options.progress = &progress;
+    for (std::size_t index = 0; index < jobs.size(); ++index) {
+      progress.start_case(static_cast<int>(index + 1), jobs[index].spec.name);
+      report.cases.push_back(run_job(jobs[index], run_options, expectations));
+    }
+    progress.finish();
+    if (options.benchmark) {
+      report.benchmarks = run_benchmarks(*options.benchmark, run_options.gpu_available, report.environment);
+      std::string reason;
+      if (auto plot = plot_benchmarks(report.benchmarks, folder, reason)) {
+        report.plots.push_back(*plot);
+      } else {
+        report.plots.push_back({"", "plot", "plot unavailable: " + reason});
+        fmt::print(stderr, "groundtruth: plot unavailable: {}\n", reason);
+      }
+    }
+    write_report_files(report, folder);
+  });
+  print_summary(report, options.out);
+  return run_failed(report) ? 1 : 0;
+}
+
+}  // namespace gt

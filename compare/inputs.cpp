@@ -1,0 +1,151 @@
+// Case inputs: files through core/io, generated fields here; see compare/inputs.hpp.
+#include "compare/inputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/io/heightmap_io.hpp"
+#include "core/rng.hpp"
+
+namespace gt {
+namespace {
+
+int grid_side(const nlohmann::json& input, const char* key) {
+  const auto side = input.value(key, 128);
+  if (side < 1) throw InputError(fmt::format("input generator: {} = {} must be at least 1", key, side));
+  return side;
+}
+
+Heightmap blank_field(const nlohmann::json& input) {
+  const int width = grid_side(input, "width");
+  const int height = grid_side(input, "height");
+  check_grid_fits(width, height, 64, "generated input");
+  Heightmap field(width, height, 0.0);
+  field.cell_size_x = field.cell_size_y = input.value("cell_size", 1.0);
+  if (!(field.cell_size_x > 0.0)) throw InputError("input generator: cell_size must be positive");
+  return field;
+}
+
+void add_noise(Heightmap& field, const nlohmann::json& input) {
+  const double amplitude = input.value("noise", 0.0);
+  const auto seed = input.value("seed", 1u);
+  if (amplitude == 0.0) return;
+  for (std::size_t i = 0; i < field.size(); ++i) {
+    field.values[i] += amplitude * uniform01(random_u32(seed, static_cast<std::uint32_t>(i), 0, 0));
+  }
+}
+
+Heightmap cone(const nlohmann::json& input) {
+  Heightmap field = blank_field(input);
+  const double peak = input.value("peak", 100.0);
+  const double radius = input.value("radius", 0.4) * std::min(field.width * field.cell_size_x,
+                                                               field.height * field.cell_size_y);
+  const double centre_x = 0.5 * field.width * field.cell_size_x;
+  const double centre_y = 0.5 * field.height * field.cell_size_y;
+  for (int y = 0; y < field.height; ++y) {
+    for (int x = 0; x < field.width; ++x) {
+      const double distance = std::hypot((x + 0.5) * field.cell_size_x - centre_x, (y + 0.5) * field.cell_size_y - centre_y);
+      field.at(x, y) = peak * std::max(0.0, 1.0 - distance / radius);
+    }
+  }
+  return field;
+}
+
+Heightmap step(const nlohmann::json& input) {
+  Heightmap field = blank_field(input);
+  const double peak = input.value("peak", 100.0);
+  for (int y = 0; y < field.height; ++y) {
+    for (int x = 0; x < field.width; ++x) field.at(x, y) = x < field.width / 2 ? 0.0 : peak;
+  }
+  return field;
+}
+
+Heightmap example_3x3() {
+  Heightmap field(3, 3, 0.0);
+  field.at(1, 1) = 1.0;
+  field.vertical_unit = "1";
+  field.horizontal_unit = "cell";
+  return field;
+}
+
+LoadedInput generated_input(const nlohmann::json& input) {
+  const auto name = input["generator"].get<std::string>();
+  LoadedInput loaded;
+  if (name == "cone") {
+    loaded.heights = cone(input);
+  } else if (name == "step") {
+    loaded.heights = step(input);
+  } else if (name == "example_3x3") {
+    loaded.heights = example_3x3();
+  } else {
+    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, example_3x3", name));
+  }
+  if (name != "example_3x3") add_noise(loaded.heights, input);
+  loaded.description = fmt::format("generated {} {}x{}, cell {} {}", name, loaded.heights.width,
+                                   loaded.heights.height, loaded.heights.cell_size_x, loaded.heights.horizontal_unit);
+  return loaded;
+}
+
+LoadedInput file_input(const nlohmann::json& input, const std::filesystem::path& dataset_dir) {
+  std::filesystem::path path = input["file"].get<std::string>();
+  if (path.is_relative()) path = dataset_dir / path;
+  HeightmapReadOptions options;
+  options.cell_size = input.value("cell_size", 0.0);
+  options.image_vertical_scale = input.value("vertical_scale", 1.0);
+  auto file = read_heightmap(path, options);
+  LoadedInput loaded;
+  loaded.heights = std::move(file.heights);
+  loaded.notes = std::move(file.notes);
+  const auto& heights = loaded.heights;
+  loaded.description = fmt::format("{} ({}), {}x{}, cell {:.4g}x{:.4g} {}", path.filename().string(), file.format,
+                                   heights.width, heights.height, heights.cell_size_x, heights.cell_size_y,
+                                   heights.horizontal_unit);
+  return loaded;
+}
+
+Heightmap cropped(const Heightmap& heights, const nlohmann::json& crop) {
+  if (!crop.is_array() || crop.size() != 4) throw InputError("crop must be [x, y, width, height]");
+  const int x0 = crop[0], y0 = crop[1], width = crop[2], height = crop[3];
+  if (x0 < 0 || y0 < 0 || width < 1 || height < 1 || x0 + width > heights.width || y0 + height > heights.height) {
+    throw InputError(fmt::format("crop [{}, {}, {}, {}] does not fit the {}x{} input", x0, y0, width, height,
+                                 heights.width, heights.height));
+  }
+  Heightmap out = heights;
+  out.width = width;
+  out.height = height;
+  out.values.assign(static_cast<std::size_t>(width) * height, 0.0);
+  out.valid.clear();
+  if (heights.has_mask()) out.valid.assign(out.values.size(), 1);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      out.at(x, y) = heights.at(x0 + x, y0 + y);
+      if (heights.has_mask()) out.valid[out.index(x, y)] = heights.valid[heights.index(x0 + x, y0 + y)];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, const std::filesystem::path& dataset_dir) {
+  LoadedInput loaded;
+  if (input.contains("file") && input["file"].is_string()) {
+    loaded = file_input(input, dataset_dir);
+  } else if (input.contains("generator") && input["generator"].is_string()) {
+    loaded = generated_input(input);
+  } else {
+    throw InputError(fmt::format("input {} needs a string 'file' or 'generator'", input.dump()));
+  }
+  if (!crop.is_null()) {
+    loaded.heights = cropped(loaded.heights, crop);
+    loaded.description += fmt::format(", crop {}", crop.dump());
+  }
+  check_finite(loaded.heights, loaded.description);
+  if (count_valid(loaded.heights) == 0) throw InputError(loaded.description + ": every cell is no-data");
+  return loaded;
+}
+
+}  // namespace gt

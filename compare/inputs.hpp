@@ -1,0 +1,34 @@
+// Inputs of cases: a heightmap file (any format of core/io/heightmap_io.hpp) or a generated field.
+//
+// {"file": "real/volcano.json"}   relative paths are under datasets/; optional "cell_size" (m)
+//                                 and "vertical_scale" (m per unit of 8/16-bit images).
+// {"generator": NAME, ...}        fields made here, deterministic (noise from the counter RNG):
+//   cone          "width", "height" (cells, default 128), "cell_size" (m, 1), "peak" (m, 100),
+//                 "radius" (share of the shorter side, 0.4): a right circular cone on a plane.
+//   step          "width", "height", "cell_size", "peak": a cliff of height `peak` at x = width/2.
+//   example_3x3   seed 000's 3×3 test field: centre 1, other cells 0, cell size 1.
+//   All but example_3x3 take "noise" (m, default 0) and "seed" (default 1): uniform noise in
+//   [0, noise) added to every cell from random_u32(seed, cell, 0, 0).
+// "crop": [x, y, width, height] cuts a window out of the input (InputError if it does not fit).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/grid.hpp"
+
+namespace gt {
+
+struct LoadedInput {
+  Heightmap heights;
+  std::string description;          // e.g. "volcano.json, 87x61 cells of 10 m"
+  std::vector<std::string> notes;   // what the reader decided
+};
+
+LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop,
+                       const std::filesystem::path& dataset_dir);
+
+}  // namespace gt

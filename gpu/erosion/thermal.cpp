@@ -1,0 +1,95 @@
+// Host side of seed 000's thermal erosion on the GPU: buffers, the std140 parameter block and the
+// two dispatches per iteration. The algorithm and its decisions are described in
+// reference/erosion/thermal.cpp and gpu/shaders/erosion/thermal_requests.comp.
+#include "gpu/erosion/thermal.hpp"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace gt::gpu {
+namespace {
+
+// Mirror of `ThermalBlock` in gpu/shaders/erosion/thermal_block.glsl (std140).
+struct ThermalBlock {
+  float talus_limit[4];
+  std::int32_t pipe_dx[4];
+  std::int32_t pipe_dy[4];
+  std::int32_t grid_size[2];
+  float request_factor;
+  std::uint32_t clamp_unit;
+};
+static_assert(offsetof(ThermalBlock, talus_limit) == 0);
+static_assert(offsetof(ThermalBlock, pipe_dx) == 16);
+static_assert(offsetof(ThermalBlock, pipe_dy) == 32);
+static_assert(offsetof(ThermalBlock, grid_size) == 48);
+static_assert(offsetof(ThermalBlock, request_factor) == 56);
+static_assert(offsetof(ThermalBlock, clamp_unit) == 60);
+static_assert(sizeof(ThermalBlock) == 64);
+
+constexpr int local_size = 16;  // local_size_x/y of thermal_block.glsl
+constexpr GLuint block_binding = 0, heights_binding = 1, valid_binding = 2, requests_binding = 3, next_binding = 4;
+
+// T·l rounded once from double, as the reference does.
+ThermalBlock make_block(const ThermalConstants& constants, bool cardinal, int width, int height) {
+  ThermalBlock block{};
+  const float limit_x = static_cast<float>(constants.talus_slope * constants.length_x);
+  const float limit_y = static_cast<float>(constants.talus_slope * constants.length_y);
+  const float limit_diagonal = static_cast<float>(constants.talus_slope * constants.length_diagonal);
+  const int cardinal_dx[4] = {-1, 0, 1, 0}, cardinal_dy[4] = {0, 1, 0, -1};
+  const int diagonal_dx[4] = {-1, -1, 1, 1}, diagonal_dy[4] = {-1, 1, 1, -1};
+  for (int k = 0; k < 4; ++k) {
+    block.talus_limit[k] = cardinal ? (k % 2 == 0 ? limit_x : limit_y) : limit_diagonal;
+    block.pipe_dx[k] = cardinal ? cardinal_dx[k] : diagonal_dx[k];
+    block.pipe_dy[k] = cardinal ? cardinal_dy[k] : diagonal_dy[k];
+  }
+  block.grid_size[0] = width;
+  block.grid_size[1] = height;
+  block.request_factor = static_cast<float>(constants.request_factor);
+  block.clamp_unit = constants.clamp_unit ? 1u : 0u;
+  return block;
+}
+
+UniformBuffer block_buffer(const ThermalBlock& block) {
+  UniformBuffer buffer(sizeof(ThermalBlock));
+  buffer.upload(&block, sizeof(ThermalBlock));
+  return buffer;
+}
+
+}  // namespace
+
+ThermalErosion::ThermalErosion(int width, int height, const ThermalConstants& constants, Neighbourhood neighbourhood,
+                               int iterations)
+    : width_(width),
+      height_(height),
+      neighbourhood_(neighbourhood),
+      iterations_(iterations),
+      requests_program_(ComputeProgram::load("erosion/thermal_requests.comp")),
+      transfer_program_(ComputeProgram::load("erosion/thermal_transfer.comp")),
+      cardinal_block_(block_buffer(make_block(constants, true, width, height))),
+      diagonal_block_(block_buffer(make_block(constants, false, width, height))),
+      requests_(static_cast<std::size_t>(width) * height * 4 * sizeof(float)),
+      heights_(width, height) {}
+
+void ThermalErosion::load(const Grid<float>& heights) { heights_.load(heights); }
+
+void ThermalErosion::run() {
+  requests_.bind(requests_binding);
+  for (int iteration = 0; iteration < iterations_; ++iteration) {
+    const bool cardinal = neighbourhood_ == Neighbourhood::cardinal ||
+                          (neighbourhood_ == Neighbourhood::alternating && iteration % 2 == 0);
+    (cardinal ? cardinal_block_ : diagonal_block_).bind(block_binding);
+    heights_.bind(heights_binding, valid_binding, next_binding);
+    requests_program_.dispatch(width_, height_, local_size, local_size);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    transfer_program_.dispatch(width_, height_, local_size, local_size);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    heights_.swap();
+  }
+}
+
+Grid<float> ThermalErosion::result() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  return heights_.current();
+}
+
+}  // namespace gt::gpu

@@ -1,0 +1,39 @@
+// Thermal erosion of seed 000 (Hydra), GPU twin of reference/erosion/thermal.hpp.
+//
+// ThermalErosion(width, height, constants, neighbourhood, iterations) compiles
+// gpu/shaders/erosion/thermal_requests.comp and thermal_transfer.comp and allocates the buffers;
+// load() uploads a float heightfield (mask honoured as in the reference), run() dispatches all
+// iterations (two passes each, no synchronisation: bracket with glFinish to time it), result()
+// downloads. Needs a current GlContext.
+#pragma once
+
+#include "core/grid.hpp"
+#include "core/params/thermal.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/heightfield_buffers.hpp"
+#include "gpu/shader_program.hpp"
+
+namespace gt::gpu {
+
+class ThermalErosion {
+ public:
+  ThermalErosion(int width, int height, const ThermalConstants& constants, Neighbourhood neighbourhood,
+                 int iterations);
+  void load(const Grid<float>& heights);
+  void run();
+  Grid<float> result() const;
+
+ private:
+  int width_;
+  int height_;
+  Neighbourhood neighbourhood_;
+  int iterations_;
+  ComputeProgram requests_program_;
+  ComputeProgram transfer_program_;
+  UniformBuffer cardinal_block_;
+  UniformBuffer diagonal_block_;
+  StorageBuffer requests_;
+  HeightfieldBuffers heights_;
+};
+
+}  // namespace gt::gpu

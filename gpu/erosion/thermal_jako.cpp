@@ -1,0 +1,79 @@
+// Host side of Jákó & Tóth's thermal erosion on the GPU: buffers, the std140 parameter block and
+// the two dispatches per iteration. The algorithm and its decisions are described in
+// reference/erosion/thermal_jako.cpp.
+#include "gpu/erosion/thermal_jako.hpp"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace gt::gpu {
+namespace {
+
+// Mirror of `ThermalJakoBlock` in gpu/shaders/erosion/thermal_jako_block.glsl (std140).
+struct ThermalJakoBlock {
+  float talus_limit_cardinal[4];
+  float talus_limit_diagonal[4];
+  std::int32_t grid_size[2];
+  float rate;
+  float padding;
+};
+static_assert(offsetof(ThermalJakoBlock, talus_limit_cardinal) == 0);
+static_assert(offsetof(ThermalJakoBlock, talus_limit_diagonal) == 16);
+static_assert(offsetof(ThermalJakoBlock, grid_size) == 32);
+static_assert(offsetof(ThermalJakoBlock, rate) == 40);
+static_assert(sizeof(ThermalJakoBlock) == 48);
+
+constexpr int local_size = 16;  // local_size_x/y of thermal_jako_block.glsl
+constexpr GLuint block_binding = 0, heights_binding = 1, valid_binding = 2, outflows_binding = 3, next_binding = 4;
+
+// T·l rounded once from double, as the reference does.
+UniformBuffer block_buffer(const ThermalConstants& constants, int width, int height) {
+  ThermalJakoBlock block{};
+  const float limit_x = static_cast<float>(constants.talus_slope * constants.length_x);
+  const float limit_y = static_cast<float>(constants.talus_slope * constants.length_y);
+  const float limit_diagonal = static_cast<float>(constants.talus_slope * constants.length_diagonal);
+  for (int k = 0; k < 4; ++k) {
+    block.talus_limit_cardinal[k] = k % 2 == 0 ? limit_x : limit_y;
+    block.talus_limit_diagonal[k] = limit_diagonal;
+  }
+  block.grid_size[0] = width;
+  block.grid_size[1] = height;
+  block.rate = static_cast<float>(constants.request_factor);
+  UniformBuffer buffer(sizeof(ThermalJakoBlock));
+  buffer.upload(&block, sizeof(ThermalJakoBlock));
+  return buffer;
+}
+
+}  // namespace
+
+ThermalJakoErosion::ThermalJakoErosion(int width, int height, const ThermalConstants& constants, int iterations)
+    : width_(width),
+      height_(height),
+      iterations_(iterations),
+      outflow_program_(ComputeProgram::load("erosion/thermal_jako_outflow.comp")),
+      gather_program_(ComputeProgram::load("erosion/thermal_jako_gather.comp")),
+      block_(block_buffer(constants, width, height)),
+      outflows_(static_cast<std::size_t>(width) * height * 8 * sizeof(float)),
+      heights_(width, height) {}
+
+void ThermalJakoErosion::load(const Grid<float>& heights) { heights_.load(heights); }
+
+void ThermalJakoErosion::run() {
+  block_.bind(block_binding);
+  outflows_.bind(outflows_binding);
+  for (int iteration = 0; iteration < iterations_; ++iteration) {
+    heights_.bind(heights_binding, valid_binding, next_binding);
+    outflow_program_.dispatch(width_, height_, local_size, local_size);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gather_program_.dispatch(width_, height_, local_size, local_size);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    heights_.swap();
+  }
+}
+
+Grid<float> ThermalJakoErosion::result() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  return heights_.current();
+}
+
+}  // namespace gt::gpu

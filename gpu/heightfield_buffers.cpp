@@ -1,0 +1,41 @@
+#include "gpu/heightfield_buffers.hpp"
+
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace gt::gpu {
+
+HeightfieldBuffers::HeightfieldBuffers(int width, int height)
+    : layout_(width, height),
+      current_(layout_.size() * sizeof(float)),
+      next_(layout_.size() * sizeof(float)),
+      valid_(layout_.size() * sizeof(GLuint)) {}
+
+void HeightfieldBuffers::load(const Grid<float>& heights) {
+  if (heights.width != layout_.width || heights.height != layout_.height) {
+    throw std::invalid_argument("HeightfieldBuffers::load: grid size differs from the buffers'");
+  }
+  layout_ = heights;
+  layout_.values.clear();
+  current_.upload(heights.values.data(), heights.values.size() * sizeof(float));
+  std::vector<GLuint> valid(heights.size(), 1u);
+  if (heights.has_mask()) valid.assign(heights.valid.begin(), heights.valid.end());
+  valid_.upload(valid.data(), valid.size() * sizeof(GLuint));
+}
+
+Grid<float> HeightfieldBuffers::current() const {
+  Grid<float> heights = layout_;
+  heights.values = current_.download<float>(static_cast<std::size_t>(layout_.width) * layout_.height);
+  return heights;
+}
+
+void HeightfieldBuffers::bind(GLuint current_binding, GLuint valid_binding, GLuint next_binding) const {
+  current_.bind(current_binding);
+  valid_.bind(valid_binding);
+  next_.bind(next_binding);
+}
+
+void HeightfieldBuffers::swap() { std::swap(current_, next_); }
+
+}  // namespace gt::gpu

@@ -1,0 +1,7 @@
+// Grid addressing shared by the compute shaders: row-major cells, x east, y along rows, as
+// core/grid.hpp. `grid_size` is (width, height).
+uint cell_index(ivec2 cell, ivec2 grid_size) { return uint(cell.y) * uint(grid_size.x) + uint(cell.x); }
+
+bool inside_grid(ivec2 cell, ivec2 grid_size) {
+  return cell.x >= 0 && cell.y >= 0 && cell.x < grid_size.x && cell.y < grid_size.y;
+}

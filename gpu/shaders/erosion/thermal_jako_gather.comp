@@ -1,0 +1,21 @@
+#version 450
+// Gather pass of Jákó & Tóth's thermal erosion (digest 000 §3.6): a cell loses what it sends and
+// gains what its neighbours send to it, the same numbers, so material is conserved. CPU reference:
+// reference/erosion/thermal_jako.cpp.
+#include "common/grid.glsl"
+#include "erosion/thermal_jako_block.glsl"
+
+void main() {
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (!inside_grid(cell, grid_size)) return;
+  uint index = cell_index(cell, grid_size);
+  precise float height = heights[index];
+  if (valid[index] != 0u) {
+    for (int k = 0; k < 8; ++k) height = height - outflow(index, k);
+    for (int k = 0; k < 8; ++k) {
+      if (!pipe_open(cell, k)) continue;
+      height = height + outflow(cell_index(cell + pipe_offsets[k], grid_size), opposite_pipe(k));
+    }
+  }
+  next_heights[index] = height;
+}

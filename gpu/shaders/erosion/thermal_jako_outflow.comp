@@ -1,0 +1,34 @@
+#version 450
+// Outflow pass of Jákó & Tóth's thermal erosion (digest 000 §3.6, eqs. 2.30-2.34): what each cell
+// sends down each of its 8 pipes. CPU reference and decisions: reference/erosion/thermal_jako.cpp.
+// All arithmetic is `precise` so that no multiply-add is fused: ref<float> repeats it exactly.
+#include "common/grid.glsl"
+#include "erosion/thermal_jako_block.glsl"
+
+void main() {
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (!inside_grid(cell, grid_size)) return;
+  uint index = cell_index(cell, grid_size);
+  precise float drop[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+  precise float largest_drop = 0.0;
+  precise float drop_total = 0.0;
+  if (valid[index] != 0u) {
+    precise float height = heights[index];
+    for (int k = 0; k < 8; ++k) {
+      if (!pipe_open(cell, k)) continue;
+      precise float difference = height - heights[cell_index(cell + pipe_offsets[k], grid_size)];
+      if (difference > talus_limit(k)) {
+        drop[k] = difference;
+        largest_drop = max(largest_drop, difference);
+        drop_total = drop_total + difference;
+      }
+    }
+  }
+  precise float sent[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+  if (drop_total > 0.0) {
+    precise float moved = rate * largest_drop * 0.5;
+    for (int k = 0; k < 8; ++k) sent[k] = moved * drop[k] / drop_total;
+  }
+  outflows[2u * index] = vec4(sent[0], sent[1], sent[2], sent[3]);
+  outflows[2u * index + 1u] = vec4(sent[4], sent[5], sent[6], sent[7]);
+}

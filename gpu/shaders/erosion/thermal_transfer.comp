@@ -1,0 +1,29 @@
+#version 450
+// Pass B of seed 000's thermal erosion (digest 000 §4.6, Algorithm 11): across each pipe the two
+// cells hold requests of opposite sign and the smaller magnitude moves; both ends compute the
+// same minimum, so material is conserved. CPU reference: reference/erosion/thermal.cpp.
+#include "common/grid.glsl"
+#include "erosion/thermal_block.glsl"
+
+void main() {
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (!inside_grid(cell, grid_size)) return;
+  uint index = cell_index(cell, grid_size);
+  precise float height = heights[index];
+  if (valid[index] == 0u) {
+    next_heights[index] = height;
+    return;
+  }
+  vec4 own = requests[index];
+  for (int k = 0; k < 4; ++k) {
+    if (!pipe_open(cell, k)) continue;
+    float theirs = requests[cell_index(pipe_target(cell, k), grid_size)][(k + 2) % 4];
+    if (theirs < 0.0 && own[k] > 0.0) {
+      height = height + min(-theirs, own[k]);
+    } else if (theirs > 0.0 && own[k] < 0.0) {
+      height = height - min(theirs, -own[k]);
+    }
+  }
+  if (clamp_unit != 0u) height = clamp(height, 0.0, 1.0);
+  next_heights[index] = height;
+}

@@ -1,0 +1,112 @@
+// Thermal erosion of Jákó & Tóth 2011 as surveyed by seed 000 (digest 000 §3.6, eqs. 2.30-2.34),
+// on the 8-neighbourhood pipe system. Each iteration has two synchronous passes:
+//   outflow: A = the neighbours n with b - b_n > T·l_n (eq. 2.33, R·C_a + C_i = T = tan angle);
+//            H = max over A of (b - b_n) (eq. 2.30 restricted to A, see below);
+//            ΔS = rate·H/2 (eq. 2.32 with a = 1: heights, not volumes, move);
+//            ΔS_n = ΔS·(b - b_n)/Σ_A (b - b_j) (eq. 2.34 with height differences: the printed
+//            form with absolute heights is not translation-invariant, digest Appendix B item 4).
+//   gather:  b' = b - Σ_n ΔS_n + Σ_n (what neighbour n sends to this cell).
+// Decisions: H is taken over A rather than over all 8 neighbours, so a cell whose largest drop is
+// within the talus limit moves nothing; distances are l_x, l_y and sqrt(l_x² + l_y²); neighbours
+// outside the grid or masked are absent (no flow across the border). What leaves one cell arrives
+// at the other as the same number, so material is conserved up to the rounding of the additions.
+// Units: heights and lengths in metres; rate dimensionless in [0, 1].
+#include "reference/erosion/thermal_jako.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace gt::reference {
+namespace {
+
+struct Pipe {
+  int dx;
+  int dy;
+};
+
+// Pipe k and pipe opposite(k) point in opposite directions.
+constexpr std::array<Pipe, 8> pipes{{{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
+constexpr int opposite(int k) { return k < 4 ? (k + 2) % 4 : 4 + (k - 2) % 4; }
+
+template <class Real>
+using Outflows = std::vector<std::array<Real, 8>>;
+
+template <class Real>
+bool pipe_open(const Grid<Real>& heights, int x, int y, int k) {
+  const int nx = x + pipes[k].dx;
+  const int ny = y + pipes[k].dy;
+  return heights.inside(nx, ny) && heights.is_valid(nx, ny);
+}
+
+template <class Real>
+std::array<Real, 8> cell_outflows(const Grid<Real>& heights, int x, int y, const std::array<Real, 8>& talus_limit,
+                                  Real rate) {
+  const Real height = heights.at(x, y);
+  std::array<Real, 8> drop{};
+  Real largest_drop = Real(0);
+  Real drop_total = Real(0);
+  for (int k = 0; k < 8; ++k) {
+    if (!pipe_open(heights, x, y, k)) continue;
+    const Real difference = height - heights.at(x + pipes[k].dx, y + pipes[k].dy);
+    if (difference > talus_limit[k]) {
+      drop[k] = difference;
+      largest_drop = std::max(largest_drop, difference);
+      drop_total = drop_total + difference;
+    }
+  }
+  std::array<Real, 8> outflow{};
+  if (drop_total > Real(0)) {
+    const Real moved = rate * largest_drop * Real(0.5);
+    for (int k = 0; k < 8; ++k) outflow[k] = moved * drop[k] / drop_total;
+  }
+  return outflow;
+}
+
+template <class Real>
+Real gathered_height(const Grid<Real>& heights, const Outflows<Real>& outflows, int x, int y) {
+  const auto& own = outflows[heights.index(x, y)];
+  Real height = heights.at(x, y);
+  for (int k = 0; k < 8; ++k) height = height - own[k];
+  for (int k = 0; k < 8; ++k) {
+    if (!pipe_open(heights, x, y, k)) continue;
+    height = height + outflows[heights.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
+  }
+  return height;
+}
+
+}  // namespace
+
+template <class Real>
+Grid<Real> thermal_jako_erosion(const Grid<Real>& heights, const ThermalConstants& constants, int iterations) {
+  // T·l per pipe, computed in double and rounded once, as the GPU twin receives it.
+  const Real cardinal_x = static_cast<Real>(constants.talus_slope * constants.length_x);
+  const Real cardinal_y = static_cast<Real>(constants.talus_slope * constants.length_y);
+  const Real diagonal = static_cast<Real>(constants.talus_slope * constants.length_diagonal);
+  const std::array<Real, 8> talus_limit{cardinal_x, cardinal_y, cardinal_x, cardinal_y,
+                                        diagonal,   diagonal,   diagonal,   diagonal};
+  const Real rate = static_cast<Real>(constants.request_factor);
+
+  Grid<Real> current = heights;
+  Grid<Real> next = heights;
+  Outflows<Real> outflows(heights.size());
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    for (int y = 0; y < current.height; ++y) {
+      for (int x = 0; x < current.width; ++x) {
+        outflows[current.index(x, y)] =
+            current.is_valid(x, y) ? cell_outflows(current, x, y, talus_limit, rate) : std::array<Real, 8>{};
+      }
+    }
+    for (int y = 0; y < current.height; ++y) {
+      for (int x = 0; x < current.width; ++x) {
+        next.at(x, y) = current.is_valid(x, y) ? gathered_height(current, outflows, x, y) : current.at(x, y);
+      }
+    }
+    std::swap(current.values, next.values);
+  }
+  return current;
+}
+
+template Grid<float> thermal_jako_erosion(const Grid<float>&, const ThermalConstants&, int);
+template Grid<double> thermal_jako_erosion(const Grid<double>&, const ThermalConstants&, int);
+
+}  // namespace gt::reference

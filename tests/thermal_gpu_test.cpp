@@ -1,0 +1,118 @@
+// The GPU twins of thermal erosion against ref<float>: same float operations in the same order,
+// so they agree within parity_bounds_same_arithmetic (0 on llvmpipe, which divides correctly);
+// grids whose sides are not multiples of the 16x16 work groups, masks, every neighbourhood, odd
+// iteration counts; and two runs give the same bits.
+#include <gtest/gtest.h>
+
+#include "compare/checks/error_model.hpp"
+#include "compare/checks/field.hpp"
+#include "core/params/thermal.hpp"
+#include "core/rng.hpp"
+#include "gpu/erosion/thermal.hpp"
+#include "gpu/erosion/thermal_jako.hpp"
+#include "reference/erosion/thermal.hpp"
+#include "reference/erosion/thermal_jako.hpp"
+#include "tests/support/gl_test.hpp"
+
+namespace {
+
+using gt::Grid;
+using gt::Neighbourhood;
+
+// 500 m terrain with 40 m of relief on 2 m cells, a masked blob, sides 37 x 23.
+Grid<float> masked_terrain() {
+  Grid<float> field(37, 23);
+  field.cell_size_x = field.cell_size_y = 2.0;
+  field.valid.assign(field.size(), 1);
+  for (int y = 0; y < field.height; ++y) {
+    for (int x = 0; x < field.width; ++x) {
+      const auto bits = gt::random_u32(21, static_cast<std::uint32_t>(field.index(x, y)), 0, 0);
+      field.at(x, y) = 500.0f + 40.0f * gt::uniform01(bits);
+      if ((x - 20) * (x - 20) + (y - 8) * (y - 8) < 10) field.valid[field.index(x, y)] = 0;
+    }
+  }
+  return field;
+}
+
+gt::ThermalConstants constants_for(const Grid<float>& field) {
+  gt::ThermalParams params;
+  params.talus_angle_deg = 30.0;
+  return gt::thermal_constants(params, field.cast<double>());
+}
+
+double range_of(const Grid<float>& field) {
+  const auto totals = gt::field_totals(field);
+  return totals.high - totals.low;
+}
+
+void expect_same_arithmetic(const Grid<float>& reference, const Grid<float>& gpu, double additions, double range) {
+  const auto bounds = gt::parity_bounds_same_arithmetic(additions, 540.0 / range);
+  const auto difference = gt::field_difference(reference, gpu);
+  EXPECT_EQ(difference.nonfinite, 0u);
+  EXPECT_LE(difference.max_abs / range, bounds.strict) << bounds.model;
+}
+
+class ThermalGpu : public gt::testing::GlTestWithParam<Neighbourhood> {};
+
+TEST_P(ThermalGpu, MatchesTheFloatReferenceAndRepeats) {
+  const auto field = masked_terrain();
+  const auto constants = constants_for(field);
+  const int iterations = 37;
+  gt::gpu::ThermalErosion gpu(field.width, field.height, constants, GetParam(), iterations);
+  gpu.load(field);
+  gpu.run();
+  const auto first = gpu.result();
+  gpu.load(field);
+  gpu.run();
+  const auto second = gpu.result();
+  const auto reference = gt::reference::thermal_erosion(field, constants, iterations, GetParam());
+  expect_same_arithmetic(reference, first, 4.0 * iterations, range_of(field));
+  EXPECT_EQ(gt::field_difference(first, second).differing_bits, 0u);
+  EXPECT_GT(gt::field_difference(field, first).max_abs, 0.1f) << "the terrain should have changed";
+  for (std::size_t i = 0; i < field.size(); ++i) {
+    if (!field.is_valid(i)) EXPECT_EQ(first.values[i], field.values[i]);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, ThermalGpu,
+                         ::testing::Values(Neighbourhood::cardinal, Neighbourhood::diagonal, Neighbourhood::alternating));
+
+class ThermalJakoGpu : public gt::testing::GlTest {};
+
+TEST_F(ThermalJakoGpu, MatchesTheFloatReferenceAndRepeats) {
+  const auto field = masked_terrain();
+  gt::ThermalJakoParams params;
+  params.talus_angle_deg = 30.0;
+  const auto constants = gt::thermal_jako_constants(params, field.cast<double>());
+  const int iterations = 25;
+  gt::gpu::ThermalJakoErosion gpu(field.width, field.height, constants, iterations);
+  gpu.load(field);
+  gpu.run();
+  const auto first = gpu.result();
+  gpu.load(field);
+  gpu.run();
+  const auto reference = gt::reference::thermal_jako_erosion(field, constants, iterations);
+  expect_same_arithmetic(reference, first, 16.0 * iterations, range_of(field));
+  EXPECT_EQ(gt::field_difference(first, gpu.result()).differing_bits, 0u);
+  EXPECT_GT(gt::field_difference(field, first).max_abs, 0.1f);
+}
+
+class ThermalGpuSpec : public gt::testing::GlTest {};
+
+TEST_F(ThermalGpuSpec, ReproducesTheSeedsThreeByThreeExample) {
+  Grid<float> field(3, 3, 0.0f);
+  field.at(1, 1) = 1.0f;
+  gt::ThermalConstants constants;
+  constants.talus_slope = 0.25;
+  constants.length_diagonal = std::sqrt(2.0);
+  constants.request_factor = 0.5;
+  gt::gpu::ThermalErosion gpu(3, 3, constants, Neighbourhood::cardinal, 1);
+  gpu.load(field);
+  gpu.run();
+  const auto eroded = gpu.result();
+  EXPECT_EQ(eroded.at(1, 1), 0.625f);
+  EXPECT_EQ(eroded.at(1, 0), 0.09375f);
+  EXPECT_EQ(eroded.at(0, 0), 0.0f);
+}
+
+}  // namespace
