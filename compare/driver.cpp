@@ -109,6 +109,7 @@ CaseResult run_job(const Job& job, const RunOptions& options, const std::map<std
   result.name = job.spec.name;
   result.algorithm = job.spec.algorithm;
   result.input = job.input.description;
+  result.notes = job.input.notes;
   result.width = job.input.heights.width;
   result.height = job.input.heights.height;
   result.params = job.resolved;

@@ -46,6 +46,7 @@ struct CaseResult {
   std::string name;           // stable dotted name, e.g. erosion.thermal.cardinal.volcano
   std::string algorithm;      // e.g. erosion.thermal
   std::string input;          // what the input was, e.g. "volcano.json (87x61, 10 m)"
+  std::vector<std::string> notes;  // what the input reader decided (channel used, units, no-data)
   int width = 0;
   int height = 0;
   Outcome status = Outcome::pass;

@@ -1,5 +1,6 @@
 #include "core/grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unistd.h>
@@ -42,6 +43,18 @@ void check_finite(const Grid<T>& grid, const std::string& what) {
 }
 
 template <class T>
+std::pair<double, double> valid_range(const Grid<T>& grid) {
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (!grid.is_valid(i)) continue;
+    low = std::min(low, static_cast<double>(grid.values[i]));
+    high = std::max(high, static_cast<double>(grid.values[i]));
+  }
+  return {low, high};
+}
+
+template <class T>
 std::size_t count_valid(const Grid<T>& grid) {
   if (!grid.has_mask()) return grid.size();
   std::size_t n = 0;
@@ -51,6 +64,8 @@ std::size_t count_valid(const Grid<T>& grid) {
 
 template void check_finite(const Grid<float>&, const std::string&);
 template void check_finite(const Grid<double>&, const std::string&);
+template std::pair<double, double> valid_range(const Grid<float>&);
+template std::pair<double, double> valid_range(const Grid<double>&);
 template std::size_t count_valid(const Grid<float>&);
 template std::size_t count_valid(const Grid<double>&);
 

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gt {
@@ -68,6 +69,10 @@ void check_grid_fits(long long width, long long height, long long bytes_per_cell
 // Throws InputError naming the first NaN or infinite valid cell.
 template <class T>
 void check_finite(const Grid<T>& grid, const std::string& what);
+
+// Lowest and highest value over valid cells; low > high (+inf, -inf) when no cell is valid.
+template <class T>
+std::pair<double, double> valid_range(const Grid<T>& grid);
 
 // Number of valid cells.
 template <class T>

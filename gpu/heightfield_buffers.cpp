@@ -30,12 +30,16 @@ Grid<float> HeightfieldBuffers::current() const {
   return heights;
 }
 
-void HeightfieldBuffers::bind(GLuint current_binding, GLuint valid_binding, GLuint next_binding) const {
-  current_.bind(current_binding);
+void HeightfieldBuffers::iterate(const ComputeProgram& gather, const ComputeProgram& apply, int local_size) {
+  constexpr GLuint heights_binding = 1, valid_binding = 2, next_binding = 4;
+  current_.bind(heights_binding);
   valid_.bind(valid_binding);
   next_.bind(next_binding);
+  gather.dispatch(layout_.width, layout_.height, local_size, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  apply.dispatch(layout_.width, layout_.height, local_size, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  std::swap(current_, next_);
 }
-
-void HeightfieldBuffers::swap() { std::swap(current_, next_); }
 
 }  // namespace gt::gpu

@@ -12,6 +12,7 @@
 #include "gpu/erosion/thermal_jako.hpp"
 #include "reference/erosion/thermal.hpp"
 #include "reference/erosion/thermal_jako.hpp"
+#include "tests/support/printers.hpp"
 #include "tests/support/gl_test.hpp"
 
 namespace {
@@ -70,7 +71,9 @@ TEST_P(ThermalGpu, MatchesTheFloatReferenceAndRepeats) {
   EXPECT_EQ(gt::field_difference(first, second).differing_bits, 0u);
   EXPECT_GT(gt::field_difference(field, first).max_abs, 0.1f) << "the terrain should have changed";
   for (std::size_t i = 0; i < field.size(); ++i) {
-    if (!field.is_valid(i)) EXPECT_EQ(first.values[i], field.values[i]);
+    if (!field.is_valid(i)) {
+      EXPECT_EQ(first.values[i], field.values[i]);
+    }
   }
 }
 

@@ -11,6 +11,7 @@
 #include "core/rng.hpp"
 #include "reference/erosion/thermal.hpp"
 #include "reference/erosion/thermal_jako.hpp"
+#include "tests/support/printers.hpp"
 
 namespace {
 
@@ -106,7 +107,9 @@ TEST_P(ThermalNeighbourhoods, MaskedCellsNeitherGiveNorReceive) {
   }
   const auto eroded = gt::reference::thermal_erosion(field, unit_constants(0.3, 0.5), 20, GetParam());
   for (std::size_t i = 0; i < field.size(); ++i) {
-    if (!field.is_valid(i)) EXPECT_EQ(eroded.values[i], field.values[i]);
+    if (!field.is_valid(i)) {
+      EXPECT_EQ(eroded.values[i], field.values[i]);
+    }
   }
   EXPECT_LE(gt::relative_mass_drift(field, eroded), 80 * 0x1p-53);
   const auto totals = gt::field_totals(eroded);

@@ -164,6 +164,11 @@ void append_case_section(std::string& out, const CaseResult& result) {
   out += fmt::format("<section class=\"case\" id=\"{}\">\n<h2>{} {}</h2>\n", anchor(result), badge(result.status),
                      h(result.name));
   out += fmt::format("<p>{} on {} ({}×{})</p>\n", h(result.algorithm), h(result.input), result.width, result.height);
+  if (!result.notes.empty()) {
+    out += "<ul class=\"notes\">\n";
+    for (const auto& note : result.notes) out += fmt::format("<li>{}</li>\n", h(note));
+    out += "</ul>\n";
+  }
   if (!result.expected_failure.empty()) {
     out += fmt::format("<p class=\"note\">Expected failure: {}</p>\n", h(result.expected_failure));
   }

@@ -49,6 +49,7 @@ json case_to_json(const CaseResult& result) {
               {"width", result.width},   {"height", result.height},
               {"status", outcome_name(result.status)}};
   if (!result.expected_failure.empty()) out["expected_failure"] = result.expected_failure;
+  if (!result.notes.empty()) out["notes"] = result.notes;
   out["params"] = result.params;
   out["checks"] = json::array();
   for (const Check& check : result.checks) out["checks"].push_back(check_to_json(check));

@@ -43,7 +43,7 @@ nlohmann::json parse_json_file(const path& file) {
   if (!in) throw InputError(fmt::format("cannot open {}", file.string()));
   try {
     return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& error) {
+  } catch (const nlohmann::json::exception& error) {  // syntax errors and numbers out of range
     throw InputError(fmt::format("{}: not valid JSON: {}", file.string(), error.what()));
   }
 }

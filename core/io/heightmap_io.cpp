@@ -300,13 +300,7 @@ std::vector<float> float32_pixels(const Heightmap& heights) {
 
 // Valid heights mapped linearly from [min, max] to 0..65535; invalid cells 0.
 std::vector<std::uint16_t> png16_levels(const Heightmap& heights) {
-  double lowest = std::numeric_limits<double>::infinity();
-  double highest = -lowest;
-  for (std::size_t i = 0; i < heights.size(); ++i) {
-    if (!heights.is_valid(i)) continue;
-    lowest = std::min(lowest, heights.values[i]);
-    highest = std::max(highest, heights.values[i]);
-  }
+  const auto [lowest, highest] = valid_range(heights);
   const double step = highest > lowest ? (highest - lowest) / 65535.0 : 1.0;
   std::vector<std::uint16_t> levels(heights.size(), 0);
   for (std::size_t i = 0; i < levels.size(); ++i) {

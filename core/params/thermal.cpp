@@ -8,19 +8,22 @@
 namespace gt {
 namespace {
 
-std::pair<double, double> valid_range(const Heightmap& heights) {
-  double low = std::numeric_limits<double>::infinity();
-  double high = -low;
-  for (std::size_t i = 0; i < heights.size(); ++i) {
-    if (!heights.is_valid(i)) continue;
-    low = std::min(low, heights.values[i]);
-    high = std::max(high, heights.values[i]);
-  }
-  if (low > high) return {0.0, 0.0};
-  return {low, high};
+// Range of valid heights; a field with no valid cell counts as flat at 0.
+std::pair<double, double> height_range(const Heightmap& heights) {
+  const auto [low, high] = valid_range(heights);
+  return low > high ? std::pair{0.0, 0.0} : std::pair{low, high};
 }
 
 }  // namespace
+
+const char* neighbourhood_name(Neighbourhood neighbourhood) {
+  switch (neighbourhood) {
+    case Neighbourhood::cardinal: return "cardinal";
+    case Neighbourhood::diagonal: return "diagonal";
+    case Neighbourhood::alternating: return "alternating";
+  }
+  return "?";
+}
 
 const ParamSpecs& thermal_param_specs() {
   static const ParamSpecs specs = {
@@ -53,9 +56,9 @@ ThermalParams thermal_params_from_json(const nlohmann::json& resolved) {
   params.talus_angle_deg = resolved.at("talus_angle").get<double>();
   params.strength = resolved.at("strength").get<double>();
   const auto neighbourhood = resolved.at("neighbourhood").get<std::string>();
-  params.neighbourhood = neighbourhood == "cardinal"   ? Neighbourhood::cardinal
-                         : neighbourhood == "diagonal" ? Neighbourhood::diagonal
-                                                       : Neighbourhood::alternating;
+  for (auto candidate : {Neighbourhood::cardinal, Neighbourhood::diagonal, Neighbourhood::alternating}) {
+    if (neighbourhood == neighbourhood_name(candidate)) params.neighbourhood = candidate;
+  }
   params.normalised = resolved.at("normalised").get<bool>();
   params.vertical_aspect = resolved.at("vertical_aspect").get<double>();
   return params;
@@ -77,7 +80,7 @@ ThermalConstants thermal_constants(const ThermalParams& params, const Heightmap&
   ThermalConstants constants;
   constants.request_factor = params.strength * 0.5;
   if (params.normalised) {
-    const auto [low, high] = valid_range(original);
+    const auto [low, high] = height_range(original);
     const double extent_x = original.width * original.cell_size_x;
     const double derived_aspect = high > low ? 2.0 * (high - low) / extent_x : 1.0;
     const double aspect = params.vertical_aspect > 0.0 ? params.vertical_aspect : derived_aspect;
@@ -106,7 +109,7 @@ ThermalConstants thermal_jako_constants(const ThermalJakoParams& params, const H
 
 Heightmap normalise_heights(const Heightmap& heights) {
   Heightmap out = heights;
-  const auto [low, high] = valid_range(heights);
+  const auto [low, high] = height_range(heights);
   const double range = high - low;
   for (std::size_t i = 0; i < out.size(); ++i) {
     out.values[i] = heights.is_valid(i) && range > 0.0 ? (heights.values[i] - low) / range : 0.0;

@@ -18,6 +18,9 @@ namespace gt {
 
 enum class Neighbourhood { cardinal, diagonal, alternating };
 
+// "cardinal", "diagonal", "alternating": the names of the `neighbourhood` parameter.
+const char* neighbourhood_name(Neighbourhood neighbourhood);
+
 struct ThermalParams {
   int iterations = 100;
   double talus_angle_deg = 45.0;

@@ -27,7 +27,7 @@ static_assert(offsetof(ThermalBlock, clamp_unit) == 60);
 static_assert(sizeof(ThermalBlock) == 64);
 
 constexpr int local_size = 16;  // local_size_x/y of thermal_block.glsl
-constexpr GLuint block_binding = 0, heights_binding = 1, valid_binding = 2, requests_binding = 3, next_binding = 4;
+constexpr GLuint block_binding = 0, requests_binding = 3;  // heights: see HeightfieldBuffers
 
 // T·l rounded once from double, as the reference does.
 ThermalBlock make_block(const ThermalConstants& constants, bool cardinal, int width, int height) {
@@ -59,9 +59,7 @@ UniformBuffer block_buffer(const ThermalBlock& block) {
 
 ThermalErosion::ThermalErosion(int width, int height, const ThermalConstants& constants, Neighbourhood neighbourhood,
                                int iterations)
-    : width_(width),
-      height_(height),
-      neighbourhood_(neighbourhood),
+    : neighbourhood_(neighbourhood),
       iterations_(iterations),
       requests_program_(ComputeProgram::load("erosion/thermal_requests.comp")),
       transfer_program_(ComputeProgram::load("erosion/thermal_transfer.comp")),
@@ -78,12 +76,7 @@ void ThermalErosion::run() {
     const bool cardinal = neighbourhood_ == Neighbourhood::cardinal ||
                           (neighbourhood_ == Neighbourhood::alternating && iteration % 2 == 0);
     (cardinal ? cardinal_block_ : diagonal_block_).bind(block_binding);
-    heights_.bind(heights_binding, valid_binding, next_binding);
-    requests_program_.dispatch(width_, height_, local_size, local_size);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    transfer_program_.dispatch(width_, height_, local_size, local_size);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    heights_.swap();
+    heights_.iterate(requests_program_, transfer_program_, local_size);
   }
 }
 

@@ -24,8 +24,6 @@ class ThermalErosion {
   Grid<float> result() const;
 
  private:
-  int width_;
-  int height_;
   Neighbourhood neighbourhood_;
   int iterations_;
   ComputeProgram requests_program_;

@@ -24,7 +24,7 @@ static_assert(offsetof(ThermalJakoBlock, rate) == 40);
 static_assert(sizeof(ThermalJakoBlock) == 48);
 
 constexpr int local_size = 16;  // local_size_x/y of thermal_jako_block.glsl
-constexpr GLuint block_binding = 0, heights_binding = 1, valid_binding = 2, outflows_binding = 3, next_binding = 4;
+constexpr GLuint block_binding = 0, outflows_binding = 3;  // heights: see HeightfieldBuffers
 
 // T·l rounded once from double, as the reference does.
 UniformBuffer block_buffer(const ThermalConstants& constants, int width, int height) {
@@ -47,9 +47,7 @@ UniformBuffer block_buffer(const ThermalConstants& constants, int width, int hei
 }  // namespace
 
 ThermalJakoErosion::ThermalJakoErosion(int width, int height, const ThermalConstants& constants, int iterations)
-    : width_(width),
-      height_(height),
-      iterations_(iterations),
+    : iterations_(iterations),
       outflow_program_(ComputeProgram::load("erosion/thermal_jako_outflow.comp")),
       gather_program_(ComputeProgram::load("erosion/thermal_jako_gather.comp")),
       block_(block_buffer(constants, width, height)),
@@ -62,12 +60,7 @@ void ThermalJakoErosion::run() {
   block_.bind(block_binding);
   outflows_.bind(outflows_binding);
   for (int iteration = 0; iteration < iterations_; ++iteration) {
-    heights_.bind(heights_binding, valid_binding, next_binding);
-    outflow_program_.dispatch(width_, height_, local_size, local_size);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    gather_program_.dispatch(width_, height_, local_size, local_size);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    heights_.swap();
+    heights_.iterate(outflow_program_, gather_program_, local_size);
   }
 }
 

@@ -21,8 +21,6 @@ class ThermalJakoErosion {
   Grid<float> result() const;
 
  private:
-  int width_;
-  int height_;
   int iterations_;
   ComputeProgram outflow_program_;
   ComputeProgram gather_program_;
