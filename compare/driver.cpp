@@ -27,11 +27,13 @@ struct Job {
   LoadedInput input;
 };
 
+const std::string ad_hoc_origin = "command line";
+
 CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   const auto& algorithm = find_algorithm(ad_hoc.algorithm);
   CaseSpec spec;
   spec.algorithm = ad_hoc.algorithm;
-  spec.origin = "command line";
+  spec.origin = ad_hoc_origin;
   spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
   for (const auto& assignment : ad_hoc.assignments) {
     const auto equals = assignment.find('=');
@@ -64,6 +66,9 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
       job.input = load_input(spec.input, spec.crop, dataset_dir);
     } catch (const InputError& error) {
       throw InputError(fmt::format("case {}: {}", spec.name, error.what()));
+    }
+    if (spec.origin == ad_hoc_origin) {
+      for (const auto& note : job.input.notes) fmt::print(stderr, "groundtruth: {}: {}\n", spec.name, note);
     }
     jobs.push_back(std::move(job));
   }
