@@ -8,7 +8,11 @@
 namespace gt {
 
 const std::vector<Algorithm>& algorithms() {
-  static const std::vector<Algorithm> all = {thermal_algorithm(), thermal_jako_algorithm()};
+  static const std::vector<Algorithm> all = [] {
+    std::vector<Algorithm> list = {thermal_algorithm(), thermal_jako_algorithm()};
+    for (auto& algorithm : noise_algorithms()) list.push_back(std::move(algorithm));
+    return list;
+  }();
   return all;
 }
 

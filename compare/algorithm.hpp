@@ -19,8 +19,9 @@ namespace gt {
 struct PreparedTwin {
   FieldTwin twin;
   Heightmap input;  // what the twins run on (seed 000's normalised heights, for example)
-  // Checks that belong to the algorithm rather than to field twins (spec vectors of its formulas).
-  std::function<void(const nlohmann::json& expect, CaseResult& result)> extra_checks;
+  // Checks that belong to the algorithm rather than to field twins (spec vectors of its formulas,
+  // sweeps); they may add artifacts under options.report_dir / result.name.
+  std::function<void(const nlohmann::json& expect, const RunOptions& options, CaseResult& result)> extra_checks;
 };
 
 struct Algorithm {
@@ -30,6 +31,10 @@ struct Algorithm {
   const ParamSpecs* params = nullptr;
   // `resolved` holds every parameter (defaults filled in, ranges checked).
   std::function<PreparedTwin(const nlohmann::json& resolved, const Heightmap& input)> prepare;
+  // Whether the algorithm has an `iterations` parameter: the performance table then runs
+  // BenchmarkOptions::iterations of them and counts cell-iterations; otherwise one sample per cell.
+  bool iterates = true;
+
 };
 
 const std::vector<Algorithm>& algorithms();
@@ -40,5 +45,6 @@ const Algorithm& find_algorithm(const std::string& name);
 // Defined by each file of compare/algorithms/.
 Algorithm thermal_algorithm();
 Algorithm thermal_jako_algorithm();
+std::vector<Algorithm> noise_algorithms();
 
 }  // namespace gt

@@ -12,11 +12,10 @@
 namespace gt {
 namespace {
 
-BenchmarkRow row(const std::string& algorithm, const std::string& backend, int size, const BenchmarkOptions& options,
+BenchmarkRow row(const std::string& algorithm, const std::string& backend, int size, int iterations, int reps,
                  const std::vector<double>& times, const std::string& device) {
-  BenchmarkRow result{algorithm, backend, size, options.iterations, options.reps, median(times), 0.0, device};
-  result.mcell_iterations_per_s =
-      static_cast<double>(size) * size * options.iterations / (result.median_ms * 1e-3) / 1e6;
+  BenchmarkRow result{algorithm, backend, size, iterations, reps, median(times), 0.0, device};
+  result.mcell_iterations_per_s = static_cast<double>(size) * size * iterations / (result.median_ms * 1e-3) / 1e6;
   return result;
 }
 
@@ -36,7 +35,9 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
   int index = 0;
   Progress progress(static_cast<int>(algorithms().size() * options.sizes.size()));
   for (const auto& algorithm : algorithms()) {
-    const auto params = resolve_params(algorithm.name, *algorithm.params, {{"iterations", options.iterations}});
+    const int iterations = algorithm.iterates ? options.iterations : 1;
+    const nlohmann::json given = algorithm.iterates ? nlohmann::json{{"iterations", iterations}} : nlohmann::json::object();
+    const auto params = resolve_params(algorithm.name, *algorithm.params, given);
     for (int size : options.sizes) {
       progress.start_case(++index, fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
       const PreparedTwin prepared = algorithm.prepare(params, benchmark_input(size));
@@ -46,7 +47,7 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
       for (int rep = 0; rep < options.reps; ++rep) {
         cpu_times.push_back(cpu_wall_ms([&] { prepared.twin.reference_double(prepared.input); }));
       }
-      rows.push_back(row(algorithm.name, "cpu", size, options, cpu_times, environment.cpu));
+      rows.push_back(row(algorithm.name, "cpu", size, iterations, options.reps, cpu_times, environment.cpu));
       if (!gpu_available) continue;
       progress.stage("gpu");
       const auto input = prepared.input.cast<float>();
@@ -58,7 +59,7 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
         runner.load(input);
         gpu_times.push_back(gpu_wall_ms(runner.run));
       }
-      rows.push_back(row(algorithm.name, "gpu", size, options, gpu_times, environment.gl_renderer));
+      rows.push_back(row(algorithm.name, "gpu", size, iterations, options.reps, gpu_times, environment.gl_renderer));
     }
   }
   progress.finish();

@@ -121,7 +121,7 @@ CaseResult run_job(const Job& job, const RunOptions& options, const std::map<std
   try {
     const PreparedTwin prepared = job.algorithm->prepare(job.resolved, job.input.heights);
     run_field_twin(prepared.twin, prepared.input, job.spec.expect, options, result);
-    if (prepared.extra_checks) prepared.extra_checks(job.spec.expect, result);
+    if (prepared.extra_checks) prepared.extra_checks(job.spec.expect, options, result);
   } catch (const std::exception& error) {
     result.error = error.what();
   }

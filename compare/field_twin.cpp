@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -117,12 +118,15 @@ void add_parity_checks(const FieldTwin& twin, const Heightmap& input, const Grid
                        const Grid<float>& cpu_float, const std::optional<GpuOutputs>& gpu, const RunOptions& options,
                        CaseResult& result) {
   const auto totals = field_totals(input);
-  const double range = totals.high > totals.low ? totals.high - totals.low : 1.0;
+  const bool generated = twin.generated.has_value();
+  const double range = generated ? 1.0 : (totals.high > totals.low ? totals.high - totals.low : 1.0);
   const double magnitude = std::max(std::abs(totals.low), std::abs(totals.high)) / range;
-  const auto logic = parity_bounds_same_arithmetic(twin.additions_per_cell, magnitude);
-  const auto precision = parity_bounds_float_vs_double(float_roundings(twin), magnitude,
-                                                       measured_amplification(twin, input, cpu, options),
-                                                       twin.largest_switched_transfer);
+  const auto logic = generated ? twin.generated->logic : parity_bounds_same_arithmetic(twin.additions_per_cell, magnitude);
+  const auto precision =
+      generated ? twin.generated->precision
+                : parity_bounds_float_vs_double(float_roundings(twin), magnitude,
+                                                measured_amplification(twin, input, cpu, options),
+                                                twin.largest_switched_transfer);
   add_parity_pair("float_vs_double", field_difference(cpu, cpu_float), range, precision, result);
   if (!gpu) {
     for (const char* name : {"parity.max_abs.gpu_vs_float", "parity.rms.gpu_vs_float", "parity.max_abs.gpu_vs_double",
@@ -163,11 +167,10 @@ void add_artifact(CaseResult& result, const std::string& file, const std::string
   result.artifacts.push_back({result.name + "/" + file, kind, caption});
 }
 
-void write_artifacts(const Heightmap& input, const Grid<double>& cpu, const Grid<float>& cpu_float,
-                     const std::optional<GpuOutputs>& gpu, const RunOptions& options, CaseResult& result) {
-  report_stage(options, "pictures");
-  const auto folder = options.report_dir / result.name;
-  std::filesystem::create_directories(folder);
+// Input, results and the change they made, on the input's colour scale.
+void write_change_pictures(const Heightmap& input, const Grid<double>& cpu, const Grid<float>& cpu_float,
+                           const std::optional<GpuOutputs>& gpu, const std::filesystem::path& folder,
+                           CaseResult& result) {
   const auto totals = field_totals(input);
   const double exaggeration = write_height_image(input, totals.low, totals.high, folder / "before.png");
   add_artifact(result, "before.png", "image", "input");
@@ -186,11 +189,54 @@ void write_artifacts(const Heightmap& input, const Grid<double>& cpu, const Grid
     add_artifact(result, "gpu_vs_float.png", "image",
                  fmt::format("GPU - reference (float) (±{:.3g} {})", disagreement.scale_used, input.vertical_unit));
   }
+}
+
+// A generated field from both sides on its own colour scale, and where the GPU departs from the truth.
+void write_generated_pictures(const Grid<double>& cpu, const std::optional<GpuOutputs>& gpu,
+                              const std::filesystem::path& folder, CaseResult& result) {
+  const auto totals = field_totals(cpu);
+  const double exaggeration = write_height_image(cpu, totals.low, totals.high, folder / "cpu.png");
+  add_artifact(result, "cpu.png", "image", "CPU reference (double)");
+  if (!gpu) return;
+  const auto gpu_values = gpu->first.cast<double>();
+  write_height_image(gpu_values, totals.low, totals.high, folder / "gpu.png", exaggeration);
+  add_artifact(result, "gpu.png", "image", "GPU");
+  const auto disagreement = write_difference_image(cpu, gpu_values, folder / "gpu_vs_double.png");
+  add_artifact(result, "gpu_vs_double.png", "image",
+               fmt::format("GPU - reference (double) (±{:.3g})", disagreement.scale_used));
+}
+
+// The parameters beside a written field, so that a generated terrain is a dataset of its own.
+void write_provenance(const Grid<double>& field, const std::filesystem::path& file, const CaseResult& result) {
+  const nlohmann::json provenance = {
+      {"case", result.name},
+      {"algorithm", result.algorithm},
+      {"params", result.params},
+      {"input", result.input},
+      {"grid", {{"width", field.width}, {"height", field.height}, {"cell_size_x", field.cell_size_x},
+                {"cell_size_y", field.cell_size_y}, {"horizontal_unit", field.horizontal_unit},
+                {"vertical_unit", field.vertical_unit}}}};
+  std::ofstream(file) << provenance.dump(2) << '\n';
+}
+
+void write_artifacts(const FieldTwin& twin, const Heightmap& input, const Grid<double>& cpu,
+                     const Grid<float>& cpu_float, const std::optional<GpuOutputs>& gpu, const RunOptions& options,
+                     CaseResult& result) {
+  report_stage(options, "pictures");
+  const auto folder = options.report_dir / result.name;
+  std::filesystem::create_directories(folder);
+  if (twin.generated) {
+    write_generated_pictures(cpu, gpu, folder, result);
+  } else {
+    write_change_pictures(input, cpu, cpu_float, gpu, folder, result);
+  }
   write_heightmap(cpu, folder / "cpu.exr");
-  add_artifact(result, "cpu.exr", "field", "after, CPU reference (double), float32 EXR");
+  add_artifact(result, "cpu.exr", "field", "CPU reference (double), float32 EXR");
+  write_provenance(cpu, folder / "cpu.json", result);
+  add_artifact(result, "cpu.json", "field", "how cpu.exr was made: algorithm, parameters, input, grid");
   if (!gpu) return;
   write_heightmap(gpu->first.cast<double>(), folder / "gpu.exr");
-  add_artifact(result, "gpu.exr", "field", "after, GPU, float32 EXR");
+  add_artifact(result, "gpu.exr", "field", "GPU, float32 EXR");
 }
 
 }  // namespace
@@ -219,7 +265,7 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& input, const nlohman
     add_spec_checks(expect, cpu, "cpu", result);
     if (gpu) add_spec_checks(expect, gpu->first, "gpu", result);
   }
-  write_artifacts(input, cpu, cpu_float, gpu, options, result);
+  write_artifacts(twin, input, cpu, cpu_float, gpu, options, result);
 }
 
 }  // namespace gt

@@ -6,6 +6,7 @@
 // checks of DESIGN.md to the case result:
 //   mass.relative_drift.{cpu,cpu_float,gpu}   |Σ after - Σ before| / Σ|before|   (conserving algorithms)
 //   parity.max_abs.gpu_vs_float, parity.rms.gpu_vs_float     relative to the input's height range
+//                                                            (absolute for generated fields)
 //   parity.max_abs.gpu_vs_double, parity.rms.gpu_vs_double
 //   parity.max_abs.float_vs_double                           float precision of the method itself
 //   determinism.gpu                                          cells differing between two GPU runs
@@ -15,10 +16,12 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "compare/checks/error_model.hpp"
 #include "compare/progress.hpp"
 #include "compare/result.hpp"
 #include "core/grid.hpp"
@@ -43,6 +46,14 @@ struct FieldTwin {
   // transfer that the threshold gates. Loosens only the float-vs-double bounds.
   double largest_switched_transfer = 0.0;
   bool conserves_mass = true;
+  // A generator (noise) makes a new field on the input's grid rather than changing the input: its
+  // pictures show the output alone, and its parity bounds are absolute and given here rather than
+  // derived from additions relative to the input's height range.
+  struct GeneratedField {
+    Bounds logic;      // GPU vs ref<float>
+    Bounds precision;  // ref<float> and GPU vs ref<double>
+  };
+  std::optional<GeneratedField> generated;
 };
 
 struct RunOptions {

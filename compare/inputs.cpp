@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "compare/algorithm.hpp"
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/rng.hpp"
@@ -63,6 +64,20 @@ Heightmap step(const nlohmann::json& input) {
   return field;
 }
 
+// A terrain synthesised by a noise algorithm's double reference (terrain.* cases make the same
+// field and report on it): {"generator": "terrain", "algorithm": "noise.hetero_terrain",
+// "params": {...}, "width", "height", "cell_size"}.
+Heightmap noise_terrain(const nlohmann::json& input) {
+  const Heightmap grid = blank_field(input);
+  const auto& algorithm = find_algorithm(input.value("algorithm", std::string("noise.hetero_terrain")));
+  if (algorithm.iterates) {
+    throw InputError(fmt::format("input generator terrain: {} is not a noise algorithm", algorithm.name));
+  }
+  const auto resolved = resolve_params(algorithm.name, *algorithm.params, input.value("params", nlohmann::json::object()));
+  const PreparedTwin prepared = algorithm.prepare(resolved, grid);
+  return prepared.twin.reference_double(prepared.input);
+}
+
 Heightmap example_3x3() {
   Heightmap field(3, 3, 0.0);
   field.at(1, 1) = 1.0;
@@ -78,12 +93,16 @@ LoadedInput generated_input(const nlohmann::json& input) {
     loaded.heights = cone(input);
   } else if (name == "step") {
     loaded.heights = step(input);
+  } else if (name == "terrain") {
+    loaded.heights = noise_terrain(input);
+  } else if (name == "flat") {
+    loaded.heights = blank_field(input);
   } else if (name == "example_3x3") {
     loaded.heights = example_3x3();
   } else {
-    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, example_3x3", name));
+    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, flat, terrain, example_3x3", name));
   }
-  if (name != "example_3x3") add_noise(loaded.heights, input);
+  if (name != "example_3x3" && name != "terrain") add_noise(loaded.heights, input);
   loaded.description = fmt::format("generated {} {}x{}, cell {} {}", name, loaded.heights.width,
                                    loaded.heights.height, loaded.heights.cell_size_x, loaded.heights.horizontal_unit);
   return loaded;

@@ -6,8 +6,11 @@
 //   cone          "width", "height" (cells, default 128), "cell_size" (m, 1), "peak" (m, 100),
 //                 "radius" (share of the shorter side, 0.4): a right circular cone on a plane.
 //   step          "width", "height", "cell_size", "peak": a cliff of height `peak` at x = width/2.
+//   flat          "width", "height", "cell_size": zeros; the sampling grid of generated fields (noise).
+//   terrain       "width", "height", "cell_size", "algorithm" (a noise.* algorithm), "params": the
+//                 terrain that algorithm's double reference synthesises (see terrain.* cases).
 //   example_3x3   seed 000's 3×3 test field: centre 1, other cells 0, cell size 1.
-//   All but example_3x3 take "noise" (m, default 0) and "seed" (default 1): uniform noise in
+//   cone, step and flat take "noise" (m, default 0) and "seed" (default 1): uniform noise in
 //   [0, noise) added to every cell from random_u32(seed, cell, 0, 0).
 // "crop": [x, y, width, height] cuts a window out of the input (InputError if it does not fit).
 #pragma once

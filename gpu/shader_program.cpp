@@ -33,12 +33,12 @@ std::vector<std::string> read_lines(std::ifstream& file) {
   return lines;
 }
 
-// "NAME" or "NAME=VALUE" as "#define NAME VALUE".
+// "NAME", "NAME=VALUE" or "NAME(a, b)=VALUE" as "#define NAME VALUE" (function-like macros too).
 std::string define_line(const std::string& define) {
-  static const std::regex define_pattern(R"(([A-Za-z_][A-Za-z0-9_]*)(=(.*))?)");
+  static const std::regex define_pattern(R"(([A-Za-z_][A-Za-z0-9_]*(?:\([A-Za-z0-9_, ]*\))?)(=(.*))?)");
   std::smatch match;
   if (!std::regex_match(define, match, define_pattern)) {
-    throw std::invalid_argument(fmt::format("shader define \"{}\" is not NAME or NAME=VALUE", define));
+    throw std::invalid_argument(fmt::format("shader define \"{}\" is not NAME, NAME=VALUE or NAME(args)=VALUE", define));
   }
   return fmt::format("#define {} {}", match[1].str(), match[3].str());
 }

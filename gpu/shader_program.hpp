@@ -7,7 +7,7 @@
 //   one (load_from). `#include "family/file.glsl"` lines are resolved against that same root,
 //   recursively; a cycle or a missing file is an error naming the including file and line.
 //   Included files are pasted verbatim, so a file included twice needs #ifndef guards.
-// - Defines ("NAME" or "NAME=VALUE") become `#define NAME VALUE` lines right after #version.
+// - Defines ("NAME", "NAME=VALUE" or "NAME(a)=VALUE") become `#define` lines right after #version.
 // - Compile and link failures throw std::runtime_error with the driver's log rewritten so that
 //   Mesa's "0:LINE(COL): " and NVIDIA's "0(LINE) : " prefixes read
 //   "tests/data/shaders/lib/broken.glsl:LINE:COL: " (paths relative to the project when inside it).

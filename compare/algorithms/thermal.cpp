@@ -22,7 +22,7 @@ GpuFieldRunner field_runner(std::shared_ptr<Gpu> gpu) {
 
 // Spec vector of eq. 4.10 when a case asks for it: {"talus_eq_4_10": {"angle", "width",
 // "vertical_aspect", "value"}}; exact in double up to the rounding of tan (a few ulp).
-void add_talus_spec(const nlohmann::json& expect, CaseResult& result) {
+void add_talus_spec(const nlohmann::json& expect, const RunOptions&, CaseResult& result) {
   if (!expect.is_object() || !expect.contains("talus_eq_4_10")) return;
   const auto& vector = expect["talus_eq_4_10"];
   const double value = talus_threshold_eq_4_10(vector.at("angle"), vector.at("width"), vector.at("vertical_aspect"));

@@ -124,7 +124,10 @@ int main(int argc, char** argv) {
   gt::BenchmarkOptions bench_options;
   auto* bench = app.add_subcommand("bench", "only the performance table");
   add_shared_options(*bench, bench_shared, "groundtruth-bench");
-  bench->add_option("--sizes", bench_options.sizes, "grid sides")->check(CLI::Range(8, 8192))->capture_default_str();
+  bench->add_option("--sizes", bench_options.sizes, "grid sides, comma-separated")
+      ->delimiter(',')
+      ->check(CLI::Range(8, 8192))
+      ->capture_default_str();
   bench->add_option("--iterations", bench_options.iterations, "iterations per run")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();

@@ -32,7 +32,8 @@ namespace gt {
 namespace {
 
 constexpr const char* python = GT_PYTHON_WITH_MATPLOTLIB;
-constexpr const char* script = GT_SOURCE_DIR "/compare/report/plot_timings.py";
+constexpr const char* timings_script = GT_SOURCE_DIR "/compare/report/plot_timings.py";
+constexpr const char* series_script = GT_SOURCE_DIR "/compare/report/plot_series.py";
 constexpr const char* plot_file = "timings.png";
 
 // Removes its files when it goes out of scope.
@@ -82,14 +83,29 @@ std::string run_logged(const std::vector<std::string>& arguments, const std::fil
   const std::string exit = WIFEXITED(status) ? fmt::format("exit status {}", WEXITSTATUS(status))
                                              : fmt::format("signal {}", WTERMSIG(status));
   const std::string output = last_line(log);
-  return output.empty() ? fmt::format("plot_timings.py failed ({})", exit)
-                        : fmt::format("plot_timings.py failed ({}): {}", exit, output);
+  const std::string name = std::filesystem::path(arguments[1]).filename().string();
+  return output.empty() ? fmt::format("{} failed ({})", name, exit) : fmt::format("{} failed ({}): {}", name, exit, output);
 }
 
-void write_rows(const std::vector<BenchmarkRow>& rows, const std::filesystem::path& file) {
+void write_json(const nlohmann::json& document, const std::filesystem::path& file) {
   std::ofstream out(file);
-  out << report_detail::benchmarks_to_json(rows).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  out << document.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
+}
+
+// Runs `script` on `document` to draw `png`; "" on success, otherwise why not.
+std::string draw(const char* script, const nlohmann::json& document, const std::filesystem::path& png) {
+  if (std::string_view(python).empty()) return "no Python with matplotlib was found when the build was configured";
+  const std::filesystem::path input = temporary_path(".json");
+  const std::filesystem::path log = temporary_path(".log");
+  const TemporaryFiles temporaries{{input, log}};
+  write_json(document, input);
+  std::error_code ignored;
+  std::filesystem::remove(png, ignored);  // so a stale plot cannot pass for a new one
+  const std::string failure = run_logged({python, script, input.string(), png.string()}, log);
+  if (!failure.empty()) return failure;
+  if (!std::filesystem::exists(png)) return fmt::format("{} exited normally but wrote no {}", script, png.string());
+  return "";
 }
 
 std::string caption(const std::vector<BenchmarkRow>& rows) {
@@ -107,24 +123,21 @@ std::optional<Artifact> plot_benchmarks(const std::vector<BenchmarkRow>& rows, c
     reason = "no benchmark rows";
     return std::nullopt;
   }
-  if (std::string_view(python).empty()) {
-    reason = "no Python with matplotlib was found when the build was configured";
-    return std::nullopt;
-  }
-  const std::filesystem::path rows_file = temporary_path(".json");
-  const std::filesystem::path log = temporary_path(".log");
-  const TemporaryFiles temporaries{{rows_file, log}};
-  write_rows(rows, rows_file);
-  const std::filesystem::path png = folder / plot_file;
-  std::error_code ignored;
-  std::filesystem::remove(png, ignored);  // so a stale plot cannot pass for a new one
-  reason = run_logged({python, script, rows_file.string(), png.string()}, log);
+  reason = draw(timings_script, report_detail::benchmarks_to_json(rows), folder / plot_file);
   if (!reason.empty()) return std::nullopt;
-  if (!std::filesystem::exists(png)) {
-    reason = fmt::format("plot_timings.py exited normally but wrote no {}", png.string());
-    return std::nullopt;
-  }
   return Artifact{plot_file, "plot", caption(rows)};
+}
+
+std::optional<Artifact> plot_series(const SeriesPlot& plot, const std::filesystem::path& report_folder,
+                                    const std::string& relative_png, const std::string& caption, std::string& reason) {
+  nlohmann::json document = {{"title", plot.title},   {"x_label", plot.x_label}, {"y_label", plot.y_label},
+                             {"log_x", plot.log_x},   {"log_y", plot.log_y},     {"series", nlohmann::json::array()}};
+  for (const Series& series : plot.series) {
+    document["series"].push_back({{"label", series.label}, {"x", series.x}, {"y", series.y}, {"dashed", series.dashed}});
+  }
+  reason = draw(series_script, document, report_folder / relative_png);
+  if (!reason.empty()) return std::nullopt;
+  return Artifact{relative_png, "plot", caption};
 }
 
 }  // namespace gt

@@ -1,5 +1,5 @@
-// Benchmark plot for reports: median time per run and throughput over grid size, drawn by
-// compare/report/plot_timings.py with matplotlib.
+// Plots for reports, drawn with matplotlib: the benchmark plot (median time per run and throughput
+// over grid size, compare/report/plot_timings.py) and generic x-y series (plot_series.py).
 //
 // The Python interpreter is GT_PYTHON_WITH_MATPLOTLIB (found at configure time, may be empty) and
 // the script GT_SOURCE_DIR "/compare/report/plot_timings.py"; both are compile definitions.
@@ -20,5 +20,27 @@ namespace gt {
 // the caller then shows "plot unavailable: <reason>" (writers.hpp: a plot with an empty path).
 std::optional<Artifact> plot_benchmarks(const std::vector<BenchmarkRow>& rows, const std::filesystem::path& folder,
                                         std::string& reason);
+
+// Any x-y plot drawn by compare/report/plot_series.py: one line per series, optional log axes.
+struct Series {
+  std::string label;
+  std::vector<double> x;
+  std::vector<double> y;
+  bool dashed = false;  // bounds and models dashed, measurements solid
+};
+
+struct SeriesPlot {
+  std::string title;
+  std::string x_label;
+  std::string y_label;
+  bool log_x = false;
+  bool log_y = false;
+  std::vector<Series> series;
+};
+
+// Writes report_folder/relative_png (its folder must exist) and returns it as a "plot" artifact
+// with `caption`; std::nullopt and `reason` as plot_benchmarks.
+std::optional<Artifact> plot_series(const SeriesPlot& plot, const std::filesystem::path& report_folder,
+                                    const std::string& relative_png, const std::string& caption, std::string& reason);
 
 }  // namespace gt

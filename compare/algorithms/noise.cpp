@@ -1,0 +1,422 @@
+// The driver's view of the noise functions (issue: noise and terrain synthesis as twins): each
+// function and fractal sum as a generated field on the input's grid, with the error model of
+// float coordinates, and the checks that belong to noise: spec vectors, range, mean, gradient,
+// and the walk away from the origin.
+//
+// Error model (absolute, in output units):
+//   coordinates: each float coordinate origin_c + i·step is rounded twice, so it is off by at
+//     most 2u·C (C = the largest |coordinate| of the float twins' grid, after any origin
+//     reduction, times lacunarity^(octaves-1) for fractal sums); the value then moves by at most
+//     lipschitz·2u·C·sqrt(dimension) (lipschitz = largest gradient norm of the function).
+//   arithmetic: the evaluation itself rounds each of its operations; its terms are at most
+//     `arithmetic_terms` in magnitude (the output scale of the function times the number of
+//     corner contributions) and each carries a few roundings: 8u·terms.
+//   The precision bound (float or GPU vs double) is their sum, strict; beyond it the outcome is
+//   `warn` with the coordinate, as the far-from-origin walk expects. The logic bound (GPU vs
+//   float, same operations, no divisions) is the arithmetic part alone and fails beyond it.
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/checks/field.hpp"
+#include "compare/checks/threshold.hpp"
+#include "compare/report/plots.hpp"
+#include "core/errors.hpp"
+#include "core/params/noise.hpp"
+#include "gpu/noise/noise_field.hpp"
+#include "reference/noise/noise_field.hpp"
+
+namespace gt {
+namespace {
+
+struct NoiseTraits {
+  double lipschitz;         // largest gradient norm, noise units^-1 (measured, see below)
+  double arithmetic_terms;  // output scale x corner contributions
+  double scale;             // output scale of a simplex sum (70, 32, 27); 0 for Perlin
+  double gradient_length;   // |g| of the simplex gradient set: sqrt(2) in 3-D, sqrt(3) in 4-D
+};
+
+// Largest gradient norms over 10^6 uniform random points of [0, 256)^d with Perlin's table, from
+// the double references' analytic gradients (central differences, h = 1e-6, over 2·10^5 points for
+// simplex4 and the texture variant), rounded up by 25 %: simplex2 7.33 -> 9.2; simplex3 6.38
+// (kernel 0.6; 2.90 with 0.5) -> 8.0; simplex4 11.07 (0.6; 2.90 with 0.5) -> 13.9; perlin3 3.12
+// and the texture variant 3.10 -> 3.9.
+NoiseTraits traits_of(NoiseBasis basis) {
+  switch (basis) {
+    case NoiseBasis::simplex2: return {9.2, 70.0 * 3, 70.0, std::sqrt(2.0)};
+    case NoiseBasis::simplex3: return {8.0, 32.0 * 4, 32.0, std::sqrt(2.0)};
+    case NoiseBasis::simplex4: return {13.9, 27.0 * 5, 27.0, std::sqrt(3.0)};
+    case NoiseBasis::perlin3:
+    case NoiseBasis::perlin3_texture: return {3.9, 8.0, 0.0, 0.0};
+  }
+  return {13.9, 210.0, 0.0, 0.0};
+}
+
+// Σ_k weight_k and Σ_k weight_k·lacunarity^k of a fractal sum (1 and 1 for a single function):
+// how the arithmetic and coordinate errors of the octaves add up.
+std::pair<double, double> octave_sums(const NoiseParams& params) {
+  if (params.fractal == Fractal::none) return {1.0, 1.0};
+  const auto& fractal = params.fractal_params;
+  double weight = 1.0, frequency = 1.0, weights = 0.0, weighted_frequencies = 0.0;
+  const double ratio = params.fractal == Fractal::fbm ? fractal.gain : std::pow(fractal.lacunarity, -fractal.H);
+  for (int octave = 0; octave < static_cast<int>(std::ceil(fractal.octaves)); ++octave) {
+    weights += weight;
+    weighted_frequencies += weight * frequency;
+    weight *= ratio;
+    frequency *= fractal.lacunarity;
+  }
+  // fbm is normalised by Σ weights. Ridged squares (offset - |n|) and feeds back a weight clamped
+  // to [0, 1]: an error δn grows to at most 2(|offset| + 1)·max(1, gain)·δn per term.
+  // Hetero_terrain multiplies the running value by (1 + (n + offset)·w_k): errors grow with the
+  // value, at most Π_k (1 + (|offset| + 1)·w_k).
+  if (params.fractal == Fractal::fbm) return {1.0, weighted_frequencies / weights};
+  double amplification = 2.0 * (std::abs(fractal.offset) + 1.0) * std::max(1.0, fractal.gain);
+  if (params.fractal == Fractal::hetero_terrain) {
+    amplification = 1.0;
+    double octave_weight = 1.0;
+    for (int octave = 0; octave < static_cast<int>(std::ceil(fractal.octaves)); ++octave) {
+      amplification *= 1.0 + (std::abs(fractal.offset) + 1.0) * octave_weight;
+      octave_weight *= ratio;
+    }
+  }
+  return {weights * amplification, weighted_frequencies * amplification};
+}
+
+double float_grid_extent(const NoiseParams& params) {
+  NoiseParams float_side = params;
+  float_side.sampling.origin = reduced_origin(params);
+  return largest_coordinate(float_side);
+}
+
+// Seed 004's kernel radius² 0.6 (3-D, 4-D) reaches corners outside the simplex a point lies in:
+// a corner at distance² >= 0.5 from every point of a simplex boundary still contributes
+// scale·t⁴·(g·d) with t = r² - |d|² <= r² - 0.5, and is dropped when the point crosses into the
+// next simplex (digest 004 §2.2.5). A rounding that moves a coordinate across the boundary can
+// therefore switch up to two such corners: 2·scale·(r² - 0.5)⁴·|g|·sqrt(r²). 0 for r² = 0.5.
+double switched_contribution(const NoiseParams& params) {
+  const auto traits = traits_of(params.basis);
+  const double reach = params.kernel_radius_squared - 0.5;
+  if (traits.scale == 0.0 || params.basis == NoiseBasis::simplex2 || reach <= 0.0) return 0.0;
+  return 2.0 * traits.scale * std::pow(reach, 4) * traits.gradient_length * std::sqrt(params.kernel_radius_squared);
+}
+
+FieldTwin::GeneratedField noise_bounds(const NoiseParams& params) {
+  const auto traits = traits_of(params.basis);
+  const auto [weights, weighted_frequencies] = octave_sums(params);
+  const double u = unit_roundoff_float;
+  const double arithmetic = 8.0 * u * traits.arithmetic_terms * weights;
+  const double coordinates = traits.lipschitz * 2.0 * u * float_grid_extent(params) * weighted_frequencies *
+                             std::sqrt(static_cast<double>(noise_dimension(params.basis)));
+  const double precision = arithmetic + coordinates + switched_contribution(params) * weights;
+  return {{arithmetic, arithmetic, "same float operations in the same order, no division: 8u per term"},
+          {precision, 1e300,
+           fmt::format("float coordinates up to |x| = {:.4g} (2u·|x|·lipschitz), arithmetic, and {:.3g} for "
+                       "simplex corners the kernel switches at boundaries; beyond: warn",
+                       float_grid_extent(params), switched_contribution(params) * weights)}};
+}
+
+// Terrain synthesis: height = base + amplitude·value, in the twin's own precision (so the float
+// twins still do identical arithmetic), on the sampling grid's geometry.
+template <class Real>
+Grid<Real> as_terrain(Grid<Real> field, const NoiseParams& params, const Heightmap& grid) {
+  const bool scaled = params.amplitude != 1.0 || params.base != 0.0;
+  if (scaled) {
+    const Real amplitude = static_cast<Real>(params.amplitude), base = static_cast<Real>(params.base);
+    for (auto& value : field.values) value = base + amplitude * value;
+  }
+  field.cell_size_x = grid.cell_size_x;
+  field.cell_size_y = grid.cell_size_y;
+  field.horizontal_unit = grid.horizontal_unit;
+  field.vertical_unit = scaled ? "m" : "1";
+  return field;
+}
+
+// The bounds of the unscaled field times |amplitude|, plus the rounding of the scaling itself.
+FieldTwin::GeneratedField terrain_bounds(const NoiseParams& params) {
+  auto bounds = noise_bounds(params);
+  const double scaling = 2.0 * unit_roundoff_float * (std::abs(params.base) + std::abs(params.amplitude));
+  for (Bounds* bound : {&bounds.logic, &bounds.precision}) {
+    bound->strict = bound->strict * std::abs(params.amplitude) + scaling;
+    bound->loose = std::max(bound->loose, bound->strict);
+  }
+  return bounds;
+}
+
+
+// spec.points: {"points": [[x, y, z, (w,) value], ...], "tolerance": t}, evaluated in double.
+void add_point_spec(const NoiseParams& params, const nlohmann::json& expect, CaseResult& result) {
+  if (!expect.contains("points")) return;
+  double worst = 0.0;
+  for (const auto& entry : expect["points"]) {
+    std::array<double, 4> point{};
+    const std::size_t coordinates = entry.size() - 1;
+    for (std::size_t axis = 0; axis < coordinates && axis < 4; ++axis) point[axis] = entry[axis];
+    worst = std::max(worst, std::abs(reference::noise_at(params, point) - entry.back().get<double>()));
+  }
+  const double tolerance = expect.value("tolerance", 0.0);
+  result.checks.push_back(bounded_check("spec.points", worst, tolerance, std::nullopt,
+                                        fmt::format("largest deviation from the listed values; tolerance {} "
+                                                    "(the values are printed to that precision)",
+                                                    tolerance)));
+}
+
+// spec.lattice_nonnegative: {"lattice_nonnegative": {"size": n, "count": c}}: how many points of
+// {0..n-1}^3 have noise >= 0, in double (seed 004's "Total points drawn").
+void add_lattice_spec(const NoiseParams& params, const nlohmann::json& expect, CaseResult& result) {
+  if (!expect.contains("lattice_nonnegative")) return;
+  const int size = expect["lattice_nonnegative"].at("size");
+  const int expected = expect["lattice_nonnegative"].at("count");
+  int count = 0;
+  for (int x = 0; x < size; ++x) {
+    for (int y = 0; y < size; ++y) {
+      for (int z = 0; z < size; ++z) count += reference::noise_at(params, {double(x), double(y), double(z), 0.0}) >= 0.0;
+    }
+  }
+  result.checks.push_back(bounded_check("spec.lattice_nonnegative", std::abs(count - expected), 0.0, std::nullopt,
+                                        fmt::format("{} of {}^3 lattice points have noise >= 0; the seed printed {}",
+                                                    count, size, expected)));
+}
+
+// Basis functions and normalised fBm stay inside [-1, 1] (the seeds' claim) and have mean 0 (their
+// gradient sets are symmetric). The mean of N_eff ≈ (extent in lattice units)² roughly
+// independent cells has standard deviation σ/sqrt(N_eff): bound 4σ/sqrt(N_eff).
+void add_distribution_checks(const NoiseParams& params, const Grid<double>& field, CaseResult& result) {
+  if (params.fractal == Fractal::ridged || params.fractal == Fractal::hetero_terrain) return;
+  const auto totals = field_totals(field);
+  const double largest = std::max(std::abs(totals.low), std::abs(totals.high));
+  // The texture variant's decoded gradients are 256/255 too long and biased by up to 1/255·0.44
+  // (reference/noise/perlin_texture.hpp): its range is [-1.0056, 1.0056].
+  const double limit = params.basis == NoiseBasis::perlin3_texture ? 256.0 / 255.0 + 0.0017 : 1.0;
+  result.checks.push_back(bounded_check("spec.range.cpu", largest, limit, std::nullopt,
+                                        fmt::format("max |value| <= {:.4g}", limit)));
+  const double cells = static_cast<double>(totals.cells);
+  const double mean = totals.sum / cells;
+  const double deviation = std::sqrt(std::max(0.0, totals.sum_squares / cells - mean * mean));
+  const auto& sampling = params.sampling;
+  const double independent = (sampling.width * sampling.step) * (sampling.height * sampling.step);
+  if (independent < 16.0) {
+    result.checks.push_back(skipped_check("spec.mean.cpu", "the grid spans fewer than 16 lattice cells"));
+    return;
+  }
+  result.checks.push_back(bounded_check("spec.mean.cpu", std::abs(mean), 4.0 * deviation / std::sqrt(independent),
+                                        std::nullopt,
+                                        fmt::format("|mean| over {:.0f} lattice cells; bound 4σ/sqrt(cells)", independent)));
+}
+
+// Analytic gradient vs central differences with step h in double: truncation h²/6·M3 (M3 the
+// largest third derivative, below 2e3 for these functions at scale 70/32) plus rounding
+// 2·2^-53·|f|/h. Sampled at up to 400 grid points.
+void add_gradient_check(const NoiseParams& params, CaseResult& result) {
+  const auto& sampling = params.sampling;
+  const std::array<double, 4> origin = sampling.origin;
+  if (!reference::noise_gradient_at(params, origin)) return;
+  if (switched_contribution(params) > 0.0) {
+    result.checks.push_back(skipped_check("spec.gradient.cpu",
+                                          "kernel radius² above 0.5 makes the field jump at simplex boundaries "
+                                          "(digest 004 §2.2.5): central differences straddle the jumps"));
+    return;
+  }
+  constexpr double h = 1e-4;
+  const double bound = h * h / 6.0 * 2e3 + 2.0 * 0x1p-53 * 70.0 / h;
+  const int stride = std::max(1, static_cast<int>(std::sqrt(double(sampling.width) * sampling.height / 400.0)));
+  double worst = 0.0;
+  for (int j = 0; j < sampling.height; j += stride) {
+    for (int i = 0; i < sampling.width; i += stride) {
+      std::array<double, 4> point = origin;
+      point[0] += i * sampling.step;
+      point[1] += j * sampling.step;
+      const auto gradient = *reference::noise_gradient_at(params, point);
+      for (int axis = 0; axis < noise_dimension(params.basis); ++axis) {
+        auto ahead = point, behind = point;
+        ahead[axis] += h;
+        behind[axis] -= h;
+        const double difference = (reference::noise_at(params, ahead) - reference::noise_at(params, behind)) / (2 * h);
+        worst = std::max(worst, std::abs(difference - gradient[axis + 1]));
+      }
+    }
+  }
+  result.checks.push_back(bounded_check("spec.gradient.cpu", worst, bound, std::nullopt,
+                                        "analytic gradient vs central differences (h = 1e-4): h²/6·M3 + rounding"));
+}
+
+struct WalkPoint {
+  double magnitude;
+  double float_error;  // ref<float> vs ref<double>
+  double gpu_error;    // GPU vs ref<double>, NaN without a GPU
+  double bound;
+};
+
+WalkPoint walk_point(NoiseParams params, double magnitude, const std::array<double, 4>& direction, bool gpu) {
+  for (int axis = 0; axis < 4; ++axis) params.sampling.origin[axis] = magnitude * direction[axis];
+  const auto truth = reference::noise_field<double>(params, params.sampling.origin);
+  const auto float_side = reference::noise_field<float>(params, reduced_origin(params));
+  WalkPoint point{magnitude, field_difference(truth, float_side).max_abs, std::nan(""),
+                  noise_bounds(params).precision.strict};
+  if (gpu) {
+    gpu::NoiseField field(params);
+    field.run();
+    point.gpu_error = field_difference(truth, field.result()).max_abs;
+  }
+  return point;
+}
+
+std::vector<WalkPoint> walk(const NoiseParams& params, const nlohmann::json& walk_spec, bool gpu) {
+  std::array<double, 4> direction{};
+  double norm = 0.0;
+  for (std::size_t axis = 0; axis < walk_spec.at("direction").size() && axis < 4; ++axis) {
+    direction[axis] = walk_spec["direction"][axis];
+    norm += direction[axis] * direction[axis];
+  }
+  if (norm == 0.0) throw InputError("walk direction must not be zero");
+  for (double& component : direction) component /= std::sqrt(norm);
+  std::vector<WalkPoint> points;
+  for (const auto& magnitude : walk_spec.at("magnitudes")) points.push_back(walk_point(params, magnitude, direction, gpu));
+  return points;
+}
+
+constexpr double walk_acceptance = 1e-4;  // the absolute agreement users ask of noise twins near the origin
+
+double walk_error(const WalkPoint& point, bool gpu) { return gpu ? point.gpu_error : point.float_error; }
+
+// The error model is an upper bound: exceeding it anywhere on the walk fails.
+Check walk_model_check(const std::string& name, const std::vector<WalkPoint>& points, bool gpu) {
+  double worst_ratio = 0.0;
+  for (const auto& point : points) worst_ratio = std::max(worst_ratio, walk_error(point, gpu) / point.bound);
+  return bounded_check(name, worst_ratio, 1.0, std::nullopt,
+                       "largest (error vs double) / (error model) along the walk; the model bounds the error");
+}
+
+// Where the error first passes the 1e-4 acceptance: `warn`, naming the coordinate.
+Check walk_acceptance_check(const std::string& name, const std::vector<WalkPoint>& points, bool gpu) {
+  double worst = 0.0;
+  std::string first_exceeded;
+  for (const auto& point : points) {
+    const double error = walk_error(point, gpu);
+    worst = std::max(worst, error);
+    if (error > walk_acceptance && first_exceeded.empty()) {
+      first_exceeded = fmt::format("; first over it at |x| = {:.3g} (error {:.3g})", point.magnitude, error);
+    }
+  }
+  return bounded_check(name, worst, walk_acceptance, 1e300,
+                       fmt::format("largest error vs double along the walk against {:g}{}", walk_acceptance,
+                                   first_exceeded));
+}
+
+void add_walk(const NoiseParams& params, const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+  if (!expect.contains("walk")) return;
+  if (options.progress != nullptr) options.progress->stage("walk away from the origin");
+  NoiseParams direct = params, remedied = params;
+  direct.reduce_origin = false;
+  remedied.reduce_origin = true;
+  const auto plain = walk(direct, expect["walk"], options.gpu_available);
+  const auto reduced = walk(remedied, expect["walk"], options.gpu_available);
+  const std::string backend = options.gpu_available ? "gpu_vs_double" : "float_vs_double";
+  const bool gpu = options.gpu_available;
+  result.checks.push_back(walk_model_check("parity.walk_model." + backend, plain, gpu));
+  result.checks.push_back(walk_acceptance_check("parity.walk_acceptance." + backend, plain, gpu));
+  result.checks.push_back(walk_model_check("parity.walk_model_reduced_origin." + backend, reduced, gpu));
+  result.checks.push_back(walk_acceptance_check("parity.walk_acceptance_reduced_origin." + backend, reduced, gpu));
+  SeriesPlot plot{fmt::format("{}: largest error vs double along the walk", result.name), "|origin| (noise units)",
+                  "max |error|", true, true, {}};
+  const auto series = [](const std::vector<WalkPoint>& points, double WalkPoint::*member, std::string label, bool dashed) {
+    Series line{std::move(label), {}, {}, dashed};
+    for (const auto& point : points) {
+      line.x.push_back(point.magnitude);
+      line.y.push_back(point.*member);
+    }
+    return line;
+  };
+  plot.series.push_back(series(plain, &WalkPoint::float_error, "ref<float>", false));
+  if (options.gpu_available) plot.series.push_back(series(plain, &WalkPoint::gpu_error, "GPU", false));
+  plot.series.push_back(series(reduced, &WalkPoint::float_error, "ref<float>, origin reduced by a period", false));
+  if (options.gpu_available) plot.series.push_back(series(reduced, &WalkPoint::gpu_error, "GPU, origin reduced", false));
+  plot.series.push_back(series(plain, &WalkPoint::bound, "error model", true));
+  plot.series.push_back(series(reduced, &WalkPoint::bound, "error model, origin reduced", true));
+  std::string reason;
+  const auto artifact = plot_series(plot, options.report_dir, result.name + "/walk.png",
+                                    "largest error vs double along the walk away from the origin", reason);
+  result.artifacts.push_back(artifact ? *artifact : Artifact{"", "plot", "walk plot unavailable: " + reason});
+}
+
+PreparedTwin prepare_noise(NoiseBasis basis, Fractal fractal, const nlohmann::json& resolved, const Heightmap& input) {
+  check_grid_fits(input.width, input.height, 32, "noise grid");
+  const NoiseParams params = noise_params_from_json(basis, fractal, resolved, input.width, input.height);
+  PreparedTwin prepared;
+  prepared.input = input;
+  FieldTwin& twin = prepared.twin;
+  twin.conserves_mass = false;
+  twin.generated = terrain_bounds(params);
+  twin.reference_double = [params, input](const Grid<double>&) {
+    return as_terrain(reference::noise_field<double>(params, params.sampling.origin), params, input);
+  };
+  twin.reference_float = [params, input](const Grid<float>&) {
+    return as_terrain(reference::noise_field<float>(params, reduced_origin(params)), params, input);
+  };
+  twin.make_gpu = [params, input] {
+    auto field = std::make_shared<gpu::NoiseField>(params);
+    return GpuFieldRunner{[](const Grid<float>&) {}, [field] { field->run(); },
+                          [field, params, input] { return as_terrain(field->result(), params, input); }};
+  };
+  prepared.extra_checks = [params](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+    add_distribution_checks(params, reference::noise_field<double>(params, params.sampling.origin), result);
+    add_gradient_check(params, result);
+    if (!expect.is_object()) return;
+    add_point_spec(params, expect, result);
+    add_lattice_spec(params, expect, result);
+    add_walk(params, expect, options, result);
+  };
+  return prepared;
+}
+
+struct NoiseAlgorithm {
+  const char* name;
+  NoiseBasis basis;
+  Fractal fractal;
+  const char* summary;
+  const char* source;
+};
+
+constexpr NoiseAlgorithm noise_table[] = {
+    {"noise.simplex2", NoiseBasis::simplex2, Fractal::none, "2-D simplex noise (kernel 0.5, scale 70)",
+     "Gustavson 2005 via seed 004 §2.2.4"},
+    {"noise.simplex3", NoiseBasis::simplex3, Fractal::none, "3-D simplex noise (kernel 0.6 or 0.5, scale 32)",
+     "Gustavson 2005 / Eshelman via seed 004 §2.2.3"},
+    {"noise.simplex4", NoiseBasis::simplex4, Fractal::none, "4-D simplex noise (kernel 0.6 or 0.5, scale 27)",
+     "Gustavson 2005 via seed 004 §2.2.4"},
+    {"noise.perlin3", NoiseBasis::perlin3, Fractal::none, "improved Perlin noise, 3-D", "Perlin 2002 via seed 002 §4.4.3"},
+    {"noise.perlin3_texture", NoiseBasis::perlin3_texture, Fractal::none,
+     "texture-based GLSL Perlin noise with its inexact gradient decode", "Gustavson 2004 via seed 004 §2.1"},
+    {"noise.fbm", NoiseBasis::perlin3, Fractal::fbm, "fractal Brownian motion, normalised by the sum of weights",
+     "seed 002 §4.4.3 normalizedOctaveNoise3D; seed 004 §2.2.4"},
+    {"noise.ridged", NoiseBasis::perlin3, Fractal::ridged, "Musgrave's ridged multifractal", "Musgrave 1994 (Blender)"},
+    {"noise.hetero_terrain", NoiseBasis::perlin3, Fractal::hetero_terrain,
+     "Musgrave's heterogeneous terrain as Blender implements it", "seed 001 §3.18"},
+};
+
+const ParamSpecs& specs_of(const NoiseAlgorithm& entry) {
+  static std::map<std::string, ParamSpecs> specs;
+  auto [position, inserted] = specs.try_emplace(entry.name);
+  if (inserted) {
+    position->second = entry.fractal == Fractal::none ? noise_param_specs(entry.basis) : fractal_param_specs(entry.fractal);
+  }
+  return position->second;
+}
+
+}  // namespace
+
+std::vector<Algorithm> noise_algorithms() {
+  std::vector<Algorithm> list;
+  for (const auto& entry : noise_table) {
+    Algorithm algorithm{entry.name, entry.summary, entry.source, &specs_of(entry),
+                        [entry](const nlohmann::json& resolved, const Heightmap& input) {
+                          return prepare_noise(entry.basis, entry.fractal, resolved, input);
+                        },
+                        false};
+    list.push_back(std::move(algorithm));
+  }
+  return list;
+}
+
+}  // namespace gt

@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+"""Draw an x-y plot for a groundtruth report.
+
+Usage: plot_series.py PLOT.json OUT.png
+
+PLOT.json: {"title", "x_label", "y_label", "log_x", "log_y",
+            "series": [{"label", "x": [...], "y": [...], "dashed": bool}]}
+Non-finite or (on a log axis) non-positive points are left out. Exits 3 with a one-line reason
+when matplotlib is missing, 2 on bad input; compare/report/plots.cpp shows the last line.
+"""
+import json
+import math
+import sys
+
+
+def usable(x, y, log_x, log_y):
+    if x is None or y is None or not math.isfinite(x) or not math.isfinite(y):
+        return False
+    return (not log_x or x > 0) and (not log_y or y > 0)
+
+
+def main(argv):
+    if len(argv) != 3:
+        print("usage: plot_series.py PLOT.json OUT.png")
+        return 2
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as error:
+        print(f"matplotlib is not available: {error}")
+        return 3
+    try:
+        with open(argv[1], encoding="utf-8") as f:
+            plot = json.load(f)
+        figure, axes = plt.subplots(figsize=(8, 4.5), dpi=100)
+        for series in plot["series"]:
+            points = [(x, y) for x, y in zip(series["x"], series["y"])
+                      if usable(x, y, plot["log_x"], plot["log_y"])]
+            if not points:
+                continue
+            xs, ys = zip(*points)
+            axes.plot(xs, ys, "--" if series.get("dashed") else "-o", label=series["label"], markersize=4)
+        axes.set(xlabel=plot["x_label"], ylabel=plot["y_label"], title=plot["title"],
+                 xscale="log" if plot["log_x"] else "linear", yscale="log" if plot["log_y"] else "linear")
+        axes.grid(True, which="both", alpha=0.3)
+        axes.legend(fontsize="small")
+        figure.tight_layout()
+        figure.savefig(argv[2])
+    except (OSError, KeyError, TypeError, ValueError) as error:
+        print(f"cannot draw the plot: {error}")
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,165 @@
+#include "core/params/noise.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+constexpr double period = 256.0;  // every noise here hashes lattice coordinates with & 255
+
+// Skew and unskew factors of the simplex lattice in d dimensions: F = (sqrt(d+1) - 1)/d,
+// G = (1 - 1/sqrt(d+1))/d (Gustavson 2005).
+double skew_factor(int dimension) { return (std::sqrt(dimension + 1.0) - 1.0) / dimension; }
+double unskew_factor(int dimension) { return (1.0 - 1.0 / std::sqrt(dimension + 1.0)) / dimension; }
+
+bool is_simplex(NoiseBasis basis) {
+  return basis == NoiseBasis::simplex2 || basis == NoiseBasis::simplex3 || basis == NoiseBasis::simplex4;
+}
+
+std::array<double, 4> reduced_simplex_origin(const std::array<double, 4>& origin, int dimension) {
+  double sum = 0.0;
+  for (int axis = 0; axis < dimension; ++axis) sum += origin[axis];
+  const double skew = sum * skew_factor(dimension);
+  std::array<double, 4> lattice_shift{};
+  double shift_sum = 0.0;
+  for (int axis = 0; axis < dimension; ++axis) {
+    lattice_shift[axis] = period * std::floor((origin[axis] + skew) / period);
+    shift_sum += lattice_shift[axis];
+  }
+  std::array<double, 4> reduced = origin;
+  for (int axis = 0; axis < dimension; ++axis) {
+    reduced[axis] -= lattice_shift[axis] - shift_sum * unskew_factor(dimension);
+  }
+  return reduced;
+}
+
+ParamSpec real_spec(std::string name, double fallback, double min, double max, std::string unit, std::string text) {
+  return {std::move(name), ParamKind::real, fallback, min, max, {}, std::move(unit), std::move(text)};
+}
+
+ParamSpecs sampling_specs(int dimension) {
+  ParamSpecs specs = {
+      {"seed", ParamKind::integer, 0, 0, 4294967295.0, {}, "1",
+       "permutation: 0 = Perlin's reference table, otherwise a shuffle by the counter RNG"},
+      real_spec("step", 0.05, 1e-9, 1e6, "noise unit", "distance between neighbouring samples"),
+      {"reduce_origin", ParamKind::boolean, false, 0, 0, {}, "",
+       "move the origin by a period of the noise (in double) before the float twins see it"},
+  };
+  const char* axes[] = {"origin_x", "origin_y", "origin_z", "origin_w"};
+  for (int axis = 0; axis < dimension; ++axis) {
+    specs.push_back(real_spec(axes[axis], 0.0, -1e9, 1e9, "noise unit", "noise-space position of sample (0, 0)"));
+  }
+  return specs;
+}
+
+}  // namespace
+
+int noise_dimension(NoiseBasis basis) {
+  switch (basis) {
+    case NoiseBasis::simplex2: return 2;
+    case NoiseBasis::simplex4: return 4;
+    default: return 3;
+  }
+}
+
+const char* noise_basis_name(NoiseBasis basis) {
+  switch (basis) {
+    case NoiseBasis::simplex2: return "simplex2";
+    case NoiseBasis::simplex3: return "simplex3";
+    case NoiseBasis::simplex4: return "simplex4";
+    case NoiseBasis::perlin3: return "perlin3";
+    case NoiseBasis::perlin3_texture: return "perlin3_texture";
+  }
+  return "?";
+}
+
+ParamSpecs noise_param_specs(NoiseBasis basis) {
+  ParamSpecs specs = sampling_specs(noise_dimension(basis));
+  if (basis == NoiseBasis::simplex3 || basis == NoiseBasis::simplex4) {
+    specs.push_back(real_spec("kernel", 0.6, 0.5, 0.6, "noise unit²",
+                              "kernel radius²: 0.6 as seed 004 (slightly discontinuous), 0.5 corrected"));
+  }
+  return specs;
+}
+
+ParamSpecs fractal_param_specs(Fractal fractal) {
+  ParamSpecs specs = sampling_specs(3);
+  const bool hetero = fractal == Fractal::hetero_terrain;
+  specs.push_back({"basis", ParamKind::choice, "perlin3", 0, 0, {"perlin3", "simplex3"}, "", "the noise summed"});
+  specs.push_back(real_spec("octaves", hetero ? 3.0 : 6.0, 1.0, max_fractal_octaves, "count",
+                            fractal == Fractal::ridged ? "octaves summed (whole part)"
+                                                       : "octaves summed; a fraction adds part of one more"));
+  specs.push_back(real_spec("lacunarity", hetero ? 3.0 : 2.0, 1e-3, 16.0, "1", "frequency ratio of successive octaves"));
+  if (fractal != Fractal::hetero_terrain) {
+    specs.push_back(real_spec("gain", fractal == Fractal::fbm ? 0.5 : 2.0, 0.0, 16.0, "1",
+                              fractal == Fractal::fbm ? "amplitude ratio of successive octaves"
+                                                      : "weight feedback gain (Blender's ridged default 2)"));
+  }
+  if (fractal != Fractal::fbm) {
+    specs.push_back(real_spec("H", 1.0, 0.0, 4.0, "1", "fractal increment: octave k weighted lacunarity^(-H·k)"));
+    specs.push_back(real_spec("offset", 1.0, -4.0, 4.0, "1", "added to the basis noise"));
+  }
+  specs.push_back(real_spec("amplitude", 1.0, -1e6, 1e6, "m", "height = base + amplitude·value (terrain synthesis)"));
+  specs.push_back(real_spec("base", 0.0, -1e6, 1e6, "m", "height = base + amplitude·value"));
+  return specs;
+}
+
+NoiseParams noise_params_from_json(NoiseBasis basis, Fractal fractal, const nlohmann::json& resolved, int width,
+                                   int height) {
+  NoiseParams params;
+  params.fractal = fractal;
+  params.basis = fractal == Fractal::none ? basis
+                 : resolved.at("basis") == "simplex3" ? NoiseBasis::simplex3
+                                                      : NoiseBasis::perlin3;
+  params.seed = resolved.at("seed").get<std::uint32_t>();
+  params.kernel_radius_squared = resolved.value("kernel", 0.6);
+  params.reduce_origin = resolved.at("reduce_origin").get<bool>();
+  auto& fractal_params = params.fractal_params;
+  fractal_params.octaves = resolved.value("octaves", 1.0);
+  fractal_params.lacunarity = resolved.value("lacunarity", 2.0);
+  fractal_params.gain = resolved.value("gain", fractal_params.gain);
+  fractal_params.H = resolved.value("H", fractal_params.H);
+  fractal_params.offset = resolved.value("offset", fractal_params.offset);
+  params.amplitude = resolved.value("amplitude", 1.0);
+  params.base = resolved.value("base", 0.0);
+  params.sampling.width = width;
+  params.sampling.height = height;
+  params.sampling.step = resolved.at("step").get<double>();
+  const char* axes[] = {"origin_x", "origin_y", "origin_z", "origin_w"};
+  for (int axis = 0; axis < 4; ++axis) params.sampling.origin[axis] = resolved.value(axes[axis], 0.0);
+  const double lacunarity = fractal_params.lacunarity;
+  if (params.reduce_origin && fractal != Fractal::none && lacunarity != std::floor(lacunarity)) {
+    throw InputError(fmt::format("reduce_origin needs an integer lacunarity (got {}): only then is every octave "
+                                 "periodic with the same shift",
+                                 lacunarity));
+  }
+  return params;
+}
+
+std::array<double, 4> reduced_origin(const NoiseParams& params) {
+  const auto& origin = params.sampling.origin;
+  if (!params.reduce_origin) return origin;
+  if (is_simplex(params.basis)) return reduced_simplex_origin(origin, noise_dimension(params.basis));
+  std::array<double, 4> reduced = origin;
+  for (double& coordinate : reduced) coordinate -= period * std::floor(coordinate / period);
+  return reduced;
+}
+
+double largest_coordinate(const NoiseParams& params) {
+  const auto& sampling = params.sampling;
+  double largest = 0.0;
+  for (int axis = 0; axis < noise_dimension(params.basis); ++axis) {
+    const double extent = axis == 0 ? (sampling.width - 1) * sampling.step
+                          : axis == 1 ? (sampling.height - 1) * sampling.step
+                                      : 0.0;
+    largest = std::max({largest, std::abs(sampling.origin[axis]), std::abs(sampling.origin[axis] + extent)});
+  }
+  return largest;
+}
+
+}  // namespace gt

@@ -1,0 +1,107 @@
+// Host side of the GPU noise sampler: the defines that pick the function, the std140 parameter
+// block, the permutation buffer and (for perlin3_texture) the texture. See noise_field.hpp.
+#include "gpu/noise/noise_field.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/noise/permutation.hpp"
+#include "core/params/noise_fractal.hpp"
+
+namespace gt::gpu {
+namespace {
+
+// Mirror of `NoiseFieldBlock` in gpu/shaders/noise/noise_field.comp (std140). The fractal terms
+// are a struct member: std140 aligns it to 16 bytes.
+struct NoiseFieldBlock {
+  float origin[4];
+  std::int32_t grid_size[2];
+  float step;
+  float kernel_radius_squared;
+  FractalTerms<float> fractal_terms;
+  float padding;
+};
+static_assert(offsetof(NoiseFieldBlock, grid_size) == 16);
+static_assert(offsetof(NoiseFieldBlock, step) == 24);
+static_assert(offsetof(NoiseFieldBlock, kernel_radius_squared) == 28);
+static_assert(offsetof(NoiseFieldBlock, fractal_terms) == 32);
+static_assert(sizeof(NoiseFieldBlock) == 64);
+
+constexpr int local_size = 16;  // local_size_x/y of noise_field.comp
+constexpr GLuint block_binding = 0, values_binding = 1, permutation_binding = 5;
+
+// The GLSL expression of the basis at a vec3 q. The kernel is a literal of the float the
+// reference uses (9 significant digits round-trip a float): fractal.glsl, which calls the basis,
+// comes before the parameter block.
+std::string basis_call(const NoiseParams& params, const std::string& q) {
+  switch (params.basis) {
+    case NoiseBasis::simplex3:
+      return fmt::format("gt_simplex3({}, {:.9g})", q, static_cast<float>(params.kernel_radius_squared));
+    case NoiseBasis::perlin3_texture: return "gt_perlin3_texture(" + q + ")";
+    default: return "gt_perlin3(" + q + ")";
+  }
+}
+
+std::vector<std::string> function_defines(const NoiseParams& params) {
+  switch (params.fractal) {
+    case Fractal::fbm: return {"FRACTAL_BASIS(q)=" + basis_call(params, "q"), "NOISE_VALUE(p)=gt_fbm(p.xyz, fractal_terms)"};
+    case Fractal::ridged:
+      return {"FRACTAL_BASIS(q)=" + basis_call(params, "q"),
+              "NOISE_VALUE(p)=gt_ridged_multifractal(p.xyz, fractal_terms)"};
+    case Fractal::hetero_terrain:
+      return {"FRACTAL_BASIS(q)=" + basis_call(params, "q"),
+              "NOISE_VALUE(p)=gt_hetero_terrain(p.xyz, fractal_terms)"};
+    case Fractal::none: break;
+  }
+  switch (params.basis) {
+    case NoiseBasis::simplex2: return {"NOISE_VALUE(p)=gt_simplex2(p.xy)"};
+    case NoiseBasis::simplex4: return {"NOISE_VALUE(p)=gt_simplex4(p, kernel_radius_squared)"};
+    default: return {"NOISE_VALUE(p)=" + basis_call(params, "p.xyz")};
+  }
+}
+
+UniformBuffer block_buffer(const NoiseParams& params) {
+  NoiseFieldBlock block{};
+  const auto origin = reduced_origin(params);
+  for (int axis = 0; axis < 4; ++axis) block.origin[axis] = static_cast<float>(origin[axis]);
+  block.grid_size[0] = params.sampling.width;
+  block.grid_size[1] = params.sampling.height;
+  block.step = static_cast<float>(params.sampling.step);
+  block.kernel_radius_squared = static_cast<float>(params.kernel_radius_squared);
+  block.fractal_terms = fractal_terms<float>(params.fractal_params);
+  return UniformBuffer::from(block);
+}
+
+}  // namespace
+
+NoiseField::NoiseField(const NoiseParams& params)
+    : sampling_(params.sampling),
+      program_(ComputeProgram::load("noise/noise_field.comp", function_defines(params))),
+      block_(block_buffer(params)),
+      permutation_(StorageBuffer::from(doubled_permutation(seeded_permutation(params.seed)))),
+      values_(static_cast<std::size_t>(params.sampling.width) * params.sampling.height * sizeof(float)) {
+  if (params.basis == NoiseBasis::perlin3_texture) {
+    texture_ = std::make_unique<PerlinTexture>(seeded_permutation(params.seed));
+  }
+}
+
+void NoiseField::run() {
+  block_.bind(block_binding);
+  values_.bind(values_binding);
+  permutation_.bind(permutation_binding);
+  if (texture_) texture_->bind(perlin_texture_unit);
+  program_.dispatch(sampling_.width, sampling_.height, local_size, local_size);
+}
+
+Grid<float> NoiseField::result() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  Grid<float> field(sampling_.width, sampling_.height);
+  field.values = values_.download<float>(field.size());
+  return field;
+}
+
+}  // namespace gt::gpu

@@ -1,0 +1,38 @@
+#version 450
+// Samples one noise function on a grid (core/params/noise.hpp): sample (i, j) at
+// origin + (i·step, j·step, 0, 0) in noise units. The host chooses the function with the define
+// NOISE_VALUE(p) (p a vec4; e.g. gt_simplex3(p.xyz, kernel_radius_squared)) and, for fractal sums,
+// FRACTAL_BASIS(q) (e.g. gt_perlin3(q)) with NOISE_VALUE(p) = gt_fbm(p.xyz, fractal_terms).
+// CPU references: reference/noise/noise_field.cpp.
+layout(local_size_x = 16, local_size_y = 16) in;
+
+#include "common/grid.glsl"
+
+#include "noise/simplex.glsl"
+#include "noise/perlin.glsl"
+#include "noise/perlin_texture.glsl"
+#ifdef FRACTAL_BASIS
+#include "noise/fractal.glsl"
+#endif
+
+// Mirrored by NoiseFieldBlock in gpu/noise/noise_field.cpp (std140 offsets checked there).
+layout(std140, binding = 0) uniform NoiseFieldBlock {
+  vec4 origin;                  // rounded once from double on the host
+  ivec2 grid_size;              // width, height
+  float step;
+  float kernel_radius_squared;  // simplex 3-D/4-D
+#ifdef FRACTAL_BASIS
+  GtFractalTerms fractal_terms; // fractal sums
+#endif
+};
+
+layout(std430, binding = 1) writeonly buffer Values { float values[]; };
+
+void main() {
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (!inside_grid(cell, grid_size)) return;
+  precise vec4 p = origin;
+  p.x = origin.x + float(cell.x) * step;
+  p.y = origin.y + float(cell.y) * step;
+  values[cell_index(cell, grid_size)] = NOISE_VALUE(p);
+}

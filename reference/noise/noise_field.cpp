@@ -1,0 +1,107 @@
+// Sampling a noise function or fractal sum on a grid; see noise_field.hpp. The dispatch on
+// NoiseBasis and Fractal is here; the functions are in simplex.cpp, perlin.cpp, perlin_texture.cpp
+// and fractal.hpp.
+#include "reference/noise/noise_field.hpp"
+
+#include <vector>
+
+#include "core/noise/perlin_texture_table.hpp"
+#include "core/noise/permutation.hpp"
+#include "reference/noise/fractal.hpp"
+#include "reference/noise/perlin.hpp"
+#include "reference/noise/perlin_texture.hpp"
+#include "reference/noise/simplex.hpp"
+
+namespace gt::reference {
+namespace {
+
+// One function of a point, bound to its tables, in precision Real.
+template <class Real>
+class Evaluator {
+ public:
+  explicit Evaluator(const NoiseParams& params)
+      : params_(params),
+        permutation_(seeded_permutation(params.seed)),
+        kernel_(static_cast<Real>(params.kernel_radius_squared)),
+        terms_(fractal_terms<Real>(params.fractal_params)) {
+    if (params.basis == NoiseBasis::perlin3_texture) texture_ = perlin_texture_rgba(permutation_);
+  }
+
+  Real operator()(const std::array<Real, 4>& p) const {
+    const auto basis = [this](Real x, Real y, Real z) { return basis3(x, y, z); };
+    switch (params_.fractal) {
+      case Fractal::fbm: return fbm(basis, terms_, p[0], p[1], p[2]);
+      case Fractal::ridged: return ridged_multifractal(basis, terms_, p[0], p[1], p[2]);
+      case Fractal::hetero_terrain: return hetero_terrain(basis, terms_, p[0], p[1], p[2]);
+      case Fractal::none: break;
+    }
+    switch (params_.basis) {
+      case NoiseBasis::simplex2: return simplex2(permutation_, p[0], p[1]);
+      case NoiseBasis::simplex4: return simplex4(permutation_, p[0], p[1], p[2], p[3], kernel_);
+      default: return basis3(p[0], p[1], p[2]);
+    }
+  }
+
+  std::optional<std::array<Real, 4>> gradient(const std::array<Real, 4>& p) const {
+    if (params_.fractal != Fractal::none) return std::nullopt;
+    switch (params_.basis) {
+      case NoiseBasis::simplex2: {
+        const auto value_and_gradient = simplex2_gradient(permutation_, p[0], p[1]);
+        return std::array<Real, 4>{value_and_gradient[0], value_and_gradient[1], value_and_gradient[2], Real(0)};
+      }
+      case NoiseBasis::simplex3: return simplex3_gradient(permutation_, p[0], p[1], p[2], kernel_);
+      case NoiseBasis::perlin3: return perlin3_gradient(permutation_, p[0], p[1], p[2]);
+      default: return std::nullopt;
+    }
+  }
+
+ private:
+  // The 3-D functions a fractal sum can use as its basis.
+  Real basis3(Real x, Real y, Real z) const {
+    switch (params_.basis) {
+      case NoiseBasis::simplex3: return simplex3(permutation_, x, y, z, kernel_);
+      case NoiseBasis::perlin3_texture: return perlin3_texture(texture_, x, y, z);
+      default: return perlin3(permutation_, x, y, z);
+    }
+  }
+
+  NoiseParams params_;
+  Permutation permutation_;
+  Real kernel_;
+  FractalTerms<Real> terms_;
+  std::vector<std::uint8_t> texture_;
+};
+
+}  // namespace
+
+template <class Real>
+Grid<Real> noise_field(const NoiseParams& params, const std::array<double, 4>& origin) {
+  const auto& sampling = params.sampling;
+  const Evaluator<Real> evaluate(params);
+  const Real step = static_cast<Real>(sampling.step);
+  std::array<Real, 4> start{};
+  for (int axis = 0; axis < 4; ++axis) start[axis] = static_cast<Real>(origin[axis]);
+  Grid<Real> field(sampling.width, sampling.height);
+  for (int j = 0; j < sampling.height; ++j) {
+    for (int i = 0; i < sampling.width; ++i) {
+      std::array<Real, 4> point = start;
+      point[0] = start[0] + static_cast<Real>(i) * step;
+      point[1] = start[1] + static_cast<Real>(j) * step;
+      field.at(i, j) = evaluate(point);
+    }
+  }
+  return field;
+}
+
+double noise_at(const NoiseParams& params, const std::array<double, 4>& point) {
+  return Evaluator<double>(params)(point);
+}
+
+std::optional<std::array<double, 4>> noise_gradient_at(const NoiseParams& params, const std::array<double, 4>& point) {
+  return Evaluator<double>(params).gradient(point);
+}
+
+template Grid<float> noise_field(const NoiseParams&, const std::array<double, 4>&);
+template Grid<double> noise_field(const NoiseParams&, const std::array<double, 4>&);
+
+}  // namespace gt::reference

@@ -1,0 +1,38 @@
+// Improved Perlin noise in 3-D (Perlin 2002, "Improving noise"; the noise3D of seed 002's
+// PerlinNoise.hpp, digest 002 §4.4.3), CPU reference. GLSL twin: gpu/shaders/noise/perlin.glsl.
+//
+// perlin3(perm, x, y, z) -> noise value, 0 at every lattice point, |value| <= 1.5 (each corner term
+// is g·d with two ±1 components, and Σ_c w_c (|d_x| + |d_y| + |d_z|) = Σ_axis e(t_axis) with
+// e(t) = (1 − fade(t))·t + fade(t)·(1 − t) <= 1/2); the largest value found by search is 1.0.
+// perlin3_gradient(perm, x, y, z) -> {value, ∂/∂x, ∂/∂y, ∂/∂z}; the value is bit-identical to perlin3.
+//
+// Coordinates in lattice units (one cell = 1), |x|, |y|, |z| < 2^31 (the cell index is an int);
+// period 256 in every axis. Real = double is the truth; Real = float repeats the shader's
+// arithmetic operation by operation.
+#pragma once
+
+#include <array>
+
+#include "core/noise/permutation.hpp"
+
+namespace gt::reference {
+
+// fade(t) = t³(t(6t − 15) + 10), evaluated as ((t·t)·t)·(t·(t·6 − 15) + 10).
+template <class Real>
+Real perlin_fade(Real t) {
+  return t * t * t * (t * (t * Real(6) - Real(15)) + Real(10));
+}
+
+// The one interpolation form of both twins: lerp(t, a, b) = a + t·(b − a).
+template <class Real>
+Real perlin_lerp(Real t, Real a, Real b) {
+  return a + t * (b - a);
+}
+
+template <class Real>
+Real perlin3(const Permutation& permutation, Real x, Real y, Real z);
+
+template <class Real>
+std::array<Real, 4> perlin3_gradient(const Permutation& permutation, Real x, Real y, Real z);
+
+}  // namespace gt::reference

@@ -1,0 +1,103 @@
+// The noise sampler's twins (reference/noise/noise_field.cpp, gpu/noise/noise_field.cpp) agree,
+// the origin reduction really is a period of every noise, and bad parameters are refused.
+#include <cmath>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "compare/checks/field.hpp"
+#include "core/errors.hpp"
+#include "core/params/noise.hpp"
+#include "gpu/noise/noise_field.hpp"
+#include "reference/noise/noise_field.hpp"
+#include "tests/support/gl_test.hpp"
+
+namespace {
+
+using gt::Fractal;
+using gt::NoiseBasis;
+
+struct Kind {
+  NoiseBasis basis;
+  Fractal fractal;
+  const char* name;
+};
+
+void PrintTo(const Kind& kind, std::ostream* out) { *out << kind.name; }
+
+gt::NoiseParams params_of(const Kind& kind, nlohmann::json given, int width = 45, int height = 37) {
+  const auto specs = kind.fractal == Fractal::none ? gt::noise_param_specs(kind.basis) : gt::fractal_param_specs(kind.fractal);
+  return gt::noise_params_from_json(kind.basis, kind.fractal, gt::resolve_params(kind.name, specs, given), width, height);
+}
+
+const Kind kinds[] = {
+    {NoiseBasis::simplex2, Fractal::none, "simplex2"},
+    {NoiseBasis::simplex3, Fractal::none, "simplex3"},
+    {NoiseBasis::simplex4, Fractal::none, "simplex4"},
+    {NoiseBasis::perlin3, Fractal::none, "perlin3"},
+    {NoiseBasis::perlin3_texture, Fractal::none, "perlin3_texture"},
+    {NoiseBasis::perlin3, Fractal::fbm, "fbm"},
+    {NoiseBasis::perlin3, Fractal::ridged, "ridged"},
+    {NoiseBasis::perlin3, Fractal::hetero_terrain, "hetero_terrain"},
+};
+
+class NoiseFieldGpu : public gt::testing::GlTestWithParam<Kind> {};
+
+// Same float operations in the same order and no division: llvmpipe must give the same bits. A
+// GPU that rounds differently would need the bound of compare/algorithms/noise.cpp instead.
+TEST_P(NoiseFieldGpu, GpuGivesTheFloatReferenceBits) {
+  const auto params = params_of(GetParam(), {{"step", 0.173}, {"origin_x", -13.25}, {"origin_y", 7.5}, {"seed", 99}});
+  gt::gpu::NoiseField gpu(params);
+  gpu.run();
+  const auto on_gpu = gpu.result();
+  const auto reference = gt::reference::noise_field<float>(params, gt::reduced_origin(params));
+  const auto difference = gt::field_difference(reference, on_gpu);
+  EXPECT_EQ(difference.nonfinite, 0u);
+  EXPECT_EQ(difference.differing_bits, 0u) << "max |difference| " << difference.max_abs;
+  EXPECT_GT(gt::field_totals(reference).high - gt::field_totals(reference).low, 0.1) << "a flat field proves nothing";
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, NoiseFieldGpu, ::testing::ValuesIn(kinds),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+class NoiseOriginReduction : public ::testing::TestWithParam<Kind> {};
+
+// The reduced origin is a period of the noise: in double, the field is the same up to the
+// rounding of the shift itself (|origin|·2^-52 in the coordinates, times the gradient ~10).
+TEST_P(NoiseOriginReduction, IsAPeriodOfTheNoise) {
+  nlohmann::json given = {{"step", 0.31}, {"origin_x", 98765.4}, {"origin_y", -4321.1}, {"reduce_origin", true}};
+  const int dimension = gt::noise_dimension(GetParam().basis);
+  if (dimension >= 3) given["origin_z"] = 777.7;
+  if (dimension == 4) given["origin_w"] = 55.5;
+  const auto params = params_of(GetParam(), given, 9, 7);
+  const auto reduced = gt::reduced_origin(params);
+  for (int axis = 0; axis < 3; ++axis) EXPECT_LT(std::abs(reduced[axis]), 600.0);
+  const auto original_field = gt::reference::noise_field<double>(params, params.sampling.origin);
+  const auto reduced_field = gt::reference::noise_field<double>(params, reduced);
+  EXPECT_LT(gt::field_difference(original_field, reduced_field).max_abs, 1e5 * 0x1p-52 * 100.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, NoiseOriginReduction, ::testing::ValuesIn(kinds),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+std::string refusal(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const gt::InputError& error) {
+    return error.what();
+  }
+  return "(accepted)";
+}
+
+TEST(NoiseParams, BadFractalParametersAreRefused) {
+  const Kind fbm{NoiseBasis::perlin3, Fractal::fbm, "noise.fbm"};
+  using ::testing::HasSubstr;
+  EXPECT_THAT(refusal([&] { params_of(fbm, {{"octaves", 0}}); }), HasSubstr("[1, 32]"));
+  EXPECT_THAT(refusal([&] { params_of(fbm, {{"octaves", 1000}}); }), HasSubstr("out of range"));
+  EXPECT_THAT(refusal([&] { params_of(fbm, {{"lacunarity", 0}}); }), HasSubstr("lacunarity"));
+  EXPECT_THAT(refusal([&] { params_of(fbm, {{"lacunarity", 2.5}, {"reduce_origin", true}}); }),
+              HasSubstr("integer lacunarity"));
+  EXPECT_THAT(refusal([&] { params_of(fbm, {{"step", -1}}); }), HasSubstr("step"));
+}
+
+}  // namespace
