@@ -19,12 +19,13 @@
 namespace gt {
 namespace {
 
-// A case ready to run: its algorithm found, parameters resolved, input loaded and checked.
+// A case ready to run: its algorithm found, parameters resolved, input loaded and checked, and
+// the twins set up (which is where parameters that only make sense together are refused).
 struct Job {
   CaseSpec spec;
-  const Algorithm* algorithm = nullptr;
   nlohmann::json resolved;
   LoadedInput input;
+  PreparedTwin prepared;
 };
 
 const std::string ad_hoc_origin = "command line";
@@ -34,7 +35,13 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   CaseSpec spec;
   spec.algorithm = ad_hoc.algorithm;
   spec.origin = ad_hoc_origin;
-  spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
+  if (!ad_hoc.input.empty()) {
+    spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
+  } else if (!algorithm.iterates) {
+    spec.input = {{"generator", "flat"}, {"width", ad_hoc.width}, {"height", ad_hoc.height}, {"cell_size", ad_hoc.cell_size}};
+  } else {
+    throw InputError(fmt::format("{} changes a heightmap: give it one with --input", ad_hoc.algorithm));
+  }
   for (const auto& assignment : ad_hoc.assignments) {
     const auto equals = assignment.find('=');
     if (equals == std::string::npos || equals == 0) {
@@ -43,7 +50,9 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
     const auto name = assignment.substr(0, equals);
     spec.params[name] = parse_param_text(spec.algorithm, *algorithm.params, name, assignment.substr(equals + 1));
   }
-  spec.name = fmt::format("adhoc.{}.{}", ad_hoc.algorithm, std::filesystem::path(ad_hoc.input).stem().string());
+  const std::string input_name =
+      ad_hoc.input.empty() ? fmt::format("{}x{}", ad_hoc.width, ad_hoc.height) : std::filesystem::path(ad_hoc.input).stem().string();
+  spec.name = fmt::format("adhoc.{}.{}", ad_hoc.algorithm, input_name);
   return spec;
 }
 
@@ -60,10 +69,11 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
   for (const auto& spec : specs) {
     Job job;
     job.spec = spec;
-    job.algorithm = &find_algorithm(spec.algorithm);
-    job.resolved = resolve_params(spec.name, *job.algorithm->params, spec.params);
+    const Algorithm& algorithm = find_algorithm(spec.algorithm);
+    job.resolved = resolve_params(spec.name, *algorithm.params, spec.params);
     try {
       job.input = load_input(spec.input, spec.crop, dataset_dir);
+      job.prepared = algorithm.prepare(job.resolved, job.input.heights);
     } catch (const InputError& error) {
       throw InputError(fmt::format("case {}: {}", spec.name, error.what()));
     }
@@ -119,7 +129,7 @@ CaseResult run_job(const Job& job, const RunOptions& options, const std::map<std
   result.height = job.input.heights.height;
   result.params = job.resolved;
   try {
-    const PreparedTwin prepared = job.algorithm->prepare(job.resolved, job.input.heights);
+    const PreparedTwin& prepared = job.prepared;
     run_field_twin(prepared.twin, prepared.input, job.spec.expect, options, result);
     if (prepared.extra_checks) prepared.extra_checks(job.spec.expect, options, result);
   } catch (const std::exception& error) {

@@ -17,7 +17,10 @@ enum class Backends { cpu, gpu, both };
 
 struct AdHocCase {
   std::string algorithm;
-  std::string input;                     // a heightmap file
+  std::string input;                     // a heightmap file; empty for a generator (noise) on a
+  int width = 256;                       //   width x height grid of cell_size
+  int height = 256;
+  double cell_size = 1.0;
   std::vector<std::string> assignments;  // "name=value"
 };
 

@@ -554,6 +554,28 @@ TEST(CliRun, ZeroIterationsIsTheIdentity) {
   EXPECT_EQ(report.at("cases")[0].at("status"), "pass") << report.at("cases")[0].dump(2);
 }
 
+// An ad-hoc noise run needs no input: it samples a grid and writes float images other tools open.
+TEST(CliRun, AdHocNoiseWritesFloatImages) {
+  const TempDir work;
+  const fs::path out = work / "report";
+  const RunResult run = run_groundtruth({"run", "--algorithm", "noise.simplex3", "--size", "96x64", "--set", "step=0.07",
+                                         "--set", "kernel=0.5", "--out", out.string()},
+                                        work.path());
+  ASSERT_EQ(run.status, 0) << run;
+  const json report = read_json(out / "report.json");
+  ASSERT_EQ(report.at("cases").size(), 1u);
+  const json& only = report.at("cases")[0];
+  EXPECT_EQ(only.at("name"), "adhoc.noise.simplex3.96x64");
+  EXPECT_EQ(only.at("status"), "pass") << only.dump(2);
+  for (const char* file : {"cpu.exr", "gpu.exr"}) {
+    auto image = OIIO::ImageInput::open((out / "adhoc.noise.simplex3.96x64" / file).string());
+    ASSERT_TRUE(image) << file;
+    EXPECT_EQ(image->spec().width, 96);
+    EXPECT_EQ(image->spec().height, 64);
+    EXPECT_EQ(image->spec().format, OIIO::TypeDesc::FLOAT);
+  }
+}
+
 // ---- 3. bad input: exit 2, a message naming the problem, nothing written -----------------------
 
 class CliRefuses : public ::testing::Test {
@@ -711,7 +733,28 @@ TEST_F(CliRefuses, PatternMatchingNoCase) { expect_refused({"run", "nothing.*"},
 TEST_F(CliRefuses, NothingToRun) { expect_refused({"run"}, {"nothing to run"}); }
 
 TEST_F(CliRefuses, AlgorithmWithoutInput) {
-  expect_refused({"run", "--algorithm", "erosion.thermal"}, {"--algorithm", "--input"});
+  expect_refused({"run", "--algorithm", "erosion.thermal"}, {"erosion.thermal", "--input"});
+}
+
+TEST_F(CliRefuses, FractalOctavesOutOfRange) {
+  expect_refused({"run", "--algorithm", "noise.fbm", "--set", "octaves=0"}, {"octaves", "[1, 32]"});
+}
+
+TEST_F(CliRefuses, NonPositiveLacunarity) {
+  expect_refused({"run", "--algorithm", "noise.fbm", "--set", "lacunarity=-2"}, {"lacunarity", "out of range"});
+}
+
+TEST_F(CliRefuses, OriginReductionWithNonIntegerLacunarity) {
+  expect_refused({"run", "--algorithm", "noise.fbm", "--set", "lacunarity=2.5", "--set", "reduce_origin=true"},
+                 {"reduce_origin", "integer lacunarity"});
+}
+
+TEST_F(CliRefuses, MalformedNoiseGridSize) {
+  expect_refused({"run", "--algorithm", "noise.simplex3", "--size", "100000x0"}, {"--size", "WxH"});
+}
+
+TEST_F(CliRefuses, NoiseGridLargerThanMemory) {
+  expect_refused({"run", "--algorithm", "noise.simplex3", "--size", "60000x60000"}, {"60000x60000", "GiB"});
 }
 
 TEST_F(CliRefuses, InputWithoutAlgorithm) { expect_refused({"run", "--input", volcano}, {"--algorithm", "--input"}); }

@@ -55,6 +55,18 @@ gt::DriverOptions driver_options(const Shared& shared) {
   return options;
 }
 
+// "WxH" -> width and height, each in [1, 65536].
+void parse_grid_size(const std::string& text, gt::AdHocCase& ad_hoc) {
+  int width = 0, height = 0;
+  char separator = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &separator, &height, &rest) != 3 || separator != 'x' ||
+      width < 1 || height < 1 || width > 65536 || height > 65536) {
+    throw gt::InputError(fmt::format("--size '{}': expected WxH with sides in [1, 65536], e.g. 512x256", text));
+  }
+  ad_hoc.width = width;
+  ad_hoc.height = height;
+}
+
 nlohmann::json list_json() {
   nlohmann::json out = {{"algorithms", nlohmann::json::array()}, {"cases", nlohmann::json::array()}};
   for (const auto& algorithm : gt::algorithms()) {
@@ -109,6 +121,11 @@ int main(int argc, char** argv) {
   run->add_option("--algorithm", ad_hoc.algorithm, "ad-hoc case: the algorithm");
   run->add_option("--input", ad_hoc.input, "ad-hoc case: a heightmap file (PNG, TIFF/GeoTIFF, EXR, volcano JSON, npz)");
   run->add_option("--set", ad_hoc.assignments, "ad-hoc case: a parameter, name=value (repeatable)");
+  std::string grid_size;
+  run->add_option("--size", grid_size, "ad-hoc case of a generator (noise) without --input: the grid, WxH (256x256)");
+  run->add_option("--cell-size", ad_hoc.cell_size, "ad-hoc case of a generator: cell size in metres")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   run->add_option("--backend", run_shared.backend, "cpu (references only), gpu, or both")
       ->check(CLI::IsMember({"cpu", "gpu", "both"}))
       ->capture_default_str();
@@ -148,8 +165,10 @@ int main(int argc, char** argv) {
     if (run->parsed()) {
       auto options = driver_options(run_shared);
       options.patterns = patterns;
-      const bool partial_ad_hoc = ad_hoc.algorithm.empty() != ad_hoc.input.empty();
-      if (partial_ad_hoc) throw gt::InputError("an ad-hoc run needs both --algorithm and --input");
+      if (ad_hoc.algorithm.empty() && !ad_hoc.input.empty()) {
+        throw gt::InputError("--input belongs to an ad-hoc run: name its --algorithm too");
+      }
+      if (!grid_size.empty()) parse_grid_size(grid_size, ad_hoc);
       if (!ad_hoc.assignments.empty() && ad_hoc.algorithm.empty()) {
         throw gt::InputError("--set applies to an ad-hoc run: give --algorithm and --input too");
       }

@@ -186,7 +186,7 @@ void append_performance(std::string& out, const Report& report) {
     out += "<p class=\"note\">No benchmarks in this run.</p>\n";
   } else {
     out += "<table>\n<tr><th>device</th><th>algorithm</th><th>backend</th><th>size</th><th>iterations</th>"
-           "<th>reps</th><th>median ms</th><th>Mcell-it/s</th></tr>\n";
+           "<th>reps</th><th>median ms</th><th>Mcell-it/s (noise: M samples/s)</th></tr>\n";
     for (const BenchmarkRow& row : report.benchmarks) {
       out += fmt::format(
           "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}×{}</td><td class=\"num\">{}</td>"

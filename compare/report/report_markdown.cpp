@@ -91,7 +91,7 @@ void append_benchmarks(std::string& out, const Report& report) {
   if (report.benchmarks.empty()) {
     out += "No benchmarks in this run.\n\n";
   } else {
-    out += "| algorithm | backend | device | size | iterations | reps | median ms | Mcell-it/s |\n"
+    out += "| algorithm | backend | device | size | iterations | reps | median ms | Mcell-it/s (noise: M samples/s) |\n"
            "|---|---|---|---:|---:|---:|---:|---:|\n";
     for (const BenchmarkRow& row : report.benchmarks) {
       out += fmt::format("| {} | {} | {} | {}×{} | {} | {} | {} | {} |\n", cell(row.algorithm), cell(row.backend),

@@ -91,6 +91,7 @@ ParamSpecs fractal_param_specs(Fractal fractal) {
   ParamSpecs specs = sampling_specs(3);
   const bool hetero = fractal == Fractal::hetero_terrain;
   specs.push_back({"basis", ParamKind::choice, "perlin3", 0, 0, {"perlin3", "simplex3"}, "", "the noise summed"});
+  specs.push_back(real_spec("kernel", 0.6, 0.5, 0.6, "noise unit²", "kernel radius² of a simplex3 basis"));
   specs.push_back(real_spec("octaves", hetero ? 3.0 : 6.0, 1.0, max_fractal_octaves, "count",
                             fractal == Fractal::ridged ? "octaves summed (whole part)"
                                                        : "octaves summed; a fraction adds part of one more"));
