@@ -5,6 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "tests/support/refusal.hpp"
+
 #include "compare/checks/field.hpp"
 #include "core/errors.hpp"
 #include "core/params/noise.hpp"
@@ -13,6 +15,8 @@
 #include "tests/support/gl_test.hpp"
 
 namespace {
+
+using gt::testing::refusal;
 
 using gt::Fractal;
 using gt::NoiseBasis;
@@ -79,15 +83,6 @@ TEST_P(NoiseOriginReduction, IsAPeriodOfTheNoise) {
 
 INSTANTIATE_TEST_SUITE_P(Kinds, NoiseOriginReduction, ::testing::ValuesIn(kinds),
                          [](const auto& info) { return std::string(info.param.name); });
-
-std::string refusal(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const gt::InputError& error) {
-    return error.what();
-  }
-  return "(accepted)";
-}
 
 TEST(NoiseParams, BadFractalParametersAreRefused) {
   const Kind fbm{NoiseBasis::perlin3, Fractal::fbm, "noise.fbm"};

@@ -4,22 +4,17 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "tests/support/refusal.hpp"
+
 #include "compare/cases.hpp"
 #include "core/errors.hpp"
 #include "core/params/thermal.hpp"
 
 namespace {
 
-using ::testing::HasSubstr;
+using gt::testing::refusal;
 
-std::string refusal(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const gt::InputError& error) {
-    return error.what();
-  }
-  return "(accepted)";
-}
+using ::testing::HasSubstr;
 
 TEST(Params, DefaultsFillEveryDeclaredParameter) {
   const auto resolved = gt::resolve_params("erosion.thermal", gt::thermal_param_specs(), {{"iterations", 7}});
