@@ -15,6 +15,7 @@
 //   `warn` with the coordinate, as the far-from-origin walk expects. The logic bound (GPU vs
 //   float, same operations, no divisions) is the arithmetic part alone and fails beyond it.
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include <fmt/format.h>
@@ -111,7 +112,7 @@ FieldTwin::GeneratedField noise_bounds(const NoiseParams& params) {
                              std::sqrt(static_cast<double>(noise_dimension(params.basis)));
   const double precision = arithmetic + coordinates + switched_contribution(params) * weights;
   return {{arithmetic, arithmetic, "same float operations in the same order, no division: 8u per term"},
-          {precision, 1e300,
+          {precision, std::numeric_limits<double>::infinity(),
            fmt::format("float coordinates up to |x| = {:.4g} (2u·|x|·lipschitz), arithmetic, and {:.3g} for "
                        "simplex corners the kernel switches at boundaries; beyond: warn",
                        float_grid_extent(params), switched_contribution(params) * weights)}};
@@ -301,7 +302,7 @@ Check walk_acceptance_check(const std::string& name, const std::vector<WalkPoint
       first_exceeded = fmt::format("; first over it at |x| = {:.3g} (error {:.3g})", point.magnitude, error);
     }
   }
-  return bounded_check(name, worst, walk_acceptance, 1e300,
+  return bounded_check(name, worst, walk_acceptance, std::numeric_limits<double>::infinity(),
                        fmt::format("largest error vs double along the walk against {:g}{}", walk_acceptance,
                                    first_exceeded));
 }

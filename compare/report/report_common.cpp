@@ -90,7 +90,8 @@ std::string format_bounds(const Check& check) {
   if (check.threshold) text = fmt::format("≤ {}", format_value(*check.threshold));
   if (check.loose_threshold) {
     if (!text.empty()) text += ' ';
-    text += fmt::format("(warn ≤ {})", format_value(*check.loose_threshold));
+    text += std::isinf(*check.loose_threshold) ? std::string("(warn beyond)")
+                                                : fmt::format("(warn ≤ {})", format_value(*check.loose_threshold));
   }
   return text;
 }

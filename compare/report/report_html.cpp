@@ -128,16 +128,24 @@ void append_figure(std::string& out, const Artifact& artifact, std::string_view 
 
 void append_artifacts(std::string& out, const CaseResult& result) {
   std::string figures;
+  std::string plots;
   std::string links;
   for (const Artifact& artifact : result.artifacts) {
     if (artifact.kind == "image") {
       append_figure(figures, artifact, "image");
+    } else if (artifact.kind == "plot") {
+      if (artifact.path.empty()) {
+        plots += fmt::format("<p class=\"note\">{}</p>\n", h(artifact.caption));
+      } else {
+        append_figure(plots, artifact, "plot");
+      }
     } else {
       links += fmt::format("<li><a href=\"{}\">{}</a> {}</li>\n", url(artifact.path), h(artifact.path),
                            h(artifact.caption));
     }
   }
   if (!figures.empty()) out += fmt::format("<div class=\"figures\">\n{}</div>\n", figures);
+  if (!plots.empty()) out += fmt::format("<div class=\"figures\">\n{}</div>\n", plots);
   if (!links.empty()) out += fmt::format("<ul class=\"files\">\n{}</ul>\n", links);
 }
 
