@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/benchmark.hpp"
 #include "compare/field_twin.hpp"
 #include "compare/result.hpp"
 #include "core/grid.hpp"
@@ -19,6 +20,8 @@ namespace gt {
 struct PreparedTwin {
   FieldTwin twin;
   Heightmap input;  // what the twins run on (seed 000's normalised heights, for example)
+  // Algorithms that are not field twins (meshes) run the whole case themselves: set instead of twin.
+  std::function<void(const nlohmann::json& expect, const RunOptions& options, CaseResult& result)> run;
   // Checks that belong to the algorithm rather than to field twins (spec vectors of its formulas,
   // sweeps); they may add artifacts under options.report_dir / result.name.
   std::function<void(const nlohmann::json& expect, const RunOptions& options, CaseResult& result)> extra_checks;
@@ -34,7 +37,13 @@ struct Algorithm {
   // Whether the algorithm has an `iterations` parameter: the performance table then runs
   // BenchmarkOptions::iterations of them and counts cell-iterations; otherwise one sample per cell.
   bool iterates = true;
-
+  // Whether prepare() gives a field twin (PreparedTwin::twin) rather than its own `run`.
+  bool has_field_twin = true;
+  // The algorithm's own rows of the performance table (cave meshing: voxels and triangles per
+  // second); unset: the generic field-twin timing of compare/benchmark.cpp, or none for `run` cases.
+  std::function<std::vector<BenchmarkRow>(const BenchmarkOptions& options, bool gpu_available,
+                                          const Environment& environment)>
+      benchmark = {};
 };
 
 const std::vector<Algorithm>& algorithms();

@@ -27,39 +27,50 @@ Heightmap benchmark_input(int size) {
   return load_input(input, nullptr, {}).heights;
 }
 
+// Field twins: the double reference and the GPU on generated square grids.
+void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& options, bool gpu_available,
+                          const Environment& environment, Progress& progress, std::vector<BenchmarkRow>& rows) {
+  const int iterations = algorithm.iterates ? options.iterations : 1;
+  const nlohmann::json given = algorithm.iterates ? nlohmann::json{{"iterations", iterations}} : nlohmann::json::object();
+  const auto params = resolve_params(algorithm.name, *algorithm.params, given);
+  for (int size : options.sizes) {
+    progress.start_case(static_cast<int>(rows.size()) + 1, fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
+    const PreparedTwin prepared = algorithm.prepare(params, benchmark_input(size));
+    std::vector<double> cpu_times;
+    progress.stage("cpu");
+    prepared.twin.reference_double(prepared.input);
+    for (int rep = 0; rep < options.reps; ++rep) {
+      cpu_times.push_back(cpu_wall_ms([&] { prepared.twin.reference_double(prepared.input); }));
+    }
+    rows.push_back(row(algorithm.name, "cpu", size, iterations, options.reps, cpu_times, environment.cpu));
+    if (!gpu_available) continue;
+    progress.stage("gpu");
+    const auto input = prepared.input.cast<float>();
+    GpuFieldRunner runner = prepared.twin.make_gpu();
+    runner.load(input);
+    runner.run();
+    std::vector<double> gpu_times;
+    for (int rep = 0; rep < options.reps; ++rep) {
+      runner.load(input);
+      gpu_times.push_back(gpu_wall_ms(runner.run));
+    }
+    rows.push_back(row(algorithm.name, "gpu", size, iterations, options.reps, gpu_times, environment.gl_renderer));
+  }
+}
+
 }  // namespace
 
 std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool gpu_available,
                                          const Environment& environment) {
   std::vector<BenchmarkRow> rows;
-  int index = 0;
-  Progress progress(static_cast<int>(algorithms().size() * options.sizes.size()));
+  Progress progress(static_cast<int>(2 * algorithms().size() * options.sizes.size()));
   for (const auto& algorithm : algorithms()) {
-    const int iterations = algorithm.iterates ? options.iterations : 1;
-    const nlohmann::json given = algorithm.iterates ? nlohmann::json{{"iterations", iterations}} : nlohmann::json::object();
-    const auto params = resolve_params(algorithm.name, *algorithm.params, given);
-    for (int size : options.sizes) {
-      progress.start_case(++index, fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
-      const PreparedTwin prepared = algorithm.prepare(params, benchmark_input(size));
-      std::vector<double> cpu_times;
-      progress.stage("cpu");
-      prepared.twin.reference_double(prepared.input);
-      for (int rep = 0; rep < options.reps; ++rep) {
-        cpu_times.push_back(cpu_wall_ms([&] { prepared.twin.reference_double(prepared.input); }));
-      }
-      rows.push_back(row(algorithm.name, "cpu", size, iterations, options.reps, cpu_times, environment.cpu));
-      if (!gpu_available) continue;
-      progress.stage("gpu");
-      const auto input = prepared.input.cast<float>();
-      GpuFieldRunner runner = prepared.twin.make_gpu();
-      runner.load(input);
-      runner.run();
-      std::vector<double> gpu_times;
-      for (int rep = 0; rep < options.reps; ++rep) {
-        runner.load(input);
-        gpu_times.push_back(gpu_wall_ms(runner.run));
-      }
-      rows.push_back(row(algorithm.name, "gpu", size, iterations, options.reps, gpu_times, environment.gl_renderer));
+    if (algorithm.benchmark) {
+      progress.start_case(static_cast<int>(rows.size()) + 1, "benchmark " + algorithm.name);
+      const auto own_rows = algorithm.benchmark(options, gpu_available, environment);
+      rows.insert(rows.end(), own_rows.begin(), own_rows.end());
+    } else if (algorithm.has_field_twin) {
+      benchmark_field_twin(algorithm, options, gpu_available, environment, progress, rows);
     }
   }
   progress.finish();

@@ -7,10 +7,15 @@
 #include <string>
 #include <vector>
 
-#include "compare/driver.hpp"
 #include "compare/result.hpp"
 
 namespace gt {
+
+struct BenchmarkOptions {
+  std::vector<int> sizes = {256, 512, 1024, 2048};
+  int iterations = 10;
+  int reps = 3;
+};
 
 std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool gpu_available,
                                          const Environment& environment);

@@ -34,14 +34,16 @@ CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) 
     if (!known_case_keys.contains(key)) throw InputError(fmt::format("{}: unknown case field '{}'", origin, key));
   }
   if (!entry.contains("name") || !entry["name"].is_string() || !entry.contains("algorithm") ||
-      !entry["algorithm"].is_string() || !entry.contains("input") || !entry["input"].is_object()) {
-    throw InputError(fmt::format("{}: a case needs string 'name', string 'algorithm' and object 'input'", origin));
+      !entry["algorithm"].is_string() || (entry.contains("input") && !entry["input"].is_object())) {
+    throw InputError(fmt::format("{}: a case needs string 'name', string 'algorithm' and, when it has one, "
+                                 "an object 'input'",
+                                 origin));
   }
   CaseSpec spec;
   spec.name = entry["name"].get<std::string>();
   spec.algorithm = entry["algorithm"].get<std::string>();
   spec.params = entry.value("params", nlohmann::json::object());
-  spec.input = entry["input"];
+  spec.input = entry.value("input", nlohmann::json::object());
   spec.crop = entry.value("crop", nlohmann::json());
   spec.expect = entry.value("expect", nlohmann::json());
   spec.origin = origin;

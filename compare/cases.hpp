@@ -8,6 +8,8 @@
 //    "params": {"iterations": 100, ...},                   checked against the algorithm's specs
 //    "input": {"file": "real/volcano.json"}                path relative to datasets/, or absolute
 //          | {"generator": "cone", "width": 128, ...}      see compare/inputs.hpp
+//          | {"mesh": "real/meshes/bunny00.off"}           a triangle mesh
+//                                                          (absent: the algorithm makes its own, e.g. the cave)
 //    "crop": [x, y, width, height],                        optional, applied to the input
 //    "expect": {"cells": [[x, y, value], ...],             optional spec vectors (spec.* checks)
 //               "total": 1.0, "tolerance": 1e-12}}

@@ -130,7 +130,11 @@ CaseResult run_job(const Job& job, const RunOptions& options, const std::map<std
   result.params = job.resolved;
   try {
     const PreparedTwin& prepared = job.prepared;
-    run_field_twin(prepared.twin, prepared.input, job.spec.expect, options, result);
+    if (prepared.run) {
+      prepared.run(job.spec.expect, options, result);
+    } else {
+      run_field_twin(prepared.twin, prepared.input, job.spec.expect, options, result);
+    }
     if (prepared.extra_checks) prepared.extra_checks(job.spec.expect, options, result);
   } catch (const std::exception& error) {
     result.error = error.what();

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/benchmark.hpp"
 #include "compare/result.hpp"
 #include "gpu/context/context.hpp"
 
@@ -22,12 +23,6 @@ struct AdHocCase {
   int height = 256;
   double cell_size = 1.0;
   std::vector<std::string> assignments;  // "name=value"
-};
-
-struct BenchmarkOptions {
-  std::vector<int> sizes = {256, 512, 1024, 2048};
-  int iterations = 10;
-  int reps = 3;
 };
 
 struct DriverOptions {

@@ -151,12 +151,16 @@ Heightmap cropped(const Heightmap& heights, const nlohmann::json& crop) {
 
 LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, const std::filesystem::path& dataset_dir) {
   LoadedInput loaded;
+  if (input.is_null() || input.empty()) {
+    loaded.description = "none: the algorithm makes its own field";
+    return loaded;
+  }
   if (input.contains("file") && input["file"].is_string()) {
     loaded = file_input(input, dataset_dir);
   } else if (input.contains("generator") && input["generator"].is_string()) {
     loaded = generated_input(input);
   } else {
-    throw InputError(fmt::format("input {} needs a string 'file' or 'generator'", input.dump()));
+    throw InputError(fmt::format("input {} needs a string 'file', 'mesh' or 'generator'", input.dump()));
   }
   if (!crop.is_null()) {
     loaded.heights = cropped(loaded.heights, crop);

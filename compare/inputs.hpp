@@ -12,6 +12,7 @@
 //   example_3x3   seed 000's 3×3 test field: centre 1, other cells 0, cell size 1.
 //   cone, step and flat take "noise" (m, default 0) and "seed" (default 1): uniform noise in
 //   [0, noise) added to every cell from random_u32(seed, cell, 0, 0).
+// {} (no input)                    an empty LoadedInput: the algorithm makes its own field (cave).
 // "crop": [x, y, width, height] cuts a window out of the input (InputError if it does not fit).
 #pragma once
 

@@ -344,6 +344,7 @@ void add_walk(const NoiseParams& params, const nlohmann::json& expect, const Run
 }
 
 PreparedTwin prepare_noise(NoiseBasis basis, Fractal fractal, const nlohmann::json& resolved, const Heightmap& input) {
+  if (input.size() == 0) throw InputError("a noise case samples the grid of its input: give {\"generator\": \"flat\", ...}");
   check_grid_fits(input.width, input.height, 32, "noise grid");
   const NoiseParams params = noise_params_from_json(basis, fractal, resolved, input.width, input.height);
   PreparedTwin prepared;
@@ -412,12 +413,14 @@ const ParamSpecs& specs_of(const NoiseAlgorithm& entry) {
 std::vector<Algorithm> noise_algorithms() {
   std::vector<Algorithm> list;
   for (const auto& entry : noise_table) {
-    Algorithm algorithm{entry.name, entry.summary, entry.source, &specs_of(entry),
-                        [entry](const nlohmann::json& resolved, const Heightmap& input) {
-                          return prepare_noise(entry.basis, entry.fractal, resolved, input);
-                        },
-                        false};
-    list.push_back(std::move(algorithm));
+    list.push_back({.name = entry.name,
+                    .summary = entry.summary,
+                    .source = entry.source,
+                    .params = &specs_of(entry),
+                    .prepare = [entry](const nlohmann::json& resolved, const Heightmap& input) {
+                      return prepare_noise(entry.basis, entry.fractal, resolved, input);
+                    },
+                    .iterates = false});
   }
   return list;
 }

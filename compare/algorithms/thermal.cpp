@@ -2,8 +2,11 @@
 // versions (ref<double>, ref<float>, GPU) and the error model's count of rounded additions.
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "compare/algorithm.hpp"
 #include "compare/checks/threshold.hpp"
+#include "core/errors.hpp"
 #include "core/params/thermal.hpp"
 #include "gpu/erosion/thermal.hpp"
 #include "gpu/erosion/thermal_jako.hpp"
@@ -31,7 +34,12 @@ void add_talus_spec(const nlohmann::json& expect, const RunOptions&, CaseResult&
                                         std::nullopt, "T_α = tan(α)/(width·d_z); tolerance: a few ulp of tan in double"));
 }
 
+void require_heightmap(const Heightmap& input, const char* algorithm) {
+  if (input.size() == 0) throw InputError(fmt::format("{} erodes a heightmap: the case needs an input", algorithm));
+}
+
 PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& input) {
+  require_heightmap(input, "erosion.thermal");
   const ThermalParams params = thermal_params_from_json(resolved);
   PreparedTwin prepared;
   prepared.input = params.normalised ? normalise_heights(input) : input;
@@ -53,6 +61,7 @@ PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& in
 }
 
 PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightmap& input) {
+  require_heightmap(input, "erosion.thermal_jako");
   const ThermalJakoParams params = thermal_jako_params_from_json(resolved);
   const ThermalConstants constants = thermal_jako_constants(params, input);
   PreparedTwin prepared;
@@ -76,14 +85,19 @@ PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightma
 }  // namespace
 
 Algorithm thermal_algorithm() {
-  return {"erosion.thermal", "two-pass thermal erosion with requests and transfers (Hydra)",
-          "seed 000 §4.4.3, Algorithms 9-11, eq. 4.10 (digest 000 §4.6)", &thermal_param_specs(), prepare_thermal};
+  return {.name = "erosion.thermal",
+          .summary = "two-pass thermal erosion with requests and transfers (Hydra)",
+          .source = "seed 000 §4.4.3, Algorithms 9-11, eq. 4.10 (digest 000 §4.6)",
+          .params = &thermal_param_specs(),
+          .prepare = prepare_thermal};
 }
 
 Algorithm thermal_jako_algorithm() {
-  return {"erosion.thermal_jako", "8-neighbour thermal erosion with proportional outflow (Jákó & Tóth 2011)",
-          "seed 000 §2.6, eqs. 2.30-2.34 (digest 000 §3.6)", &thermal_jako_param_specs(),
-          prepare_thermal_jako};
+  return {.name = "erosion.thermal_jako",
+          .summary = "8-neighbour thermal erosion with proportional outflow (Jákó & Tóth 2011)",
+          .source = "seed 000 §2.6, eqs. 2.30-2.34 (digest 000 §3.6)",
+          .params = &thermal_jako_param_specs(),
+          .prepare = prepare_thermal_jako};
 }
 
 }  // namespace gt
