@@ -10,6 +10,7 @@
 
 #include "compare/benchmark.hpp"
 #include "compare/field_twin.hpp"
+#include "compare/inputs.hpp"
 #include "compare/result.hpp"
 #include "core/grid.hpp"
 #include "core/params.hpp"
@@ -33,7 +34,7 @@ struct Algorithm {
   std::string source;   // seed / paper and equations
   const ParamSpecs* params = nullptr;
   // `resolved` holds every parameter (defaults filled in, ranges checked).
-  std::function<PreparedTwin(const nlohmann::json& resolved, const Heightmap& input)> prepare;
+  std::function<PreparedTwin(const nlohmann::json& resolved, const LoadedInput& input)> prepare;
   // Whether the algorithm has an `iterations` parameter: the performance table then runs
   // BenchmarkOptions::iterations of them and counts cell-iterations; otherwise one sample per cell.
   bool iterates = true;
@@ -55,5 +56,7 @@ const Algorithm& find_algorithm(const std::string& name);
 Algorithm thermal_algorithm();
 Algorithm thermal_jako_algorithm();
 std::vector<Algorithm> noise_algorithms();
+std::vector<Algorithm> cave_algorithms();
+Algorithm mesh_check_algorithm();
 
 }  // namespace gt

@@ -35,7 +35,9 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
   const auto params = resolve_params(algorithm.name, *algorithm.params, given);
   for (int size : options.sizes) {
     progress.start_case(static_cast<int>(rows.size()) + 1, fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
-    const PreparedTwin prepared = algorithm.prepare(params, benchmark_input(size));
+    LoadedInput input_grid;
+    input_grid.heights = benchmark_input(size);
+    const PreparedTwin prepared = algorithm.prepare(params, input_grid);
     std::vector<double> cpu_times;
     progress.stage("cpu");
     prepared.twin.reference_double(prepared.input);

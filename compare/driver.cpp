@@ -73,7 +73,7 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
     job.resolved = resolve_params(spec.name, *algorithm.params, spec.params);
     try {
       job.input = load_input(spec.input, spec.crop, dataset_dir);
-      job.prepared = algorithm.prepare(job.resolved, job.input.heights);
+      job.prepared = algorithm.prepare(job.resolved, job.input);
     } catch (const InputError& error) {
       throw InputError(fmt::format("case {}: {}", spec.name, error.what()));
     }

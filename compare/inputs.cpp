@@ -9,6 +9,7 @@
 #include "compare/algorithm.hpp"
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
+#include "core/io/mesh_io.hpp"
 #include "core/rng.hpp"
 
 namespace gt {
@@ -74,7 +75,9 @@ Heightmap noise_terrain(const nlohmann::json& input) {
     throw InputError(fmt::format("input generator terrain: {} is not a noise algorithm", algorithm.name));
   }
   const auto resolved = resolve_params(algorithm.name, *algorithm.params, input.value("params", nlohmann::json::object()));
-  const PreparedTwin prepared = algorithm.prepare(resolved, grid);
+  LoadedInput sampling_grid;
+  sampling_grid.heights = grid;
+  const PreparedTwin prepared = algorithm.prepare(resolved, sampling_grid);
   return prepared.twin.reference_double(prepared.input);
 }
 
@@ -153,6 +156,16 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
   LoadedInput loaded;
   if (input.is_null() || input.empty()) {
     loaded.description = "none: the algorithm makes its own field";
+    return loaded;
+  }
+  if (input.contains("mesh") && input["mesh"].is_string()) {
+    std::filesystem::path path = input["mesh"].get<std::string>();
+    if (path.is_relative()) path = dataset_dir / path;
+    auto file = read_mesh(path);
+    loaded.description = fmt::format("{} ({} vertices, {} triangles)", path.filename().string(),
+                                     file.mesh.positions.size(), file.mesh.triangles.size());
+    loaded.notes = std::move(file.notes);
+    loaded.mesh = std::move(file.mesh);
     return loaded;
   }
   if (input.contains("file") && input["file"].is_string()) {

@@ -17,12 +17,14 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "core/grid.hpp"
+#include "core/mesh.hpp"
 
 namespace gt {
 
@@ -30,6 +32,7 @@ struct LoadedInput {
   Heightmap heights;
   std::string description;          // e.g. "volcano.json, 87x61 cells of 10 m"
   std::vector<std::string> notes;   // what the reader decided
+  std::optional<Mesh> mesh;         // for {"mesh": path}
 };
 
 LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop,

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# Fetches the four real DEMs of the project's data-sources list into datasets/real/ (git-ignored):
-# volcano.json from the npm package vega-datasets, jacksboro_fault_dem.npz and topobathy.npz from
-# the Debian package python-matplotlib-data, elev.tif from the Debian package r-cran-terra.
+# Fetches the real data of the project's data-sources list into datasets/real/ (git-ignored):
+# the four DEMs (volcano.json from the npm package vega-datasets, jacksboro_fault_dem.npz and
+# topobathy.npz from the Debian package python-matplotlib-data, elev.tif from the Debian package
+# r-cran-terra) and, into datasets/real/meshes/, four ASCII OFF meshes of CGAL's demo data
+# (bunny00, elephant, cow, elephant-with-holes from libcgal-demo's data.tar.gz).
 #
 # Conventions
 #   - Every file is pinned by SHA-256; a mismatch stops the script with an error.
 #   - Beside each file: LICENSE.<stem>.txt (the package's copyright notice or licence text) and
-#     <stem>.source.json (origin, SHA-256, units, grid, licence).
+#     <stem>.source.json (origin, SHA-256, units, grid or mesh size, licence). A stem may name a
+#     subfolder of datasets/real (meshes/bunny00); the companions then lie in that subfolder.
 #   - Idempotent: a file already present with the right hash and both companions is kept, so a
 #     second run downloads nothing.
 #   - Packages are fetched with the ordinary clients (npm pack, apt-get download) and unpacked in
@@ -20,13 +23,22 @@ readonly real_dir="$dataset_dir/real"
 readonly npm_spec="vega-datasets@3.2.1"
 readonly mpl_deb="python-matplotlib-data=3.6.3-1"
 readonly terra_deb="r-cran-terra=1.7-3-1"
+readonly cgal_demo_deb="libcgal-demo=5.5.1-2"
+# libcgal-demo's doc folder is a link to libcgal-dev's, so its copyright file ships in libcgal-dev.
+readonly cgal_dev_deb="libcgal-dev=5.5.1-2"
 readonly mpl_sample_dir="usr/share/matplotlib/mpl-data/sample_data"
 readonly terra_ex_dir="usr/lib/R/site-library/terra/ex"
+readonly cgal_data_tar="usr/share/doc/libcgal-dev/data.tar.gz"
+readonly cgal_copyright="usr/share/doc/libcgal-dev/copyright"
 
 readonly volcano_sha=49578c17a2a595a83a393a6da2cc85e3d3d4c93043e942a5e04dc113ca4a8528
 readonly jacksboro_sha=d493f50a33e82a4420494c54d1fca1539d177bdc27ab190bc5fe6e92f62fb637
 readonly topobathy_sha=0244e03291702df45024dcb5cacbc4f3d4cb30d72dfa7fd371c4ac61c42b4fbf
 readonly elev_sha=c6a4967fe5b720499e75a3453e9814f00a416167b8e0926a4c55f5100ae4ddb2
+readonly bunny00_sha=ab651cb04955c161efaeb079035a1e5e1f0e0d1f816a2df67beaea68f393ff2b
+readonly elephant_sha=be4e1ea68f5f840a3d2ada69d828222e76a57d9e25b21e19a9deacd3f2328e02
+readonly cow_sha=1c5a25c3047fc6b14dd0c962d3562b1796671422ab4634f9d46f9f23814cd54a
+readonly elephant_with_holes_sha=0262a20c433534623af10f2b8b3aeb9067792486195cac47738bc6abea0cb8d0
 
 work_dir="$(mktemp -d)"
 readonly work_dir
@@ -43,9 +55,14 @@ sha256_of() {
   sha256sum "$1" | cut -d' ' -f1
 }
 
+# licence_of STEM: the path of the stem's licence notice (meshes/cow -> real/meshes/LICENSE.cow.txt).
+licence_of() {
+  echo "$real_dir/$(dirname "$1")/LICENSE.$(basename "$1").txt"
+}
+
 # is_current FILE STEM SHA: the file, its licence and its sidecar are present and the hash matches.
 is_current() {
-  [[ -f "$real_dir/$1" && -f "$real_dir/LICENSE.$2.txt" && -f "$real_dir/$2.source.json" ]] &&
+  [[ -f "$real_dir/$1" && -f "$(licence_of "$2")" && -f "$real_dir/$2.source.json" ]] &&
     [[ "$(sha256_of "$real_dir/$1")" == "$3" ]]
 }
 
@@ -58,10 +75,12 @@ check_sha() {
 # install_file SOURCE FILE STEM SHA LICENSE_SOURCE: verifies SOURCE, then copies it and its licence
 # into datasets/real (through a temporary name, so an interrupted copy leaves no partial file).
 install_file() {
+  local partial
+  partial="$real_dir/$(dirname "$2")/.$(basename "$2").partial"
   check_sha "$1" "$4"
-  cp "$1" "$real_dir/.$2.partial"
-  mv "$real_dir/.$2.partial" "$real_dir/$2"
-  cp "$5" "$real_dir/LICENSE.$3.txt"
+  cp "$1" "$partial"
+  mv "$partial" "$real_dir/$2"
+  cp "$5" "$(licence_of "$3")"
 }
 
 # apt_fetch PKG=VERSION: downloads the .deb into the work folder (once) and unpacks it there.
@@ -197,8 +216,60 @@ EOF
   echo "elev.tif: fetched"
 }
 
-mkdir -p "$real_dir"
+# cgal_mesh_notice NAME: the licence notice of one CGAL demo mesh, on stdout: what applies to
+# data/meshes, the Stanford credit for the bunny, then libcgal-demo's copyright file as shipped.
+cgal_mesh_notice() {
+  echo "$1.off from $cgal_demo_deb, $cgal_data_tar, member data/meshes/$1.off."
+  echo "The file carries no copyright notice of its own; per the copyright file below (upstream"
+  echo "LICENSE), such CGAL files are licensed under Creative Commons CC0 1.0."
+  if [[ "$1" == bunny00 ]]; then
+    echo "The bunny is the Stanford Bunny of the Stanford 3D Scanning Repository, Stanford University"
+    echo "Computer Graphics Laboratory (https://graphics.stanford.edu/data/3Dscanrep/): credit Stanford."
+  fi
+  echo
+  echo "Copyright file of $cgal_demo_deb (its doc folder links to libcgal-dev's; shipped by $cgal_dev_deb):"
+  echo
+  cat "$work_dir/libcgal-dev/$cgal_copyright"
+}
+
+# fetch_cgal_mesh NAME SHA VERTICES FACES DESCRIPTION TOPOLOGY: one mesh of CGAL's demo data into
+# datasets/real/meshes/NAME.off, with its licence notice and sidecar.
+fetch_cgal_mesh() {
+  local name="$1" sha="$2"
+  is_current "meshes/$name.off" "meshes/$name" "$sha" && { echo "meshes/$name.off: up to date"; return; }
+  apt_fetch "$cgal_demo_deb"
+  apt_fetch "$cgal_dev_deb"
+  tar -x -z -C "$work_dir" -f "$work_dir/libcgal-demo/$cgal_data_tar" "data/meshes/$name.off"
+  cgal_mesh_notice "$name" >"$work_dir/$name-license.txt"
+  install_file "$work_dir/data/meshes/$name.off" "meshes/$name.off" "meshes/$name" "$sha" \
+    "$work_dir/$name-license.txt"
+  write_sidecar "meshes/$name" <<EOF
+{
+  "file": "meshes/$name.off",
+  "origin": {"package": "deb:$cgal_demo_deb", "path": "$cgal_data_tar", "member": "data/meshes/$name.off"},
+  "sha256": "$sha",
+  "licence": {"name": "CC0 1.0 (CGAL files without a notice of their own)", "notice": "LICENSE.$name.txt"},
+  "description": "$5",
+  "format": "ASCII OFF, triangles",
+  "mesh": {"vertices": $3, "faces": $4, "topology": "$6"},
+  "units": "none (model coordinates)"
+}
+EOF
+  echo "meshes/$name.off: fetched"
+}
+
+mkdir -p "$real_dir/meshes"
 fetch_volcano
 fetch_jacksboro
 fetch_topobathy
 fetch_luxembourg
+# The topology as groundtruth check-mesh measures it (tests/mesh_checks_test.cpp pins it).
+fetch_cgal_mesh bunny00 "$bunny00_sha" 37706 75408 \
+  "Stanford bunny (Stanford 3D Scanning Repository) as shipped in CGAL's demo data" \
+  "closed 2-manifold, genus 0, consistently oriented outward, no self-intersections"
+fetch_cgal_mesh elephant "$elephant_sha" 2775 5558 "elephant" \
+  "closed 2-manifold, genus 3 (Euler characteristic -4), consistently oriented outward, no self-intersections"
+fetch_cgal_mesh cow "$cow_sha" 2904 5804 "cow" \
+  "closed 2-manifold, genus 0, consistently oriented; 101 pairs of faces cross (self-intersections)"
+fetch_cgal_mesh elephant-with-holes "$elephant_with_holes_sha" 2798 4463 "elephant, open (holes in the surface)" \
+  "open: 1353 boundary edges in 106 loops, genus 3 (Euler characteristic -110); 173 pairs of faces cross"

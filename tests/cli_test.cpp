@@ -902,4 +902,35 @@ TEST(CliRun, MissingGlContextSkipsGpuChecks) {
   expect_artifacts_exist(report_case, out);
 }
 
+// ---- 7. check-mesh --------------------------------------------------------------------------
+
+// The exit status says watertight (0), not (1) or unreadable (2); --json is one parseable object
+// whose verdict matches the status; a file the readers reject is refused with its name.
+TEST(CliCheckMesh, ExitStatusFollowsTheVerdict) {
+  const TempDir work;
+  const fs::path tetrahedron = work / "tetrahedron.off";
+  write_text(tetrahedron, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const RunResult closed = run_groundtruth({"check-mesh", tetrahedron.string()}, work.path());
+  EXPECT_EQ(closed.status, 0) << closed;
+  EXPECT_NE(closed.out.find("watertight and consistently oriented"), std::string::npos) << closed;
+
+  const fs::path open = work / "open.obj";
+  write_text(open, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  const RunResult holed = run_groundtruth({"check-mesh", open.string(), "--json"}, work.path());
+  EXPECT_EQ(holed.status, 1) << holed;
+  const json verdict = json::parse(holed.out, nullptr, false);
+  ASSERT_FALSE(verdict.is_discarded()) << holed;
+  EXPECT_EQ(verdict.at("format"), "obj");
+  EXPECT_EQ(verdict.at("report").at("raw").at("border_edges"), 3) << verdict.dump(2);
+
+  const fs::path truncated = work / "truncated.off";
+  write_text(truncated, "OFF\n4 4 0\n0 0 0\n1 0 0\n");
+  for (const fs::path& bad : {truncated, work / "missing.ply", work / "mesh.xyz"}) {
+    const RunResult refused = run_groundtruth({"check-mesh", bad.string()}, work.path());
+    EXPECT_EQ(refused.status, 2) << refused;
+    EXPECT_NE(refused.err.find(bad.filename().string()), std::string::npos) << refused;
+    EXPECT_EQ(refused.err.find("internal error"), std::string::npos) << refused;
+  }
+}
+
 }  // namespace

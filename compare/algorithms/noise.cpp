@@ -417,8 +417,8 @@ std::vector<Algorithm> noise_algorithms() {
                     .summary = entry.summary,
                     .source = entry.source,
                     .params = &specs_of(entry),
-                    .prepare = [entry](const nlohmann::json& resolved, const Heightmap& input) {
-                      return prepare_noise(entry.basis, entry.fractal, resolved, input);
+                    .prepare = [entry](const nlohmann::json& resolved, const LoadedInput& input) {
+                      return prepare_noise(entry.basis, entry.fractal, resolved, input.heights);
                     },
                     .iterates = false});
   }

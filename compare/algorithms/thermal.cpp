@@ -89,7 +89,9 @@ Algorithm thermal_algorithm() {
           .summary = "two-pass thermal erosion with requests and transfers (Hydra)",
           .source = "seed 000 §4.4.3, Algorithms 9-11, eq. 4.10 (digest 000 §4.6)",
           .params = &thermal_param_specs(),
-          .prepare = prepare_thermal};
+          .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
+            return prepare_thermal(resolved, input.heights);
+          }};
 }
 
 Algorithm thermal_jako_algorithm() {
@@ -97,7 +99,9 @@ Algorithm thermal_jako_algorithm() {
           .summary = "8-neighbour thermal erosion with proportional outflow (Jákó & Tóth 2011)",
           .source = "seed 000 §2.6, eqs. 2.30-2.34 (digest 000 §3.6)",
           .params = &thermal_jako_param_specs(),
-          .prepare = prepare_thermal_jako};
+          .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
+            return prepare_thermal_jako(resolved, input.heights);
+          }};
 }
 
 }  // namespace gt

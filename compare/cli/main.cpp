@@ -3,7 +3,9 @@
 //   run PATTERN... | --algorithm A --input FILE [--set k=v]... [--backend] [--out] [--gl]
 //   report [--out] [--gl]              the default suite and benchmarks into reports/latest
 //   bench [--sizes] [--iterations]     only the performance table
-// Exit status: 0 nothing unexpected failed, 1 something did, 2 bad usage or bad input.
+//   check-mesh FILE [--json]           the mesh checks on an OFF, OBJ, PLY or STL file
+// Exit status: 0 nothing unexpected failed, 1 something did, 2 bad usage or bad input
+// (check-mesh: 0 watertight and consistently oriented, 1 not, 2 unreadable).
 #include <cstdio>
 #include <iostream>
 
@@ -12,6 +14,7 @@
 
 #include "compare/algorithm.hpp"
 #include "compare/cases.hpp"
+#include "compare/cli/check_mesh.hpp"
 #include "compare/driver.hpp"
 #include "core/errors.hpp"
 
@@ -150,6 +153,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench->add_option("--reps", bench_options.reps, "timed runs per size")->check(CLI::Range(1, 100))->capture_default_str();
 
+  std::string mesh_file;
+  bool mesh_as_json = false;
+  auto* check_mesh = app.add_subcommand("check-mesh", "is a mesh file watertight and consistently oriented? (CGAL and OpenMesh)");
+  check_mesh->add_option("file", mesh_file, "OFF, OBJ, PLY or STL")->required();
+  check_mesh->add_flag("--json", mesh_as_json, "machine-readable");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -158,6 +167,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);
     if (list->parsed()) {
       print_list(list_as_json);
       return 0;

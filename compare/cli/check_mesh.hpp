@@ -1,0 +1,16 @@
+// `groundtruth check-mesh FILE [--json]`: the mesh checks of compare/checks/mesh.hpp on a mesh
+// file (OFF, OBJ, PLY, STL; core/io/mesh_io.hpp).
+//
+// Prints the report on stdout — a paragraph (with what the reader decided) or, with as_json, one
+// JSON object {file, format, notes, report} — and returns the exit status: 0 watertight and
+// consistently oriented, 1 not (the paragraph says what is wrong and how much), 2 the file cannot
+// be read (the reason on stderr as "groundtruth: ...").
+#pragma once
+
+#include <filesystem>
+
+namespace gt {
+
+int check_mesh_command(const std::filesystem::path& file, bool as_json);
+
+}  // namespace gt
