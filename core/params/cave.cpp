@@ -1,0 +1,95 @@
+// Cave block parameters (declarations, ranges, JSON) and lattice edge keys; see cave.hpp.
+//
+// Ranges: origin within ±500,000 and size up to 512 cells keep every lower edge endpoint, padding
+// included (origin - 1 .. origin + size), inside the keys' ±2^19; 512³ cells is also about the
+// largest block whose double density (8·513³ bytes ≈ 1.1 GB) is reasonable to hold. The kernel is
+// limited to the two values of the digest's choice (§2.2.5) and what lies between.
+#include "core/params/cave.hpp"
+
+namespace gt {
+namespace {
+
+constexpr std::int64_t key_offset = std::int64_t{1} << 19;
+constexpr int coordinate_bits = 20;
+constexpr int direction_bits = 3;
+constexpr std::uint64_t coordinate_mask = (std::uint64_t{1} << coordinate_bits) - 1;
+constexpr std::uint64_t direction_mask = (std::uint64_t{1} << direction_bits) - 1;
+
+constexpr const char* origin_names[3] = {"origin_x", "origin_y", "origin_z"};
+constexpr const char* size_names[3] = {"size_x", "size_y", "size_z"};
+
+bool key_holds(std::int64_t coordinate) {
+  return coordinate >= lattice_coordinate_min && coordinate <= lattice_coordinate_max;
+}
+
+}  // namespace
+
+const ParamSpecs& cave_param_specs() {
+  static const ParamSpecs specs = [] {
+    ParamSpecs declared = {
+        {"scale", ParamKind::real, 10.0, 1e-3, 1e6, {}, "world unit",
+         "world units per noise unit (the seed's SCALE_FACTOR): density = simplex3(p / scale)"},
+        {"threshold", ParamKind::real, 0.0, -1.0, 1.0, {}, "1", "rock where the density is below it (TRESHOLD)"},
+        {"kernel", ParamKind::real, 0.6, 0.5, 0.6, {}, "noise unit²",
+         "simplex kernel radius²: 0.6 as seed 004 (slightly discontinuous), 0.5 corrected"},
+        {"seed", ParamKind::integer, 0, 0, 4294967295.0, {}, "1",
+         "permutation: 0 = Perlin's reference table (the seed's), otherwise a shuffle by the counter RNG"},
+        {"solid", ParamKind::boolean, true, 0, 0, {}, "",
+         "pad the block with air so the rock is capped at its faces and the mesh is closed; false: open chunk"},
+    };
+    for (const char* name : origin_names) {
+      declared.push_back({name, ParamKind::integer, 0, -500000, 500000, {}, "lattice unit",
+                          "lattice coordinate of the block's first sample (1 lattice unit = 1 world unit)"});
+    }
+    for (const char* name : size_names) {
+      declared.push_back({name, ParamKind::integer, 30, 1, 512, {}, "count",
+                          "cells along the axis (the seed's BIG_CUBE_SIZE; samples = cells + 1)"});
+    }
+    return declared;
+  }();
+  return specs;
+}
+
+CaveParams cave_params_from_json(const nlohmann::json& resolved) {
+  CaveParams params;
+  params.scale = resolved.at("scale").get<double>();
+  params.threshold = resolved.at("threshold").get<double>();
+  params.kernel_radius_squared = resolved.at("kernel").get<double>();
+  params.seed = resolved.at("seed").get<std::uint32_t>();
+  params.solid = resolved.at("solid").get<bool>();
+  for (int axis = 0; axis < 3; ++axis) {
+    params.origin[axis] = resolved.at(origin_names[axis]).get<int>();
+    params.size[axis] = resolved.at(size_names[axis]).get<int>();
+  }
+  return params;
+}
+
+std::uint64_t lattice_edge_key(const std::array<std::int64_t, 3>& lower_point, int direction) {
+  std::uint64_t key = static_cast<std::uint64_t>(direction) & direction_mask;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto biased = static_cast<std::uint64_t>(lower_point[axis] + key_offset) & coordinate_mask;
+    key |= biased << (direction_bits + coordinate_bits * axis);
+  }
+  return key;
+}
+
+LatticeEdge lattice_edge_from_key(std::uint64_t key) {
+  LatticeEdge edge{};
+  edge.direction = static_cast<int>(key & direction_mask);
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::uint64_t biased = (key >> (direction_bits + coordinate_bits * axis)) & coordinate_mask;
+    edge.lower_point[axis] = static_cast<std::int64_t>(biased) - key_offset;
+  }
+  return edge;
+}
+
+bool lattice_range_fits(const std::array<std::int64_t, 3>& origin, const std::array<std::int64_t, 3>& samples,
+                        bool padded) {
+  const std::int64_t pad = padded ? 1 : 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!key_holds(origin[axis] - pad) || !key_holds(origin[axis] + samples[axis] - 1 + pad)) return false;
+  }
+  return true;
+}
+
+}  // namespace gt

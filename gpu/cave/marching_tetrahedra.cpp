@@ -1,0 +1,234 @@
+// Host side of the GPU marching tetrahedra: block checks, the std140 parameter block, buffer sizes
+// against the driver's limit and the order of the passes (see marching_tetrahedra.hpp; the
+// algorithm and its welding argument are in gpu/shaders/cave/tetrahedra.glsl).
+//
+// Bindings (all below 8, the GL 4.5 minimum; emit uses all eight): uniform 0 the CaveBlock;
+// storage 0 the cube-case tables, 1 density, 2 triangle counts/offsets, 3 vertex counts/offsets,
+// 4 triangles, 5 the permutation (noise/permutation.glsl) in the density pass and the per-cube
+// rock corners in count and emit, 6 positions, 7 edge keys. The scan uses storage 0 and 1 itself,
+// so every pass binds what it reads.
+// Buffer sizes for a solid block of 256³ cells (257³ samples, 258³ = 17.2M cubes): density
+// 67.9 MB; triangle offsets, vertex offsets and rock corners 68.7 MB each; scan block sums 67 KB;
+// cube cases 134 KB. Outputs: 12 bytes per triangle, 12 + 8 per vertex; at scale 10 about 2.3
+// triangles and 1.2 vertices per cube: 457 MB of triangles (measured, seed 3: 38.1M) and about
+// 400 MB of vertices. That passes llvmpipe's 128 MB storage-block limit, so llvmpipe refuses such
+// a block after the counts (limited_storage); blocks up to about 160³ fit there.
+#include "gpu/cave/marching_tetrahedra.hpp"
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/noise/permutation.hpp"
+#include "gpu/cave/linear_dispatch.hpp"
+
+namespace gt::gpu {
+namespace {
+
+// Mirror of `CaveBlock` in gpu/shaders/cave/cave_block.glsl (std140).
+struct CaveBlock {
+  std::int32_t lattice_origin[4];
+  std::int32_t sample_counts[4];
+  std::int32_t cube_counts[4];
+  std::int32_t first_cube;
+  float threshold;
+  float world_to_noise;
+  float kernel_radius_squared;
+  std::uint32_t linear_placement;
+  std::uint32_t padding[3];
+};
+static_assert(offsetof(CaveBlock, sample_counts) == 16);
+static_assert(offsetof(CaveBlock, cube_counts) == 32);
+static_assert(offsetof(CaveBlock, first_cube) == 48);
+static_assert(offsetof(CaveBlock, threshold) == 52);
+static_assert(offsetof(CaveBlock, world_to_noise) == 56);
+static_assert(offsetof(CaveBlock, kernel_radius_squared) == 60);
+static_assert(offsetof(CaveBlock, linear_placement) == 64);
+static_assert(sizeof(CaveBlock) == 80);
+
+constexpr int local_size = 256;  // local_size_x of density.comp, count.comp and emit.comp
+constexpr GLuint block_binding = 0, cube_cases_binding = 0, density_binding = 1, triangle_offsets_binding = 2, vertex_offsets_binding = 3,
+                 triangles_binding = 4, permutation_binding = 5, cube_rock_binding = 5, positions_binding = 6, edge_keys_binding = 7;
+constexpr std::size_t max_triangles_per_cube = 12;  // 6 tetrahedra, 2 triangles each
+constexpr std::size_t rock_patterns = 256, edge_slots = 64, first_axes_patterns = 8;
+// Size of `CubeCases` in gpu/shaders/cave/cube_cases.glsl (std430: uint[256], then uvec2 arrays).
+constexpr std::size_t cube_cases_bytes =
+    rock_patterns * 4 + rock_patterns * 8 + first_axes_patterns * 8 + rock_patterns * edge_slots * 8;
+
+using Counts = std::array<std::size_t, 3>;
+
+Counts sample_counts(const CaveParams& params) {
+  return {static_cast<std::size_t>(params.size[0]) + 1, static_cast<std::size_t>(params.size[1]) + 1,
+          static_cast<std::size_t>(params.size[2]) + 1};
+}
+
+// Solid: one pad layer on every side (samples + 1 cubes); open: samples - 1 (lattice_cubes.hpp).
+Counts cube_counts(const CaveParams& params) {
+  const Counts samples = sample_counts(params);
+  const std::size_t extra_cubes = params.solid ? 1 : 0;
+  return {samples[0] - 1 + 2 * extra_cubes, samples[1] - 1 + 2 * extra_cubes, samples[2] - 1 + 2 * extra_cubes};
+}
+
+std::size_t product(const Counts& counts) { return counts[0] * counts[1] * counts[2]; }
+
+std::string describe_block(const CaveParams& params) {
+  return fmt::format("{}x{}x{} cells at lattice ({}, {}, {}){}", params.size[0], params.size[1], params.size[2],
+                     params.origin[0], params.origin[1], params.origin[2], params.solid ? ", solid" : ", open");
+}
+
+// The sample count, after refusing blocks the mesher cannot name (the reference's checks).
+std::size_t checked_sample_total(const CaveParams& params) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (params.size[axis] < 1) {
+      throw InputError(fmt::format("GPU marching tetrahedra: block of {} needs at least one cell per axis",
+                                   describe_block(params)));
+    }
+  }
+  const std::array<std::int64_t, 3> origin{params.origin[0], params.origin[1], params.origin[2]};
+  const std::array<std::int64_t, 3> samples{params.size[0] + 1, params.size[1] + 1, params.size[2] + 1};
+  if (!lattice_range_fits(origin, samples, params.solid)) {
+    throw InputError(fmt::format("GPU marching tetrahedra: block of {} leaves the edge-key range [{}, {}] per axis",
+                                 describe_block(params), lattice_coordinate_min, lattice_coordinate_max));
+  }
+  return product(sample_counts(params));
+}
+
+// The cube count, after refusing blocks whose triangle offsets could pass 2^32.
+std::size_t checked_cube_total(const CaveParams& params) {
+  const std::size_t cubes = product(cube_counts(params));
+  if (cubes * max_triangles_per_cube > std::numeric_limits<std::uint32_t>::max()) {
+    throw InputError(fmt::format("GPU marching tetrahedra: block of {} has {} cubes, more than 32-bit triangle "
+                                 "offsets allow ({} triangles per cube at most)",
+                                 describe_block(params), cubes, max_triangles_per_cube));
+  }
+  return cubes;
+}
+
+std::int64_t storage_block_limit() {
+  GLint64 limit = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+  return limit;
+}
+
+StorageBuffer limited_storage(std::size_t bytes, const char* contents, std::int64_t limit) {
+  if (bytes > static_cast<std::size_t>(limit)) {
+    throw std::runtime_error(fmt::format("GPU marching tetrahedra: the {} need {} bytes, more than this GL's "
+                                         "GL_MAX_SHADER_STORAGE_BLOCK_SIZE of {} bytes; use a smaller block",
+                                         contents, bytes, limit));
+  }
+  return StorageBuffer(bytes);
+}
+
+// `buffer` when it holds at least `bytes`, else a new buffer of that size.
+void reserve(std::optional<StorageBuffer>& buffer, std::size_t bytes, const char* contents, std::int64_t limit) {
+  if (!buffer || buffer->size_bytes() < bytes) buffer = limited_storage(bytes, contents, limit);
+}
+
+UniformBuffer block_buffer(const CaveParams& params, EdgePlacement placement) {
+  CaveBlock block{};
+  const Counts samples = sample_counts(params);
+  const Counts cubes = cube_counts(params);
+  for (int axis = 0; axis < 3; ++axis) {
+    block.lattice_origin[axis] = params.origin[axis];
+    block.sample_counts[axis] = static_cast<std::int32_t>(samples[axis]);
+    block.cube_counts[axis] = static_cast<std::int32_t>(cubes[axis]);
+  }
+  block.sample_counts[3] = static_cast<std::int32_t>(product(samples));
+  block.cube_counts[3] = static_cast<std::int32_t>(product(cubes));
+  block.first_cube = params.solid ? -1 : 0;
+  block.threshold = static_cast<float>(params.threshold);
+  block.world_to_noise = static_cast<float>(1.0 / params.scale);
+  block.kernel_radius_squared = static_cast<float>(params.kernel_radius_squared);
+  block.linear_placement = placement == EdgePlacement::linear ? 1u : 0u;
+  return UniformBuffer::from(block);
+}
+
+// The uint at `index` of a buffer the GPU wrote (waits for it).
+std::uint32_t read_uint(const StorageBuffer& buffer, std::size_t index) {
+  std::uint32_t value = 0;
+  glGetNamedBufferSubData(buffer.id(), static_cast<GLintptr>(index * sizeof(value)), sizeof(value), &value);
+  return value;
+}
+
+}  // namespace
+
+MarchingTetrahedra::MarchingTetrahedra(const CaveParams& params, EdgePlacement placement)
+    : sample_total_(checked_sample_total(params)),
+      cube_total_(checked_cube_total(params)),
+      storage_block_limit_(storage_block_limit()),
+      block_(block_buffer(params, placement)),
+      permutation_(StorageBuffer::from(doubled_permutation(seeded_permutation(params.seed)))),
+      density_(limited_storage(sample_total_ * sizeof(float), "density samples", storage_block_limit_)),
+      triangle_offsets_(limited_storage((cube_total_ + 1) * sizeof(std::uint32_t), "per-cube triangle offsets",
+                                        storage_block_limit_)),
+      vertex_offsets_(limited_storage((cube_total_ + 1) * sizeof(std::uint32_t), "per-cube vertex offsets",
+                                      storage_block_limit_)),
+      cube_rock_(limited_storage(cube_total_ * sizeof(std::uint32_t), "per-cube rock corners", storage_block_limit_)),
+      cube_cases_(cube_cases_bytes),
+      density_program_(ComputeProgram::load("cave/density.comp")),
+      count_program_(ComputeProgram::load("cave/count.comp")),
+      emit_program_(ComputeProgram::load("cave/emit.comp")),
+      scan_(cube_total_ + 1) {
+  const ComputeProgram cube_cases_program = ComputeProgram::load("cave/cube_cases.comp");
+  cube_cases_.bind(cube_cases_binding);
+  dispatch_linear(cube_cases_program, rock_patterns, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void MarchingTetrahedra::run() {
+  block_.bind(block_binding);
+  permutation_.bind(permutation_binding);
+  density_.bind(density_binding);
+  dispatch_linear(density_program_, sample_total_, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  cube_cases_.bind(cube_cases_binding);
+  triangle_offsets_.bind(triangle_offsets_binding);
+  vertex_offsets_.bind(vertex_offsets_binding);
+  cube_rock_.bind(cube_rock_binding);
+  dispatch_linear(count_program_, cube_total_ + 1, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  scan_.run(triangle_offsets_, cube_total_ + 1);
+  scan_.run(vertex_offsets_, cube_total_ + 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+
+  triangle_total_ = read_uint(triangle_offsets_, cube_total_);
+  vertex_total_ = read_uint(vertex_offsets_, cube_total_);
+  if (triangle_total_ > 0) emit();
+}
+
+void MarchingTetrahedra::emit() {
+  reserve(triangles_, std::size_t{triangle_total_} * 3 * sizeof(std::uint32_t), "triangles", storage_block_limit_);
+  reserve(positions_, std::size_t{vertex_total_} * 3 * sizeof(float), "vertex positions", storage_block_limit_);
+  reserve(edge_keys_, std::size_t{vertex_total_} * 2 * sizeof(std::uint32_t), "edge keys", storage_block_limit_);
+  block_.bind(block_binding);
+  cube_cases_.bind(cube_cases_binding);
+  density_.bind(density_binding);
+  triangle_offsets_.bind(triangle_offsets_binding);
+  vertex_offsets_.bind(vertex_offsets_binding);
+  triangles_->bind(triangles_binding);
+  cube_rock_.bind(cube_rock_binding);
+  positions_->bind(positions_binding);
+  edge_keys_->bind(edge_keys_binding);
+  dispatch_linear(emit_program_, cube_total_, local_size);
+}
+
+TriangleMesh<float> MarchingTetrahedra::result() const {
+  TriangleMesh<float> mesh;
+  if (triangle_total_ == 0) return mesh;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  mesh.triangles = triangles_->download<std::array<std::uint32_t, 3>>(triangle_total_);
+  mesh.positions = positions_->download<std::array<float, 3>>(vertex_total_);
+  const auto key_words = edge_keys_->download<std::array<std::uint32_t, 2>>(vertex_total_);
+  mesh.edge_keys.reserve(key_words.size());
+  for (const auto& words : key_words) mesh.edge_keys.push_back(std::uint64_t{words[0]} | std::uint64_t{words[1]} << 32);
+  return mesh;
+}
+
+}  // namespace gt::gpu

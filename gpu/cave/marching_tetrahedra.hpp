@@ -1,0 +1,72 @@
+// Marching tetrahedra of the endless cave on the GPU (seed 004 digest §2.6, issue 5), twin of
+// reference/cave/marching_tetrahedra.hpp applied to reference/cave/density.hpp's float density:
+// the same mesh triangle by triangle, the same vertex numbering and edge keys, the same position
+// bits (on llvmpipe; see gpu/shaders/cave/lattice.glsl for the division on other GPUs).
+//
+// MarchingTetrahedra(params[, placement]) compiles the programs, allocates the per-sample and
+// per-cube buffers for the block params describes (origin, size, solid, scale, threshold, kernel,
+// seed) and tabulates the 256 rock patterns of a cube (gpu/shaders/cave/cube_cases.comp). run()
+// executes every pass on the GPU:
+//   1. density   gpu/shaders/cave/density.comp   one invocation per sample, (size + 1)³
+//   2. count     gpu/shaders/cave/count.comp     one per cube (+1): rock corners, triangles and
+//                                                own vertices
+//   3. scan      gpu/cave/exclusive_scan.hpp     both counts -> offsets and totals
+//   4. emit      gpu/shaders/cave/emit.comp      one per cube: triangles, positions, edge keys
+// (workgroups of 256 invocations throughout, spread over two dimensions: linear_dispatch.hpp)
+// Between 3 and 4 it reads the two totals back to size the outputs (a wait for the GPU); after 4
+// it does not synchronise (bracket with glFinish to time it). result() downloads the mesh:
+// positions in global lattice coordinates (world units), triangles counter-clockwise seen from the
+// air, edge_keys one per vertex. An all-air or all-rock block (open) gives an empty mesh.
+//
+// The placement mirrors reference::EdgePlacement (CaveParams has no field for it): linear, the
+// seed's "shifting along the edge", or midpoint, its first version.
+// Throws gt::InputError for a size below 1 cell or a block (pad included) outside the edge keys'
+// range, std::runtime_error when a buffer would exceed GL_MAX_SHADER_STORAGE_BLOCK_SIZE (per-sample
+// and per-cube buffers in the constructor, outputs in run()). Needs a current GlContext.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "core/mesh.hpp"
+#include "core/params/cave.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/cave/exclusive_scan.hpp"
+#include "gpu/shader_program.hpp"
+
+namespace gt::gpu {
+
+enum class EdgePlacement { linear, midpoint };
+
+class MarchingTetrahedra {
+ public:
+  explicit MarchingTetrahedra(const CaveParams& params, EdgePlacement placement = EdgePlacement::linear);
+  void run();
+  TriangleMesh<float> result() const;
+
+ private:
+  void emit();
+
+  std::size_t sample_total_;
+  std::size_t cube_total_;
+  std::int64_t storage_block_limit_;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE in bytes
+  UniformBuffer block_;
+  StorageBuffer permutation_;
+  StorageBuffer density_;
+  StorageBuffer triangle_offsets_;  // per cube + 1: counts, then their exclusive scan
+  StorageBuffer vertex_offsets_;
+  StorageBuffer cube_rock_;   // per cube: bit c set iff corner c is rock
+  StorageBuffer cube_cases_;  // tables of gpu/shaders/cave/cube_cases.glsl, filled by the constructor
+  ComputeProgram density_program_;
+  ComputeProgram count_program_;
+  ComputeProgram emit_program_;
+  ExclusiveScan scan_;
+  std::uint32_t triangle_total_ = 0;
+  std::uint32_t vertex_total_ = 0;
+  std::optional<StorageBuffer> triangles_;  // sized by run() from the totals, reused when big enough
+  std::optional<StorageBuffer> positions_;
+  std::optional<StorageBuffer> edge_keys_;
+};
+
+}  // namespace gt::gpu

@@ -1,0 +1,57 @@
+#version 450
+// Pass 4 of the GPU marching tetrahedra: every cube writes its triangles at its offset (the
+// exclusive scan of the triangle counts) in the reference's order, and the vertices it owns in
+// order of first use: position (three floats, cave/lattice.glsl) and edge key (low, high word).
+// A corner's vertex is its edge's owner's vertex offset (the scan of the own-vertex counts) + the
+// edge's rank among the owner's own edges (cave/tetrahedra.glsl, cave/cube_cases.glsl), from the
+// owner's rock corners the count pass stored. Every output element is written by one invocation,
+// so the result does not depend on scheduling.
+layout(local_size_x = 256) in;
+
+#include "cave/linear_dispatch.glsl"
+#include "cave/cube_cases.glsl"
+
+layout(std430, binding = 2) readonly buffer TriangleOffsets { uint triangle_offsets[]; };
+layout(std430, binding = 3) readonly buffer VertexOffsets { uint vertex_offsets[]; };
+layout(std430, binding = 4) writeonly buffer Triangles { uint triangles[]; };
+layout(std430, binding = 5) readonly buffer CubeRock { uint cube_rock[]; };
+layout(std430, binding = 6) writeonly buffer Positions { float positions[]; };
+layout(std430, binding = 7) writeonly buffer EdgeKeys { uvec2 edge_keys[]; };
+
+void write_vertex(uint vertex, ivec3 cube, ivec2 edge) {
+  ivec3 lower = cube + corner_offset(edge.x);
+  int direction = edge.y - edge.x;
+  vec3 position = vertex_position(lower, direction);
+  positions[3u * vertex] = position.x;
+  positions[3u * vertex + 1u] = position.y;
+  positions[3u * vertex + 2u] = position.z;
+  edge_keys[vertex] = lattice_edge_key(lattice_origin.xyz + lower, direction);
+}
+
+void main() {
+  uint index = linear_invocation();
+  if (index >= uint(cube_counts.w)) return;
+  ivec3 cube = cube_of(index);
+  uint rock = cube_rock[index];
+  if (case_triangles[rock] == 0u) return;
+  uint triangle_slot = triangle_offsets[index];
+  uvec2 met = uvec2(0u);
+  for (int tet = 0; tet < 6; ++tet) {
+    uint code = tet_code(rock, tet);
+    for (int triangle = 0; triangle < tet_triangle_count(code); ++triangle) {
+      for (int corner = 0; corner < 3; ++corner) {
+        ivec2 edge = corner_edge(tet, code, triangle, corner);
+        OwnedEdge owned = owner_of(cube, edge);
+        bool own = owned.cube == cube;
+        uint owner_index = cube_index(owned.cube);
+        uint vertex = vertex_offsets[owner_index] + owned_rank(cube_rock[owner_index], owned.cube, owned.edge);
+        if (own && !edge_set_has(met, edge)) {
+          met = edge_set_with(met, edge);
+          write_vertex(vertex, cube, edge);
+        }
+        triangles[3u * triangle_slot + uint(corner)] = vertex;
+      }
+      ++triangle_slot;
+    }
+  }
+}

@@ -1,0 +1,50 @@
+// Marching tetrahedra (seed 004 digest §2.6): six Kuhn tetrahedra per cube, the digest's oriented
+// case table; the order of the output is specified in marching_tetrahedra.hpp.
+#include "reference/cave/marching_tetrahedra.hpp"
+
+namespace gt::reference {
+namespace {
+
+// Bit v of the result is bit kuhn_tetrahedra[tet][v] of the cube's rock corners.
+unsigned tet_code(unsigned cube_rock_corners, int tet) {
+  unsigned code = 0;
+  for (int vertex = 0; vertex < 4; ++vertex) code |= ((cube_rock_corners >> kuhn_tetrahedra[tet][vertex]) & 1u) << vertex;
+  return code;
+}
+
+// The cube edge under tet edge `edge`, lower corner (the bit subset) first.
+CornerPair cube_edge(int tet, int edge) {
+  const int first = kuhn_tetrahedra[tet][tet_edges[edge][0]];
+  const int second = kuhn_tetrahedra[tet][tet_edges[edge][1]];
+  return first < second ? CornerPair{first, second} : CornerPair{second, first};
+}
+
+template <class Real>
+void add_tet_triangles(CaveMeshBuilder<Real>& builder, const LatticePoint& cube, unsigned rock_corners, int tet) {
+  const TetCase& tet_case = tet_case_table[tet_code(rock_corners, tet)];
+  for (int triangle = 0; triangle < tet_case.triangle_count; ++triangle) {
+    const auto& edges = tet_case.triangles[triangle];
+    builder.add_triangle(cube, {cube_edge(tet, edges[0]), cube_edge(tet, edges[1]), cube_edge(tet, edges[2])});
+  }
+}
+
+}  // namespace
+
+template <class Real>
+TriangleMesh<Real> marching_tetrahedra(const Volume<Real>& density, Real threshold, bool solid,
+                                       const std::array<std::int64_t, 3>& lattice_origin, EdgePlacement placement) {
+  CaveMeshBuilder<Real> builder("marching tetrahedra", density, threshold, solid, lattice_origin, placement);
+  for_each_cube(builder, [&builder](const LatticePoint& cube) {
+    const unsigned rock_corners = builder.rock_corners(cube);
+    if (rock_corners == 0 || rock_corners == 0xFFu) return;
+    for (int tet = 0; tet < 6; ++tet) add_tet_triangles(builder, cube, rock_corners, tet);
+  });
+  return builder.take_mesh();
+}
+
+template TriangleMesh<float> marching_tetrahedra(const Volume<float>&, float, bool, const std::array<std::int64_t, 3>&,
+                                                 EdgePlacement);
+template TriangleMesh<double> marching_tetrahedra(const Volume<double>&, double, bool,
+                                                  const std::array<std::int64_t, 3>&, EdgePlacement);
+
+}  // namespace gt::reference

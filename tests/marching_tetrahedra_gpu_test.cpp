@@ -1,0 +1,232 @@
+// The GPU marching tetrahedra (gpu/cave/marching_tetrahedra.hpp) against its CPU twin
+// (reference/cave/marching_tetrahedra.hpp on reference/cave/density.hpp's float density): the
+// same triangle index buffer, the same edge keys and bitwise the same positions, which llvmpipe
+// must give because every float operation, the division included, is the reference's and is
+// correctly rounded there. Also the multi-level scan on its own (gpu/cave/exclusive_scan.hpp)
+// against std::exclusive_scan, determinism, empty meshes and refused blocks.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/errors.hpp"
+#include "core/params/cave.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/cave/exclusive_scan.hpp"
+#include "gpu/cave/marching_tetrahedra.hpp"
+#include "reference/cave/density.hpp"
+#include "reference/cave/marching_tetrahedra.hpp"
+#include "tests/support/gl_test.hpp"
+
+namespace {
+
+namespace ref = gt::reference;
+
+using FloatMesh = gt::TriangleMesh<float>;
+
+constexpr std::uint32_t test_seed = 20140520;  // a seeded permutation, not Perlin's table
+
+gt::CaveParams cave_params(std::array<int, 3> origin, std::array<int, 3> size, bool solid, double kernel = 0.6) {
+  gt::CaveParams params;
+  params.origin = origin;
+  params.size = size;
+  params.solid = solid;
+  params.kernel_radius_squared = kernel;
+  params.seed = test_seed;
+  return params;
+}
+
+FloatMesh reference_mesh(const gt::CaveParams& params, ref::EdgePlacement placement = ref::EdgePlacement::linear) {
+  return ref::marching_tetrahedra(ref::cave_density<float>(params), static_cast<float>(params.threshold), params.solid,
+                                  {params.origin[0], params.origin[1], params.origin[2]}, placement);
+}
+
+FloatMesh gpu_mesh(const gt::CaveParams& params, gt::gpu::EdgePlacement placement = gt::gpu::EdgePlacement::linear) {
+  gt::gpu::MarchingTetrahedra mesher(params, placement);
+  mesher.run();
+  return mesher.result();
+}
+
+std::array<std::uint32_t, 3> position_bits(const std::array<float, 3>& position) {
+  return {std::bit_cast<std::uint32_t>(position[0]), std::bit_cast<std::uint32_t>(position[1]),
+          std::bit_cast<std::uint32_t>(position[2])};
+}
+
+// Equal index buffers, edge keys and position bits; the message names the first difference.
+::testing::AssertionResult same_mesh(const FloatMesh& expected, const FloatMesh& actual) {
+  if (expected.triangles.size() != actual.triangles.size() || expected.positions.size() != actual.positions.size() ||
+      actual.edge_keys.size() != actual.positions.size()) {
+    return ::testing::AssertionFailure() << "sizes differ: expected " << expected.triangles.size() << " triangles, "
+                                         << expected.positions.size() << " vertices; got " << actual.triangles.size()
+                                         << ", " << actual.positions.size() << " (" << actual.edge_keys.size()
+                                         << " keys)";
+  }
+  for (std::size_t triangle = 0; triangle < expected.triangles.size(); ++triangle) {
+    if (expected.triangles[triangle] != actual.triangles[triangle]) {
+      const auto& want = expected.triangles[triangle];
+      const auto& got = actual.triangles[triangle];
+      return ::testing::AssertionFailure() << "triangle " << triangle << ": expected (" << want[0] << ", " << want[1]
+                                           << ", " << want[2] << "), got (" << got[0] << ", " << got[1] << ", "
+                                           << got[2] << ")";
+    }
+  }
+  for (std::size_t vertex = 0; vertex < expected.positions.size(); ++vertex) {
+    if (expected.edge_keys[vertex] != actual.edge_keys[vertex]) {
+      return ::testing::AssertionFailure() << "edge key of vertex " << vertex << ": expected "
+                                           << expected.edge_keys[vertex] << ", got " << actual.edge_keys[vertex];
+    }
+    if (position_bits(expected.positions[vertex]) != position_bits(actual.positions[vertex])) {
+      const auto& want = expected.positions[vertex];
+      const auto& got = actual.positions[vertex];
+      return ::testing::AssertionFailure() << std::hexfloat << "position of vertex " << vertex << ": expected ("
+                                           << want[0] << ", " << want[1] << ", " << want[2] << "), got (" << got[0]
+                                           << ", " << got[1] << ", " << got[2] << ")";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+struct Block {
+  const char* name;
+  std::array<int, 3> origin;
+  bool solid;
+  double kernel;
+};
+
+void PrintTo(const Block& block, std::ostream* out) { *out << block.name; }
+
+const Block blocks[] = {
+    {"origin0_solid_kernel06", {0, 0, 0}, true, 0.6},     {"origin0_open_kernel06", {0, 0, 0}, false, 0.6},
+    {"origin0_solid_kernel05", {0, 0, 0}, true, 0.5},     {"origin0_open_kernel05", {0, 0, 0}, false, 0.5},
+    {"shifted_solid_kernel06", {-20, 7, 33}, true, 0.6},  {"shifted_open_kernel06", {-20, 7, 33}, false, 0.6},
+    {"shifted_solid_kernel05", {-20, 7, 33}, true, 0.5},  {"shifted_open_kernel05", {-20, 7, 33}, false, 0.5},
+};
+
+class GpuMarchingTetrahedra : public gt::testing::GlTestWithParam<Block> {};
+
+TEST_P(GpuMarchingTetrahedra, GivesTheFloatReferenceMeshBitForBit) {
+  const Block& block = GetParam();
+  const auto params = cave_params(block.origin, {12, 12, 12}, block.solid, block.kernel);
+  const FloatMesh expected = reference_mesh(params);
+  ASSERT_GT(expected.triangles.size(), 100u) << "a nearly empty block proves little";
+  EXPECT_TRUE(same_mesh(expected, gpu_mesh(params)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Blocks12, GpuMarchingTetrahedra, ::testing::ValuesIn(blocks),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+class GpuMarchingTetrahedraCases : public gt::testing::GlTest {};
+
+// Unequal axes catch a swapped stride; midpoints are the reference's other placement.
+TEST_F(GpuMarchingTetrahedraCases, UnequalAxesAndMidpointPlacementMatchTheReference) {
+  const auto solid = cave_params({3, -5, 2}, {13, 7, 10}, true);
+  EXPECT_TRUE(same_mesh(reference_mesh(solid), gpu_mesh(solid)));
+  EXPECT_TRUE(same_mesh(reference_mesh(solid, ref::EdgePlacement::midpoint),
+                        gpu_mesh(solid, gt::gpu::EdgePlacement::midpoint)));
+  const auto open = cave_params({-9, 4, 1}, {6, 11, 9}, false, 0.5);
+  EXPECT_TRUE(same_mesh(reference_mesh(open, ref::EdgePlacement::midpoint),
+                        gpu_mesh(open, gt::gpu::EdgePlacement::midpoint)));
+}
+
+// 64³ cubes (262,145 scanned values with the totals' slot): the scans need two levels, the cube
+// index spans many workgroups, and the mesh is large enough to meet most tet cases.
+TEST_F(GpuMarchingTetrahedraCases, A64CubedBlockMatchesTheReference) {
+  const auto params = cave_params({-31, 17, -2}, {64, 64, 64}, false);
+  const FloatMesh expected = reference_mesh(params);
+  ASSERT_GT(expected.triangles.size(), 100000u);
+  EXPECT_TRUE(same_mesh(expected, gpu_mesh(params)));
+}
+
+TEST_F(GpuMarchingTetrahedraCases, RunsTwiceAndTwoMeshersGiveTheSameBits) {
+  const auto params = cave_params({5, 5, 5}, {20, 20, 20}, true);
+  gt::gpu::MarchingTetrahedra mesher(params);
+  mesher.run();
+  const FloatMesh first = mesher.result();
+  mesher.run();
+  EXPECT_TRUE(same_mesh(first, mesher.result()));
+  EXPECT_TRUE(same_mesh(first, gpu_mesh(params)));
+}
+
+TEST_F(GpuMarchingTetrahedraCases, AllAirAndOpenAllRockGiveAnEmptyMesh) {
+  for (const bool solid : {true, false}) {
+    auto params = cave_params({0, 0, 0}, {12, 12, 12}, solid);
+    params.threshold = -10.0;
+    const FloatMesh air = gpu_mesh(params);
+    EXPECT_TRUE(air.triangles.empty() && air.positions.empty() && air.edge_keys.empty()) << "solid " << solid;
+  }
+  auto rock = cave_params({0, 0, 0}, {12, 12, 12}, false);
+  rock.threshold = 10.0;
+  EXPECT_TRUE(gpu_mesh(rock).triangles.empty());
+}
+
+// All rock in a solid block: only the pad's cap, every vertex at an edge midpoint outside the block.
+TEST_F(GpuMarchingTetrahedraCases, SolidAllRockGivesTheReferenceCap) {
+  auto params = cave_params({-3, 2, 8}, {4, 5, 3}, true);
+  params.threshold = 10.0;
+  const FloatMesh expected = reference_mesh(params);
+  ASSERT_FALSE(expected.triangles.empty());
+  EXPECT_TRUE(same_mesh(expected, gpu_mesh(params)));
+}
+
+TEST_F(GpuMarchingTetrahedraCases, RefusesBlocksOutsideTheEdgeKeyRange) {
+  const auto params = cave_params({static_cast<int>(gt::lattice_coordinate_max), 0, 0}, {1, 1, 1}, false);
+  EXPECT_THROW(gt::gpu::MarchingTetrahedra{params}, gt::InputError);
+}
+
+// A block whose density alone passes the driver's limit is refused before anything is allocated.
+TEST_F(GpuMarchingTetrahedraCases, RefusesBuffersPastTheStorageBlockLimit) {
+  GLint64 limit = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+  const auto params = cave_params({0, 0, 0}, {512, 512, 512}, true);
+  const std::int64_t density_bytes = std::int64_t{513} * 513 * 513 * 4;
+  if (density_bytes <= limit) GTEST_SKIP() << "this GL allows storage blocks of " << limit << " bytes";
+  try {
+    gt::gpu::MarchingTetrahedra mesher(params);
+    FAIL() << "no error for " << density_bytes << " bytes of density";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos) << error.what();
+  }
+}
+
+class GpuExclusiveScan : public gt::testing::GlTest {};
+
+// Sizes around the 1024-value block and past 1024² values, which needs three levels.
+TEST_F(GpuExclusiveScan, MatchesStdExclusiveScanOnRandomCounts) {
+  const std::size_t largest = 1024 * 1024 + 1025;
+  const gt::gpu::ExclusiveScan scan(largest);
+  std::mt19937 random(7);
+  std::uniform_int_distribution<std::uint32_t> count(0, 12);
+  for (const std::size_t size : {std::size_t{1}, std::size_t{5}, std::size_t{1023}, std::size_t{1024},
+                                 std::size_t{1025}, std::size_t{262145}, largest}) {
+    std::vector<std::uint32_t> values(size);
+    std::generate(values.begin(), values.end(), [&] { return count(random); });
+    std::vector<std::uint32_t> expected(size);
+    std::exclusive_scan(values.begin(), values.end(), expected.begin(), std::uint32_t{0});
+    const auto buffer = gt::StorageBuffer::from(values);
+    scan.run(buffer, size);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    EXPECT_EQ(buffer.download<std::uint32_t>(size), expected) << size << " values";
+  }
+}
+
+// Only the first `count` values change.
+TEST_F(GpuExclusiveScan, LeavesValuesPastTheCountAlone) {
+  const gt::gpu::ExclusiveScan scan(4096);
+  const std::vector<std::uint32_t> values(3000, 1);
+  const auto buffer = gt::StorageBuffer::from(values);
+  scan.run(buffer, 2000);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const auto scanned = buffer.download<std::uint32_t>(values.size());
+  EXPECT_EQ(scanned[1999], 1999u);
+  EXPECT_EQ(scanned[2000], 1u);
+  EXPECT_EQ(scanned.back(), 1u);
+  EXPECT_THROW(scan.run(buffer, 4097), std::invalid_argument);
+}
+
+}  // namespace
