@@ -11,6 +11,7 @@ const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> all = [] {
     std::vector<Algorithm> list = {thermal_algorithm(), thermal_jako_algorithm()};
     for (auto& algorithm : noise_algorithms()) list.push_back(std::move(algorithm));
+    for (auto& algorithm : cave_algorithms()) list.push_back(std::move(algorithm));
     list.push_back(mesh_check_algorithm());
     return list;
   }();

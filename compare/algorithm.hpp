@@ -28,6 +28,10 @@ struct PreparedTwin {
   std::function<void(const nlohmann::json& expect, const RunOptions& options, CaseResult& result)> extra_checks;
 };
 
+// What an ad-hoc run's --input names: a heightmap (erosion; noise samples on its grid, or on a
+// --size grid without one), a mesh file (mesh.check), or nothing (the cave makes its own field).
+enum class AdHocInput { heightmap, mesh, none };
+
 struct Algorithm {
   std::string name;     // e.g. erosion.thermal
   std::string summary;  // one line
@@ -40,6 +44,7 @@ struct Algorithm {
   bool iterates = true;
   // Whether prepare() gives a field twin (PreparedTwin::twin) rather than its own `run`.
   bool has_field_twin = true;
+  AdHocInput ad_hoc_input = AdHocInput::heightmap;
   // The algorithm's own rows of the performance table (cave meshing: voxels and triangles per
   // second); unset: the generic field-twin timing of compare/benchmark.cpp, or none for `run` cases.
   std::function<std::vector<BenchmarkRow>(const BenchmarkOptions& options, bool gpu_available,

@@ -35,7 +35,15 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   CaseSpec spec;
   spec.algorithm = ad_hoc.algorithm;
   spec.origin = ad_hoc_origin;
-  if (!ad_hoc.input.empty()) {
+  if (algorithm.ad_hoc_input == AdHocInput::none) {
+    if (!ad_hoc.input.empty()) {
+      throw InputError(fmt::format("{} makes its own field from its parameters: drop --input, use --set", ad_hoc.algorithm));
+    }
+    spec.input = nlohmann::json::object();
+  } else if (algorithm.ad_hoc_input == AdHocInput::mesh) {
+    if (ad_hoc.input.empty()) throw InputError(fmt::format("{} checks a mesh: give it one with --input", ad_hoc.algorithm));
+    spec.input = {{"mesh", std::filesystem::absolute(ad_hoc.input).string()}};
+  } else if (!ad_hoc.input.empty()) {
     spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
   } else if (!algorithm.iterates) {
     spec.input = {{"generator", "flat"}, {"width", ad_hoc.width}, {"height", ad_hoc.height}, {"cell_size", ad_hoc.cell_size}};
@@ -51,7 +59,8 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
     spec.params[name] = parse_param_text(spec.algorithm, *algorithm.params, name, assignment.substr(equals + 1));
   }
   const std::string input_name =
-      ad_hoc.input.empty() ? fmt::format("{}x{}", ad_hoc.width, ad_hoc.height) : std::filesystem::path(ad_hoc.input).stem().string();
+      algorithm.ad_hoc_input == AdHocInput::none ? "params"
+      : ad_hoc.input.empty()                     ? fmt::format("{}x{}", ad_hoc.width, ad_hoc.height) : std::filesystem::path(ad_hoc.input).stem().string();
   spec.name = fmt::format("adhoc.{}.{}", ad_hoc.algorithm, input_name);
   return spec;
 }

@@ -77,6 +77,9 @@ struct BenchmarkRow {
   double median_ms = 0.0;     // one run of `iterations` iterations
   double mcell_iterations_per_s = 0.0;
   std::string device;         // CPU model or GL_RENDERER
+  int dimensions = 2;         // size^dimensions cells (3: voxels of a cave block)
+  std::optional<double> mtriangles_per_s;  // meshers: output triangles per second, millions
+  std::string note;           // why a row has no time (the size did not fit the device)
 };
 
 struct Report {

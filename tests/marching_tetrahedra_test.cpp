@@ -28,6 +28,8 @@
 
 #include <gtest/gtest.h>
 
+#include "compare/checks/cave_mesh.hpp"
+#include "compare/checks/mesh.hpp"
 #include "core/errors.hpp"
 #include "core/noise/permutation.hpp"
 #include "core/params/cave.hpp"
@@ -323,6 +325,56 @@ TEST(MarchingTetrahedra, SolidBlockIsClosedAndBoundsPositiveVolume) {
     EXPECT_TRUE(closed_and_oriented(mesh)) << cells << " cells";
     EXPECT_GT(signed_volume(mesh), 0.0);
     EXPECT_TRUE(closed_and_oriented(cave_mesh<float>(params))) << cells << " cells, float";
+  }
+}
+
+// A sample exactly at the threshold: without the edge margin every crossing edge ending there would
+// put its vertex on that lattice point (t = 1), leaving zero-area triangles pinched at one point.
+// With t clamped to [δ, 1 - δ] the air bubble around the sample is a small closed polyhedron of
+// distinct vertices within δ·√3 of it.
+TEST(MarchingTetrahedra, SampleAtTheThresholdDoesNotPinchTheSurface) {
+  gt::Volume<double> volume(3, 3, 3, -1.0);
+  volume.at(1, 1, 1) = 0.0;  // air (rock iff f < 0), surrounded by rock
+  const auto mesh = ref::marching_tetrahedra(volume, 0.0, false, {0, 0, 0});
+  ASSERT_FALSE(mesh.triangles.empty());
+  EXPECT_TRUE(closed_and_oriented(mesh));
+  const double margin = std::ldexp(1.0, -10);  // edge_margin of every edge of this block
+  for (const auto& triangle : mesh.triangles) EXPECT_GT(dot(triangle_normal(mesh, triangle), triangle_normal(mesh, triangle)), 0.0);
+  std::set<std::array<double, 3>> distinct(mesh.positions.begin(), mesh.positions.end());
+  EXPECT_EQ(distinct.size(), mesh.positions.size());
+  for (const auto& position : mesh.positions) {
+    const Vec3 offset = sub({position[0], position[1], position[2]}, {1.0, 1.0, 1.0});
+    EXPECT_LE(std::sqrt(dot(offset, offset)), margin * std::sqrt(3.0) * (1 + 1e-12));
+  }
+}
+
+// δ is a power of two of at least 2^-10 and at least 4 float ulps of the edge's largest coordinate,
+// so that a + δ and a + 1 - δ round to floats distinct from the lattice points.
+TEST(MarchingTetrahedra, EdgeMarginGrowsWithTheCoordinates) {
+  EXPECT_EQ(gt::edge_margin({0, 0, 0}, 7), std::ldexp(1.0, -10));
+  EXPECT_EQ(gt::edge_margin({2046, 0, 0}, 1), std::ldexp(1.0, -10));  // m + 1 = 2048 = 2^11
+  EXPECT_EQ(gt::edge_margin({-5001, 1233, 776}, 3), std::ldexp(1.0, -9));
+  EXPECT_EQ(gt::edge_margin({0, 0, -524288}, 4), std::ldexp(1.0, -2));
+  for (const std::int64_t coordinate : {std::int64_t{0}, std::int64_t{3000}, std::int64_t{-70000}, std::int64_t{524286}}) {
+    for (const int direction : {1, 7}) {
+      const double margin = gt::edge_margin({coordinate, 0, 0}, direction);
+      const auto lower = static_cast<float>(coordinate);
+      const auto upper = static_cast<float>(coordinate + 1);
+      EXPECT_NE(upper - static_cast<float>(margin), upper) << coordinate;
+      EXPECT_NE(lower + static_cast<float>(margin), lower) << coordinate;
+    }
+  }
+}
+
+// The seed's own lattice is full of samples at the threshold up to rounding: CGAL and OpenMesh must
+// still find its solid blocks watertight (no zero-area or touching faces), in double and in float.
+TEST(MarchingTetrahedra, SeedBlocksAreWatertightForCgalAndOpenMesh) {
+  for (int cells : {12, 30}) {
+    const auto params = seed_block({0, 0, 0}, cells, true);
+    const gt::MeshReport truth = gt::check_mesh(cave_mesh<double>(params));
+    EXPECT_TRUE(gt::is_watertight_and_oriented(truth)) << cells << " cells: " << gt::describe(truth);
+    const gt::MeshReport single = gt::check_mesh(gt::to_double_mesh(cave_mesh<float>(params)));
+    EXPECT_TRUE(gt::is_watertight_and_oriented(single)) << cells << " cells, float: " << gt::describe(single);
   }
 }
 

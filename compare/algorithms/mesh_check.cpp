@@ -75,7 +75,8 @@ Algorithm mesh_check_algorithm() {
           .params = &no_params(),
           .prepare = prepare_mesh_check,
           .iterates = false,
-          .has_field_twin = false};
+          .has_field_twin = false,
+          .ad_hoc_input = AdHocInput::mesh};
 }
 
 }  // namespace gt

@@ -475,10 +475,6 @@ std::string topology_of(const MeshReport& report) {
   return text + fmt::format("area {}", number(report.cgal.area));
 }
 
-Check informative(std::string name, double value, std::string detail) {
-  return Check{std::move(name), value, std::nullopt, std::nullopt, Outcome::pass, std::move(detail)};
-}
-
 Check zero_check(std::string name, std::size_t value, std::string detail) {
   return bounded_check(std::move(name), static_cast<double>(value), 0.0, std::nullopt, std::move(detail));
 }
@@ -596,15 +592,15 @@ std::vector<Check> mesh_checks(const MeshReport& report, const std::string& back
                                                        "characteristic and components"
                                                      : report.disagreement));
   if (!expect_closed) {
-    checks.push_back(informative(name("border_edges"), static_cast<double>(cgal.border_edges),
+    checks.push_back(informative_check(name("border_edges"), static_cast<double>(cgal.border_edges),
                                  "border edges of an open chunk (CGAL)"));
   }
-  checks.push_back(informative(name("euler"), static_cast<double>(om.euler_characteristic),
+  checks.push_back(informative_check(name("euler"), static_cast<double>(om.euler_characteristic),
                                "V - E + F (OpenMesh, non-isolated vertices)"));
-  checks.push_back(informative(name("genus"), om.genus, "(2C - chi - b) / 2 (OpenMesh)"));
-  checks.push_back(informative(name("components"), static_cast<double>(om.components), "OpenMesh"));
-  checks.push_back(informative(name("area"), cgal.area, "CGAL"));
-  checks.push_back(cgal.volume ? informative(name("volume"), *cgal.volume, "CGAL; negative when oriented inward")
+  checks.push_back(informative_check(name("genus"), om.genus, "(2C - chi - b) / 2 (OpenMesh)"));
+  checks.push_back(informative_check(name("components"), static_cast<double>(om.components), "OpenMesh"));
+  checks.push_back(informative_check(name("area"), cgal.area, "CGAL"));
+  checks.push_back(cgal.volume ? informative_check(name("volume"), *cgal.volume, "CGAL; negative when oriented inward")
                                : skipped_check(name("volume"), "the mesh is open"));
   return checks;
 }

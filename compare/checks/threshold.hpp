@@ -22,6 +22,11 @@ inline Check bounded_check(std::string name, double value, double strict, std::o
   return check;
 }
 
+// A measured value reported without a bound (always pass): sizes, topology, distances to read.
+inline Check informative_check(std::string name, double value, std::string detail) {
+  return Check{std::move(name), value, std::nullopt, std::nullopt, Outcome::pass, std::move(detail)};
+}
+
 inline Check skipped_check(std::string name, std::string reason) {
   Check check;
   check.name = std::move(name);

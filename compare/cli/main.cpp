@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
       }
       if (!grid_size.empty()) parse_grid_size(grid_size, ad_hoc);
       if (!ad_hoc.assignments.empty() && ad_hoc.algorithm.empty()) {
-        throw gt::InputError("--set applies to an ad-hoc run: give --algorithm and --input too");
+        throw gt::InputError("--set applies to an ad-hoc run: give --algorithm too");
       }
       if (!ad_hoc.algorithm.empty()) options.ad_hoc = ad_hoc;
       if (patterns.empty() && !options.ad_hoc) {

@@ -17,7 +17,7 @@ def load_rows(path):
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
     rows = data["benchmarks"] if isinstance(data, dict) else data
-    return [r for r in rows if r.get("median_ms") is not None and r.get("size")]
+    return [r for r in rows if r.get("median_ms") and r.get("size") and not r.get("note")]
 
 
 def series_by_line(rows):
@@ -50,9 +50,9 @@ def plot(rows, out_path):
         rated = [p for p in points if p[2] is not None and p[2] > 0]
         rate_axis.plot([p[0] for p in rated], [p[2] for p in rated], style, label=label)
 
-    time_axis.set(xscale="log", yscale="log", xlabel="grid side n (n × n cells)", ylabel="median ms per run",
+    time_axis.set(xscale="log", yscale="log", xlabel="side n (n × n cells; n³ voxels for 3-D rows)", ylabel="median ms per run",
                   title="Time per run (lower is better)")
-    rate_axis.set(xscale="log", yscale="log", xlabel="grid side n (n × n cells)", ylabel="Mcell-iterations / s",
+    rate_axis.set(xscale="log", yscale="log", xlabel="side n (n × n cells; n³ voxels for 3-D rows)", ylabel="Mcell-iterations / s (M voxels / s)",
                   title="Throughput (higher is better)")
     for axis in (time_axis, rate_axis):
         axis.grid(True, which="both", alpha=0.3)

@@ -135,6 +135,18 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view c
   }
 }
 
+std::string benchmark_size_text(const BenchmarkRow& row) {
+  return row.dimensions == 3 ? fmt::format("{}³", row.size) : fmt::format("{}×{}", row.size, row.size);
+}
+
+std::string benchmark_rate_text(const BenchmarkRow& row) {
+  return row.note.empty() ? format_value(row.mcell_iterations_per_s) : "not run: " + row.note;
+}
+
+std::string benchmark_triangle_rate_text(const BenchmarkRow& row) {
+  return row.mtriangles_per_s && row.note.empty() ? format_value(*row.mtriangles_per_s) : "";
+}
+
 }  // namespace gt::report_detail
 
 namespace gt {

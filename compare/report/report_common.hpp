@@ -48,6 +48,14 @@ std::string format_counts(const OutcomeCounts& counts, std::string_view separato
 std::string format_value(double value);
 // Milliseconds: whole numbers from 1000 ms up, %.3g below; "–" when absent.
 std::string format_ms(std::optional<double> ms);
+
+// "512×512" for a grid, "128³" for a volume.
+std::string benchmark_size_text(const BenchmarkRow& row);
+
+// Throughput columns: "Mcell-it/s" and "M triangles/s" (empty when the row has none), or the
+// row's note when it has no time.
+std::string benchmark_rate_text(const BenchmarkRow& row);
+std::string benchmark_triangle_rate_text(const BenchmarkRow& row);
 // "≤ threshold" plus "(warn ≤ loose)" when a loose bound exists; "" when neither exists.
 std::string format_bounds(const Check& check);
 

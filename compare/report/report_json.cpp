@@ -68,7 +68,10 @@ json benchmark_to_json(const BenchmarkRow& row) {
           {"reps", row.reps},
           {"median_ms", number_or_null(row.median_ms)},
           {"mcell_iterations_per_s", number_or_null(row.mcell_iterations_per_s)},
-          {"device", row.device}};
+          {"device", row.device},
+          {"dimensions", row.dimensions},
+          {"mtriangles_per_s", row.mtriangles_per_s ? number_or_null(*row.mtriangles_per_s) : json(nullptr)},
+          {"note", row.note}};
 }
 
 }  // namespace

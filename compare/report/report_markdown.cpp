@@ -91,12 +91,13 @@ void append_benchmarks(std::string& out, const Report& report) {
   if (report.benchmarks.empty()) {
     out += "No benchmarks in this run.\n\n";
   } else {
-    out += "| algorithm | backend | device | size | iterations | reps | median ms | Mcell-it/s (noise: M samples/s) |\n"
-           "|---|---|---|---:|---:|---:|---:|---:|\n";
+    out += "| algorithm | backend | device | size | iterations | reps | median ms | Mcell-it/s (noise: M samples/s; cave: "
+           "M voxels/s) | M triangles/s |\n"
+           "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
     for (const BenchmarkRow& row : report.benchmarks) {
-      out += fmt::format("| {} | {} | {} | {}×{} | {} | {} | {} | {} |\n", cell(row.algorithm), cell(row.backend),
-                         cell(row.device), row.size, row.size, row.iterations, row.reps,
-                         format_ms(row.median_ms), format_value(row.mcell_iterations_per_s));
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", cell(row.algorithm), cell(row.backend),
+                         cell(row.device), benchmark_size_text(row), row.iterations, row.reps,
+                         format_ms(row.median_ms), cell(benchmark_rate_text(row)), benchmark_triangle_rate_text(row));
     }
     out += '\n';
   }

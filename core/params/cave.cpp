@@ -6,6 +6,10 @@
 // limited to the two values of the digest's choice (§2.2.5) and what lies between.
 #include "core/params/cave.hpp"
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
 namespace gt {
 namespace {
 
@@ -71,6 +75,18 @@ std::uint64_t lattice_edge_key(const std::array<std::int64_t, 3>& lower_point, i
     key |= biased << (direction_bits + coordinate_bits * axis);
   }
   return key;
+}
+
+double edge_margin(const std::array<std::int64_t, 3>& lower_point, int direction) {
+  std::uint64_t largest = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::int64_t upper = lower_point[axis] + ((direction >> axis) & 1);
+    largest = std::max({largest, static_cast<std::uint64_t>(std::abs(lower_point[axis])),
+                        static_cast<std::uint64_t>(std::abs(upper))});
+  }
+  constexpr int float_mantissa_bits = 23;
+  const int exponent = static_cast<int>(std::bit_width(largest + 1)) - 1;  // 2^exponent <= largest + 1
+  return std::ldexp(1.0, std::max(-10, exponent + 2 - float_mantissa_bits));
 }
 
 LatticeEdge lattice_edge_from_key(std::uint64_t key) {

@@ -52,6 +52,21 @@ struct LatticeEdge {
 // error (the meshers check their block once, see lattice_range_fits).
 std::uint64_t lattice_edge_key(const std::array<std::int64_t, 3>& lower_point, int direction);
 
+// The edge margin δ of a lattice edge: the meshers clamp the edge parameter t to [δ, 1 - δ], so
+// that no vertex lands on a lattice point. Without it a sample exactly at the threshold (the
+// seed's noise has many: 93 in the 30³ big cube, digest §2.2.6) pulls every crossing edge it ends
+// onto itself with t = 1: distinct vertices at one point, zero-area triangles, and faces touching
+// where the surface should pass by (CGAL counts them as self-intersections). With every t strictly
+// inside its edge, the surface in each tetrahedron is a proper triangle or quad and pieces of
+// different tetrahedra meet only on shared faces.
+//   m = the largest |coordinate| of the edge's two endpoints, e = floor(log2(m + 1)) (exact, from
+//   the integer's highest bit), δ = 2^max(-10, e - 21) = max(2^-10, 4·ulp_float(m + 1))
+// so that a + δ and a + 1 - δ stay distinct from the lattice points after float rounding (2^-10
+// up to |coordinates| of 2047, 2^-9 at 5000, 2^-3 near the keys' limit 2^19). δ depends on the
+// edge alone, so every block and chunk sharing an edge clamps it alike; a power of two, so 1 - δ
+// is exact in float and double. The shift is at most δ·√3 lattice units.
+double edge_margin(const std::array<std::int64_t, 3>& lower_point, int direction);
+
 // The inverse of lattice_edge_key.
 LatticeEdge lattice_edge_from_key(std::uint64_t key);
 

@@ -104,7 +104,9 @@ std::array<Real, 3> CaveMeshBuilder<Real>::vertex_position(const LatticePoint& l
   if (placement_ == EdgePlacement::linear && !is_pad(lower) && !is_pad(upper)) {
     const Real lower_value = density_.at(lower[0], lower[1], lower[2]);
     const Real upper_value = density_.at(upper[0], upper[1], upper[2]);
-    t = (threshold_ - lower_value) / (upper_value - lower_value);
+    const auto margin = static_cast<Real>(edge_margin(
+        {lattice_origin_[0] + lower[0], lattice_origin_[1] + lower[1], lattice_origin_[2] + lower[2]}, direction));
+    t = std::clamp((threshold_ - lower_value) / (upper_value - lower_value), margin, Real(1) - margin);
   }
   const LatticePoint step = corner_offset(direction);
   std::array<Real, 3> position{};

@@ -17,13 +17,15 @@
 // Vertex on the edge from lower point a to upper point b = a + d (d in {0, 1}³, the meshers only
 // use edges whose endpoints differ by such a d, so "lower" is the endpoint with the smaller
 // global coordinates):
-//   t = (threshold - v_a) / (v_b - v_a)          linear placement, both endpoints inside
+//   t = clamp((threshold - v_a) / (v_b - v_a), δ, 1 - δ)   linear placement, both endpoints inside
+//                                                (δ = edge_margin(global a, d) of core/params/cave.hpp)
 //   t = 0.5                                      midpoint placement, or either endpoint a pad sample
 //   position_c = Real(a_c) + t·Real(d_c)         per axis c, a_c the global coordinate
 // (= P_a + t·(P_b - P_a), whose difference d is exact). t is computed from the canonically ordered
 // edge, so every cube and every chunk that shares the edge gets the same bits. On a crossing edge
 // one value is below the threshold and the other not, so v_b ≠ v_a and 0 <= t <= 1 (rounding is
-// monotonic); t = 0 or 1 only when a value equals the threshold exactly (degenerate triangles).
+// monotonic); t = 0 or 1 when a value equals the threshold exactly, which the clamp to [δ, 1 - δ]
+// keeps off the lattice points (otherwise: zero-area triangles and touching faces).
 // Pad decision: the cap of a solid block crosses every edge to the pad at its midpoint, half a
 // lattice unit outside the block's faces, independent of the values: simple, exact in float, and
 // the same on both twins. (Treating the pad as a value such as threshold + 1 would move the cap

@@ -24,7 +24,8 @@
 //      subset of the other's; the subset corner is the lower endpoint a, d = upper - lower.
 //   5. Vertex index: order of first use (lattice_cubes.hpp); edge_keys[i] = key of vertex i's edge.
 //   6. Vertex position, each operation rounded once in Real: t = (threshold - v_a) / (v_b - v_a)
-//      on the canonically ordered edge (0.5 at the pad or with midpoint placement), then
+//      on the canonically ordered edge, clamped to [δ, 1 - δ] (core/params/cave.hpp edge_margin;
+//      0.5 at the pad or with midpoint placement), then
 //      position_c = Real(a_c) + t·Real(d_c) (exact for d_c = 0 and the product exact for d_c = 1,
 //      so a fused multiply-add changes nothing).
 //

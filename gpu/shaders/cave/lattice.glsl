@@ -5,8 +5,9 @@
 // 0..sample_counts - 1, solid blocks only) are air.
 // Cube corner c = dx + 2·dy + 4·dz at the cube's lower corner + (dx, dy, dz). An edge of a cube is
 // a pair of corners (lower, upper) whose bits nest; its direction is upper - lower.
-// Vertex on the edge from lower point a to a + d: t = (threshold - v_a) / (v_b - v_a) with linear
-// placement and both endpoints inside, else 0.5; position_c = float(global a_c) + t·float(d_c),
+// Vertex on the edge from lower point a to a + d: t = clamp((threshold - v_a) / (v_b - v_a), δ,
+// 1 - δ) with linear placement and both endpoints inside (δ = edge_margin below, a power of two, as
+// core/params/cave.hpp defines it), else 0.5; position_c = float(global a_c) + t·float(d_c),
 // all `precise` (no fused multiply-add), so llvmpipe repeats the float reference bit for bit. The
 // division is the reference's; GLSL only promises 2.5 ulp for it, so another GPU (NVIDIA) may
 // differ by that much in t where llvmpipe, which divides correctly rounded, does not.
@@ -35,6 +36,14 @@ uint rock_corners(ivec3 cube) {
   return bits;
 }
 
+// δ of the edge from global point a to a + step: 2^max(-10, e - 21) with 2^e <= m + 1 < 2^(e+1),
+// m the largest |coordinate| of the two endpoints (exact: the highest bit of an integer).
+float edge_margin(ivec3 global_lower, ivec3 step) {
+  uvec3 magnitudes = uvec3(max(abs(global_lower), abs(global_lower + step)));
+  uint largest = max(magnitudes.x, max(magnitudes.y, magnitudes.z));
+  return ldexp(1.0, max(-10, findMSB(largest + 1u) - 21));
+}
+
 // Where on the edge from local point `lower` to lower + step the vertex sits (0 at lower).
 float edge_parameter(ivec3 lower, ivec3 step) {
   ivec3 upper = lower + step;
@@ -42,7 +51,8 @@ float edge_parameter(ivec3 lower, ivec3 step) {
   precise float lower_value = density[sample_index(lower)];
   precise float upper_value = density[sample_index(upper)];
   precise float t = (threshold - lower_value) / (upper_value - lower_value);
-  return t;
+  float margin = edge_margin(lattice_origin.xyz + lower, step);
+  return clamp(t, margin, 1.0 - margin);
 }
 
 vec3 vertex_position(ivec3 lower, int direction) {

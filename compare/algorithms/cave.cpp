@@ -1,0 +1,447 @@
+// The driver's view of seed 004's cave block (digest §2.2–2.8, issue 5): one block of the seed's
+// density meshed by marching tetrahedra (CPU in double and float, GPU) or by the seed's marching
+// cubes (CPU only, the variant that fails), with the watertightness, parity, volume and normal
+// checks; and the performance rows of the mesher (voxels and triangles per second).
+//
+// Checks of a block case (backend cpu = ref<double>, the truth; gpu = the GPU twin):
+//   mesh.*.{cpu,gpu}                 compare/checks/mesh.hpp (closed only for a solid block)
+//   mesh.border_off_box.{cpu,gpu}    open chunk: border edges not on the block's faces (must be 0)
+//   mesh.holes.cpu                   boundary loops of a solid block (marching cubes' holes)
+//   spec.triangles.cpu               the case's expected triangle count (of ref<double>: the float
+//                                    twins may differ where samples change side, see below)
+//   volume.mesh_vs_field.cpu         solid: |CGAL volume - rock samples| against the cut-cube
+//                                    bound of compare/checks/cave_mesh.hpp
+//   normals.angle_*.cpu              seed's central differences vs the analytic gradient (degrees)
+//   parity.topology.{float,gpu}_vs_double   triangles (by edge keys) in one mesh only that no side
+//                                    change explains (must be 0): a sample that is rock in one
+//                                    precision and air in the other changes the cases of the cubes
+//                                    it is a corner of and nothing else, so every differing
+//                                    triangle must lie in such a cube
+//   parity.vertex_model.{float,gpu}_vs_double   largest vertex distance / per-vertex bound (<= 1):
+//                                    t = (θ - v_a)/(v_b - v_a) moves by at most 3ε/(|v_b - v_a| - 2ε)
+//                                    (1 when |v_b - v_a| <= 2ε) for density error ε (measured:
+//                                    max |ref<float> - ref<double>| over the block), plus the
+//                                    float roundings of t (4u, GLSL's division included) and of
+//                                    the position (u·(|a| + 1)); √3 for the three axes
+//   parity.hausdorff_bound.gpu_vs_double   same triangles: the largest vertex distance bounds the
+//                                    Hausdorff distance between the two surfaces
+//   parity.topology.gpu_vs_float, parity.max_abs.gpu_vs_float   the same float operations: equal
+//                                    index buffers and keys; positions within GLSL's division
+//                                    error (3u of t plus one rounding of the position), 0 on llvmpipe
+//   determinism.gpu                  vertices or triangles differing between two GPU runs
+// Meshes are written beside the report as mesh.cpu.<format> and mesh.gpu.<format>.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/checks/cave_mesh.hpp"
+#include "compare/checks/error_model.hpp"
+#include "compare/checks/mesh.hpp"
+#include "compare/checks/threshold.hpp"
+#include "compare/timing.hpp"
+#include "core/errors.hpp"
+#include "core/io/mesh_io.hpp"
+#include "core/params/cave.hpp"
+#include "gpu/cave/marching_tetrahedra.hpp"
+#include "gpu/timing.hpp"
+#include "reference/cave/density.hpp"
+#include "reference/cave/marching_cubes.hpp"
+#include "reference/cave/marching_tetrahedra.hpp"
+#include "reference/cave/normals.hpp"
+
+namespace gt {
+namespace {
+
+using reference::EdgePlacement;
+
+enum class Mesher { tetrahedra, cubes };
+
+struct Block {
+  CaveParams params;
+  Mesher mesher = Mesher::tetrahedra;
+  EdgePlacement placement = EdgePlacement::linear;
+  std::string mesh_format = "ply";
+};
+
+const ParamSpecs& block_specs(Mesher mesher) {
+  static const auto make = [](const char* default_placement) {
+    ParamSpecs specs = cave_param_specs();
+    specs.push_back({"placement", ParamKind::choice, default_placement, 0, 0, {"linear", "midpoint"}, "",
+                     "vertex on a crossing edge: linear interpolation (the seed's final version) or the midpoint"});
+    specs.push_back({"mesh_format", ParamKind::choice, "ply", 0, 0, {"ply", "obj", "off"}, "",
+                     "file format of the meshes written beside the report"});
+    return specs;
+  };
+  static const ParamSpecs tetrahedra = make("linear");
+  static const ParamSpecs cubes = make("midpoint");
+  return mesher == Mesher::tetrahedra ? tetrahedra : cubes;
+}
+
+std::array<std::int64_t, 3> lattice_origin(const CaveParams& params) {
+  return {params.origin[0], params.origin[1], params.origin[2]};
+}
+
+LatticeBox block_box(const CaveParams& params) {
+  LatticeBox box{};
+  for (int axis = 0; axis < 3; ++axis) {
+    box.low[axis] = params.origin[axis];
+    box.high[axis] = std::int64_t{params.origin[axis]} + params.size[axis];
+  }
+  return box;
+}
+
+template <class Real>
+TriangleMesh<Real> mesh_block(const Block& block, const Volume<Real>& density) {
+  const auto threshold = static_cast<Real>(block.params.threshold);
+  const auto origin = lattice_origin(block.params);
+  return block.mesher == Mesher::tetrahedra
+             ? reference::marching_tetrahedra(density, threshold, block.params.solid, origin, block.placement)
+             : reference::marching_cubes(density, threshold, block.params.solid, origin, block.placement);
+}
+
+double max_abs_difference(const Volume<float>& single, const Volume<double>& truth) {
+  double largest = 0.0;
+  for (std::size_t sample = 0; sample < truth.values.size(); ++sample) {
+    largest = std::max(largest, std::abs(double(single.values[sample]) - truth.values[sample]));
+  }
+  return largest;
+}
+
+// Global lattice points of the samples that are rock in one precision and air in the other.
+std::vector<std::array<std::int64_t, 3>> side_changes(const Volume<float>& single, const Volume<double>& truth,
+                                                      const CaveParams& params) {
+  std::vector<std::array<std::int64_t, 3>> changes;
+  const auto threshold_float = static_cast<float>(params.threshold);
+  for (int z = 0; z < truth.nz; ++z) {
+    for (int y = 0; y < truth.ny; ++y) {
+      for (int x = 0; x < truth.nx; ++x) {
+        if ((single.at(x, y, z) < threshold_float) != (truth.at(x, y, z) < params.threshold)) {
+          changes.push_back({std::int64_t{params.origin[0]} + x, std::int64_t{params.origin[1]} + y,
+                             std::int64_t{params.origin[2]} + z});
+        }
+      }
+    }
+  }
+  return changes;
+}
+
+// The per-vertex bound of parity.vertex_model (see the file comment).
+std::function<double(std::uint64_t)> vertex_bound(const Block& block, const Volume<double>& density,
+                                                  double density_error) {
+  return [&block, &density, density_error](std::uint64_t key) {
+    const LatticeEdge edge = lattice_edge_from_key(key);
+    std::array<int, 3> lower{}, upper{};
+    double magnitude = 0.0;
+    bool inside = true;
+    for (int axis = 0; axis < 3; ++axis) {
+      lower[axis] = static_cast<int>(edge.lower_point[axis] - block.params.origin[axis]);
+      upper[axis] = lower[axis] + ((edge.direction >> axis) & 1);
+      magnitude = std::max(magnitude, std::abs(double(edge.lower_point[axis])) + 1.0);
+      const int samples = block.params.size[axis] + 1;
+      inside = inside && lower[axis] >= 0 && upper[axis] < samples;
+    }
+    double t_error = 0.0;
+    if (inside && block.placement == EdgePlacement::linear) {
+      const double spread = std::abs(density.at(upper[0], upper[1], upper[2]) - density.at(lower[0], lower[1], lower[2]));
+      t_error = spread > 2.0 * density_error ? std::min(1.0, 3.0 * density_error / (spread - 2.0 * density_error)) : 1.0;
+    }
+    return std::sqrt(3.0) * (t_error + unit_roundoff_float * (4.0 + magnitude));
+  };
+}
+
+struct BlockMeshes {
+  Volume<double> density;
+  Mesh truth;                  // ref<double>
+  Volume<float> density_float;
+  TriangleMesh<float> single;  // ref<float>, what the GPU must reproduce
+};
+
+void add_expected_triangles(const nlohmann::json& expect, std::size_t triangles, const std::string& backend,
+                            CaseResult& result) {
+  if (!expect.is_object() || !expect.contains("triangles")) return;
+  const double expected = expect["triangles"];
+  result.checks.push_back(bounded_check("spec.triangles." + backend, std::abs(double(triangles) - expected), 0.0,
+                                        std::nullopt, fmt::format("{} triangles, {} expected", triangles, expected)));
+}
+
+// The checks every mesh of a block gets, on either backend.
+void add_block_mesh_checks(const Block& block, const Mesh& mesh, const std::string& backend,
+                           const nlohmann::json& expect, CaseResult& result, MeshReport& report) {
+  report = check_mesh(mesh);
+  const auto checks = mesh_checks(report, backend, block.params.solid);
+  result.checks.insert(result.checks.end(), checks.begin(), checks.end());
+  if (block.params.solid) {
+    result.checks.push_back(informative_check("mesh.holes." + backend, double(report.openmesh.boundary_loops),
+                                              "boundary loops of a block that should be closed (OpenMesh)"));
+  } else {
+    result.checks.push_back(bounded_check("mesh.border_off_box." + backend,
+                                          double(border_edges_off_box(mesh, block_box(block.params))), 0.0,
+                                          std::nullopt, "border edges not lying on a face of the block's box"));
+  }
+}
+
+void add_volume_check(const Block& block, const BlockMeshes& meshes, const MeshReport& report, CaseResult& result) {
+  if (!block.params.solid) return;
+  if (!report.cgal.volume) {
+    result.checks.push_back(skipped_check("volume.mesh_vs_field.cpu", "CGAL gives no volume for an open mesh"));
+    return;
+  }
+  const FieldVolume field = volume_bound_from_field(meshes.density, block.params.threshold);
+  result.checks.push_back(bounded_check(
+      "volume.mesh_vs_field.cpu", std::abs(*report.cgal.volume - field.rock_samples), field.bound, std::nullopt,
+      fmt::format("mesh volume {:.6g} vs {} rock samples (lattice units³); bound: Σ max(k, 8 - k)/8 over the {} cubes "
+                  "the surface cuts (k rock corners)",
+                  *report.cgal.volume, field.rock_samples, field.cut_cubes)));
+}
+
+void add_normal_checks(const Block& block, const Mesh& mesh, CaseResult& result) {
+  if (mesh.positions.empty()) return;
+  auto angles = reference::normal_angles(reference::central_difference_normals(mesh, block.params),
+                                         reference::gradient_normals(mesh, block.params));
+  for (double& angle : angles) angle *= 180.0 / M_PI;
+  const double largest = *std::max_element(angles.begin(), angles.end());
+  const std::string model = fmt::format(
+      "central differences (step 1, the seed's) vs the analytic gradient, degrees; error h²/6·f''' for h = {:g} noise "
+      "units{}",
+      1.0 / block.params.scale,
+      block.params.kernel_radius_squared > 0.5 ? ", plus the jumps of kernel 0.6 across simplex faces" : "");
+  result.checks.push_back(informative_check("normals.angle_median.cpu", median(angles), model));
+  result.checks.push_back(informative_check("normals.angle_max.cpu", largest, model));
+}
+
+// Mesh `single` (float arithmetic: ref<float> or the GPU) against ref<double>.
+void add_vs_double(const Block& block, const BlockMeshes& meshes, const TriangleMesh<float>& single,
+                   const std::string& name, CaseResult& result) {
+  const auto changes = side_changes(meshes.density_float, meshes.density, block.params);
+  const auto differing = triangles_in_one_only(key_triangles(single), key_triangles(meshes.truth));
+  const auto unexplained = std::count_if(differing.begin(), differing.end(), [&](const KeyTriangle& triangle) {
+    const LatticeBox cube = triangle_cube(triangle);
+    return std::none_of(changes.begin(), changes.end(), [&](const auto& point) { return cube.contains(point); });
+  });
+  result.checks.push_back(bounded_check(
+      "parity.topology." + name, double(unexplained), 0.0, std::nullopt,
+      fmt::format("triangles (by edge keys) in one mesh only whose cube has none of the samples that are rock in one "
+                  "precision and air in the other; {} triangles differ, {} samples change side (the seed's lattice has "
+                  "many samples at the threshold up to rounding)",
+                  differing.size(), changes.size())));
+  const double density_error = max_abs_difference(meshes.density_float, meshes.density);
+  const VertexComparison vertices = compare_vertices(single, meshes.truth, vertex_bound(block, meshes.density, density_error));
+  result.checks.push_back(bounded_check(
+      "parity.vertex_model." + name, vertices.max_bound_ratio, 1.0, std::nullopt,
+      fmt::format("largest vertex distance / its bound over {} shared vertices; density error ε = {:.3g} (float vs "
+                  "double, measured); bound √3·(min(1, 3ε/(|Δv| - 2ε)) + u·(4 + |a|))",
+                  vertices.matched, density_error)));
+  if (differing.empty()) {
+    result.checks.push_back(informative_check(
+        "parity.hausdorff_bound." + name, vertices.max_distance,
+        "same triangles by edge key: the largest vertex distance bounds the Hausdorff distance (lattice units)"));
+  }
+}
+
+void write_mesh_artifact(const Block& block, const Mesh& mesh, const std::string& backend, const RunOptions& options,
+                         CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const std::string relative = fmt::format("{}/mesh.{}.{}", result.name, backend, block.mesh_format);
+  std::filesystem::create_directories(options.report_dir / result.name);
+  write_mesh(mesh, options.report_dir / relative);
+  result.artifacts.push_back({relative, "mesh", fmt::format("{} mesh, {} triangles", backend, mesh.triangles.size())});
+}
+
+BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseResult& result) {
+  if (options.progress) options.progress->stage("CPU reference (double)");
+  BlockMeshes meshes;
+  std::vector<double> times;
+  for (int rep = 0; rep < std::max(options.cpu_reps, 1); ++rep) {
+    times.push_back(cpu_wall_ms([&] {
+      meshes.density = reference::cave_density<double>(block.params);
+      meshes.truth = mesh_block(block, meshes.density);
+    }));
+  }
+  result.timings.cpu_ms = median(times);
+  result.timings.cpu_reps = static_cast<int>(times.size());
+  meshes.density_float = reference::cave_density<float>(block.params);
+  meshes.single = mesh_block(block, meshes.density_float);
+  return meshes;
+}
+
+gpu::EdgePlacement gpu_placement(EdgePlacement placement) {
+  return placement == EdgePlacement::linear ? gpu::EdgePlacement::linear : gpu::EdgePlacement::midpoint;
+}
+
+TriangleMesh<float> run_gpu(const Block& block, const RunOptions& options, CaseResult& result) {
+  if (options.progress) options.progress->stage("GPU");
+  gpu::MarchingTetrahedra mesher(block.params, gpu_placement(block.placement));
+  mesher.run();
+  const TriangleMesh<float> first = mesher.result();
+  std::vector<double> times;
+  for (int rep = 0; rep < options.gpu_reps; ++rep) times.push_back(gpu_wall_ms([&] { mesher.run(); }));
+  if (!times.empty()) {
+    result.timings.gpu_ms = median(times);
+    result.timings.gpu_reps = static_cast<int>(times.size());
+  }
+  mesher.run();
+  const TriangleMesh<float> second = mesher.result();
+  const VertexComparison repeat = compare_vertices(first, second);
+  const std::size_t changed = repeat.bit_differences + repeat.only_in_a + repeat.only_in_b +
+                              (first.triangles == second.triangles ? 0 : 1);
+  result.checks.push_back(bounded_check("determinism.gpu", double(changed), 0.0, std::nullopt,
+                                        "vertices (and the index buffer) differing between two GPU runs"));
+  return first;
+}
+
+void add_gpu_vs_float(const TriangleMesh<float>& gpu_mesh, const TriangleMesh<float>& single, CaseResult& result) {
+  const bool same_buffers = gpu_mesh.triangles == single.triangles && gpu_mesh.edge_keys == single.edge_keys;
+  const std::size_t differing = same_buffers ? 0 : std::max<std::size_t>(1, triangle_difference(key_triangles(gpu_mesh), key_triangles(single)));
+  result.checks.push_back(bounded_check("parity.topology.gpu_vs_float", double(differing), 0.0, std::nullopt,
+                                        "triangles differing from ref<float> (index buffer, edge keys, order)"));
+  const VertexComparison vertices = compare_vertices(gpu_mesh, single);
+  double magnitude = 0.0;
+  for (const auto& position : single.positions) {
+    for (float coordinate : position) magnitude = std::max(magnitude, std::abs(double(coordinate)));
+  }
+  const double bound = std::sqrt(3.0) * unit_roundoff_float * (3.0 + 2.0 * (magnitude + 1.0));
+  result.checks.push_back(bounded_check(
+      "parity.max_abs.gpu_vs_float", vertices.max_distance, bound, std::nullopt,
+      fmt::format("largest vertex distance; same float operations, GLSL's division within 2.5 ulp: 3u of t plus one "
+                  "rounding of positions up to {:g}; {} of {} vertices differ in any bit",
+                  magnitude, vertices.bit_differences, vertices.matched)));
+}
+
+void run_block(const Block& block, const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+  result.input = fmt::format("seed 004 density, {}x{}x{} cells at ({}, {}, {}), scale {:g}, kernel {:g}, {}",
+                             block.params.size[0], block.params.size[1], block.params.size[2], block.params.origin[0],
+                             block.params.origin[1], block.params.origin[2], block.params.scale,
+                             block.params.kernel_radius_squared, block.params.solid ? "solid" : "open chunk");
+  const BlockMeshes meshes = run_reference(block, options, result);
+  if (options.progress) options.progress->stage("CGAL and OpenMesh (cpu)");
+  MeshReport cpu_report;
+  add_block_mesh_checks(block, meshes.truth, "cpu", expect, result, cpu_report);
+  add_expected_triangles(expect, meshes.truth.triangles.size(), "cpu", result);
+  add_volume_check(block, meshes, cpu_report, result);
+  add_normal_checks(block, meshes.truth, result);
+  add_vs_double(block, meshes, meshes.single, "float_vs_double", result);
+  write_mesh_artifact(block, meshes.truth, "cpu", options, result);
+
+  if (block.mesher == Mesher::cubes) {
+    result.checks.push_back(skipped_check("parity.gpu", "the seed's marching cubes has no GPU twin: it is kept on the "
+                                                        "CPU as the variant whose holes the checks must catch"));
+    return;
+  }
+  if (!options.gpu_available) {
+    for (const char* name : {"mesh.gpu", "parity.gpu_vs_float", "parity.gpu_vs_double", "determinism.gpu"}) {
+      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    }
+    return;
+  }
+  const TriangleMesh<float> gpu_mesh = run_gpu(block, options, result);
+  add_gpu_vs_float(gpu_mesh, meshes.single, result);
+  add_vs_double(block, meshes, gpu_mesh, "gpu_vs_double", result);
+  if (options.progress) options.progress->stage("CGAL and OpenMesh (gpu)");
+  const Mesh gpu_double = to_double_mesh(gpu_mesh);
+  MeshReport gpu_report;
+  add_block_mesh_checks(block, gpu_double, "gpu", expect, result, gpu_report);
+  write_mesh_artifact(block, gpu_double, "gpu", options, result);
+}
+
+Block block_from_json(Mesher mesher, const nlohmann::json& resolved) {
+  Block block;
+  block.params = cave_params_from_json(resolved);
+  block.mesher = mesher;
+  block.placement = resolved.at("placement") == "linear" ? EdgePlacement::linear : EdgePlacement::midpoint;
+  block.mesh_format = resolved.at("mesh_format");
+  const std::array<std::int64_t, 3> samples = {block.params.size[0] + 1, block.params.size[1] + 1,
+                                               block.params.size[2] + 1};
+  if (!lattice_range_fits(lattice_origin(block.params), samples, block.params.solid)) {
+    throw InputError("the block (with its pad) leaves the lattice range of the edge keys, ±2^19 per axis");
+  }
+  return block;
+}
+
+PreparedTwin prepare_block(Mesher mesher, const nlohmann::json& resolved, const LoadedInput& input) {
+  if (input.heights.size() != 0 || input.mesh) {
+    throw InputError("the cave makes its own density from its parameters: give the case no input");
+  }
+  PreparedTwin prepared;
+  prepared.run = [block = block_from_json(mesher, resolved)](const nlohmann::json& expect, const RunOptions& options,
+                                                            CaseResult& result) { run_block(block, expect, options, result); };
+  return prepared;
+}
+
+// ---- performance rows: a solid block of side n, seed 004's density, marching tetrahedra ----------
+
+constexpr int benchmark_sides[] = {32, 64, 128, 256};
+
+BenchmarkRow mesher_row(const std::string& backend, int side, int reps, const std::vector<double>& times,
+                        std::size_t triangles, const std::string& device) {
+  BenchmarkRow row{"cave.marching_tetrahedra", backend, side, 1, reps, median(times), 0.0, device};
+  row.dimensions = 3;
+  row.mcell_iterations_per_s = std::pow(double(side), 3) / (row.median_ms * 1e-3) / 1e6;
+  row.mtriangles_per_s = double(triangles) / (row.median_ms * 1e-3) / 1e6;
+  return row;
+}
+
+std::vector<BenchmarkRow> benchmark_mesher(const BenchmarkOptions& options, bool gpu_available,
+                                           const Environment& environment) {
+  std::vector<BenchmarkRow> rows;
+  for (const int side : benchmark_sides) {
+    CaveParams params;
+    params.size = {side, side, side};
+    std::vector<double> cpu_times;
+    std::size_t triangles = 0;
+    for (int rep = 0; rep < options.reps; ++rep) {
+      cpu_times.push_back(cpu_wall_ms([&] {
+        const auto density = reference::cave_density<double>(params);
+        triangles = reference::marching_tetrahedra(density, params.threshold, params.solid, lattice_origin(params))
+                        .triangles.size();
+      }));
+    }
+    rows.push_back(mesher_row("cpu", side, options.reps, cpu_times, triangles, environment.cpu));
+    if (!gpu_available) continue;
+    try {
+      gpu::MarchingTetrahedra mesher(params);
+      mesher.run();
+      std::vector<double> gpu_times;
+      for (int rep = 0; rep < options.reps; ++rep) gpu_times.push_back(gpu_wall_ms([&] { mesher.run(); }));
+      rows.push_back(mesher_row("gpu", side, options.reps, gpu_times, triangles, environment.gl_renderer));
+    } catch (const std::runtime_error& error) {
+      BenchmarkRow row{"cave.marching_tetrahedra", "gpu", side, 1, 0, 0.0, 0.0, environment.gl_renderer};
+      row.dimensions = 3;
+      row.note = error.what();
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+}  // namespace
+
+std::vector<Algorithm> cave_algorithms() {
+  return {
+      {.name = "cave.marching_tetrahedra",
+       .summary = "seed 004's cave block meshed by marching tetrahedra, welded by lattice edge key (CPU and GPU)",
+       .source = "seed 004 digest §2.2-2.6, §2.8 (Kuhn decomposition, oriented case table)",
+       .params = &block_specs(Mesher::tetrahedra),
+       .prepare = [](const nlohmann::json& resolved,
+                     const LoadedInput& input) { return prepare_block(Mesher::tetrahedra, resolved, input); },
+       .iterates = false,
+       .has_field_twin = false,
+       .ad_hoc_input = AdHocInput::none,
+       .benchmark = benchmark_mesher},
+      {.name = "cave.marching_cubes",
+       .summary = "the seed's dropped marching cubes (14 base cases, midpoints, no disambiguation): the variant with holes",
+       .source = "seed 004 digest §2.5",
+       .params = &block_specs(Mesher::cubes),
+       .prepare = [](const nlohmann::json& resolved,
+                     const LoadedInput& input) { return prepare_block(Mesher::cubes, resolved, input); },
+       .iterates = false,
+       .has_field_twin = false,
+       .ad_hoc_input = AdHocInput::none},
+  };
+}
+
+}  // namespace gt

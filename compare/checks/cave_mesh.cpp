@@ -1,0 +1,176 @@
+// Keyed cave mesh comparisons; see cave_mesh.hpp.
+#include "compare/checks/cave_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "core/params/cave.hpp"
+
+namespace gt {
+
+template <class Real>
+std::vector<KeyTriangle> key_triangles(const TriangleMesh<Real>& mesh) {
+  std::vector<KeyTriangle> keyed;
+  keyed.reserve(mesh.triangles.size());
+  for (const auto& triangle : mesh.triangles) {
+    KeyTriangle keys = {mesh.edge_keys[triangle[0]], mesh.edge_keys[triangle[1]], mesh.edge_keys[triangle[2]]};
+    std::rotate(keys.begin(), std::min_element(keys.begin(), keys.end()), keys.end());
+    keyed.push_back(keys);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  return keyed;
+}
+
+std::vector<KeyTriangle> triangles_in_one_only(const std::vector<KeyTriangle>& a, const std::vector<KeyTriangle>& b) {
+  std::vector<KeyTriangle> difference;
+  std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(difference));
+  return difference;
+}
+
+std::size_t triangle_difference(const std::vector<KeyTriangle>& a, const std::vector<KeyTriangle>& b) {
+  return triangles_in_one_only(a, b).size();
+}
+
+LatticeBox triangle_cube(const KeyTriangle& triangle) {
+  LatticeBox box{lattice_edge_from_key(triangle[0]).lower_point, lattice_edge_from_key(triangle[0]).lower_point};
+  for (const std::uint64_t key : triangle) {
+    const LatticeEdge edge = lattice_edge_from_key(key);
+    for (int axis = 0; axis < 3; ++axis) {
+      box.low[axis] = std::min(box.low[axis], edge.lower_point[axis]);
+      box.high[axis] = std::max(box.high[axis], edge.lower_point[axis] + ((edge.direction >> axis) & 1));
+    }
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (box.low[axis] == box.high[axis]) {
+      --box.low[axis];
+      ++box.high[axis];
+    }
+  }
+  return box;
+}
+
+template <class Real>
+Mesh to_double_mesh(const TriangleMesh<Real>& mesh) {
+  Mesh out;
+  out.triangles = mesh.triangles;
+  out.edge_keys = mesh.edge_keys;
+  out.positions.reserve(mesh.positions.size());
+  for (const auto& position : mesh.positions) {
+    out.positions.push_back({double(position[0]), double(position[1]), double(position[2])});
+  }
+  return out;
+}
+
+template <class RealA, class RealB>
+VertexComparison compare_vertices(const TriangleMesh<RealA>& a, const TriangleMesh<RealB>& b,
+                                  const std::function<double(std::uint64_t)>& bound) {
+  std::unordered_map<std::uint64_t, std::uint32_t> index_in_b;
+  index_in_b.reserve(b.edge_keys.size());
+  for (std::uint32_t vertex = 0; vertex < b.edge_keys.size(); ++vertex) index_in_b.emplace(b.edge_keys[vertex], vertex);
+  VertexComparison comparison;
+  for (std::uint32_t vertex = 0; vertex < a.edge_keys.size(); ++vertex) {
+    const auto found = index_in_b.find(a.edge_keys[vertex]);
+    if (found == index_in_b.end()) {
+      ++comparison.only_in_a;
+      continue;
+    }
+    ++comparison.matched;
+    double squared = 0.0;
+    bool differs = false;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double pa = a.positions[vertex][axis];
+      const double pb = b.positions[found->second][axis];
+      differs = differs || pa != pb;
+      squared += (pa - pb) * (pa - pb);
+    }
+    const double distance = std::sqrt(squared);
+    comparison.bit_differences += differs ? 1 : 0;
+    comparison.max_distance = std::max(comparison.max_distance, distance);
+    if (bound) comparison.max_bound_ratio = std::max(comparison.max_bound_ratio, distance / bound(a.edge_keys[vertex]));
+  }
+  comparison.only_in_b = b.edge_keys.size() - comparison.matched;
+  return comparison;
+}
+
+template <class Real>
+std::vector<std::array<std::uint32_t, 2>> border_edges(const TriangleMesh<Real>& mesh) {
+  // Undirected edge -> (uses, the directed pair of its first use).
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<int, std::array<std::uint32_t, 2>>> uses;
+  for (const auto& triangle : mesh.triangles) {
+    for (int corner = 0; corner < 3; ++corner) {
+      const std::uint32_t from = triangle[corner];
+      const std::uint32_t to = triangle[(corner + 1) % 3];
+      auto& use = uses[{std::min(from, to), std::max(from, to)}];
+      if (use.first++ == 0) use.second = {from, to};
+    }
+  }
+  std::vector<std::array<std::uint32_t, 2>> border;
+  for (const auto& [edge, use] : uses) {
+    if (use.first == 1) border.push_back(use.second);
+  }
+  return border;
+}
+
+bool key_on_plane(std::uint64_t key, int axis, std::int64_t value) {
+  const LatticeEdge edge = lattice_edge_from_key(key);
+  return edge.lower_point[axis] == value && ((edge.direction >> axis) & 1) == 0;
+}
+
+template <class Real>
+std::size_t border_edges_off_box(const TriangleMesh<Real>& mesh, const LatticeBox& box) {
+  std::size_t off_box = 0;
+  for (const auto& edge : border_edges(mesh)) {
+    bool on_a_face = false;
+    for (int axis = 0; axis < 3 && !on_a_face; ++axis) {
+      for (const std::int64_t plane : {box.low[axis], box.high[axis]}) {
+        on_a_face = on_a_face || (key_on_plane(mesh.edge_keys[edge[0]], axis, plane) &&
+                                  key_on_plane(mesh.edge_keys[edge[1]], axis, plane));
+      }
+    }
+    off_box += on_a_face ? 0 : 1;
+  }
+  return off_box;
+}
+
+FieldVolume volume_bound_from_field(const Volume<double>& density, double threshold) {
+  const auto rock = [&](int x, int y, int z) {
+    const bool inside = x >= 0 && y >= 0 && z >= 0 && x < density.nx && y < density.ny && z < density.nz;
+    return inside && density.at(x, y, z) < threshold;
+  };
+  FieldVolume volume;
+  for (int z = 0; z < density.nz; ++z) {
+    for (int y = 0; y < density.ny; ++y) {
+      for (int x = 0; x < density.nx; ++x) volume.rock_samples += rock(x, y, z) ? 1.0 : 0.0;
+    }
+  }
+  for (int z = -1; z < density.nz; ++z) {
+    for (int y = -1; y < density.ny; ++y) {
+      for (int x = -1; x < density.nx; ++x) {
+        int rock_corners = 0;
+        for (int corner = 0; corner < 8; ++corner) {
+          rock_corners += rock(x + (corner & 1), y + ((corner >> 1) & 1), z + (corner >> 2)) ? 1 : 0;
+        }
+        if (rock_corners == 0 || rock_corners == 8) continue;
+        ++volume.cut_cubes;
+        volume.bound += std::max(rock_corners, 8 - rock_corners) / 8.0;
+      }
+    }
+  }
+  return volume;
+}
+
+template std::vector<KeyTriangle> key_triangles(const TriangleMesh<float>&);
+template std::vector<KeyTriangle> key_triangles(const TriangleMesh<double>&);
+template Mesh to_double_mesh(const TriangleMesh<float>&);
+template std::size_t border_edges_off_box(const TriangleMesh<float>&, const LatticeBox&);
+template std::size_t border_edges_off_box(const TriangleMesh<double>&, const LatticeBox&);
+template std::vector<std::array<std::uint32_t, 2>> border_edges(const TriangleMesh<float>&);
+template std::vector<std::array<std::uint32_t, 2>> border_edges(const TriangleMesh<double>&);
+template VertexComparison compare_vertices(const TriangleMesh<float>&, const TriangleMesh<float>&,
+                                           const std::function<double(std::uint64_t)>&);
+template VertexComparison compare_vertices(const TriangleMesh<float>&, const TriangleMesh<double>&,
+                                           const std::function<double(std::uint64_t)>&);
+
+}  // namespace gt

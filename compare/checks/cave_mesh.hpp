@@ -1,0 +1,99 @@
+// Comparisons of cave meshes whose vertices carry global lattice edge keys (reference/cave/
+// lattice_cubes.hpp, core/params/cave.hpp): the parity, seam and volume checks of issue 5.
+//
+// A keyed mesh names each triangle by the keys of its three vertices, so two meshes (two
+// backends, two precisions, neighbouring chunks) compare exactly without matching positions:
+//   key_triangles      each triangle as its key triple, rotated so the smallest key comes first
+//                      (orientation kept), sorted; triangle_difference counts the symmetric
+//                      difference of two such multisets.
+//   compare_vertices   vertices of equal key: how many in both or one only, largest distance,
+//                      and the largest distance relative to a per-vertex bound.
+//   border_edges       edges used by one triangle, as directed vertex pairs.
+//   border_edges_off_box   border edges whose two vertices do not lie on one face plane of the
+//                      lattice box [low, high] (for an open chunk, the only border allowed is on
+//                      the box's faces). A vertex lies on the plane axis = c when its edge lies in
+//                      that plane: lower point's coordinate c and no step along the axis.
+// Volume against the field (volume_bound_from_field): the mesh of a solid block partitions every
+// cube of the padded lattice into rock and air, so the mesh volume inside a cube lies in [0, 1]
+// (lattice units³). Counting the cube's rock corners k gives the estimate k/8, off by at most
+// max(k, 8 - k)/8 for a cube the surface cuts and exactly 0 for a cube it does not (all corners
+// alike: marching tetrahedra puts no triangle there). Summed over cubes the estimate is the number
+// of rock samples (each sample is a corner of 8 cubes; pad samples are air) and the bound is
+// Σ max(k, 8 - k)/8 over cut cubes: about (surface area) · spacing, so it shrinks with the spacing.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/mesh.hpp"
+#include "core/volume.hpp"
+
+namespace gt {
+
+using KeyTriangle = std::array<std::uint64_t, 3>;
+
+template <class Real>
+std::vector<KeyTriangle> key_triangles(const TriangleMesh<Real>& mesh);
+
+std::size_t triangle_difference(const std::vector<KeyTriangle>& a, const std::vector<KeyTriangle>& b);
+
+// The triangles in one multiset only.
+std::vector<KeyTriangle> triangles_in_one_only(const std::vector<KeyTriangle>& a, const std::vector<KeyTriangle>& b);
+
+struct LatticeBox;
+
+// The lattice points of the cube a mesher made the triangle in: the bounding box of its three
+// edges, widened to both cubes along an axis where the edges are flat (a triangle on a cube face).
+LatticeBox triangle_cube(const KeyTriangle& triangle);
+
+template <class Real>
+Mesh to_double_mesh(const TriangleMesh<Real>& mesh);
+
+struct VertexComparison {
+  std::size_t matched = 0;
+  std::size_t only_in_a = 0;
+  std::size_t only_in_b = 0;
+  std::size_t bit_differences = 0;  // matched vertices whose coordinates differ at all
+  double max_distance = 0.0;        // Euclidean, over matched vertices
+  double max_bound_ratio = 0.0;     // max distance / bound(key), when a bound is given
+};
+
+// bound(key) > 0 gives each vertex its allowed distance; an empty function: no bound.
+template <class RealA, class RealB>
+VertexComparison compare_vertices(const TriangleMesh<RealA>& a, const TriangleMesh<RealB>& b,
+                                  const std::function<double(std::uint64_t)>& bound = {});
+
+template <class Real>
+std::vector<std::array<std::uint32_t, 2>> border_edges(const TriangleMesh<Real>& mesh);
+
+// Whether the vertex on lattice edge `key` lies on the plane where coordinate `axis` is `value`.
+bool key_on_plane(std::uint64_t key, int axis, std::int64_t value);
+
+struct LatticeBox {
+  std::array<std::int64_t, 3> low;
+  std::array<std::int64_t, 3> high;
+  bool contains(const std::array<std::int64_t, 3>& point) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (point[axis] < low[axis] || point[axis] > high[axis]) return false;
+    }
+    return true;
+  }
+};
+
+template <class Real>
+std::size_t border_edges_off_box(const TriangleMesh<Real>& mesh, const LatticeBox& box);
+
+struct FieldVolume {
+  double rock_samples = 0.0;  // the estimate, lattice units³
+  double bound = 0.0;         // Σ max(k, 8 - k)/8 over the cubes the surface cuts
+  std::size_t cut_cubes = 0;
+};
+
+// For a solid (air-padded) block: rock iff value < threshold, pad samples air.
+FieldVolume volume_bound_from_field(const Volume<double>& density, double threshold);
+
+}  // namespace gt
