@@ -12,6 +12,7 @@ const std::vector<Algorithm>& algorithms() {
     std::vector<Algorithm> list = {thermal_algorithm(), thermal_jako_algorithm()};
     for (auto& algorithm : noise_algorithms()) list.push_back(std::move(algorithm));
     for (auto& algorithm : cave_algorithms()) list.push_back(std::move(algorithm));
+    list.push_back(cave_endless_algorithm());
     list.push_back(mesh_check_algorithm());
     return list;
   }();

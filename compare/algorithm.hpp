@@ -62,6 +62,7 @@ Algorithm thermal_algorithm();
 Algorithm thermal_jako_algorithm();
 std::vector<Algorithm> noise_algorithms();
 std::vector<Algorithm> cave_algorithms();
+Algorithm cave_endless_algorithm();
 Algorithm mesh_check_algorithm();
 
 }  // namespace gt

@@ -143,6 +143,20 @@ TEST_F(GpuMarchingTetrahedraCases, A64CubedBlockMatchesTheReference) {
   EXPECT_TRUE(same_mesh(expected, gpu_mesh(params)));
 }
 
+// The endless cave moves one slab mesher along its path: each position must give the mesh a fresh
+// mesher and the reference give there, including across the power of two where δ grows (2047).
+TEST_F(GpuMarchingTetrahedraCases, MovedMesherMatchesTheReferenceAtEachOrigin) {
+  auto params = cave_params({2040, -3, 0}, {1, 9, 9}, false);
+  gt::gpu::MarchingTetrahedra mesher(params);
+  for (const int x : {2040, 2046, 2047, 2048, -2049}) {
+    params.origin = {x, -3, 0};
+    mesher.move_to(params.origin);
+    mesher.run();
+    EXPECT_TRUE(same_mesh(reference_mesh(params), mesher.result())) << "slab at x = " << x;
+  }
+  EXPECT_THROW(mesher.move_to({600000, 0, 0}), gt::InputError);
+}
+
 TEST_F(GpuMarchingTetrahedraCases, RunsTwiceAndTwoMeshersGiveTheSameBits) {
   const auto params = cave_params({5, 5, 5}, {20, 20, 20}, true);
   gt::gpu::MarchingTetrahedra mesher(params);

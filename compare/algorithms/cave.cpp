@@ -359,6 +359,7 @@ Block block_from_json(Mesher mesher, const nlohmann::json& resolved) {
   if (!lattice_range_fits(lattice_origin(block.params), samples, block.params.solid)) {
     throw InputError("the block (with its pad) leaves the lattice range of the edge keys, ±2^19 per axis");
   }
+  require_checkable_block(block.params);
   return block;
 }
 

@@ -9,6 +9,8 @@
 // count (border edges of an open mesh, self-intersecting face pairs) is checked by that count
 // instead of by the zero-tolerance mesh check, so a known defect passes only at its known size.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include <fmt/format.h>
 
@@ -25,6 +27,15 @@ void add_expected_count(const nlohmann::json& expect, const char* key, double me
   const double expected = expect[key];
   result.checks.push_back(bounded_check(fmt::format("spec.{}", key), std::abs(measured - expected), 0.0, std::nullopt,
                                         fmt::format("{} measured, {} expected", measured, expected)));
+}
+
+// The facts of all three layers as check-mesh --json prints them, beside the report.
+void write_report_artifact(const MeshReport& report, const RunOptions& options, CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const std::string relative = result.name + "/check-mesh.json";
+  std::filesystem::create_directories(options.report_dir / result.name);
+  std::ofstream(options.report_dir / relative) << to_json(report).dump(2) << '\n';
+  result.artifacts.push_back({relative, "data", "raw, CGAL and OpenMesh facts (check-mesh --json)"});
 }
 
 // Whether a zero-tolerance mesh check tests a defect that the case expects with its exact count.
@@ -50,6 +61,7 @@ void run_mesh_check(const Mesh& mesh, const nlohmann::json& expect, const RunOpt
   add_expected_count(expect, "euler", double(report.openmesh.euler_characteristic), result);
   add_expected_count(expect, "border_edges", double(report.raw.border_edges), result);
   add_expected_count(expect, "self_intersections", double(report.cgal.self_intersections), result);
+  write_report_artifact(report, options, result);
 }
 
 PreparedTwin prepare_mesh_check(const nlohmann::json&, const LoadedInput& input) {

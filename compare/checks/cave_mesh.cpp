@@ -164,6 +164,7 @@ FieldVolume volume_bound_from_field(const Volume<double>& density, double thresh
 template std::vector<KeyTriangle> key_triangles(const TriangleMesh<float>&);
 template std::vector<KeyTriangle> key_triangles(const TriangleMesh<double>&);
 template Mesh to_double_mesh(const TriangleMesh<float>&);
+template Mesh to_double_mesh(const TriangleMesh<double>&);
 template std::size_t border_edges_off_box(const TriangleMesh<float>&, const LatticeBox&);
 template std::size_t border_edges_off_box(const TriangleMesh<double>&, const LatticeBox&);
 template std::vector<std::array<std::uint32_t, 2>> border_edges(const TriangleMesh<float>&);
@@ -171,6 +172,8 @@ template std::vector<std::array<std::uint32_t, 2>> border_edges(const TriangleMe
 template VertexComparison compare_vertices(const TriangleMesh<float>&, const TriangleMesh<float>&,
                                            const std::function<double(std::uint64_t)>&);
 template VertexComparison compare_vertices(const TriangleMesh<float>&, const TriangleMesh<double>&,
+                                           const std::function<double(std::uint64_t)>&);
+template VertexComparison compare_vertices(const TriangleMesh<double>&, const TriangleMesh<double>&,
                                            const std::function<double(std::uint64_t)>&);
 
 }  // namespace gt

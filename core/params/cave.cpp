@@ -10,6 +10,10 @@
 #include <bit>
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
 namespace gt {
 namespace {
 
@@ -87,6 +91,18 @@ double edge_margin(const std::array<std::int64_t, 3>& lower_point, int direction
   constexpr int float_mantissa_bits = 23;
   const int exponent = static_cast<int>(std::bit_width(largest + 1)) - 1;  // 2^exponent <= largest + 1
   return std::ldexp(1.0, std::max(-10, exponent + 2 - float_mantissa_bits));
+}
+
+void require_checkable_block(const CaveParams& params) {
+  std::int64_t cubes = 1;
+  for (int axis = 0; axis < 3; ++axis) cubes *= std::int64_t{params.size[axis]} + (params.solid ? 2 : 0);
+  if (cubes > largest_checked_cubes) {
+    throw InputError(fmt::format("a cave block of {}x{}x{} cells has {} cubes{}; the mesh checks hold about 1.8 kB per "
+                                 "cube, so a case takes at most {} cubes (161³); time larger blocks with `groundtruth "
+                                 "bench`",
+                                 params.size[0], params.size[1], params.size[2], cubes, params.solid ? " with its pad" : "",
+                                 largest_checked_cubes));
+  }
 }
 
 LatticeEdge lattice_edge_from_key(std::uint64_t key) {

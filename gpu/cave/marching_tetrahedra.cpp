@@ -129,7 +129,7 @@ void reserve(std::optional<StorageBuffer>& buffer, std::size_t bytes, const char
   if (!buffer || buffer->size_bytes() < bytes) buffer = limited_storage(bytes, contents, limit);
 }
 
-UniformBuffer block_buffer(const CaveParams& params, EdgePlacement placement) {
+CaveBlock block_of(const CaveParams& params, EdgePlacement placement) {
   CaveBlock block{};
   const Counts samples = sample_counts(params);
   const Counts cubes = cube_counts(params);
@@ -145,7 +145,7 @@ UniformBuffer block_buffer(const CaveParams& params, EdgePlacement placement) {
   block.world_to_noise = static_cast<float>(1.0 / params.scale);
   block.kernel_radius_squared = static_cast<float>(params.kernel_radius_squared);
   block.linear_placement = placement == EdgePlacement::linear ? 1u : 0u;
-  return UniformBuffer::from(block);
+  return block;
 }
 
 // The uint at `index` of a buffer the GPU wrote (waits for it).
@@ -161,7 +161,9 @@ MarchingTetrahedra::MarchingTetrahedra(const CaveParams& params, EdgePlacement p
     : sample_total_(checked_sample_total(params)),
       cube_total_(checked_cube_total(params)),
       storage_block_limit_(storage_block_limit()),
-      block_(block_buffer(params, placement)),
+      params_(params),
+      placement_(placement),
+      block_(UniformBuffer::from(block_of(params, placement))),
       permutation_(StorageBuffer::from(doubled_permutation(seeded_permutation(params.seed)))),
       density_(limited_storage(sample_total_ * sizeof(float), "density samples", storage_block_limit_)),
       triangle_offsets_(limited_storage((cube_total_ + 1) * sizeof(std::uint32_t), "per-cube triangle offsets",
@@ -178,6 +180,14 @@ MarchingTetrahedra::MarchingTetrahedra(const CaveParams& params, EdgePlacement p
   cube_cases_.bind(cube_cases_binding);
   dispatch_linear(cube_cases_program, rock_patterns, local_size);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void MarchingTetrahedra::move_to(const std::array<int, 3>& origin) {
+  CaveParams moved = params_;
+  moved.origin = origin;
+  checked_sample_total(moved);
+  params_ = moved;
+  block_.upload(block_of(params_, placement_));
 }
 
 void MarchingTetrahedra::run() {

@@ -25,6 +25,7 @@
 // and per-cube buffers in the constructor, outputs in run()). Needs a current GlContext.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -42,6 +43,9 @@ enum class EdgePlacement { linear, midpoint };
 class MarchingTetrahedra {
  public:
   explicit MarchingTetrahedra(const CaveParams& params, EdgePlacement placement = EdgePlacement::linear);
+  // The same block shape at another lattice origin (the endless cave's slabs): rewrites the
+  // parameter block only, no recompilation or reallocation. Throws InputError like the constructor.
+  void move_to(const std::array<int, 3>& origin);
   void run();
   TriangleMesh<float> result() const;
 
@@ -51,6 +55,8 @@ class MarchingTetrahedra {
   std::size_t sample_total_;
   std::size_t cube_total_;
   std::int64_t storage_block_limit_;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE in bytes
+  CaveParams params_;
+  EdgePlacement placement_;
   UniformBuffer block_;
   StorageBuffer permutation_;
   StorageBuffer density_;
