@@ -4,7 +4,6 @@
 // datasets/fetch.sh puts in datasets/real (a missing file fails with a hint to run the script).
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -20,6 +19,7 @@
 #include "core/errors.hpp"
 #include "core/grid.hpp"
 #include "core/io/heightmap_io.hpp"
+#include "tests/support/temporary_folder.hpp"
 
 namespace gt {
 namespace {
@@ -29,22 +29,7 @@ namespace fs = std::filesystem;
 const fs::path io_data_dir = fs::path(GT_TEST_DATA_DIR) / "io";
 const fs::path real_data_dir = fs::path(GT_DATASET_DIR) / "real";
 
-// A fresh folder under the system's temporary directory, removed with everything in it.
-class TemporaryFolder {
- public:
-  TemporaryFolder() {
-    std::string pattern = (fs::temp_directory_path() / "heightmap_io_test.XXXXXX").string();
-    path_ = mkdtemp(pattern.data());
-  }
-  ~TemporaryFolder() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-  std::vector<fs::path> entries() const {
-    return {fs::directory_iterator(path_), fs::directory_iterator()};
-  }
-
- private:
-  fs::path path_;
-};
+using testing::TemporaryFolder;
 
 // 7 x 5 heights exact in float32, cells (1, 1) and (4, 3) marked invalid.
 Heightmap masked_sample() {
@@ -109,7 +94,7 @@ ValidRange valid_range(const Heightmap& heights) {
 
 // ---- round trips ---------------------------------------------------------------------------------
 
-class FloatRoundTrip : public testing::TestWithParam<std::string> {};
+class FloatRoundTrip : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(FloatRoundTrip, KeepsValuesAndMask) {
   const TemporaryFolder folder;
@@ -125,7 +110,7 @@ TEST_P(FloatRoundTrip, KeepsValuesAndMask) {
   EXPECT_EQ(read.heights.valid, written.valid);
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, FloatRoundTrip, testing::Values(".exr", ".tif", ".tiff"),
+INSTANTIATE_TEST_SUITE_P(Formats, FloatRoundTrip, ::testing::Values(".exr", ".tif", ".tiff"),
                          [](const auto& info) { return info.param.substr(1); });
 
 TEST(HeightmapIo, Png16RoundTripWithinOneStep) {
@@ -286,7 +271,7 @@ struct RealDem {
 
 void PrintTo(const RealDem& dem, std::ostream* out) { *out << dem.file; }
 
-class RealDems : public testing::TestWithParam<RealDem> {};
+class RealDems : public ::testing::TestWithParam<RealDem> {};
 
 TEST_P(RealDems, HaveTheDocumentedGridAndRange) {
   const RealDem& dem = GetParam();
@@ -314,10 +299,10 @@ TEST_P(RealDems, HaveTheDocumentedGridAndRange) {
 // at 49.82 N, each as d_lon * 111320 * cos(latitude) by d_lat * 110574.
 INSTANTIATE_TEST_SUITE_P(
     Datasets, RealDems,
-    testing::Values(RealDem{"volcano.json", 87, 61, 87 * 61, 94, 195, 10.0, 10.0},
-                    RealDem{"jacksboro_fault_dem.npz", 403, 344, 403 * 344, 236, 1076, 74.48, 92.15},
-                    RealDem{"topobathy.npz", 120, 91, 120 * 91, -1437, 2205, 2434.4, 2417.7},
-                    RealDem{"elev.tif", 95, 90, 4608, 141, 547, 598.6, 921.45}),
+    ::testing::Values(RealDem{"volcano.json", 87, 61, 87 * 61, 94, 195, 10.0, 10.0},
+                      RealDem{"jacksboro_fault_dem.npz", 403, 344, 403 * 344, 236, 1076, 74.48, 92.15},
+                      RealDem{"topobathy.npz", 120, 91, 120 * 91, -1437, 2205, 2434.4, 2417.7},
+                      RealDem{"elev.tif", 95, 90, 4608, 141, 547, 598.6, 921.45}),
     [](const auto& info) { return fs::path(info.param.file).stem().string(); });
 
 TEST(RealDems, LuxembourgIsAGeoTiffWithNoData) {

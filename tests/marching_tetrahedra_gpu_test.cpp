@@ -2,21 +2,28 @@
 // (reference/cave/marching_tetrahedra.hpp on reference/cave/density.hpp's float density): the
 // same triangle index buffer, the same edge keys and bitwise the same positions, which llvmpipe
 // must give because every float operation, the division included, is the reference's and is
-// correctly rounded there. Also the multi-level scan on its own (gpu/cave/exclusive_scan.hpp)
-// against std::exclusive_scan, determinism, empty meshes and refused blocks.
+// correctly rounded there; the same for an uploaded volume (a clipped sphere's distance field with
+// samples exactly at the threshold) against the reference on that volume. Also the multi-level
+// scan on its own (gpu/cave/exclusive_scan.hpp) against std::exclusive_scan, determinism, empty
+// meshes and refused blocks.
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/errors.hpp"
 #include "core/params/cave.hpp"
+#include "core/volume.hpp"
 #include "gpu/buffer.hpp"
 #include "gpu/cave/exclusive_scan.hpp"
 #include "gpu/cave/marching_tetrahedra.hpp"
@@ -206,6 +213,71 @@ TEST_F(GpuMarchingTetrahedraCases, RefusesBuffersPastTheStorageBlockLimit) {
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos) << error.what();
   }
+}
+
+// Distance to the lattice point (4, 3, 3), in float, over 9 x 8 x 6 samples: the sphere of radius
+// 3 is clipped by the face z = 5, and the 29 samples at a distance of exactly 3 (such as (7, 3, 3)
+// and (6, 5, 4); (4, 3, 6) lies past the clip) sit exactly on the threshold.
+gt::Volume<float> clipped_sphere_distance() {
+  gt::Volume<float> volume(9, 8, 6);
+  for (int z = 0; z < volume.nz; ++z) {
+    for (int y = 0; y < volume.ny; ++y) {
+      for (int x = 0; x < volume.nx; ++x) {
+        volume.at(x, y, z) = std::sqrt(static_cast<float>((x - 4) * (x - 4) + (y - 3) * (y - 3) + (z - 3) * (z - 3)));
+      }
+    }
+  }
+  return volume;
+}
+
+constexpr float sphere_radius = 3.0f;
+
+class GpuMarchingTetrahedraVolume : public gt::testing::GlTest {};
+
+TEST_F(GpuMarchingTetrahedraVolume, UploadedVolumeGivesTheFloatReferenceMeshBitForBit) {
+  const gt::Volume<float> volume = clipped_sphere_distance();
+  ASSERT_EQ(std::count(volume.values.begin(), volume.values.end(), sphere_radius), 29);
+  const std::array<int, 3> origin{-40, 17, 1030};
+  for (const bool solid : {true, false}) {
+    for (const auto& [gpu_placement, reference_placement, name] :
+         {std::tuple{gt::gpu::EdgePlacement::linear, ref::EdgePlacement::linear, "linear"},
+          std::tuple{gt::gpu::EdgePlacement::midpoint, ref::EdgePlacement::midpoint, "midpoint"}}) {
+      const FloatMesh expected = ref::marching_tetrahedra(volume, sphere_radius, solid,
+                                                          {origin[0], origin[1], origin[2]}, reference_placement);
+      ASSERT_GT(expected.triangles.size(), 100u);
+      gt::gpu::MarchingTetrahedra mesher(volume, sphere_radius, solid, origin, gpu_placement);
+      mesher.run();
+      EXPECT_TRUE(same_mesh(expected, mesher.result())) << (solid ? "solid, " : "open, ") << name;
+    }
+  }
+}
+
+// move_to keeps the uploaded samples and places them at the new origin.
+TEST_F(GpuMarchingTetrahedraVolume, MovedUploadedVolumeMatchesTheReferenceThere) {
+  const gt::Volume<float> volume = clipped_sphere_distance();
+  gt::gpu::MarchingTetrahedra mesher(volume, sphere_radius, false, {0, 0, 0});
+  for (const int x : {2040, -2049}) {
+    mesher.move_to({x, 5, -7});
+    mesher.run();
+    EXPECT_TRUE(same_mesh(ref::marching_tetrahedra(volume, sphere_radius, false, {x, 5, -7}), mesher.result()))
+        << "at x = " << x;
+  }
+}
+
+TEST_F(GpuMarchingTetrahedraVolume, RefusesNonFiniteSamplesAndVolumesWithoutACube) {
+  gt::Volume<float> volume = clipped_sphere_distance();
+  volume.at(2, 5, 1) = std::numeric_limits<float>::quiet_NaN();
+  try {
+    gt::gpu::MarchingTetrahedra mesher(volume, sphere_radius, true, {0, 0, 0});
+    FAIL() << "no error for a NaN sample";
+  } catch (const gt::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("(2, 5, 1)"), std::string::npos) << error.what();
+  }
+  const gt::Volume<float> one_slice(4, 4, 1, 1.0f);
+  EXPECT_THROW((gt::gpu::MarchingTetrahedra{one_slice, 0.0f, true, {0, 0, 0}}), gt::InputError);
+  gt::Volume<float> short_values(4, 4, 4, 1.0f);
+  short_values.values.pop_back();
+  EXPECT_THROW((gt::gpu::MarchingTetrahedra{short_values, 0.0f, true, {0, 0, 0}}), std::invalid_argument);
 }
 
 class GpuExclusiveScan : public gt::testing::GlTest {};

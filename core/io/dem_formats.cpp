@@ -1,22 +1,19 @@
 // Readers of the non-image DEM formats: the vega-datasets volcano JSON (nlohmann::json) and
-// matplotlib's sample .npz DEMs (libzip for the archive, a small .npy header parser for arrays).
+// matplotlib's sample .npz DEMs (libzip for the archive, core/io/npy.hpp for its arrays, read
+// straight from the archive member through a ByteSource).
 //
-// .npy support: format versions 1 to 3, dtypes '<i2' '<i4' '<f4' '<f8', fortran_order False,
-// 0-D (matplotlib's scalars dx, dy, ymin, ymax), 1-D and 2-D shapes; anything else is rejected
-// with an InputError naming the archive and the member. NaN cells become invalid (value 0).
+// .npz arrays: npy.hpp's versions and dtypes, 0-D (matplotlib's scalars dx, dy, ymin, ymax), 1-D
+// and 2-D shapes (within check_grid_fits); anything else is rejected with an InputError naming the
+// archive and the member. NaN cells become invalid (value 0).
 // Degrees are converted to metres with degrees_to_metres (see dem_formats.hpp).
 #include "core/io/dem_formats.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <fstream>
 #include <memory>
 #include <numbers>
 #include <numeric>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -25,11 +22,10 @@
 #include <zip.h>
 
 #include "core/errors.hpp"
+#include "core/io/npy.hpp"
 
 namespace gt::detail {
 namespace {
-
-static_assert(std::endian::native == std::endian::little, "the .npy reader copies little-endian data as is");
 
 using std::filesystem::path;
 
@@ -91,99 +87,6 @@ bool has_member(zip_t* archive, const std::string& name) {
   return zip_name_locate(archive, name.c_str(), 0) >= 0;
 }
 
-void read_exact(zip_file_t* member, void* buffer, std::size_t bytes, const std::string& where) {
-  const zip_int64_t read = zip_fread(member, buffer, bytes);
-  if (read < 0) throw InputError(fmt::format("{}: {}", where, zip_file_strerror(member)));
-  if (static_cast<std::size_t>(read) != bytes) {
-    throw InputError(fmt::format("{}: truncated ({} of {} bytes)", where, read, bytes));
-  }
-}
-
-struct NpyHeader {
-  std::string descr;
-  std::vector<long long> shape;
-  std::size_t bytes = 0;  // magic, version, length field and header text
-};
-
-std::vector<long long> parse_shape(const std::string& tuple, const std::string& where) {
-  std::vector<long long> shape;
-  static const std::regex dimension_pattern(R"(\s*([^,\s]+)\s*(,|$))");
-  for (auto it = std::sregex_iterator(tuple.begin(), tuple.end(), dimension_pattern); it != std::sregex_iterator();
-       ++it) {
-    const std::string text = (*it)[1];
-    long long dimension = -1;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), dimension);
-    if (error != std::errc{} || end != text.data() + text.size() || dimension < 0) {
-      throw InputError(fmt::format("{}: bad .npy shape ({})", where, tuple));
-    }
-    shape.push_back(dimension);
-  }
-  return shape;
-}
-
-std::string header_field(const std::string& header, const std::regex& pattern, const char* key,
-                         const std::string& where) {
-  std::smatch match;
-  if (!std::regex_search(header, match, pattern)) {
-    throw InputError(fmt::format("{}: .npy header has no valid '{}': {}", where, key, header));
-  }
-  return match[1];
-}
-
-// The header is a Python dict literal, e.g. {'descr': '<i2', 'fortran_order': False, 'shape': (344, 403), }
-NpyHeader read_npy_header(zip_file_t* member, const std::string& where) {
-  char preamble[8];  // magic "\x93NUMPY", major and minor version
-  read_exact(member, preamble, sizeof preamble, where);
-  if (std::string_view(preamble, 6) != "\x93NUMPY") throw InputError(fmt::format("{}: not a .npy array", where));
-  const int major_version = static_cast<unsigned char>(preamble[6]);
-  if (major_version < 1 || major_version > 3) {
-    throw InputError(fmt::format("{}: unsupported .npy format version {}", where, major_version));
-  }
-  std::uint32_t header_length = 0;  // little-endian uint16 in version 1, uint32 in versions 2 and 3
-  const std::size_t length_bytes = major_version == 1 ? 2 : 4;
-  read_exact(member, &header_length, length_bytes, where);
-  if (header_length > (1u << 20)) throw InputError(fmt::format("{}: .npy header of {} bytes", where, header_length));
-
-  std::string header(header_length, '\0');
-  read_exact(member, header.data(), header.size(), where);
-  static const std::regex descr_pattern(R"('descr'\s*:\s*'([^']*)')");
-  static const std::regex fortran_pattern(R"('fortran_order'\s*:\s*(True|False))");
-  static const std::regex shape_pattern(R"('shape'\s*:\s*\(([^)]*)\))");
-  if (header_field(header, fortran_pattern, "fortran_order", where) != "False") {
-    throw InputError(fmt::format("{}: Fortran-ordered .npy arrays are not supported", where));
-  }
-  return {header_field(header, descr_pattern, "descr", where),
-          parse_shape(header_field(header, shape_pattern, "shape", where), where),
-          6 + 2 + length_bytes + header_length};
-}
-
-struct NpyArray {
-  std::vector<long long> shape;
-  std::vector<double> values;
-};
-
-template <class T>
-std::vector<double> read_npy_values(zip_file_t* member, std::size_t count, const std::string& where) {
-  std::vector<T> raw(count);
-  read_exact(member, raw.data(), count * sizeof(T), where);
-  return {raw.begin(), raw.end()};
-}
-
-std::size_t npy_item_size(const std::string& descr, const std::string& where) {
-  if (descr == "<i2") return 2;
-  if (descr == "<i4" || descr == "<f4") return 4;
-  if (descr == "<f8") return 8;
-  throw InputError(fmt::format("{}: unsupported .npy dtype '{}' (supported: <i2 <i4 <f4 <f8)", where, descr));
-}
-
-std::vector<double> read_npy_data(zip_file_t* member, const std::string& descr, std::size_t count,
-                                  const std::string& where) {
-  if (descr == "<i2") return read_npy_values<std::int16_t>(member, count, where);
-  if (descr == "<i4") return read_npy_values<std::int32_t>(member, count, where);
-  if (descr == "<f4") return read_npy_values<float>(member, count, where);
-  return read_npy_values<double>(member, count, where);
-}
-
 // Elements of `shape`, after checking with check_grid_fits that it fits in memory (the last
 // dimension as columns, the rest as rows).
 std::size_t checked_element_count(const std::vector<long long>& shape, const std::string& where) {
@@ -195,7 +98,16 @@ std::size_t checked_element_count(const std::vector<long long>& shape, const std
   return static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
 }
 
-NpyArray read_npy(zip_t* archive, const std::string& key, const path& file) {
+// The .npy reader's view of an open archive member.
+ByteSource member_bytes(zip_file_t* member, const std::string& where) {
+  return [member, where](void* destination, std::size_t bytes) {
+    const zip_int64_t read = zip_fread(member, destination, bytes);
+    if (read < 0) throw InputError(fmt::format("{}: {}", where, zip_file_strerror(member)));
+    return static_cast<std::size_t>(read);
+  };
+}
+
+NpyArray read_npz_array(zip_t* archive, const std::string& key, const path& file) {
   const std::string name = key + ".npy";
   const std::string where = fmt::format("{} (array '{}')", file.string(), key);
   zip_stat_t stat;
@@ -204,19 +116,14 @@ NpyArray read_npy(zip_t* archive, const std::string& key, const path& file) {
   }
   ZipMember member(zip_fopen(archive, name.c_str(), 0), zip_fclose);
   if (!member) throw InputError(fmt::format("{}: {}", where, zip_strerror(archive)));
-
-  const NpyHeader header = read_npy_header(member.get(), where);
-  const std::size_t item_size = npy_item_size(header.descr, where);
-  const std::size_t count = checked_element_count(header.shape, where);
-  if (stat.size != header.bytes + count * item_size) {
-    throw InputError(fmt::format("{}: member holds {} bytes, its header promises {}", where, stat.size,
-                                 header.bytes + count * item_size));
-  }
-  return {header.shape, read_npy_data(member.get(), header.descr, count, where)};
+  const auto element_count = [&where](const std::vector<long long>& shape) {
+    return checked_element_count(shape, where);
+  };
+  return read_npy(member_bytes(member.get(), where), stat.size, element_count, where);
 }
 
 double npy_scalar(zip_t* archive, const std::string& key, const path& file) {
-  const NpyArray array = read_npy(archive, key, file);
+  const NpyArray array = read_npz_array(archive, key, file);
   if (array.values.size() != 1) {
     throw InputError(fmt::format("{}: array '{}' should hold one number, holds {}", file.string(), key,
                                  array.values.size()));
@@ -225,7 +132,7 @@ double npy_scalar(zip_t* archive, const std::string& key, const path& file) {
 }
 
 std::vector<double> npy_vector(zip_t* archive, const std::string& key, std::size_t length, const path& file) {
-  NpyArray array = read_npy(archive, key, file);
+  NpyArray array = read_npz_array(archive, key, file);
   if (array.shape.size() != 1 || array.values.size() != length) {
     throw InputError(fmt::format("{}: array '{}' should be 1-D of length {}", file.string(), key, length));
   }
@@ -234,7 +141,7 @@ std::vector<double> npy_vector(zip_t* archive, const std::string& key, std::size
 
 // A 2-D array (rows, columns) as a heightmap; NaN cells become invalid.
 Heightmap npy_heightmap(zip_t* archive, const std::string& key, const path& file) {
-  const NpyArray array = read_npy(archive, key, file);
+  const NpyArray array = read_npz_array(archive, key, file);
   if (array.shape.size() != 2 || array.shape[0] < 2 || array.shape[1] < 2) {
     throw InputError(fmt::format("{}: array '{}' should be 2-D with at least 2 rows and columns", file.string(), key));
   }

@@ -2,6 +2,11 @@
 // against the driver's limit and the order of the passes (see marching_tetrahedra.hpp; the
 // algorithm and its welding argument are in gpu/shaders/cave/tetrahedra.glsl).
 //
+// An uploaded volume is described by the same CaveParams block as the noise (size = samples - 1,
+// origin, threshold, solid), so both sources share every check, buffer and pass; the only
+// difference is the DensitySource, which decides between a NoisePass (the density dispatch in
+// every run()) and one upload in the constructor (glNamedBufferSubData, ordered before later dispatches by GL).
+//
 // Bindings (all below 8, the GL 4.5 minimum; emit uses all eight): uniform 0 the CaveBlock;
 // storage 0 the cube-case tables, 1 density, 2 triangle counts/offsets, 3 vertex counts/offsets,
 // 4 triangles, 5 the permutation (noise/permutation.glsl) in the density pass and the per-cube
@@ -15,7 +20,9 @@
 // a block after the counts (limited_storage); blocks up to about 160³ fit there.
 #include "gpu/cave/marching_tetrahedra.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
@@ -148,6 +155,36 @@ CaveBlock block_of(const CaveParams& params, EdgePlacement placement) {
   return block;
 }
 
+// Throws InputError naming the first non-finite sample, as the reference does.
+void check_finite(const Volume<float>& density) {
+  const auto first = std::find_if(density.values.begin(), density.values.end(),
+                                  [](float value) { return !std::isfinite(value); });
+  if (first == density.values.end()) return;
+  const auto index = static_cast<std::size_t>(first - density.values.begin());
+  const std::size_t row = static_cast<std::size_t>(density.nx);
+  const std::size_t slice = row * static_cast<std::size_t>(density.ny);
+  throw InputError(fmt::format("GPU marching tetrahedra: density sample ({}, {}, {}) is {}; the density must be finite",
+                               index % row, index % slice / row, index / slice, *first));
+}
+
+// The block of an uploaded volume: its cells at `lattice_origin`, after checking its samples.
+CaveParams volume_block(const Volume<float>& density, float threshold, bool solid,
+                        const std::array<int, 3>& lattice_origin) {
+  const std::size_t samples = static_cast<std::size_t>(density.nx) * static_cast<std::size_t>(density.ny) *
+                              static_cast<std::size_t>(density.nz);
+  if (density.values.size() != samples) {
+    throw std::invalid_argument(fmt::format("GPU marching tetrahedra: a {}x{}x{} volume holds {} values",
+                                            density.nx, density.ny, density.nz, density.values.size()));
+  }
+  check_finite(density);
+  CaveParams block;
+  block.origin = lattice_origin;
+  block.size = {density.nx - 1, density.ny - 1, density.nz - 1};
+  block.threshold = threshold;
+  block.solid = solid;
+  return block;
+}
+
 // The uint at `index` of a buffer the GPU wrote (waits for it).
 std::uint32_t read_uint(const StorageBuffer& buffer, std::size_t index) {
   std::uint32_t value = 0;
@@ -157,14 +194,28 @@ std::uint32_t read_uint(const StorageBuffer& buffer, std::size_t index) {
 
 }  // namespace
 
+MarchingTetrahedra::NoisePass MarchingTetrahedra::noise_pass(std::uint32_t seed) {
+  return {StorageBuffer::from(doubled_permutation(seeded_permutation(seed))),
+          ComputeProgram::load("cave/density.comp")};
+}
+
 MarchingTetrahedra::MarchingTetrahedra(const CaveParams& params, EdgePlacement placement)
-    : sample_total_(checked_sample_total(params)),
-      cube_total_(checked_cube_total(params)),
+    : MarchingTetrahedra(params, placement, DensitySource::noise) {}
+
+MarchingTetrahedra::MarchingTetrahedra(const Volume<float>& density, float threshold, bool solid,
+                                       const std::array<int, 3>& lattice_origin, EdgePlacement placement)
+    : MarchingTetrahedra(volume_block(density, threshold, solid, lattice_origin), placement, DensitySource::upload) {
+  density_.upload(density.values.data(), sample_total_ * sizeof(float));
+}
+
+MarchingTetrahedra::MarchingTetrahedra(const CaveParams& block, EdgePlacement placement, DensitySource source)
+    : sample_total_(checked_sample_total(block)),
+      cube_total_(checked_cube_total(block)),
       storage_block_limit_(storage_block_limit()),
-      params_(params),
+      params_(block),
       placement_(placement),
-      block_(UniformBuffer::from(block_of(params, placement))),
-      permutation_(StorageBuffer::from(doubled_permutation(seeded_permutation(params.seed)))),
+      block_(UniformBuffer::from(block_of(block, placement))),
+      noise_(source == DensitySource::noise ? std::optional(noise_pass(block.seed)) : std::nullopt),
       density_(limited_storage(sample_total_ * sizeof(float), "density samples", storage_block_limit_)),
       triangle_offsets_(limited_storage((cube_total_ + 1) * sizeof(std::uint32_t), "per-cube triangle offsets",
                                         storage_block_limit_)),
@@ -172,7 +223,6 @@ MarchingTetrahedra::MarchingTetrahedra(const CaveParams& params, EdgePlacement p
                                       storage_block_limit_)),
       cube_rock_(limited_storage(cube_total_ * sizeof(std::uint32_t), "per-cube rock corners", storage_block_limit_)),
       cube_cases_(cube_cases_bytes),
-      density_program_(ComputeProgram::load("cave/density.comp")),
       count_program_(ComputeProgram::load("cave/count.comp")),
       emit_program_(ComputeProgram::load("cave/emit.comp")),
       scan_(cube_total_ + 1) {
@@ -192,10 +242,8 @@ void MarchingTetrahedra::move_to(const std::array<int, 3>& origin) {
 
 void MarchingTetrahedra::run() {
   block_.bind(block_binding);
-  permutation_.bind(permutation_binding);
   density_.bind(density_binding);
-  dispatch_linear(density_program_, sample_total_, local_size);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (noise_) compute_density();
 
   cube_cases_.bind(cube_cases_binding);
   triangle_offsets_.bind(triangle_offsets_binding);
@@ -211,6 +259,12 @@ void MarchingTetrahedra::run() {
   triangle_total_ = read_uint(triangle_offsets_, cube_total_);
   vertex_total_ = read_uint(vertex_offsets_, cube_total_);
   if (triangle_total_ > 0) emit();
+}
+
+void MarchingTetrahedra::compute_density() {
+  noise_->permutation.bind(permutation_binding);
+  dispatch_linear(noise_->program, sample_total_, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void MarchingTetrahedra::emit() {

@@ -1,13 +1,24 @@
 // Marching tetrahedra of the endless cave on the GPU (seed 004 digest §2.6, issue 5), twin of
-// reference/cave/marching_tetrahedra.hpp applied to reference/cave/density.hpp's float density:
-// the same mesh triangle by triangle, the same vertex numbering and edge keys, the same position
-// bits (on llvmpipe; see gpu/shaders/cave/lattice.glsl for the division on other GPUs).
+// reference/cave/marching_tetrahedra.hpp: the same mesh triangle by triangle, the same vertex
+// numbering and edge keys, the same position bits (on llvmpipe; see gpu/shaders/cave/lattice.glsl
+// for the division on other GPUs).
 //
-// MarchingTetrahedra(params[, placement]) compiles the programs, allocates the per-sample and
-// per-cube buffers for the block params describes (origin, size, solid, scale, threshold, kernel,
-// seed) and tabulates the 256 rock patterns of a cube (gpu/shaders/cave/cube_cases.comp). run()
-// executes every pass on the GPU:
-//   1. density   gpu/shaders/cave/density.comp   one invocation per sample, (size + 1)³
+// Two sources of the density, one mesher (the source is a constructor argument; every later pass
+// is shared):
+//   MarchingTetrahedra(params[, placement]): the seed's cave. The density pass computes
+//     reference/cave/density.hpp's float density over the block params describes (origin, size,
+//     solid, scale, threshold, kernel, seed); the twin of marching_tetrahedra<float> applied to
+//     cave_density<float>(params).
+//   MarchingTetrahedra(density, threshold, solid, lattice_origin[, placement]): any scalar volume
+//     (issue 5; e.g. core/io/volume_io.hpp's, converted to float). Its samples are uploaded into
+//     the density buffer once, sample (0, 0, 0) at global lattice point lattice_origin, and run()
+//     skips the density pass; the twin of marching_tetrahedra<float>(density, threshold, solid,
+//     lattice_origin, placement). density.origin and density.spacing are ignored, as by the
+//     reference.
+// Either constructor compiles the programs, allocates the per-sample and per-cube buffers and
+// tabulates the 256 rock patterns of a cube (gpu/shaders/cave/cube_cases.comp). run() executes the
+// passes on the GPU:
+//   1. density   gpu/shaders/cave/density.comp   one invocation per sample, (size + 1)³ (noise only)
 //   2. count     gpu/shaders/cave/count.comp     one per cube (+1): rock corners, triangles and
 //                                                own vertices
 //   3. scan      gpu/cave/exclusive_scan.hpp     both counts -> offsets and totals
@@ -20,9 +31,11 @@
 //
 // The placement mirrors reference::EdgePlacement (CaveParams has no field for it): linear, the
 // seed's "shifting along the edge", or midpoint, its first version.
-// Throws gt::InputError for a size below 1 cell or a block (pad included) outside the edge keys'
-// range, std::runtime_error when a buffer would exceed GL_MAX_SHADER_STORAGE_BLOCK_SIZE (per-sample
-// and per-cube buffers in the constructor, outputs in run()). Needs a current GlContext.
+// Throws gt::InputError for a block below 1 cell (2 samples) per axis (which the reference meshes
+// as nothing, or a cap), a block (pad included) outside the edge keys' range or, for an uploaded
+// volume, a non-finite sample (both as the reference); std::invalid_argument for a volume whose values are not nx·ny·nz samples;
+// std::runtime_error when a buffer would exceed GL_MAX_SHADER_STORAGE_BLOCK_SIZE (per-sample and
+// per-cube buffers in the constructor, outputs in run()). Needs a current GlContext.
 #pragma once
 
 #include <array>
@@ -32,6 +45,7 @@
 
 #include "core/mesh.hpp"
 #include "core/params/cave.hpp"
+#include "core/volume.hpp"
 #include "gpu/buffer.hpp"
 #include "gpu/cave/exclusive_scan.hpp"
 #include "gpu/shader_program.hpp"
@@ -43,28 +57,41 @@ enum class EdgePlacement { linear, midpoint };
 class MarchingTetrahedra {
  public:
   explicit MarchingTetrahedra(const CaveParams& params, EdgePlacement placement = EdgePlacement::linear);
+  MarchingTetrahedra(const Volume<float>& density, float threshold, bool solid,
+                     const std::array<int, 3>& lattice_origin, EdgePlacement placement = EdgePlacement::linear);
   // The same block shape at another lattice origin (the endless cave's slabs): rewrites the
   // parameter block only, no recompilation or reallocation. Throws InputError like the constructor.
+  // The noise is computed at the new origin; an uploaded volume keeps its samples, placed there.
   void move_to(const std::array<int, 3>& origin);
   void run();
   TriangleMesh<float> result() const;
 
  private:
+  enum class DensitySource { noise, upload };
+  // The density pass of the seed's cave: its permutation table and program.
+  struct NoisePass {
+    StorageBuffer permutation;
+    ComputeProgram program;
+  };
+  static NoisePass noise_pass(std::uint32_t seed);
+
+  // Checks the block, then allocates and tabulates; an upload is left to the caller.
+  MarchingTetrahedra(const CaveParams& block, EdgePlacement placement, DensitySource source);
+  void compute_density();
   void emit();
 
   std::size_t sample_total_;
   std::size_t cube_total_;
   std::int64_t storage_block_limit_;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE in bytes
-  CaveParams params_;
+  CaveParams params_;  // the block; for an uploaded volume its noise fields (scale, kernel, seed) are unused
   EdgePlacement placement_;
   UniformBuffer block_;
-  StorageBuffer permutation_;
+  std::optional<NoisePass> noise_;  // empty for an uploaded volume
   StorageBuffer density_;
   StorageBuffer triangle_offsets_;  // per cube + 1: counts, then their exclusive scan
   StorageBuffer vertex_offsets_;
   StorageBuffer cube_rock_;   // per cube: bit c set iff corner c is rock
   StorageBuffer cube_cases_;  // tables of gpu/shaders/cave/cube_cases.glsl, filled by the constructor
-  ComputeProgram density_program_;
   ComputeProgram count_program_;
   ComputeProgram emit_program_;
   ExclusiveScan scan_;

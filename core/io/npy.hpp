@@ -1,0 +1,40 @@
+// Internal to core/io: one reader of NumPy's .npy array format, shared by the arrays inside .npz
+// archives (dem_formats.cpp, a libzip member) and plain .npy files (volume_io.cpp).
+//
+// The reader sees its bytes through a ByteSource, so the header parser, the size check and the
+// value conversion exist once whatever holds the array. Supported: format versions 1 to 3, dtypes
+// '<i2' '<i4' '<f4' '<f8' (returned as double, which holds all four exactly), C order
+// (fortran_order False); anything else is an InputError naming `where` (the caller's name for the
+// array: a file, or an archive and member).
+//
+// Decisions: the caller's ShapeCheck judges the shape (how many axes, how large) and returns the
+// element count before anything is allocated; the stored size must then equal what the header
+// promises, exactly (short: truncated; long: trailing bytes, a sign of a damaged file either way).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gt::detail {
+
+// Copies up to `bytes` bytes of the stream into `destination` and returns how many it copied
+// (fewer only at the end); throws InputError when the stream cannot be read.
+using ByteSource = std::function<std::size_t(void* destination, std::size_t bytes)>;
+
+// Returns the element count of an array of this shape, or throws InputError when the caller
+// refuses the shape (wrong number of axes, empty, too large).
+using ShapeCheck = std::function<std::size_t(const std::vector<long long>& shape)>;
+
+struct NpyArray {
+  std::vector<long long> shape;  // NumPy's order: the last axis varies fastest in `values`
+  std::vector<double> values;
+};
+
+// Reads a whole .npy array from `source`, whose stored size is `stored_bytes`.
+NpyArray read_npy(const ByteSource& source, std::uintmax_t stored_bytes, const ShapeCheck& element_count,
+                  const std::string& where);
+
+}  // namespace gt::detail
