@@ -29,8 +29,9 @@ struct PreparedTwin {
 };
 
 // What an ad-hoc run's --input names: a heightmap (erosion; noise samples on its grid, or on a
-// --size grid without one), a mesh file (mesh.check), or nothing (the cave makes its own field).
-enum class AdHocInput { heightmap, mesh, none };
+// --size grid without one), a mesh file (mesh.check), a volume file or nothing (the cave meshes a
+// .npy volume when given one, else the seed's noise), or nothing at all (the endless cave).
+enum class AdHocInput { heightmap, mesh, optional_volume, none };
 
 struct Algorithm {
   std::string name;     // e.g. erosion.thermal

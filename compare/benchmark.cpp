@@ -14,7 +14,8 @@ namespace {
 
 BenchmarkRow row(const std::string& algorithm, const std::string& backend, int size, int iterations, int reps,
                  const std::vector<double>& times, const std::string& device) {
-  BenchmarkRow result{algorithm, backend, size, iterations, reps, median(times), 0.0, device};
+  BenchmarkRow result{.algorithm = algorithm, .backend = backend, .size = size, .iterations = iterations, .reps = reps,
+                      .median_ms = median(times), .device = device};
   result.mcell_iterations_per_s = static_cast<double>(size) * size * iterations / (result.median_ms * 1e-3) / 1e6;
   return result;
 }

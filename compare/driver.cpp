@@ -40,6 +40,9 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
       throw InputError(fmt::format("{} makes its own field from its parameters: drop --input, use --set", ad_hoc.algorithm));
     }
     spec.input = nlohmann::json::object();
+  } else if (algorithm.ad_hoc_input == AdHocInput::optional_volume) {
+    spec.input = ad_hoc.input.empty() ? nlohmann::json::object()
+                                      : nlohmann::json{{"volume", std::filesystem::absolute(ad_hoc.input).string()}};
   } else if (algorithm.ad_hoc_input == AdHocInput::mesh) {
     if (ad_hoc.input.empty()) throw InputError(fmt::format("{} checks a mesh: give it one with --input", ad_hoc.algorithm));
     spec.input = {{"mesh", std::filesystem::absolute(ad_hoc.input).string()}};
@@ -59,8 +62,9 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
     spec.params[name] = parse_param_text(spec.algorithm, *algorithm.params, name, assignment.substr(equals + 1));
   }
   const std::string input_name =
-      algorithm.ad_hoc_input == AdHocInput::none ? "params"
-      : ad_hoc.input.empty()                     ? fmt::format("{}x{}", ad_hoc.width, ad_hoc.height) : std::filesystem::path(ad_hoc.input).stem().string();
+      !ad_hoc.input.empty()                      ? std::filesystem::path(ad_hoc.input).stem().string()
+      : algorithm.ad_hoc_input != AdHocInput::heightmap ? "params"
+                                                        : fmt::format("{}x{}", ad_hoc.width, ad_hoc.height);
   spec.name = fmt::format("adhoc.{}.{}", ad_hoc.algorithm, input_name);
   return spec;
 }

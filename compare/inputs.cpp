@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/io/mesh_io.hpp"
+#include "core/io/volume_io.hpp"
 #include "core/rng.hpp"
 
 namespace gt {
@@ -168,12 +169,20 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
     loaded.mesh = std::move(file.mesh);
     return loaded;
   }
+  if (input.contains("volume") && input["volume"].is_string()) {
+    std::filesystem::path path = input["volume"].get<std::string>();
+    if (path.is_relative()) path = dataset_dir / path;
+    loaded.volume = read_volume(path);
+    loaded.description = fmt::format("{} ({}x{}x{} samples)", path.filename().string(), loaded.volume->nx,
+                                     loaded.volume->ny, loaded.volume->nz);
+    return loaded;
+  }
   if (input.contains("file") && input["file"].is_string()) {
     loaded = file_input(input, dataset_dir);
   } else if (input.contains("generator") && input["generator"].is_string()) {
     loaded = generated_input(input);
   } else {
-    throw InputError(fmt::format("input {} needs a string 'file', 'mesh' or 'generator'", input.dump()));
+    throw InputError(fmt::format("input {} needs a string 'file', 'mesh', 'volume' or 'generator'", input.dump()));
   }
   if (!crop.is_null()) {
     loaded.heights = cropped(loaded.heights, crop);

@@ -12,6 +12,9 @@
 //   example_3x3   seed 000's 3×3 test field: centre 1, other cells 0, cell size 1.
 //   cone, step and flat take "noise" (m, default 0) and "seed" (default 1): uniform noise in
 //   [0, noise) added to every cell from random_u32(seed, cell, 0, 0).
+// {"mesh": "real/meshes/cow.off"}   a triangle mesh (OFF, OBJ, PLY, STL; core/io/mesh_io.hpp).
+// {"volume": "sdf.npy"}            a scalar volume, a 3-D .npy array (core/io/volume_io.hpp): the
+//                                  cave's density when it is not the seed's noise.
 // {} (no input)                    an empty LoadedInput: the algorithm makes its own field (cave).
 // "crop": [x, y, width, height] cuts a window out of the input (InputError if it does not fit).
 #pragma once
@@ -25,6 +28,7 @@
 
 #include "core/grid.hpp"
 #include "core/mesh.hpp"
+#include "core/volume.hpp"
 
 namespace gt {
 
@@ -33,6 +37,7 @@ struct LoadedInput {
   std::string description;          // e.g. "volcano.json, 87x61 cells of 10 m"
   std::vector<std::string> notes;   // what the reader decided
   std::optional<Mesh> mesh;         // for {"mesh": path}
+  std::optional<Volume<double>> volume;  // for {"volume": path}
 };
 
 LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop,

@@ -40,6 +40,8 @@
 #include <nlohmann/json.hpp>
 #include <tiffio.h>
 
+#include "tests/support/npy_writer.hpp"
+
 extern char** environ;
 
 namespace {
@@ -379,10 +381,6 @@ TEST(CliRun, ThermalSuiteMeetsTheAcceptanceBounds) {
 
 // ---- 1b. the cave suite and the real meshes ----------------------------------------------------
 
-std::string fmt_name(const std::string& a, const std::string& b, const std::string& c, const std::string& d) {
-  return a + b + c + d;
-}
-
 // The value of a check that must exist.
 double check_value(const json& report_case, const std::string& name) {
   const json* check = find_check(report_case, name);
@@ -416,9 +414,9 @@ TEST(CliRun, CaveSuiteIsWatertightSeamlessAndCatchesTheHoles) {
     EXPECT_EQ(solid.at("status"), "pass") << solid.dump(2);
     for (const char* backend : {"cpu", "gpu"}) {
       for (const char* what : {"closed", "manifold", "oriented", "self_intersections", "degenerate", "libraries_agree"}) {
-        EXPECT_EQ(check_value(solid, fmt_name("mesh.", what, ".", backend)), 0.0) << what << " " << backend;
+        EXPECT_EQ(check_value(solid, fmt::format("mesh.{}.{}", what, backend)), 0.0) << what << " " << backend;
       }
-      EXPECT_EQ(find_check(solid, fmt_name("mesh.bounds_volume.", "", "", backend))->at("status"), "pass");
+      EXPECT_EQ(find_check(solid, fmt::format("mesh.bounds_volume.{}", backend))->at("status"), "pass");
     }
     EXPECT_EQ(check_value(solid, "parity.topology.gpu_vs_float"), 0.0);
     EXPECT_LE(check_value(solid, "volume.mesh_vs_field.cpu"), find_check(solid, "volume.mesh_vs_field.cpu")->at("threshold").get<double>());
@@ -452,6 +450,54 @@ TEST(CliRun, CaveSuiteIsWatertightSeamlessAndCatchesTheHoles) {
   }
   EXPECT_EQ(check_value(cases.at("mesh.check.elephant"), "spec.genus"), 0.0);
   EXPECT_EQ(check_value(cases.at("mesh.check.elephant_with_holes"), "spec.border_edges"), 0.0);
+}
+
+// A scalar volume from a file, meshed on both backends: two overlapping balls as a signed distance
+// (negative inside: rock), some samples exactly at the threshold; then a NaN and a flat volume.
+TEST(CliRun, VolumeFileIsMeshedWatertightOnBothBackends) {
+  const TempDir work;
+  constexpr int nx = 18, ny = 15, nz = 13;
+  std::vector<double> distance;
+  for (int z = 0; z < nz; ++z) {
+    for (int y = 0; y < ny; ++y) {
+      for (int x = 0; x < nx; ++x) {
+        const double first = std::hypot(x - 7.0, y - 7.0, z - 6.0) - 5.0;  // 5 at integer distances: exact zeros
+        const double second = std::hypot(x - 12.5, y - 7.25, z - 6.0) - 3.5;
+        distance.push_back(std::min(first, second));
+      }
+    }
+  }
+  const std::string header = gt::testing::npy_header("<f8", fmt::format("({}, {}, {})", nz, ny, nx));
+  const fs::path volume = work / "balls.npy";
+  write_text(volume, header + gt::testing::npy_data(distance));
+  const fs::path out = work / "report";
+  const RunResult run = run_groundtruth({"run", "--algorithm", "cave.marching_tetrahedra", "--input", volume.string(),
+                                         "--set", "solid=true", "--set", "origin_x=-30", "--out", out.string()},
+                                        work.path());
+  ASSERT_EQ(run.status, 0) << run;
+  const json report = read_json(out / "report.json");
+  ASSERT_EQ(report.at("cases").size(), 1u);
+  const json& report_case = report.at("cases")[0];
+  EXPECT_EQ(report_case.at("status"), "pass") << report_case.dump(2);
+  EXPECT_NE(report_case.at("input").get<std::string>().find("balls.npy (18x15x13 samples)"), std::string::npos);
+  for (const char* name : {"mesh.closed.cpu", "mesh.closed.gpu", "mesh.self_intersections.gpu", "parity.topology.gpu_vs_float"}) {
+    EXPECT_EQ(check_value(report_case, name), 0.0) << name;
+  }
+  EXPECT_EQ(check_value(report_case, "mesh.genus.gpu"), 0.0) << "two overlapping balls are one sphere";
+  EXPECT_EQ(find_check(report_case, "normals.angle_max.cpu"), nullptr) << "normals compare the noise's derivatives";
+  expect_artifacts_exist(report_case, out);
+
+  distance[5] = std::nan("");
+  write_text(work / "nan.npy", header + gt::testing::npy_data(distance));
+  write_text(work / "flat.npy", gt::testing::npy_header("<f8", "(1, 2, 2)") + gt::testing::npy_data(std::vector<double>(4, 1.0)));
+  for (const auto& [file, needle] : {std::pair{"nan.npy", "is nan"}, std::pair{"flat.npy", "empty volume"}}) {
+    const RunResult refused = run_groundtruth(
+        {"run", "--algorithm", "cave.marching_tetrahedra", "--input", (work / file).string(), "--out", (work / "bad").string()},
+        work.path());
+    EXPECT_EQ(refused.status, 2) << refused;
+    EXPECT_NE(refused.err.find(needle), std::string::npos) << refused;
+    EXPECT_FALSE(fs::exists(work / "bad"));
+  }
 }
 
 // Real meshes through the command users run: exit 0 for the closed ones, 1 for the others.

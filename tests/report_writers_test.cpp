@@ -122,8 +122,16 @@ Report sample_report() {
                                    {make_check("parity.max_abs", std::numeric_limits<double>::quiet_NaN(), 1e-6,
                                                Outcome::fail, "GPU produced NaN")});
   report.cases = {pass, fail, warn, skip, error, expected, nan_value};
-  report.benchmarks = {{"erosion.thermal", "cpu", 256, 50, 3, 120.0, 27.3, "Intel Xeon"},
-                       {"erosion.thermal", "gpu", 256, 50, 5, 12.0, 273.0, "llvmpipe"}};
+  report.benchmarks = {
+      {.algorithm = "erosion.thermal", .backend = "cpu", .size = 256, .iterations = 50, .reps = 3, .median_ms = 120.0,
+       .mcell_iterations_per_s = 27.3, .device = "Intel Xeon"},
+      {.algorithm = "erosion.thermal", .backend = "gpu", .size = 256, .iterations = 50, .reps = 5, .median_ms = 12.0,
+       .mcell_iterations_per_s = 273.0, .device = "llvmpipe"},
+      {.algorithm = "cave.marching_tetrahedra", .backend = "cpu", .size = 64, .iterations = 1, .reps = 3,
+       .median_ms = 50.0, .mcell_iterations_per_s = 5.24288, .device = "Intel Xeon", .dimensions = 3,
+       .mtriangles_per_s = 12.5},
+      {.algorithm = "cave.marching_tetrahedra", .backend = "gpu", .size = 256, .iterations = 1, .device = "llvmpipe",
+       .dimensions = 3, .note = "triangles need 444 MB, more than GL_MAX_SHADER_STORAGE_BLOCK_SIZE"}};
   report.plots = {{"", "plot", "plot unavailable: test"}};
   return report;
 }
@@ -231,9 +239,14 @@ TEST_F(ReportFiles, JsonFollowsSchema1) {
   EXPECT_EQ(nan_check["value_text"], "nan");
   EXPECT_EQ(nan_check["status"], "fail");
 
-  ASSERT_EQ(report["benchmarks"].size(), 2u);
+  ASSERT_EQ(report["benchmarks"].size(), 4u);
   EXPECT_EQ(report["benchmarks"][1]["device"], "llvmpipe");
   EXPECT_EQ(report["benchmarks"][1]["mcell_iterations_per_s"], 273.0);
+  EXPECT_EQ(report["benchmarks"][1]["dimensions"], 2);
+  EXPECT_TRUE(report["benchmarks"][1]["mtriangles_per_s"].is_null());
+  EXPECT_EQ(report["benchmarks"][2]["dimensions"], 3);
+  EXPECT_EQ(report["benchmarks"][2]["mtriangles_per_s"], 12.5);
+  EXPECT_NE(report["benchmarks"][3]["note"].get<std::string>().find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos);
   EXPECT_EQ(report["summary"], json({{"pass", 1}, {"fail", 3}, {"warn", 1}, {"skip", 1}, {"error", 1},
                                      {"failed", true}}));
 }
@@ -280,6 +293,8 @@ TEST_F(ReportFiles, HtmlNamesEveryCaseAndEscapes) {
   EXPECT_NE(html.find("<img src=\"erosion.thermal.cardinal.volcano/before.png\""), std::string::npos);
   EXPECT_EQ(html.find("<img src=\"erosion.thermal.cardinal.volcano/gpu.exr\""), std::string::npos);
   EXPECT_NE(html.find("plot unavailable: test"), std::string::npos);
+  EXPECT_NE(html.find("64³"), std::string::npos);
+  EXPECT_NE(html.find("not run: triangles need 444 MB"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
 }
 
@@ -289,7 +304,11 @@ TEST_F(ReportFiles, MarkdownHasSummaryDetailsAndBenchmarks) {
   EXPECT_NE(markdown.find("RUN FAILED"), std::string::npos);
   EXPECT_NE(markdown.find("### erosion.thermal.diagonal.volcano — fail"), std::string::npos);
   EXPECT_EQ(markdown.find("### erosion.thermal.cardinal.volcano"), std::string::npos);  // all checks pass
-  EXPECT_NE(markdown.find("| erosion.thermal | gpu | llvmpipe | 256×256 | 50 | 5 | 12 | 273 |"), std::string::npos);
+  EXPECT_NE(markdown.find("| erosion.thermal | gpu | llvmpipe | 256×256 | 50 | 5 | 12 | 273 |  |"), std::string::npos);
+  EXPECT_NE(markdown.find("| cave.marching_tetrahedra | cpu | Intel Xeon | 64³ | 1 | 3 | 50 | 5.24 | 12.5 |"), std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("| 256³ |"), std::string::npos);
+  EXPECT_NE(markdown.find("not run: triangles need 444 MB"), std::string::npos);
   EXPECT_NE(markdown.find("| nan |"), std::string::npos);
 }
 
@@ -412,9 +431,11 @@ TEST_F(Plots, BenchmarkPlotIsAPng) {
   std::vector<BenchmarkRow> rows;
   for (int size : {64, 128, 256, 512}) {
     const double cells = static_cast<double>(size) * size * 50;
-    rows.push_back({"erosion.thermal", "cpu", size, 50, 3, cells * 4e-6, cells / (cells * 4e-3), "Intel Xeon"});
-    rows.push_back({"erosion.thermal", "gpu", size, 50, 5, 1.0 + cells * 2e-7, cells / ((1.0 + cells * 2e-7) * 1e3),
-                    "llvmpipe"});
+    rows.push_back({.algorithm = "erosion.thermal", .backend = "cpu", .size = size, .iterations = 50, .reps = 3,
+                    .median_ms = cells * 4e-6, .mcell_iterations_per_s = cells / (cells * 4e-3), .device = "Intel Xeon"});
+    rows.push_back({.algorithm = "erosion.thermal", .backend = "gpu", .size = size, .iterations = 50, .reps = 5,
+                    .median_ms = 1.0 + cells * 2e-7, .mcell_iterations_per_s = cells / ((1.0 + cells * 2e-7) * 1e3),
+                    .device = "llvmpipe"});
   }
   std::string reason;
   const auto plot = plot_benchmarks(rows, folder, reason);

@@ -23,17 +23,25 @@
 //                                    max |ref<float> - ref<double>| over the block), plus the
 //                                    float roundings of t (4u, GLSL's division included) and of
 //                                    the position (u·(|a| + 1)); √3 for the three axes
-//   parity.hausdorff_bound.gpu_vs_double   same triangles: the largest vertex distance bounds the
-//                                    Hausdorff distance between the two surfaces
+//   parity.hausdorff.{float,gpu}_vs_double   CGAL's approximate symmetric Hausdorff distance
+//                                    (informative); parity.hausdorff_bound.*: with the same
+//                                    triangles, the largest vertex distance bounds it
 //   parity.topology.gpu_vs_float, parity.max_abs.gpu_vs_float   the same float operations: equal
 //                                    index buffers and keys; positions within GLSL's division
 //                                    error (3u of t plus one rounding of the position), 0 on llvmpipe
 //   determinism.gpu                  vertices or triangles differing between two GPU runs
 // Meshes are written beside the report as mesh.cpu.<format> and mesh.gpu.<format>.
+//
+// The density is the seed's noise, or a volume read from a file ({"volume": "f.npy"}, `--input
+// f.npy`): then the block's size is the volume's, origin_* places its first sample on the lattice,
+// threshold and solid apply, the noise parameters do not, ref<float> and the GPU mesh the samples
+// rounded to float, and there are no normal checks (they compare two ways of differentiating the
+// noise).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include <fmt/format.h>
@@ -62,7 +70,8 @@ using reference::EdgePlacement;
 enum class Mesher { tetrahedra, cubes };
 
 struct Block {
-  CaveParams params;
+  CaveParams params;  // with a volume: origin and solid apply, size is the volume's, the noise fields do not
+  std::shared_ptr<const Volume<double>> volume;  // a density read from a file; null: the seed's noise
   Mesher mesher = Mesher::tetrahedra;
   EdgePlacement placement = EdgePlacement::linear;
   std::string mesh_format = "ply";
@@ -154,6 +163,8 @@ std::function<double(std::uint64_t)> vertex_bound(const Block& block, const Volu
   };
 }
 
+constexpr double hausdorff_spacing = 0.1;  // lattice units between Hausdorff samples
+
 struct BlockMeshes {
   Volume<double> density;
   Mesh truth;                  // ref<double>
@@ -170,8 +181,8 @@ void add_expected_triangles(const nlohmann::json& expect, std::size_t triangles,
 }
 
 // The checks every mesh of a block gets, on either backend.
-void add_block_mesh_checks(const Block& block, const Mesh& mesh, const std::string& backend,
-                           const nlohmann::json& expect, CaseResult& result, MeshReport& report) {
+void add_block_mesh_checks(const Block& block, const Mesh& mesh, const std::string& backend, CaseResult& result,
+                           MeshReport& report) {
   report = check_mesh(mesh);
   const auto checks = mesh_checks(report, backend, block.params.solid);
   result.checks.insert(result.checks.end(), checks.begin(), checks.end());
@@ -236,6 +247,11 @@ void add_vs_double(const Block& block, const BlockMeshes& meshes, const Triangle
       fmt::format("largest vertex distance / its bound over {} shared vertices; density error ε = {:.3g} (float vs "
                   "double, measured); bound √3·(min(1, 3ε/(|Δv| - 2ε)) + u·(4 + |a|))",
                   vertices.matched, density_error)));
+  result.checks.push_back(informative_check(
+      "parity.hausdorff." + name, approximate_hausdorff_distance(to_double_mesh(single), meshes.truth, hausdorff_spacing),
+      fmt::format("CGAL's approximate symmetric Hausdorff distance, samples every {:g} lattice units (lattice units); "
+                  "the triangles that change with a sample's side make it larger than the vertex distances",
+                  hausdorff_spacing)));
   if (differing.empty()) {
     result.checks.push_back(informative_check(
         "parity.hausdorff_bound." + name, vertices.max_distance,
@@ -252,19 +268,29 @@ void write_mesh_artifact(const Block& block, const Mesh& mesh, const std::string
   result.artifacts.push_back({relative, "mesh", fmt::format("{} mesh, {} triangles", backend, mesh.triangles.size())});
 }
 
+Volume<float> rounded_to_float(const Volume<double>& volume) {
+  Volume<float> single(volume.nx, volume.ny, volume.nz);
+  single.origin = volume.origin;
+  single.spacing = volume.spacing;
+  for (std::size_t sample = 0; sample < volume.values.size(); ++sample) {
+    single.values[sample] = static_cast<float>(volume.values[sample]);
+  }
+  return single;
+}
+
 BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseResult& result) {
   if (options.progress) options.progress->stage("CPU reference (double)");
   BlockMeshes meshes;
   std::vector<double> times;
   for (int rep = 0; rep < std::max(options.cpu_reps, 1); ++rep) {
     times.push_back(cpu_wall_ms([&] {
-      meshes.density = reference::cave_density<double>(block.params);
+      meshes.density = block.volume ? *block.volume : reference::cave_density<double>(block.params);
       meshes.truth = mesh_block(block, meshes.density);
     }));
   }
   result.timings.cpu_ms = median(times);
   result.timings.cpu_reps = static_cast<int>(times.size());
-  meshes.density_float = reference::cave_density<float>(block.params);
+  meshes.density_float = block.volume ? rounded_to_float(*block.volume) : reference::cave_density<float>(block.params);
   meshes.single = mesh_block(block, meshes.density_float);
   return meshes;
 }
@@ -273,9 +299,16 @@ gpu::EdgePlacement gpu_placement(EdgePlacement placement) {
   return placement == EdgePlacement::linear ? gpu::EdgePlacement::linear : gpu::EdgePlacement::midpoint;
 }
 
-TriangleMesh<float> run_gpu(const Block& block, const RunOptions& options, CaseResult& result) {
+gpu::MarchingTetrahedra gpu_mesher(const Block& block, const Volume<float>& density_float) {
+  if (!block.volume) return gpu::MarchingTetrahedra(block.params, gpu_placement(block.placement));
+  return gpu::MarchingTetrahedra(density_float, static_cast<float>(block.params.threshold), block.params.solid,
+                                 block.params.origin, gpu_placement(block.placement));
+}
+
+TriangleMesh<float> run_gpu(const Block& block, const Volume<float>& density_float, const RunOptions& options,
+                            CaseResult& result) {
   if (options.progress) options.progress->stage("GPU");
-  gpu::MarchingTetrahedra mesher(block.params, gpu_placement(block.placement));
+  gpu::MarchingTetrahedra mesher = gpu_mesher(block, density_float);
   mesher.run();
   const TriangleMesh<float> first = mesher.result();
   std::vector<double> times;
@@ -312,18 +345,21 @@ void add_gpu_vs_float(const TriangleMesh<float>& gpu_mesh, const TriangleMesh<fl
                   magnitude, vertices.bit_differences, vertices.matched)));
 }
 
-void run_block(const Block& block, const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
-  result.input = fmt::format("seed 004 density, {}x{}x{} cells at ({}, {}, {}), scale {:g}, kernel {:g}, {}",
-                             block.params.size[0], block.params.size[1], block.params.size[2], block.params.origin[0],
-                             block.params.origin[1], block.params.origin[2], block.params.scale,
-                             block.params.kernel_radius_squared, block.params.solid ? "solid" : "open chunk");
+void run_block(const Block& block, const std::string& volume_file, const nlohmann::json& expect,
+               const RunOptions& options, CaseResult& result) {
+  const std::string field = block.volume ? volume_file
+                                         : fmt::format("seed 004 density (scale {:g}, kernel {:g})", block.params.scale,
+                                                       block.params.kernel_radius_squared);
+  result.input = fmt::format("{}, {}x{}x{} cells at ({}, {}, {}), threshold {:g}, {}", field, block.params.size[0],
+                             block.params.size[1], block.params.size[2], block.params.origin[0], block.params.origin[1],
+                             block.params.origin[2], block.params.threshold, block.params.solid ? "solid" : "open chunk");
   const BlockMeshes meshes = run_reference(block, options, result);
   if (options.progress) options.progress->stage("CGAL and OpenMesh (cpu)");
   MeshReport cpu_report;
-  add_block_mesh_checks(block, meshes.truth, "cpu", expect, result, cpu_report);
+  add_block_mesh_checks(block, meshes.truth, "cpu", result, cpu_report);
   add_expected_triangles(expect, meshes.truth.triangles.size(), "cpu", result);
   add_volume_check(block, meshes, cpu_report, result);
-  add_normal_checks(block, meshes.truth, result);
+  if (!block.volume) add_normal_checks(block, meshes.truth, result);  // normals of the seed's noise
   add_vs_double(block, meshes, meshes.single, "float_vs_double", result);
   write_mesh_artifact(block, meshes.truth, "cpu", options, result);
 
@@ -338,19 +374,23 @@ void run_block(const Block& block, const nlohmann::json& expect, const RunOption
     }
     return;
   }
-  const TriangleMesh<float> gpu_mesh = run_gpu(block, options, result);
+  const TriangleMesh<float> gpu_mesh = run_gpu(block, meshes.density_float, options, result);
   add_gpu_vs_float(gpu_mesh, meshes.single, result);
   add_vs_double(block, meshes, gpu_mesh, "gpu_vs_double", result);
   if (options.progress) options.progress->stage("CGAL and OpenMesh (gpu)");
   const Mesh gpu_double = to_double_mesh(gpu_mesh);
   MeshReport gpu_report;
-  add_block_mesh_checks(block, gpu_double, "gpu", expect, result, gpu_report);
+  add_block_mesh_checks(block, gpu_double, "gpu", result, gpu_report);
   write_mesh_artifact(block, gpu_double, "gpu", options, result);
 }
 
-Block block_from_json(Mesher mesher, const nlohmann::json& resolved) {
+Block block_from_json(Mesher mesher, const nlohmann::json& resolved, const LoadedInput& input) {
   Block block;
   block.params = cave_params_from_json(resolved);
+  if (input.volume) {
+    block.volume = std::make_shared<const Volume<double>>(*input.volume);
+    block.params.size = {input.volume->nx - 1, input.volume->ny - 1, input.volume->nz - 1};
+  }
   block.mesher = mesher;
   block.placement = resolved.at("placement") == "linear" ? EdgePlacement::linear : EdgePlacement::midpoint;
   block.mesh_format = resolved.at("mesh_format");
@@ -365,11 +405,13 @@ Block block_from_json(Mesher mesher, const nlohmann::json& resolved) {
 
 PreparedTwin prepare_block(Mesher mesher, const nlohmann::json& resolved, const LoadedInput& input) {
   if (input.heights.size() != 0 || input.mesh) {
-    throw InputError("the cave makes its own density from its parameters: give the case no input");
+    throw InputError("the cave meshes the seed's noise or a volume ({\"volume\": \"file.npy\"}), not a heightmap or a mesh");
   }
   PreparedTwin prepared;
-  prepared.run = [block = block_from_json(mesher, resolved)](const nlohmann::json& expect, const RunOptions& options,
-                                                            CaseResult& result) { run_block(block, expect, options, result); };
+  prepared.run = [block = block_from_json(mesher, resolved, input), file = input.description](
+                     const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+    run_block(block, file, expect, options, result);
+  };
   return prepared;
 }
 
@@ -379,8 +421,8 @@ constexpr int benchmark_sides[] = {32, 64, 128, 256};
 
 BenchmarkRow mesher_row(const std::string& backend, int side, int reps, const std::vector<double>& times,
                         std::size_t triangles, const std::string& device) {
-  BenchmarkRow row{"cave.marching_tetrahedra", backend, side, 1, reps, median(times), 0.0, device};
-  row.dimensions = 3;
+  BenchmarkRow row{.algorithm = "cave.marching_tetrahedra", .backend = backend, .size = side, .iterations = 1,
+                   .reps = reps, .median_ms = median(times), .device = device, .dimensions = 3};
   row.mcell_iterations_per_s = std::pow(double(side), 3) / (row.median_ms * 1e-3) / 1e6;
   row.mtriangles_per_s = double(triangles) / (row.median_ms * 1e-3) / 1e6;
   return row;
@@ -410,10 +452,8 @@ std::vector<BenchmarkRow> benchmark_mesher(const BenchmarkOptions& options, bool
       for (int rep = 0; rep < options.reps; ++rep) gpu_times.push_back(gpu_wall_ms([&] { mesher.run(); }));
       rows.push_back(mesher_row("gpu", side, options.reps, gpu_times, triangles, environment.gl_renderer));
     } catch (const std::runtime_error& error) {
-      BenchmarkRow row{"cave.marching_tetrahedra", "gpu", side, 1, 0, 0.0, 0.0, environment.gl_renderer};
-      row.dimensions = 3;
-      row.note = error.what();
-      rows.push_back(row);
+      rows.push_back({.algorithm = "cave.marching_tetrahedra", .backend = "gpu", .size = side, .iterations = 1,
+                      .device = environment.gl_renderer, .dimensions = 3, .note = error.what()});
     }
   }
   return rows;
@@ -431,7 +471,7 @@ std::vector<Algorithm> cave_algorithms() {
                      const LoadedInput& input) { return prepare_block(Mesher::tetrahedra, resolved, input); },
        .iterates = false,
        .has_field_twin = false,
-       .ad_hoc_input = AdHocInput::none,
+       .ad_hoc_input = AdHocInput::optional_volume,
        .benchmark = benchmark_mesher},
       {.name = "cave.marching_cubes",
        .summary = "the seed's dropped marching cubes (14 base cases, midpoints, no disambiguation): the variant with holes",
@@ -441,7 +481,7 @@ std::vector<Algorithm> cave_algorithms() {
                      const LoadedInput& input) { return prepare_block(Mesher::cubes, resolved, input); },
        .iterates = false,
        .has_field_twin = false,
-       .ad_hoc_input = AdHocInput::none},
+       .ad_hoc_input = AdHocInput::optional_volume},
   };
 }
 

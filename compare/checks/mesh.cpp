@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -603,6 +605,32 @@ std::vector<Check> mesh_checks(const MeshReport& report, const std::string& back
   checks.push_back(cgal.volume ? informative_check(name("volume"), *cgal.volume, "CGAL; negative when oriented inward")
                                : skipped_check(name("volume"), "the mesh is open"));
   return checks;
+}
+
+namespace {
+
+SurfaceMesh surface_for_distances(const Mesh& mesh) {
+  std::vector<Point> points;
+  points.reserve(mesh.positions.size());
+  for (const auto& position : mesh.positions) points.push_back(point_of(position));
+  std::vector<SoupTriangle> triangles;
+  triangles.reserve(mesh.triangles.size());
+  for (const auto& triangle : mesh.triangles) triangles.push_back({triangle[0], triangle[1], triangle[2]});
+  PMP::orient_polygon_soup(points, triangles);
+  SurfaceMesh surface;
+  PMP::polygon_soup_to_polygon_mesh(points, triangles, surface);
+  return surface;
+}
+
+}  // namespace
+
+double approximate_hausdorff_distance(const Mesh& a, const Mesh& b, double grid_spacing) {
+  if (a.triangles.empty() || b.triangles.empty()) {
+    return a.triangles.empty() && b.triangles.empty() ? 0.0 : std::numeric_limits<double>::infinity();
+  }
+  const auto sampling = CGAL::parameters::use_grid_sampling(true).grid_spacing(grid_spacing);
+  return PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(surface_for_distances(a),
+                                                                              surface_for_distances(b), sampling, sampling);
 }
 
 }  // namespace gt

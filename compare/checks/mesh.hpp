@@ -135,4 +135,11 @@ std::string describe(const MeshReport& report);
 // expect_closed is false (an open chunk).
 std::vector<Check> mesh_checks(const MeshReport& report, const std::string& backend, bool expect_closed);
 
+// CGAL's approximate symmetric Hausdorff distance between two surfaces: the farthest of points
+// sampled on a grid of `grid_spacing` over each mesh's faces (and its vertices) from the other
+// mesh. A lower bound of the true distance that approaches it as the spacing shrinks; deterministic
+// (grid sampling). Both meshes must have finite positions and triangles CGAL can orient into a
+// polygon mesh (the cave meshes); 0 for two empty meshes, infinity when only one is empty.
+double approximate_hausdorff_distance(const Mesh& a, const Mesh& b, double grid_spacing);
+
 }  // namespace gt
