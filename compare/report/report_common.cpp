@@ -135,6 +135,10 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view c
   }
 }
 
+std::string case_size_text(const CaseResult& result) {
+  return result.width == 0 && result.height == 0 ? "—" : fmt::format("{}×{}", result.width, result.height);
+}
+
 std::string benchmark_size_text(const BenchmarkRow& row) {
   return row.dimensions == 3 ? fmt::format("{}³", row.size) : fmt::format("{}×{}", row.size, row.size);
 }

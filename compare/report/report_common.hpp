@@ -49,6 +49,9 @@ std::string format_value(double value);
 // Milliseconds: whole numbers from 1000 ms up, %.3g below; "–" when absent.
 std::string format_ms(std::optional<double> ms);
 
+// The case's grid, "87×61", or "—" for cases without one (meshes, the cave: see their input).
+std::string case_size_text(const CaseResult& result);
+
 // "512×512" for a grid, "128³" for a volume.
 std::string benchmark_size_text(const BenchmarkRow& row);
 

@@ -97,10 +97,10 @@ void append_case_table(std::string& out, const Report& report) {
          "<th>size</th><th>cpu ms</th><th>gpu ms</th><th>checks</th></tr>\n";
   for (const CaseResult& result : report.cases) {
     out += fmt::format(
-        "<tr><td>{}{}</td><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td><td class=\"num\">{}×{}</td>"
+        "<tr><td>{}{}</td><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td><td class=\"num\">{}</td>"
         "<td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td></tr>\n",
         badge(result.status), result.expected_failure.empty() ? "" : " expected", anchor(result), h(result.name),
-        h(result.algorithm), h(result.input), result.width, result.height, format_ms(result.timings.cpu_ms),
+        h(result.algorithm), h(result.input), h(case_size_text(result)), format_ms(result.timings.cpu_ms),
         format_ms(result.timings.gpu_ms), h(format_counts(count_check_outcomes(result), " · ")));
   }
   out += "</table>\n</section>\n";
@@ -171,7 +171,8 @@ void append_timings(std::string& out, const Timings& timings) {
 void append_case_section(std::string& out, const CaseResult& result) {
   out += fmt::format("<section class=\"case\" id=\"{}\">\n<h2>{} {}</h2>\n", anchor(result), badge(result.status),
                      h(result.name));
-  out += fmt::format("<p>{} on {} ({}×{})</p>\n", h(result.algorithm), h(result.input), result.width, result.height);
+  const std::string grid = result.width == 0 && result.height == 0 ? "" : fmt::format(" ({})", case_size_text(result));
+  out += fmt::format("<p>{} on {}{}</p>\n", h(result.algorithm), h(result.input), h(grid));
   if (!result.notes.empty()) {
     out += "<ul class=\"notes\">\n";
     for (const auto& note : result.notes) out += fmt::format("<li>{}</li>\n", h(note));

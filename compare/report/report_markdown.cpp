@@ -43,7 +43,6 @@ void append_summary(std::string& out, const Report& report) {
                      counts.expected_failures);
 }
 
-std::string size_text(const CaseResult& result) { return fmt::format("{}×{}", result.width, result.height); }
 
 void append_case_table(std::string& out, const Report& report) {
   out += "## Cases\n\n| case | status | algorithm | input | size | cpu ms (reps) | gpu ms (reps) | checks |\n"
@@ -52,7 +51,7 @@ void append_case_table(std::string& out, const Report& report) {
     const std::string expected = result.expected_failure.empty() ? "" : " (expected)";
     out += fmt::format("| {} | **{}**{} | {} | {} | {} | {} ({}) | {} ({}) | {} |\n", cell(result.name),
                        outcome_name(result.status), expected, cell(result.algorithm), cell(result.input),
-                       size_text(result), format_ms(result.timings.cpu_ms), result.timings.cpu_reps,
+                       case_size_text(result), format_ms(result.timings.cpu_ms), result.timings.cpu_reps,
                        format_ms(result.timings.gpu_ms), result.timings.gpu_reps,
                        format_counts(count_check_outcomes(result), ", "));
   }
