@@ -39,7 +39,6 @@
 // noise).
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -53,7 +52,6 @@
 #include "compare/checks/threshold.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
-#include "core/io/mesh_io.hpp"
 #include "core/params/cave.hpp"
 #include "gpu/cave/marching_tetrahedra.hpp"
 #include "gpu/timing.hpp"
@@ -93,15 +91,6 @@ const ParamSpecs& block_specs(Mesher mesher) {
 
 std::array<std::int64_t, 3> lattice_origin(const CaveParams& params) {
   return {params.origin[0], params.origin[1], params.origin[2]};
-}
-
-LatticeBox block_box(const CaveParams& params) {
-  LatticeBox box{};
-  for (int axis = 0; axis < 3; ++axis) {
-    box.low[axis] = params.origin[axis];
-    box.high[axis] = std::int64_t{params.origin[axis]} + params.size[axis];
-  }
-  return box;
 }
 
 template <class Real>
@@ -170,6 +159,8 @@ struct BlockMeshes {
   Mesh truth;                  // ref<double>
   Volume<float> density_float;
   TriangleMesh<float> single;  // ref<float>, what the GPU must reproduce
+  std::vector<std::array<std::int64_t, 3>> side_changes;  // samples rock in one precision, air in the other
+  double density_error = 0.0;  // max |density_float - density|
 };
 
 void add_expected_triangles(const nlohmann::json& expect, std::size_t triangles, const std::string& backend,
@@ -191,7 +182,7 @@ void add_block_mesh_checks(const Block& block, const Mesh& mesh, const std::stri
                                               "boundary loops of a block that should be closed (OpenMesh)"));
   } else {
     result.checks.push_back(bounded_check("mesh.border_off_box." + backend,
-                                          double(border_edges_off_box(mesh, block_box(block.params))), 0.0,
+                                          double(border_edges_off_box(mesh, lattice_box(block.params))), 0.0,
                                           std::nullopt, "border edges not lying on a face of the block's box"));
   }
 }
@@ -228,7 +219,7 @@ void add_normal_checks(const Block& block, const Mesh& mesh, CaseResult& result)
 // Mesh `single` (float arithmetic: ref<float> or the GPU) against ref<double>.
 void add_vs_double(const Block& block, const BlockMeshes& meshes, const TriangleMesh<float>& single,
                    const std::string& name, CaseResult& result) {
-  const auto changes = side_changes(meshes.density_float, meshes.density, block.params);
+  const auto& changes = meshes.side_changes;
   const auto differing = triangles_in_one_only(key_triangles(single), key_triangles(meshes.truth));
   const auto unexplained = std::count_if(differing.begin(), differing.end(), [&](const KeyTriangle& triangle) {
     const LatticeBox cube = triangle_cube(triangle);
@@ -240,7 +231,7 @@ void add_vs_double(const Block& block, const BlockMeshes& meshes, const Triangle
                   "precision and air in the other; {} triangles differ, {} samples change side (the seed's lattice has "
                   "many samples at the threshold up to rounding)",
                   differing.size(), changes.size())));
-  const double density_error = max_abs_difference(meshes.density_float, meshes.density);
+  const double density_error = meshes.density_error;
   const VertexComparison vertices = compare_vertices(single, meshes.truth, vertex_bound(block, meshes.density, density_error));
   result.checks.push_back(bounded_check(
       "parity.vertex_model." + name, vertices.max_bound_ratio, 1.0, std::nullopt,
@@ -257,15 +248,6 @@ void add_vs_double(const Block& block, const BlockMeshes& meshes, const Triangle
         "parity.hausdorff_bound." + name, vertices.max_distance,
         "same triangles by edge key: the largest vertex distance bounds the Hausdorff distance (lattice units)"));
   }
-}
-
-void write_mesh_artifact(const Block& block, const Mesh& mesh, const std::string& backend, const RunOptions& options,
-                         CaseResult& result) {
-  if (options.report_dir.empty()) return;
-  const std::string relative = fmt::format("{}/mesh.{}.{}", result.name, backend, block.mesh_format);
-  std::filesystem::create_directories(options.report_dir / result.name);
-  write_mesh(mesh, options.report_dir / relative);
-  result.artifacts.push_back({relative, "mesh", fmt::format("{} mesh, {} triangles", backend, mesh.triangles.size())});
 }
 
 Volume<float> rounded_to_float(const Volume<double>& volume) {
@@ -292,6 +274,8 @@ BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseRes
   result.timings.cpu_reps = static_cast<int>(times.size());
   meshes.density_float = block.volume ? rounded_to_float(*block.volume) : reference::cave_density<float>(block.params);
   meshes.single = mesh_block(block, meshes.density_float);
+  meshes.side_changes = side_changes(meshes.density_float, meshes.density, block.params);
+  meshes.density_error = max_abs_difference(meshes.density_float, meshes.density);
   return meshes;
 }
 
@@ -337,9 +321,8 @@ void add_gpu_vs_float(const TriangleMesh<float>& gpu_mesh, const TriangleMesh<fl
   for (const auto& position : single.positions) {
     for (float coordinate : position) magnitude = std::max(magnitude, std::abs(double(coordinate)));
   }
-  const double bound = std::sqrt(3.0) * unit_roundoff_float * (3.0 + 2.0 * (magnitude + 1.0));
   result.checks.push_back(bounded_check(
-      "parity.max_abs.gpu_vs_float", vertices.max_distance, bound, std::nullopt,
+      "parity.max_abs.gpu_vs_float", vertices.max_distance, gpu_vertex_bound(magnitude), std::nullopt,
       fmt::format("largest vertex distance; same float operations, GLSL's division within 2.5 ulp: 3u of t plus one "
                   "rounding of positions up to {:g}; {} of {} vertices differ in any bit",
                   magnitude, vertices.bit_differences, vertices.matched)));
@@ -361,7 +344,8 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   add_volume_check(block, meshes, cpu_report, result);
   if (!block.volume) add_normal_checks(block, meshes.truth, result);  // normals of the seed's noise
   add_vs_double(block, meshes, meshes.single, "float_vs_double", result);
-  write_mesh_artifact(block, meshes.truth, "cpu", options, result);
+  write_mesh_artifact(meshes.truth, "mesh.cpu." + block.mesh_format,
+                      fmt::format("cpu mesh, {} triangles", meshes.truth.triangles.size()), options, result);
 
   if (block.mesher == Mesher::cubes) {
     result.checks.push_back(skipped_check("parity.gpu", "the seed's marching cubes has no GPU twin: it is kept on the "
@@ -381,7 +365,8 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   const Mesh gpu_double = to_double_mesh(gpu_mesh);
   MeshReport gpu_report;
   add_block_mesh_checks(block, gpu_double, "gpu", result, gpu_report);
-  write_mesh_artifact(block, gpu_double, "gpu", options, result);
+  write_mesh_artifact(gpu_double, "mesh.gpu." + block.mesh_format,
+                      fmt::format("gpu mesh, {} triangles", gpu_double.triangles.size()), options, result);
 }
 
 Block block_from_json(Mesher mesher, const nlohmann::json& resolved, const LoadedInput& input) {

@@ -32,7 +32,6 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <map>
 #include <set>
 #include <unordered_map>
 
@@ -40,13 +39,11 @@
 
 #include "compare/algorithm.hpp"
 #include "compare/checks/cave_mesh.hpp"
-#include "compare/checks/error_model.hpp"
 #include "compare/checks/mesh.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
-#include "core/io/mesh_io.hpp"
 #include "core/params/cave.hpp"
 #include "gpu/cave/marching_tetrahedra.hpp"
 #include "gpu/timing.hpp"
@@ -103,18 +100,9 @@ CaveParams chunk_params(const Path& path, int chunk) {
   return params;
 }
 
-LatticeBox box_of(const CaveParams& params) {
-  LatticeBox box{};
-  for (int axis = 0; axis < 3; ++axis) {
-    box.low[axis] = params.origin[axis];
-    box.high[axis] = std::int64_t{params.origin[axis]} + params.size[axis];
-  }
-  return box;
-}
-
 // The camera's window after `slabs` slabs: the big cube moved along the path.
 LatticeBox window_after(const Path& path, int slabs) {
-  LatticeBox box = box_of(path.big_cube);
+  LatticeBox box = lattice_box(path.big_cube);
   box.low[path.axis] += path.sign * slabs;
   box.high[path.axis] += path.sign * slabs;
   return box;
@@ -196,22 +184,17 @@ std::set<KeyEdge> border_edges_on_plane(const TriangleMesh<Real>& mesh, int axis
 }
 
 template <class Real>
-std::size_t vertex_bit_differences(const TriangleMesh<Real>& a, const TriangleMesh<Real>& b) {
-  return compare_vertices(a, b).bit_differences;
-}
-
-template <class Real>
 SeamFacts seam_facts(const Path& path, const std::vector<TriangleMesh<Real>>& chunks) {
   SeamFacts facts;
   for (int chunk = 0; chunk + 1 < static_cast<int>(chunks.size()); ++chunk) {
-    const LatticeBox older = box_of(chunk_params(path, chunk));
+    const LatticeBox older = lattice_box(chunk_params(path, chunk));
     const std::int64_t plane = path.sign > 0 ? older.high[path.axis] : older.low[path.axis];
     const auto behind = border_edges_on_plane(chunks[chunk], path.axis, plane);
     const auto ahead = border_edges_on_plane(chunks[chunk + 1], path.axis, plane);
     facts.seam_edges += behind.size();
     for (const auto& [from, to] : behind) facts.unmatched_border_edges += ahead.contains({to, from}) ? 0 : 1;
     for (const auto& [from, to] : ahead) facts.unmatched_border_edges += behind.contains({to, from}) ? 0 : 1;
-    facts.vertex_bit_differences += vertex_bit_differences(chunks[chunk], chunks[chunk + 1]);
+    facts.vertex_bit_differences += compare_vertices(chunks[chunk], chunks[chunk + 1]).bit_differences;
   }
   return facts;
 }
@@ -253,13 +236,10 @@ void add_seam_checks(const Path& path, const std::vector<TriangleMesh<Real>>& ch
   const auto checks = mesh_checks(check_mesh(welded), "union_" + backend, false);
   result.checks.insert(result.checks.end(), checks.begin(), checks.end());
   result.checks.push_back(bounded_check("mesh.border_off_box.union_" + backend,
-                                        double(border_edges_off_box(welded, box_of(union_params(path)))), 0.0,
+                                        double(border_edges_off_box(welded, lattice_box(union_params(path)))), 0.0,
                                         std::nullopt, "border edges of the welded path not on a face of its box"));
-  if (options.report_dir.empty()) return;
-  const std::string relative = fmt::format("{}/path.{}.ply", result.name, backend);
-  std::filesystem::create_directories(options.report_dir / result.name);
-  write_mesh(welded, options.report_dir / relative);
-  result.artifacts.push_back({relative, "mesh", fmt::format("{} path welded, {} triangles", backend, welded.triangles.size())});
+  write_mesh_artifact(welded, "path." + backend + ".ply",
+                      fmt::format("{} path welded, {} triangles", backend, welded.triangles.size()), options, result);
 }
 
 void add_monolithic_check(const Path& path, const std::vector<Mesh>& chunks, CaseResult& result) {
@@ -384,11 +364,11 @@ void add_gpu_checks(const Path& path, const std::vector<TriangleMesh<float>>& si
   }
   result.checks.push_back(bounded_check("parity.topology.gpu_vs_float", double(differing_chunks), 0.0, std::nullopt,
                                         "chunks whose index buffer or edge keys differ from ref<float>'s"));
-  const LatticeBox box = box_of(union_params(path));
+  const LatticeBox box = lattice_box(union_params(path));
   double magnitude = 0.0;
   for (int axis = 0; axis < 3; ++axis) magnitude = std::max({magnitude, std::abs(double(box.low[axis])), std::abs(double(box.high[axis]))});
   result.checks.push_back(bounded_check(
-      "parity.max_abs.gpu_vs_float", largest_distance, std::sqrt(3.0) * unit_roundoff_float * (3.0 + 2.0 * (magnitude + 1.0)),
+      "parity.max_abs.gpu_vs_float", largest_distance, gpu_vertex_bound(magnitude),
       std::nullopt, "largest vertex distance over all chunks; GLSL's division within 2.5 ulp (see cave.marching_tetrahedra)"));
   add_seam_checks(path, chunks, "gpu", options, result);
 }

@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <unordered_map>
 
+#include "compare/checks/error_model.hpp"
+#include "core/io/mesh_io.hpp"
 #include "core/params/cave.hpp"
 
 namespace gt {
@@ -132,6 +135,28 @@ std::size_t border_edges_off_box(const TriangleMesh<Real>& mesh, const LatticeBo
     off_box += on_a_face ? 0 : 1;
   }
   return off_box;
+}
+
+LatticeBox lattice_box(const CaveParams& params) {
+  LatticeBox box{};
+  for (int axis = 0; axis < 3; ++axis) {
+    box.low[axis] = params.origin[axis];
+    box.high[axis] = std::int64_t{params.origin[axis]} + params.size[axis];
+  }
+  return box;
+}
+
+double gpu_vertex_bound(double magnitude) {
+  return std::sqrt(3.0) * unit_roundoff_float * (3.0 + 2.0 * (magnitude + 1.0));
+}
+
+void write_mesh_artifact(const Mesh& mesh, const std::string& file, const std::string& caption,
+                         const RunOptions& options, CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const std::string relative = result.name + "/" + file;
+  std::filesystem::create_directories(options.report_dir / result.name);
+  write_mesh(mesh, options.report_dir / relative);
+  result.artifacts.push_back({relative, "mesh", caption});
 }
 
 FieldVolume volume_bound_from_field(const Volume<double>& density, double threshold) {

@@ -29,7 +29,10 @@
 #include <string>
 #include <vector>
 
+#include "compare/field_twin.hpp"
+#include "compare/result.hpp"
 #include "core/mesh.hpp"
+#include "core/params/cave.hpp"
 #include "core/volume.hpp"
 
 namespace gt {
@@ -86,6 +89,19 @@ struct LatticeBox {
 
 template <class Real>
 std::size_t border_edges_off_box(const TriangleMesh<Real>& mesh, const LatticeBox& box);
+
+// The lattice points a block of CaveParams spans: origin .. origin + size per axis.
+LatticeBox lattice_box(const CaveParams& params);
+
+// Largest distance a GPU vertex may lie from ref<float>'s when both run the same float operations
+// and GLSL's division errs by up to 2.5 ulp: 3u in t plus one rounding of a position of magnitude
+// up to `magnitude`, on three axes: √3·u·(3 + 2·(magnitude + 1)). 0 would do on llvmpipe.
+double gpu_vertex_bound(double magnitude);
+
+// Writes `mesh` as report_dir/<case>/<file> and lists it among the case's artifacts (nothing
+// without a report folder).
+void write_mesh_artifact(const Mesh& mesh, const std::string& file, const std::string& caption,
+                         const RunOptions& options, CaseResult& result);
 
 struct FieldVolume {
   double rock_samples = 0.0;  // the estimate, lattice units³
