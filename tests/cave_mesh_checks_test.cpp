@@ -1,0 +1,155 @@
+// The keyed-mesh comparisons behind the cave cases (compare/checks/cave_mesh.hpp) on meshes whose
+// answers are known: a single rock sample (a closed octahedron-like polyhedron of 24 triangles),
+// open chunks of the seed's noise, and copies of them broken on purpose, so that every check is
+// seen to fail when it should.
+#include <algorithm>
+#include <cmath>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "compare/checks/cave_mesh.hpp"
+#include "compare/checks/mesh.hpp"
+#include "core/params/cave.hpp"
+#include "reference/cave/density.hpp"
+#include "reference/cave/marching_tetrahedra.hpp"
+
+namespace gt {
+namespace {
+
+Mesh single_rock_sample() {
+  const Volume<double> volume(1, 1, 1, -1.0);
+  return reference::marching_tetrahedra(volume, 0.0, true, {5, 6, 7});
+}
+
+CaveParams open_chunk(std::array<int, 3> origin, std::array<int, 3> size) {
+  CaveParams params;
+  params.origin = origin;
+  params.size = size;
+  params.solid = false;
+  return params;
+}
+
+Mesh seed_chunk(const CaveParams& params) {
+  return reference::marching_tetrahedra(reference::cave_density<double>(params), params.threshold, false,
+                                        {params.origin[0], params.origin[1], params.origin[2]});
+}
+
+TEST(CaveMeshChecks, KeyTrianglesKeepOrientationAndIgnoreNumbering) {
+  const Mesh mesh = single_rock_sample();
+  Mesh renumbered = mesh;
+  std::reverse(renumbered.positions.begin(), renumbered.positions.end());
+  std::reverse(renumbered.edge_keys.begin(), renumbered.edge_keys.end());
+  const auto last = static_cast<std::uint32_t>(mesh.positions.size() - 1);
+  for (auto& triangle : renumbered.triangles) {
+    for (auto& vertex : triangle) vertex = last - vertex;
+    std::rotate(triangle.begin(), triangle.begin() + 1, triangle.end());  // same orientation, other start
+  }
+  EXPECT_EQ(triangle_difference(key_triangles(mesh), key_triangles(renumbered)), 0u);
+  Mesh flipped = mesh;
+  std::swap(flipped.triangles[3][1], flipped.triangles[3][2]);
+  EXPECT_EQ(triangle_difference(key_triangles(mesh), key_triangles(flipped)), 2u) << "one triangle in each mesh only";
+}
+
+TEST(CaveMeshChecks, VerticesAreComparedByKeyAgainstTheirBound) {
+  const Mesh mesh = single_rock_sample();
+  Mesh moved = mesh;
+  moved.positions[4][1] += 0.25;
+  moved.edge_keys.push_back(lattice_edge_key({0, 0, 0}, 1));  // a vertex only the second mesh has
+  moved.positions.push_back({0.5, 0.0, 0.0});
+  const VertexComparison comparison = compare_vertices(mesh, moved, [](std::uint64_t) { return 0.5; });
+  EXPECT_EQ(comparison.matched, mesh.positions.size());
+  EXPECT_EQ(comparison.only_in_a, 0u);
+  EXPECT_EQ(comparison.only_in_b, 1u);
+  EXPECT_EQ(comparison.bit_differences, 1u);
+  EXPECT_DOUBLE_EQ(comparison.max_distance, 0.25);
+  EXPECT_DOUBLE_EQ(comparison.max_bound_ratio, 0.5);
+}
+
+// An open chunk's border lies on its box; cutting one triangle out of its inside opens a hole
+// whose three edges are off the box.
+TEST(CaveMeshChecks, BorderEdgesOffTheBoxFindAHole) {
+  const CaveParams params = open_chunk({0, 0, 0}, {12, 12, 12});
+  Mesh mesh = seed_chunk(params);
+  const LatticeBox box = lattice_box(params);
+  ASSERT_FALSE(border_edges(mesh).empty());
+  EXPECT_EQ(border_edges_off_box(mesh, box), 0u);
+  const auto interior = std::find_if(mesh.triangles.begin(), mesh.triangles.end(), [&](const auto& triangle) {
+    return std::none_of(triangle.begin(), triangle.end(), [&](std::uint32_t vertex) {
+      for (int axis = 0; axis < 3; ++axis) {
+        if (key_on_plane(mesh.edge_keys[vertex], axis, box.low[axis]) ||
+            key_on_plane(mesh.edge_keys[vertex], axis, box.high[axis])) {
+          return true;
+        }
+      }
+      return false;
+    });
+  });
+  ASSERT_NE(interior, mesh.triangles.end());
+  mesh.triangles.erase(interior);
+  EXPECT_EQ(border_edges_off_box(mesh, box), 3u);
+}
+
+// Two neighbouring chunks name their shared face's vertices by the same keys: their border edges
+// on the shared plane are each other's reverses.
+TEST(CaveMeshChecks, NeighbouringChunksMeetOnTheirPlane) {
+  const Mesh left = seed_chunk(open_chunk({0, 0, 0}, {10, 12, 12}));
+  const Mesh right = seed_chunk(open_chunk({10, 0, 0}, {1, 12, 12}));
+  std::vector<std::array<std::uint64_t, 2>> left_edges, right_edges;
+  for (const auto& edge : border_edges(left)) {
+    if (key_on_plane(left.edge_keys[edge[0]], 0, 10) && key_on_plane(left.edge_keys[edge[1]], 0, 10)) {
+      left_edges.push_back({left.edge_keys[edge[1]], left.edge_keys[edge[0]]});  // reversed
+    }
+  }
+  for (const auto& edge : border_edges(right)) {
+    if (key_on_plane(right.edge_keys[edge[0]], 0, 10) && key_on_plane(right.edge_keys[edge[1]], 0, 10)) {
+      right_edges.push_back({right.edge_keys[edge[0]], right.edge_keys[edge[1]]});
+    }
+  }
+  ASSERT_FALSE(left_edges.empty());
+  std::sort(left_edges.begin(), left_edges.end());
+  std::sort(right_edges.begin(), right_edges.end());
+  EXPECT_EQ(left_edges, right_edges);
+  EXPECT_EQ(compare_vertices(left, right).bit_differences, 0u);
+  EXPECT_GT(compare_vertices(left, right).matched, 0u);
+}
+
+// One rock sample padded with air: 1 rock sample, the 8 cubes around it each with one rock corner
+// (bound 8 · 7/8 = 7), and the polyhedron around it (vertices at the midpoints of the 14 lattice
+// edges from the sample) enclosing a positive volume within that bound of 1.
+TEST(CaveMeshChecks, VolumeOfOneRockSampleIsWithinTheCutCubeBound) {
+  const Volume<double> volume(1, 1, 1, -1.0);
+  const FieldVolume field = volume_bound_from_field(volume, 0.0);
+  EXPECT_EQ(field.rock_samples, 1.0);
+  EXPECT_EQ(field.cut_cubes, 8u);
+  EXPECT_DOUBLE_EQ(field.bound, 7.0);
+  const MeshReport report = check_mesh(single_rock_sample());
+  ASSERT_TRUE(report.cgal.volume.has_value());
+  EXPECT_GT(*report.cgal.volume, 0.0);
+  EXPECT_LE(std::abs(*report.cgal.volume - field.rock_samples), field.bound);
+}
+
+TEST(CaveMeshChecks, TriangleCubeSpansTheCubeItCameFrom) {
+  const KeyTriangle around_corner = {lattice_edge_key({4, 5, 6}, 1), lattice_edge_key({4, 5, 6}, 2),
+                                     lattice_edge_key({4, 5, 6}, 4)};
+  const LatticeBox cube = triangle_cube(around_corner);
+  EXPECT_EQ(cube.low, (std::array<std::int64_t, 3>{4, 5, 6}));
+  EXPECT_EQ(cube.high, (std::array<std::int64_t, 3>{5, 6, 7}));
+  const KeyTriangle in_a_face = {lattice_edge_key({0, 0, 3}, 1), lattice_edge_key({0, 0, 3}, 3),
+                                 lattice_edge_key({0, 0, 3}, 2)};  // all in the plane z = 3
+  const LatticeBox both = triangle_cube(in_a_face);
+  EXPECT_EQ(both.low[2], 2);
+  EXPECT_EQ(both.high[2], 4);
+  EXPECT_TRUE(both.contains({1, 1, 2}));
+  EXPECT_FALSE(both.contains({2, 1, 3}));
+}
+
+TEST(CaveMeshChecks, GpuVertexBoundGrowsWithTheMagnitude) {
+  EXPECT_DOUBLE_EQ(gpu_vertex_bound(0.0), std::sqrt(3.0) * 0x1p-24 * 5.0);
+  EXPECT_GT(gpu_vertex_bound(5000.0), 1000.0 * gpu_vertex_bound(0.0));
+}
+
+}  // namespace
+}  // namespace gt
