@@ -4,8 +4,11 @@
 //   report [--out] [--gl]              the default suite and benchmarks into reports/latest
 //   bench [--sizes] [--iterations]     only the performance table
 //   check-mesh FILE [--json]           the mesh checks on an OFF, OBJ, PLY or STL file
+//   diff-image A B [--json] [--out diff.png] [--tolerance T]
+//                                      image differences, a heat map and a verdict mask
 // Exit status: 0 nothing unexpected failed, 1 something did, 2 bad usage or bad input
-// (check-mesh: 0 watertight and consistently oriented, 1 not, 2 unreadable).
+// (check-mesh: 0 watertight and consistently oriented, 1 not, 2 unreadable;
+// diff-image: 0 no pixel fails the neighbourhood-tolerant comparison, 1 some do, 2 bad input).
 #include <cstdio>
 #include <iostream>
 
@@ -15,6 +18,7 @@
 #include "compare/algorithm.hpp"
 #include "compare/cases.hpp"
 #include "compare/cli/check_mesh.hpp"
+#include "compare/cli/diff_image.hpp"
 #include "compare/driver.hpp"
 #include "core/errors.hpp"
 
@@ -159,6 +163,16 @@ int main(int argc, char** argv) {
   check_mesh->add_option("file", mesh_file, "OFF, OBJ, PLY or STL")->required();
   check_mesh->add_flag("--json", mesh_as_json, "machine-readable");
 
+  gt::DiffImageOptions diff_options;
+  auto* diff_image = app.add_subcommand("diff-image", "how and where do two images differ? (OpenImageIO)");
+  diff_image->add_option("a", diff_options.a, "first image (any format OpenImageIO reads)")->required();
+  diff_image->add_option("b", diff_options.b, "second image, same size and channels")->required();
+  diff_image->add_flag("--json", diff_options.as_json, "machine-readable");
+  diff_image->add_option("--out", diff_options.out,
+                         "write the difference heat map here, and <stem>.mask.png beside it");
+  diff_image->add_option("--tolerance", diff_options.tolerance, "per-channel tolerance in normalised values (4/255)")
+      ->check(CLI::NonNegativeNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -168,6 +182,7 @@ int main(int argc, char** argv) {
 
   try {
     if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);
+    if (diff_image->parsed()) return gt::diff_image_command(diff_options);
     if (list->parsed()) {
       print_list(list_as_json);
       return 0;
