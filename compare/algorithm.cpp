@@ -14,6 +14,7 @@ const std::vector<Algorithm>& algorithms() {
     for (auto& algorithm : cave_algorithms()) list.push_back(std::move(algorithm));
     list.push_back(cave_endless_algorithm());
     list.push_back(mesh_check_algorithm());
+    list.push_back(render_heightmap_algorithm());
     return list;
   }();
   return all;

@@ -65,5 +65,6 @@ std::vector<Algorithm> noise_algorithms();
 std::vector<Algorithm> cave_algorithms();
 Algorithm cave_endless_algorithm();
 Algorithm mesh_check_algorithm();
+Algorithm render_heightmap_algorithm();
 
 }  // namespace gt

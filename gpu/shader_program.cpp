@@ -1,4 +1,4 @@
-// ComputeProgram and the #include expander behind it; conventions are in shader_program.hpp.
+// ComputeProgram, GraphicsProgram and the #include expander behind them; conventions are in shader_program.hpp.
 #include "gpu/shader_program.hpp"
 
 #include <algorithm>
@@ -133,8 +133,8 @@ std::string describe(const std::string& name, const std::vector<std::string>& de
   return fmt::format("{} (defines {})", name, fmt::join(defines, ", "));
 }
 
-GLuint compile_compute_shader(const ExpandedShader& shader, const std::string& description) {
-  const GLuint id = glCreateShader(GL_COMPUTE_SHADER);
+GLuint compile_shader(GLenum stage, const ExpandedShader& shader, const std::string& description) {
+  const GLuint id = glCreateShader(stage);
   const char* source = shader.source.c_str();
   glShaderSource(id, 1, &source, nullptr);
   glCompileShader(id);
@@ -149,19 +149,46 @@ GLuint compile_compute_shader(const ExpandedShader& shader, const std::string& d
   return id;
 }
 
-// Links the shader into a program and deletes the shader, whether linking succeeds or not.
-GLuint link_compute_program(GLuint shader, const ExpandedShader& expanded, const std::string& description) {
+// A stage of a program: its file expanded and its description for messages.
+struct StageSource {
+  GLenum stage;
+  ExpandedShader expanded;
+  std::string description;
+};
+
+StageSource load_stage(GLenum stage, const std::filesystem::path& root, const std::string& relative_path,
+                       const std::vector<std::string>& defines) {
+  return {stage, expand_shader(root, relative_path, defines), describe(display_path(root / relative_path), defines)};
+}
+
+// Compiles the stages and links them into a program; the shaders are deleted whether linking
+// succeeds or not. A link log is located in the stage's files when there is one stage; with
+// several it names them and is shown as the driver wrote it.
+GLuint build_program(const std::vector<StageSource>& stages) {
+  std::vector<GLuint> shaders;
+  const auto delete_shaders = [&shaders] {
+    for (GLuint shader : shaders) glDeleteShader(shader);
+  };
+  try {
+    for (const auto& stage : stages) shaders.push_back(compile_shader(stage.stage, stage.expanded, stage.description));
+  } catch (...) {
+    delete_shaders();
+    throw;
+  }
   const GLuint id = glCreateProgram();
-  glAttachShader(id, shader);
+  for (GLuint shader : shaders) glAttachShader(id, shader);
   glLinkProgram(id);
-  glDetachShader(id, shader);
-  glDeleteShader(shader);
+  for (GLuint shader : shaders) glDetachShader(id, shader);
+  delete_shaders();
   GLint linked = GL_FALSE;
   glGetProgramiv(id, GL_LINK_STATUS, &linked);
   if (!linked) {
-    const std::string log = expanded.locate_info_log(info_log(id, glGetProgramiv, glGetProgramInfoLog));
+    const std::string raw_log = info_log(id, glGetProgramiv, glGetProgramInfoLog);
+    const std::string log = stages.size() == 1 ? stages.front().expanded.locate_info_log(raw_log) : raw_log;
+    std::vector<std::string> names;
+    for (const auto& stage : stages) names.push_back(stage.description);
     glDeleteProgram(id);
-    throw std::runtime_error(fmt::format("linking {} failed:\n{}", description, log));
+    throw std::runtime_error(fmt::format("linking {} failed:\n{}", fmt::join(names, " + "), log));
   }
   return id;
 }
@@ -208,37 +235,30 @@ ComputeProgram ComputeProgram::load(const std::string& relative_path, const std:
 
 ComputeProgram ComputeProgram::load_from(const std::filesystem::path& root, const std::string& relative_path,
                                          const std::vector<std::string>& defines) {
-  const ExpandedShader expanded = expand_shader(root, relative_path, defines);
-  const std::string description = describe(display_path(root / relative_path), defines);
-  const GLuint shader = compile_compute_shader(expanded, description);
-  return ComputeProgram(link_compute_program(shader, expanded, description));
+  return ComputeProgram(build_program({load_stage(GL_COMPUTE_SHADER, root, relative_path, defines)}));
 }
 
-ComputeProgram::ComputeProgram(GLuint id) : id_(id) {
-  glGetProgramiv(id_, GL_COMPUTE_WORK_GROUP_SIZE, local_size_.data());
-}
+GlProgram::GlProgram(GlProgram&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
 
-ComputeProgram::ComputeProgram(ComputeProgram&& other) noexcept
-    : id_(std::exchange(other.id_, 0)), local_size_(other.local_size_) {}
-
-ComputeProgram& ComputeProgram::operator=(ComputeProgram&& other) noexcept {
+GlProgram& GlProgram::operator=(GlProgram&& other) noexcept {
   if (this != &other) {
     if (id_ != 0) glDeleteProgram(id_);
     id_ = std::exchange(other.id_, 0);
-    local_size_ = other.local_size_;
   }
   return *this;
 }
 
-ComputeProgram::~ComputeProgram() {
+GlProgram::~GlProgram() {
   if (id_ != 0) glDeleteProgram(id_);
 }
 
-GLuint ComputeProgram::id() const { return id_; }
+void GlProgram::use() const { glUseProgram(id_); }
 
-void ComputeProgram::use() const { glUseProgram(id_); }
+GLint GlProgram::uniform(const char* name) const { return glGetUniformLocation(id_, name); }
 
-GLint ComputeProgram::uniform(const char* name) const { return glGetUniformLocation(id_, name); }
+ComputeProgram::ComputeProgram(GLuint id) : GlProgram(id) {
+  glGetProgramiv(id, GL_COMPUTE_WORK_GROUP_SIZE, local_size_.data());
+}
 
 void ComputeProgram::dispatch(int width, int height, int local_x, int local_y) const {
   if (local_x != local_size_[0] || local_y != local_size_[1] || local_size_[2] != 1) {
@@ -251,6 +271,17 @@ void ComputeProgram::dispatch(int width, int height, int local_x, int local_y) c
   use();
   glDispatchCompute(static_cast<GLuint>(group_count(width, local_x)), static_cast<GLuint>(group_count(height, local_y)),
                     1);
+}
+
+GraphicsProgram GraphicsProgram::load(const std::string& vertex_path, const std::string& fragment_path,
+                                      const std::vector<std::string>& defines) {
+  return load_from(shader_root(), vertex_path, fragment_path, defines);
+}
+
+GraphicsProgram GraphicsProgram::load_from(const std::filesystem::path& root, const std::string& vertex_path,
+                                           const std::string& fragment_path, const std::vector<std::string>& defines) {
+  return GraphicsProgram(build_program({load_stage(GL_VERTEX_SHADER, root, vertex_path, defines),
+                                        load_stage(GL_FRAGMENT_SHADER, root, fragment_path, defines)}));
 }
 
 }  // namespace gt

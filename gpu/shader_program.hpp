@@ -1,4 +1,4 @@
-// Compute programs loaded from the shader tree, with #include expansion and error messages that
+// Compute and graphics (vertex + fragment) programs loaded from the shader tree, with #include expansion and error messages that
 // point at the original files.
 //
 // Conventions:
@@ -8,6 +8,8 @@
 //   recursively; a cycle or a missing file is an error naming the including file and line.
 //   Included files are pasted verbatim, so a file included twice needs #ifndef guards.
 // - Defines ("NAME", "NAME=VALUE" or "NAME(a)=VALUE") become `#define` lines right after #version.
+// - Both kinds go through the same expansion, compilation and linking; a graphics program's
+//   defines apply to both of its stages.
 // - Compile and link failures throw std::runtime_error with the driver's log rewritten so that
 //   Mesa's "0:LINE(COL): " and NVIDIA's "0(LINE) : " prefixes read
 //   "tests/data/shaders/lib/broken.glsl:LINE:COL: " (paths relative to the project when inside it).
@@ -44,22 +46,33 @@ struct ExpandedShader {
 ExpandedShader expand_shader(const std::filesystem::path& root, const std::string& relative_path,
                              const std::vector<std::string>& defines = {});
 
-class ComputeProgram {
+// What both kinds of program share: the linked program, deleted with its owner (move-only).
+class GlProgram {
+ public:
+  GlProgram(GlProgram&& other) noexcept;
+  GlProgram& operator=(GlProgram&& other) noexcept;
+  GlProgram(const GlProgram&) = delete;
+  GlProgram& operator=(const GlProgram&) = delete;
+  ~GlProgram();
+
+  GLuint id() const { return id_; }
+  void use() const;
+  // glGetUniformLocation: -1 for a name that is not an active uniform.
+  GLint uniform(const char* name) const;
+
+ protected:
+  explicit GlProgram(GLuint id) : id_(id) {}
+
+ private:
+  GLuint id_ = 0;
+};
+
+class ComputeProgram : public GlProgram {
  public:
   static ComputeProgram load(const std::string& relative_path, const std::vector<std::string>& defines = {});
   static ComputeProgram load_from(const std::filesystem::path& root, const std::string& relative_path,
                                   const std::vector<std::string>& defines = {});
 
-  ComputeProgram(ComputeProgram&& other) noexcept;
-  ComputeProgram& operator=(ComputeProgram&& other) noexcept;
-  ComputeProgram(const ComputeProgram&) = delete;
-  ComputeProgram& operator=(const ComputeProgram&) = delete;
-  ~ComputeProgram();
-
-  GLuint id() const;
-  void use() const;
-  // glGetUniformLocation: -1 for a name that is not an active uniform.
-  GLint uniform(const char* name) const;
   // Uses the program and dispatches ceil(width / local_x) x ceil(height / local_y) x 1 groups.
   // local_x, local_y must equal the shader's declared local size (checked: std::invalid_argument).
   void dispatch(int width, int height, int local_x, int local_y) const;
@@ -67,8 +80,19 @@ class ComputeProgram {
  private:
   explicit ComputeProgram(GLuint id);
 
-  GLuint id_ = 0;
   std::array<GLint, 3> local_size_{};
+};
+
+// A vertex and a fragment shader linked into one program.
+class GraphicsProgram : public GlProgram {
+ public:
+  static GraphicsProgram load(const std::string& vertex_path, const std::string& fragment_path,
+                              const std::vector<std::string>& defines = {});
+  static GraphicsProgram load_from(const std::filesystem::path& root, const std::string& vertex_path,
+                                   const std::string& fragment_path, const std::vector<std::string>& defines = {});
+
+ private:
+  explicit GraphicsProgram(GLuint id) : GlProgram(id) {}
 };
 
 }  // namespace gt

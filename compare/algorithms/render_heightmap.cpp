@@ -1,0 +1,263 @@
+// `render.heightmap_from_mesh`: seed 000's heightmap from a mesh (digest §4.3, eqs. 4.1–4.4) by the
+// reference rasterizer (double) and by the GL pipeline, on a mesh file ({"mesh": path}), with the
+// parity checks of issue 6 (texel classes and error model in render_heightmap.hpp):
+//   parity.interior_max_abs.gpu_vs_cpu     max |gpu - cpu| over interior texels, bound max B(t)
+//   parity.interior_model.gpu_vs_cpu       max |gpu - cpu| / B(t) over interior texels, bound 1
+//   parity.silhouette_texels.gpu_vs_cpu    coverage differences that are not silhouette texels
+//                                          (bound 0); the detail gives all coverage differences
+//   parity.silhouette_shift.gpu_vs_cpu     silhouette texels covered on both sides whose GPU height
+//                                          is no reference height of its 3×3 neighbourhood (bound 0)
+//   parity.coverage_share.{cpu,gpu}        share of covered texels (informative)
+//   determinism.gpu                        texels differing between two GPU runs (bound 0)
+// Timings: the reference's whole render (cpu_ms, median of cpu_reps), the GPU's clear and draw
+// bracketed by glFinish (gpu_ms; upload and download excluded, median of gpu_reps).
+// Pictures: cpu.png and gpu.png on the colour scale [0, 1] with the reference's hillshade, and
+// gpu_vs_cpu.png, the difference (uncovered texels are height 0 on both sides, as in the seed).
+#include "compare/algorithms/render_heightmap.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <numeric>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/checks/error_model.hpp"
+#include "compare/checks/threshold.hpp"
+#include "compare/report/images.hpp"
+#include "compare/timing.hpp"
+#include "core/errors.hpp"
+#include "gpu/render/heightmap_from_mesh.hpp"
+#include "gpu/timing.hpp"
+#include "reference/render/heightmap_from_mesh.hpp"
+
+namespace gt {
+namespace {
+
+bool covered_at(const Grid<std::uint8_t>& covered, int x, int y) {
+  return covered.inside(x, y) && covered.at(x, y) != 0;
+}
+
+// Whether every texel of the 3×3 neighbourhood of (x, y), (x, y) included, is covered.
+bool neighbourhood_covered(const Grid<std::uint8_t>& covered, int x, int y) {
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      if (!covered_at(covered, x + dx, y + dy)) return false;
+    }
+  }
+  return true;
+}
+
+bool has_uncovered_neighbour(const Grid<std::uint8_t>& covered, int x, int y) {
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      if ((dx != 0 || dy != 0) && !covered_at(covered, x + dx, y + dy)) return true;
+    }
+  }
+  return false;
+}
+
+// s(t) of the error model: along x and along y, the larger difference to a covered neighbour
+// (covered in the reference, where the heights come from).
+double local_slope(const Heightmap& heights, const Grid<std::uint8_t>& covered, int x, int y) {
+  const double h = heights.at(x, y);
+  const auto step = [&](int dx, int dy) {
+    return covered_at(covered, x + dx, y + dy) ? std::abs(heights.at(x + dx, y + dy) - h) : 0.0;
+  };
+  return std::max(step(1, 0), step(-1, 0)) + std::max(step(0, 1), step(0, -1));
+}
+
+double texel_bound(double slope, int width, int height) {
+  return 16.0 * unit_roundoff_float * (1.0 + slope * double(width + height));
+}
+
+// Whether `value` lies within the covered reference heights of the 3×3 neighbourhood, ± bound.
+bool within_neighbourhood(const Heightmap& cpu, const Grid<std::uint8_t>& cpu_covered, int x, int y, double value,
+                          double bound) {
+  double low = INFINITY, high = -INFINITY;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      if (!covered_at(cpu_covered, x + dx, y + dy)) continue;
+      low = std::min(low, cpu.at(x + dx, y + dy));
+      high = std::max(high, cpu.at(x + dx, y + dy));
+    }
+  }
+  return value >= low - bound && value <= high + bound;
+}
+
+}  // namespace
+
+HeightmapParity compare_mesh_heightmaps(const Heightmap& cpu, const Grid<std::uint8_t>& cpu_covered,
+                                        const Grid<float>& gpu, const Grid<std::uint8_t>& gpu_covered) {
+  HeightmapParity parity;
+  for (int y = 0; y < cpu.height; ++y) {
+    for (int x = 0; x < cpu.width; ++x) {
+      const bool on_cpu = covered_at(cpu_covered, x, y), on_gpu = covered_at(gpu_covered, x, y);
+      parity.covered_cpu += on_cpu;
+      parity.covered_gpu += on_gpu;
+      const bool silhouette = has_uncovered_neighbour(cpu_covered, x, y) || has_uncovered_neighbour(gpu_covered, x, y);
+      const double difference = std::abs(double(gpu.at(x, y)) - cpu.at(x, y));
+      const double bound = on_cpu ? texel_bound(local_slope(cpu, cpu_covered, x, y), cpu.width, cpu.height) : 0.0;
+      if (on_cpu != on_gpu) {
+        ++parity.coverage_differences;
+        parity.coverage_differences_off_silhouette += !silhouette;
+      } else if (on_cpu && silhouette) {
+        ++parity.silhouette_texels_both_covered;
+        parity.silhouette_beyond_one_texel +=
+            !within_neighbourhood(cpu, cpu_covered, x, y, gpu.at(x, y), bound);
+      } else if (neighbourhood_covered(cpu_covered, x, y) && neighbourhood_covered(gpu_covered, x, y)) {
+        ++parity.interior_texels;
+        parity.interior_max_abs = std::max(parity.interior_max_abs, difference);
+        parity.interior_bound = std::max(parity.interior_bound, bound);
+        parity.interior_model_ratio = std::max(parity.interior_model_ratio, difference / bound);
+      }
+    }
+  }
+  return parity;
+}
+
+namespace {
+
+struct RenderCase {
+  Mesh mesh;
+  int width = 0;
+  int height = 0;
+  int subpixel_bits = 8;
+};
+
+const ParamSpecs& render_specs() {
+  static const ParamSpecs specs = {
+      {"width", ParamKind::integer, 256, 1, 4096, {}, "texel", "heightmap columns (along the mesh's x)"},
+      {"height", ParamKind::integer, 256, 1, 4096, {}, "texel", "heightmap rows (along the mesh's y)"},
+      {"subpixel_bits", ParamKind::integer, 8, 0, 16, {}, "bit",
+       "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"},
+  };
+  return specs;
+}
+
+reference::MeshHeightmap run_reference(const RenderCase& render, const RunOptions& options, CaseResult& result) {
+  if (options.progress) options.progress->stage("CPU reference (double)");
+  reference::MeshHeightmap heightmap;
+  std::vector<double> times;
+  for (int rep = 0; rep < std::max(options.cpu_reps, 1); ++rep) {
+    times.push_back(cpu_wall_ms(
+        [&] { heightmap = reference::heightmap_from_mesh(render.mesh, render.width, render.height, render.subpixel_bits); }));
+  }
+  result.timings.cpu_ms = median(times);
+  result.timings.cpu_reps = static_cast<int>(times.size());
+  return heightmap;
+}
+
+gpu::MeshHeightmap run_gpu(const RenderCase& render, const RunOptions& options, CaseResult& result) {
+  if (options.progress) options.progress->stage("GPU");
+  const gpu::HeightmapFromMesh renderer(render.mesh, render.width, render.height);
+  result.notes.push_back(fmt::format("GL_SUBPIXEL_BITS of the GL implementation: {} (the reference snaps to {})",
+                                     gpu::HeightmapFromMesh::subpixel_bits(), render.subpixel_bits));
+  renderer.run();
+  const gpu::MeshHeightmap first = renderer.result();
+  std::vector<double> times;
+  for (int rep = 0; rep < options.gpu_reps; ++rep) times.push_back(gpu_wall_ms([&] { renderer.run(); }));
+  if (!times.empty()) {
+    result.timings.gpu_ms = median(times);
+    result.timings.gpu_reps = static_cast<int>(times.size());
+  }
+  const gpu::MeshHeightmap last = renderer.result();
+  const auto changed = std::inner_product(first.heights.values.begin(), first.heights.values.end(),
+                                          last.heights.values.begin(), std::size_t{0}, std::plus<>(),
+                                          [](float a, float b) { return std::size_t(std::memcmp(&a, &b, sizeof a) != 0); });
+  result.checks.push_back(bounded_check("determinism.gpu", double(changed), 0.0, std::nullopt,
+                                        "texels whose height differs in any bit between the first and the last GPU run"));
+  return first;
+}
+
+void add_parity_checks(const HeightmapParity& parity, const RenderCase& render, CaseResult& result) {
+  const double texels = double(render.width) * render.height;
+  result.checks.push_back(informative_check("parity.coverage_share.cpu", double(parity.covered_cpu) / texels,
+                                            "share of texels a surface covers, reference"));
+  result.checks.push_back(informative_check("parity.coverage_share.gpu", double(parity.covered_gpu) / texels,
+                                            "share of texels a surface covers, GPU"));
+  result.checks.push_back(bounded_check(
+      "parity.interior_max_abs.gpu_vs_cpu", parity.interior_max_abs, parity.interior_bound, std::nullopt,
+      fmt::format("max |gpu - cpu| over {} interior texels (3×3 covered on both sides), heights in [0, 1]; bound: the "
+                  "largest B(t) = 16u·(1 + s(t)·(W + H)), u = 2^-24, s the reference's local slope per texel",
+                  parity.interior_texels)));
+  result.checks.push_back(bounded_check(
+      "parity.interior_model.gpu_vs_cpu", parity.interior_model_ratio, 1.0, std::nullopt,
+      "max over interior texels of |gpu - cpu| / B(t): the float error model texel by texel"));
+  result.checks.push_back(bounded_check(
+      "parity.silhouette_texels.gpu_vs_cpu", double(parity.coverage_differences_off_silhouette), 0.0, std::nullopt,
+      fmt::format("coverage differences on texels without an uncovered neighbour on either side; {} texels are "
+                  "covered on one side only, all allowed on silhouettes (edges within one texel)",
+                  parity.coverage_differences)));
+  result.checks.push_back(bounded_check(
+      "parity.silhouette_shift.gpu_vs_cpu", double(parity.silhouette_beyond_one_texel), 0.0, std::nullopt,
+      fmt::format("of {} silhouette texels covered on both sides, those whose GPU height lies outside the reference "
+                  "heights of its 3×3 neighbourhood (± B(t)): more than a one-texel shift",
+                  parity.silhouette_texels_both_covered)));
+}
+
+void write_pictures(const reference::MeshHeightmap& cpu, const gpu::MeshHeightmap* gpu_heightmap,
+                    const RunOptions& options, CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const auto folder = options.report_dir / result.name;
+  std::filesystem::create_directories(folder);
+  const auto add = [&](const std::string& file, const std::string& caption) {
+    result.artifacts.push_back({result.name + "/" + file, "image", caption});
+  };
+  const double exaggeration = write_height_image(cpu.heights, 0.0, 1.0, folder / "cpu.png");
+  add("cpu.png", "CPU reference (double): 1 - z', top of the box 1, uncovered 0");
+  if (!gpu_heightmap) return;
+  const Heightmap gpu_heights = gpu_heightmap->heights.cast<double>();
+  write_height_image(gpu_heights, 0.0, 1.0, folder / "gpu.png", exaggeration);
+  add("gpu.png", "GPU (GL pipeline, R32F)");
+  const auto difference = write_difference_image(cpu.heights, gpu_heights, folder / "gpu_vs_cpu.png");
+  add("gpu_vs_cpu.png", fmt::format("GPU - reference (±{:.3g}; silhouette texels dominate)", difference.scale_used));
+}
+
+void run_render(const RenderCase& render, const std::string& file, const RunOptions& options, CaseResult& result) {
+  result.input = fmt::format("{}, {}x{} texels", file, render.width, render.height);
+  result.width = render.width;
+  result.height = render.height;
+  const reference::MeshHeightmap cpu = run_reference(render, options, result);
+  result.notes.push_back(fmt::format("aspect ratios (eq. 4.3): d_xy = {:.6g}, d_z = {:.6g}", cpu.d_xy, cpu.d_z));
+  if (!options.gpu_available) {
+    for (const char* name : {"parity.gpu_vs_cpu", "determinism.gpu"}) {
+      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    }
+    write_pictures(cpu, nullptr, options, result);
+    return;
+  }
+  const gpu::MeshHeightmap gpu_heightmap = run_gpu(render, options, result);
+  add_parity_checks(compare_mesh_heightmaps(cpu.heights, cpu.covered, gpu_heightmap.heights, gpu_heightmap.covered),
+                    render, result);
+  write_pictures(cpu, &gpu_heightmap, options, result);
+}
+
+PreparedTwin prepare_render(const nlohmann::json& resolved, const LoadedInput& input) {
+  if (!input.mesh) throw InputError("render.heightmap_from_mesh needs a mesh input: {\"mesh\": \"path.off\"}");
+  RenderCase render{*input.mesh, resolved.at("width"), resolved.at("height"), resolved.at("subpixel_bits")};
+  PreparedTwin prepared;
+  prepared.run = [render = std::move(render), file = input.description](const nlohmann::json&, const RunOptions& options,
+                                                                         CaseResult& result) {
+    run_render(render, file, options, result);
+  };
+  return prepared;
+}
+
+}  // namespace
+
+Algorithm render_heightmap_algorithm() {
+  return {.name = "render.heightmap_from_mesh",
+          .summary = "heightmap of a mesh seen from above: reference rasterizer vs the GL pipeline",
+          .source = "seed 000 §4.3 (digest 000_water_erosion.md), eqs. 4.1–4.4; issue 6",
+          .params = &render_specs(),
+          .prepare = prepare_render,
+          .iterates = false,
+          .has_field_twin = false,
+          .ad_hoc_input = AdHocInput::mesh};
+}
+
+}  // namespace gt

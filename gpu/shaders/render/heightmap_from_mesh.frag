@@ -1,0 +1,10 @@
+#version 450 core
+// Seed 000's heightmap from a mesh (digest 000_water_erosion.md §4.3), fragment stage: eq. 4.4,
+// red = 1 - z' (top of the box 1, bottom 0). The depth test LESS has already kept the highest
+// surface; uncovered texels keep the clear colour 0.
+
+in float z_prime;
+
+layout(location = 0) out float red;
+
+void main() { red = 1.0 - z_prime; }
