@@ -500,6 +500,18 @@ TEST(CliRun, VolumeFileIsMeshedWatertightOnBothBackends) {
   }
 }
 
+// A mesh with nothing to see from above is bad input for the heightmap render: exit 2, no report.
+TEST(CliRun, FlatSideOnMeshIsRefusedByTheHeightmapRender) {
+  const TempDir work;
+  write_text(work / "edge_on.off", "OFF\n3 1 0\n0 0 0\n0 0 1\n1 0 0\n3 0 1 2\n");  // no extent in y
+  const RunResult run = run_groundtruth({"run", "--algorithm", "render.heightmap_from_mesh", "--input",
+                                         (work / "edge_on.off").string(), "--out", (work / "report").string()},
+                                        work.path());
+  EXPECT_EQ(run.status, 2) << run;
+  EXPECT_NE(run.err.find("nothing is seen from above"), std::string::npos) << run;
+  EXPECT_FALSE(fs::exists(work / "report"));
+}
+
 // Real meshes through the command users run: exit 0 for the closed ones, 1 for the others.
 TEST(CliCheckMesh, ClassifiesTheFourRealMeshes) {
   const TempDir work;

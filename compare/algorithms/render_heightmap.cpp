@@ -238,6 +238,7 @@ void run_render(const RenderCase& render, const std::string& file, const RunOpti
 
 PreparedTwin prepare_render(const nlohmann::json& resolved, const LoadedInput& input) {
   if (!input.mesh) throw InputError("render.heightmap_from_mesh needs a mesh input: {\"mesh\": \"path.off\"}");
+  reference::require_visible_from_above(*input.mesh);
   RenderCase render{*input.mesh, resolved.at("width"), resolved.at("height"), resolved.at("subpixel_bits")};
   PreparedTwin prepared;
   prepared.run = [render = std::move(render), file = input.description](const nlohmann::json&, const RunOptions& options,

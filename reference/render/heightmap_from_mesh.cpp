@@ -57,12 +57,17 @@ Grid<T> texel_grid(int width, int height, const Box& box) {
 
 }  // namespace
 
-MeshHeightmap heightmap_from_mesh(const Mesh& mesh, int width, int height, int subpixel_bits) {
+void require_visible_from_above(const Mesh& mesh) {
   if (mesh.triangles.empty()) throw InputError("heightmap from a mesh: the mesh has no triangles");
   const Box box = bounding_box(mesh);
   if (!(box.extent(0) > 0.0) || !(box.extent(1) > 0.0)) {
     throw InputError("heightmap from a mesh: the mesh has no extent in x or y, so nothing is seen from above");
   }
+}
+
+MeshHeightmap heightmap_from_mesh(const Mesh& mesh, int width, int height, int subpixel_bits) {
+  require_visible_from_above(mesh);
+  const Box box = bounding_box(mesh);
   const std::array<double, 3> scale = {2.0 / box.extent(0), 2.0 / box.extent(1),
                                        box.extent(2) > 0.0 ? 1.0 / box.extent(2) : 1.0};  // eq. 4.1
   RasterTarget target(width, height, 1, 0.0, 1.0);

@@ -44,6 +44,10 @@ struct MeshHeightmap {
   double d_z = 1.0;             // s_x / s_z = 2Δz/Δx (eq. 4.3)
 };
 
+// Throws InputError when the mesh has no triangles or no extent in x or y (nothing is seen from
+// above): the refusal heightmap_from_mesh makes, available before any work (the driver's bad input).
+void require_visible_from_above(const Mesh& mesh);
+
 MeshHeightmap heightmap_from_mesh(const Mesh& mesh, int width, int height, int subpixel_bits = 8);
 
 }  // namespace gt::reference
