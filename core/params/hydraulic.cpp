@@ -1,0 +1,162 @@
+// Parameter declarations, constants and ledger arithmetic of `erosion.pipe` (see hydraulic.hpp).
+#include "core/params/hydraulic.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+constexpr const char* algorithm_name = "erosion.pipe";
+
+void require(bool condition, const std::string& what) {
+  if (!condition) throw InputError(fmt::format("{}: {}", algorithm_name, what));
+}
+
+void require_non_negative(double value, const char* name) {
+  require(std::isfinite(value) && value >= 0.0, fmt::format("{} = {} must be finite and >= 0", name, value));
+}
+
+}  // namespace
+
+const char* sediment_transport_name(SedimentTransport transport) {
+  switch (transport) {
+    case SedimentTransport::semi_lagrangian: return "semi_lagrangian";
+    case SedimentTransport::flux: return "flux";
+  }
+  return "?";
+}
+
+const char* pipe_boundary_name(PipeBoundary boundary) {
+  switch (boundary) {
+    case PipeBoundary::closed: return "closed";
+    case PipeBoundary::open: return "open";
+  }
+  return "?";
+}
+
+const ParamSpecs& hydraulic_param_specs() {
+  static const ParamSpecs specs = {
+      {"steps", ParamKind::integer, 200, 0, 1000000, {}, "count", "time steps of Δt"},
+      {"time_step", ParamKind::real, 0.05, 1e-6, 3600.0, {}, "s", "Δt"},
+      {"gravity", ParamKind::real, 9.81, 0.0, 100.0, {}, "m/s²", "g of the pipe acceleration g·Δh/l"},
+      {"pipe_area", ParamKind::real, 0.0, 0.0, 1e8, {}, "m²", "pipe cross-section A; 0 = cell area l_x·l_y"},
+      {"rain_rate", ParamKind::real, 0.0, 0.0, 1.0, {}, "m/s", "uniform rain added as Δt·rate per step"},
+      {"evaporation_rate", ParamKind::real, 0.0, 0.0, 1e3, {}, "1/s", "K_e: d ← d·(1 − K_e·Δt); K_e·Δt ≤ 1"},
+      {"capacity", ParamKind::real, 0.1, 0.0, 1e3, {}, "s", "K_c of the capacity C = K_c·sin α·|v|·l(d)"},
+      {"min_tilt_sine", ParamKind::real, 0.05, 0.0, 1.0, {}, "1", "lower bound of sin α (flat ground still erodes)"},
+      {"depth_ramp", ParamKind::real, 0.0, 0.0, 1e3, {}, "m",
+       "K_w of the depth ramp l(d) = min(1, d/K_w) (Jákó 2011, seed 001); 0 = no ramp"},
+      {"dissolving_rate", ParamKind::real, 0.5, 0.0, 1e3, {}, "1/s",
+       "K_s: a step closes min(1, K_s·Δt) of the gap C − s by erosion"},
+      {"deposition_rate", ParamKind::real, 0.5, 0.0, 1e3, {}, "1/s",
+       "K_d: a step closes min(1, K_d·Δt) of the gap s − C by deposition"},
+      {"velocity_depth_floor", ParamKind::real, 1e-3, 1e-9, 10.0, {}, "m",
+       "lower bound of the mean depth d̄ that divides the flux into a velocity"},
+      {"transport", ParamKind::choice, "flux", 0, 0, {"semi_lagrangian", "flux"}, "",
+       "sediment transport: Mei's semi-Lagrangian backtrace (not conservative) or with the pipe outflows"},
+      {"boundary", ParamKind::choice, "closed", 0, 0, {"closed", "open"}, "",
+       "grid border and no-data cells: closed walls or open (water and sediment leave and are counted)"},
+  };
+  return specs;
+}
+
+HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved) {
+  HydraulicParams params;
+  params.steps = resolved.at("steps").get<int>();
+  params.time_step = resolved.at("time_step").get<double>();
+  params.gravity = resolved.at("gravity").get<double>();
+  params.pipe_area = resolved.at("pipe_area").get<double>();
+  params.rain_rate = resolved.at("rain_rate").get<double>();
+  params.evaporation_rate = resolved.at("evaporation_rate").get<double>();
+  params.capacity = resolved.at("capacity").get<double>();
+  params.min_tilt_sine = resolved.at("min_tilt_sine").get<double>();
+  params.depth_ramp = resolved.at("depth_ramp").get<double>();
+  params.dissolving_rate = resolved.at("dissolving_rate").get<double>();
+  params.deposition_rate = resolved.at("deposition_rate").get<double>();
+  params.velocity_depth_floor = resolved.at("velocity_depth_floor").get<double>();
+  const auto transport = resolved.at("transport").get<std::string>();
+  params.transport =
+      transport == sediment_transport_name(SedimentTransport::flux) ? SedimentTransport::flux
+                                                                    : SedimentTransport::semi_lagrangian;
+  const auto boundary = resolved.at("boundary").get<std::string>();
+  params.boundary = boundary == pipe_boundary_name(PipeBoundary::open) ? PipeBoundary::open : PipeBoundary::closed;
+  return params;
+}
+
+PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& terrain) {
+  require(std::isfinite(params.time_step) && params.time_step > 0.0,
+          fmt::format("time_step Δt = {} s must be finite and > 0", params.time_step));
+  require_non_negative(params.gravity, "gravity");
+  require_non_negative(params.pipe_area, "pipe_area");
+  require_non_negative(params.rain_rate, "rain_rate");
+  require_non_negative(params.evaporation_rate, "evaporation_rate");
+  require_non_negative(params.capacity, "capacity");
+  require_non_negative(params.min_tilt_sine, "min_tilt_sine");
+  require_non_negative(params.depth_ramp, "depth_ramp");
+  require_non_negative(params.dissolving_rate, "dissolving_rate");
+  require_non_negative(params.deposition_rate, "deposition_rate");
+  require(std::isfinite(params.velocity_depth_floor) && params.velocity_depth_floor > 0.0,
+          fmt::format("velocity_depth_floor = {} m must be finite and > 0", params.velocity_depth_floor));
+  require(params.min_tilt_sine <= 1.0, fmt::format("min_tilt_sine = {} must be <= 1", params.min_tilt_sine));
+  const double evaporated_share = params.evaporation_rate * params.time_step;
+  require(evaporated_share <= 1.0,
+          fmt::format("evaporation_rate·time_step = {}·{} = {} exceeds 1 (more than all the water per step)",
+                      params.evaporation_rate, params.time_step, evaporated_share));
+  require(terrain.cell_size_x > 0.0 && terrain.cell_size_y > 0.0,
+          fmt::format("cell size {} x {} m must be > 0", terrain.cell_size_x, terrain.cell_size_y));
+
+  PipeConstants constants;
+  constants.time_step = params.time_step;
+  constants.gravity = params.gravity;
+  constants.length_x = terrain.cell_size_x;
+  constants.length_y = terrain.cell_size_y;
+  constants.cell_area = terrain.cell_size_x * terrain.cell_size_y;
+  constants.pipe_area = params.pipe_area > 0.0 ? params.pipe_area : constants.cell_area;
+  constants.rain_rate = params.rain_rate;
+  constants.evaporation_kept = 1.0 - evaporated_share;
+  constants.capacity = params.capacity;
+  constants.min_tilt_sine = params.min_tilt_sine;
+  constants.depth_ramp = params.depth_ramp;
+  constants.dissolving_fraction = std::min(1.0, params.dissolving_rate * params.time_step);
+  constants.deposition_fraction = std::min(1.0, params.deposition_rate * params.time_step);
+  constants.velocity_depth_floor = params.velocity_depth_floor;
+  constants.transport = params.transport;
+  constants.boundary = params.boundary;
+  return constants;
+}
+
+template <class Real>
+PipeState<Real> dry_pipe_state(const Grid<Real>& terrain) {
+  auto zero_like = [&terrain] {
+    Grid<Real> field = terrain;
+    std::fill(field.values.begin(), field.values.end(), Real(0));
+    return field;
+  };
+  PipeState<Real> state;
+  state.terrain = terrain;
+  state.water = zero_like();
+  state.sediment = zero_like();
+  state.outflow.assign(terrain.size(), std::array<Real, 4>{});
+  state.velocity_x = zero_like();
+  state.velocity_y = zero_like();
+  return state;
+}
+
+template PipeState<float> dry_pipe_state(const Grid<float>&);
+template PipeState<double> dry_pipe_state(const Grid<double>&);
+
+double water_balance(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
+  return (entry.water - initial.water) - (entry.rain_in + entry.source_in) +
+         (entry.evaporated + entry.boundary_out_water);
+}
+
+double material_drift(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
+  return ((entry.terrain - initial.terrain) + (entry.sediment - initial.sediment)) + entry.boundary_out_sediment;
+}
+
+}  // namespace gt

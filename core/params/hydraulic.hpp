@@ -1,0 +1,132 @@
+// Hydraulic erosion with virtual pipes (Mei, Decaudin, Hu 2007; digest 000 §3.4 and Appendix B):
+// the parameters, the per-run constants both twins derive from them, the forcing (rain map, point
+// sources), the state the twins advance and the water/material ledger they fill. Algorithm name
+// `erosion.pipe`. Shared by reference/erosion/pipes.cpp and (later) the GPU twin.
+//
+// Units (SI throughout, so a parameter keeps its meaning across grid sizes):
+//   lengths and heights in metres (cell size from the terrain grid), Δt in seconds, rain in m/s,
+//   point sources in m³/s, fluxes in m³/s, velocities in m/s, rates (evaporation K_e, dissolving
+//   K_s, deposition K_d) in 1/s. Suspended sediment s is a height of material in metres over the
+//   cell (Mei's convention), so material volume = (b + s)·l_x·l_y. The capacity constant K_c is in
+//   seconds: C = K_c · sin α · |v| is a height in metres.
+// Decisions where Mei is silent or per-step:
+//   - Mei's K_s and K_d are fractions per step; here they are rates: the fraction of the gap to the
+//     capacity closed in one step is min(1, K·Δt), so results do not depend on how time is cut.
+//   - Evaporation d ← d·(1 − K_e·Δt) needs K_e·Δt ≤ 1; larger products are refused, not clamped.
+//   - Pipe cross-section A: a parameter in m²; 0 takes the cell area l_x·l_y (Šťava's A = l²).
+//   - Point sources and the rain map are inputs (HydraulicForcing), not JSON parameters.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/grid.hpp"
+#include "core/params.hpp"
+
+namespace gt {
+
+enum class SedimentTransport { semi_lagrangian, flux };
+enum class PipeBoundary { closed, open };
+
+// "semi_lagrangian", "flux" and "closed", "open": the names of the `transport` and `boundary` parameters.
+const char* sediment_transport_name(SedimentTransport transport);
+const char* pipe_boundary_name(PipeBoundary boundary);
+
+struct HydraulicParams {
+  int steps = 200;
+  double time_step = 0.05;              // Δt, s
+  double gravity = 9.81;                // g, m/s²
+  double pipe_area = 0.0;               // A, m²; 0 = cell area l_x·l_y
+  double rain_rate = 0.0;               // uniform rain, m/s
+  double evaporation_rate = 0.0;        // K_e, 1/s
+  double capacity = 0.1;                // K_c, s
+  double min_tilt_sine = 0.05;          // lower bound of sin α (Mei's T_α, seed 001's 0.05)
+  double depth_ramp = 0.0;              // K_w of l(d) = min(1, d/K_w), m; 0 = no ramp (Mei)
+  double dissolving_rate = 0.5;         // K_s, 1/s
+  double deposition_rate = 0.5;         // K_d, 1/s
+  double velocity_depth_floor = 1e-3;   // the mean depth in u = ΔW_X/(l_y·d̄) is at least this, m
+  SedimentTransport transport = SedimentTransport::flux;
+  PipeBoundary boundary = PipeBoundary::closed;
+};
+
+const ParamSpecs& hydraulic_param_specs();
+HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved);
+
+// A point source pours `rate` m³/s into cell (x, y).
+struct PointSource {
+  int x = 0;
+  int y = 0;
+  double rate = 0.0;
+};
+
+// Water added besides the uniform rain: rain_map (m/s, same size as the terrain, empty = none) is
+// added to rain_rate cell by cell; each source adds rate·Δt/(l_x·l_y) metres to its cell.
+struct HydraulicForcing {
+  Grid<double> rain_map;
+  std::vector<PointSource> sources;
+};
+
+// Everything one step needs, in double; the twins round each to their scalar once.
+struct PipeConstants {
+  double time_step = 0.05;
+  double gravity = 9.81;
+  double pipe_area = 1.0;             // A, resolved (never 0)
+  double length_x = 1.0;              // l_x = cell_size_x, m
+  double length_y = 1.0;              // l_y = cell_size_y, m
+  double cell_area = 1.0;             // l_x·l_y, m²
+  double rain_rate = 0.0;             // m/s
+  double evaporation_kept = 1.0;      // 1 − K_e·Δt, in [0, 1]
+  double capacity = 0.1;              // K_c, s
+  double min_tilt_sine = 0.05;
+  double depth_ramp = 0.0;            // K_w, m; 0 = off
+  double dissolving_fraction = 0.0;   // min(1, K_s·Δt)
+  double deposition_fraction = 0.0;   // min(1, K_d·Δt)
+  double velocity_depth_floor = 1e-3; // m
+  SedimentTransport transport = SedimentTransport::flux;
+  PipeBoundary boundary = PipeBoundary::closed;
+};
+
+// Constants for `params` on the grid of `terrain` (its cell sizes). Throws InputError for values a
+// struct built in code can hold but the JSON ranges refuse (Δt ≤ 0, negative rates, a depth floor
+// ≤ 0, non-finite values) and for K_e·Δt > 1.
+PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& terrain);
+
+// The state of a pipe-model run. Pipes are indexed L, R, T, B = 0..3, pointing to (x−1, y),
+// (x+1, y), (x, y+1), (x, y−1) (Mei: T is +y); pipe k and pipe k^1 are opposite.
+template <class Real>
+struct PipeState {
+  Grid<Real> terrain;                       // b, m
+  Grid<Real> water;                         // d, m
+  Grid<Real> sediment;                      // s, m of material over the cell
+  std::vector<std::array<Real, 4>> outflow; // f^L, f^R, f^T, f^B, m³/s (scaled, ≥ 0)
+  Grid<Real> velocity_x;                    // u, m/s, +x
+  Grid<Real> velocity_y;                    // v, m/s, +y
+};
+
+// A state with the geometry and mask of `terrain`, dry, no sediment, no flux, at rest.
+template <class Real>
+PipeState<Real> dry_pipe_state(const Grid<Real>& terrain);
+
+// One line of the ledger: volumes in m³, summed over valid cells in double with compensated
+// sums. State totals are after the step; the flows are cumulative since the initial state (entry 0).
+struct PipeLedgerEntry {
+  int step = 0;
+  double water = 0.0;                  // W_t = Σ d·l_x·l_y
+  double terrain = 0.0;                // Σ b·l_x·l_y
+  double sediment = 0.0;               // Σ s·l_x·l_y
+  double rain_in = 0.0;                // uniform rain and rain map
+  double source_in = 0.0;              // point sources
+  double evaporated = 0.0;
+  double boundary_out_water = 0.0;     // through open borders and into no-data cells
+  double boundary_out_sediment = 0.0;
+  double max_cfl = 0.0;                // this step: max Δt·|v|/min(l_x, l_y) over valid cells
+};
+
+// W_t − W_0 − rain_in − source_in + evaporated + boundary_out_water: 0 for exact arithmetic, m³.
+double water_balance(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial);
+
+// (terrain + sediment + boundary_out_sediment) − (terrain_0 + sediment_0): 0 when material is
+// conserved, m³.
+double material_drift(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial);
+
+}  // namespace gt

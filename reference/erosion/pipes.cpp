@@ -1,0 +1,572 @@
+// Hydraulic erosion with virtual pipes: Mei, Decaudin, Hu 2007 (digest 000 §3.4, eqs. 2.10-2.25,
+// with the fixes of Appendix B items 1-3). Each stage reads the previous stage's fields over the
+// whole grid (synchronous, as the GPU passes):
+//   1 water    d_A = d + Δt·(r + r_map) + Σ sources·Δt/(l_x·l_y)                 (2.10, with Δt)
+//   2 flux     f̂_k = max(0, f_k + Δt·A·g·Δh_k/l_k), Δh_k = (b + d_A) − (b_k + d_A,k)   (2.11, d_A)
+//              K = min(1, d_A·l_x·l_y / (Σ f̂·Δt)), f_k = K·f̂_k                 (2.12-2.13)
+//   3 depth    d_B = max(0, d_A − Δt·Σf_out/(l_x·l_y)) + Δt·Σf_in/(l_x·l_y)     (2.14-2.17)
+//   4 velocity ΔW_X = ½((f^R(x−1) − f^L) + (f^R − f^L(x+1))), u = ΔW_X/(l_y·d̄),
+//              d̄ = max(½(d_A + d_B), depth floor); v likewise with T/B and l_x    (2.18-2.19)
+//   5 erosion  C = K_c·max(sin α, min_tilt_sine)·|v|·l(d_B), l(d) = min(1, d/K_w) (2.20-2.21)
+//              C > s: b −= k_s·(C − s), s += k_s·(C − s);  else b += k_d·(s − C), s −= k_d·(s − C)
+//              with k = min(1, K·Δt)                                  (2.22, 2.23 with Mei's sign)
+//   6 sediment semi-Lagrangian: s(x) = s_A(x − (u, v)·Δt), bilinear                 (2.24-2.25)
+//              or flux form: each pipe carries s_A·f_k·Δt/(d_A·l_x·l_y), the share of the cell's
+//              water it moved; what one cell sends, the neighbour receives as the same number
+//   7 evaporation d = d_B·(1 − K_e·Δt)
+// Decisions where the source is vague:
+//   - Exterior pipes: a pipe leading off the grid or into a no-data cell. Closed boundary: its flux
+//     is 0 (walls). Open boundary: the exterior is a dry cell at the cell's own terrain height
+//     (Δh = d_A), so water drains under its own depth and nothing flows back in; water leaving that
+//     way, and the sediment the flux form carries with it, is counted as boundary_out. The
+//     semi-Lagrangian mode removes the same sediment share at exterior pipes before backtracing.
+//     No-data cells hold no water or sediment and get no rain; sources on them are refused.
+//   - K's 0/0 (Σ f̂ = 0): K = 1, tested explicitly (the fluxes are 0 anyway).
+//   - The remainder d_A − Δt·Σf_out/(l_x·l_y) is clamped at 0. K makes it ≥ 0 in exact arithmetic;
+//     the clamp only removes a rounding-sized negative (which the step check would refuse), so the
+//     ledger still closes to rounding. The flux form likewise sends at most all of s_A.
+//   - Velocity at d → 0: the mean depth is bounded below by velocity_depth_floor (seed 001 uses
+//     0.05 m), so thin films cannot produce unbounded speeds; with d̄ = 0 no water moved (K), the
+//     flux sums are 0 and so is the velocity — no 0/0.
+//   - sin α of the terrain: |∇b|/sqrt(1 + |∇b|²), ∇b by central differences over l_x, l_y; at an
+//     exterior neighbour the difference is one-sided, with exterior neighbours on both sides 0.
+//   - Backtrace sampling: a bilinear corner off the grid or on a no-data cell takes the value of
+//     the cell being updated (zero gradient at walls, Mei's clamp-to-edge on the grid border). The
+//     weights are ceil(p) − p and p − floor(p), so mirrored displacements give mirrored weights
+//     bit for bit (1 − w would not); a displacement of whole cells (at rest: 0) reads one cell.
+//   - Fixed summation order (L + R) + (T + B) for the four pipes, so mirror-symmetric inputs give
+//     bitwise mirror-symmetric results in both transport modes.
+// Units: metres, seconds, m³/s (see core/params/hydraulic.hpp); the ledger is in m³.
+#include "reference/erosion/pipes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt::reference {
+namespace {
+
+constexpr const char* algorithm_name = "erosion.pipe";
+
+struct Pipe {
+  int dx;
+  int dy;
+};
+
+// L, R, T, B; pipe k and pipe k ^ 1 are opposite.
+constexpr std::array<Pipe, 4> pipes{{{-1, 0}, {1, 0}, {0, 1}, {0, -1}}};
+constexpr int left = 0, right = 1, top = 2, bottom = 3;
+constexpr int opposite(int pipe) { return pipe ^ 1; }
+
+template <class Real>
+Real pipe_sum(const std::array<Real, 4>& values) {
+  return (values[left] + values[right]) + (values[top] + values[bottom]);
+}
+
+template <class Real>
+bool is_finite(Real value) {
+  return std::isfinite(static_cast<double>(value));
+}
+
+[[noreturn]] void refuse(const std::string& what) { throw InputError(fmt::format("{}: {}", algorithm_name, what)); }
+
+template <class Real>
+void require_same_size(const Grid<Real>& field, const Grid<Real>& terrain, const char* name) {
+  if (field.width != terrain.width || field.height != terrain.height) {
+    refuse(fmt::format("{} is {}x{}, the terrain {}x{}", name, field.width, field.height, terrain.width,
+                       terrain.height));
+  }
+}
+
+template <class Real>
+void require_non_negative(const Grid<Real>& field, const Grid<Real>& terrain, const char* name) {
+  for (int y = 0; y < field.height; ++y) {
+    for (int x = 0; x < field.width; ++x) {
+      if (terrain.is_valid(x, y) && !(field.at(x, y) >= Real(0))) {
+        refuse(fmt::format("{} at cell (x={}, y={}) is {}; it must be >= 0", name, x, y,
+                           static_cast<double>(field.at(x, y))));
+      }
+    }
+  }
+}
+
+template <class Real>
+void check_initial_state(const PipeState<Real>& state) {
+  const auto& terrain = state.terrain;
+  if (count_valid(terrain) == 0) refuse("the terrain's mask covers every cell");
+  require_same_size(state.water, terrain, "the water depth");
+  require_same_size(state.sediment, terrain, "the sediment");
+  require_same_size(state.velocity_x, terrain, "the x velocity");
+  require_same_size(state.velocity_y, terrain, "the y velocity");
+  if (state.outflow.size() != terrain.size()) {
+    refuse(fmt::format("the outflow flux has {} cells, the terrain {}", state.outflow.size(), terrain.size()));
+  }
+  check_finite(terrain, std::string(algorithm_name) + ": terrain");
+  auto masked = [&terrain](const Grid<Real>& field) {
+    Grid<Real> out = field;
+    out.valid = terrain.valid;
+    return out;
+  };
+  check_finite(masked(state.water), std::string(algorithm_name) + ": water depth");
+  check_finite(masked(state.sediment), std::string(algorithm_name) + ": sediment");
+  check_finite(masked(state.velocity_x), std::string(algorithm_name) + ": x velocity");
+  check_finite(masked(state.velocity_y), std::string(algorithm_name) + ": y velocity");
+  require_non_negative(state.water, terrain, "the water depth");
+  require_non_negative(state.sediment, terrain, "the sediment");
+  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+    for (Real flux : state.outflow[cell]) {
+      if (terrain.is_valid(cell) && !(is_finite(flux) && flux >= Real(0))) {
+        refuse(fmt::format("outflow flux {} at cell {} must be finite and >= 0", static_cast<double>(flux), cell));
+      }
+    }
+  }
+}
+
+template <class Real>
+void clear_no_data_cells(PipeState<Real>& state) {
+  for (std::size_t cell = 0; cell < state.terrain.size(); ++cell) {
+    if (state.terrain.is_valid(cell)) continue;
+    state.water.values[cell] = state.sediment.values[cell] = Real(0);
+    state.velocity_x.values[cell] = state.velocity_y.values[cell] = Real(0);
+    state.outflow[cell] = {};
+  }
+}
+
+template <class Real>
+std::vector<Real> rain_depths(const Grid<Real>& terrain, const PipeConstants& constants, const Grid<double>& rain_map) {
+  if (!rain_map.values.empty()) {
+    if (rain_map.width != terrain.width || rain_map.height != terrain.height) {
+      refuse(fmt::format("the rain map is {}x{}, the terrain {}x{}", rain_map.width, rain_map.height, terrain.width,
+                         terrain.height));
+    }
+    for (std::size_t cell = 0; cell < rain_map.size(); ++cell) {
+      if (terrain.is_valid(cell) && !(std::isfinite(rain_map.values[cell]) && rain_map.values[cell] >= 0.0)) {
+        refuse(fmt::format("the rain map holds {} m/s at cell {}; rain must be finite and >= 0",
+                           rain_map.values[cell], cell));
+      }
+    }
+  }
+  const Real time_step = static_cast<Real>(constants.time_step);
+  const Real uniform = static_cast<Real>(constants.rain_rate);
+  std::vector<Real> depths(terrain.size(), Real(0));
+  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+    if (!terrain.is_valid(cell)) continue;
+    const Real mapped = rain_map.values.empty() ? Real(0) : static_cast<Real>(rain_map.values[cell]);
+    depths[cell] = time_step * (uniform + mapped);
+  }
+  return depths;
+}
+
+template <class Real>
+std::vector<std::pair<std::size_t, Real>> source_depths(const Grid<Real>& terrain, const PipeConstants& constants,
+                                                        const std::vector<PointSource>& sources) {
+  std::vector<std::pair<std::size_t, Real>> depths;
+  for (const auto& source : sources) {
+    if (!terrain.inside(source.x, source.y) || !terrain.is_valid(source.x, source.y)) {
+      refuse(fmt::format("point source at cell (x={}, y={}) is off the grid or on a no-data cell", source.x,
+                         source.y));
+    }
+    if (!(std::isfinite(source.rate) && source.rate >= 0.0)) {
+      refuse(fmt::format("point source at cell (x={}, y={}) has rate {} m³/s; it must be finite and >= 0",
+                         source.x, source.y, source.rate));
+    }
+    depths.emplace_back(terrain.index(source.x, source.y),
+                        static_cast<Real>(source.rate * constants.time_step / constants.cell_area));
+  }
+  return depths;
+}
+
+template <class Real>
+std::vector<unsigned char> exterior_pipe_bits(const Grid<Real>& terrain) {
+  std::vector<unsigned char> bits(terrain.size(), 0);
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      for (int k = 0; k < 4; ++k) {
+        const int nx = x + pipes[k].dx;
+        const int ny = y + pipes[k].dy;
+        if (!terrain.inside(nx, ny) || !terrain.is_valid(nx, ny)) bits[terrain.index(x, y)] |= 1u << k;
+      }
+    }
+  }
+  return bits;
+}
+
+// Σ value·l_x·l_y over valid cells, compensated, in double.
+template <class Real>
+double volume(const Grid<Real>& field, const Grid<Real>& terrain, double cell_area) {
+  CompensatedSum sum;
+  for (std::size_t cell = 0; cell < field.size(); ++cell) {
+    if (terrain.is_valid(cell)) sum.add(static_cast<double>(field.values[cell]) * cell_area);
+  }
+  return sum.value();
+}
+
+// Linear interpolation along one axis at a displacement of `offset` cells: the cells floor(offset)
+// and ceil(offset) with weights ceil − offset and offset − floor, each one rounded operation, so a
+// mirrored displacement gives the mirrored weights exactly; an integral offset takes its one cell.
+// The offset is clamped to ±`reach` cells (beyond the grid every corner reads the cell itself); a
+// NaN offset gives NaN weights, which the check after the step reports.
+template <class Real>
+struct AxisTaps {
+  int low = 0;
+  Real low_weight = Real(1);
+  Real high_weight = Real(0);
+};
+
+template <class Real>
+AxisTaps<Real> axis_taps(Real displacement, Real reach) {
+  const Real not_a_number = std::numeric_limits<Real>::quiet_NaN();
+  if (std::isnan(displacement)) return {0, not_a_number, not_a_number};
+  const Real offset = std::clamp(displacement, -reach, reach);
+  const Real low = std::floor(offset);
+  const Real high = std::ceil(offset);
+  if (low == high) return {static_cast<int>(low), Real(1), Real(0)};
+  return {static_cast<int>(low), high - offset, offset - low};
+}
+
+}  // namespace
+
+template <class Real>
+PipeErosion<Real>::PipeErosion(PipeState<Real> initial, const PipeConstants& constants, HydraulicForcing forcing)
+    : state_(std::move(initial)), constants_(constants) {
+  check_initial_state(state_);
+  clear_no_data_cells(state_);
+  rain_depth_ = rain_depths(state_.terrain, constants_, forcing.rain_map);
+  source_depths_ = source_depths(state_.terrain, constants_, forcing.sources);
+  exterior_pipes_ = exterior_pipe_bits(state_.terrain);
+  water_before_flow_.resize(state_.terrain.size());
+  scratch_.resize(state_.terrain.size());
+  sediment_sent_.resize(state_.terrain.size());
+  record_ledger();
+}
+
+template <class Real>
+typename PipeErosion<Real>::Fluxes PipeErosion<Real>::inflows(int x, int y) const {
+  const std::size_t cell = state_.terrain.index(x, y);
+  Fluxes in{};
+  for (int k = 0; k < 4; ++k) {
+    if (!exterior(cell, k)) in[k] = state_.outflow[state_.terrain.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
+  }
+  return in;
+}
+
+// The share of the cell's water each pipe moved this step, f_k·Δt/(d_A·l_x·l_y), scaled down to
+// sum to 1 where rounding made the total exceed it; 0 for a cell that was dry.
+template <class Real>
+typename PipeErosion<Real>::Fluxes PipeErosion<Real>::carried_shares(std::size_t cell) const {
+  const Real water = water_before_flow_[cell];
+  Fluxes shares{};
+  if (!(water > Real(0))) return shares;
+  const Real volume_to_depth = static_cast<Real>(constants_.time_step / constants_.cell_area);
+  for (int k = 0; k < 4; ++k) shares[k] = state_.outflow[cell][k] * volume_to_depth / water;
+  const Real total = pipe_sum(shares);
+  if (total > Real(1)) {
+    for (auto& share : shares) share = share / total;
+  }
+  return shares;
+}
+
+template <class Real>
+Real PipeErosion<Real>::tilt_sine(int x, int y) const {
+  const auto& terrain = state_.terrain;
+  const std::size_t cell = terrain.index(x, y);
+  auto slope = [&](int lower_pipe, int upper_pipe, double length) {
+    const int lower = exterior(cell, lower_pipe) ? 0 : 1;
+    const int upper = exterior(cell, upper_pipe) ? 0 : 1;
+    if (lower + upper == 0) return Real(0);
+    const Real low = terrain.at(x + lower * pipes[lower_pipe].dx, y + lower * pipes[lower_pipe].dy);
+    const Real high = terrain.at(x + upper * pipes[upper_pipe].dx, y + upper * pipes[upper_pipe].dy);
+    return (high - low) / static_cast<Real>((lower + upper) * length);
+  };
+  const Real slope_x = slope(left, right, constants_.length_x);
+  const Real slope_y = slope(bottom, top, constants_.length_y);
+  const Real squared = slope_x * slope_x + slope_y * slope_y;
+  return std::max(static_cast<Real>(constants_.min_tilt_sine), std::sqrt(squared / (Real(1) + squared)));
+}
+
+template <class Real>
+Real PipeErosion<Real>::backtraced_sediment(const std::vector<Real>& source, int x, int y) const {
+  const auto& terrain = state_.terrain;
+  const std::size_t cell = terrain.index(x, y);
+  const Real reach = static_cast<Real>(terrain.width + terrain.height);
+  const auto taps_x = axis_taps(-state_.velocity_x.values[cell] *
+                                    static_cast<Real>(constants_.time_step / constants_.length_x), reach);
+  const auto taps_y = axis_taps(-state_.velocity_y.values[cell] *
+                                    static_cast<Real>(constants_.time_step / constants_.length_y), reach);
+  auto corner = [&](int dx, int dy) {
+    const int cx = x + taps_x.low + dx;
+    const int cy = y + taps_y.low + dy;
+    return terrain.inside(cx, cy) && terrain.is_valid(cx, cy) ? source[terrain.index(cx, cy)] : source[cell];
+  };
+  const Real lower_row = taps_x.low_weight * corner(0, 0) + taps_x.high_weight * corner(1, 0);
+  const Real upper_row = taps_x.low_weight * corner(0, 1) + taps_x.high_weight * corner(1, 1);
+  return taps_y.low_weight * lower_row + taps_y.high_weight * upper_row;
+}
+
+template <class Real>
+void PipeErosion<Real>::add_water() {
+  auto& water = state_.water.values;
+  for (std::size_t cell = 0; cell < water.size(); ++cell) {
+    if (!state_.terrain.is_valid(cell)) continue;
+    water[cell] = water[cell] + rain_depth_[cell];
+    flows_.rain_in.add(static_cast<double>(rain_depth_[cell]) * constants_.cell_area);
+  }
+  for (const auto& [cell, depth] : source_depths_) {
+    water[cell] = water[cell] + depth;
+    flows_.source_in.add(static_cast<double>(depth) * constants_.cell_area);
+  }
+  water_before_flow_ = water;
+}
+
+template <class Real>
+Real PipeErosion<Real>::neighbour_surface(int x, int y, int pipe) const {
+  const std::size_t neighbour = state_.terrain.index(x + pipes[pipe].dx, y + pipes[pipe].dy);
+  return state_.terrain.values[neighbour] + state_.water.values[neighbour];
+}
+
+template <class Real>
+void PipeErosion<Real>::update_outflow() {
+  const auto& terrain = state_.terrain;
+  const auto& water = state_.water;
+  const bool open = constants_.boundary == PipeBoundary::open;
+  const double gain = constants_.time_step * constants_.pipe_area * constants_.gravity;
+  const std::array<Real, 4> flux_gain{static_cast<Real>(gain / constants_.length_x),
+                                      static_cast<Real>(gain / constants_.length_x),
+                                      static_cast<Real>(gain / constants_.length_y),
+                                      static_cast<Real>(gain / constants_.length_y)};
+  const Real area_per_time = static_cast<Real>(constants_.cell_area / constants_.time_step);
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      const std::size_t cell = terrain.index(x, y);
+      if (!terrain.is_valid(cell)) continue;
+      const Real surface = terrain.values[cell] + water.values[cell];
+      Fluxes tentative{};
+      for (int k = 0; k < 4; ++k) {
+        if (exterior(cell, k) && !open) continue;
+        const Real head = exterior(cell, k) ? water.values[cell] : surface - neighbour_surface(x, y, k);
+        tentative[k] = std::max(Real(0), state_.outflow[cell][k] + flux_gain[k] * head);
+      }
+      const Real total = pipe_sum(tentative);
+      const Real scale = total > Real(0) ? std::min(Real(1), water.values[cell] * area_per_time / total) : Real(1);
+      for (int k = 0; k < 4; ++k) state_.outflow[cell][k] = scale * tentative[k];
+    }
+  }
+}
+
+template <class Real>
+void PipeErosion<Real>::update_water_depth() {
+  const auto& terrain = state_.terrain;
+  const Real volume_to_depth = static_cast<Real>(constants_.time_step / constants_.cell_area);
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      const std::size_t cell = terrain.index(x, y);
+      if (!terrain.is_valid(cell)) continue;
+      const auto& out = state_.outflow[cell];
+      const Real remaining = std::max(Real(0), water_before_flow_[cell] - volume_to_depth * pipe_sum(out));
+      state_.water.values[cell] = remaining + volume_to_depth * pipe_sum(inflows(x, y));
+      for (int k = 0; k < 4; ++k) {
+        if (exterior(cell, k)) flows_.boundary_out_water.add(constants_.time_step * static_cast<double>(out[k]));
+      }
+    }
+  }
+}
+
+template <class Real>
+void PipeErosion<Real>::update_velocity() {
+  const auto& terrain = state_.terrain;
+  const Real half = Real(0.5);
+  const Real depth_floor = static_cast<Real>(constants_.velocity_depth_floor);
+  const Real length_x = static_cast<Real>(constants_.length_x);
+  const Real length_y = static_cast<Real>(constants_.length_y);
+  const double cfl_per_speed = constants_.time_step / std::min(constants_.length_x, constants_.length_y);
+  step_max_cfl_ = 0.0;
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      const std::size_t cell = terrain.index(x, y);
+      if (!terrain.is_valid(cell)) continue;
+      const auto& out = state_.outflow[cell];
+      const auto in = inflows(x, y);
+      const Real flow_x = half * ((in[left] - out[left]) + (out[right] - in[right]));
+      const Real flow_y = half * ((in[bottom] - out[bottom]) + (out[top] - in[top]));
+      const Real mean_depth = std::max(depth_floor, half * (water_before_flow_[cell] + state_.water.values[cell]));
+      const Real u = flow_x / (length_y * mean_depth);
+      const Real v = flow_y / (length_x * mean_depth);
+      state_.velocity_x.values[cell] = u;
+      state_.velocity_y.values[cell] = v;
+      const double speed = std::hypot(static_cast<double>(u), static_cast<double>(v));
+      step_max_cfl_ = std::max(step_max_cfl_, cfl_per_speed * speed);
+    }
+  }
+}
+
+template <class Real>
+void PipeErosion<Real>::erode_and_deposit() {
+  const auto& terrain = state_.terrain;
+  auto& sediment = state_.sediment.values;
+  const Real capacity_constant = static_cast<Real>(constants_.capacity);
+  const Real depth_ramp = static_cast<Real>(constants_.depth_ramp);
+  const Real dissolving = static_cast<Real>(constants_.dissolving_fraction);
+  const Real deposition = static_cast<Real>(constants_.deposition_fraction);
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      const std::size_t cell = terrain.index(x, y);
+      scratch_[cell] = terrain.values[cell];
+      if (!terrain.is_valid(cell)) continue;
+      const Real u = state_.velocity_x.values[cell];
+      const Real v = state_.velocity_y.values[cell];
+      const Real depth = state_.water.values[cell];
+      const Real ramp = depth_ramp > Real(0) ? std::min(Real(1), depth / depth_ramp) : Real(1);
+      const Real capacity = capacity_constant * tilt_sine(x, y) * std::sqrt(u * u + v * v) * ramp;
+      const Real suspended = sediment[cell];
+      const Real moved = capacity > suspended ? dissolving * (capacity - suspended)
+                                              : -(deposition * (suspended - capacity));
+      scratch_[cell] = terrain.values[cell] - moved;
+      sediment[cell] = suspended + moved;
+    }
+  }
+  std::swap(state_.terrain.values, scratch_);
+}
+
+template <class Real>
+void PipeErosion<Real>::transport_sediment_with_fluxes() {
+  const auto& terrain = state_.terrain;
+  auto& sediment = state_.sediment.values;
+  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+    if (!terrain.is_valid(cell)) continue;
+    const auto shares = carried_shares(cell);
+    for (int k = 0; k < 4; ++k) sediment_sent_[cell][k] = sediment[cell] * shares[k];
+    scratch_[cell] = sediment[cell] * (Real(1) - std::min(Real(1), pipe_sum(shares)));
+  }
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      const std::size_t cell = terrain.index(x, y);
+      if (!terrain.is_valid(cell)) continue;
+      Fluxes received{};
+      for (int k = 0; k < 4; ++k) {
+        if (exterior(cell, k)) {
+          flows_.boundary_out_sediment.add(static_cast<double>(sediment_sent_[cell][k]) * constants_.cell_area);
+        } else {
+          received[k] = sediment_sent_[terrain.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
+        }
+      }
+      scratch_[cell] = scratch_[cell] + pipe_sum(received);
+    }
+  }
+  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+    if (terrain.is_valid(cell)) sediment[cell] = scratch_[cell];
+  }
+}
+
+template <class Real>
+void PipeErosion<Real>::transport_sediment_semi_lagrangian() {
+  const auto& terrain = state_.terrain;
+  auto& sediment = state_.sediment.values;
+  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+    if (!terrain.is_valid(cell)) continue;
+    const auto shares = carried_shares(cell);
+    Real leaving = Real(0);
+    for (int k = 0; k < 4; ++k) {
+      if (exterior(cell, k)) leaving = leaving + shares[k];
+    }
+    const Real staying = sediment[cell] * (Real(1) - std::min(Real(1), leaving));
+    flows_.boundary_out_sediment.add(static_cast<double>(sediment[cell] - staying) * constants_.cell_area);
+    scratch_[cell] = staying;
+  }
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      if (terrain.is_valid(x, y)) sediment[terrain.index(x, y)] = backtraced_sediment(scratch_, x, y);
+    }
+  }
+}
+
+template <class Real>
+void PipeErosion<Real>::evaporate() {
+  const Real kept = static_cast<Real>(constants_.evaporation_kept);
+  auto& water = state_.water.values;
+  for (std::size_t cell = 0; cell < water.size(); ++cell) {
+    if (!state_.terrain.is_valid(cell)) continue;
+    const Real before = water[cell];
+    water[cell] = before * kept;
+    flows_.evaporated.add(static_cast<double>(before - water[cell]) * constants_.cell_area);
+  }
+}
+
+template <class Real>
+void PipeErosion<Real>::check_state() const {
+  const auto& terrain = state_.terrain;
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      const std::size_t cell = terrain.index(x, y);
+      if (!terrain.is_valid(cell)) continue;
+      const auto& out = state_.outflow[cell];
+      struct Checked {
+        const char* name;
+        Real value;
+        bool non_negative;
+      };
+      const std::array<Checked, 9> values{{{"terrain height", terrain.values[cell], false},
+                                           {"water depth", state_.water.values[cell], true},
+                                           {"sediment", state_.sediment.values[cell], true},
+                                           {"x velocity", state_.velocity_x.values[cell], false},
+                                           {"y velocity", state_.velocity_y.values[cell], false},
+                                           {"outflow L", out[left], true},
+                                           {"outflow R", out[right], true},
+                                           {"outflow T", out[top], true},
+                                           {"outflow B", out[bottom], true}}};
+      for (const auto& [name, value, non_negative] : values) {
+        if (is_finite(value) && !(non_negative && value < Real(0))) continue;
+        refuse(fmt::format("step {}, cell (x={}, y={}): {} is {} (Δt = {} s, largest CFL number this step {:.3g}); "
+                           "the time step is too large or the input out of range",
+                           steps_done_, x, y, name, static_cast<double>(value), constants_.time_step, step_max_cfl_));
+      }
+    }
+  }
+}
+
+template <class Real>
+void PipeErosion<Real>::record_ledger() {
+  PipeLedgerEntry entry;
+  entry.step = steps_done_;
+  entry.water = volume(state_.water, state_.terrain, constants_.cell_area);
+  entry.terrain = volume(state_.terrain, state_.terrain, constants_.cell_area);
+  entry.sediment = volume(state_.sediment, state_.terrain, constants_.cell_area);
+  entry.rain_in = flows_.rain_in.value();
+  entry.source_in = flows_.source_in.value();
+  entry.evaporated = flows_.evaporated.value();
+  entry.boundary_out_water = flows_.boundary_out_water.value();
+  entry.boundary_out_sediment = flows_.boundary_out_sediment.value();
+  entry.max_cfl = step_max_cfl_;
+  ledger_.push_back(entry);
+}
+
+template <class Real>
+void PipeErosion<Real>::step() {
+  add_water();
+  update_outflow();
+  update_water_depth();
+  update_velocity();
+  erode_and_deposit();
+  if (constants_.transport == SedimentTransport::flux) {
+    transport_sediment_with_fluxes();
+  } else {
+    transport_sediment_semi_lagrangian();
+  }
+  evaporate();
+  ++steps_done_;
+  check_state();
+  record_ledger();
+}
+
+template <class Real>
+void PipeErosion<Real>::run(int steps) {
+  for (int i = 0; i < steps; ++i) step();
+}
+
+template class PipeErosion<float>;
+template class PipeErosion<double>;
+
+}  // namespace gt::reference

@@ -1,0 +1,83 @@
+// Hydraulic erosion with virtual pipes (Mei, Decaudin, Hu 2007), CPU reference.
+//
+// PipeErosion<Real>(initial, constants, forcing) advances a PipeState (core/params/hydraulic.hpp)
+// by steps of Δt and keeps a water and material ledger in double, one entry per step:
+//   initial    terrain b, water d, sediment s, outflow flux f, velocity; all in metres, m³/s, m/s.
+//              No-data cells of the terrain's mask are walls or sinks (see pipes.cpp) and hold no
+//              water, sediment, flux or velocity: the constructor sets those to 0 there.
+//   constants  from pipe_constants() (core/params/hydraulic.hpp).
+//   forcing    rain map (m/s) and point sources (m³/s).
+// Real = double is the truth; Real = float repeats the GPU's arithmetic operation by operation.
+//
+// The float trap (issue 3): an erosion or deposition amount below half the float spacing of the
+// terrain height (2^-24·|b|: 3.05e-5 m at 500 m) is lost from the terrain while the sediment keeps
+// all of it, so ref<float> creates or destroys material at high base heights. The float reference
+// shows this honestly (its ledger reports the drift); the GPU twin is to avoid it (heights relative
+// to a base, or compensated storage), not this reference.
+#pragma once
+
+#include <vector>
+
+#include "core/params/hydraulic.hpp"
+#include "core/sum.hpp"
+
+namespace gt::reference {
+
+template <class Real>
+class PipeErosion {
+ public:
+  // Throws InputError for grids whose size differs from the terrain's, a mask without a valid cell,
+  // non-finite values, negative water, sediment or flux on valid cells, a rain map of another size
+  // or with negative or non-finite rates, and sources outside the grid, on no-data cells or with a
+  // negative or non-finite rate.
+  PipeErosion(PipeState<Real> initial, const PipeConstants& constants, HydraulicForcing forcing = {});
+
+  // One step: water increment, outflow flux, water depth, velocity, erosion/deposition, sediment
+  // transport, evaporation. Throws InputError naming the step and the cell when a value turns NaN or
+  // infinite or water or sediment turns negative (the state is then that of the failed step).
+  void step();
+  void run(int steps);
+
+  const PipeState<Real>& state() const { return state_; }
+  // Entry 0 describes the initial state; entry n the state after step n.
+  const std::vector<PipeLedgerEntry>& ledger() const { return ledger_; }
+
+ private:
+  struct Flows {
+    CompensatedSum rain_in, source_in, evaporated, boundary_out_water, boundary_out_sediment;
+  };
+  using Fluxes = std::array<Real, 4>;
+
+  bool exterior(std::size_t cell, int pipe) const { return (exterior_pipes_[cell] >> pipe) & 1u; }
+  Fluxes inflows(int x, int y) const;
+  Real neighbour_surface(int x, int y, int pipe) const;
+  Fluxes carried_shares(std::size_t cell) const;
+  Real tilt_sine(int x, int y) const;
+  Real backtraced_sediment(const std::vector<Real>& source, int x, int y) const;
+
+  void add_water();
+  void update_outflow();
+  void update_water_depth();
+  void update_velocity();
+  void erode_and_deposit();
+  void transport_sediment_with_fluxes();
+  void transport_sediment_semi_lagrangian();
+  void evaporate();
+  void check_state() const;
+  void record_ledger();
+
+  PipeState<Real> state_;
+  PipeConstants constants_;
+  std::vector<Real> rain_depth_;               // Δt·(rain_rate + rain_map) per cell, m
+  std::vector<std::pair<std::size_t, Real>> source_depths_;  // cell, Δt·rate/(l_x·l_y), m
+  std::vector<unsigned char> exterior_pipes_;  // bit k: pipe k leads off the grid or to no data
+  std::vector<Real> water_before_flow_;        // d_A of the current step
+  std::vector<Real> scratch_;                  // next terrain or sediment of the current step
+  std::vector<Fluxes> sediment_sent_;          // sediment leaving through each pipe, m
+  Flows flows_;
+  double step_max_cfl_ = 0.0;
+  int steps_done_ = 0;
+  std::vector<PipeLedgerEntry> ledger_;
+};
+
+}  // namespace gt::reference
