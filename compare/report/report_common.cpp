@@ -143,13 +143,18 @@ std::string benchmark_size_text(const BenchmarkRow& row) {
   return row.dimensions == 3 ? fmt::format("{}³", row.size) : fmt::format("{}×{}", row.size, row.size);
 }
 
+std::string benchmark_time_text(const BenchmarkRow& row) { return row.note.empty() ? format_ms(row.median_ms) : "—"; }
+
 std::string benchmark_rate_text(const BenchmarkRow& row) {
-  return row.note.empty() ? format_value(row.mcell_iterations_per_s) : "not run: " + row.note;
+  return row.note.empty() ? format_value(row.mcell_iterations_per_s) : "—";
 }
 
 std::string benchmark_triangle_rate_text(const BenchmarkRow& row) {
-  return row.mtriangles_per_s && row.note.empty() ? format_value(*row.mtriangles_per_s) : "";
+  if (!row.note.empty()) return "—";
+  return row.mtriangles_per_s ? format_value(*row.mtriangles_per_s) : "";
 }
+
+std::string benchmark_note_text(const BenchmarkRow& row) { return row.note.empty() ? "" : "not run: " + row.note; }
 
 }  // namespace gt::report_detail
 

@@ -55,10 +55,12 @@ std::string case_size_text(const CaseResult& result);
 // "512×512" for a grid, "128³" for a volume.
 std::string benchmark_size_text(const BenchmarkRow& row);
 
-// Throughput columns: "Mcell-it/s" and "M triangles/s" (empty when the row has none), or the
-// row's note when it has no time.
+// Time and throughput columns: median ms, "Mcell-it/s" and "M triangles/s" (empty when the row
+// has none), "—" for a row that did not run; its note column says why ("not run: ...").
+std::string benchmark_time_text(const BenchmarkRow& row);
 std::string benchmark_rate_text(const BenchmarkRow& row);
 std::string benchmark_triangle_rate_text(const BenchmarkRow& row);
+std::string benchmark_note_text(const BenchmarkRow& row);
 // "≤ threshold" plus "(warn ≤ loose)" when a loose bound exists; "" when neither exists.
 std::string format_bounds(const Check& check);
 

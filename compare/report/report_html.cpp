@@ -196,13 +196,15 @@ void append_performance(std::string& out, const Report& report) {
   } else {
     out += "<table>\n<tr><th>device</th><th>algorithm</th><th>backend</th><th>size</th><th>iterations</th>"
            "<th>reps</th><th>median ms</th><th>Mcell-it/s (noise: M samples/s; cave: M voxels/s)</th>"
-           "<th>M triangles/s</th></tr>\n";
+           "<th>M triangles/s</th><th>note</th></tr>\n";
     for (const BenchmarkRow& row : report.benchmarks) {
       out += fmt::format(
           "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
-          "<td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td></tr>\n",
+          "<td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
+          "<td>{}</td></tr>\n",
           h(row.device), h(row.algorithm), h(row.backend), h(benchmark_size_text(row)), row.iterations, row.reps,
-          format_ms(row.median_ms), h(benchmark_rate_text(row)), h(benchmark_triangle_rate_text(row)));
+          h(benchmark_time_text(row)), h(benchmark_rate_text(row)), h(benchmark_triangle_rate_text(row)),
+          h(benchmark_note_text(row)));
     }
     out += "</table>\n";
   }
