@@ -15,6 +15,7 @@ const std::vector<Algorithm>& algorithms() {
     list.push_back(cave_endless_algorithm());
     list.push_back(mesh_check_algorithm());
     list.push_back(render_heightmap_algorithm());
+    list.push_back(render_phong_algorithm());
     return list;
   }();
   return all;

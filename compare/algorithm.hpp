@@ -66,5 +66,6 @@ std::vector<Algorithm> cave_algorithms();
 Algorithm cave_endless_algorithm();
 Algorithm mesh_check_algorithm();
 Algorithm render_heightmap_algorithm();
+Algorithm render_phong_algorithm();
 
 }  // namespace gt

@@ -5,10 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
-#include <stdexcept>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "core/errors.hpp"
 
@@ -62,22 +59,6 @@ std::array<float, 16> projection_row_major(const Box& box) {
           0, 0, 0, 1};
 }
 
-GLuint texture(GLenum format, int width, int height) {
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &id);
-  glTextureStorage2D(id, 1, format, width, height);
-  return id;
-}
-
-void check_size(int width, int height) {
-  GLint largest = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
-  if (width < 1 || height < 1 || width > largest || height > largest) {
-    throw std::runtime_error(fmt::format("heightmap {}x{} texels: sides must lie in [1, {}] (GL_MAX_TEXTURE_SIZE)",
-                                         width, height, largest));
-  }
-}
-
 template <class T>
 Grid<T> texel_grid(int width, int height, double cell_size_x, double cell_size_y) {
   Grid<T> grid(width, height);
@@ -100,15 +81,13 @@ HeightmapFromMesh::HeightmapFromMesh(const Mesh& mesh, int width, int height)
     : HeightmapFromMesh(mesh, width, height, checked_box(mesh)) {}
 
 HeightmapFromMesh::HeightmapFromMesh(const Mesh& mesh, int width, int height, const Box& box)
-    : width_(width),
-      height_(height),
+    : target_(GL_R32F, width, height, "heightmap"),
       cell_size_x_(extent(box, 0) / width),
       cell_size_y_(extent(box, 1) / height),
       index_count_(mesh.triangles.size() * 3),
       program_(GraphicsProgram::load("render/heightmap_from_mesh.vert", "render/heightmap_from_mesh.frag")),
       positions_(StorageBuffer::from(centred_positions(mesh, box))),
       indices_(StorageBuffer::from(mesh.triangles)) {
-  check_size(width, height);
   const auto projection = projection_row_major(box);
   glProgramUniformMatrix4fv(program_.id(), 0, 1, GL_TRUE, projection.data());
 
@@ -118,52 +97,22 @@ HeightmapFromMesh::HeightmapFromMesh(const Mesh& mesh, int width, int height, co
   glVertexArrayAttribBinding(vertex_array_, 0, 0);
   glEnableVertexArrayAttrib(vertex_array_, 0);
   glVertexArrayElementBuffer(vertex_array_, indices_.id());
-
-  colour_texture_ = texture(GL_R32F, width, height);
-  depth_texture_ = texture(GL_DEPTH_COMPONENT32F, width, height);
-  glCreateFramebuffers(1, &framebuffer_);
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, colour_texture_, 0);
-  glNamedFramebufferTexture(framebuffer_, GL_DEPTH_ATTACHMENT, depth_texture_, 0);
-  const GLenum status = glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error(fmt::format("heightmap framebuffer incomplete (status 0x{:x})", status));
-  }
 }
 
-HeightmapFromMesh::~HeightmapFromMesh() {
-  glDeleteFramebuffers(1, &framebuffer_);
-  glDeleteTextures(1, &depth_texture_);
-  glDeleteTextures(1, &colour_texture_);
-  glDeleteVertexArrays(1, &vertex_array_);
-}
+HeightmapFromMesh::~HeightmapFromMesh() { glDeleteVertexArrays(1, &vertex_array_); }
 
-void HeightmapFromMesh::run() const {
-  const float clear_colour[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  const float clear_depth = 1.0f;
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glViewport(0, 0, width_, height_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_CULL_FACE);
-  glClearNamedFramebufferfv(framebuffer_, GL_COLOR, 0, clear_colour);
-  glClearNamedFramebufferfv(framebuffer_, GL_DEPTH, 0, &clear_depth);
-  program_.use();
-  glBindVertexArray(vertex_array_);
-  glDrawElements(GL_TRIANGLES, GLsizei(index_count_), GL_UNSIGNED_INT, nullptr);
-  glBindVertexArray(0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
+void HeightmapFromMesh::run() const { target_.draw(program_, vertex_array_, index_count_); }
 
 MeshHeightmap HeightmapFromMesh::result() const {
-  const auto red = download(colour_texture_, GL_RED, width_, height_);
-  const auto depth = download(depth_texture_, GL_DEPTH_COMPONENT, width_, height_);
-  MeshHeightmap result{texel_grid<float>(width_, height_, cell_size_x_, cell_size_y_),
-                       texel_grid<std::uint8_t>(width_, height_, cell_size_x_, cell_size_y_)};
-  for (int row = 0; row < height_; ++row) {
-    const std::size_t gl_row = std::size_t(height_ - 1 - row);
-    for (int x = 0; x < width_; ++x) {
-      const std::size_t texel = gl_row * std::size_t(width_) + std::size_t(x);
+  const int width = target_.width(), height = target_.height();
+  const auto red = download(target_.colour_texture(), GL_RED, width, height);
+  const auto depth = download(target_.depth_texture(), GL_DEPTH_COMPONENT, width, height);
+  MeshHeightmap result{texel_grid<float>(width, height, cell_size_x_, cell_size_y_),
+                       texel_grid<std::uint8_t>(width, height, cell_size_x_, cell_size_y_)};
+  for (int row = 0; row < height; ++row) {
+    const std::size_t gl_row = std::size_t(height - 1 - row);
+    for (int x = 0; x < width; ++x) {
+      const std::size_t texel = gl_row * std::size_t(width) + std::size_t(x);
       result.heights.at(x, row) = red[texel];
       result.covered.at(x, row) = depth[texel] < 1.0f ? 1 : 0;
     }

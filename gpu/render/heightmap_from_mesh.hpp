@@ -23,6 +23,7 @@
 #include "core/grid.hpp"
 #include "core/mesh.hpp"
 #include "gpu/buffer.hpp"
+#include "gpu/render/offscreen_target.hpp"
 #include "gpu/shader_program.hpp"
 
 namespace gt::gpu {
@@ -48,16 +49,13 @@ class HeightmapFromMesh {
   using Box = std::array<std::array<double, 3>, 2>;  // lowest and highest corner
   HeightmapFromMesh(const Mesh& mesh, int width, int height, const Box& box);
 
-  int width_, height_;
+  OffscreenTarget target_;  // R32F heights
   double cell_size_x_, cell_size_y_;
   std::size_t index_count_;
   GraphicsProgram program_;
   StorageBuffer positions_;  // any buffer object can feed a vertex array; these hold float3 and uint3
   StorageBuffer indices_;
   GLuint vertex_array_ = 0;
-  GLuint colour_texture_ = 0;
-  GLuint depth_texture_ = 0;
-  GLuint framebuffer_ = 0;
 };
 
 }  // namespace gt::gpu

@@ -1,0 +1,29 @@
+#version 450 core
+// Seed 004's Phong look (digest 004_cave.md §2.9: the opengl-tutorial shader with K_a = 0.1,
+// specular 0.3, exponent 5, one point light at the eye), fragment stage; the formula and its
+// decisions are documented in reference/render/phong.hpp:
+//   v = l = normalize(eye - p), E = light_power / |eye - p|²
+//   n = normalize(normal), facing the viewer (two-sided); v when the normal is exactly zero
+//   colour = clamp(albedo·(0.1 + E·max(0, n·l)) + 0.3·E·max(0, r·v)^5, 0, 1), r = reflect(-l, n)
+// Written to an RGBA8 target (alpha 1), which rounds to 8 bits.
+
+in vec3 world_position;
+in vec3 vertex_normal;
+
+layout(location = 1) uniform vec3 eye;
+layout(location = 2) uniform vec3 albedo;
+layout(location = 3) uniform float light_power;
+
+layout(location = 0) out vec4 colour;
+
+void main() {
+  vec3 to_eye = eye - world_position;
+  float irradiance = light_power / dot(to_eye, to_eye);
+  vec3 v = normalize(to_eye);
+  vec3 l = v;
+  vec3 n = dot(vertex_normal, vertex_normal) > 0.0 ? normalize(vertex_normal) : v;
+  if (dot(n, v) < 0.0) n = -n;
+  float diffuse = max(0.0, dot(n, l));
+  float specular = pow(max(0.0, dot(reflect(-l, n), v)), 5.0);
+  colour = vec4(clamp(albedo * (0.1 + irradiance * diffuse) + 0.3 * irradiance * specular, 0.0, 1.0), 1.0);
+}

@@ -1,0 +1,18 @@
+#version 450 core
+// Seed 004's Phong look (digest 004_cave.md §2.9), vertex stage: clip = P·V·(p, 1) with the
+// reference's P·V (reference/render/phong.hpp) computed in double, rounded to float and set with
+// transpose = GL_TRUE from its row-major array. The world position and the CPU's area-weighted
+// vertex normal go to the fragment stage, interpolated perspective-correctly (GL's default).
+
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 0) uniform mat4 view_projection;
+
+out vec3 world_position;
+out vec3 vertex_normal;
+
+void main() {
+  gl_Position = view_projection * vec4(position, 1.0);
+  world_position = position;
+  vertex_normal = normal;
+}

@@ -1,0 +1,205 @@
+// Seed 004's Phong look on the reference rasterizer: camera matrices, vertex normals, the shading
+// formula and the render; conventions and decisions in phong.hpp.
+#include "reference/render/phong.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/errors.hpp"
+#include "reference/render/rasterizer.hpp"
+
+namespace gt::reference {
+namespace {
+
+Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vec3 operator*(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec3 normalised(const Vec3& a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// Centre and half diagonal of the bounding box of all vertex positions.
+struct Bounds {
+  Vec3 centre{};
+  double radius = 0.0;
+};
+
+Bounds bounds(const Mesh& mesh) {
+  Vec3 low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  for (const auto& p : mesh.positions) {
+    for (int axis = 0; axis < 3; ++axis) {
+      low[axis] = std::min(low[axis], p[axis]);
+      high[axis] = std::max(high[axis], p[axis]);
+    }
+  }
+  const Vec3 diagonal = high - low;
+  return {0.5 * (low + high), 0.5 * std::sqrt(dot(diagonal, diagonal))};
+}
+
+void require_drawable(const Mesh& mesh) {
+  if (mesh.triangles.empty()) throw InputError("Phong render: the mesh has no triangles");
+  if (!(bounds(mesh).radius > 0.0)) throw InputError("Phong render: the mesh has no extent (all vertices coincide)");
+}
+
+void require_valid(const Camera& camera) {
+  const Vec3 forward = camera.target - camera.eye;
+  if (!(dot(forward, forward) > 0.0)) throw InputError("Phong render: the camera's eye is at its target");
+  const Vec3 side = cross(forward, camera.up);
+  if (!(dot(side, side) > 0.0)) throw InputError("Phong render: the camera's up vector is along its view direction");
+  if (!(camera.fov_y_deg > 0.0 && camera.fov_y_deg < 180.0)) {
+    throw InputError("Phong render: the vertical field of view must lie in (0, 180) degrees");
+  }
+  if (!(camera.near > 0.0 && camera.far > camera.near)) throw InputError("Phong render: need 0 < near < far");
+  if (camera.width < 1 || camera.height < 1 || camera.width > 16384 || camera.height > 16384) {
+    throw InputError("Phong render: image sides must lie in [1, 16384] pixels");
+  }
+}
+
+// Perspective-correct attributes: world position (3) then vertex normal (3).
+RasterInput clip_input(const PhongScene& scene) {
+  RasterInput input;
+  input.attribute_count = 6;
+  input.triangles = scene.mesh.triangles;
+  for (std::size_t k = 0; k < scene.mesh.positions.size(); ++k) {
+    const Vec3& p = scene.mesh.positions[k];
+    input.clip_positions.push_back(transform_point(scene.view_projection, p));
+    input.attributes.insert(input.attributes.end(), p.begin(), p.end());
+    input.attributes.insert(input.attributes.end(), scene.normals[k].begin(), scene.normals[k].end());
+  }
+  return input;
+}
+
+// GL's bottom-first colour buffer to top-first RGB8.
+Rgb8Image quantised_top_first(const RasterTarget& target) {
+  Rgb8Image image{target.width, target.height, {}};
+  image.rgb.reserve(std::size_t(target.width) * std::size_t(target.height) * 3);
+  for (int row = 0; row < target.height; ++row) {
+    for (int x = 0; x < target.width; ++x) {
+      for (int channel = 0; channel < 3; ++channel) {
+        image.rgb.push_back(quantise_unorm8(target.colour_at(x, target.height - 1 - row, channel)));
+      }
+    }
+  }
+  return image;
+}
+
+}  // namespace
+
+Matrix4 view_matrix(const Camera& camera) {
+  require_valid(camera);
+  const Vec3 forward = normalised(camera.target - camera.eye);
+  const Vec3 right = normalised(cross(forward, camera.up));
+  const Vec3 up = cross(right, forward);
+  return {right[0],    right[1],    right[2],    -dot(right, camera.eye),   //
+          up[0],       up[1],       up[2],       -dot(up, camera.eye),      //
+          -forward[0], -forward[1], -forward[2], dot(forward, camera.eye),  //
+          0.0,         0.0,         0.0,         1.0};
+}
+
+Matrix4 projection_matrix(const Camera& camera) {
+  require_valid(camera);
+  const double f = 1.0 / std::tan(0.5 * radians(camera.fov_y_deg));
+  const double aspect = double(camera.width) / double(camera.height);
+  const double n = camera.near, far = camera.far;
+  return {f / aspect, 0.0, 0.0,                     0.0,                         //
+          0.0,        f,   0.0,                     0.0,                         //
+          0.0,        0.0, (far + n) / (n - far),   2.0 * far * n / (n - far),   //
+          0.0,        0.0, -1.0,                    0.0};
+}
+
+Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
+  Matrix4 product{};
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      for (int k = 0; k < 4; ++k) product[4 * r + c] += a[4 * r + k] * b[4 * k + c];
+    }
+  }
+  return product;
+}
+
+std::array<double, 4> transform_point(const Matrix4& m, const Vec3& p) {
+  std::array<double, 4> out{};
+  for (int r = 0; r < 4; ++r) out[r] = m[4 * r] * p[0] + m[4 * r + 1] * p[1] + m[4 * r + 2] * p[2] + m[4 * r + 3];
+  return out;
+}
+
+Camera orbit_camera(const Mesh& mesh, double azimuth_deg, double elevation_deg, double fov_y_deg, int width,
+                    int height) {
+  require_drawable(mesh);
+  const Bounds box = bounds(mesh);
+  const double distance = 2.5 * box.radius;
+  const double a = radians(azimuth_deg), e = radians(elevation_deg);
+  const Vec3 direction = {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
+  Camera camera{.eye = box.centre + distance * direction,
+                .target = box.centre,
+                .up = {0.0, 1.0, 0.0},
+                .fov_y_deg = fov_y_deg,
+                .near = 0.5 * (distance - box.radius),
+                .far = 2.0 * (distance + box.radius),
+                .width = width,
+                .height = height};
+  require_valid(camera);
+  return camera;
+}
+
+std::vector<Vec3> vertex_normals(const Mesh& mesh) {
+  std::vector<Vec3> sums(mesh.positions.size(), Vec3{});
+  for (const auto& t : mesh.triangles) {
+    const Vec3& a = mesh.positions.at(t[0]);
+    const Vec3 face = cross(mesh.positions.at(t[1]) - a, mesh.positions.at(t[2]) - a);  // 2·area·unit normal
+    for (const auto vertex : t) sums[vertex] = sums[vertex] + face;
+  }
+  for (auto& n : sums) {
+    if (dot(n, n) > 0.0) n = normalised(n);
+  }
+  return sums;
+}
+
+PhongScene phong_scene(const Mesh& mesh, const Camera& camera) {
+  require_drawable(mesh);
+  const Vec3 to_centre = bounds(mesh).centre - camera.eye;
+  return {.mesh = mesh,
+          .normals = vertex_normals(mesh),
+          .camera = camera,
+          .view_projection = multiply(projection_matrix(camera), view_matrix(camera)),
+          .light_power = dot(to_centre, to_centre)};
+}
+
+Vec3 phong_colour(const Vec3& position, const Vec3& normal, const Vec3& eye, const Vec3& albedo, double light_power) {
+  const Vec3 to_eye = eye - position;
+  const double irradiance = light_power / dot(to_eye, to_eye);
+  const Vec3 v = normalised(to_eye), l = v;
+  Vec3 n = dot(normal, normal) > 0.0 ? normalised(normal) : v;
+  if (dot(n, v) < 0.0) n = -1.0 * n;
+  const double n_dot_l = dot(n, l);
+  const Vec3 r = 2.0 * n_dot_l * n - l;
+  const double diffuse = std::max(0.0, n_dot_l), specular = std::pow(std::max(0.0, dot(r, v)), 5.0);
+  Vec3 colour{};
+  for (int c = 0; c < 3; ++c) {
+    colour[c] = std::clamp(albedo[c] * (0.1 + irradiance * diffuse) + 0.3 * irradiance * specular, 0.0, 1.0);
+  }
+  return colour;
+}
+
+std::uint8_t quantise_unorm8(double channel) { return std::uint8_t(std::lround(255.0 * channel)); }
+
+Rgb8Image render_phong(const PhongScene& scene, int subpixel_bits) {
+  RasterTarget target(scene.camera.width, scene.camera.height, 3, 0.0, 1.0);
+  const FragmentShader shade = [&scene](std::span<const double> a, std::span<double> colour) {
+    const Vec3 rgb = phong_colour({a[0], a[1], a[2]}, {a[3], a[4], a[5]}, scene.camera.eye, scene.albedo,
+                                  scene.light_power);
+    std::copy(rgb.begin(), rgb.end(), colour.begin());
+  };
+  rasterize(clip_input(scene), shade, target, {.subpixel_bits = subpixel_bits});
+  return quantised_top_first(target);
+}
+
+}  // namespace gt::reference
