@@ -10,10 +10,6 @@
 // The no-GPU test makes EGL fail by pointing libglvnd at a vendor file that does not exist
 // (__EGL_VENDOR_LIBRARY_FILENAMES): with no vendor library, no EGL display can be made, on
 // llvmpipe machines and NVIDIA machines alike.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -41,8 +37,8 @@
 #include <tiffio.h>
 
 #include "tests/support/npy_writer.hpp"
+#include "tests/support/run_program.hpp"
 
-extern char** environ;
 
 namespace {
 
@@ -60,96 +56,14 @@ constexpr double gpu_parity_bound = 1e-5;
 
 // ---- helpers ---------------------------------------------------------------------------------
 
-// A fresh folder under the system temp folder, removed with everything in it at the end.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "gt-cli-test-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed: " + std::string(strerror(errno)));
-    path_ = pattern;
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  const fs::path& path() const { return path_; }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
-
-struct RunResult {
-  int status = -1;  // exit status, or 128 + signal
-  std::string out;  // stdout
-  std::string err;  // stderr
-  std::string output() const { return out + err; }
-};
-
-std::ostream& operator<<(std::ostream& stream, const RunResult& result) {
-  return stream << "exit status " << result.status << "\n--- stdout ---\n" << result.out << "--- stderr ---\n"
-                << result.err;
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-}
-
-// Environment changes for the child: a value sets the variable, nullopt removes it.
-using EnvChanges = std::map<std::string, std::optional<std::string>>;
+using TempDir = gt::testing::TemporaryFolder;
+using RunResult = gt::testing::ProgramRun;
+using gt::testing::EnvChanges;
+using gt::testing::read_text;
 
 // Runs groundtruth with `args` (argv[1...]) in the folder `cwd`.
 RunResult run_groundtruth(const std::vector<std::string>& args, const fs::path& cwd, const EnvChanges& env = {}) {
-  const TempDir capture;
-  const std::string out_file = (capture / "stdout").string();
-  const std::string err_file = (capture / "stderr").string();
-
-  std::vector<std::string> arguments = {groundtruth};
-  arguments.insert(arguments.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-
-  std::vector<std::string> variables;
-  for (char** entry = environ; *entry != nullptr; ++entry) {
-    const std::string variable = *entry;
-    if (!env.contains(variable.substr(0, variable.find('=')))) variables.push_back(variable);
-  }
-  for (const auto& [name, value] : env) {
-    if (value) variables.push_back(name + "=" + *value);
-  }
-  std::vector<char*> envp;
-  for (auto& variable : variables) envp.push_back(variable.data());
-  envp.push_back(nullptr);
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, groundtruth.c_str(), &actions, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  RunResult result;
-  if (spawned != 0) {
-    result.err = "posix_spawn " + groundtruth + " failed: " + strerror(spawned);
-    return result;
-  }
-  int wait_status = 0;
-  while (waitpid(pid, &wait_status, 0) < 0) {
-    if (errno != EINTR) {
-      result.err = "waitpid failed";
-      return result;
-    }
-  }
-  result.status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : 128 + WTERMSIG(wait_status);
-  result.out = read_text(out_file);
-  result.err = read_text(err_file);
-  return result;
+  return gt::testing::run_program(groundtruth, args, cwd, env);
 }
 
 json read_json(const fs::path& file) {

@@ -14,10 +14,6 @@
 // at most 2^-24 (the error of 1/255f, 2^-24 relative, plus the product's, 2^-25 relative, for a
 // value below 1), so a difference of two levels is off by at most 2^-23 from (j - k)/255; the
 // bounds below start from this `level_rounding` and say how it propagates.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -45,9 +41,8 @@
 #include "compare/checks/image.hpp"
 #include "core/errors.hpp"
 #include "tests/support/refusal.hpp"
+#include "tests/support/run_program.hpp"
 #include "tests/support/temporary_folder.hpp"
-
-extern char** environ;
 
 namespace gt {
 namespace {
@@ -55,7 +50,10 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
+using testing::ProgramRun;
+using testing::read_text;
 using testing::refusal;
+using testing::run_program;
 using testing::TemporaryFolder;
 
 constexpr double level = 1.0 / 255.0;
@@ -186,50 +184,6 @@ Rgb png_pixel(const std::vector<std::uint8_t>& rgb, int width, int x, int y) {
 }
 
 // ---- running programs --------------------------------------------------------------------------
-
-struct ProgramRun {
-  int status = -1;  // exit status, or 128 + signal, or -1 when the program could not start
-  std::string out, err;
-};
-
-std::ostream& operator<<(std::ostream& stream, const ProgramRun& run) {
-  return stream << "exit status " << run.status << "\n--- stdout ---\n" << run.out << "--- stderr ---\n" << run.err;
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-}
-
-// Runs `program` with `args` (no shell), stdout and stderr captured.
-ProgramRun run_program(const std::string& program, std::vector<std::string> args) {
-  const TemporaryFolder capture("gt_image_diff_capture");
-  const std::string out_file = (capture.path() / "stdout").string(), err_file = (capture.path() / "stderr").string();
-  args.insert(args.begin(), program);
-  std::vector<char*> argv;
-  for (auto& arg : args) argv.push_back(arg.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ProgramRun run;
-  if (spawned != 0) {
-    run.err = fmt::format("cannot start {}: {}", program, std::strerror(spawned));
-    return run;
-  }
-  int wait_status = 0;
-  while (waitpid(pid, &wait_status, 0) < 0 && errno == EINTR) {
-  }
-  run.status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : 128 + WTERMSIG(wait_status);
-  run.out = read_text(out_file);
-  run.err = read_text(err_file);
-  return run;
-}
 
 ProgramRun diff_image(const std::vector<std::string>& args) {
   std::vector<std::string> all = {"diff-image"};
