@@ -59,13 +59,7 @@ Grid<double> run_reference(const FieldTwin& twin, const Heightmap& input, const 
                            CaseResult& result) {
   report_stage(options, "cpu reference (double)");
   Grid<double> output = twin.reference_double(input);  // also the warm-up run
-  if (options.cpu_reps == 0) return output;
-  std::vector<double> times;
-  for (int rep = 0; rep < options.cpu_reps; ++rep) {
-    times.push_back(cpu_wall_ms([&] { output = twin.reference_double(input); }));
-  }
-  result.timings.cpu_ms = median(times);
-  result.timings.cpu_reps = options.cpu_reps;
+  time_cpu(options.cpu_reps, [&] { output = twin.reference_double(input); }, result.timings);
   return output;
 }
 

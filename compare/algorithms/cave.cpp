@@ -263,15 +263,10 @@ Volume<float> rounded_to_float(const Volume<double>& volume) {
 BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseResult& result) {
   if (options.progress) options.progress->stage("CPU reference (double)");
   BlockMeshes meshes;
-  std::vector<double> times;
-  for (int rep = 0; rep < std::max(options.cpu_reps, 1); ++rep) {
-    times.push_back(cpu_wall_ms([&] {
-      meshes.density = block.volume ? *block.volume : reference::cave_density<double>(block.params);
-      meshes.truth = mesh_block(block, meshes.density);
-    }));
-  }
-  result.timings.cpu_ms = median(times);
-  result.timings.cpu_reps = static_cast<int>(times.size());
+  time_cpu(std::max(options.cpu_reps, 1), [&] {
+    meshes.density = block.volume ? *block.volume : reference::cave_density<double>(block.params);
+    meshes.truth = mesh_block(block, meshes.density);
+  }, result.timings);
   meshes.density_float = block.volume ? rounded_to_float(*block.volume) : reference::cave_density<float>(block.params);
   meshes.single = mesh_block(block, meshes.density_float);
   meshes.side_changes = side_changes(meshes.density_float, meshes.density, block.params);
@@ -295,12 +290,7 @@ TriangleMesh<float> run_gpu(const Block& block, const Volume<float>& density_flo
   gpu::MarchingTetrahedra mesher = gpu_mesher(block, density_float);
   mesher.run();
   const TriangleMesh<float> first = mesher.result();
-  std::vector<double> times;
-  for (int rep = 0; rep < options.gpu_reps; ++rep) times.push_back(gpu_wall_ms([&] { mesher.run(); }));
-  if (!times.empty()) {
-    result.timings.gpu_ms = median(times);
-    result.timings.gpu_reps = static_cast<int>(times.size());
-  }
+  time_gpu(options.gpu_reps, [&] { mesher.run(); }, result.timings);
   mesher.run();
   const TriangleMesh<float> second = mesher.result();
   const VertexComparison repeat = compare_vertices(first, second);

@@ -349,12 +349,7 @@ void add_gpu_checks(const Path& path, const std::vector<TriangleMesh<float>>& si
   if (options.progress) options.progress->stage("GPU");
   GpuPath gpu_path(path);
   const auto chunks = gpu_path.run(true);
-  std::vector<double> times;
-  for (int rep = 0; rep < options.gpu_reps; ++rep) times.push_back(gpu_wall_ms([&] { gpu_path.run(false); }));
-  if (!times.empty()) {
-    result.timings.gpu_ms = median(times);
-    result.timings.gpu_reps = static_cast<int>(times.size());
-  }
+  time_gpu(options.gpu_reps, [&] { gpu_path.run(false); }, result.timings);
   std::size_t differing_chunks = 0;
   double largest_distance = 0.0;
   for (std::size_t chunk = 0; chunk < chunks.size(); ++chunk) {
@@ -380,12 +375,7 @@ void run_path(const Path& path, const RunOptions& options, CaseResult& result) {
                              path.sign > 0 ? '+' : '-', char('x' + path.axis));
   if (options.progress) options.progress->stage("CPU reference (double)");
   std::vector<Mesh> chunks;
-  std::vector<double> times;
-  for (int rep = 0; rep < std::max(options.cpu_reps, 1); ++rep) {
-    times.push_back(cpu_wall_ms([&] { chunks = reference_path<double>(path); }));
-  }
-  result.timings.cpu_ms = median(times);
-  result.timings.cpu_reps = static_cast<int>(times.size());
+  time_cpu(std::max(options.cpu_reps, 1), [&] { chunks = reference_path<double>(path); }, result.timings);
   add_seam_checks(path, chunks, "cpu", options, result);
   add_monolithic_check(path, chunks, result);
   add_ring_checks(path, chunks, options, result);

@@ -141,13 +141,9 @@ const ParamSpecs& render_specs() {
 reference::MeshHeightmap run_reference(const RenderCase& render, const RunOptions& options, CaseResult& result) {
   if (options.progress) options.progress->stage("CPU reference (double)");
   reference::MeshHeightmap heightmap;
-  std::vector<double> times;
-  for (int rep = 0; rep < std::max(options.cpu_reps, 1); ++rep) {
-    times.push_back(cpu_wall_ms(
-        [&] { heightmap = reference::heightmap_from_mesh(render.mesh, render.width, render.height, render.subpixel_bits); }));
-  }
-  result.timings.cpu_ms = median(times);
-  result.timings.cpu_reps = static_cast<int>(times.size());
+  time_cpu(std::max(options.cpu_reps, 1), [&] {
+    heightmap = reference::heightmap_from_mesh(render.mesh, render.width, render.height, render.subpixel_bits);
+  }, result.timings);
   return heightmap;
 }
 
@@ -158,12 +154,7 @@ gpu::MeshHeightmap run_gpu(const RenderCase& render, const RunOptions& options, 
                                      gpu::HeightmapFromMesh::subpixel_bits(), render.subpixel_bits));
   renderer.run();
   const gpu::MeshHeightmap first = renderer.result();
-  std::vector<double> times;
-  for (int rep = 0; rep < options.gpu_reps; ++rep) times.push_back(gpu_wall_ms([&] { renderer.run(); }));
-  if (!times.empty()) {
-    result.timings.gpu_ms = median(times);
-    result.timings.gpu_reps = static_cast<int>(times.size());
-  }
+  time_gpu(options.gpu_reps, [&] { renderer.run(); }, result.timings);
   const gpu::MeshHeightmap last = renderer.result();
   const auto changed = std::inner_product(first.heights.values.begin(), first.heights.values.end(),
                                           last.heights.values.begin(), std::size_t{0}, std::plus<>(),

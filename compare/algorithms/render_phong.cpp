@@ -74,12 +74,8 @@ OIIO::ImageBuf rgb8_buffer(int width, int height, const std::vector<std::uint8_t
 OIIO::ImageBuf run_reference(const PhongCase& phong, const RunOptions& options, CaseResult& result) {
   if (options.progress) options.progress->stage("CPU reference (double)");
   reference::Rgb8Image image;
-  std::vector<double> times;
-  for (int rep = 0; rep < std::max(options.cpu_reps, 1); ++rep) {
-    times.push_back(cpu_wall_ms([&] { image = reference::render_phong(phong.scene, phong.subpixel_bits); }));
-  }
-  result.timings.cpu_ms = median(times);
-  result.timings.cpu_reps = static_cast<int>(times.size());
+  time_cpu(std::max(options.cpu_reps, 1), [&] { image = reference::render_phong(phong.scene, phong.subpixel_bits); },
+           result.timings);
   return rgb8_buffer(image.width, image.height, image.rgb);
 }
 
@@ -99,12 +95,7 @@ OIIO::ImageBuf run_gpu(const PhongCase& phong, const RunOptions& options, CaseRe
   const gpu::PhongRenderer renderer(gpu_draw(phong.scene));
   renderer.run();
   const gpu::Rgb8Pixels first = renderer.image();
-  std::vector<double> times;
-  for (int rep = 0; rep < options.gpu_reps; ++rep) times.push_back(gpu_wall_ms([&] { renderer.run(); }));
-  if (!times.empty()) {
-    result.timings.gpu_ms = median(times);
-    result.timings.gpu_reps = static_cast<int>(times.size());
-  }
+  time_gpu(options.gpu_reps, [&] { renderer.run(); }, result.timings);
   const gpu::Rgb8Pixels last = renderer.image();
   const auto changed = std::inner_product(first.rgb.begin(), first.rgb.end(), last.rgb.begin(), std::size_t{0},
                                           std::plus<>(), std::not_equal_to<>());
