@@ -3,7 +3,7 @@
 // the flux-form transport conserves material while the semi-Lagrangian one reports its drift,
 // water never turns negative, a lake at rest stays at rest, mirror symmetry, the CFL number, the
 // refusals, the seed's K example, deposition raising the terrain, float vs double agreement and
-// the float trap at 500 m.
+// the float trap at 500 m; seed 001's regolith layer and sediment diffusion (both weightings).
 //
 // Rounding bounds below use u = 2^-53 (double) or 2^-24 (float), the unit roundoff: one rounded
 // operation changes a value v by at most u·|v|.
@@ -488,3 +488,111 @@ TEST(PipesReference, FloatTerrainAt500MetresCreatesMaterial) {
 }
 
 }  // namespace
+
+// Seed 001 §3.9: still water loosens min(d, K_r) of its bed into regolith (whole gap at the
+// default rates and Δt = 0.05 s); when the water is gone the regolith settles back.
+TEST(PipesReference, RegolithFollowsTheWaterDepthAndSettlesWhenItDries) {
+  const auto terrain = field(12, 10, 1.0, 1.0, [](int, int) { return 3.0; });
+  const auto water = field(12, 10, 1.0, 1.0, [](int x, int) { return x < 6 ? 0.004 : 0.05; });
+  auto params = quiet_params(1);
+  params.regolith_depth = 0.01;
+  params.capacity = 0.0;  // no force erosion: only the regolith moves the bed
+  PipeErosion<double> erosion(wet_state<double>(terrain, water), gt::pipe_constants(params, terrain));
+  erosion.step();  // flat, level within each half: only the two middle columns exchange water
+  const auto& state = erosion.state();
+  for (int y = 0; y < 10; ++y) {
+    for (int x : {0, 11}) {
+      const double expected = std::min(state.water.at(x, y), 0.01);
+      // r = k·(r_max − 0) with k = 1: one rounded subtraction from the bed, exact in r.
+      EXPECT_DOUBLE_EQ(state.regolith.at(x, y), expected) << x << "," << y;
+      EXPECT_NEAR(state.terrain.at(x, y), 3.0 - expected, 3.0 * double_roundoff);
+    }
+  }
+  // Evaporate everything (K_e·Δt = 1): r_max = 0 on the next step, so the bed takes it all back.
+  params.evaporation_rate = 20.0;
+  auto dried_state = state;
+  PipeErosion<double> drying(dried_state, gt::pipe_constants(params, terrain));
+  drying.run(2);
+  EXPECT_EQ(largest_value(drying.state().regolith), 0.0);
+  // The outer columns: the flow between the halves (one cell per step) has not reached them, so
+  // their bed gets back what it gave, to two roundings of a 3 m height.
+  for (int y = 0; y < 10; ++y) {
+    for (int x : {0, 11}) EXPECT_NEAR(drying.state().terrain.at(x, y), 3.0, 2 * 3.0 * double_roundoff);
+  }
+  const auto& ledger = drying.ledger();
+  EXPECT_GT(ledger.front().regolith, 0.0);
+  EXPECT_LE(std::abs(gt::material_drift(ledger.back(), ledger.front())), 2 * 4 * double_roundoff * ledger.front().terrain);
+}
+
+// Seed 001 §3.8, the thesis's uniform weights: a sediment spike on dry, flat ground (nothing flows,
+// no erosion or deposition) spreads as a 5-point stencil: the centre keeps s·(1 − 4w), each
+// neighbour gets s·w, a corner cell with two walls keeps s·(1 − 2w).
+TEST(PipesReference, UniformDiffusionIsTheFivePointStencil) {
+  const auto terrain = field(9, 7, 1.0, 1.0, [](int, int) { return 1.0; });
+  const auto dry = field(9, 7, 1.0, 1.0, [](int, int) { return 0.0; });
+  auto params = quiet_params(1);
+  params.sediment_diffusion = 0.1;
+  params.dissolving_rate = params.deposition_rate = 0.0;
+  auto state = wet_state<double>(terrain, dry);
+  state.sediment.at(4, 3) = 1.0;
+  state.sediment.at(0, 0) = 2.0;
+  PipeErosion<double> erosion(state, gt::pipe_constants(params, terrain));
+  erosion.step();
+  const auto& sediment = erosion.state().sediment;
+  EXPECT_DOUBLE_EQ(sediment.at(4, 3), 1.0 - 4 * 0.1);
+  for (auto [x, y] : {std::pair{3, 3}, {5, 3}, {4, 2}, {4, 4}}) EXPECT_DOUBLE_EQ(sediment.at(x, y), 0.1);
+  EXPECT_DOUBLE_EQ(sediment.at(0, 0), 2.0 * (1.0 - 2 * 0.1));
+  EXPECT_DOUBLE_EQ(sediment.at(1, 0), 2.0 * 0.1);
+  EXPECT_EQ(sediment.at(2, 2), 0.0);
+  // Exact sums of a few terms: the total stays 3 to a few roundings.
+  EXPECT_NEAR(erosion.ledger().back().sediment, 3.0, 16 * double_roundoff * 3.0);
+}
+
+// Seed 001's code weights by water depth: sediment spreads only into wet neighbours, in
+// proportion ½d_n / (d + ½Σd_n).
+TEST(PipesReference, WaterWeightedDiffusionSpreadsOnlyIntoWetCells) {
+  const auto terrain = field(7, 5, 1.0, 1.0, [](int, int) { return 1.0; });
+  const auto water = field(7, 5, 1.0, 1.0, [](int x, int) { return x >= 3 ? 0.2 : 0.0; });
+  auto params = quiet_params(1);
+  params.time_step = 1e-6;  // the wet half's edge barely flows: depths stay 0.2 and 0 to ~1e-5
+  params.sediment_diffusion = 0.25;
+  params.diffusion_weighting = gt::DiffusionWeighting::water;
+  params.dissolving_rate = params.deposition_rate = 0.0;
+  auto state = wet_state<double>(terrain, water);
+  state.sediment.at(3, 2) = 1.0;
+  PipeErosion<double> erosion(state, gt::pipe_constants(params, terrain));
+  erosion.step();
+  const auto& after = erosion.state();
+  EXPECT_EQ(after.sediment.at(2, 2), after.water.at(2, 2) > 0.0 ? after.sediment.at(2, 2) : 0.0);
+  EXPECT_LT(after.sediment.at(2, 2), 1e-4) << "the dry neighbour gets (almost) nothing";
+  // Centre 0.2 + ½(0.2 + 0.2 + 0.2 + ~0) = 0.5: each wet neighbour gets 0.1/0.5 = 0.2, the centre keeps 0.4,
+  // to the flow of the step (depth changes below 2e-5 m, shares below 1e-4).
+  EXPECT_NEAR(after.sediment.at(4, 2), 0.2, 1e-4);
+  EXPECT_NEAR(after.sediment.at(3, 2), 0.4, 1e-4);
+  EXPECT_NEAR(erosion.ledger().back().sediment, 1.0, 16 * double_roundoff);
+}
+
+// The whole variant (ramp, diffusion, regolith) on a rainy slope: water and material still close
+// to rounding in the flux form, and regolith and diffusion actually act.
+TEST(PipesReference, SeedVariantConservesWaterAndMaterial) {
+  const auto terrain = field(40, 20, 1.0, 1.0, [](int x, int y) { return 0.06 * x + 0.3 * noise(x, y, 23); });
+  const auto dry = field(40, 20, 1.0, 1.0, [](int, int) { return 0.0; });
+  auto params = quiet_params(300);
+  params.rain_rate = 5e-4;
+  params.capacity = 0.05;
+  params.depth_ramp = 0.45;
+  params.velocity_depth_floor = 0.05;
+  params.sediment_diffusion = 0.1;
+  params.regolith_depth = 0.01;
+  params.boundary = PipeBoundary::open;
+  const auto erosion = simulate<double>(terrain, dry, params);
+  const auto& first = erosion.ledger().front();
+  const auto& last = erosion.ledger().back();
+  EXPECT_GT(last.regolith, 0.0);
+  EXPECT_GT(last.boundary_out_water, 0.0);
+  // As the open-border test, with regolith and diffusion adding at most 6 more rounded operations
+  // per cell and step on values no larger than b + s + r: 12·u·Σ(b + s + r) per step.
+  EXPECT_LE(std::abs(gt::water_balance(last, first)), 6 * 300 * double_roundoff * (last.rain_in + first.water));
+  EXPECT_LE(std::abs(gt::material_drift(last, first)),
+            12 * 300 * double_roundoff * (first.terrain + last.sediment + last.regolith));
+}

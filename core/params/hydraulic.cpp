@@ -39,6 +39,14 @@ const char* pipe_boundary_name(PipeBoundary boundary) {
   return "?";
 }
 
+const char* diffusion_weighting_name(DiffusionWeighting weighting) {
+  switch (weighting) {
+    case DiffusionWeighting::uniform: return "uniform";
+    case DiffusionWeighting::water: return "water";
+  }
+  return "?";
+}
+
 const ParamSpecs& hydraulic_param_specs() {
   static const ParamSpecs specs = {
       {"steps", ParamKind::integer, 200, 0, 1000000, {}, "count", "time steps of Δt"},
@@ -61,6 +69,16 @@ const ParamSpecs& hydraulic_param_specs() {
        "sediment transport: Mei's semi-Lagrangian backtrace (not conservative) or with the pipe outflows"},
       {"boundary", ParamKind::choice, "closed", 0, 0, {"closed", "open"}, "",
        "grid border and no-data cells: closed walls or open (water and sediment leave and are counted)"},
+      {"sediment_diffusion", ParamKind::real, 0.0, 0.0, 0.25, {}, "1",
+       "seed 001 §3.8: share w of the sediment (and regolith) sent to each neighbour per step; 0 = off"},
+      {"diffusion_weighting", ParamKind::choice, "uniform", 0, 0, {"uniform", "water"}, "",
+       "seed 001 §3.8: the thesis's uniform w, or its code's weights by water depth (w only switches it on)"},
+      {"regolith_depth", ParamKind::real, 0.0, 0.0, 10.0, {}, "m",
+       "seed 001 §3.9: K_r, the largest regolith thickness r_max = min(d, K_r); 0 = no regolith layer"},
+      {"regolith_dissolving_rate", ParamKind::real, 20.0, 0.0, 1e6, {}, "1/s",
+       "K_re: a step closes min(1, K_re·Δt) of the gap r_max − r"},
+      {"regolith_deposition_rate", ParamKind::real, 20.0, 0.0, 1e6, {}, "1/s",
+       "K_rd: a step closes min(1, K_rd·Δt) of the gap r − r_max"},
   };
   return specs;
 }
@@ -85,6 +103,14 @@ HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved) {
                                                                     : SedimentTransport::semi_lagrangian;
   const auto boundary = resolved.at("boundary").get<std::string>();
   params.boundary = boundary == pipe_boundary_name(PipeBoundary::open) ? PipeBoundary::open : PipeBoundary::closed;
+  params.sediment_diffusion = resolved.at("sediment_diffusion").get<double>();
+  params.diffusion_weighting = resolved.at("diffusion_weighting").get<std::string>() ==
+                                       diffusion_weighting_name(DiffusionWeighting::water)
+                                   ? DiffusionWeighting::water
+                                   : DiffusionWeighting::uniform;
+  params.regolith_depth = resolved.at("regolith_depth").get<double>();
+  params.regolith_dissolving_rate = resolved.at("regolith_dissolving_rate").get<double>();
+  params.regolith_deposition_rate = resolved.at("regolith_deposition_rate").get<double>();
   return params;
 }
 
@@ -102,6 +128,12 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   require_non_negative(params.deposition_rate, "deposition_rate");
   require(std::isfinite(params.velocity_depth_floor) && params.velocity_depth_floor > 0.0,
           fmt::format("velocity_depth_floor = {} m must be finite and > 0", params.velocity_depth_floor));
+  require_non_negative(params.sediment_diffusion, "sediment_diffusion");
+  require(params.sediment_diffusion <= 0.25,
+          fmt::format("sediment_diffusion = {} must be <= 1/4 (four neighbours get w each)", params.sediment_diffusion));
+  require_non_negative(params.regolith_depth, "regolith_depth");
+  require_non_negative(params.regolith_dissolving_rate, "regolith_dissolving_rate");
+  require_non_negative(params.regolith_deposition_rate, "regolith_deposition_rate");
   require(params.min_tilt_sine <= 1.0, fmt::format("min_tilt_sine = {} must be <= 1", params.min_tilt_sine));
   const double evaporated_share = params.evaporation_rate * params.time_step;
   require(evaporated_share <= 1.0,
@@ -127,6 +159,11 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.velocity_depth_floor = params.velocity_depth_floor;
   constants.transport = params.transport;
   constants.boundary = params.boundary;
+  constants.sediment_diffusion = params.sediment_diffusion;
+  constants.diffusion_weighting = params.diffusion_weighting;
+  constants.regolith_depth = params.regolith_depth;
+  constants.regolith_dissolving_fraction = std::min(1.0, params.regolith_dissolving_rate * params.time_step);
+  constants.regolith_deposition_fraction = std::min(1.0, params.regolith_deposition_rate * params.time_step);
   return constants;
 }
 
@@ -144,6 +181,7 @@ PipeState<Real> dry_pipe_state(const Grid<Real>& terrain) {
   state.outflow.assign(terrain.size(), std::array<Real, 4>{});
   state.velocity_x = zero_like();
   state.velocity_y = zero_like();
+  state.regolith = zero_like();
   return state;
 }
 
@@ -156,7 +194,8 @@ double water_balance(const PipeLedgerEntry& entry, const PipeLedgerEntry& initia
 }
 
 double material_drift(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
-  return ((entry.terrain - initial.terrain) + (entry.sediment - initial.sediment)) + entry.boundary_out_sediment;
+  return ((entry.terrain - initial.terrain) + (entry.sediment - initial.sediment) + (entry.regolith - initial.regolith)) +
+         (entry.boundary_out_sediment + entry.boundary_out_regolith);
 }
 
 }  // namespace gt

@@ -15,6 +15,11 @@
 //   - Evaporation d ← d·(1 − K_e·Δt) needs K_e·Δt ≤ 1; larger products are refused, not clamped.
 //   - Pipe cross-section A: a parameter in m²; 0 takes the cell area l_x·l_y (Šťava's A = l²).
 //   - Point sources and the rain map are inputs (HydraulicForcing), not JSON parameters.
+//   - Seed 001's regolith rates K_re, K_rd are "usually 1" per step in the thesis; here rates in 1/s
+//     like K_s, K_d, with defaults (20/s) that close the whole gap at Δt ≥ 0.05 s.
+//   - Seed 001's sediment diffusion (§3.8): `uniform` is the thesis's weight w per neighbour;
+//     `water` is its code's weighting by water depth (centre d, neighbours ½·d_n), in which w only
+//     switches the stage on.
 #pragma once
 
 #include <array>
@@ -27,10 +32,13 @@ namespace gt {
 
 enum class SedimentTransport { semi_lagrangian, flux };
 enum class PipeBoundary { closed, open };
+// Seed 001 §3.8: the thesis's uniform weights, or its code's weights by water depth.
+enum class DiffusionWeighting { uniform, water };
 
 // "semi_lagrangian", "flux" and "closed", "open": the names of the `transport` and `boundary` parameters.
 const char* sediment_transport_name(SedimentTransport transport);
 const char* pipe_boundary_name(PipeBoundary boundary);
+const char* diffusion_weighting_name(DiffusionWeighting weighting);
 
 struct HydraulicParams {
   int steps = 200;
@@ -47,6 +55,12 @@ struct HydraulicParams {
   double velocity_depth_floor = 1e-3;   // the mean depth in u = ΔW_X/(l_y·d̄) is at least this, m
   SedimentTransport transport = SedimentTransport::flux;
   PipeBoundary boundary = PipeBoundary::closed;
+  // Seed 001's variant (digest 001 §3.8-3.9); 0 switches a stage off.
+  double sediment_diffusion = 0.0;      // w, share of s (and r) sent to each neighbour per step, ≤ 1/4
+  DiffusionWeighting diffusion_weighting = DiffusionWeighting::uniform;
+  double regolith_depth = 0.0;          // K_r, the most water can loosen of the bed, m
+  double regolith_dissolving_rate = 20.0;   // K_re, 1/s: a step closes min(1, K_re·Δt) of r_max − r
+  double regolith_deposition_rate = 20.0;   // K_rd, 1/s: a step closes min(1, K_rd·Δt) of r − r_max
 };
 
 const ParamSpecs& hydraulic_param_specs();
@@ -84,6 +98,11 @@ struct PipeConstants {
   double velocity_depth_floor = 1e-3; // m
   SedimentTransport transport = SedimentTransport::flux;
   PipeBoundary boundary = PipeBoundary::closed;
+  double sediment_diffusion = 0.0;             // w; 0 = off
+  DiffusionWeighting diffusion_weighting = DiffusionWeighting::uniform;
+  double regolith_depth = 0.0;                 // K_r, m; 0 = off
+  double regolith_dissolving_fraction = 1.0;   // min(1, K_re·Δt)
+  double regolith_deposition_fraction = 1.0;   // min(1, K_rd·Δt)
 };
 
 // Constants for `params` on the grid of `terrain` (its cell sizes). Throws InputError for values a
@@ -101,9 +120,10 @@ struct PipeState {
   std::vector<std::array<Real, 4>> outflow; // f^L, f^R, f^T, f^B, m³/s (scaled, ≥ 0)
   Grid<Real> velocity_x;                    // u, m/s, +x
   Grid<Real> velocity_y;                    // v, m/s, +y
+  Grid<Real> regolith;                      // r, m of loosened bed material (seed 001 §3.9)
 };
 
-// A state with the geometry and mask of `terrain`, dry, no sediment, no flux, at rest.
+// A state with the geometry and mask of `terrain`, dry, no sediment or regolith, no flux, at rest.
 template <class Real>
 PipeState<Real> dry_pipe_state(const Grid<Real>& terrain);
 
@@ -114,19 +134,21 @@ struct PipeLedgerEntry {
   double water = 0.0;                  // W_t = Σ d·l_x·l_y
   double terrain = 0.0;                // Σ b·l_x·l_y
   double sediment = 0.0;               // Σ s·l_x·l_y
+  double regolith = 0.0;               // Σ r·l_x·l_y
   double rain_in = 0.0;                // uniform rain and rain map
   double source_in = 0.0;              // point sources
   double evaporated = 0.0;
   double boundary_out_water = 0.0;     // through open borders and into no-data cells
   double boundary_out_sediment = 0.0;
+  double boundary_out_regolith = 0.0;
   double max_cfl = 0.0;                // this step: max Δt·|v|/min(l_x, l_y) over valid cells
 };
 
 // W_t − W_0 − rain_in − source_in + evaporated + boundary_out_water: 0 for exact arithmetic, m³.
 double water_balance(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial);
 
-// (terrain + sediment + boundary_out_sediment) − (terrain_0 + sediment_0): 0 when material is
-// conserved, m³.
+// (terrain + sediment + regolith + boundary_out_sediment + boundary_out_regolith) − (terrain_0 +
+// sediment_0 + regolith_0): 0 when material is conserved, m³.
 double material_drift(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial);
 
 }  // namespace gt

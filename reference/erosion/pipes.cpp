@@ -10,9 +10,17 @@
 //   5 erosion  C = K_c·max(sin α, min_tilt_sine)·|v|·l(d_B), l(d) = min(1, d/K_w) (2.20-2.21)
 //              C > s: b −= k_s·(C − s), s += k_s·(C − s);  else b += k_d·(s − C), s −= k_d·(s − C)
 //              with k = min(1, K·Δt)                                  (2.22, 2.23 with Mei's sign)
+//   5b regolith (seed 001 §3.9, eqs. 2.3-2.7; only when K_r > 0): r_max = min(d_B, K_r);
+//              r < r_max: b −= k_re·(r_max − r), r += the same;  r > r_max: b += k_rd·(r − r_max),
+//              r −= the same
 //   6 sediment semi-Lagrangian: s(x) = s_A(x − (u, v)·Δt), bilinear                 (2.24-2.25)
 //              or flux form: each pipe carries s_A·f_k·Δt/(d_A·l_x·l_y), the share of the cell's
-//              water it moved; what one cell sends, the neighbour receives as the same number
+//              water it moved; what one cell sends, the neighbour receives as the same number.
+//              The regolith moves with the water the same way (seed 001 §3.9).
+//   6b diffusion (seed 001 §3.8; only when w > 0), of s and r from the state after 6: each cell
+//              sends σ_k·s to each neighbour k whose pipe is not exterior and keeps s − Σσ_k·s;
+//              uniform σ_k = w (the thesis), water σ_k = ½d_k / (d + ½Σd_n) with depths d_B (its
+//              code; nothing moves when that sum is 0)
 //   7 evaporation d = d_B·(1 − K_e·Δt)
 // Decisions where the source is vague:
 //   - Exterior pipes: a pipe leading off the grid or into a no-data cell. Closed boundary: its flux
@@ -102,6 +110,7 @@ void check_initial_state(const PipeState<Real>& state) {
   require_same_size(state.sediment, terrain, "the sediment");
   require_same_size(state.velocity_x, terrain, "the x velocity");
   require_same_size(state.velocity_y, terrain, "the y velocity");
+  require_same_size(state.regolith, terrain, "the regolith");
   if (state.outflow.size() != terrain.size()) {
     refuse(fmt::format("the outflow flux has {} cells, the terrain {}", state.outflow.size(), terrain.size()));
   }
@@ -115,8 +124,10 @@ void check_initial_state(const PipeState<Real>& state) {
   check_finite(masked(state.sediment), std::string(algorithm_name) + ": sediment");
   check_finite(masked(state.velocity_x), std::string(algorithm_name) + ": x velocity");
   check_finite(masked(state.velocity_y), std::string(algorithm_name) + ": y velocity");
+  check_finite(masked(state.regolith), std::string(algorithm_name) + ": regolith");
   require_non_negative(state.water, terrain, "the water depth");
   require_non_negative(state.sediment, terrain, "the sediment");
+  require_non_negative(state.regolith, terrain, "the regolith");
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     for (Real flux : state.outflow[cell]) {
       if (terrain.is_valid(cell) && !(is_finite(flux) && flux >= Real(0))) {
@@ -130,7 +141,7 @@ template <class Real>
 void clear_no_data_cells(PipeState<Real>& state) {
   for (std::size_t cell = 0; cell < state.terrain.size(); ++cell) {
     if (state.terrain.is_valid(cell)) continue;
-    state.water.values[cell] = state.sediment.values[cell] = Real(0);
+    state.water.values[cell] = state.sediment.values[cell] = state.regolith.values[cell] = Real(0);
     state.velocity_x.values[cell] = state.velocity_y.values[cell] = Real(0);
     state.outflow[cell] = {};
   }
@@ -240,7 +251,7 @@ PipeErosion<Real>::PipeErosion(PipeState<Real> initial, const PipeConstants& con
   exterior_pipes_ = exterior_pipe_bits(state_.terrain);
   water_before_flow_.resize(state_.terrain.size());
   scratch_.resize(state_.terrain.size());
-  sediment_sent_.resize(state_.terrain.size());
+  sent_.resize(state_.terrain.size());
   record_ledger();
 }
 
@@ -432,15 +443,28 @@ void PipeErosion<Real>::erode_and_deposit() {
 }
 
 template <class Real>
-void PipeErosion<Real>::transport_sediment_with_fluxes() {
+void PipeErosion<Real>::regolith_exchange() {
   const auto& terrain = state_.terrain;
-  auto& sediment = state_.sediment.values;
+  auto& regolith = state_.regolith.values;
+  const Real most = static_cast<Real>(constants_.regolith_depth);
+  const Real dissolving = static_cast<Real>(constants_.regolith_dissolving_fraction);
+  const Real deposition = static_cast<Real>(constants_.regolith_deposition_fraction);
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     if (!terrain.is_valid(cell)) continue;
-    const auto shares = carried_shares(cell);
-    for (int k = 0; k < 4; ++k) sediment_sent_[cell][k] = sediment[cell] * shares[k];
-    scratch_[cell] = sediment[cell] * (Real(1) - std::min(Real(1), pipe_sum(shares)));
+    const Real loosened = std::min(state_.water.values[cell], most);
+    const Real held = regolith[cell];
+    const Real moved = held < loosened ? dissolving * (loosened - held) : -(deposition * (held - loosened));
+    state_.terrain.values[cell] = terrain.values[cell] - moved;
+    regolith[cell] = held + moved;
   }
+}
+
+// The exchange of one step between neighbours: `sent[cell][k]` leaves the cell through pipe k
+// (exterior pipes: into `boundary_out`), `scratch_` holds what stays; afterwards each cell holds
+// what stayed plus what its neighbours sent it.
+template <class Real>
+void PipeErosion<Real>::gather_sent(std::vector<Real>& field, CompensatedSum& boundary_out) {
+  const auto& terrain = state_.terrain;
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
       const std::size_t cell = terrain.index(x, y);
@@ -448,23 +472,34 @@ void PipeErosion<Real>::transport_sediment_with_fluxes() {
       Fluxes received{};
       for (int k = 0; k < 4; ++k) {
         if (exterior(cell, k)) {
-          flows_.boundary_out_sediment.add(static_cast<double>(sediment_sent_[cell][k]) * constants_.cell_area);
+          boundary_out.add(static_cast<double>(sent_[cell][k]) * constants_.cell_area);
         } else {
-          received[k] = sediment_sent_[terrain.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
+          received[k] = sent_[terrain.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
         }
       }
       scratch_[cell] = scratch_[cell] + pipe_sum(received);
     }
   }
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
-    if (terrain.is_valid(cell)) sediment[cell] = scratch_[cell];
+    if (terrain.is_valid(cell)) field[cell] = scratch_[cell];
   }
 }
 
 template <class Real>
-void PipeErosion<Real>::transport_sediment_semi_lagrangian() {
+void PipeErosion<Real>::transport_with_fluxes(std::vector<Real>& field, CompensatedSum& boundary_out) {
   const auto& terrain = state_.terrain;
-  auto& sediment = state_.sediment.values;
+  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+    if (!terrain.is_valid(cell)) continue;
+    const auto shares = carried_shares(cell);
+    for (int k = 0; k < 4; ++k) sent_[cell][k] = field[cell] * shares[k];
+    scratch_[cell] = field[cell] * (Real(1) - std::min(Real(1), pipe_sum(shares)));
+  }
+  gather_sent(field, boundary_out);
+}
+
+template <class Real>
+void PipeErosion<Real>::transport_semi_lagrangian(std::vector<Real>& field, CompensatedSum& boundary_out) {
+  const auto& terrain = state_.terrain;
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     if (!terrain.is_valid(cell)) continue;
     const auto shares = carried_shares(cell);
@@ -472,15 +507,62 @@ void PipeErosion<Real>::transport_sediment_semi_lagrangian() {
     for (int k = 0; k < 4; ++k) {
       if (exterior(cell, k)) leaving = leaving + shares[k];
     }
-    const Real staying = sediment[cell] * (Real(1) - std::min(Real(1), leaving));
-    flows_.boundary_out_sediment.add(static_cast<double>(sediment[cell] - staying) * constants_.cell_area);
+    const Real staying = field[cell] * (Real(1) - std::min(Real(1), leaving));
+    boundary_out.add(static_cast<double>(field[cell] - staying) * constants_.cell_area);
     scratch_[cell] = staying;
   }
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
-      if (terrain.is_valid(x, y)) sediment[terrain.index(x, y)] = backtraced_sediment(scratch_, x, y);
+      if (terrain.is_valid(x, y)) field[terrain.index(x, y)] = backtraced_sediment(scratch_, x, y);
     }
   }
+}
+
+template <class Real>
+void PipeErosion<Real>::transport(std::vector<Real>& field, CompensatedSum& boundary_out) {
+  if (constants_.transport == SedimentTransport::flux) {
+    transport_with_fluxes(field, boundary_out);
+  } else {
+    transport_semi_lagrangian(field, boundary_out);
+  }
+}
+
+// σ_k of stage 6b for one cell: w for each interior pipe (uniform), or ½d_k/(d + ½Σd_n) (water).
+template <class Real>
+typename PipeErosion<Real>::Fluxes PipeErosion<Real>::diffusion_shares(int x, int y) const {
+  const auto& terrain = state_.terrain;
+  const std::size_t cell = terrain.index(x, y);
+  Fluxes shares{};
+  if (constants_.diffusion_weighting == DiffusionWeighting::uniform) {
+    const Real weight = static_cast<Real>(constants_.sediment_diffusion);
+    for (int k = 0; k < 4; ++k) shares[k] = exterior(cell, k) ? Real(0) : weight;
+    return shares;
+  }
+  const Real half = Real(0.5);
+  Fluxes neighbour_weights{};
+  for (int k = 0; k < 4; ++k) {
+    if (!exterior(cell, k)) neighbour_weights[k] = half * state_.water.at(x + pipes[k].dx, y + pipes[k].dy);
+  }
+  const Real base = state_.water.values[cell] + pipe_sum(neighbour_weights);
+  if (!(base > Real(0))) return shares;
+  for (int k = 0; k < 4; ++k) shares[k] = neighbour_weights[k] / base;
+  return shares;
+}
+
+template <class Real>
+void PipeErosion<Real>::diffuse(std::vector<Real>& field) {
+  const auto& terrain = state_.terrain;
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      const std::size_t cell = terrain.index(x, y);
+      if (!terrain.is_valid(cell)) continue;
+      const auto shares = diffusion_shares(x, y);
+      for (int k = 0; k < 4; ++k) sent_[cell][k] = field[cell] * shares[k];
+      scratch_[cell] = field[cell] - pipe_sum(sent_[cell]);
+    }
+  }
+  CompensatedSum nothing_leaves;  // exterior pipes send nothing (σ = 0 there)
+  gather_sent(field, nothing_leaves);
 }
 
 template <class Real>
@@ -508,9 +590,10 @@ void PipeErosion<Real>::check_state() const {
         Real value;
         bool non_negative;
       };
-      const std::array<Checked, 9> values{{{"terrain height", terrain.values[cell], false},
+      const std::array<Checked, 10> values{{{"terrain height", terrain.values[cell], false},
                                            {"water depth", state_.water.values[cell], true},
                                            {"sediment", state_.sediment.values[cell], true},
+                                           {"regolith", state_.regolith.values[cell], true},
                                            {"x velocity", state_.velocity_x.values[cell], false},
                                            {"y velocity", state_.velocity_y.values[cell], false},
                                            {"outflow L", out[left], true},
@@ -534,11 +617,13 @@ void PipeErosion<Real>::record_ledger() {
   entry.water = volume(state_.water, state_.terrain, constants_.cell_area);
   entry.terrain = volume(state_.terrain, state_.terrain, constants_.cell_area);
   entry.sediment = volume(state_.sediment, state_.terrain, constants_.cell_area);
+  entry.regolith = volume(state_.regolith, state_.terrain, constants_.cell_area);
   entry.rain_in = flows_.rain_in.value();
   entry.source_in = flows_.source_in.value();
   entry.evaporated = flows_.evaporated.value();
   entry.boundary_out_water = flows_.boundary_out_water.value();
   entry.boundary_out_sediment = flows_.boundary_out_sediment.value();
+  entry.boundary_out_regolith = flows_.boundary_out_regolith.value();
   entry.max_cfl = step_max_cfl_;
   ledger_.push_back(entry);
 }
@@ -550,10 +635,13 @@ void PipeErosion<Real>::step() {
   update_water_depth();
   update_velocity();
   erode_and_deposit();
-  if (constants_.transport == SedimentTransport::flux) {
-    transport_sediment_with_fluxes();
-  } else {
-    transport_sediment_semi_lagrangian();
+  const bool regolith = constants_.regolith_depth > 0.0;
+  if (regolith) regolith_exchange();
+  transport(state_.sediment.values, flows_.boundary_out_sediment);
+  if (regolith) transport(state_.regolith.values, flows_.boundary_out_regolith);
+  if (constants_.sediment_diffusion > 0.0) {
+    diffuse(state_.sediment.values);
+    if (regolith) diffuse(state_.regolith.values);
   }
   evaporate();
   ++steps_done_;

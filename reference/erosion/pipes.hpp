@@ -32,8 +32,8 @@ class PipeErosion {
   // negative or non-finite rate.
   PipeErosion(PipeState<Real> initial, const PipeConstants& constants, HydraulicForcing forcing = {});
 
-  // One step: water increment, outflow flux, water depth, velocity, erosion/deposition, sediment
-  // transport, evaporation. Throws InputError naming the step and the cell when a value turns NaN or
+  // One step: water increment, outflow flux, water depth, velocity, erosion/deposition, regolith,
+  // sediment and regolith transport, diffusion, evaporation. Throws InputError naming the step and the cell when a value turns NaN or
   // infinite or water or sediment turns negative (the state is then that of the failed step).
   void step();
   void run(int steps);
@@ -44,7 +44,7 @@ class PipeErosion {
 
  private:
   struct Flows {
-    CompensatedSum rain_in, source_in, evaporated, boundary_out_water, boundary_out_sediment;
+    CompensatedSum rain_in, source_in, evaporated, boundary_out_water, boundary_out_sediment, boundary_out_regolith;
   };
   using Fluxes = std::array<Real, 4>;
 
@@ -54,14 +54,19 @@ class PipeErosion {
   Fluxes carried_shares(std::size_t cell) const;
   Real tilt_sine(int x, int y) const;
   Real backtraced_sediment(const std::vector<Real>& source, int x, int y) const;
+  Fluxes diffusion_shares(int x, int y) const;
 
   void add_water();
   void update_outflow();
   void update_water_depth();
   void update_velocity();
   void erode_and_deposit();
-  void transport_sediment_with_fluxes();
-  void transport_sediment_semi_lagrangian();
+  void regolith_exchange();
+  void gather_sent(std::vector<Real>& field, CompensatedSum& boundary_out);
+  void transport_with_fluxes(std::vector<Real>& field, CompensatedSum& boundary_out);
+  void transport_semi_lagrangian(std::vector<Real>& field, CompensatedSum& boundary_out);
+  void transport(std::vector<Real>& field, CompensatedSum& boundary_out);
+  void diffuse(std::vector<Real>& field);
   void evaporate();
   void check_state() const;
   void record_ledger();
@@ -73,7 +78,7 @@ class PipeErosion {
   std::vector<unsigned char> exterior_pipes_;  // bit k: pipe k leads off the grid or to no data
   std::vector<Real> water_before_flow_;        // d_A of the current step
   std::vector<Real> scratch_;                  // next terrain or sediment of the current step
-  std::vector<Fluxes> sediment_sent_;          // sediment leaving through each pipe, m
+  std::vector<Fluxes> sent_;                   // sediment or regolith leaving through each pipe, m
   Flows flows_;
   double step_max_cfl_ = 0.0;
   int steps_done_ = 0;
