@@ -332,9 +332,9 @@ TEST(PipesReference, LedgerReportsTheLargestCflNumber) {
   params.time_step = 0.1;
   const auto erosion = simulate<double>(terrain, water, params);
   const auto& state = erosion.state();
-  double largest_speed = 0.0;
+  double largest_speed = 0.0;  // along one axis, m/s
   for (std::size_t i = 0; i < terrain.size(); ++i) {
-    largest_speed = std::max(largest_speed, std::hypot(state.velocity_x.values[i], state.velocity_y.values[i]));
+    largest_speed = std::max({largest_speed, std::abs(state.velocity_x.values[i]), std::abs(state.velocity_y.values[i])});
   }
   EXPECT_GT(largest_speed, 0.0);
   EXPECT_EQ(erosion.ledger().front().max_cfl, 0.0);

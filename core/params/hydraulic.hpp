@@ -141,7 +141,7 @@ struct PipeLedgerEntry {
   double boundary_out_water = 0.0;     // through open borders and into no-data cells
   double boundary_out_sediment = 0.0;
   double boundary_out_regolith = 0.0;
-  double max_cfl = 0.0;                // this step: max Δt·|v|/min(l_x, l_y) over valid cells
+  double max_cfl = 0.0;                // this step: max of Δt·|u|/l_x and Δt·|v|/l_y over valid cells
 };
 
 // W_t − W_0 − rain_in − source_in + evaporated + boundary_out_water: 0 for exact arithmetic, m³.

@@ -36,6 +36,10 @@
 //   - Velocity at d → 0: the mean depth is bounded below by velocity_depth_floor (seed 001 uses
 //     0.05 m), so thin films cannot produce unbounded speeds; with d̄ = 0 no water moved (K), the
 //     flux sums are 0 and so is the velocity — no 0/0.
+//   - CFL number: max over cells and axes of Δt·|u|/l_x and Δt·|v|/l_y, the cells the water (and
+//     the backtrace) moves per step along each axis; anisotropic cells keep their meaning. The K
+//     scaling caps it at 1 where a cell drains completely in one step (frictionless pipes
+//     accelerate until that cap: runs on slopes sit at 1).
 //   - sin α of the terrain: |∇b|/sqrt(1 + |∇b|²), ∇b by central differences over l_x, l_y; at an
 //     exterior neighbour the difference is one-sided, with exterior neighbours on both sides 0.
 //   - Backtrace sampling: a bilinear corner off the grid or on a no-data cell takes the value of
@@ -393,7 +397,6 @@ void PipeErosion<Real>::update_velocity() {
   const Real depth_floor = static_cast<Real>(constants_.velocity_depth_floor);
   const Real length_x = static_cast<Real>(constants_.length_x);
   const Real length_y = static_cast<Real>(constants_.length_y);
-  const double cfl_per_speed = constants_.time_step / std::min(constants_.length_x, constants_.length_y);
   step_max_cfl_ = 0.0;
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
@@ -408,8 +411,9 @@ void PipeErosion<Real>::update_velocity() {
       const Real v = flow_y / (length_x * mean_depth);
       state_.velocity_x.values[cell] = u;
       state_.velocity_y.values[cell] = v;
-      const double speed = std::hypot(static_cast<double>(u), static_cast<double>(v));
-      step_max_cfl_ = std::max(step_max_cfl_, cfl_per_speed * speed);
+      const double cells_x = constants_.time_step * std::abs(static_cast<double>(u)) / constants_.length_x;
+      const double cells_y = constants_.time_step * std::abs(static_cast<double>(v)) / constants_.length_y;
+      step_max_cfl_ = std::max({step_max_cfl_, cells_x, cells_y});
     }
   }
 }
