@@ -66,6 +66,18 @@ Heightmap step(const nlohmann::json& input) {
   return field;
 }
 
+// A plane rising along +x: base + gradient·x (x in metres from the first column's centre).
+Heightmap slope(const nlohmann::json& input) {
+  Heightmap field = blank_field(input);
+  const double base = input.value("base", 0.0);
+  const double gradient = input.value("gradient", 0.05);
+  if (!std::isfinite(base) || !std::isfinite(gradient)) throw InputError("input generator slope: base and gradient must be finite");
+  for (int y = 0; y < field.height; ++y) {
+    for (int x = 0; x < field.width; ++x) field.at(x, y) = base + gradient * x * field.cell_size_x;
+  }
+  return field;
+}
+
 // A terrain synthesised by a noise algorithm's double reference (terrain.* cases make the same
 // field and report on it): {"generator": "terrain", "algorithm": "noise.hetero_terrain",
 // "params": {...}, "width", "height", "cell_size"}.
@@ -97,6 +109,8 @@ LoadedInput generated_input(const nlohmann::json& input) {
     loaded.heights = cone(input);
   } else if (name == "step") {
     loaded.heights = step(input);
+  } else if (name == "slope") {
+    loaded.heights = slope(input);
   } else if (name == "terrain") {
     loaded.heights = noise_terrain(input);
   } else if (name == "flat") {
@@ -104,7 +118,7 @@ LoadedInput generated_input(const nlohmann::json& input) {
   } else if (name == "example_3x3") {
     loaded.heights = example_3x3();
   } else {
-    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, flat, terrain, example_3x3", name));
+    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, slope, flat, terrain, example_3x3", name));
   }
   if (name != "example_3x3" && name != "terrain") add_noise(loaded.heights, input);
   loaded.description = fmt::format("generated {} {}x{}, cell {} {}", name, loaded.heights.width,

@@ -6,11 +6,13 @@
 //   cone          "width", "height" (cells, default 128), "cell_size" (m, 1), "peak" (m, 100),
 //                 "radius" (share of the shorter side, 0.4): a right circular cone on a plane.
 //   step          "width", "height", "cell_size", "peak": a cliff of height `peak` at x = width/2.
+//   slope         "width", "height", "cell_size", "base" (m, 0), "gradient" (m/m, 0.05): a plane
+//                 base + gradient·x rising along +x (x in metres from the first column).
 //   flat          "width", "height", "cell_size": zeros; the sampling grid of generated fields (noise).
 //   terrain       "width", "height", "cell_size", "algorithm" (a noise.* algorithm), "params": the
 //                 terrain that algorithm's double reference synthesises (see terrain.* cases).
 //   example_3x3   seed 000's 3×3 test field: centre 1, other cells 0, cell size 1.
-//   cone, step and flat take "noise" (m, default 0) and "seed" (default 1): uniform noise in
+//   cone, step, slope and flat take "noise" (m, default 0) and "seed" (default 1): uniform noise in
 //   [0, noise) added to every cell from random_u32(seed, cell, 0, 0).
 // {"mesh": "real/meshes/cow.off"}   a triangle mesh (OFF, OBJ, PLY, STL; core/io/mesh_io.hpp).
 // {"volume": "sdf.npy"}            a scalar volume, a 3-D .npy array (core/io/volume_io.hpp): the
