@@ -20,7 +20,8 @@
 //   6b diffusion (seed 001 §3.8; only when w > 0), of s and r from the state after 6: each cell
 //              sends σ_k·s to each neighbour k whose pipe is not exterior and keeps s − Σσ_k·s;
 //              uniform σ_k = w (the thesis), water σ_k = ½d_k / (d + ½Σd_n) with depths d_B (its
-//              code; nothing moves when that sum is 0)
+//              code; nothing moves when that sum is 0); what is kept is clamped at 0 (a dry cell
+//              sends all of it, and rounding can make the shares' sum exceed it by an ulp)
 //   7 evaporation d = d_B·(1 − K_e·Δt)
 // Decisions where the source is vague:
 //   - Exterior pipes: a pipe leading off the grid or into a no-data cell. Closed boundary: its flux
@@ -562,7 +563,9 @@ void PipeErosion<Real>::diffuse(std::vector<Real>& field) {
       if (!terrain.is_valid(cell)) continue;
       const auto shares = diffusion_shares(x, y);
       for (int k = 0; k < 4; ++k) sent_[cell][k] = field[cell] * shares[k];
-      scratch_[cell] = field[cell] - pipe_sum(sent_[cell]);
+      // Water weighting of a dry cell sends all of it (Σσ = 1): rounding can make Σ sent exceed
+      // what the cell holds by an ulp; the clamp removes that (as the water remainder's clamp).
+      scratch_[cell] = std::max(Real(0), field[cell] - pipe_sum(sent_[cell]));
     }
   }
   CompensatedSum nothing_leaves;  // exterior pipes send nothing (σ = 0 there)
