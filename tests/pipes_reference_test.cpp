@@ -596,3 +596,27 @@ TEST(PipesReference, SeedVariantConservesWaterAndMaterial) {
   EXPECT_LE(std::abs(gt::material_drift(last, first)),
             12 * 300 * double_roundoff * (first.terrain + last.sediment + last.regolith));
 }
+
+// Jákó & Tóth's combined step: a dry 3 m cliff (no water, so the pipes do nothing) relaxes under
+// the thermal iterations alone, towards slopes at the talus angle, and material is conserved.
+TEST(PipesReference, CombinedThermalStepRelaxesADryCliff) {
+  const auto terrain = field(24, 8, 1.0, 1.0, [](int x, int) { return x < 12 ? 0.0 : 3.0; });
+  const auto dry = field(24, 8, 1.0, 1.0, [](int, int) { return 0.0; });
+  auto params = quiet_params(200);
+  params.thermal_step = true;
+  params.thermal_talus_angle = 30.0;
+  const auto erosion = simulate<double>(terrain, dry, params);
+  const auto& relaxed = erosion.state().terrain;
+  // Jákó's test moves material while a drop exceeds T·l (tan 30° over 1 m): at rest no cardinal drop
+  // exceeds it by more than what one more iteration would move.
+  double steepest = 0.0;
+  for (int x = 0; x + 1 < 24; ++x) steepest = std::max(steepest, std::abs(relaxed.at(x + 1, 4) - relaxed.at(x, 4)));
+  EXPECT_LT(steepest, 1.0) << "the 3 m cliff must have collapsed";
+  EXPECT_GT(relaxed.at(11, 4), 0.1) << "material must have moved down the cliff";
+  const auto& ledger = erosion.ledger();
+  // Jákó's iteration moves each height by at most 16 rounded operations on values up to 3 m.
+  EXPECT_LE(std::abs(gt::material_drift(ledger.back(), ledger.front())), 16 * 200 * double_roundoff * 3.0 * 24 * 8);
+  // And without the thermal step the same dry cliff does not move at all.
+  params.thermal_step = false;
+  EXPECT_EQ(largest_difference(simulate<double>(terrain, dry, params).state().terrain, terrain), 0.0);
+}

@@ -79,6 +79,10 @@ const ParamSpecs& hydraulic_param_specs() {
        "K_re: a step closes min(1, K_re·Δt) of the gap r_max − r"},
       {"regolith_deposition_rate", ParamKind::real, 20.0, 0.0, 1e6, {}, "1/s",
        "K_rd: a step closes min(1, K_rd·Δt) of the gap r − r_max"},
+      {"thermal_step", ParamKind::boolean, false, 0, 0, {}, "",
+       "Jákó & Tóth 2011's combined step: one iteration of their thermal erosion after each pipe step"},
+      {"thermal_talus_angle", ParamKind::real, 30.0, 0.0, 89.0, {}, "degree", "talus angle of the thermal step"},
+      {"thermal_rate", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "Jákó's rate Δt·C_t·R of the thermal step"},
   };
   return specs;
 }
@@ -111,6 +115,9 @@ HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved) {
   params.regolith_depth = resolved.at("regolith_depth").get<double>();
   params.regolith_dissolving_rate = resolved.at("regolith_dissolving_rate").get<double>();
   params.regolith_deposition_rate = resolved.at("regolith_deposition_rate").get<double>();
+  params.thermal_step = resolved.at("thermal_step").get<bool>();
+  params.thermal_talus_angle = resolved.at("thermal_talus_angle").get<double>();
+  params.thermal_rate = resolved.at("thermal_rate").get<double>();
   return params;
 }
 
@@ -134,6 +141,11 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   require_non_negative(params.regolith_depth, "regolith_depth");
   require_non_negative(params.regolith_dissolving_rate, "regolith_dissolving_rate");
   require_non_negative(params.regolith_deposition_rate, "regolith_deposition_rate");
+  require(std::isfinite(params.thermal_talus_angle) && params.thermal_talus_angle >= 0.0 &&
+              params.thermal_talus_angle < 90.0,
+          fmt::format("thermal_talus_angle = {} degrees must be in [0, 90)", params.thermal_talus_angle));
+  require(std::isfinite(params.thermal_rate) && params.thermal_rate >= 0.0 && params.thermal_rate <= 1.0,
+          fmt::format("thermal_rate = {} must be in [0, 1]", params.thermal_rate));
   require(params.min_tilt_sine <= 1.0, fmt::format("min_tilt_sine = {} must be <= 1", params.min_tilt_sine));
   const double evaporated_share = params.evaporation_rate * params.time_step;
   require(evaporated_share <= 1.0,
@@ -164,6 +176,8 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.regolith_depth = params.regolith_depth;
   constants.regolith_dissolving_fraction = std::min(1.0, params.regolith_dissolving_rate * params.time_step);
   constants.regolith_deposition_fraction = std::min(1.0, params.regolith_deposition_rate * params.time_step);
+  constants.thermal_step = params.thermal_step;
+  constants.thermal = thermal_jako_constants({1, params.thermal_talus_angle, params.thermal_rate}, terrain);
   return constants;
 }
 

@@ -17,6 +17,9 @@
 //   - Point sources and the rain map are inputs (HydraulicForcing), not JSON parameters.
 //   - Seed 001's regolith rates K_re, K_rd are "usually 1" per step in the thesis; here rates in 1/s
 //     like K_s, K_d, with defaults (20/s) that close the whole gap at Δt ≥ 0.05 s.
+//   - Jákó & Tóth's combined step (digest 000 §3.6): after each pipe step, one iteration of their
+//     8-neighbour thermal erosion (reference/erosion/thermal_jako.hpp) on the terrain, with its own
+//     talus angle and rate; the rate is per iteration, so it does not scale with Δt (as theirs).
 //   - Seed 001's sediment diffusion (§3.8): `uniform` is the thesis's weight w per neighbour;
 //     `water` is its code's weighting by water depth (centre d, neighbours ½·d_n), in which w only
 //     switches the stage on.
@@ -27,6 +30,7 @@
 
 #include "core/grid.hpp"
 #include "core/params.hpp"
+#include "core/params/thermal.hpp"
 
 namespace gt {
 
@@ -61,6 +65,10 @@ struct HydraulicParams {
   double regolith_depth = 0.0;          // K_r, the most water can loosen of the bed, m
   double regolith_dissolving_rate = 20.0;   // K_re, 1/s: a step closes min(1, K_re·Δt) of r_max − r
   double regolith_deposition_rate = 20.0;   // K_rd, 1/s: a step closes min(1, K_rd·Δt) of r − r_max
+  // Jákó & Tóth 2011's combined step: one iteration of their thermal erosion after each pipe step.
+  bool thermal_step = false;
+  double thermal_talus_angle = 30.0;    // degrees
+  double thermal_rate = 0.5;            // Jákó's rate = Δt·C_t·R per iteration, in [0, 1]
 };
 
 const ParamSpecs& hydraulic_param_specs();
@@ -103,6 +111,8 @@ struct PipeConstants {
   double regolith_depth = 0.0;                 // K_r, m; 0 = off
   double regolith_dissolving_fraction = 1.0;   // min(1, K_re·Δt)
   double regolith_deposition_fraction = 1.0;   // min(1, K_rd·Δt)
+  bool thermal_step = false;
+  ThermalConstants thermal;                    // thermal_jako_constants() on the terrain's grid
 };
 
 // Constants for `params` on the grid of `terrain` (its cell sizes). Throws InputError for values a

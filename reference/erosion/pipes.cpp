@@ -23,6 +23,8 @@
 //              code; nothing moves when that sum is 0); what is kept is clamped at 0 (a dry cell
 //              sends all of it, and rounding can make the shares' sum exceed it by an ulp)
 //   7 evaporation d = d_B·(1 − K_e·Δt)
+//   8 thermal (Jákó & Tóth's combined step; only when thermal_step): one iteration of
+//              reference/erosion/thermal_jako.hpp on b
 // Decisions where the source is vague:
 //   - Exterior pipes: a pipe leading off the grid or into a no-data cell. Closed boundary: its flux
 //     is 0 (walls). Open boundary: the exterior is a dry cell at the cell's own terrain height
@@ -59,6 +61,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "reference/erosion/thermal_jako.hpp"
 
 namespace gt::reference {
 namespace {
@@ -651,6 +654,7 @@ void PipeErosion<Real>::step() {
     if (regolith) diffuse(state_.regolith.values);
   }
   evaporate();
+  if (constants_.thermal_step) state_.terrain = thermal_jako_erosion(state_.terrain, constants_.thermal, 1);
   ++steps_done_;
   check_state();
   record_ledger();

@@ -33,7 +33,7 @@ class PipeErosion {
   PipeErosion(PipeState<Real> initial, const PipeConstants& constants, HydraulicForcing forcing = {});
 
   // One step: water increment, outflow flux, water depth, velocity, erosion/deposition, regolith,
-  // sediment and regolith transport, diffusion, evaporation. Throws InputError naming the step and the cell when a value turns NaN or
+  // sediment and regolith transport, diffusion, evaporation, thermal erosion. Throws InputError naming the step and the cell when a value turns NaN or
   // infinite or water or sediment turns negative (the state is then that of the failed step).
   void step();
   void run(int steps);
