@@ -203,9 +203,11 @@ template PipeState<float> dry_pipe_state(const Grid<float>&);
 template PipeState<double> dry_pipe_state(const Grid<double>&);
 
 double water_balance(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
-  return (entry.water - initial.water) - (entry.rain_in + entry.source_in) +
+  return (entry.water - initial.water) - entry.water_added +
          (entry.evaporated + entry.boundary_out_water);
 }
+
+double rain_rounding(const PipeLedgerEntry& entry) { return (entry.rain_in + entry.source_in) - entry.water_added; }
 
 double material_drift(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
   return ((entry.terrain - initial.terrain) + (entry.sediment - initial.sediment) + (entry.regolith - initial.regolith)) +

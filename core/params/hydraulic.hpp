@@ -145,8 +145,14 @@ struct PipeLedgerEntry {
   double terrain = 0.0;                // Σ b·l_x·l_y
   double sediment = 0.0;               // Σ s·l_x·l_y
   double regolith = 0.0;               // Σ r·l_x·l_y
-  double rain_in = 0.0;                // uniform rain and rain map
-  double source_in = 0.0;              // point sources
+  double rain_in = 0.0;                // uniform rain and rain map, Σ Δt·r·l_x·l_y as asked for
+  double source_in = 0.0;              // point sources, Σ Δt·rate as asked for
+  // What the steps added to the depths, Σ (d_A − d)·l_x·l_y as the scalar rounded each addition. In
+  // float, adding the same small rain depth to many similar depths rounds the same way every step,
+  // so the water received drifts from rain_in + source_in by about 1e-6 over hundreds of steps; the
+  // balance uses what was added (it measures what the flow does with the water), and
+  // rain_rounding() reports the difference.
+  double water_added = 0.0;
   double evaporated = 0.0;
   double boundary_out_water = 0.0;     // through open borders and into no-data cells
   double boundary_out_sediment = 0.0;
@@ -154,8 +160,11 @@ struct PipeLedgerEntry {
   double max_cfl = 0.0;                // this step: max of Δt·|u|/l_x and Δt·|v|/l_y over valid cells
 };
 
-// W_t − W_0 − rain_in − source_in + evaporated + boundary_out_water: 0 for exact arithmetic, m³.
+// W_t − W_0 − water_added + evaporated + boundary_out_water: 0 for exact arithmetic, m³.
 double water_balance(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial);
+
+// (rain_in + source_in) − water_added: the rain and source water the additions' rounding lost, m³.
+double rain_rounding(const PipeLedgerEntry& entry);
 
 // (terrain + sediment + regolith + boundary_out_sediment + boundary_out_regolith) − (terrain_0 +
 // sediment_0 + regolith_0): 0 when material is conserved, m³.

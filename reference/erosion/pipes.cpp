@@ -33,9 +33,12 @@
 //     semi-Lagrangian mode removes the same sediment share at exterior pipes before backtracing.
 //     No-data cells hold no water or sediment and get no rain; sources on them are refused.
 //   - K's 0/0 (Σ f̂ = 0): K = 1, tested explicitly (the fluxes are 0 anyway).
-//   - The remainder d_A − Δt·Σf_out/(l_x·l_y) is clamped at 0. K makes it ≥ 0 in exact arithmetic;
-//     the clamp only removes a rounding-sized negative (which the step check would refuse), so the
-//     ledger still closes to rounding. The flux form likewise sends at most all of s_A.
+//   - A cell the K scaling drained (K < 1) keeps exactly 0, its value in exact arithmetic. Elsewhere
+//     the remainder d_A − Δt·Σf_out/(l_x·l_y) is clamped at 0: K makes it ≥ 0 in exact arithmetic,
+//     the clamp only removes a rounding-sized negative (which the step check would refuse). Setting
+//     drained cells to 0 rather than clamping their rounding residual matters in float: the clamp
+//     only ever created water (negative residuals cut, positive kept), a bias of about 1e-6 of the
+//     water over hundreds of steps; 0 rounds either way. The flux form sends at most all of s_A.
 //   - Velocity at d → 0: the mean depth is bounded below by velocity_depth_floor (seed 001 uses
 //     0.05 m), so thin films cannot produce unbounded speeds; with d̄ = 0 no water moved (K), the
 //     flux sums are 0 and so is the velocity — no 0/0.
@@ -260,6 +263,7 @@ PipeErosion<Real>::PipeErosion(PipeState<Real> initial, const PipeConstants& con
   water_before_flow_.resize(state_.terrain.size());
   scratch_.resize(state_.terrain.size());
   sent_.resize(state_.terrain.size());
+  drained_.resize(state_.terrain.size());
   record_ledger();
 }
 
@@ -329,14 +333,20 @@ Real PipeErosion<Real>::backtraced_sediment(const std::vector<Real>& source, int
 template <class Real>
 void PipeErosion<Real>::add_water() {
   auto& water = state_.water.values;
+  const double area = constants_.cell_area;
+  water_before_flow_ = water;  // d, for what the additions add
   for (std::size_t cell = 0; cell < water.size(); ++cell) {
     if (!state_.terrain.is_valid(cell)) continue;
     water[cell] = water[cell] + rain_depth_[cell];
-    flows_.rain_in.add(static_cast<double>(rain_depth_[cell]) * constants_.cell_area);
+    flows_.rain_in.add(static_cast<double>(rain_depth_[cell]) * area);
   }
   for (const auto& [cell, depth] : source_depths_) {
     water[cell] = water[cell] + depth;
-    flows_.source_in.add(static_cast<double>(depth) * constants_.cell_area);
+    flows_.source_in.add(static_cast<double>(depth) * area);
+  }
+  for (std::size_t cell = 0; cell < water.size(); ++cell) {
+    if (!state_.terrain.is_valid(cell)) continue;
+    flows_.water_added.add((static_cast<double>(water[cell]) - static_cast<double>(water_before_flow_[cell])) * area);
   }
   water_before_flow_ = water;
 }
@@ -372,6 +382,7 @@ void PipeErosion<Real>::update_outflow() {
       const Real total = pipe_sum(tentative);
       const Real scale = total > Real(0) ? std::min(Real(1), water.values[cell] * area_per_time / total) : Real(1);
       for (int k = 0; k < 4; ++k) state_.outflow[cell][k] = scale * tentative[k];
+      drained_[cell] = scale < Real(1);
     }
   }
 }
@@ -385,7 +396,8 @@ void PipeErosion<Real>::update_water_depth() {
       const std::size_t cell = terrain.index(x, y);
       if (!terrain.is_valid(cell)) continue;
       const auto& out = state_.outflow[cell];
-      const Real remaining = std::max(Real(0), water_before_flow_[cell] - volume_to_depth * pipe_sum(out));
+      const Real remaining =
+          drained_[cell] ? Real(0) : std::max(Real(0), water_before_flow_[cell] - volume_to_depth * pipe_sum(out));
       state_.water.values[cell] = remaining + volume_to_depth * pipe_sum(inflows(x, y));
       for (int k = 0; k < 4; ++k) {
         if (exterior(cell, k)) flows_.boundary_out_water.add(constants_.time_step * static_cast<double>(out[k]));
@@ -630,6 +642,7 @@ void PipeErosion<Real>::record_ledger() {
   entry.regolith = volume(state_.regolith, state_.terrain, constants_.cell_area);
   entry.rain_in = flows_.rain_in.value();
   entry.source_in = flows_.source_in.value();
+  entry.water_added = flows_.water_added.value();
   entry.evaporated = flows_.evaporated.value();
   entry.boundary_out_water = flows_.boundary_out_water.value();
   entry.boundary_out_sediment = flows_.boundary_out_sediment.value();

@@ -44,7 +44,7 @@ class PipeErosion {
 
  private:
   struct Flows {
-    CompensatedSum rain_in, source_in, evaporated, boundary_out_water, boundary_out_sediment, boundary_out_regolith;
+    CompensatedSum rain_in, source_in, water_added, evaporated, boundary_out_water, boundary_out_sediment, boundary_out_regolith;
   };
   using Fluxes = std::array<Real, 4>;
 
@@ -77,6 +77,7 @@ class PipeErosion {
   std::vector<std::pair<std::size_t, Real>> source_depths_;  // cell, Δt·rate/(l_x·l_y), m
   std::vector<unsigned char> exterior_pipes_;  // bit k: pipe k leads off the grid or to no data
   std::vector<Real> water_before_flow_;        // d_A of the current step
+  std::vector<unsigned char> drained_;         // K < 1 this step: the pipes took all of d_A
   std::vector<Real> scratch_;                  // next terrain or sediment of the current step
   std::vector<Fluxes> sent_;                   // sediment or regolith leaving through each pipe, m
   Flows flows_;

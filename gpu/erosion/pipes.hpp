@@ -1,0 +1,112 @@
+// Hydraulic erosion with virtual pipes (Mei, Decaudin, Hu 2007), GPU twin of
+// reference/erosion/pipes.hpp: the same stages (with seed 001's regolith and sediment diffusion
+// and Jákó & Tóth's thermal step when the constants ask for them), the same float operations in
+// the same order, the same boundary and 0/0 rules (listed in reference/erosion/pipes.cpp), on
+// compute shaders gpu/shaders/erosion/pipes_*.comp. Needs a current GlContext.
+//
+// The one deliberate difference from ref<float> — the float trap (issue 3): the terrain is stored
+// as the initial height b0 (float, never written) plus a float change Δb that starts at 0, and
+// height differences are formed as (b0_a − b0_b) + (Δb_a − Δb_b). An erosion amount far below the
+// float spacing of b (3e-5 m at 500 m) then still lands in Δb, so material is conserved to the
+// rounding of Δb and s, not of b; ref<float>, which stores b, creates or destroys material there.
+// See gpu/erosion/pipes.cpp for the passes, the buffers and the ledger.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "core/params/hydraulic.hpp"
+#include "core/sum.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/shader_program.hpp"
+
+namespace gt::gpu {
+
+class PipeErosion {
+ public:
+  // Uploads `initial` (each value rounded to float once), the forcing and the constants. Refuses
+  // (InputError, the reference's messages) grids of another size than the terrain, a mask without
+  // a valid cell, non-finite values (also after rounding to float), negative water, sediment,
+  // regolith or flux on valid cells, a rain map of another size or with negative or non-finite
+  // rates, and sources off the grid, on no-data cells or with a negative or non-finite rate.
+  // No-data cells hold no water, sediment, regolith, flux or velocity.
+  // keep_ledger = true: every step() downloads the state, appends a PipeLedgerEntry summed in double
+  // exactly as the reference's (the same float quantities, the same compensated sums and order) and
+  // checks the state (NaN, infinities, negative water/sediment/regolith/flux -> InputError naming
+  // the step and cell, the reference's message). keep_ledger = false: steps download nothing (for
+  // timing); the ledger keeps entry 0 only.
+  PipeErosion(const PipeState<double>& initial, const PipeConstants& constants, const HydraulicForcing& forcing = {},
+              bool keep_ledger = true);
+
+  // One step (passes_per_step() dispatches); not synchronised: the caller brackets timing with
+  // glFinish.
+  void step();
+  void run(int steps);
+
+  // Downloaded (waits for the GPU); terrain reconstructed in double as b0 + Δb (an exact sum unless
+  // |Δb| < 2^-29·|b0|, then within 2^-53 of b).
+  PipeState<double> state() const;
+  // Entry 0 describes the initial state; entry n the state after step n (only with keep_ledger).
+  const std::vector<PipeLedgerEntry>& ledger() const { return ledger_; }
+  // Compute dispatches per step: 4, +1 with point sources, +1 with sediment diffusion, +2 with the
+  // thermal step.
+  int passes_per_step() const;
+  int steps_done() const { return steps_done_; }
+
+ private:
+  struct Download;
+  Download download() const;
+  void bind() const;
+  void record_step();
+  void check_state(const Download& fields) const;
+  void record_ledger(const Download& fields);
+
+  int width_;
+  int height_;
+  PipeConstants constants_;
+  bool keep_ledger_;
+  std::vector<float> rain_depth_;      // Δt·(r + r_map) as uploaded, 0 on no-data cells
+  std::vector<std::pair<std::size_t, float>> source_depths_;  // cell, rate·Δt/(l_x·l_y), in the order given
+  std::vector<float> base_;            // b0 as uploaded
+  std::vector<float> water_before_;    // d at the start of the next step (for the ledger's water_added)
+  std::vector<unsigned char> flags_;   // bits 0-3 exterior pipes, bit 4 valid
+  Grid<double> layout_;                // geometry, units and mask of the terrain
+  double base_volume_ = 0.0;           // Σ b0·l_x·l_y over valid cells
+  std::size_t source_cell_count_ = 0;
+
+  ComputeProgram water_program_;
+  std::optional<ComputeProgram> sources_program_;  // only with point sources
+  ComputeProgram outflow_program_;
+  ComputeProgram flow_program_;
+  ComputeProgram sediment_program_;
+  std::optional<ComputeProgram> diffusion_program_;  // only with sediment diffusion
+  std::optional<ComputeProgram> thermal_outflow_program_;  // only with the thermal step
+  std::optional<ComputeProgram> thermal_gather_program_;
+  UniformBuffer block_;
+  StorageBuffer cells_;
+  StorageBuffer delta_;
+  StorageBuffer delta_next_;
+  StorageBuffer water_;
+  StorageBuffer outflow_;
+  StorageBuffer velocity_;
+  StorageBuffer sediment_;
+  StorageBuffer staying_;
+  StorageBuffer sent_;
+  StorageBuffer regolith_;
+  StorageBuffer regolith_staying_;  // 16 bytes unless the regolith stage runs
+  StorageBuffer regolith_sent_;     // likewise
+  StorageBuffer thermal_outflows_;  // 8 per cell with the thermal step, else 16 bytes
+  StorageBuffer source_cells_;
+  StorageBuffer source_list_;
+
+  struct Flows {
+    CompensatedSum rain_in, source_in, water_added, evaporated, boundary_out_water, boundary_out_sediment, boundary_out_regolith;
+  };
+  Flows flows_;
+  int steps_done_ = 0;
+  std::vector<PipeLedgerEntry> ledger_;
+};
+
+}  // namespace gt::gpu

@@ -1,0 +1,135 @@
+#version 450
+// Stages 3-5 and the first half of 6 of the virtual-pipe erosion (Mei 2007, digest 000
+// eqs. 2.14-2.23), all per cell from the fluxes of pipes_outflow.comp:
+//   3 depth     d_B = (0 if K < 1 drained the cell, else max(0, d_A - Δt·Σf_out/(l_x·l_y))) + Δt·Σf_in/(l_x·l_y)
+//   4 velocity  u = ½((f_in,L - f_L) + (f_R - f_in,R))/(l_y·d̄), d̄ = max(floor, ½(d_A + d_B)); v alike
+//   5 erosion   C = K_c·max(sin α, T)·|v|·min(1, d_B/K_w); the terrain change Δb and s move by
+//               k_s·(C - s) or -k_d·(s - C); sin α from central differences of b0 + Δb
+//   5b regolith (REGOLITH, seed 001 §3.9) r_max = min(d_B, K_r); r < r_max: Δb and r move by
+//               k_re·(r_max - r); else by -k_rd·(r - r_max)
+//   6a shares   what each pipe carries, s_A·f_k·Δt/(d_A·l_x·l_y) (flux transport: `sent`, the
+//               rest `staying`), or the sediment kept after the exterior pipes' share
+//               (semi-Lagrangian: `staying`, and what left in sent.x); the regolith likewise
+// Reads neighbours' Δb (the tilt) and fluxes; writes its own d_B, velocity, Δb into the next
+// buffer, staying and sent. TRANSPORT_FLUX selects the flux form. CPU reference:
+// reference/erosion/pipes.cpp (update_water_depth, update_velocity, erode_and_deposit,
+// carried_shares, transport_*).
+layout(local_size_x = 16, local_size_y = 16) in;
+#include "common/grid.glsl"
+#include "erosion/pipes_block.glsl"
+
+// (b_high - b_low)/span along one axis; at an exterior neighbour the cell itself stands in
+// (one-sided difference), with both neighbours exterior the slope is 0.
+float axis_slope(ivec2 cell, uint index, uint flags, int lower_pipe, int upper_pipe, vec2 spans) {
+  int lower = exterior(flags, lower_pipe) ? 0 : 1;
+  int upper = exterior(flags, upper_pipe) ? 0 : 1;
+  if (lower + upper == 0) return 0.0;
+  uint low = lower == 1 ? neighbour_index(cell, lower_pipe) : index;
+  uint high = upper == 1 ? neighbour_index(cell, upper_pipe) : index;
+  precise float slope = terrain_difference(high, low) / spans[lower + upper - 1];
+  return slope;
+}
+
+float tilt_sine(ivec2 cell, uint index, uint flags) {
+  precise float slope_x = axis_slope(cell, index, flags, pipe_left, pipe_right, slope_span_x);
+  precise float slope_y = axis_slope(cell, index, flags, pipe_bottom, pipe_top, slope_span_y);
+  precise float squared = slope_x * slope_x + slope_y * slope_y;
+  precise float sine = sqrt(squared / (1.0 + squared));
+  return ref_max(min_tilt_sine, sine);
+}
+
+// The share of the cell's water each pipe moved, f_k·Δt/(d_A·l_x·l_y), scaled down to sum to 1
+// where rounding made the total exceed it; 0 for a dry cell.
+vec4 carried_shares(float depth_before, vec4 out_flux) {
+  precise vec4 shares = vec4(0.0);
+  if (!(depth_before > 0.0)) return shares;
+  for (int k = 0; k < 4; ++k) shares[k] = out_flux[k] * volume_to_depth / depth_before;
+  precise float total = pipe_sum(shares);
+  if (total > 1.0) {
+    for (int k = 0; k < 4; ++k) shares[k] = shares[k] / total;
+  }
+  return shares;
+}
+
+void main() {
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (!inside_grid(cell, grid_size)) return;
+  uint index = cell_index(cell, grid_size);
+  uint flags = cells[index].flags;
+  if (!cell_valid(flags)) return;  // no-data cells keep Δb = 0 in both buffers, s = 0, v = 0
+
+  // 3 water depth
+  precise vec4 out_flux = outflow[index];
+  precise vec4 in_flux = vec4(0.0);
+  for (int k = 0; k < 4; ++k) {
+    if (!exterior(flags, k)) in_flux[k] = outflow[neighbour_index(cell, k)][opposite(k)];
+  }
+  precise float depth_before = water[index].y;
+  precise float drained = depth_before - volume_to_depth * pipe_sum(out_flux);
+  precise float remaining = water[index].w > 0.0 ? 0.0 : ref_max(0.0, drained);
+  precise float depth = remaining + volume_to_depth * pipe_sum(in_flux);
+  water[index].z = depth;
+
+  // 4 velocity
+  precise float flow_x = 0.5 * ((in_flux[pipe_left] - out_flux[pipe_left]) + (out_flux[pipe_right] - in_flux[pipe_right]));
+  precise float flow_y = 0.5 * ((in_flux[pipe_bottom] - out_flux[pipe_bottom]) + (out_flux[pipe_top] - in_flux[pipe_top]));
+  precise float mean_depth = ref_max(depth_floor, 0.5 * (depth_before + depth));
+  precise float u = flow_x / (length_y * mean_depth);
+  precise float v = flow_y / (length_x * mean_depth);
+  velocity[index] = vec2(u, v);
+
+  // 5 erosion and deposition
+  precise float ramp = 1.0;
+  if (depth_ramp > 0.0) ramp = ref_min(1.0, depth / depth_ramp);
+  precise float capacity = capacity_constant * tilt_sine(cell, index, flags) * sqrt(u * u + v * v) * ramp;
+  precise float suspended = sediment[index];
+  precise float moved;
+  if (capacity > suspended) {
+    moved = dissolving * (capacity - suspended);
+  } else {
+    moved = -(deposition * (suspended - capacity));
+  }
+  precise float changed = delta[index] - moved;
+  precise float carried = suspended + moved;
+
+#ifdef REGOLITH
+  // 5b regolith exchange, after the erosion's terrain change
+  precise float loosened = ref_min(depth, regolith_depth);
+  precise float held = regolith[index];
+  precise float exchanged;
+  if (held < loosened) {
+    exchanged = regolith_dissolving * (loosened - held);
+  } else {
+    exchanged = -(regolith_deposition * (held - loosened));
+  }
+  changed = changed - exchanged;
+  precise float loose = held + exchanged;
+#endif
+  delta_next[index] = changed;
+
+  // 6a what leaves the cell
+  precise vec4 shares = carried_shares(depth_before, out_flux);
+#ifdef TRANSPORT_FLUX
+  precise float kept_share = 1.0 - ref_min(1.0, pipe_sum(shares));
+  sent[index] = vec4(carried * shares[0], carried * shares[1], carried * shares[2], carried * shares[3]);
+  staying[index] = carried * kept_share;
+#ifdef REGOLITH
+  regolith_sent[index] = vec4(loose * shares[0], loose * shares[1], loose * shares[2], loose * shares[3]);
+  regolith_staying[index] = loose * kept_share;
+#endif
+#else
+  precise float leaving = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    if (exterior(flags, k)) leaving = leaving + shares[k];
+  }
+  precise float kept_share = 1.0 - ref_min(1.0, leaving);
+  precise float kept = carried * kept_share;
+  sent[index] = vec4(carried - kept, 0.0, 0.0, 0.0);
+  staying[index] = kept;
+#ifdef REGOLITH
+  precise float loose_kept = loose * kept_share;
+  regolith_sent[index] = vec4(loose - loose_kept, 0.0, 0.0, 0.0);
+  regolith_staying[index] = loose_kept;
+#endif
+#endif
+}
