@@ -3,14 +3,20 @@
 // shading formula (the digest's closed form with the light at the eye, and the analytic colour at
 // the centre pixel of a facing quad), refusals of unusable cameras, and the GL twin against the
 // reference on the bunny: PSNR >= 40 dB and at most 0.5 % of pixels failing the 3×3-tolerant
-// comparison at 4/255 (issue 6's acceptance).
+// comparison at 4/255 (issue 6's acceptance). The looks: plain is phong_colour itself; the cave
+// look with every term neutral is the plain render bit for bit; the terrain look's height ramp and
+// rock-by-slope blend, its range from the mesh, and its GL twin against the reference on a hill.
+// (The cave look's own properties: tests/cave_look_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 
 #include <OpenImageIO/imagebuf.h>
 
+#include "compare/algorithms/render_phong.hpp"
 #include "compare/checks/image.hpp"
 #include "core/errors.hpp"
 #include "core/io/mesh_io.hpp"
@@ -125,6 +131,116 @@ TEST(PhongNormals, AreaWeightedAverageOfFaceNormals) {
   EXPECT_NEAR(normals[0][2], 2.0 / length, 1e-15);
 }
 
+// A smooth hill on a 33×33 grid, cell 1, y up: a Gaussian peak of height 12 plus a gentle tilt, so
+// that the heights span the whole ramp and the flanks are steep enough for rock.
+gt::Mesh hill_mesh() {
+  gt::Mesh mesh;
+  const int n = 33;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const double x = i - 16.0, z = j - 16.0;
+      mesh.positions.push_back({x, 12.0 * std::exp(-(x * x + z * z) / 60.0) + 0.05 * x, z});
+    }
+  }
+  for (std::uint32_t j = 0; j + 1 < std::uint32_t(n); ++j) {
+    for (std::uint32_t i = 0; i + 1 < std::uint32_t(n); ++i) {
+      const std::uint32_t a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      mesh.triangles.push_back({a, c, d});  // counter-clockwise seen from +y
+      mesh.triangles.push_back({a, d, b});
+    }
+  }
+  return mesh;
+}
+
+TEST(PhongLooks, PlainLookIsPhongColour) {
+  const gt::Mesh mesh = hill_mesh();
+  const auto scene = gt::reference::phong_scene(mesh, gt::reference::orbit_camera(mesh, 30.0, 35.0, 40.0, 64, 48));
+  EXPECT_EQ(scene.look, gt::reference::Look::plain);
+  for (const Vec3& p : {Vec3{0.5, 3.0, -2.0}, Vec3{-7.0, 1.0, 4.0}}) {
+    for (const Vec3& normal : {Vec3{0.0, 2.0, 0.0}, Vec3{0.3, -0.2, 0.9}, Vec3{0.0, 0.0, 0.0}}) {
+      EXPECT_EQ(gt::reference::shade_fragment(scene, p, normal),
+                gt::reference::phong_colour(p, normal, scene.camera.eye, scene.albedo, scene.light_power));
+    }
+  }
+}
+
+TEST(PhongLooks, NeutralCaveLookRendersThePlainImageExactly) {
+  // Strip = the albedo everywhere (a + f·(a - a) = a), moss 0 (g + 0 = g), bump amplitude 0 (n
+  // untouched): the cave look must give the plain look's bytes, so its Phong terms are the same.
+  const gt::Mesh mesh = hill_mesh();
+  auto scene = gt::reference::phong_scene(mesh, gt::reference::orbit_camera(mesh, 30.0, 35.0, 40.0, 80, 60));
+  const auto plain = gt::reference::render_phong(scene);
+  scene.look = gt::reference::Look::cave;
+  scene.cave.colour_strip.assign(256, scene.albedo);
+  scene.cave.moss = 0.0;
+  scene.cave.bump_amplitude = 0.0;
+  const auto cave = gt::reference::render_phong(scene);
+  EXPECT_EQ(cave.rgb, plain.rgb);
+  EXPECT_EQ(cave.covered_pixels, plain.covered_pixels);
+  // And the look is not inert: the real strip, moss and bump change the picture.
+  scene.cave = gt::reference::CaveLook{};
+  EXPECT_NE(gt::reference::render_phong(scene).rgb, plain.rgb);
+}
+
+TEST(PhongLooks, TerrainRampFollowsHeightOnFlatGround) {
+  // n = up: c = 1 >= cos 30°, no rock; the albedo is the ramp at the normalised height, exactly.
+  gt::reference::TerrainLook look;
+  look.height_low = 100.0;
+  look.height_high = 300.0;
+  for (const double height : {50.0, 100.0, 150.0, 237.5, 300.0, 420.0}) {
+    const double h = std::clamp((height - 100.0) / 200.0, 0.0, 1.0);
+    EXPECT_EQ(gt::reference::terrain_albedo(look, {3.0, height, -4.0}, {0.0, 1.0, 0.0}),
+              gt::reference::strip_colour(look.ramp, h))
+        << "height " << height;
+  }
+  // The ramp climbs from lowland green to snow.
+  const auto low = gt::reference::terrain_albedo(look, {0.0, 100.0, 0.0}, {0.0, 1.0, 0.0});
+  const auto high = gt::reference::terrain_albedo(look, {0.0, 300.0, 0.0}, {0.0, 1.0, 0.0});
+  EXPECT_GT(low[1], low[0]);
+  EXPECT_GT(high[0] + high[1] + high[2], 2.7);
+}
+
+TEST(PhongLooks, TerrainTurnsToRockWithSlope) {
+  gt::reference::TerrainLook look;  // rock from 30° (no blend yet) to 45° (all rock)
+  const Vec3 p = {0.0, 0.5, 0.0};
+  const Vec3 ramp = gt::reference::strip_colour(look.ramp, 0.5);
+  const auto at_slope = [&](double degrees) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    return gt::reference::terrain_albedo(look, p, {std::sin(a), std::cos(a), 0.0});
+  };
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(at_slope(20.0)[c], ramp[c], 1e-15) << "below rock_start: the ramp";
+    EXPECT_NEAR(at_slope(50.0)[c], look.rock[c], 1e-15) << "beyond rock_full: rock";
+    EXPECT_NEAR(at_slope(90.0)[c], look.rock[c], 1e-15) << "a wall: rock";
+    EXPECT_NEAR(at_slope(150.0)[c], look.rock[c], 1e-15) << "seen from below: rock";
+    // Halfway in cos between the two angles w = 0.5 and smoothstep keeps 0.5: the mean.
+  }
+  const double c_mid = 0.5 * (std::cos(std::numbers::pi / 6.0) + std::cos(std::numbers::pi / 4.0));
+  const auto mid = gt::reference::terrain_albedo(look, p, {std::sqrt(1.0 - c_mid * c_mid), c_mid, 0.0});
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(mid[c], 0.5 * (ramp[c] + look.rock[c]), 1e-15);
+}
+
+TEST(PhongLooks, TerrainRangeComesFromTheMeshAlongUp) {
+  const gt::Mesh mesh = hill_mesh();
+  const auto scene = gt::reference::phong_scene(mesh, gt::reference::orbit_camera(mesh, 30.0, 35.0, 40.0, 64, 48),
+                                                gt::reference::Look::terrain);
+  EXPECT_EQ(scene.look, gt::reference::Look::terrain);
+  double low = 1e300, high = -1e300;
+  for (const auto& p : mesh.positions) {
+    low = std::min(low, p[1]);
+    high = std::max(high, p[1]);
+  }
+  EXPECT_EQ(scene.terrain.height_low, low);
+  EXPECT_EQ(scene.terrain.height_high, high);
+  const auto along_x = gt::reference::terrain_look(mesh, {1.0, 0.0, 0.0});
+  EXPECT_EQ(along_x.height_low, -16.0);
+  EXPECT_EQ(along_x.height_high, 16.0);
+  EXPECT_THROW(gt::reference::terrain_look(mesh, {0.0, 2.0, 0.0}), gt::InputError) << "up must be a unit vector";
+  auto bad = scene;
+  bad.terrain.rock_full_deg = 10.0;  // before rock_start
+  EXPECT_THROW(gt::reference::render_phong(bad), gt::InputError);
+}
+
 class PhongGpu : public gt::testing::GlTest {};
 
 OIIO::ImageBuf rgb8(int width, int height, const std::vector<std::uint8_t>& rgb) {
@@ -151,6 +267,40 @@ TEST_F(PhongGpu, BunnyMatchesTheReference) {
   EXPECT_LE(gt::compare_neighbourhoods(a, b, tolerance).failing_share, 0.005);
   const auto lit = std::count_if(cpu.rgb.begin(), cpu.rgb.end(), [](std::uint8_t v) { return v > 0; });
   EXPECT_GT(lit, std::ptrdiff_t(cpu.rgb.size() / 10)) << "the bunny fills a good part of the picture";
+}
+
+TEST_F(PhongGpu, TerrainLookOnAHillMatchesTheReference) {
+  // Error model as for the cave (tests/cave_look_test.cpp): the GPU's float height, slope and ramp
+  // lookup are within ~1e-5 of the reference's, far below half an 8-bit step, so a channel differs
+  // by at most one step except where another triangle is seen (silhouettes): the 3×3-tolerant
+  // comparison at 1.5/255 passes on all but a few edge pixels, inside issue 6's acceptance.
+  const gt::Mesh mesh = hill_mesh();
+  const auto scene = gt::reference::phong_scene(mesh, gt::reference::orbit_camera(mesh, 30.0, 35.0, 40.0, 160, 120),
+                                                gt::reference::Look::terrain);
+  const auto cpu = gt::reference::render_phong(scene);
+  const gt::gpu::PhongRenderer renderer(gt::phong_draw(scene));
+  renderer.run();
+  const auto gpu = renderer.image();
+  const auto a = rgb8(cpu.width, cpu.height, cpu.rgb), b = rgb8(gpu.width, gpu.height, gpu.rgb);
+  EXPECT_GE(gt::compare_images(a, b, 4.0 / 255.0).psnr_db, 40.0);
+  EXPECT_LE(gt::compare_neighbourhoods(a, b, 4.0 / 255.0).failing_share, 0.005);
+  EXPECT_LE(gt::compare_neighbourhoods(a, b, 1.5 / 255.0).failing_share, 0.002);
+  EXPECT_GT(cpu.covered_pixels, std::size_t(160 * 120 / 4)) << "the hill fills a good part of the picture";
+}
+
+TEST_F(PhongGpu, PlainDrawWithoutLookFieldsIsThePlainProgram) {
+  // A PhongDraw built as before looks existed (designated initialisers without look) draws the
+  // plain look, the same bytes as phong_draw of a plain scene.
+  const gt::Mesh mesh = hill_mesh();
+  const auto scene = gt::reference::phong_scene(mesh, gt::reference::orbit_camera(mesh, 30.0, 35.0, 40.0, 80, 60));
+  const gt::gpu::PhongRenderer old_style({.mesh = scene.mesh, .normals = scene.normals,
+                                          .view_projection = scene.view_projection, .eye = scene.camera.eye,
+                                          .albedo = scene.albedo, .light_power = scene.light_power,
+                                          .width = scene.camera.width, .height = scene.camera.height});
+  old_style.run();
+  const gt::gpu::PhongRenderer bridged(gt::phong_draw(scene));
+  bridged.run();
+  EXPECT_EQ(old_style.image().rgb, bridged.image().rgb);
 }
 
 }  // namespace

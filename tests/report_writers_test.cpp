@@ -17,6 +17,7 @@
 
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
+#include "compare/report/report_common.hpp"
 #include "compare/report/writers.hpp"
 #include "compare/result.hpp"
 
@@ -310,6 +311,197 @@ TEST_F(ReportFiles, MarkdownHasSummaryDetailsAndBenchmarks) {
   EXPECT_NE(markdown.find("| 256³ | 1 | 0 | — | — | — | not run: triangles need 444 MB"), std::string::npos);
   EXPECT_NE(markdown.find("not run: triangles need 444 MB"), std::string::npos);
   EXPECT_NE(markdown.find("| nan |"), std::string::npos);
+}
+
+// ---- image comparisons (rendered twins side by side) --------------------------------------------
+
+// A rendered case as compare/render_case.cpp writes it: the four pictures and the image checks (one
+// failing, so that the tile's colour can be told apart).
+CaseResult rendered_case() {
+  CaseResult result = make_case(
+      "render.terrain.volcano", "render.terrain",
+      {make_check("mesh.closed.cpu", 0.0, 0.0, Outcome::pass), make_check("determinism.gpu", 0.0, 0.0, Outcome::pass),
+       make_check("image.psnr.gpu_vs_cpu", -92.72, -40.0, Outcome::pass),
+       make_check("image.share_beyond_tolerance_outside_edges.gpu_vs_cpu", 0.0125, 0.005, Outcome::fail),
+       make_check("image.max_abs.gpu_vs_cpu", 4.0 / 255.0, std::nullopt, Outcome::pass),
+       make_check("image.rms.gpu_vs_cpu", 2.3e-5, std::nullopt, Outcome::pass),
+       make_check("image.share_beyond_tolerance.gpu_vs_cpu", 0.02, std::nullopt, Outcome::pass)});
+  const std::string folder = result.name + "/";
+  result.artifacts = {{folder + "cpu.png", "image", "CPU reference (double), rounded to 8 bits"},
+                      {folder + "gpu.png", "image", "GPU (GL pipeline, RGBA8 target)"},
+                      {folder + "gpu_vs_cpu_heat.png", "image", "max |gpu - cpu| over channels, white at 0.0157"},
+                      {folder + "gpu_vs_cpu_mask.png", "image", "3×3-tolerant verdicts"},
+                      {folder + "solid.ply", "mesh", "the terrain solid"}};
+  return result;
+}
+
+// The same case run with --backend cpu: the reference alone and the skipped GPU checks.
+CaseResult reference_only_case() {
+  CaseResult result = make_case("render.phong.bunny00", "render.phong",
+                                {make_check("image.gpu_vs_cpu", std::nan(""), std::nullopt, Outcome::skip,
+                                            "GPU backend not requested (--backend cpu)"),
+                                 make_check("determinism.gpu", std::nan(""), std::nullopt, Outcome::skip,
+                                            "GPU backend not requested (--backend cpu)")});
+  result.artifacts = {{"render.phong.bunny00/cpu.png", "image", "CPU reference (double)"}};
+  return result;
+}
+
+// A heightmap render: a signed difference picture, no mask, parity checks.
+CaseResult heightmap_render_case() {
+  CaseResult result = make_case("render.heightmap_from_mesh.cow", "render.heightmap_from_mesh",
+                                {make_check("parity.interior_max_abs.gpu_vs_cpu", 1.16e-5, 2.93e-4, Outcome::pass),
+                                 make_check("parity.coverage_share.cpu", 0.47, std::nullopt, Outcome::pass)});
+  result.artifacts = {{"render.heightmap_from_mesh.cow/cpu.png", "image", "CPU reference"},
+                      {"render.heightmap_from_mesh.cow/gpu.png", "image", "GPU"},
+                      {"render.heightmap_from_mesh.cow/gpu_vs_cpu.png", "image", "GPU - reference"}};
+  return result;
+}
+
+// A field twin: before / after pictures and a noise field's cpu.png, gpu.png, gpu_vs_double.png
+// are not rendered-image comparisons.
+CaseResult field_case() {
+  CaseResult result = make_case("noise.perlin.plain", "noise.perlin",
+                                {make_check("parity.max_abs.gpu_vs_double", 1e-7, 1e-6, Outcome::pass)});
+  result.artifacts = {{"noise.perlin.plain/cpu.png", "image", "CPU reference (double)"},
+                      {"noise.perlin.plain/gpu.png", "image", "GPU"},
+                      {"noise.perlin.plain/gpu_vs_double.png", "image", "GPU - reference"}};
+  return result;
+}
+
+using report_detail::image_comparison;
+using report_detail::metric_text;
+
+TEST(ImageComparisons, PanelsAreFoundByFileName) {
+  const CaseResult rendered = rendered_case();
+  const auto comparison = image_comparison(rendered);
+  ASSERT_TRUE(comparison);
+  EXPECT_EQ(comparison->reference, &rendered.artifacts[0]);
+  EXPECT_EQ(comparison->gpu, &rendered.artifacts[1]);
+  EXPECT_EQ(comparison->difference, &rendered.artifacts[2]);
+  EXPECT_EQ(comparison->mask, &rendered.artifacts[3]);
+  EXPECT_TRUE(comparison->gpu_missing_reason.empty());
+  EXPECT_TRUE(comparison->others.empty());  // the mesh is not an image
+  ASSERT_EQ(comparison->metrics.size(), 5u);  // the *.gpu_vs_cpu checks, in order
+  EXPECT_EQ(comparison->metrics[0]->name, "image.psnr.gpu_vs_cpu");
+  EXPECT_EQ(comparison->metrics[4]->name, "image.share_beyond_tolerance.gpu_vs_cpu");
+
+  const CaseResult reference_only = reference_only_case();
+  const auto alone = image_comparison(reference_only);
+  ASSERT_TRUE(alone);
+  EXPECT_EQ(alone->gpu, nullptr);
+  EXPECT_EQ(alone->difference, nullptr);
+  EXPECT_EQ(alone->gpu_missing_reason, "GPU backend not requested (--backend cpu)");
+  EXPECT_TRUE(alone->metrics.empty());
+
+  const CaseResult heightmap = heightmap_render_case();
+  const auto three = image_comparison(heightmap);
+  ASSERT_TRUE(three);
+  EXPECT_EQ(three->difference, &heightmap.artifacts[2]);
+  EXPECT_EQ(three->mask, nullptr);
+  ASSERT_EQ(three->metrics.size(), 1u);
+
+  EXPECT_FALSE(image_comparison(field_case()));
+  EXPECT_FALSE(image_comparison(sample_report().cases[0]));  // before.png and an EXR
+  // A file that merely ends like cpu.png is not the reference.
+  CaseResult lookalike = rendered_case();
+  lookalike.artifacts[0].path = "render.terrain.volcano/not_cpu.png";
+  EXPECT_FALSE(image_comparison(lookalike));
+}
+
+TEST(ImageComparisons, MetricsAreShownInTheirUnits) {
+  const auto text = [](const char* name, double value, std::optional<double> threshold) {
+    return metric_text(make_check(name, value, threshold, Outcome::pass));
+  };
+  const auto psnr = text("image.psnr.gpu_vs_cpu", -92.72, -40.0);
+  EXPECT_EQ(psnr.label, "PSNR");
+  EXPECT_EQ(psnr.value, "92.7 dB");
+  EXPECT_EQ(psnr.bound, "≥ 40 dB");
+  EXPECT_EQ(text("image.psnr.gpu_vs_cpu", -std::numeric_limits<double>::infinity(), -40.0).value, "∞ dB (identical)");
+  const auto share = text("image.share_beyond_tolerance_outside_edges.gpu_vs_cpu", 0.0125, 0.005);
+  EXPECT_EQ(share.value, "1.25 %");
+  EXPECT_EQ(share.bound, "≤ 0.5 %");
+  const auto max_abs = text("image.max_abs.gpu_vs_cpu", 4.0 / 255.0, std::nullopt);
+  EXPECT_EQ(max_abs.value, "0.0157 (4/255)");
+  EXPECT_EQ(max_abs.bound, "");
+  EXPECT_EQ(text("image.rms.gpu_vs_cpu", 2.3e-5, std::nullopt).value, "2.3e-05");
+  const auto parity = text("parity.interior_max_abs.gpu_vs_cpu", 1.16e-5, 2.93e-4);
+  EXPECT_EQ(parity.label, "interior max abs");
+  EXPECT_EQ(parity.bound, "≤ 0.000293");
+}
+
+// The section of one case in index.html.
+std::string case_section(const std::string& html, const std::string& name) {
+  const auto start = html.find(fmt::format("id=\"case-{}\"", name));
+  if (start == std::string::npos) return "";
+  return html.substr(start, html.find("</section>", start) - start);
+}
+
+TEST_F(ReportFiles, HtmlShowsRenderedTwinsSideBySideWithTheirMetrics) {
+  Report report;
+  report.environment = sample_report().environment;
+  report.cases = {rendered_case(), reference_only_case(), heightmap_render_case(), field_case(),
+                  sample_report().cases[0]};
+  write_report_html(report, folder / "index.html");
+  const std::string html = read_text(folder / "index.html");
+
+  const std::string rendered = case_section(html, "render.terrain.volcano");
+  ASSERT_FALSE(rendered.empty());
+  ASSERT_EQ(count_of(rendered, "<div class=\"comparison\">"), 1);
+  // One row: reference, GPU, difference, verdicts, in that order, each titled and captioned, before
+  // the parameters and the checks.
+  std::vector<std::size_t> at;
+  for (const char* needle : {"<div class=\"role\">Reference (CPU)</div><a href=\"render.terrain.volcano/cpu.png\">",
+                             "<div class=\"role\">GPU</div><a href=\"render.terrain.volcano/gpu.png\">",
+                             "<div class=\"role\">Difference</div><a href=\"render.terrain.volcano/gpu_vs_cpu_heat.png\">",
+                             "<div class=\"role\">Verdicts</div><a href=\"render.terrain.volcano/gpu_vs_cpu_mask.png\">",
+                             "<div class=\"metrics\">", "<dl class=\"params\">", "<table class=\"checks\">"}) {
+    at.push_back(rendered.find(needle));
+    EXPECT_NE(at.back(), std::string::npos) << needle;
+  }
+  EXPECT_TRUE(std::is_sorted(at.begin(), at.end()));
+  EXPECT_NE(rendered.find("<figcaption>GPU (GL pipeline, RGBA8 target)</figcaption>"), std::string::npos);
+  // Each picture appears once: not again in the generic row; the mesh stays a link.
+  for (const char* picture : {"cpu.png", "gpu.png", "gpu_vs_cpu_heat.png", "gpu_vs_cpu_mask.png"}) {
+    EXPECT_EQ(count_of(html, fmt::format("src=\"render.terrain.volcano/{}\"", picture)), 1) << picture;
+  }
+  EXPECT_EQ(rendered.find("<div class=\"figures\">"), std::string::npos);
+  EXPECT_NE(rendered.find("<a href=\"render.terrain.volcano/solid.ply\">"), std::string::npos);
+  // The metrics under the pictures: five tiles coloured by outcome, with their units and bounds.
+  const std::string metrics = rendered.substr(at[4], at[5] - at[4]);
+  EXPECT_EQ(count_of(metrics, "<div class=\"metric "), 5);
+  EXPECT_EQ(count_of(metrics, "<div class=\"metric fail\""), 1);
+  EXPECT_NE(metrics.find("<div class=\"label\">PSNR</div><div class=\"value\">92.7 dB</div>"
+                         "<div class=\"bound\">≥ 40 dB · pass</div>"),
+            std::string::npos)
+      << metrics;
+  EXPECT_NE(metrics.find("<div class=\"value\">1.25 %</div><div class=\"bound\">≤ 0.5 % · fail</div>"),
+            std::string::npos)
+      << metrics;
+  EXPECT_NE(metrics.find("0.0157 (4/255)"), std::string::npos);
+  EXPECT_EQ(metrics.find("mesh.closed"), std::string::npos);  // not an image metric
+
+  // Reference only: the GPU panel says why, no difference or verdict panel, no metrics.
+  const std::string alone = case_section(html, "render.phong.bunny00");
+  EXPECT_NE(alone.find("<div class=\"placeholder\">not run: GPU backend not requested (--backend cpu)</div>"),
+            std::string::npos)
+      << alone;
+  EXPECT_EQ(alone.find("Difference"), std::string::npos);
+  EXPECT_EQ(alone.find("<div class=\"metrics\">"), std::string::npos);
+
+  // Heightmap render: three panels, its parity metric under them.
+  const std::string heightmap = case_section(html, "render.heightmap_from_mesh.cow");
+  EXPECT_EQ(count_of(heightmap, "<figure class=\"panel\">"), 3);
+  EXPECT_EQ(heightmap.find("Verdicts"), std::string::npos);
+  EXPECT_NE(heightmap.find("<div class=\"label\">interior max abs</div>"), std::string::npos);
+
+  // Other cases keep their pictures in the generic row, in their order.
+  for (const std::string name : {"noise.perlin.plain", "erosion.thermal.cardinal.volcano"}) {
+    const std::string section = case_section(html, name);
+    EXPECT_EQ(section.find("class=\"comparison\""), std::string::npos) << name;
+    EXPECT_NE(section.find("<div class=\"figures\">"), std::string::npos) << name;
+  }
+  const std::string noise = case_section(html, "noise.perlin.plain");
+  EXPECT_LT(noise.find("noise.perlin.plain/cpu.png"), noise.find("noise.perlin.plain/gpu_vs_double.png"));
 }
 
 // ---- pictures ----------------------------------------------------------------------------------

@@ -135,6 +135,84 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view c
   }
 }
 
+namespace {
+
+bool file_named(const Artifact& artifact, std::string_view name) {
+  const std::string_view path = artifact.path;
+  return path == name || (path.size() > name.size() && path.ends_with(name) && path[path.size() - name.size() - 1] == '/');
+}
+
+bool ends_with(std::string_view text, std::string_view suffix) { return text.ends_with(suffix); }
+
+// "0.0039 (1/255)": a channel difference with its 8-bit levels.
+std::string channel_text(double value) {
+  return std::isfinite(value) && value != 0.0 ? fmt::format("{} ({:.3g}/255)", format_value(value), 255.0 * value)
+                                              : format_value(value);
+}
+
+std::string percent_text(double share) {
+  return std::isfinite(share) ? fmt::format("{:.3g} %", 100.0 * share) : format_value(share);
+}
+
+}  // namespace
+
+std::optional<ImageComparison> image_comparison(const CaseResult& result) {
+  ImageComparison comparison;
+  for (const Artifact& artifact : result.artifacts) {
+    if (artifact.kind != "image") continue;
+    if (!comparison.reference && file_named(artifact, "cpu.png")) {
+      comparison.reference = &artifact;
+    } else if (!comparison.gpu && file_named(artifact, "gpu.png")) {
+      comparison.gpu = &artifact;
+    } else if (!comparison.difference &&
+               (file_named(artifact, "gpu_vs_cpu_heat.png") || file_named(artifact, "gpu_vs_cpu.png"))) {
+      comparison.difference = &artifact;
+    } else if (!comparison.mask && file_named(artifact, "gpu_vs_cpu_mask.png")) {
+      comparison.mask = &artifact;
+    } else {
+      comparison.others.push_back(&artifact);
+    }
+  }
+  for (const Check& check : result.checks) {
+    if (!ends_with(check.name, ".gpu_vs_cpu")) continue;
+    if (check.status == Outcome::skip) {
+      if (comparison.gpu_missing_reason.empty()) comparison.gpu_missing_reason = check.detail;
+    } else {
+      comparison.metrics.push_back(&check);
+    }
+  }
+  const bool gpu_ran = comparison.difference != nullptr;
+  const bool gpu_skipped = !comparison.gpu && !comparison.gpu_missing_reason.empty();
+  if (!comparison.reference || !(gpu_ran || gpu_skipped)) return std::nullopt;
+  if (comparison.gpu) comparison.gpu_missing_reason.clear();
+  return comparison;
+}
+
+MetricText metric_text(const Check& check) {
+  const std::string& name = check.name;
+  const std::optional<double>& bound = check.threshold;
+  if (name == "image.psnr.gpu_vs_cpu") {  // the value is -PSNR, the bound -(least PSNR)
+    const double psnr = -check.value;
+    return {"PSNR", std::isinf(psnr) && psnr > 0 ? "∞ dB (identical)" : fmt::format("{:.1f} dB", psnr),
+            bound ? fmt::format("≥ {} dB", format_value(-*bound)) : ""};
+  }
+  const auto shown = [&](const char* label, std::string (*text)(double)) {
+    return MetricText{label, text(check.value), bound ? "≤ " + text(*bound) : ""};
+  };
+  if (name == "image.max_abs.gpu_vs_cpu") return shown("max |gpu − cpu|", channel_text);
+  if (name == "image.rms.gpu_vs_cpu") return shown("RMS", format_value);
+  if (name == "image.share_beyond_tolerance.gpu_vs_cpu") return shown("pixels beyond 4/255", percent_text);
+  if (name == "image.share_beyond_tolerance_outside_edges.gpu_vs_cpu") {
+    return shown("beyond 4/255, edge shifts allowed", percent_text);
+  }
+  std::string label = name.substr(0, name.size() - std::string_view(".gpu_vs_cpu").size());
+  for (const std::string_view kind : {"image.", "parity."}) {
+    if (label.starts_with(kind)) label = label.substr(kind.size());
+  }
+  std::replace(label.begin(), label.end(), '_', ' ');
+  return {label, format_value(check.value), format_bounds(check)};
+}
+
 std::string case_size_text(const CaseResult& result) {
   return result.width == 0 && result.height == 0 ? "—" : fmt::format("{}×{}", result.width, result.height);
 }

@@ -64,6 +64,39 @@ std::string benchmark_note_text(const BenchmarkRow& row);
 // "≤ threshold" plus "(warn ≤ loose)" when a loose bound exists; "" when neither exists.
 std::string format_bounds(const Check& check);
 
+// The pictures of a rendered-image comparison between the CPU reference and the GPU twin, found by
+// file name among a case's "image" artifacts (what compare/render_case.cpp and
+// compare/algorithms/render_heightmap.cpp write):
+//   reference   .../cpu.png
+//   gpu         .../gpu.png
+//   difference  .../gpu_vs_cpu_heat.png (heat map) or .../gpu_vs_cpu.png (signed difference)
+//   mask        .../gpu_vs_cpu_mask.png (neighbourhood verdicts)
+// A case is such a comparison when it has a reference picture and either a difference picture or,
+// when the GPU did not run, a skipped check named *.gpu_vs_cpu (whose detail says why). Other cases
+// (field twins' before/after, noise fields) are not. metrics are the case's checks named
+// *.gpu_vs_cpu that did not skip, in the case's order; others are the case's image artifacts that
+// are not part of the comparison.
+struct ImageComparison {
+  const Artifact* reference = nullptr;
+  const Artifact* gpu = nullptr;
+  const Artifact* difference = nullptr;
+  const Artifact* mask = nullptr;
+  std::string gpu_missing_reason;  // when gpu is null
+  std::vector<const Check*> metrics;
+  std::vector<const Artifact*> others;
+};
+
+// Pointers into `result`, which must outlive the answer.
+std::optional<ImageComparison> image_comparison(const CaseResult& result);
+
+// A metric of an image comparison as it is shown under the pictures: a short label, the value in
+// its unit (PSNR in dB from image.psnr's -PSNR, shares in percent, the largest channel difference
+// with its 8-bit levels) and the bound in the same terms ("" when informative).
+struct MetricText {
+  std::string label, value, bound;
+};
+MetricText metric_text(const Check& check);
+
 // Escapes & < > " ' for HTML and XML text and attributes; control characters that XML 1.0
 // forbids become U+FFFD.
 std::string escape_markup(std::string_view text);

@@ -1,10 +1,19 @@
 // index.html: a self-contained static page (inline CSS, no JavaScript) for reading a report.
 //
 // Layout: header with the environment (GL renderer first and large), summary badges, a table of
-// all cases linking to their sections; per case its parameters, image artifacts in a row
-// (intended order: before / after CPU / after GPU / difference, as the caller lists them), other
-// artifacts as links, the checks table and the timings; then the Performance section with the
-// benchmark table and the report-level plots. Every piece of text goes through escape_markup.
+// all cases linking to their sections; per case its notes, then for a rendered-image comparison
+// (report_common.hpp image_comparison: cpu.png, gpu.png, gpu_vs_cpu[_heat].png, gpu_vs_cpu_mask.png)
+// one row of up to four equal panels — reference, GPU (or why it did not run), difference and
+// verdicts (where the case has them) —
+// each titled and captioned, with the *.gpu_vs_cpu metrics under them as tiles coloured by
+// outcome (PSNR in dB, shares in percent, channel differences in 8-bit levels); then its
+// parameters (name and value pairs in columns), its other image artifacts in a row (intended order: before / after CPU / after GPU /
+// difference, as the caller lists them), other artifacts as links, the checks table and the
+// timings; then the Performance section with the benchmark table and the report-level plots.
+// Every piece of text goes through escape_markup.
+#include <algorithm>
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "compare/report/report_common.hpp"
@@ -38,6 +47,24 @@ figure { margin: 0; }
 figure img { width: 280px; height: auto; image-rendering: pixelated; border: 1px solid #ccc; }
 figure.plot img { width: 100%; max-width: 1100px; image-rendering: auto; }
 figcaption { text-align: center; font-size: .9em; color: #444; }
+dl.params { display: grid; grid-template-columns: repeat(auto-fill, minmax(250px, 1fr)); gap: 0 1.2em; margin: .6em 0 1em;
+            font-size: .9em; }
+dl.params div { display: flex; justify-content: space-between; gap: .8em; border-bottom: 1px solid #eee; padding: .1em 0; }
+dl.params dt { color: #555; } dl.params dd { margin: 0; font-variant-numeric: tabular-nums; overflow-wrap: anywhere; }
+.comparison { margin: .8em 0 1.2em; }
+.panels { display: grid; grid-template-columns: repeat(4, minmax(0, 1fr)); gap: .8em; align-items: start; }
+.panel { margin: 0; }
+.panel .role { font-weight: 600; font-size: .95em; margin-bottom: .25em; }
+.panel img { width: 100%; height: auto; image-rendering: pixelated; border: 1px solid #ccc; display: block; }
+.panel figcaption { text-align: left; font-size: .82em; margin-top: .2em; }
+.panel.missing .placeholder { border: 1px dashed #bbb; color: #666; padding: 1em; font-size: .9em; aspect-ratio: 4 / 3; }
+.metrics { display: grid; grid-template-columns: repeat(auto-fill, minmax(190px, 1fr)); gap: .5em; margin-top: .7em; }
+.metric { background: #f6f6f6; border-left: 4px solid #2e7d32; padding: .3em .6em; }
+.metric.fail { border-color: #c62828; background: #fbeaea; } .metric.warn { border-color: #f9a825; }
+.metric.error { border-color: #6a1b9a; } .metric.skip { border-color: #757575; }
+.metric .label { font-size: .82em; color: #555; }
+.metric .value { font-size: 1.15em; font-weight: 600; font-variant-numeric: tabular-nums; }
+.metric .bound { font-size: .8em; color: #555; }
 )";
 
 std::string h(std::string_view text) { return escape_markup(text); }
@@ -112,13 +139,13 @@ void append_params(std::string& out, const nlohmann::json& params) {
     return;
   }
   if (params.empty()) return;
-  out += "<table class=\"params\">\n<tr><th>parameter</th><th>value</th></tr>\n";
+  out += "<dl class=\"params\">\n";
   for (const auto& [key, value] : params.items()) {
     const std::string text =
         value.is_string() ? value.get<std::string>() : value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-    out += fmt::format("<tr><td>{}</td><td>{}</td></tr>\n", h(key), h(text));
+    out += fmt::format("<div><dt>{}</dt><dd>{}</dd></div>\n", h(key), h(text));
   }
-  out += "</table>\n";
+  out += "</dl>\n";
 }
 
 void append_figure(std::string& out, const Artifact& artifact, std::string_view figure_class) {
@@ -126,11 +153,47 @@ void append_figure(std::string& out, const Artifact& artifact, std::string_view 
                      figure_class, url(artifact.path), url(artifact.path), h(artifact.caption), h(artifact.caption));
 }
 
-void append_artifacts(std::string& out, const CaseResult& result) {
+void append_panel(std::string& out, std::string_view role, const Artifact* artifact, std::string_view missing) {
+  if (!artifact) {
+    out += fmt::format("<figure class=\"panel missing\"><div class=\"role\">{}</div><div class=\"placeholder\">{}</div>"
+                       "</figure>\n",
+                       h(role), h(missing));
+    return;
+  }
+  out += fmt::format("<figure class=\"panel\"><div class=\"role\">{}</div><a href=\"{}\"><img src=\"{}\" alt=\"{}\"></a>"
+                     "<figcaption>{}</figcaption></figure>\n",
+                     h(role), url(artifact->path), url(artifact->path), h(artifact->caption), h(artifact->caption));
+}
+
+void append_comparison(std::string& out, const ImageComparison& comparison) {
+  const std::string not_run = comparison.gpu_missing_reason.empty() ? "not run" : "not run: " + comparison.gpu_missing_reason;
+  out += "<div class=\"comparison\">\n<div class=\"panels\">\n";
+  append_panel(out, "Reference (CPU)", comparison.reference, "");
+  append_panel(out, "GPU", comparison.gpu, not_run);
+  if (comparison.difference) append_panel(out, "Difference", comparison.difference, "");
+  if (comparison.mask) append_panel(out, "Verdicts", comparison.mask, "");
+  out += "</div>\n";
+  if (!comparison.metrics.empty()) {
+    out += "<div class=\"metrics\">\n";
+    for (const Check* check : comparison.metrics) {
+      const MetricText text = metric_text(*check);
+      out += fmt::format("<div class=\"metric {}\" title=\"{}\"><div class=\"label\">{}</div><div class=\"value\">{}</div>"
+                         "<div class=\"bound\">{}{}</div></div>\n",
+                         outcome_name(check->status), h(check->name + ": " + check->detail), h(text.label), h(text.value),
+                         text.bound.empty() ? "" : h(text.bound) + " · ", outcome_name(check->status));
+    }
+    out += "</div>\n";
+  }
+  out += "</div>\n";
+}
+
+// The case's artifacts except those `shown` already (the comparison's pictures).
+void append_artifacts(std::string& out, const CaseResult& result, const std::vector<const Artifact*>& shown) {
   std::string figures;
   std::string plots;
   std::string links;
   for (const Artifact& artifact : result.artifacts) {
+    if (std::find(shown.begin(), shown.end(), &artifact) != shown.end()) continue;
     if (artifact.kind == "image") {
       append_figure(figures, artifact, "image");
     } else if (artifact.kind == "plot") {
@@ -182,8 +245,13 @@ void append_case_section(std::string& out, const CaseResult& result) {
     out += fmt::format("<p class=\"note\">Expected failure: {}</p>\n", h(result.expected_failure));
   }
   if (!result.error.empty()) out += fmt::format("<pre class=\"error\">{}</pre>\n", h(result.error));
+  std::vector<const Artifact*> shown;
+  if (const auto comparison = image_comparison(result)) {
+    append_comparison(out, *comparison);
+    shown = {comparison->reference, comparison->gpu, comparison->difference, comparison->mask};
+  }
   append_params(out, result.params);
-  append_artifacts(out, result);
+  append_artifacts(out, result, shown);
   append_checks(out, result);
   append_timings(out, result.timings);
   out += "</section>\n";

@@ -2,12 +2,97 @@
 // uniforms, the RGBA8 + depth framebuffer and one indexed draw. Shaders: gpu/shaders/render/phong.*.
 #include "gpu/render/phong.hpp"
 
+#include <cmath>
+#include <cstddef>
+#include <numbers>
 #include <stdexcept>
+#include <string>
+
+#include "core/noise/permutation.hpp"
 
 namespace gt::gpu {
 namespace {
 
 using Vertex = std::array<float, 6>;  // position, normal
+
+// Mirror of `PhongLookBlock` in gpu/shaders/render/phong_look.glsl (std140).
+struct PhongLookBlock {
+  float colour_frequency;
+  float colour_reference_height;
+  float colour_octaves_per_unit;
+  float bump_slope;  // a·s
+  float bump_frequency;
+  float moss;
+  float height_low;
+  float inverse_height_range;
+  float up[3];
+  float rock_start_cos;
+  float rock[3];
+  float inverse_rock_width;  // 1/(cos(rock_start) - cos(rock_full))
+  std::int32_t strip_size;
+  float colour_octave_limit;
+  std::int32_t padding[2];
+};
+static_assert(offsetof(PhongLookBlock, bump_frequency) == 16);
+static_assert(offsetof(PhongLookBlock, up) == 32);
+static_assert(offsetof(PhongLookBlock, rock_start_cos) == 44);
+static_assert(offsetof(PhongLookBlock, rock) == 48);
+static_assert(offsetof(PhongLookBlock, inverse_rock_width) == 60);
+static_assert(offsetof(PhongLookBlock, strip_size) == 64);
+static_assert(offsetof(PhongLookBlock, colour_octave_limit) == 68);
+static_assert(sizeof(PhongLookBlock) == 80);
+
+constexpr GLuint look_block_binding = 0, strip_binding = 6, permutation_binding = 5;
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+const std::vector<std::array<double, 3>>& look_strip(const PhongDraw& draw) {
+  return draw.look == PhongLook::cave ? draw.cave.colour_strip : draw.terrain.ramp;
+}
+
+PhongLookBlock look_block(const PhongDraw& draw) {
+  const PhongTerrainLook& terrain = draw.terrain;
+  if (draw.look == PhongLook::terrain &&
+      !(terrain.height_high > terrain.height_low && terrain.rock_start_deg >= 0.0 &&
+        terrain.rock_start_deg < terrain.rock_full_deg && terrain.rock_full_deg <= 180.0)) {
+    throw std::invalid_argument("Phong render: the terrain look needs height_low < height_high and "
+                                "0 <= rock_start_deg < rock_full_deg <= 180");
+  }
+  PhongLookBlock block{};
+  const PhongCaveLook& cave = draw.cave;
+  block.colour_frequency = float(cave.colour_frequency);
+  block.colour_reference_height = float(cave.colour_reference_height);
+  block.colour_octaves_per_unit = float(cave.colour_octaves_per_unit);
+  block.colour_octave_limit = float(cave.colour_octave_limit);
+  block.bump_slope = float(cave.bump_amplitude * cave.bump_frequency);
+  block.bump_frequency = float(cave.bump_frequency);
+  block.moss = float(cave.moss);
+  block.height_low = float(terrain.height_low);
+  block.inverse_height_range = float(1.0 / (terrain.height_high - terrain.height_low));
+  const double cos_start = std::cos(radians(terrain.rock_start_deg));
+  const double cos_full = std::cos(radians(terrain.rock_full_deg));
+  block.rock_start_cos = float(cos_start);
+  block.inverse_rock_width = float(1.0 / (cos_start - cos_full));
+  for (int axis = 0; axis < 3; ++axis) {
+    block.up[axis] = float(terrain.up[axis]);
+    block.rock[axis] = float(terrain.rock[axis]);
+  }
+  block.strip_size = std::int32_t(look_strip(draw).size());
+  return block;
+}
+
+std::vector<std::array<float, 4>> strip_texels(const PhongDraw& draw) {
+  const auto& strip = look_strip(draw);
+  if (strip.empty()) throw std::invalid_argument("Phong render: the look's colour strip has no entries");
+  std::vector<std::array<float, 4>> texels;
+  texels.reserve(strip.size());
+  for (const auto& entry : strip) texels.push_back({float(entry[0]), float(entry[1]), float(entry[2]), 1.0f});
+  return texels;
+}
+
+std::vector<std::string> look_defines(PhongLook look) {
+  return {"GT_PHONG_LOOK=" + std::to_string(static_cast<int>(look))};
+}
 
 std::vector<Vertex> interleaved_vertices(const PhongDraw& draw) {
   if (draw.normals.size() != draw.mesh.positions.size()) {
@@ -50,10 +135,20 @@ void attach_attribute(GLuint vertex_array, GLuint location, GLuint offset) {
 PhongRenderer::PhongRenderer(const PhongDraw& draw)
     : target_(GL_RGBA8, draw.width, draw.height, "Phong image"),
       index_count_(draw.mesh.triangles.size() * 3),
-      program_(GraphicsProgram::load("render/phong.vert", "render/phong.frag")),
+      look_(draw.look),
+      program_(GraphicsProgram::load("render/phong.vert", "render/phong.frag", look_defines(draw.look))),
       vertices_(StorageBuffer::from(interleaved_vertices(draw))),
       indices_(StorageBuffer::from(draw.mesh.triangles)) {
   set_uniforms(program_.id(), draw);
+  if (look_ != PhongLook::plain) {
+    strip_.emplace(StorageBuffer::from(strip_texels(draw)));
+    look_block_.emplace(UniformBuffer::from(look_block(draw)));
+  }
+  if (look_ == PhongLook::cave) {
+    const Permutation permutation = seeded_permutation(draw.cave.noise_seed);
+    permutation_.emplace(StorageBuffer::from(doubled_permutation(permutation)));
+    noise_texture_.emplace(permutation);
+  }
 
   glCreateVertexArrays(1, &vertex_array_);
   glVertexArrayVertexBuffer(vertex_array_, 0, vertices_.id(), 0, sizeof(Vertex));
@@ -64,7 +159,13 @@ PhongRenderer::PhongRenderer(const PhongDraw& draw)
 
 PhongRenderer::~PhongRenderer() { glDeleteVertexArrays(1, &vertex_array_); }
 
-void PhongRenderer::run() const { target_.draw(program_, vertex_array_, index_count_); }
+void PhongRenderer::run() const {
+  if (look_block_) look_block_->bind(look_block_binding);
+  if (strip_) strip_->bind(strip_binding);
+  if (permutation_) permutation_->bind(permutation_binding);
+  if (noise_texture_) noise_texture_->bind(perlin_texture_unit);
+  target_.draw(program_, vertex_array_, index_count_);
+}
 
 Rgb8Pixels PhongRenderer::image() const {
   const int width = target_.width(), height = target_.height();

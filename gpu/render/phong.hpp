@@ -11,21 +11,58 @@
 // texture and returns RGB8, rows top first (alpha dropped). Needs a current GlContext; throws
 // std::invalid_argument when normals and positions differ in count, std::runtime_error when a
 // side exceeds GL_MAX_TEXTURE_SIZE or the framebuffer is incomplete.
+//
+// Looks (PhongDraw::look; formulas in reference/render/phong.hpp "Looks" and cave_look.hpp): one
+// shader source, the look picks it at compile time with the define GT_PHONG_LOOK (0 plain, 1 cave,
+// 2 terrain), so the plain program is the pre-look shader token for token after preprocessing.
+// cave and terrain read gpu/shaders/render/phong_look.glsl: a std140 block PhongLookBlock
+// (uniform binding 0, mirrored below with static_asserts) and the strip (colour strip or height
+// ramp) as a storage buffer of vec4 (binding 6); the cave look also binds the permutation buffer
+// (binding 5) of its improved Perlin bump and the texture of Gustavson's Perlin noise (unit 0) of
+// its colour, both of seeded_permutation(noise_seed). The host derives, in double and rounded to
+// float once: bump slope a·s, the terrain's 1/(high - low), cos(rock_start) and
+// 1/(cos(rock_start) - cos(rock_full)). std::invalid_argument for an empty strip (cave, terrain)
+// and for a terrain look without height_low < height_high and 0 <= rock_start < rock_full <= 180.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glad/gl.h>
 
 #include "core/mesh.hpp"
 #include "gpu/buffer.hpp"
+#include "gpu/noise/perlin_texture.hpp"
 #include "gpu/render/offscreen_target.hpp"
 #include "gpu/shader_program.hpp"
 
 namespace gt::gpu {
+
+enum class PhongLook { plain = 0, cave = 1, terrain = 2 };
+
+// reference::CaveLook's fields (reference/render/cave_look.hpp).
+struct PhongCaveLook {
+  std::vector<std::array<double, 3>> colour_strip;  // 256 entries in [0, 1]
+  double colour_frequency = 2.0;                    // noise cells per world unit at the reference height
+  double colour_reference_height = 0.0;
+  double colour_octaves_per_unit = 0.0072134752044448170;
+  double colour_octave_limit = 4.0;
+  double bump_amplitude = 0.04, bump_frequency = 4.0;
+  double moss = 1.0 / 40.0;
+  std::uint32_t noise_seed = 0;
+};
+
+// reference::TerrainLook's fields (reference/render/phong.hpp).
+struct PhongTerrainLook {
+  std::vector<std::array<double, 3>> ramp;  // colour over normalised height
+  std::array<double, 3> up{0.0, 1.0, 0.0};
+  double height_low = 0.0, height_high = 1.0;
+  std::array<double, 3> rock{0.42, 0.40, 0.38};
+  double rock_start_deg = 30.0, rock_full_deg = 45.0;
+};
 
 struct PhongDraw {
   const Mesh& mesh;
@@ -35,6 +72,9 @@ struct PhongDraw {
   std::array<double, 3> albedo{};
   double light_power = 1.0;
   int width = 0, height = 0;  // pixels
+  PhongLook look = PhongLook::plain;
+  PhongCaveLook cave{};         // used when look == cave
+  PhongTerrainLook terrain{};   // used when look == terrain
 };
 
 struct Rgb8Pixels {
@@ -55,10 +95,15 @@ class PhongRenderer {
  private:
   OffscreenTarget target_;  // RGBA8
   std::size_t index_count_;
+  PhongLook look_;
   GraphicsProgram program_;
   StorageBuffer vertices_;  // float3 position, float3 normal per vertex
   StorageBuffer indices_;
   GLuint vertex_array_ = 0;
+  std::optional<UniformBuffer> look_block_;      // cave, terrain
+  std::optional<StorageBuffer> strip_;           // cave, terrain
+  std::optional<StorageBuffer> permutation_;     // cave
+  std::optional<PerlinTexture> noise_texture_;   // cave
 };
 
 }  // namespace gt::gpu

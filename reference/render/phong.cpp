@@ -7,6 +7,8 @@
 #include <limits>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "core/errors.hpp"
 #include "reference/render/rasterizer.hpp"
 
@@ -60,6 +62,60 @@ void require_valid(const Camera& camera) {
   if (!(camera.near > 0.0 && camera.far > camera.near)) throw InputError("Phong render: need 0 < near < far");
   if (camera.width < 1 || camera.height < 1 || camera.width > 16384 || camera.height > 16384) {
     throw InputError("Phong render: image sides must lie in [1, 16384] pixels");
+  }
+}
+
+// The unit normal facing the viewer: the normalised interpolated normal, flipped when it points away
+// from the eye (two-sided), v when it is exactly zero.
+Vec3 facing_normal(const Vec3& position, const Vec3& normal, const Vec3& eye) {
+  const Vec3 v = normalised(eye - position);
+  Vec3 n = dot(normal, normal) > 0.0 ? normalised(normal) : v;
+  if (dot(n, v) < 0.0) n = -1.0 * n;
+  return n;
+}
+
+double terrain_height(const Vec3& up, const Vec3& p) { return (p[0] * up[0] + p[1] * up[1]) + p[2] * up[2]; }
+
+void require_strip(const std::vector<Vec3>& strip, const char* what) {
+  if (strip.empty()) throw InputError(fmt::format("Phong render: the {} has no entries", what));
+  for (const auto& entry : strip) {
+    for (const double channel : entry) {
+      if (!(channel >= 0.0 && channel <= 1.0)) throw InputError(fmt::format("Phong render: {} entries must lie in [0, 1]", what));
+    }
+  }
+}
+
+void require_finite(double value, const char* what) {
+  if (!std::isfinite(value)) throw InputError(fmt::format("Phong render: {} must be finite", what));
+}
+
+void require_look(const PhongScene& scene) {
+  if (scene.look == Look::cave) {
+    const CaveLook& cave = scene.cave;
+    require_strip(cave.colour_strip, "cave colour strip");
+    if (!(cave.colour_frequency > 0.0) || !std::isfinite(cave.colour_frequency)) {
+      throw InputError("Phong render: the cave colour frequency must be positive");
+    }
+    require_finite(cave.colour_reference_height, "the cave colour reference height");
+    require_finite(cave.colour_octaves_per_unit, "the cave colour octave rate");
+    if (!(cave.colour_octave_limit >= 0.0 && cave.colour_octave_limit <= 60.0)) {
+      throw InputError("Phong render: the cave colour octave limit must lie in [0, 60]");
+    }
+    if (!(cave.bump_amplitude >= 0.0 && cave.bump_frequency >= 0.0) || !std::isfinite(cave.bump_amplitude * cave.bump_frequency)) {
+      throw InputError("Phong render: the cave bump amplitude and frequency must be finite and >= 0");
+    }
+    require_finite(cave.moss, "the cave moss strength");
+  } else if (scene.look == Look::terrain) {
+    const TerrainLook& terrain = scene.terrain;
+    require_strip(terrain.ramp, "terrain height ramp");
+    require_strip({terrain.rock}, "terrain rock colour");
+    if (!(std::abs(dot(terrain.up, terrain.up) - 1.0) <= 1e-9)) throw InputError("terrain look: `up` must be a unit vector");
+    if (!(terrain.height_high > terrain.height_low) || !std::isfinite(terrain.height_high - terrain.height_low)) {
+      throw InputError("terrain look: need height_low < height_high");
+    }
+    if (!(terrain.rock_start_deg >= 0.0 && terrain.rock_start_deg < terrain.rock_full_deg && terrain.rock_full_deg <= 180.0)) {
+      throw InputError("terrain look: need 0 <= rock_start_deg < rock_full_deg <= 180");
+    }
   }
 }
 
@@ -163,6 +219,13 @@ std::vector<Vec3> vertex_normals(const Mesh& mesh) {
   return sums;
 }
 
+PhongScene phong_scene(const Mesh& mesh, const Camera& camera, Look look) {
+  PhongScene scene = phong_scene(mesh, camera);
+  scene.look = look;
+  if (look == Look::terrain) scene.terrain = terrain_look(mesh);
+  return scene;
+}
+
 PhongScene phong_scene(const Mesh& mesh, const Camera& camera) {
   require_drawable(mesh);
   const Vec3 to_centre = bounds(mesh).centre - camera.eye;
@@ -174,11 +237,14 @@ PhongScene phong_scene(const Mesh& mesh, const Camera& camera) {
 }
 
 Vec3 phong_colour(const Vec3& position, const Vec3& normal, const Vec3& eye, const Vec3& albedo, double light_power) {
+  return phong_lit(position, facing_normal(position, normal, eye), eye, albedo, light_power);
+}
+
+Vec3 phong_lit(const Vec3& position, const Vec3& unit_normal, const Vec3& eye, const Vec3& albedo, double light_power) {
   const Vec3 to_eye = eye - position;
   const double irradiance = light_power / dot(to_eye, to_eye);
   const Vec3 v = normalised(to_eye), l = v;
-  Vec3 n = dot(normal, normal) > 0.0 ? normalised(normal) : v;
-  if (dot(n, v) < 0.0) n = -1.0 * n;
+  const Vec3& n = unit_normal;
   const double n_dot_l = dot(n, l);
   const Vec3 r = 2.0 * n_dot_l * n - l;
   const double diffuse = std::max(0.0, n_dot_l), specular = std::pow(std::max(0.0, dot(r, v)), 5.0);
@@ -189,17 +255,72 @@ Vec3 phong_colour(const Vec3& position, const Vec3& normal, const Vec3& eye, con
   return colour;
 }
 
+std::vector<Vec3> terrain_height_ramp() {
+  return sampled_strip({{0.00, {0.16, 0.32, 0.14}},
+                        {0.30, {0.36, 0.52, 0.20}},
+                        {0.55, {0.62, 0.56, 0.36}},
+                        {0.78, {0.50, 0.42, 0.34}},
+                        {0.90, {0.60, 0.58, 0.56}},
+                        {1.00, {0.96, 0.96, 0.98}}});
+}
+
+TerrainLook terrain_look(const Mesh& mesh, const Vec3& up) {
+  require_drawable(mesh);
+  if (!(std::abs(dot(up, up) - 1.0) <= 1e-9)) throw InputError("terrain look: `up` must be a unit vector");
+  TerrainLook look;
+  look.up = up;
+  look.height_low = std::numeric_limits<double>::infinity();
+  look.height_high = -std::numeric_limits<double>::infinity();
+  for (const auto& p : mesh.positions) {
+    const double height = terrain_height(up, p);
+    look.height_low = std::min(look.height_low, height);
+    look.height_high = std::max(look.height_high, height);
+  }
+  if (!(look.height_high > look.height_low)) throw InputError("terrain look: the mesh has no extent along `up`");
+  return look;
+}
+
+Vec3 terrain_albedo(const TerrainLook& look, const Vec3& p, const Vec3& n) {
+  const double h = std::clamp((terrain_height(look.up, p) - look.height_low) / (look.height_high - look.height_low),
+                              0.0, 1.0);
+  const Vec3 ramp = strip_colour(look.ramp, h);
+  const double cos_start = std::cos(radians(look.rock_start_deg)), cos_full = std::cos(radians(look.rock_full_deg));
+  const double c = terrain_height(look.up, n);
+  double w = std::clamp((cos_start - c) / (cos_start - cos_full), 0.0, 1.0);
+  w = w * w * (3.0 - 2.0 * w);
+  return ramp + w * (look.rock - ramp);
+}
+
+Vec3 shade_fragment(const PhongScene& scene, const Vec3& position, const Vec3& normal) {
+  const Vec3& eye = scene.camera.eye;
+  switch (scene.look) {
+    case Look::plain: break;
+    case Look::cave: {
+      const Vec3 n = facing_normal(position, normal, eye);
+      return phong_lit(position, cave_bumped_normal(scene.cave, position, n), eye, cave_albedo(scene.cave, position, n),
+                       scene.light_power);
+    }
+    case Look::terrain: {
+      const Vec3 n = facing_normal(position, normal, eye);
+      return phong_lit(position, n, eye, terrain_albedo(scene.terrain, position, n), scene.light_power);
+    }
+  }
+  return phong_colour(position, normal, eye, scene.albedo, scene.light_power);
+}
+
 std::uint8_t quantise_unorm8(double channel) { return std::uint8_t(std::lround(255.0 * channel)); }
 
 Rgb8Image render_phong(const PhongScene& scene, int subpixel_bits) {
+  require_look(scene);
   RasterTarget target(scene.camera.width, scene.camera.height, 3, 0.0, 1.0);
   const FragmentShader shade = [&scene](std::span<const double> a, std::span<double> colour) {
-    const Vec3 rgb = phong_colour({a[0], a[1], a[2]}, {a[3], a[4], a[5]}, scene.camera.eye, scene.albedo,
-                                  scene.light_power);
+    const Vec3 rgb = shade_fragment(scene, {a[0], a[1], a[2]}, {a[3], a[4], a[5]});
     std::copy(rgb.begin(), rgb.end(), colour.begin());
   };
   rasterize(clip_input(scene), shade, target, {.subpixel_bits = subpixel_bits});
-  return quantised_top_first(target);
+  Rgb8Image image = quantised_top_first(target);
+  image.covered_pixels = std::size_t(std::count_if(target.depth.begin(), target.depth.end(), [](double d) { return d < 1.0; }));
+  return image;
 }
 
 }  // namespace gt::reference

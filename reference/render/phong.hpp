@@ -27,7 +27,8 @@
 // (with l = v, r·v = 2(n·v)² - 1: the digest's closed form). Decisions:
 //   - light_power = D², the squared distance from the eye to the box centre, so E = 1 there
 //     (surfaces nearer the eye get more, up to (2.5/1.5)² with orbit_camera, and clamp).
-//   - albedo is one colour for the whole mesh (no procedural texture, bump or moss here).
+//   - In the plain look albedo is one colour for the whole mesh; the cave and terrain looks make it
+//     per fragment (see "Looks").
 //   - Vertex normals are the area-weighted average of the adjacent face normals (the sum of the
 //     faces' cross products, normalised; zero when that sum is zero), computed once here and given to
 //     both twins as a vertex attribute, so the twins differ only in rasterization and shading
@@ -35,20 +36,50 @@
 //   - The background is 0; the output is what GL writes to an RGBA8 target: round(255·c) per
 //     channel, alpha dropped; rows top first (as in a PNG), i.e. GL row height - 1 - y.
 // Depth test LESS against a cleared depth of 1, no culling, triangles in index order.
+// render_phong also counts the covered pixels (depth < 1 after the draw): Rgb8Image::covered_pixels.
+//
+// Looks (issue 6: one render twin, the look is a parameter, PhongScene::look):
+//   plain    the formula above with the one albedo (seed 004's Phong; bit for bit the look this
+//            twin had before looks existed).
+//   cave     seed 004's full look: colour strip indexed by solid noise with a height-dependent
+//            frequency, moss on upward normals, bump mapping by the analytic noise gradient
+//            (cave_look.hpp documents it and the fix of the seed's frequency formula).
+//   terrain  height and slope colouring for terrain meshes (TerrainLook below).
+// Every look shades with the same Phong terms: with n the unit normal facing the viewer (as above)
+// a look gives the albedo a(p, n) and the shading normal n' (n except for the cave's bump), and
+//   colour = a·(0.1 + E·max(0, n'·l)) + 0.3·E·max(0, r'·v)^5, r' = 2(n'·l)n' - l, clamped to [0, 1]
+// (phong_lit). The plain look is phong_colour itself.
+//
+// Terrain look (this project's, for heightmap meshes; no texture drape):
+//   h = clamp((p·up - height_low)/(height_high - height_low), 0, 1)   (p·up = (p_x·u_x + p_y·u_y) + p_z·u_z)
+//   ramp colour = strip_colour(ramp, h) (cave_look.hpp: GL_LINEAR lookup in a 256-entry strip)
+//   c = n·up, w = clamp((cos(rock_start) - c)/(cos(rock_start) - cos(rock_full)), 0, 1),
+//   w = w²(3 - 2w) (smoothstep), albedo = ramp + w·(rock - ramp)
+// so faces steeper than rock_start_deg (default 30°) turn towards the rock colour, fully rock from
+// rock_full_deg (45°) on; walls and faces seen from below (c <= 0) are rock. terrain_height_ramp()
+// is a hypsometric ramp, piecewise-linear between these stops at the entry centres (i + 0.5)/256,
+// each channel rounded to k/255:
+//   0.00 (0.16, 0.32, 0.14) lowland green   0.30 (0.36, 0.52, 0.20) grass
+//   0.55 (0.62, 0.56, 0.36) dry grass       0.78 (0.50, 0.42, 0.34) bare earth
+//   0.90 (0.60, 0.58, 0.56) scree           1.00 (0.96, 0.96, 0.98) snow
+// rock = (0.42, 0.40, 0.38). terrain_look(mesh, up) takes height_low/high from the mesh's extent
+// along `up` (for a terrain solid with a base below the surface, set height_low to the lowest
+// surface height instead, so the base does not stretch the ramp).
 // Throws InputError for a mesh without triangles or without extent, and for an unusable camera
 // (eye at the target, up along the view direction, fov_y outside (0, 180) degrees, not
 // 0 < near < far, sides outside [1, 16384]).
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "core/mesh.hpp"
+#include "reference/render/cave_look.hpp"
 
 namespace gt::reference {
 
-using Vec3 = std::array<double, 3>;
 using Matrix4 = std::array<double, 16>;  // row-major
 
 struct Camera {
@@ -68,6 +99,22 @@ Camera orbit_camera(const Mesh& mesh, double azimuth_deg, double elevation_deg, 
 
 std::vector<Vec3> vertex_normals(const Mesh& mesh);
 
+enum class Look { plain, cave, terrain };
+
+std::vector<Vec3> terrain_height_ramp();
+
+struct TerrainLook {
+  std::vector<Vec3> ramp = terrain_height_ramp();  // colour over normalised height
+  Vec3 up{0.0, 1.0, 0.0};                          // unit vector: the height axis
+  double height_low = 0.0, height_high = 1.0;      // p·up mapped to h = 0 and h = 1
+  Vec3 rock{0.42, 0.40, 0.38};
+  double rock_start_deg = 30.0, rock_full_deg = 45.0;  // slope angles of the rock blend
+};
+
+// height_low/high = the smallest and largest p·up over the mesh's vertices (InputError when they
+// are equal or up is not a unit vector within 1e-9).
+TerrainLook terrain_look(const Mesh& mesh, const Vec3& up = {0.0, 1.0, 0.0});
+
 // Everything both twins draw, computed once on the CPU.
 struct PhongScene {
   Mesh mesh;
@@ -76,18 +123,33 @@ struct PhongScene {
   Matrix4 view_projection{};  // P·V
   Vec3 albedo{0.8, 0.72, 0.6};
   double light_power = 1.0;  // |eye - box centre|²
+  Look look = Look::plain;   // which albedo and normal the fragments get (see "Looks")
+  CaveLook cave{};           // used when look == cave
+  TerrainLook terrain{};     // used when look == terrain
 };
 
 PhongScene phong_scene(const Mesh& mesh, const Camera& camera);
+// The same scene with `look` selected; for terrain, terrain = terrain_look(mesh) (+y up).
+PhongScene phong_scene(const Mesh& mesh, const Camera& camera, Look look);
 
 // The shading formula above for one fragment, unclamped channels clamped to [0, 1].
 Vec3 phong_colour(const Vec3& position, const Vec3& normal, const Vec3& eye, const Vec3& albedo, double light_power);
+
+// The Phong terms for a unit shading normal that is used as it is (no normalising, no flip).
+Vec3 phong_lit(const Vec3& position, const Vec3& unit_normal, const Vec3& eye, const Vec3& albedo, double light_power);
+
+// The terrain albedo at p for the unit viewer-facing normal n (see "Terrain look").
+Vec3 terrain_albedo(const TerrainLook& look, const Vec3& p, const Vec3& facing_normal);
+
+// One fragment of `scene` with its look: p and the interpolated (unnormalised) vertex normal.
+Vec3 shade_fragment(const PhongScene& scene, const Vec3& position, const Vec3& normal);
 
 std::uint8_t quantise_unorm8(double channel);  // round(255·c), c in [0, 1]
 
 struct Rgb8Image {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;  // 3 per pixel, row-major, row 0 at the top
+  std::size_t covered_pixels = 0;  // pixels some fragment was written to (depth < 1)
 };
 
 Rgb8Image render_phong(const PhongScene& scene, int subpixel_bits = 8);

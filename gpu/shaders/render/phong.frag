@@ -6,6 +6,20 @@
 //   n = normalize(normal), facing the viewer (two-sided); v when the normal is exactly zero
 //   colour = clamp(albedo·(0.1 + E·max(0, n·l)) + 0.3·E·max(0, r·v)^5, 0, 1), r = reflect(-l, n)
 // Written to an RGBA8 target (alpha 1), which rounds to 8 bits.
+//
+// Looks (reference/render/phong.hpp "Looks"): GT_PHONG_LOOK, defined by the host
+// (gpu/render/phong.cpp), picks how albedo and n are made before the Phong terms:
+//   0 plain    the uniform albedo and n (the shader as it was before looks: the #if blocks vanish)
+//   1 cave     albedo from the colour strip and moss, n bumped (render/phong_look.glsl)
+//   2 terrain  albedo from the height ramp and the slope (render/phong_look.glsl)
+
+#ifndef GT_PHONG_LOOK
+#define GT_PHONG_LOOK 0
+#endif
+
+#if GT_PHONG_LOOK != 0
+#include "render/phong_look.glsl"
+#endif
 
 in vec3 world_position;
 in vec3 vertex_normal;
@@ -23,7 +37,15 @@ void main() {
   vec3 l = v;
   vec3 n = dot(vertex_normal, vertex_normal) > 0.0 ? normalize(vertex_normal) : v;
   if (dot(n, v) < 0.0) n = -n;
+#if GT_PHONG_LOOK == 1
+  vec3 surface_albedo = gt_cave_albedo(world_position, n);
+  n = gt_cave_bumped_normal(world_position, n);
+#elif GT_PHONG_LOOK == 2
+  vec3 surface_albedo = gt_terrain_albedo(world_position, n);
+#else
+  vec3 surface_albedo = albedo;
+#endif
   float diffuse = max(0.0, dot(n, l));
   float specular = pow(max(0.0, dot(reflect(-l, n), v)), 5.0);
-  colour = vec4(clamp(albedo * (0.1 + irradiance * diffuse) + 0.3 * irradiance * specular, 0.0, 1.0), 1.0);
+  colour = vec4(clamp(surface_albedo * (0.1 + irradiance * diffuse) + 0.3 * irradiance * specular, 0.0, 1.0), 1.0);
 }

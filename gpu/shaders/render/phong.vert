@@ -1,8 +1,9 @@
 #version 450 core
 // Seed 004's Phong look (digest 004_cave.md §2.9), vertex stage: clip = P·V·(p, 1) with the
 // reference's P·V (reference/render/phong.hpp) computed in double, rounded to float and set with
-// transpose = GL_TRUE from its row-major array. The world position and the CPU's area-weighted
-// vertex normal go to the fragment stage, interpolated perspective-correctly (GL's default).
+// transpose = GL_TRUE from its row-major array. The world position and the CPU's vertex normal
+// (area-weighted; the noise gradient's for the cave's own meshes) go to the fragment stage,
+// interpolated perspective-correctly (GL's default). The same for every look (GT_PHONG_LOOK).
 
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;

@@ -1,0 +1,131 @@
+// One Phong-rendered case: the reference and the GL pipeline on the same scene, the image checks
+// and the pictures; see render_case.hpp.
+#include "compare/render_case.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <numeric>
+#include <vector>
+
+#include <fmt/format.h>
+#include <OpenImageIO/imagebuf.h>
+
+#include "compare/algorithms/render_phong.hpp"
+#include "compare/checks/image.hpp"
+#include "compare/checks/threshold.hpp"
+#include "compare/timing.hpp"
+#include "core/errors.hpp"
+#include "gpu/timing.hpp"
+
+namespace gt {
+namespace {
+
+OIIO::ImageBuf rgb8_buffer(int width, int height, const std::vector<std::uint8_t>& rgb) {
+  OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8));
+  image.set_pixels(image.roi(), OIIO::TypeDesc::UINT8, rgb.data());
+  return image;
+}
+
+OIIO::ImageBuf run_reference(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
+                             const RunOptions& options, CaseResult& result) {
+  if (options.progress) options.progress->stage("CPU reference (double)");
+  reference::Rgb8Image image;
+  time_cpu(std::max(options.cpu_reps, 1), [&] { image = reference::render_phong(scene, subpixel_bits); },
+           result.timings);
+  const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+  const double uncovered = double(pixels - image.covered_pixels) / double(pixels);
+  const std::string detail = fmt::format("share of pixels no triangle covers ({} of {})", pixels - image.covered_pixels, pixels);
+  result.checks.push_back(min_covered_share > 0.0
+                              ? bounded_check("image.uncovered_share.cpu", uncovered, 1.0 - min_covered_share,
+                                              std::nullopt, detail + fmt::format("; the camera must see the mesh on at "
+                                                                                 "least {:g} of the picture",
+                                                                                 min_covered_share))
+                              : informative_check("image.uncovered_share.cpu", uncovered, detail));
+  return rgb8_buffer(image.width, image.height, image.rgb);
+}
+
+OIIO::ImageBuf run_gpu(const reference::PhongScene& scene, const RunOptions& options, CaseResult& result) {
+  if (options.progress) options.progress->stage("GPU");
+  const gpu::PhongRenderer renderer(phong_draw(scene));
+  renderer.run();
+  const gpu::Rgb8Pixels first = renderer.image();
+  time_gpu(options.gpu_reps, [&] { renderer.run(); }, result.timings);
+  const gpu::Rgb8Pixels last = renderer.image();
+  const auto changed = std::inner_product(first.rgb.begin(), first.rgb.end(), last.rgb.begin(), std::size_t{0},
+                                          std::plus<>(), std::not_equal_to<>());
+  result.checks.push_back(bounded_check("determinism.gpu", double(changed), 0.0, std::nullopt,
+                                        "channel bytes differing between the first and the last GPU run"));
+  return rgb8_buffer(first.width, first.height, first.rgb);
+}
+
+void add_image_checks(const ImageDifference& plain, const NeighbourhoodComparison& tolerant, CaseResult& result) {
+  result.checks.push_back(bounded_check(
+      "image.psnr.gpu_vs_cpu", -plain.psnr_db, -phong_min_psnr_db, std::nullopt,
+      fmt::format("-PSNR in dB over the RGB channels (PSNR {:.2f} dB; passes when PSNR >= {} dB)", plain.psnr_db,
+                  phong_min_psnr_db)));
+  result.checks.push_back(bounded_check(
+      "image.share_beyond_tolerance_outside_edges.gpu_vs_cpu", tolerant.failing_share, phong_max_failing_share,
+      std::nullopt,
+      fmt::format("share of pixels with no match within 4/255 in the other image's 3×3 neighbourhood ({} of {})",
+                  tolerant.failing_pixels, tolerant.verdicts.size())));
+  result.checks.push_back(informative_check("image.max_abs.gpu_vs_cpu", plain.max_abs,
+                                            fmt::format("largest |gpu - cpu| over channel values, at pixel ({}, {})",
+                                                        plain.max_x, plain.max_y)));
+  result.checks.push_back(informative_check("image.rms.gpu_vs_cpu", plain.rms, "RMS of gpu - cpu over channel values"));
+  result.checks.push_back(informative_check("image.share_beyond_tolerance.gpu_vs_cpu", plain.share_beyond_tolerance,
+                                            "share of pixels beyond 4/255 at the same pixel (edges included)"));
+}
+
+void write_image(const OIIO::ImageBuf& image, const std::filesystem::path& file) {
+  if (!image.write(file.string())) throw InputError(fmt::format("cannot write {}: {}", file.string(), image.geterror()));
+}
+
+void write_pictures(const OIIO::ImageBuf& cpu, const OIIO::ImageBuf* gpu_image,
+                    const NeighbourhoodComparison* tolerant, const RunOptions& options, CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const auto folder = options.report_dir / result.name;
+  std::filesystem::create_directories(folder);
+  const auto add = [&](const std::string& file, const std::string& caption) {
+    result.artifacts.push_back({result.name + "/" + file, "image", caption});
+  };
+  write_image(cpu, folder / "cpu.png");
+  add("cpu.png", "CPU reference (double), rounded to 8 bits");
+  if (!gpu_image) return;
+  write_image(*gpu_image, folder / "gpu.png");
+  add("gpu.png", "GPU (GL pipeline, RGBA8 target)");
+  const double scale = write_difference_heat_map(cpu, *gpu_image, folder / "gpu_vs_cpu_heat.png");
+  add("gpu_vs_cpu_heat.png", fmt::format("max |gpu - cpu| over channels, white at {:.3g}", scale));
+  write_verdict_mask(*tolerant, folder / "gpu_vs_cpu_mask.png");
+  add("gpu_vs_cpu_mask.png", "3×3-tolerant verdicts at 4/255: grey identical, green within, blue edge shift, red fails");
+}
+
+}  // namespace
+
+void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
+                     const std::string& input, const RunOptions& options, CaseResult& result) {
+  const auto& camera = scene.camera;
+  result.input = fmt::format("{}, {}x{} pixels", input, camera.width, camera.height);
+  result.width = camera.width;
+  result.height = camera.height;
+  result.notes.push_back(fmt::format("eye ({:.4g}, {:.4g}, {:.4g}), target ({:.4g}, {:.4g}, {:.4g}), near {:.4g}, far "
+                                     "{:.4g}, light power {:.4g}, {} triangles",
+                                     camera.eye[0], camera.eye[1], camera.eye[2], camera.target[0], camera.target[1],
+                                     camera.target[2], camera.near, camera.far, scene.light_power,
+                                     scene.mesh.triangles.size()));
+  const OIIO::ImageBuf cpu = run_reference(scene, subpixel_bits, min_covered_share, options, result);
+  if (!options.gpu_available) {
+    for (const char* name : {"image.gpu_vs_cpu", "determinism.gpu"}) {
+      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    }
+    write_pictures(cpu, nullptr, nullptr, options, result);
+    return;
+  }
+  const OIIO::ImageBuf gpu_image = run_gpu(scene, options, result);
+  const NeighbourhoodComparison tolerant = compare_neighbourhoods(cpu, gpu_image, phong_tolerance);
+  add_image_checks(compare_images(cpu, gpu_image, phong_tolerance), tolerant, result);
+  write_pictures(cpu, &gpu_image, &tolerant, options, result);
+}
+
+}  // namespace gt

@@ -1,0 +1,119 @@
+// The looks of the Phong twin other than plain (reference/render/phong.hpp "Looks"), GLSL twin of
+// reference/render/cave_look.cpp (cave: colour strip by solid noise with the fixed height-dependent
+// frequency, moss, bump by the analytic noise gradient) and of the terrain look in
+// reference/render/phong.cpp (height ramp, rock by slope). Formulas and decisions are documented in
+// reference/render/cave_look.hpp and phong.hpp; the operation order follows the reference.
+// Included by render/phong.frag when GT_PHONG_LOOK is 1 (cave) or 2 (terrain).
+//
+// Inputs (host: gpu/render/phong.cpp):
+//   PhongLookBlock  std140, uniform binding 0, mirrored there with static_asserts
+//   strip           storage buffer binding 6: the cave's colour strip or the terrain's height ramp,
+//                   one vec4 (rgb, 1) per entry, look.strip_size entries
+//   cave only: the permutation buffer (binding 5, noise/permutation.glsl) of the improved Perlin
+//   bump and the texture of Gustavson's 2004 Perlin noise (unit 0, noise/perlin_texture.glsl).
+#ifndef GT_RENDER_PHONG_LOOK_GLSL
+#define GT_RENDER_PHONG_LOOK_GLSL
+
+#if GT_PHONG_LOOK == 1
+#include "noise/perlin_texture.glsl"
+#endif
+
+layout(std140, binding = 0) uniform PhongLookBlock {
+  float colour_frequency;         // f0, noise cells per world unit at the reference height
+  float colour_reference_height;  // y0
+  float colour_octaves_per_unit;  // rate
+  float bump_slope;               // a·s
+  float bump_frequency;           // s
+  float moss;
+  float height_low;
+  float inverse_height_range;     // 1/(height_high - height_low)
+  vec3 up;
+  float rock_start_cos;
+  vec3 rock;
+  float inverse_rock_width;       // 1/(cos(rock_start) - cos(rock_full))
+  int strip_size;
+  float colour_octave_limit;      // |L| <= limit
+} look;
+
+layout(std430, binding = 6) readonly buffer PhongLookStrip { vec4 strip[]; };
+
+// GL_LINEAR with GL_CLAMP_TO_EDGE on the strip, in shader arithmetic: x = N·s - 0.5,
+// c = c[i0] + f·(c[i1] - c[i0]), i0 = clamp(floor(x)), i1 = clamp(floor(x) + 1), f = x - floor(x).
+vec3 gt_strip_colour(float s) {
+  precise float x = float(look.strip_size) * clamp(s, 0.0, 1.0) - 0.5;
+  precise float lower = floor(x);
+  precise float f = x - lower;
+  int last = look.strip_size - 1;
+  int i = int(lower);
+  vec3 a = strip[clamp(i, 0, last)].rgb;
+  vec3 b = strip[clamp(i + 1, 0, last)].rgb;
+  precise vec3 blended = a + f * (b - a);
+  return blended;
+}
+
+#if GT_PHONG_LOOK == 1
+
+float gt_cave_texture_noise(vec3 p, float frequency) {
+  precise vec3 q = p * frequency;
+  return gt_perlin3_texture(q);
+}
+
+// shade = 0.5 + 0.5·N: the cross-fade of the octaves f0·2^k and f0·2^(k+1) around
+// f(y) = f0·2^L, L = clamp((y0 - y)·rate, -limit, limit) (the fixed seed formula,
+// reference/render/cave_look.hpp 2.).
+float gt_cave_shade(vec3 p) {
+  precise float octaves = clamp((look.colour_reference_height - p.y) * look.colour_octaves_per_unit,
+                                -look.colour_octave_limit, look.colour_octave_limit);
+  precise float lower = floor(octaves);
+  precise float t = octaves - lower;
+  int k = int(lower);
+  float coarse = gt_cave_texture_noise(p, ldexp(look.colour_frequency, k));
+  float fine = gt_cave_texture_noise(p, ldexp(look.colour_frequency, k + 1));
+  precise float noise = ((1.0 - t) * coarse + t * fine) / sqrt((1.0 - t) * (1.0 - t) + t * t);
+  precise float shade = 0.5 + 0.5 * noise;
+  return shade;
+}
+
+// Strip colour plus moss on the unbumped, viewer-facing world normal n (green += moss·n.y, n.y > 0).
+vec3 gt_cave_albedo(vec3 p, vec3 n) {
+  vec3 albedo = gt_strip_colour(gt_cave_shade(p));
+  if (n.y > 0.0) {
+    precise float green = albedo.g + look.moss * n.y;
+    albedo.g = green;
+  }
+  return albedo;
+}
+
+// n' = normalize(n - (g - (g·n)·n)), g = (a·s)·∇P(s·p) with P improved Perlin noise.
+vec3 gt_cave_bumped_normal(vec3 p, vec3 n) {
+  if (look.bump_slope == 0.0) return n;
+  precise vec3 q = p * look.bump_frequency;
+  vec4 noise = gt_perlin3_gradient(q);
+  precise vec3 g = look.bump_slope * noise.yzw;
+  precise float along = (g.x * n.x + g.y * n.y) + g.z * n.z;
+  precise vec3 m = n - (g - along * n);
+  return normalize(m);
+}
+
+#endif  // GT_PHONG_LOOK == 1
+
+#if GT_PHONG_LOOK == 2
+
+float gt_terrain_height(vec3 p) {
+  precise float height = (p.x * look.up.x + p.y * look.up.y) + p.z * look.up.z;
+  return height;
+}
+
+// Ramp colour at the normalised height, blended towards rock by the slope of the facing normal n.
+vec3 gt_terrain_albedo(vec3 p, vec3 n) {
+  precise float h = clamp((gt_terrain_height(p) - look.height_low) * look.inverse_height_range, 0.0, 1.0);
+  vec3 ramp = gt_strip_colour(h);
+  precise float w = clamp((look.rock_start_cos - gt_terrain_height(n)) * look.inverse_rock_width, 0.0, 1.0);
+  precise float smooth_w = w * w * (3.0 - 2.0 * w);
+  precise vec3 albedo = ramp + smooth_w * (look.rock - ramp);
+  return albedo;
+}
+
+#endif  // GT_PHONG_LOOK == 2
+
+#endif  // GT_RENDER_PHONG_LOOK_GLSL
