@@ -16,6 +16,7 @@ const std::vector<Algorithm>& algorithms() {
     list.push_back(mesh_check_algorithm());
     list.push_back(render_heightmap_algorithm());
     list.push_back(render_phong_algorithm());
+    list.push_back(render_terrain_algorithm());
     return list;
   }();
   return all;

@@ -67,5 +67,6 @@ Algorithm cave_endless_algorithm();
 Algorithm mesh_check_algorithm();
 Algorithm render_heightmap_algorithm();
 Algorithm render_phong_algorithm();
+Algorithm render_terrain_algorithm();
 
 }  // namespace gt

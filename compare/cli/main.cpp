@@ -6,9 +6,12 @@
 //   check-mesh FILE [--json]           the mesh checks on an OFF, OBJ, PLY or STL file
 //   diff-image A B [--json] [--out diff.png] [--tolerance T]
 //                                      image differences, a heat map and a verdict mask
+//   render INPUT --out out.png [--backend cpu|gpu] [--width --height --azimuth --elevation --fov
+//          --distance | --eye --target] [--look]   a mesh or a heightmap (as a terrain solid) to a PNG
 // Exit status: 0 nothing unexpected failed, 1 something did, 2 bad usage or bad input
 // (check-mesh: 0 watertight and consistently oriented, 1 not, 2 unreadable;
-// diff-image: 0 no pixel fails the neighbourhood-tolerant comparison, 1 some do, 2 bad input).
+// diff-image: 0 no pixel fails the neighbourhood-tolerant comparison, 1 some do, 2 bad input;
+// render: 0 written, 2 bad input, a camera inside the mesh or seeing nothing, or no GL context for gpu).
 #include <cstdio>
 #include <iostream>
 
@@ -19,6 +22,7 @@
 #include "compare/cases.hpp"
 #include "compare/cli/check_mesh.hpp"
 #include "compare/cli/diff_image.hpp"
+#include "compare/cli/render.hpp"
 #include "compare/driver.hpp"
 #include "core/errors.hpp"
 
@@ -173,6 +177,47 @@ int main(int argc, char** argv) {
   diff_image->add_option("--tolerance", diff_options.tolerance, "per-channel tolerance in normalised values (4/255)")
       ->check(CLI::NonNegativeNumber);
 
+  gt::RenderOptions render_options;
+  auto* render = app.add_subcommand("render", "draw a mesh, or a heightmap as a terrain solid, to a PNG (Phong twins)");
+  render->add_option("input", render_options.input, "mesh (OFF, OBJ, PLY, STL) or heightmap (PNG, TIFF, EXR, volcano JSON, npz)")
+      ->required();
+  render->add_option("--out", render_options.out, "the PNG to write (never the input)")->required();
+  render->add_option("--backend", render_options.backend, "cpu (reference rasterizer, exact) or gpu (GL pipeline)")
+      ->check(CLI::IsMember({"cpu", "gpu"}))
+      ->capture_default_str();
+  render->add_option("--gl", render_options.gl, "GL context for gpu: egl or osmesa")
+      ->check(CLI::IsMember({"egl", "osmesa"}))
+      ->capture_default_str();
+  render->add_option("--width", render_options.width, "pixels")->check(CLI::Range(1, 16384))->capture_default_str();
+  render->add_option("--height", render_options.height, "pixels")->check(CLI::Range(1, 16384))->capture_default_str();
+  render->add_option("--azimuth", render_options.azimuth_deg, "orbit camera: degrees around +y, from +z towards +x")
+      ->check(CLI::Range(-360.0, 360.0))
+      ->capture_default_str();
+  render->add_option("--elevation", render_options.elevation_deg, "orbit camera: degrees above the xz plane")
+      ->check(CLI::Range(-89.0, 89.0))
+      ->capture_default_str();
+  render->add_option("--distance", render_options.distance,
+                     "orbit camera: distance in bounding-box half diagonals (0: the box's sphere fits the view)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  render->add_option("--fov", render_options.fov_deg, "vertical field of view, degrees")
+      ->check(CLI::Range(1.0, 179.0))
+      ->capture_default_str();
+  render->add_option("--eye", render_options.eye, "free camera: eye X,Y,Z (with --target)")->delimiter(',')->expected(3);
+  render->add_option("--target", render_options.target, "free camera: point looked at X,Y,Z")->delimiter(',')->expected(3);
+  render->add_option("--look", render_options.look, "auto (terrain for heightmaps), plain, terrain or cave")
+      ->check(CLI::IsMember({"auto", "plain", "terrain", "cave"}))
+      ->capture_default_str();
+  render->add_option("--vertical-scale", render_options.vertical_scale, "heightmaps: vertical exaggeration")
+      ->check(CLI::Range(0.01, 100.0))
+      ->capture_default_str();
+  render->add_option("--cell-size", render_options.cell_size, "heightmaps: cell size in metres (0: the file's)")
+      ->check(CLI::NonNegativeNumber);
+  render->add_option("--image-vertical-scale", render_options.image_vertical_scale,
+                     "heightmaps: metres per unit of 8/16-bit images")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -183,6 +228,7 @@ int main(int argc, char** argv) {
   try {
     if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);
     if (diff_image->parsed()) return gt::diff_image_command(diff_options);
+    if (render->parsed()) return gt::render_command(render_options);
     if (list->parsed()) {
       print_list(list_as_json);
       return 0;

@@ -1,0 +1,203 @@
+// `render.terrain`: a heightmap (any case input: a DEM file, a generator, cropped or not), eroded
+// first when `erode` asks for it, meshed as a closed solid (reference/render/terrain_solid.hpp:
+// surface, skirts and a base; x east, y up, z south, metres) and Phong-shaded through the orbit
+// camera of reference/render/phong.hpp by both twins (compare/render_case.hpp: the same image
+// checks, timings and pictures as render.phong).
+//
+// Erosion (reference only, in double, before meshing; both twins then draw the same solid, so the
+// images compare rendering alone and a pair of cases shows the terrain before and after):
+//   erode = none      the input as it is
+//   erode = thermal   seed 000's two-pass thermal erosion (reference/erosion/thermal.hpp) with the
+//                     thermal_* parameters (erosion.thermal's, in physical heights: T = tan α)
+// Another erosion is one more choice, its parameters prefixed likewise (append_prefixed), and one
+// more branch in eroded().
+//
+// Base: base_depth, or 0 for terrain_solid's automatic depth; for an eroded terrain the automatic
+// base is the un-eroded terrain's, so that a before/after pair shares its base and skirt bottoms.
+// Look: terrain (reference/render/phong.hpp's height ramp and rock by slope) with the ramp over the
+// input's heights before erosion, or plain.
+// Checks: those of run_phong_twins (image.*, determinism.gpu) and the mesh checks of the solid
+// (compare/checks/mesh.hpp, backend "cpu", closed expected): the solid must be watertight,
+// manifold, outward and free of self-intersections; genus, components and volume are informative.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/checks/mesh.hpp"
+#include "compare/render_case.hpp"
+#include "core/errors.hpp"
+#include "core/params/thermal.hpp"
+#include "reference/erosion/thermal.hpp"
+#include "reference/render/phong.hpp"
+#include "reference/render/terrain_solid.hpp"
+
+namespace gt {
+namespace {
+
+// Another algorithm's parameters under "<prefix>_<name>", so that several erosions can sit side by
+// side; `left_out` names the ones this algorithm fixes.
+void append_prefixed(ParamSpecs& specs, const ParamSpecs& from, const std::string& prefix,
+                     const std::vector<std::string>& left_out) {
+  for (ParamSpec spec : from) {
+    if (std::find(left_out.begin(), left_out.end(), spec.name) != left_out.end()) continue;
+    spec.name = prefix + "_" + spec.name;
+    spec.description = fmt::format("erode = {}: {}", prefix, spec.description);
+    specs.push_back(std::move(spec));
+  }
+}
+
+// The prefixed parameters back under their own names, for the other algorithm's parser.
+nlohmann::json unprefixed(const nlohmann::json& resolved, const std::string& prefix) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [key, value] : resolved.items()) {
+    if (key.rfind(prefix + "_", 0) == 0) out[key.substr(prefix.size() + 1)] = value;
+  }
+  return out;
+}
+
+const ParamSpecs& terrain_specs() {
+  static const ParamSpecs specs = [] {
+    ParamSpecs list = {
+        {"width", ParamKind::integer, 320, 1, 4096, {}, "pixel", "image columns"},
+        {"height", ParamKind::integer, 240, 1, 4096, {}, "pixel", "image rows"},
+        {"fov_deg", ParamKind::real, 37.0, 1.0, 150.0, {}, "degree",
+         "vertical field of view (37°: at 4:3 the horizontal one holds the bounding sphere)"},
+        {"azimuth_deg", ParamKind::real, 35.0, -360.0, 360.0, {}, "degree",
+         "camera direction around +y (up) from the box centre, from +z (south) towards +x (east)"},
+        {"elevation_deg", ParamKind::real, 30.0, -89.0, 89.0, {}, "degree", "camera direction above the ground plane"},
+        {"subpixel_bits", ParamKind::integer, 8, 0, 16, {}, "bit",
+         "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"},
+        {"vertical_scale", ParamKind::real, 1.0, 0.01, 100.0, {}, "1", "vertical exaggeration of the heights"},
+        {"base_depth", ParamKind::real, 0.0, 0.0, 1e5, {}, "m",
+         "depth of the solid's base below the lowest height; 0: a fifth of the relief (at least 2 % of the extent)"},
+        {"look", ParamKind::choice, "terrain", 0, 0, {"terrain", "plain"}, "1",
+         "terrain: height ramp from the lowest to the highest input height (before erosion, so that a before/after "
+         "pair shares its colours), rock by slope (skirts and base are rock); plain: seed 004's one albedo"},
+        {"min_covered_share", ParamKind::real, 0.05, 0.0, 1.0, {}, "1",
+         "least share of pixels the solid must cover in the reference image (0: not checked)"},
+        {"erode", ParamKind::choice, "none", 0, 0, {"none", "thermal"}, "",
+         "erosion applied to the heightmap (reference, double) before meshing"},
+    };
+    append_prefixed(list, thermal_param_specs(), "thermal", {"normalised", "vertical_aspect"});
+    return list;
+  }();
+  return specs;
+}
+
+struct Eroded {
+  Heightmap heights;
+  std::string description;  // "" when not eroded
+};
+
+Eroded eroded(const Heightmap& input, const nlohmann::json& resolved) {
+  const std::string erode = resolved.at("erode");
+  if (erode == "none") return {input, ""};
+  // erode == "thermal": physical heights (T = tan α, lengths the cell sizes).
+  nlohmann::json given = unprefixed(resolved, "thermal");
+  given["normalised"] = false;
+  given["vertical_aspect"] = 0.0;
+  const ThermalParams params = thermal_params_from_json(given);
+  const ThermalConstants constants = thermal_constants(params, input);
+  Eroded out{reference::thermal_erosion(input, constants, params.iterations, params.neighbourhood), ""};
+  double moved = 0.0;
+  for (std::size_t k = 0; k < input.size(); ++k) {
+    if (input.is_valid(k)) moved = std::max(moved, std::abs(out.heights.values[k] - input.values[k]));
+  }
+  out.description = fmt::format("thermal erosion (reference, double): {} iterations, talus {}°, strength {}, {}; "
+                                "largest height change {:.3g} {}",
+                                params.iterations, params.talus_angle_deg, params.strength,
+                                neighbourhood_name(params.neighbourhood), moved, input.vertical_unit);
+  return out;
+}
+
+// The base below the eroded terrain lies where the un-eroded terrain's automatic base would (the
+// pair of cases then differs only in the surface), unless base_depth is given or the erosion dug
+// below that level (then the automatic depth of the eroded terrain).
+double base_depth(const Heightmap& input, const Heightmap& eroded, const nlohmann::json& resolved) {
+  const double given = resolved.at("base_depth");
+  if (given > 0.0 || resolved.at("erode") == "none") return given;
+  const double vertical_scale = resolved.at("vertical_scale");
+  const double original_base = reference::terrain_solid(input, {.vertical_scale = vertical_scale}).base_y;
+  const reference::TerrainSolid automatic = reference::terrain_solid(eroded, {.vertical_scale = vertical_scale});
+  const double depth = automatic.base_y + automatic.base_depth - original_base;  // from the lowest kept vertex
+  return depth > 0.0 ? depth : 0.0;
+}
+
+struct TerrainCase {
+  reference::TerrainSolid solid;
+  reference::PhongScene scene;
+  int subpixel_bits = 8;
+  double min_covered_share = 0.0;
+  std::string input;
+  std::vector<std::string> notes;
+};
+
+void run_terrain(const TerrainCase& terrain, const RunOptions& options, CaseResult& result) {
+  result.notes.insert(result.notes.end(), terrain.notes.begin(), terrain.notes.end());
+  if (options.progress) options.progress->stage("mesh checks of the solid");
+  const MeshReport report = check_mesh(terrain.solid.mesh);
+  for (Check& check : mesh_checks(report, "cpu", true)) result.checks.push_back(std::move(check));
+  run_phong_twins(terrain.scene, terrain.subpixel_bits, terrain.min_covered_share, terrain.input, options,
+                  result);
+}
+
+PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& input) {
+  if (input.heights.size() == 0) {
+    throw InputError("render.terrain meshes a heightmap: give the case a heightmap input ({\"file\": ...})");
+  }
+  Eroded terrain_heights = eroded(input.heights, resolved);
+  const double vertical_scale = resolved.at("vertical_scale");
+  const reference::TerrainSolid solid = reference::terrain_solid(
+      terrain_heights.heights,
+      {.vertical_scale = vertical_scale, .base_depth = base_depth(input.heights, terrain_heights.heights, resolved)});
+  const reference::Camera camera =
+      reference::orbit_camera(solid.mesh, resolved.at("azimuth_deg"), resolved.at("elevation_deg"),
+                              resolved.at("fov_deg"), resolved.at("width"), resolved.at("height"));
+  const bool terrain_look = resolved.at("look") == "terrain";
+  TerrainCase terrain{solid,
+                      reference::phong_scene(solid.mesh, camera,
+                                             terrain_look ? reference::Look::terrain : reference::Look::plain),
+                      resolved.at("subpixel_bits"), resolved.at("min_covered_share"), "", {}};
+  // The ramp spans the input's heights before erosion (not the base's): an eroded terrain, whose
+  // heights stay within that range (erosion moves material), keeps the colours of its original.
+  if (terrain_look) {
+    const auto [low, high] = valid_range(input.heights);
+    if (high > low) {
+      terrain.scene.terrain.height_low = vertical_scale * low;
+      terrain.scene.terrain.height_high = vertical_scale * high;
+    }
+  }
+  if (!terrain_heights.description.empty()) terrain.notes.push_back(terrain_heights.description);
+  terrain.notes.push_back(fmt::format(
+      "terrain solid: {} quads ({} dropped where two met only at a corner), {} triangles ({} surface, {} base, {} "
+      "skirt), base at y = {:.4g} m ({:.4g} m below the lowest height), vertical scale {}",
+      solid.kept_quads, solid.dropped_quads, solid.mesh.triangles.size(), solid.surface_triangles,
+      solid.base_triangles, solid.skirt_triangles, solid.base_y, solid.base_depth, resolved.at("vertical_scale").dump()));
+  const std::string erode = resolved.at("erode");
+  terrain.input = fmt::format("{}{}, solid of {} triangles", input.description,
+                              erode == "none" ? "" : ", after " + erode + " erosion", solid.mesh.triangles.size());
+  PreparedTwin prepared;
+  prepared.run = [terrain = std::move(terrain)](const nlohmann::json&, const RunOptions& options, CaseResult& result) {
+    run_terrain(terrain, options, result);
+  };
+  return prepared;
+}
+
+}  // namespace
+
+Algorithm render_terrain_algorithm() {
+  return {.name = "render.terrain",
+          .summary = "heightmap (optionally eroded) as a closed solid, Phong-shaded: reference rasterizer vs the GL pipeline",
+          .source = "issue 6 (terrain look before/after erosion); seed 004 §2.9 shading; seed 000 §4.4.3 thermal erosion",
+          .params = &terrain_specs(),
+          .prepare = prepare_terrain,
+          .iterates = false,
+          .has_field_twin = false,
+          .ad_hoc_input = AdHocInput::heightmap};
+}
+
+}  // namespace gt
