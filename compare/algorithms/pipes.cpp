@@ -1,0 +1,688 @@
+// `erosion.pipe`: hydraulic erosion with virtual pipes (Mei 2007, digest 000 §3.4; seed 001's
+// variant by its parameters: depth ramp, sediment diffusion, regolith) on a heightmap, run by the
+// CPU reference in double (the truth) and in float, and by the GPU twin, each with its per-step
+// water and material ledger (core/params/hydraulic.hpp).
+//
+// Scenario parameters (besides hydraulic_param_specs()):
+//   initial_water  dry; depth: initial_depth metres on every valid cell (seed 001's one-shot "set
+//                  water level", 0.1 m); sea_level: cells below sea_level start filled up to it
+//                  (topobathy: the sea is there from the start; with closed borders it stays, with
+//                  open borders it drains off the grid and the ledger counts it).
+//   rain_map       none; orographic: rain_map_rate·(b − b_min)/(b_max − b_min) m/s more rain on
+//                  high ground (a rain map in m/s, added to the uniform rain_rate).
+//   source_rate    one point source of that many m³/s at (source_x, source_y) (shares of the grid's
+//                  width and height); 0 = none. A source on a no-data cell is refused.
+//   checkpoints    how many states along the run the GPU is compared with ref<double>.
+//
+// Checks (backend cpu = ref<double>, cpu_float = ref<float>, gpu = the GPU twin):
+//   mass.water_balance.{cpu,gpu}   max over steps of |W_t − W_0 − added + evaporated + out| divided
+//                  by the water handled, W_0 + rain_in + source_in (added: what the additions of rain
+//                  and sources put into the depths, as rounded): bound 1e-12 (cpu) and 1e-6 (gpu),
+//                  issue 3's figures. Derivation for the cpu bound: each step rounds a cell's depth
+//                  in at most 6 operations of relative error 2^-53 (reference tests), so n steps
+//                  move the total by at most 6n·2^-53 of it: 3.3e-13 at n = 500.
+//   mass.rain_rounding.{cpu,cpu_float,gpu}   informative: |rain + sources asked for − added| over
+//                  the water handled, the water the additions' rounding lost (float: about 1e-6, the
+//                  same small depth rounded the same way in every cell and step).
+//   mass.material_drift.{cpu,gpu}  max over steps of |material_drift| divided by the material
+//                  present, M_0 = Σ(|b_0| + s_0 + r_0)·l_x·l_y. Flux transport conserves: bounds
+//                  1e-12 (cpu, as the water) and 1e-6 (gpu). Semi-Lagrangian transport does not
+//                  (it is the method): `warn` beyond 1e-3, never a failure.
+//   mass.material_drift_of_moved.{cpu,cpu_float,gpu}  the same drift divided by the material moved
+//                  (Σ|b_T − b_0|·l_x·l_y + what is suspended or left): informative for flux
+//                  transport; for semi-Lagrangian transport `warn` beyond 1e-3.
+//   mass.material_drift.cpu_float  informative: the float trap of plain float storage (the GPU
+//                  stores heights as base + change, gpu/erosion/pipes.hpp).
+//   stability.pipe_wave_number     the stability number of the pipe scheme's gravity waves (see
+//                  pipe_wave_number below): `warn` above 1, where the flow turns to noise.
+//   stability.max_cfl.{cpu,gpu}    the largest Δt·|u|/l_x or Δt·|v|/l_y of the run: `warn` above 1
+//                  (the K scaling caps it at 1 where a cell drains in one step, so slopes sit at 1).
+//   parity.one_step.{terrain_change,water,sediment}.gpu_vs_float   one step from the initial state,
+//                  max |gpu − ref<float>|, bound 2·max|ref<float> − ref<double>| + a rounding floor
+//                  (add_one_step_parity).
+//   parity.{terrain_change,water,sediment}.gpu_vs_double    at the end of the run, max |gpu − ref<double>|
+//                  of b_T − b_0, d and s, against ref<float>'s own distance from ref<double> (the
+//                  model of how float runs of this flow drift: add_parity_vs_double): bound 4×, `warn`
+//                  up to 16×. RMS informative; a plot shows both distances at the checkpoints.
+//   determinism.gpu                cells whose terrain, water or sediment differ in any bit between
+//                  two GPU runs (the second without the ledger's downloads, timed): bound 0.
+// A state that turns NaN or negative makes the reference (or the GPU's check) throw InputError,
+// and the case ends as an error naming the step, the cell and the CFL number.
+// Pictures: terrain before and after, erosion (blue) and deposition (red), water depth, sediment,
+// velocity magnitude (ref<double>), and the GPU's terrain change minus the reference's. Plots: the
+// ledger error over the steps (water balance and material drift, each backend) and the ledger's
+// volumes (water, rain and sources in, evaporated, out through the borders).
+// Timings: one whole run each (the reference in double; the GPU without ledger downloads,
+// bracketed by glFinish).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <functional>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/benchmark.hpp"
+#include "compare/checks/field.hpp"
+#include "compare/checks/threshold.hpp"
+#include "compare/report/images.hpp"
+#include "compare/report/plots.hpp"
+#include "compare/timing.hpp"
+#include "core/errors.hpp"
+#include "core/params/hydraulic.hpp"
+#include "core/sum.hpp"
+#include "gpu/erosion/pipes.hpp"
+#include "gpu/timing.hpp"
+#include "reference/erosion/pipes.hpp"
+
+namespace gt {
+namespace {
+
+constexpr double float_roundoff = 0x1p-24;
+constexpr double rounded_operations_per_step = 32.0;  // per field and step, see rounding_floor
+constexpr double cpu_water_bound = 1e-12;
+constexpr double gpu_water_bound = 1e-6;
+constexpr double cpu_material_bound = 1e-12;
+constexpr double gpu_material_bound = 1e-6;
+constexpr double semi_lagrangian_warn = 1e-3;
+constexpr double drift_floor = 1e-18;  // log plots: exact zeros drawn here
+
+const ParamSpecs& pipe_specs() {
+  static const ParamSpecs specs = [] {
+    ParamSpecs all = hydraulic_param_specs();
+    const ParamSpecs scenario = {
+        {"initial_water", ParamKind::choice, "depth", 0, 0, {"dry", "depth", "sea_level"}, "",
+         "dry; depth: initial_depth on every cell (seed 001's set water level); sea_level: fill up to sea_level"},
+        {"initial_depth", ParamKind::real, 0.1, 0.0, 1e3, {}, "m", "water depth of initial_water = depth"},
+        {"sea_level", ParamKind::real, 0.0, -1e4, 1e4, {}, "m", "initial_water = sea_level fills cells below it"},
+        {"rain_map", ParamKind::choice, "none", 0, 0, {"none", "orographic"}, "",
+         "orographic: rain_map_rate·(b − b_min)/(b_max − b_min) more rain on high ground"},
+        {"rain_map_rate", ParamKind::real, 0.0, 0.0, 1.0, {}, "m/s", "the orographic rain on the highest cell"},
+        {"source_rate", ParamKind::real, 0.0, 0.0, 1e6, {}, "m³/s", "one point source; 0 = none"},
+        {"source_x", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "the source's column as a share of the width"},
+        {"source_y", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "the source's row as a share of the height"},
+        {"checkpoints", ParamKind::integer, 16, 1, 1000, {}, "count",
+         "states along the run at which the GPU is compared with ref<double>"},
+    };
+    all.insert(all.end(), scenario.begin(), scenario.end());
+    return all;
+  }();
+  return specs;
+}
+
+struct PipeScenario {
+  HydraulicParams params;
+  PipeConstants constants;
+  PipeState<double> initial;
+  HydraulicForcing forcing;
+  int checkpoints = 16;
+  std::vector<std::string> notes;
+};
+
+void set_initial_water(const nlohmann::json& resolved, PipeScenario& scenario) {
+  auto& state = scenario.initial;
+  const auto mode = resolved.at("initial_water").get<std::string>();
+  const double depth = resolved.at("initial_depth");
+  const double sea_level = resolved.at("sea_level");
+  for (std::size_t cell = 0; cell < state.terrain.size(); ++cell) {
+    if (!state.terrain.is_valid(cell)) continue;
+    if (mode == "depth") state.water.values[cell] = depth;
+    if (mode == "sea_level") state.water.values[cell] = std::max(0.0, sea_level - state.terrain.values[cell]);
+  }
+  if (mode == "depth") scenario.notes.push_back(fmt::format("initial water: {} m on every valid cell", depth));
+  if (mode == "sea_level") {
+    scenario.notes.push_back(fmt::format("initial water: cells below {} m filled up to it (the sea from the start)",
+                                         sea_level));
+  }
+}
+
+void set_forcing(const nlohmann::json& resolved, PipeScenario& scenario) {
+  const auto& terrain = scenario.initial.terrain;
+  if (resolved.at("rain_map") == "orographic") {
+    const FieldTotals totals = field_totals(terrain);
+    const double range = totals.high - totals.low;
+    const double rate = resolved.at("rain_map_rate");
+    Grid<double> rain = terrain;
+    for (std::size_t cell = 0; cell < rain.size(); ++cell) {
+      rain.values[cell] = terrain.is_valid(cell) && range > 0.0 ? rate * (terrain.values[cell] - totals.low) / range : 0.0;
+    }
+    scenario.forcing.rain_map = std::move(rain);
+    scenario.notes.push_back(fmt::format("orographic rain map: 0 to {} m/s from {:.4g} m to {:.4g} m", rate,
+                                         totals.low, totals.high));
+  }
+  const double source_rate = resolved.at("source_rate");
+  if (source_rate > 0.0) {
+    const int x = static_cast<int>(std::lround(resolved.at("source_x").get<double>() * (terrain.width - 1)));
+    const int y = static_cast<int>(std::lround(resolved.at("source_y").get<double>() * (terrain.height - 1)));
+    if (!terrain.is_valid(x, y)) {
+      throw InputError(fmt::format("erosion.pipe: the point source at cell (x={}, y={}) lies on a no-data cell", x, y));
+    }
+    scenario.forcing.sources.push_back({x, y, source_rate});
+    scenario.notes.push_back(fmt::format("point source: {} m³/s at cell (x={}, y={})", source_rate, x, y));
+  }
+}
+
+PipeScenario make_scenario(const nlohmann::json& resolved, const Heightmap& input) {
+  if (input.size() == 0) throw InputError("erosion.pipe erodes a heightmap: the case needs an input");
+  if (count_valid(input) == 0) throw InputError("erosion.pipe: the terrain's mask covers every cell");
+  check_finite(input, "erosion.pipe: terrain");
+  PipeScenario scenario;
+  scenario.params = hydraulic_params_from_json(resolved);
+  scenario.constants = pipe_constants(scenario.params, input);
+  scenario.initial = dry_pipe_state(input);
+  scenario.checkpoints = std::min(resolved.at("checkpoints").get<int>(), std::max(scenario.params.steps, 1));
+  set_initial_water(resolved, scenario);
+  set_forcing(resolved, scenario);
+  return scenario;
+}
+
+// The fields compared between backends, in double; the terrain as its change b − b_0.
+struct Snapshot {
+  int step = 0;
+  Grid<double> terrain_change, water, sediment;
+};
+
+template <class Real>
+Snapshot snapshot(const PipeState<Real>& state, const Grid<double>& initial_terrain, int step) {
+  Snapshot shot{step, state.terrain.template cast<double>(), state.water.template cast<double>(),
+                state.sediment.template cast<double>()};
+  for (std::size_t cell = 0; cell < shot.terrain_change.size(); ++cell) {
+    shot.terrain_change.values[cell] -= initial_terrain.values[cell];
+  }
+  return shot;
+}
+
+std::vector<int> checkpoint_steps(int steps, int checkpoints) {
+  std::vector<int> at;
+  for (int i = 1; i <= checkpoints; ++i) {
+    const int step = static_cast<int>((static_cast<long long>(steps) * i) / checkpoints);
+    if (step > 0 && (at.empty() || step != at.back())) at.push_back(step);
+  }
+  return at;
+}
+
+struct BackendRun {
+  std::vector<PipeLedgerEntry> ledger;
+  std::vector<Snapshot> checkpoints;
+  PipeState<double> final_state;
+};
+
+// Runs `erosion` (reference or GPU) step by step, taking snapshots at `at`.
+template <class Erosion, class StateOf>
+void step_through(Erosion& erosion, int steps, const std::vector<int>& at, const Grid<double>& initial_terrain,
+                  StateOf state_of, std::vector<Snapshot>& snapshots) {
+  auto next = at.begin();
+  for (int step = 1; step <= steps; ++step) {
+    erosion.step();
+    if (next != at.end() && *next == step) {
+      snapshots.push_back(snapshot(state_of(erosion), initial_terrain, step));
+      ++next;
+    }
+  }
+}
+
+BackendRun run_reference_double(const PipeScenario& scenario, const std::vector<int>& at, CaseResult& result) {
+  BackendRun run;
+  reference::PipeErosion<double> erosion(scenario.initial, scenario.constants, scenario.forcing);
+  const auto state_of = [](const reference::PipeErosion<double>& e) { return e.state(); };
+  result.timings.cpu_ms = cpu_wall_ms([&] {
+    step_through(erosion, scenario.params.steps, at, scenario.initial.terrain, state_of, run.checkpoints);
+  });
+  result.timings.cpu_reps = 1;
+  run.ledger = erosion.ledger();
+  run.final_state = erosion.state();
+  return run;
+}
+
+template <class Real>
+PipeState<Real> cast_state(const PipeState<double>& state) {
+  PipeState<Real> cast{state.terrain.template cast<Real>(), state.water.template cast<Real>(),
+                       state.sediment.template cast<Real>(), {}, state.velocity_x.template cast<Real>(),
+                       state.velocity_y.template cast<Real>(), state.regolith.template cast<Real>()};
+  cast.outflow.reserve(state.outflow.size());
+  for (const auto& fluxes : state.outflow) {
+    cast.outflow.push_back({static_cast<Real>(fluxes[0]), static_cast<Real>(fluxes[1]), static_cast<Real>(fluxes[2]),
+                            static_cast<Real>(fluxes[3])});
+  }
+  return cast;
+}
+
+BackendRun run_reference_float(const PipeScenario& scenario, const std::vector<int>& at) {
+  BackendRun run;
+  reference::PipeErosion<float> erosion(cast_state<float>(scenario.initial), scenario.constants, scenario.forcing);
+  const auto state_of = [](const reference::PipeErosion<float>& e) { return e.state(); };
+  step_through(erosion, scenario.params.steps, at, scenario.initial.terrain, state_of, run.checkpoints);
+  run.ledger = erosion.ledger();
+  return run;
+}
+
+// The ledger's yardsticks: the water handled up to an entry, and the material present at the start.
+double water_handled(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
+  return initial.water + entry.rain_in + entry.source_in;
+}
+
+double material_present(const PipeState<double>& initial) {
+  CompensatedSum sum;
+  const auto& terrain = initial.terrain;
+  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+    if (!terrain.is_valid(cell)) continue;
+    sum.add(std::abs(terrain.values[cell]) + initial.sediment.values[cell] + initial.regolith.values[cell]);
+  }
+  return sum.value() * terrain.cell_size_x * terrain.cell_size_y;
+}
+
+// Σ|b_T − b_0|·l_x·l_y plus what is suspended, loosened or gone through the borders at the end.
+double material_moved(const Grid<double>& terrain_change, const PipeLedgerEntry& last) {
+  CompensatedSum sum;
+  for (std::size_t cell = 0; cell < terrain_change.size(); ++cell) {
+    if (terrain_change.is_valid(cell)) sum.add(std::abs(terrain_change.values[cell]));
+  }
+  return sum.value() * terrain_change.cell_size_x * terrain_change.cell_size_y + last.sediment + last.regolith +
+         last.boundary_out_sediment + last.boundary_out_regolith;
+}
+
+struct LedgerErrors {
+  std::vector<double> steps, water, material;  // relative, per entry
+  double max_water = 0.0, max_material = 0.0, max_cfl = 0.0;
+};
+
+LedgerErrors ledger_errors(const std::vector<PipeLedgerEntry>& ledger, double material) {
+  LedgerErrors errors;
+  const auto& initial = ledger.front();
+  for (const auto& entry : ledger) {
+    const double handled = water_handled(entry, initial);
+    const double water = handled > 0.0 ? std::abs(water_balance(entry, initial)) / handled : 0.0;
+    const double drift = material > 0.0 ? std::abs(material_drift(entry, initial)) / material : 0.0;
+    errors.steps.push_back(entry.step);
+    errors.water.push_back(std::max(water, drift_floor));
+    errors.material.push_back(std::max(drift, drift_floor));
+    errors.max_water = std::max(errors.max_water, water);
+    errors.max_material = std::max(errors.max_material, drift);
+    errors.max_cfl = std::max(errors.max_cfl, entry.max_cfl);
+  }
+  return errors;
+}
+
+// The pipe model's gravity waves: the flux gains Δt·A·g/l_x per metre of head and the depth loses
+// Δt/(l_x·l_y) per m³/s, a forward-backward scheme for waves of speed² A·g/l_y along x (A·g/l_x
+// along y) whatever the depth (the pipe's cross-section A stands for the depth of the shallow-water
+// equations). It is stable for Δt²·A·g·(1/(l_y·l_x²) + 1/(l_x·l_y²)) ≤ 1; beyond, the surface
+// oscillates from step to step (the K scaling keeps water non-negative, so nothing blows up, but
+// the flow is noise and float and double runs part ways).
+double pipe_wave_number(const PipeConstants& c) {
+  const double per_x = 1.0 / (c.length_y * c.length_x * c.length_x);
+  const double per_y = 1.0 / (c.length_x * c.length_y * c.length_y);
+  return c.time_step * std::sqrt(c.pipe_area * c.gravity * (per_x + per_y));
+}
+
+bool conservative(const PipeScenario& scenario) { return scenario.constants.transport == SedimentTransport::flux; }
+
+// The ledger checks of one backend (cpu_float: the informative ones); returns the errors per step
+// for the plot.
+LedgerErrors add_ledger_checks(const PipeScenario& scenario, const BackendRun& run, double material,
+                               const std::string& backend, CaseResult& result) {
+  const LedgerErrors errors = ledger_errors(run.ledger, material);
+  const auto& first = run.ledger.front();
+  const auto& last = run.ledger.back();
+  result.checks.push_back(informative_check(
+      "mass.rain_rounding." + backend, std::abs(rain_rounding(last)) / water_handled(last, first),
+      "|rain + sources asked for - water the additions added| / water handled: what rounding the additions lost"));
+  if (backend == "cpu_float") {
+    result.checks.push_back(informative_check(
+        "mass.material_drift.cpu_float", errors.max_material,
+        "ref<float>, heights stored as plain floats: the float trap (erosion below the height's float spacing lost)"));
+    return errors;
+  }
+  const bool gpu = backend == "gpu";
+  result.checks.push_back(bounded_check(
+      "mass.water_balance." + backend, errors.max_water, gpu ? gpu_water_bound : cpu_water_bound, std::nullopt,
+      "max over steps of |W_t - W_0 - added + evaporated + out| / (W_0 + rain + sources) (issue 3's figure)"));
+  const Snapshot end = snapshot(run.final_state, scenario.initial.terrain, last.step);
+  const double drift_of_moved =
+      std::abs(material_drift(last, first)) / std::max(material_moved(end.terrain_change, last), drift_floor);
+  const std::string material_detail =
+      "max over steps of |Δ(terrain + sediment + regolith) + out| / Σ(|b_0| + s_0 + r_0)·l_x·l_y";
+  if (conservative(scenario)) {
+    result.checks.push_back(bounded_check("mass.material_drift." + backend, errors.max_material,
+                                          gpu ? gpu_material_bound : cpu_material_bound, std::nullopt,
+                                          material_detail + "; flux transport conserves"));
+    result.checks.push_back(informative_check("mass.material_drift_of_moved." + backend, drift_of_moved,
+                                              "final drift / material moved (eroded, deposited, suspended, out)"));
+  } else {
+    const double unbounded = std::numeric_limits<double>::infinity();
+    result.checks.push_back(bounded_check("mass.material_drift." + backend, errors.max_material, semi_lagrangian_warn,
+                                          unbounded, material_detail + "; semi-Lagrangian transport is not conservative"));
+    result.checks.push_back(bounded_check("mass.material_drift_of_moved." + backend, drift_of_moved,
+                                          semi_lagrangian_warn, unbounded,
+                                          "final drift / material moved; semi-Lagrangian transport creates or destroys "
+                                          "material: warn, a property of the method"));
+  }
+  // The K cap gives exactly 1 in exact arithmetic; the float velocity rounds a few times.
+  result.checks.push_back(bounded_check("stability.max_cfl." + backend, errors.max_cfl, 1.0 + 8.0 * float_roundoff,
+                                        std::numeric_limits<double>::infinity(),
+                                        "largest Δt·|u|/l_x or Δt·|v|/l_y of the run (the K scaling caps it at 1 where a "
+                                        "cell drains in one step); above 1 the flow outruns a cell per step"));
+  return errors;
+}
+
+double largest_abs(const Grid<double>& field) {
+  double largest = 0.0;
+  for (std::size_t cell = 0; cell < field.size(); ++cell) {
+    if (field.is_valid(cell)) largest = std::max(largest, std::abs(field.values[cell]));
+  }
+  return largest;
+}
+
+// The fields compared between backends: the terrain as its change b − b_0, water, sediment.
+struct ComparedField {
+  const char* name;
+  Grid<double> Snapshot::*field;
+};
+
+constexpr ComparedField compared_fields[] = {{"terrain_change", &Snapshot::terrain_change},
+                                             {"water", &Snapshot::water},
+                                             {"sediment", &Snapshot::sediment}};
+
+// A floor for the yardsticks below: rounded_operations_per_step float roundings of the field's
+// largest value, so a field that float and double compute alike still gets a few ulps.
+double rounding_floor(const Grid<double>& field) { return rounded_operations_per_step * float_roundoff * largest_abs(field); }
+
+// One step from the initial state, GPU vs ref<float>. Both are float computations of the same step;
+// they differ from ref<double> by their roundings (the GPU's base-plus-change terrain rounds less,
+// plain float storage more), so by the triangle inequality |gpu − float| ≤ |gpu − double| +
+// |float − double| ≤ 2·max|float − double| + the floor, if the GPU is no less exact than ref<float>.
+// A logic error (a stage missing, a wrong index) shows as far more than that.
+void add_one_step_parity(const PipeScenario& scenario, CaseResult& result) {
+  reference::PipeErosion<float> float_step(cast_state<float>(scenario.initial), scenario.constants, scenario.forcing);
+  float_step.step();
+  reference::PipeErosion<double> double_step(scenario.initial, scenario.constants, scenario.forcing);
+  double_step.step();
+  gpu::PipeErosion gpu_step(scenario.initial, scenario.constants, scenario.forcing, false);
+  gpu_step.step();
+  const auto& terrain = scenario.initial.terrain;
+  const Snapshot truth = snapshot(double_step.state(), terrain, 1);
+  const Snapshot expected = snapshot(float_step.state(), terrain, 1);
+  const Snapshot measured = snapshot(gpu_step.state(), terrain, 1);
+  for (const auto& [name, field] : compared_fields) {
+    const FieldDifference difference = field_difference(expected.*field, measured.*field);
+    const double float_error = field_difference(truth.*field, expected.*field).max_abs;
+    const double bound = 2.0 * float_error + rounding_floor(truth.*field);
+    result.checks.push_back(bounded_check(
+        fmt::format("parity.one_step.{}.gpu_vs_float", name), difference.max_abs, bound, std::nullopt,
+        fmt::format("max |gpu - ref<float>| after one step, m ({} cells differ in any bit); bound 2·max|ref<float> - "
+                    "ref<double>| ({:.3g}) + 32 float roundings of the field",
+                    difference.differing_bits, float_error)));
+  }
+}
+
+// N steps, GPU vs ref<double>. Model: the GPU's distance from ref<double> grows as ref<float>'s does —
+// both are float runs of the same equations, and the flow's thresholds (K scaling, capacity above or
+// below s, max(0, ·)) switch on single roundings and carry the switch on, so neither grows by a
+// fixed rate. Bound 4× ref<float>'s distance at the end (or the rounding floor), `warn` up to 16×.
+void add_parity_vs_double(const BackendRun& truth, const BackendRun& float_run, const BackendRun& gpu_run,
+                          const RunOptions& options, CaseResult& result) {
+  SeriesPlot plot{.title = "Distance from ref<double> along the run",
+                  .x_label = "step",
+                  .y_label = "max |· - ref<double>| (m; exact zeros at 1e-18)",
+                  .log_y = true};
+  const std::size_t shots = std::min({truth.checkpoints.size(), float_run.checkpoints.size(), gpu_run.checkpoints.size()});
+  if (shots == 0) return;
+  for (const auto& [name, field] : compared_fields) {
+    Series gpu_series{.label = std::string(name) + " gpu"};
+    Series float_series{.label = std::string(name) + " ref<float>", .dashed = true};
+    FieldDifference gpu_last, float_last;
+    for (std::size_t i = 0; i < shots; ++i) {
+      gpu_last = field_difference(truth.checkpoints[i].*field, gpu_run.checkpoints[i].*field);
+      float_last = field_difference(truth.checkpoints[i].*field, float_run.checkpoints[i].*field);
+      const double step = truth.checkpoints[i].step;
+      gpu_series.x.push_back(step);
+      gpu_series.y.push_back(std::max(gpu_last.max_abs, drift_floor));
+      float_series.x.push_back(step);
+      float_series.y.push_back(std::max(float_last.max_abs, drift_floor));
+    }
+    const int steps = truth.checkpoints[shots - 1].step;
+    const double yardstick = std::max(float_last.max_abs, rounding_floor(truth.checkpoints[shots - 1].*field));
+    result.checks.push_back(bounded_check(
+        fmt::format("parity.{}.gpu_vs_double", name), gpu_last.max_abs, 4.0 * yardstick, 16.0 * yardstick,
+        fmt::format("max |gpu - ref<double>| after {} steps, m; ref<float> is {:.3g} m away: bound 4× that, warn "
+                    "up to 16×",
+                    steps, float_last.max_abs)));
+    result.checks.push_back(informative_check(fmt::format("parity.{}.rms.gpu_vs_double", name), gpu_last.rms,
+                                              "RMS of gpu - ref<double> after the run, m"));
+    plot.series.push_back(std::move(gpu_series));
+    plot.series.push_back(std::move(float_series));
+  }
+  if (options.report_dir.empty()) return;
+  std::string reason;
+  if (auto artifact = plot_series(plot, options.report_dir, result.name + "/parity.png",
+                                  "distance from ref<double> at the checkpoints: GPU (solid), ref<float> (dashed)",
+                                  reason)) {
+    result.artifacts.push_back(*artifact);
+  } else {
+    result.notes.push_back("parity plot unavailable: " + reason);
+  }
+}
+
+std::size_t differing_cells(const PipeState<double>& a, const PipeState<double>& b) {
+  return field_difference(a.terrain, b.terrain).differing_bits + field_difference(a.water, b.water).differing_bits +
+         field_difference(a.sediment, b.sediment).differing_bits;
+}
+
+BackendRun run_gpu(const PipeScenario& scenario, const std::vector<int>& at, CaseResult& result) {
+  BackendRun run;
+  {
+    gpu::PipeErosion erosion(scenario.initial, scenario.constants, scenario.forcing, true);
+    const auto state_of = [](const gpu::PipeErosion& e) { return e.state(); };
+    step_through(erosion, scenario.params.steps, at, scenario.initial.terrain, state_of, run.checkpoints);
+    run.ledger = erosion.ledger();
+    run.final_state = erosion.state();
+  }
+  gpu::PipeErosion timed(scenario.initial, scenario.constants, scenario.forcing, false);
+  result.timings.gpu_ms = gpu_wall_ms([&] { timed.run(scenario.params.steps); });
+  result.timings.gpu_reps = 1;
+  result.checks.push_back(bounded_check("determinism.gpu", double(differing_cells(run.final_state, timed.state())),
+                                        0.0, std::nullopt,
+                                        "terrain, water and sediment cells differing in any bit between two GPU runs"));
+  result.notes.push_back(fmt::format("GPU: {} compute passes per step", timed.passes_per_step()));
+  return run;
+}
+
+Series ledger_series(const std::string& label, const std::vector<double>& steps, const std::vector<double>& values,
+                     bool dashed = false) {
+  return {.label = label, .x = steps, .y = values, .dashed = dashed};
+}
+
+void plot_ledgers(const BackendRun& truth, const std::vector<std::pair<std::string, LedgerErrors>>& errors,
+                  const RunOptions& options, CaseResult& result) {
+  SeriesPlot error_plot{.title = "Ledger error over the steps",
+                        .x_label = "step",
+                        .y_label = "relative error (exact zeros at 1e-18)",
+                        .log_y = true};
+  for (const auto& [backend, error] : errors) {
+    error_plot.series.push_back(ledger_series("water balance " + backend, error.steps, error.water));
+    error_plot.series.push_back(ledger_series("material drift " + backend, error.steps, error.material, true));
+  }
+  SeriesPlot volume_plot{.title = "Water ledger (ref<double>)", .x_label = "step", .y_label = "m³"};
+  std::vector<double> steps, water, inflow, evaporated, out;
+  for (const auto& entry : truth.ledger) {
+    steps.push_back(entry.step);
+    water.push_back(entry.water);
+    inflow.push_back(entry.rain_in + entry.source_in);
+    evaporated.push_back(entry.evaporated);
+    out.push_back(entry.boundary_out_water);
+  }
+  volume_plot.series = {ledger_series("water held W_t", steps, water), ledger_series("rain and sources in", steps, inflow),
+                        ledger_series("evaporated", steps, evaporated), ledger_series("out through borders", steps, out)};
+  if (options.report_dir.empty()) return;
+  for (const auto& [plot, file, caption] :
+       {std::tuple{&error_plot, "ledger_error.png", "water balance (solid) and material drift (dashed), relative"},
+        std::tuple{&volume_plot, "ledger_volumes.png", "water held and what came in and went out, m³"}}) {
+    std::string reason;
+    if (auto artifact = plot_series(*plot, options.report_dir, result.name + "/" + file, caption, reason)) {
+      result.artifacts.push_back(*artifact);
+    } else {
+      result.notes.push_back(fmt::format("{} unavailable: {}", file, reason));
+    }
+  }
+}
+
+Grid<double> speed(const PipeState<double>& state) {
+  Grid<double> magnitude = state.velocity_x;
+  for (std::size_t cell = 0; cell < magnitude.size(); ++cell) {
+    magnitude.values[cell] = std::hypot(state.velocity_x.values[cell], state.velocity_y.values[cell]);
+  }
+  return magnitude;
+}
+
+Grid<double> zeros_like(const Grid<double>& field) {
+  Grid<double> zero = field;
+  std::fill(zero.values.begin(), zero.values.end(), 0.0);
+  return zero;
+}
+
+void write_pictures(const PipeScenario& scenario, const BackendRun& truth, const BackendRun* gpu_run,
+                    const RunOptions& options, CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const auto folder = options.report_dir / result.name;
+  const auto add = [&](const std::string& file, const std::string& caption) {
+    result.artifacts.push_back({result.name + "/" + file, "image", caption});
+  };
+  const auto& before = scenario.initial.terrain;
+  const auto& after = truth.final_state;
+  const FieldTotals totals = field_totals(before);
+  const double exaggeration = write_height_image(before, totals.low, totals.high, folder / "before.png");
+  add("before.png", "terrain before");
+  write_height_image(after.terrain, totals.low, totals.high, folder / "after_cpu.png", exaggeration);
+  add("after_cpu.png", "terrain after, ref<double>");
+  const auto change = write_difference_image(before, after.terrain, folder / "erosion_cpu.png");
+  add("erosion_cpu.png", fmt::format("b_T - b_0, ref<double>: blue eroded, red deposited, full colour at {:.3g} m",
+                                     change.scale_used));
+  const Grid<double> zero = zeros_like(before);
+  const auto water = write_difference_image(zero, after.water, folder / "water_cpu.png");
+  add("water_cpu.png", fmt::format("water depth, ref<double>: white dry, full red at {:.3g} m", water.scale_used));
+  const auto sediment = write_difference_image(zero, after.sediment, folder / "sediment_cpu.png");
+  add("sediment_cpu.png", fmt::format("suspended sediment, ref<double>: full red at {:.3g} m", sediment.scale_used));
+  const auto velocity = write_difference_image(zero, speed(after), folder / "speed_cpu.png");
+  add("speed_cpu.png", fmt::format("|v|, ref<double>: full red at {:.3g} m/s", velocity.scale_used));
+  if (!gpu_run) return;
+  const auto gpu_vs_cpu = write_difference_image(after.terrain, gpu_run->final_state.terrain, folder / "gpu_vs_cpu.png");
+  add("gpu_vs_cpu.png", fmt::format("terrain, GPU - ref<double>: max {:.3g} m", gpu_vs_cpu.max_abs));
+}
+
+void run_pipe_case(const PipeScenario& scenario, const RunOptions& options, CaseResult& result) {
+  const auto& terrain = scenario.initial.terrain;
+  result.width = terrain.width;
+  result.height = terrain.height;
+  for (const auto& note : scenario.notes) result.notes.push_back(note);
+  if (!options.report_dir.empty()) std::filesystem::create_directories(options.report_dir / result.name);
+  const auto at = checkpoint_steps(scenario.params.steps, scenario.checkpoints);
+  const double material = material_present(scenario.initial);
+  result.checks.push_back(bounded_check(
+      "stability.pipe_wave_number", pipe_wave_number(scenario.constants), 1.0, std::numeric_limits<double>::infinity(),
+      "Δt·sqrt(A·g·(1/(l_y·l_x²) + 1/(l_x·l_y²))): the explicit pipe scheme's gravity waves are stable up to 1"));
+
+  if (options.progress) options.progress->stage("CPU reference (double)");
+  const BackendRun truth = run_reference_double(scenario, at, result);
+  std::vector<std::pair<std::string, LedgerErrors>> errors;
+  errors.emplace_back("cpu", add_ledger_checks(scenario, truth, material, "cpu", result));
+
+  if (options.progress) options.progress->stage("CPU reference (float)");
+  const BackendRun float_run = run_reference_float(scenario, at);
+  errors.emplace_back("cpu_float", add_ledger_checks(scenario, float_run, material, "cpu_float", result));
+
+  std::optional<BackendRun> gpu_run;
+  if (options.gpu_available) {
+    if (options.progress) options.progress->stage("GPU");
+    gpu_run = run_gpu(scenario, at, result);
+    errors.emplace_back("gpu", add_ledger_checks(scenario, *gpu_run, material, "gpu", result));
+    add_one_step_parity(scenario, result);
+    add_parity_vs_double(truth, float_run, *gpu_run, options, result);
+  } else {
+    for (const char* name : {"mass.water_balance.gpu", "mass.material_drift.gpu", "parity.gpu", "determinism.gpu"}) {
+      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    }
+  }
+  plot_ledgers(truth, errors, options, result);
+  write_pictures(scenario, truth, gpu_run ? &*gpu_run : nullptr, options, result);
+}
+
+PreparedTwin prepare_pipe(const nlohmann::json& resolved, const LoadedInput& input) {
+  PreparedTwin prepared;
+  prepared.run = [scenario = make_scenario(resolved, input.heights)](const nlohmann::json&, const RunOptions& options,
+                                                                     CaseResult& result) {
+    run_pipe_case(scenario, options, result);
+  };
+  return prepared;
+}
+
+// Mei, Decaudin, Hu 2007's simulation time per step on a GeForce 8800 GTX (as quoted by issue 3).
+constexpr std::pair<int, double> mei_2007_ms_per_step[] = {{256, 1.29}, {512, 2.38}, {1024, 6.65}, {2048, 22.88}};
+
+BenchmarkRow step_row(const std::string& backend, int size, int reps, double ms_per_step, const std::string& device) {
+  BenchmarkRow row{.algorithm = "erosion.pipe", .backend = backend, .size = size, .iterations = 1, .reps = reps,
+                   .median_ms = ms_per_step, .device = device};
+  row.mcell_iterations_per_s = double(size) * size / (ms_per_step * 1e-3) / 1e6;
+  return row;
+}
+
+// A cone with slopes of about 0.1 and 0.1 m of water on every cell under light rain: every cell is
+// wet, so every stage does its full work.
+PipeScenario benchmark_scenario(int size) {
+  const nlohmann::json input = {{"generator", "cone"}, {"width", size}, {"height", size}, {"cell_size", 1.0},
+                                {"peak", 0.05 * size}, {"noise", 0.1}, {"seed", 7}};
+  const auto params = resolve_params("erosion.pipe", pipe_specs(), {{"rain_rate", 1e-4}, {"capacity", 0.01}});
+  return make_scenario(params, load_input(input, nullptr, {}).heights);
+}
+
+// ms per step: the median over `reps` runs of `steps` steps, divided by `steps`, after one warm-up step.
+template <class Erosion>
+double median_ms_per_step(Erosion& erosion, int reps, int steps, double (*clock)(const std::function<void()>&)) {
+  erosion.step();
+  std::vector<double> times;
+  for (int rep = 0; rep < reps; ++rep) times.push_back(clock([&] { erosion.run(steps); }) / steps);
+  return median(times);
+}
+
+// Rows per grid side: the reference in double (fewer steps: it is slow by design), the GPU without
+// ledger downloads, and Mei 2007's published time, each in ms per step.
+std::vector<BenchmarkRow> benchmark_pipes(const BenchmarkOptions& options, bool gpu_available,
+                                          const Environment& environment) {
+  std::vector<BenchmarkRow> rows;
+  const int gpu_steps = std::max(1, options.iterations);
+  const int cpu_steps = std::max(1, options.iterations / 5);
+  for (const int size : options.sizes) {
+    const PipeScenario scenario = benchmark_scenario(size);
+    reference::PipeErosion<double> reference_run(scenario.initial, scenario.constants, scenario.forcing);
+    rows.push_back(step_row("cpu", size, options.reps,
+                            median_ms_per_step(reference_run, options.reps, cpu_steps, cpu_wall_ms), environment.cpu));
+    if (gpu_available) {
+      gpu::PipeErosion gpu_run(scenario.initial, scenario.constants, scenario.forcing, false);
+      BenchmarkRow row = step_row("gpu", size, options.reps,
+                                  median_ms_per_step(gpu_run, options.reps, gpu_steps, gpu_wall_ms),
+                                  environment.gl_renderer);
+      row.algorithm += fmt::format(" ({} passes/step)", gpu_run.passes_per_step());
+      rows.push_back(row);
+    }
+    for (const auto& [side, ms] : mei_2007_ms_per_step) {
+      if (side == size) rows.push_back(step_row("published", size, 0, ms, "NVIDIA GeForce 8800 GTX (Mei et al. 2007)"));
+    }
+  }
+  return rows;
+}
+
+}  // namespace
+
+Algorithm pipe_algorithm() {
+  return {.name = "erosion.pipe",
+          .summary = "virtual-pipe hydraulic erosion with a water and material ledger (Mei 2007; seed 001's variant)",
+          .source = "seed 000 §3.4 and Appendix B (Mei, Decaudin, Hu 2007, eqs. 2.10-2.25); seed 001 §3.3-3.9",
+          .params = &pipe_specs(),
+          .prepare = prepare_pipe,
+          .iterates = false,
+          .has_field_twin = false,
+          .benchmark = benchmark_pipes};
+}
+
+}  // namespace gt
