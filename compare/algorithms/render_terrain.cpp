@@ -9,6 +9,8 @@
 //   erode = none      the input as it is
 //   erode = thermal   seed 000's two-pass thermal erosion (reference/erosion/thermal.hpp) with the
 //                     thermal_* parameters (erosion.thermal's, in physical heights: T = tan α)
+//   erode = pipe      Mei's virtual-pipe erosion (reference/erosion/pipes.hpp) from a dry start
+//                     with the pipe_* parameters (erosion.pipe's hydraulic ones; rain brings water)
 // Another erosion is one more choice, its parameters prefixed likewise (append_prefixed), and one
 // more branch in eroded().
 //
@@ -30,7 +32,9 @@
 #include "compare/checks/mesh.hpp"
 #include "compare/render_case.hpp"
 #include "core/errors.hpp"
+#include "core/params/hydraulic.hpp"
 #include "core/params/thermal.hpp"
+#include "reference/erosion/pipes.hpp"
 #include "reference/erosion/thermal.hpp"
 #include "reference/render/phong.hpp"
 #include "reference/render/terrain_solid.hpp"
@@ -79,10 +83,11 @@ const ParamSpecs& terrain_specs() {
          "pair shares its colours), rock by slope (skirts and base are rock); plain: seed 004's one albedo"},
         {"min_covered_share", ParamKind::real, 0.05, 0.0, 1.0, {}, "1",
          "least share of pixels the solid must cover in the reference image (0: not checked)"},
-        {"erode", ParamKind::choice, "none", 0, 0, {"none", "thermal"}, "",
+        {"erode", ParamKind::choice, "none", 0, 0, {"none", "thermal", "pipe"}, "",
          "erosion applied to the heightmap (reference, double) before meshing"},
     };
     append_prefixed(list, thermal_param_specs(), "thermal", {"normalised", "vertical_aspect"});
+    append_prefixed(list, hydraulic_param_specs(), "pipe", {});
     return list;
   }();
   return specs;
@@ -93,25 +98,49 @@ struct Eroded {
   std::string description;  // "" when not eroded
 };
 
-Eroded eroded(const Heightmap& input, const nlohmann::json& resolved) {
-  const std::string erode = resolved.at("erode");
-  if (erode == "none") return {input, ""};
-  // erode == "thermal": physical heights (T = tan α, lengths the cell sizes).
+double largest_change(const Heightmap& before, const Heightmap& after) {
+  double moved = 0.0;
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    if (before.is_valid(k)) moved = std::max(moved, std::abs(after.values[k] - before.values[k]));
+  }
+  return moved;
+}
+
+// Physical heights (T = tan α, lengths the cell sizes).
+Eroded thermally_eroded(const Heightmap& input, const nlohmann::json& resolved) {
   nlohmann::json given = unprefixed(resolved, "thermal");
   given["normalised"] = false;
   given["vertical_aspect"] = 0.0;
   const ThermalParams params = thermal_params_from_json(given);
   const ThermalConstants constants = thermal_constants(params, input);
   Eroded out{reference::thermal_erosion(input, constants, params.iterations, params.neighbourhood), ""};
-  double moved = 0.0;
-  for (std::size_t k = 0; k < input.size(); ++k) {
-    if (input.is_valid(k)) moved = std::max(moved, std::abs(out.heights.values[k] - input.values[k]));
-  }
   out.description = fmt::format("thermal erosion (reference, double): {} iterations, talus {}°, strength {}, {}; "
                                 "largest height change {:.3g} {}",
                                 params.iterations, params.talus_angle_deg, params.strength,
-                                neighbourhood_name(params.neighbourhood), moved, input.vertical_unit);
+                                neighbourhood_name(params.neighbourhood), largest_change(input, out.heights),
+                                input.vertical_unit);
   return out;
+}
+
+// Mei's pipes from a dry start (erosion.pipe's parameters; rain_rate brings the water).
+Eroded pipe_eroded(const Heightmap& input, const nlohmann::json& resolved) {
+  const HydraulicParams params = hydraulic_params_from_json(unprefixed(resolved, "pipe"));
+  reference::PipeErosion<double> erosion(dry_pipe_state(input), pipe_constants(params, input));
+  erosion.run(params.steps);
+  Eroded out{erosion.state().terrain, ""};
+  out.description = fmt::format("pipe erosion (reference, double): {} steps of {} s, rain {} m/s, K_c {} s, {} "
+                                "transport; largest height change {:.3g} {}",
+                                params.steps, params.time_step, params.rain_rate, params.capacity,
+                                sediment_transport_name(params.transport), largest_change(input, out.heights),
+                                input.vertical_unit);
+  return out;
+}
+
+Eroded eroded(const Heightmap& input, const nlohmann::json& resolved) {
+  const std::string erode = resolved.at("erode");
+  if (erode == "thermal") return thermally_eroded(input, resolved);
+  if (erode == "pipe") return pipe_eroded(input, resolved);
+  return {input, ""};
 }
 
 // The base below the eroded terrain lies where the un-eroded terrain's automatic base would (the
