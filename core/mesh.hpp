@@ -8,10 +8,14 @@
 //               tetrahedra), so that meshes of neighbouring chunks or of two backends can be
 //               welded and compared exactly; empty when unknown
 // Mesh = TriangleMesh<double>.
+// bounding_box(mesh): the smallest axis-aligned box holding every position (low = +inf, high =
+//   -inf on each axis for a mesh without positions).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace gt {
@@ -24,5 +28,24 @@ struct TriangleMesh {
 };
 
 using Mesh = TriangleMesh<double>;
+
+template <class Real>
+struct Box3 {
+  std::array<Real, 3> low, high;
+};
+
+template <class Real>
+Box3<Real> bounding_box(const TriangleMesh<Real>& mesh) {
+  Box3<Real> box;
+  box.low.fill(std::numeric_limits<Real>::infinity());
+  box.high.fill(-std::numeric_limits<Real>::infinity());
+  for (const auto& position : mesh.positions) {
+    for (int axis = 0; axis < 3; ++axis) {
+      box.low[axis] = std::min(box.low[axis], position[axis]);
+      box.high[axis] = std::max(box.high[axis], position[axis]);
+    }
+  }
+  return box;
+}
 
 }  // namespace gt

@@ -19,15 +19,8 @@ double extent(const Box& box, int axis) { return box[1][axis] - box[0][axis]; }
 // The bounding box of all vertex positions; InputError when nothing can be seen from above.
 Box checked_box(const Mesh& mesh) {
   if (mesh.triangles.empty()) throw InputError("heightmap from a mesh: the mesh has no triangles");
-  Box box;
-  box[0].fill(std::numeric_limits<double>::infinity());
-  box[1].fill(-std::numeric_limits<double>::infinity());
-  for (const auto& position : mesh.positions) {
-    for (int axis = 0; axis < 3; ++axis) {
-      box[0][axis] = std::min(box[0][axis], position[axis]);
-      box[1][axis] = std::max(box[1][axis], position[axis]);
-    }
-  }
+  const Box3<double> bounds = bounding_box(mesh);
+  const Box box{bounds.low, bounds.high};
   if (!(extent(box, 0) > 0.0) || !(extent(box, 1) > 0.0)) {
     throw InputError("heightmap from a mesh: the mesh has no extent in x or y, so nothing is seen from above");
   }

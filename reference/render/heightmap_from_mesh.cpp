@@ -17,17 +17,9 @@ struct Box {
   double centre(int axis) const { return 0.5 * (low[axis] + high[axis]); }  // eq. 4.1's mean of opposite faces
 };
 
-Box bounding_box(const Mesh& mesh) {
-  Box box;
-  box.low.fill(std::numeric_limits<double>::infinity());
-  box.high.fill(-std::numeric_limits<double>::infinity());
-  for (const auto& position : mesh.positions) {
-    for (int axis = 0; axis < 3; ++axis) {
-      box.low[axis] = std::min(box.low[axis], position[axis]);
-      box.high[axis] = std::max(box.high[axis], position[axis]);
-    }
-  }
-  return box;
+Box box_of(const Mesh& mesh) {
+  const Box3<double> bounds = bounding_box(mesh);
+  return {bounds.low, bounds.high};
 }
 
 // Eq. 4.2 applied to every vertex: (s_x(x - c_x), s_y(y - c_y), 0.5 - s_z(z - c_z), 1), with z'
@@ -59,7 +51,7 @@ Grid<T> texel_grid(int width, int height, const Box& box) {
 
 void require_visible_from_above(const Mesh& mesh) {
   if (mesh.triangles.empty()) throw InputError("heightmap from a mesh: the mesh has no triangles");
-  const Box box = bounding_box(mesh);
+  const Box box = box_of(mesh);
   if (!(box.extent(0) > 0.0) || !(box.extent(1) > 0.0)) {
     throw InputError("heightmap from a mesh: the mesh has no extent in x or y, so nothing is seen from above");
   }
@@ -67,7 +59,7 @@ void require_visible_from_above(const Mesh& mesh) {
 
 MeshHeightmap heightmap_from_mesh(const Mesh& mesh, int width, int height, int subpixel_bits) {
   require_visible_from_above(mesh);
-  const Box box = bounding_box(mesh);
+  const Box box = box_of(mesh);
   const std::array<double, 3> scale = {2.0 / box.extent(0), 2.0 / box.extent(1),
                                        box.extent(2) > 0.0 ? 1.0 / box.extent(2) : 1.0};  // eq. 4.1
   RasterTarget target(width, height, 1, 0.0, 1.0);

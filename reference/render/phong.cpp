@@ -33,15 +33,7 @@ struct Bounds {
 };
 
 Bounds bounds(const Mesh& mesh) {
-  Vec3 low, high;
-  low.fill(std::numeric_limits<double>::infinity());
-  high.fill(-std::numeric_limits<double>::infinity());
-  for (const auto& p : mesh.positions) {
-    for (int axis = 0; axis < 3; ++axis) {
-      low[axis] = std::min(low[axis], p[axis]);
-      high[axis] = std::max(high[axis], p[axis]);
-    }
-  }
+  const auto [low, high] = bounding_box(mesh);
   const Vec3 diagonal = high - low;
   return {0.5 * (low + high), 0.5 * std::sqrt(dot(diagonal, diagonal))};
 }
