@@ -80,6 +80,7 @@ struct BenchmarkRow {
   int dimensions = 2;         // size^dimensions cells (3: voxels of a cave block)
   std::optional<double> mtriangles_per_s;  // meshers: output triangles per second, millions
   std::string note;           // why a row has no time (the size did not fit the device)
+  std::string detail;         // what a timed row measured beyond its numbers (GPU passes per step, a published source)
 };
 
 struct Report {

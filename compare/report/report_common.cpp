@@ -232,7 +232,9 @@ std::string benchmark_triangle_rate_text(const BenchmarkRow& row) {
   return row.mtriangles_per_s ? format_value(*row.mtriangles_per_s) : "";
 }
 
-std::string benchmark_note_text(const BenchmarkRow& row) { return row.note.empty() ? "" : "not run: " + row.note; }
+std::string benchmark_note_text(const BenchmarkRow& row) {
+  return row.note.empty() ? row.detail : "not run: " + row.note;
+}
 
 }  // namespace gt::report_detail
 

@@ -71,7 +71,8 @@ json benchmark_to_json(const BenchmarkRow& row) {
           {"device", row.device},
           {"dimensions", row.dimensions},
           {"mtriangles_per_s", row.mtriangles_per_s ? number_or_null(*row.mtriangles_per_s) : json(nullptr)},
-          {"note", row.note}};
+          {"note", row.note},
+          {"detail", row.detail}};
 }
 
 }  // namespace
