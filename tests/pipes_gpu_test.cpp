@@ -2,12 +2,14 @@
 // (reference/erosion/pipes.hpp) and on its own:
 //   - one step from the same state agrees with ref<float> bit for bit in every field but the
 //     terrain, whose base + change storage differs from ref<float>'s rounding of b by at most the
-//     roundings ref<float> makes (half an ulp of |b| per write); every transport, border, variant;
+//     roundings ref<float> makes (half an ulp of |b| per write); every transport, border, variant,
+//     with 4 pipes and with 8 (issue 3);
 //   - many steps follow ref<double> within a linear growth model that does not involve the base
 //     height (ref<float> at 500 m does not);
 //   - the water ledger closes, the flux form conserves material at a 500 m base where ref<float>
 //     does not (the float trap, issue 3), nothing turns negative or NaN;
-//   - two runs are bitwise identical (with and without the ledger's downloads); bad input is refused.
+//   - two runs are bitwise identical (with and without the ledger's downloads); bad input (a diagonal
+//     flux in a 4-pipe state too) is refused.
 //
 // Rounding bounds use u = 2^-24 (float) or 2^-53 (double), the unit roundoff: one rounded
 // operation changes a value v by at most u·|v| (half an ulp of v).
@@ -69,8 +71,8 @@ PipeState<Real> cast_state(const PipeState<double>& state) {
   PipeState<Real> out{state.terrain.cast<Real>(),    state.water.cast<Real>(),      state.sediment.cast<Real>(), {},
                       state.velocity_x.cast<Real>(), state.velocity_y.cast<Real>(), state.regolith.cast<Real>()};
   for (const auto& flux : state.outflow) {
-    out.outflow.push_back({static_cast<Real>(flux[0]), static_cast<Real>(flux[1]), static_cast<Real>(flux[2]),
-                           static_cast<Real>(flux[3])});
+    auto& cast = out.outflow.emplace_back();
+    for (std::size_t k = 0; k < flux.size(); ++k) cast[k] = static_cast<Real>(flux[k]);
   }
   return out;
 }
@@ -142,12 +144,13 @@ struct OneStepCase {
   SedimentTransport transport;
   PipeBoundary boundary;
   Variant variant;
+  int pipes = 4;
 };
 
 std::string case_name(const OneStepCase& c) {
   const char* variants[] = {"plain", "regolith_uniform_diffusion", "regolith_water_diffusion"};
   return std::string(gt::sediment_transport_name(c.transport)) + "_" + gt::pipe_boundary_name(c.boundary) + "_" +
-         variants[static_cast<int>(c.variant)];
+         variants[static_cast<int>(c.variant)] + (c.pipes == 8 ? "_8_pipes" : "");
 }
 
 void PrintTo(const OneStepCase& c, std::ostream* out) { *out << case_name(c); }
@@ -159,8 +162,8 @@ constexpr int small_width = 16, small_height = 12;
 // b + d_A (< 4 m: 22 significant bits) and every head is exact in float: ref<float>'s
 // (b + d) − (b_n + d_n) and the GPU's (b0 − b0_n) + (Δb − Δb_n) + (d − d_n) are the same number and
 // the comparison isolates the logic. No-data cells inside and on the border, dry cells, sediment,
-// regolith and initial fluxes on some cells.
-PipeState<double> small_state() {
+// regolith and initial fluxes (in each of the `pipes` pipes) on some cells.
+PipeState<double> small_state(int pipes = 4) {
   auto terrain = field(small_width, small_height, 2.0, 1.0, [](int x, int y) {
     return quantized(1.5 + std::sin(0.7 * x) * std::cos(0.9 * y) + 0.5 * noise(x, y, 3), 0x1p-8);
   });
@@ -173,7 +176,7 @@ PipeState<double> small_state() {
       state.water.values[i] = noise(x, y, 5) < 0.2 ? 0.0 : quantized(0.5 * noise(x, y, 7), 0x1p-20);
       state.sediment.values[i] = noise(x, y, 9) < 0.5 ? 0.0 : 0.01 * noise(x, y, 11);
       state.regolith.values[i] = noise(x, y, 21) < 0.5 ? 0.0 : 0.08 * noise(x, y, 23);
-      for (int k = 0; k < 4; ++k) state.outflow[i][k] = noise(x, y, 13) < 0.7 ? 0.0 : 0.1 * noise(x + k, y, 17);
+      for (int k = 0; k < pipes; ++k) state.outflow[i][k] = noise(x, y, 13) < 0.7 ? 0.0 : 0.1 * noise(x + k, y, 17);
       state.velocity_x.values[i] = noise(x, y, 25) - 0.5;  // overwritten by the step
     }
   }
@@ -201,6 +204,7 @@ HydraulicParams small_params(const OneStepCase& c) {
   params.depth_ramp = 0.05;
   params.transport = c.transport;
   params.boundary = c.boundary;
+  params.pipe_count = c.pipes;
   if (c.variant != Variant::plain) {
     params.regolith_depth = 0.05;
     params.regolith_dissolving_rate = 8.0;  // k_re = 1/4
@@ -215,7 +219,7 @@ HydraulicParams small_params(const OneStepCase& c) {
 class PipesGpuOneStep : public gt::testing::GlTestWithParam<OneStepCase> {};
 
 TEST_P(PipesGpuOneStep, MatchesTheFloatReference) {
-  const auto initial = small_state();
+  const auto initial = small_state(GetParam().pipes);
   const auto forcing = small_forcing();
   const auto constants = gt::pipe_constants(small_params(GetParam()), initial.terrain);
   gt::reference::PipeErosion<float> reference(cast_state<float>(initial), constants, forcing);
@@ -236,7 +240,7 @@ TEST_P(PipesGpuOneStep, MatchesTheFloatReference) {
   EXPECT_LE(largest_difference(actual.velocity_y, expected.velocity_y, mask), allowed(expected.velocity_y));
   double flux_difference = 0.0, largest_flux = 0.0;
   for (std::size_t i = 0; i < mask.size(); ++i) {
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < 8; ++k) {
       flux_difference = std::max(flux_difference, std::abs(actual.outflow[i][k] - expected.outflow[i][k]));
       largest_flux = std::max(largest_flux, static_cast<double>(expected.outflow[i][k]));
     }
@@ -302,7 +306,16 @@ INSTANTIATE_TEST_SUITE_P(
                       OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::open,
                                   Variant::regolith_uniform_diffusion},
                       OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::closed,
-                                  Variant::regolith_water_diffusion}),
+                                  Variant::regolith_water_diffusion},
+                      // 8 pipes (issue 3): both borders and transports, diagonal fluxes in the
+                      // initial state, exterior diagonals at the border and the no-data cells.
+                      OneStepCase{SedimentTransport::flux, PipeBoundary::closed, Variant::plain, 8},
+                      OneStepCase{SedimentTransport::flux, PipeBoundary::open, Variant::plain, 8},
+                      OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::closed, Variant::plain, 8},
+                      OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::open, Variant::plain, 8},
+                      OneStepCase{SedimentTransport::flux, PipeBoundary::open, Variant::regolith_water_diffusion, 8},
+                      OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::open,
+                                  Variant::regolith_uniform_diffusion, 8}),
     [](const ::testing::TestParamInfo<OneStepCase>& info) { return case_name(info.param); });
 
 TEST_F(PipesGpu, ThermalStepMatchesTheFloatReference) {
@@ -670,6 +683,19 @@ TEST_F(PipesGpu, RefusesBadInput) {
   HydraulicForcing negative_source;
   negative_source.sources = {{1, 0, -1.0}};
   EXPECT_NE(refused(gt::dry_pipe_state(terrain), negative_source).find("rate -1"), std::string::npos);
+}
+
+TEST_F(PipesGpu, RefusesDiagonalFluxWithFourPipes) {
+  // As the reference: a 4-pipe run holds no diagonal flux, so a state with some is refused.
+  const auto terrain = slope_state(6, 5, 0.0).terrain;
+  auto diagonal_flux = gt::dry_pipe_state(terrain);
+  diagonal_flux.outflow[7][5] = 0.5;
+  const auto message = gt::testing::refusal(
+      [&] { gt::gpu::PipeErosion(diagonal_flux, gt::pipe_constants(slope_params(), terrain)); });
+  EXPECT_NE(message.find("through pipe BR at cell 7: with 4 pipes it must be 0"), std::string::npos) << message;
+  auto eight = slope_params();
+  eight.pipe_count = 8;
+  EXPECT_EQ(gt::gpu::PipeErosion(diagonal_flux, gt::pipe_constants(eight, terrain)).state().outflow[7][5], 0.5);
 }
 
 TEST_F(PipesGpu, RefusesAStateThatTurnsNaN) {

@@ -3,7 +3,10 @@
 // the flux-form transport conserves material while the semi-Lagrangian one reports its drift,
 // water never turns negative, a lake at rest stays at rest, mirror symmetry, the CFL number, the
 // refusals, the seed's K example, deposition raising the terrain, float vs double agreement and
-// the float trap at 500 m; seed 001's regolith layer and sediment diffusion (both weightings).
+// the float trap at 500 m; seed 001's regolith layer and sediment diffusion (both weightings); the
+// 8-pipe option (issue 3): the K scaling over 8 pipes, the flux gain and velocity of the diagonals,
+// water and material balances, a more isotropic spread on a cone, mirror symmetry along the
+// diagonal, the refusal of other pipe counts.
 //
 // Rounding bounds below use u = 2^-53 (double) or 2^-24 (float), the unit roundoff: one rounded
 // operation changes a value v by at most u·|v|.
@@ -248,7 +251,7 @@ void expect_lake_at_rest(SedimentTransport transport) {
   EXPECT_EQ(largest_difference(state.terrain, terrain.template cast<Real>()), 0.0);
   EXPECT_EQ(largest_difference(state.water, water.template cast<Real>()), 0.0);
   EXPECT_EQ(largest_value(state.velocity_x) + largest_value(state.velocity_y) + largest_value(state.sediment), 0.0);
-  for (const auto& out : state.outflow) EXPECT_EQ(out, (std::array<Real, 4>{}));
+  for (const auto& out : state.outflow) EXPECT_EQ(out, (std::array<Real, 8>{}));
   EXPECT_EQ(erosion.ledger().back().max_cfl, 0.0);
 }
 
@@ -405,7 +408,7 @@ TEST(PipesReference, ReproducesTheSeedsKExample) {
   params.time_step = 0.02;
   PipeErosion<double> erosion(state, gt::pipe_constants(params, terrain));
   erosion.step();
-  for (double flux : erosion.state().outflow[terrain.index(1, 1)]) EXPECT_DOUBLE_EQ(flux, 1.25);
+  for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(erosion.state().outflow[terrain.index(1, 1)][k], 1.25);
   EXPECT_EQ(erosion.state().water.at(1, 1), 0.0);
   EXPECT_DOUBLE_EQ(erosion.state().water.at(0, 1), 0.025);
 }
@@ -620,3 +623,258 @@ TEST(PipesReference, CombinedThermalStepRelaxesADryCliff) {
   params.thermal_step = false;
   EXPECT_EQ(largest_difference(simulate<double>(terrain, dry, params).state().terrain, terrain), 0.0);
 }
+
+// ---------------------------------------------------------------------------------------------
+// The 8-pipe option (issue 3).
+
+namespace {
+
+// Mei's K example over 8 pipes: d_A = 0.1, Δt = 0.02, l = 1, 1.25 m³/s in each of the 8 pipes and
+// neighbours level with the centre (f̂ = f), so Σf̂·Δt = 0.2 m³ is twice the 0.1 m³ the cell holds:
+// K = 1/2, every flux 0.625 and every neighbour, diagonal ones included, receives 0.0125 m.
+TEST(PipesReference, EightPipesScaleByKSoNoCellSendsMoreThanItHolds) {
+  const auto terrain = field(3, 3, 1.0, 1.0, [](int x, int y) { return x == 1 && y == 1 ? 0.0 : 0.1; });
+  const auto water = field(3, 3, 1.0, 1.0, [](int x, int y) { return x == 1 && y == 1 ? 0.1 : 0.0; });
+  auto state = wet_state<double>(terrain, water);
+  state.outflow[terrain.index(1, 1)].fill(1.25);
+  auto params = quiet_params(1);
+  params.time_step = 0.02;
+  params.pipe_count = 8;
+  PipeErosion<double> erosion(state, gt::pipe_constants(params, terrain));
+  erosion.step();
+  for (double flux : erosion.state().outflow[terrain.index(1, 1)]) EXPECT_DOUBLE_EQ(flux, 0.625);
+  EXPECT_EQ(erosion.state().water.at(1, 1), 0.0);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 3; ++x) {
+      if (x == 1 && y == 1) continue;
+      EXPECT_DOUBLE_EQ(erosion.state().water.at(x, y), 0.0125) << x << "," << y;
+    }
+  }
+}
+
+// One wet cell on flat ground, 2 m x 1 m cells, no flux yet: every head is d_A, so f̂_k = Δt·A·g·d_A/l_k
+// and the neighbours receive water in proportion to 1/l_k (l = 2, 1 and sqrt(5) m). The diagonal
+// neighbour's velocity points along its pipe: (u, v) = ½·f·(l_x/l_d, l_y/l_d)/((l_y, l_x)·d̄).
+TEST(PipesReference, DiagonalPipesConductInverselyToTheirLength) {
+  const auto terrain = field(5, 5, 2.0, 1.0, [](int, int) { return 1.0; });
+  const auto water = field(5, 5, 2.0, 1.0, [](int x, int y) { return x == 2 && y == 2 ? 0.5 : 0.0; });
+  auto params = quiet_params(1);
+  params.time_step = 0.01;  // Σf̂·Δt = Δt²·A·g·d_A·Σ 1/l_k ≈ 4.7e-3 m³, far below the 1 m³ held: K = 1
+  params.pipe_count = 8;
+  PipeErosion<double> erosion(wet_state<double>(terrain, water), gt::pipe_constants(params, terrain));
+  erosion.step();
+  const auto& after = erosion.state();
+  const double diagonal = std::hypot(2.0, 1.0);
+  // Each received depth is Δt·f/(l_x·l_y) with f = gain·d_A/l_k: a few roundings of u each.
+  const double along_x = after.water.at(3, 2);
+  EXPECT_NEAR(after.water.at(2, 3) / along_x, 2.0, 8 * double_roundoff);
+  EXPECT_NEAR(after.water.at(3, 3) / along_x, 2.0 / diagonal, 8 * double_roundoff);
+  EXPECT_EQ(after.water.at(1, 1), after.water.at(3, 3));
+  EXPECT_EQ(after.water.at(1, 3), after.water.at(3, 1));
+  // (3, 3) was dry and received only through its BL pipe: u and v take 4 roundings each (the share
+  // l/l_d, two products, the division), and so does the expectation here.
+  const double flux = after.outflow[terrain.index(2, 2)][6];  // TR, towards (3, 3)
+  const double mean_depth = std::max(1e-3, 0.5 * after.water.at(3, 3));
+  const double u = 0.5 * flux * (2.0 / diagonal) / (1.0 * mean_depth);
+  const double v = 0.5 * flux * (1.0 / diagonal) / (2.0 * mean_depth);
+  EXPECT_GT(u, 0.0);
+  EXPECT_NEAR(after.velocity_x.at(3, 3), u, 8 * double_roundoff * u);
+  EXPECT_NEAR(after.velocity_y.at(3, 3), v, 8 * double_roundoff * v);
+}
+
+TEST(PipesReference, EightPipesConserveWaterInAClosedBasin) {
+  const auto terrain = bowl(40, 30);
+  const auto water = field(40, 30, 1.0, 1.0, [](int x, int y) { return noise(x, y, 7); });
+  auto params = quiet_params(300);
+  params.pipe_count = 8;
+  const auto erosion = simulate<double>(terrain, water, params);
+  const auto& ledger = erosion.ledger();
+  // Per cell and step the depth update rounds: the outflow sum (7 additions, each at most u·Σf_out),
+  // its product with Δt/(l_x·l_y) and the subtraction from d_A (Δt·Σf_out/(l_x·l_y) ≤ d_A by K): 9·u·d_A;
+  // the inflow sum and its product: 8·u of the depth received, which summed over the cells is what
+  // was sent, ≤ W; the final addition and evaporation's subtraction: 2·u·W. So 19·u·W per step.
+  EXPECT_LE(std::abs(gt::water_balance(ledger.back(), ledger.front())), 300 * 19 * double_roundoff * ledger.front().water);
+  EXPECT_EQ(ledger.back().boundary_out_water, 0.0);
+  EXPECT_GT(largest_difference(erosion.state().water, water), 0.1) << "the water should have moved";
+}
+
+TEST(PipesReference, EightPipesConserveMaterialInTheFluxForm) {
+  // The rainy slope into an open border, with regolith: sediment and regolith travel through all 8
+  // pipes, and leave through exterior diagonal pipes too.
+  const auto terrain = field(40, 24, 1.0, 1.0, [](int x, int y) { return 0.06 * x + 0.3 * noise(x, y, 37); });
+  const auto dry = field(40, 24, 1.0, 1.0, [](int, int) { return 0.0; });
+  auto params = quiet_params(300);
+  params.rain_rate = 5e-4;
+  params.capacity = 0.05;
+  params.regolith_depth = 0.01;
+  params.boundary = PipeBoundary::open;
+  params.pipe_count = 8;
+  const auto erosion = simulate<double>(terrain, dry, params);
+  const auto& first = erosion.ledger().front();
+  const auto& last = erosion.ledger().back();
+  double moved = 0.0;
+  for (std::size_t i = 0; i < terrain.size(); ++i) moved += std::abs(erosion.state().terrain.values[i] - terrain.values[i]);
+  EXPECT_GT(moved, 1.0) << "the test must erode";
+  EXPECT_GT(last.boundary_out_water, 0.0);
+  EXPECT_GT(last.boundary_out_sediment, 0.0);
+  EXPECT_GT(last.boundary_out_regolith, 0.0);
+  // Water: 19·u per step as the closed basin, + the rain's addition, of all the water handled.
+  EXPECT_LE(std::abs(gt::water_balance(last, first)), 300 * 20 * double_roundoff * (first.water + last.rain_in));
+  // Material: per cell and step 4 rounded operations on b (erosion, regolith exchange: u·|b| each)
+  // and 18 on each of s and r (8 products sent, 1 − min(1, Σ shares) and its product, 8 additions
+  // gathering): at most 40·u·Σ(b + s + r) per step.
+  EXPECT_LE(std::abs(gt::material_drift(last, first)),
+            300 * 40 * double_roundoff * (first.terrain + last.sediment + last.regolith));
+}
+
+constexpr int cone_size = 81, cone_apex = cone_size / 2;
+
+// The anisotropy of a distribution w over the cone's grid: the moment C4 = Σ w·r⁴·cos 4θ / Σ w·r⁴ =
+// Σ w·(x⁴ − 6x²y² + y⁴) / Σ w·(x² + y²)², x and y from the apex: 0 for an isotropic distribution,
+// > 0 when it reaches farther along the axes than along the diagonals, in [−1, 1].
+template <class Weight>
+double fourfold_moment(Weight weight) {
+  double along = 0.0, total = 0.0;
+  for (int y = 0; y < cone_size; ++y) {
+    for (int x = 0; x < cone_size; ++x) {
+      const double dx = x - cone_apex, dy = y - cone_apex, w = weight(x, y);
+      along += w * (dx * dx * dx * dx - 6 * dx * dx * dy * dy + dy * dy * dy * dy);
+      total += w * (dx * dx + dy * dy) * (dx * dx + dy * dy);
+    }
+  }
+  return along / total;
+}
+
+// Water poured on the apex of a cone (slope 0.1, 1 m cells) runs down in every direction: C4 of
+// the water depth.
+double cone_anisotropy(int pipe_count) {
+  const int size = cone_size, centre = cone_apex;
+  const auto terrain = field(size, size, 1.0, 1.0, [&](int x, int y) { return 10.0 - 0.1 * std::hypot(x - centre, y - centre); });
+  const auto dry = field(size, size, 1.0, 1.0, [](int, int) { return 0.0; });
+  auto params = quiet_params(30);  // the front stays inside the grid (it moves at most a cell per step)
+  params.capacity = 0.0;
+  params.boundary = PipeBoundary::open;
+  params.pipe_count = pipe_count;
+  HydraulicForcing forcing;
+  forcing.sources = {{centre, centre, 0.5}};
+  const auto water = simulate<double>(terrain, dry, params, forcing).state().water;
+  return fourfold_moment([&](int x, int y) { return water.at(x, y); });
+}
+
+TEST(PipesReference, EightPipesSpreadMoreIsotropicallyOnACone) {
+  // Scale of the measure: on the slopes the pipes soon carry all a cell holds (K < 1) and water
+  // advances about a cell per step along the pipes, so the wet region grows as the pipes' lattice
+  // allows. With 4 pipes a diagonal cell is two steps away: the reach is the diamond |x| + |y| ≤ n.
+  // With 8 the mean step down a slope is one cell's length along it in every direction (along an
+  // axis the pipes R, TR, BR take heads s·l_x, s·l_x, s·l_x with gains ∝ 1/l_x, 1/l_d, 1/l_d and
+  // advance l_x each; along a diagonal R, T, TR take s·l/√2, s·l/√2, s·l√2 with gains ∝ 1, 1, 1/√2
+  // and advance l/√2, l/√2, l√2: both average one cell), so the reach is round. The moments of
+  // those regions, uniformly filled and sampled on this grid, bracket the result: the diamond's
+  // (+0.43 at this size) is what the 4-pipe lattice gives, the disc's (a few hundredths, sampling
+  // only) the isotropic value. 4 pipes must show at least half the diamond's moment; 8 pipes must
+  // be at least 4 times closer to the disc's, within a quarter of the diamond's moment of it
+  // (measured: +0.41 and −0.09 against +0.43 and −0.01).
+  const int reach = 28;
+  const auto region = [&](auto inside) {
+    return fourfold_moment([&](int x, int y) { return inside(x - cone_apex, y - cone_apex) ? 1.0 : 0.0; });
+  };
+  const double diamond = region([&](int x, int y) { return std::abs(x) + std::abs(y) <= reach; });
+  const double disc = region([&](int x, int y) { return x * x + y * y <= reach * reach; });
+  const double four = cone_anisotropy(4);
+  const double eight = cone_anisotropy(8);
+  std::printf("cone C4: 4 pipes %+.4f, 8 pipes %+.4f; uniform diamond %+.4f, disc %+.4f\n", four, eight, diamond, disc);
+  EXPECT_GE(four, 0.5 * diamond);
+  EXPECT_LE(std::abs(eight - disc), 0.25 * diamond);
+}
+
+// A square grid whose input is symmetric under the mirrors along x, y and the diagonal x = y.
+template <class Real>
+PipeState<Real> dihedral_state(int size) {
+  auto folded = [&](int x, int y, std::uint32_t seed) {
+    const int a = std::min(x, size - 1 - x), b = std::min(y, size - 1 - y);
+    return noise(std::min(a, b), std::max(a, b), seed);
+  };
+  const auto terrain = field(size, size, 1.0, 1.0, [&](int x, int y) {
+    const double dx = x - 0.5 * (size - 1), dy = y - 0.5 * (size - 1);
+    return 3.0 - 0.01 * (dx * dx + dy * dy) + 0.5 * folded(x, y, 19);
+  });
+  const auto water = field(size, size, 1.0, 1.0, [&](int x, int y) { return 0.5 * folded(x, y, 23); });
+  return wet_state<Real>(terrain, water);
+}
+
+template <class Real>
+Grid<Real> transposed(const Grid<Real>& grid) {
+  Grid<Real> out = grid;
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) out.at(x, y) = grid.at(y, x);
+  }
+  return out;
+}
+
+// Largest asymmetry, relative to each field's largest value, after 100 steps from dihedral_state;
+// under the diagonal mirror u and v swap.
+template <class Real>
+double largest_dihedral_asymmetry(SedimentTransport transport, int pipe_count, bool along_the_diagonal) {
+  auto params = quiet_params(100);
+  params.rain_rate = 1e-3;
+  params.capacity = 0.5;
+  params.transport = transport;
+  params.boundary = PipeBoundary::open;
+  params.pipe_count = pipe_count;
+  const auto initial = dihedral_state<Real>(20);
+  const auto terrain = initial.terrain.template cast<double>();
+  PipeErosion<Real> erosion(initial, gt::pipe_constants(params, terrain));
+  erosion.run(params.steps);
+  const auto& state = erosion.state();
+  double asymmetry = 0.0;
+  auto measure = [&](const Grid<Real>& a, const Grid<Real>& b, const Grid<Real>& scale) {
+    const double largest = largest_value(scale);
+    if (largest > 0.0) asymmetry = std::max(asymmetry, largest_difference(a, b) / largest);
+  };
+  for (const auto* grid : {&state.terrain, &state.water, &state.sediment}) {
+    measure(*grid, mirrored_x(*grid), *grid);
+    measure(*grid, mirrored_y(*grid), *grid);
+    if (along_the_diagonal) measure(*grid, transposed(*grid), *grid);
+  }
+  measure(state.velocity_x, negated(mirrored_x(state.velocity_x)), state.velocity_x);
+  measure(state.velocity_y, negated(mirrored_y(state.velocity_y)), state.velocity_y);
+  if (along_the_diagonal) measure(state.velocity_x, transposed(state.velocity_y), state.velocity_x);
+  return asymmetry;
+}
+
+TEST(PipesReference, EightPipesKeepMirrorSymmetryAlongTheAxesAndTheDiagonal) {
+  // The pipe sums' brackets map onto themselves under each mirror (pipes.cpp), the diagonal terms
+  // of the velocity likewise, so the results are mirror images bit for bit: along x and y in both
+  // transport modes; along the diagonal in the flux form (the backtrace's bilinear weights
+  // associate x before y, so transposing changes its roundings).
+  for (int pipe_count : {4, 8}) {
+    EXPECT_EQ(largest_dihedral_asymmetry<double>(SedimentTransport::flux, pipe_count, true), 0.0) << pipe_count;
+    EXPECT_EQ(largest_dihedral_asymmetry<float>(SedimentTransport::flux, pipe_count, true), 0.0) << pipe_count;
+  }
+  EXPECT_EQ(largest_dihedral_asymmetry<double>(SedimentTransport::semi_lagrangian, 8, false), 0.0);
+  EXPECT_EQ(largest_dihedral_asymmetry<float>(SedimentTransport::semi_lagrangian, 8, false), 0.0);
+}
+
+TEST(PipesReference, PipeCountIsFourOrEight) {
+  using gt::testing::refusal;
+  const auto specs = gt::hydraulic_param_specs();
+  EXPECT_EQ(gt::hydraulic_params_from_json(gt::resolve_params("erosion.pipe", specs, {})).pipe_count, 4);
+  EXPECT_EQ(gt::hydraulic_params_from_json(gt::resolve_params("erosion.pipe", specs, {{"pipes", "8"}})).pipe_count, 8);
+  EXPECT_NE(refusal([&] { gt::resolve_params("erosion.pipe", specs, {{"pipes", "6"}}); }).find("one of 4, 8"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] { gt::parse_param_text("erosion.pipe", specs, "pipes", "16"); }).find("one of 4, 8"),
+            std::string::npos);
+  const auto terrain = bowl(6, 5);
+  auto six = quiet_params(1);
+  six.pipe_count = 6;
+  EXPECT_NE(refusal([&] { gt::pipe_constants(six, terrain); }).find("pipes = 6 must be 4 or 8"), std::string::npos);
+  // A 4-pipe run holds no diagonal flux: a state that has some is refused, not silently dropped.
+  const auto dry = field(6, 5, 1.0, 1.0, [](int, int) { return 0.0; });
+  auto diagonal_flux = wet_state<double>(terrain, dry);
+  diagonal_flux.outflow[7][5] = 0.5;
+  EXPECT_NE(refusal([&] { PipeErosion<double>(diagonal_flux, gt::pipe_constants(quiet_params(1), terrain)); })
+                .find("through pipe BR at cell 7: with 4 pipes it must be 0"),
+            std::string::npos);
+}
+
+}  // namespace

@@ -47,6 +47,11 @@ const char* diffusion_weighting_name(DiffusionWeighting weighting) {
   return "?";
 }
 
+const char* pipe_name(int pipe) {
+  static constexpr std::array<const char*, 8> names{"L", "R", "T", "B", "TL", "BR", "TR", "BL"};
+  return names.at(static_cast<std::size_t>(pipe));
+}
+
 const ParamSpecs& hydraulic_param_specs() {
   static const ParamSpecs specs = {
       {"steps", ParamKind::integer, 200, 0, 1000000, {}, "count", "time steps of Δt"},
@@ -65,6 +70,8 @@ const ParamSpecs& hydraulic_param_specs() {
        "K_d: a step closes min(1, K_d·Δt) of the gap s − C by deposition"},
       {"velocity_depth_floor", ParamKind::real, 1e-3, 1e-9, 10.0, {}, "m",
        "lower bound of the mean depth d̄ that divides the flux into a velocity"},
+      {"pipes", ParamKind::choice, "4", 0, 0, {"4", "8"}, "count",
+       "virtual pipes per cell: 4 (L, R, T, B; Mei) or 8 (and the diagonals, length sqrt(l_x² + l_y²))"},
       {"transport", ParamKind::choice, "flux", 0, 0, {"semi_lagrangian", "flux"}, "",
        "sediment transport: Mei's semi-Lagrangian backtrace (not conservative) or with the pipe outflows"},
       {"boundary", ParamKind::choice, "closed", 0, 0, {"closed", "open"}, "",
@@ -101,6 +108,7 @@ HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved) {
   params.dissolving_rate = resolved.at("dissolving_rate").get<double>();
   params.deposition_rate = resolved.at("deposition_rate").get<double>();
   params.velocity_depth_floor = resolved.at("velocity_depth_floor").get<double>();
+  params.pipe_count = resolved.at("pipes").get<std::string>() == "8" ? 8 : 4;
   const auto transport = resolved.at("transport").get<std::string>();
   params.transport =
       transport == sediment_transport_name(SedimentTransport::flux) ? SedimentTransport::flux
@@ -135,6 +143,8 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   require_non_negative(params.deposition_rate, "deposition_rate");
   require(std::isfinite(params.velocity_depth_floor) && params.velocity_depth_floor > 0.0,
           fmt::format("velocity_depth_floor = {} m must be finite and > 0", params.velocity_depth_floor));
+  require(params.pipe_count == 4 || params.pipe_count == 8,
+          fmt::format("pipes = {} must be 4 or 8", params.pipe_count));
   require_non_negative(params.sediment_diffusion, "sediment_diffusion");
   require(params.sediment_diffusion <= 0.25,
           fmt::format("sediment_diffusion = {} must be <= 1/4 (four neighbours get w each)", params.sediment_diffusion));
@@ -159,6 +169,7 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.gravity = params.gravity;
   constants.length_x = terrain.cell_size_x;
   constants.length_y = terrain.cell_size_y;
+  constants.length_diagonal = std::hypot(terrain.cell_size_x, terrain.cell_size_y);
   constants.cell_area = terrain.cell_size_x * terrain.cell_size_y;
   constants.pipe_area = params.pipe_area > 0.0 ? params.pipe_area : constants.cell_area;
   constants.rain_rate = params.rain_rate;
@@ -169,6 +180,7 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.dissolving_fraction = std::min(1.0, params.dissolving_rate * params.time_step);
   constants.deposition_fraction = std::min(1.0, params.deposition_rate * params.time_step);
   constants.velocity_depth_floor = params.velocity_depth_floor;
+  constants.pipe_count = params.pipe_count;
   constants.transport = params.transport;
   constants.boundary = params.boundary;
   constants.sediment_diffusion = params.sediment_diffusion;
@@ -192,7 +204,7 @@ PipeState<Real> dry_pipe_state(const Grid<Real>& terrain) {
   state.terrain = terrain;
   state.water = zero_like();
   state.sediment = zero_like();
-  state.outflow.assign(terrain.size(), std::array<Real, 4>{});
+  state.outflow.assign(terrain.size(), std::array<Real, 8>{});
   state.velocity_x = zero_like();
   state.velocity_y = zero_like();
   state.regolith = zero_like();

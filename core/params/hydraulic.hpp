@@ -23,6 +23,9 @@
 //   - Seed 001's sediment diffusion (§3.8): `uniform` is the thesis's weight w per neighbour;
 //     `water` is its code's weighting by water depth (centre d, neighbours ½·d_n), in which w only
 //     switches the stage on.
+//   - `pipes` (issue 3): 4 pipes (Mei) or 8, the diagonal pipes of length l_d = sqrt(l_x² + l_y²)
+//     with the same cross-section A. A choice of the names "4" and "8" (JSON case files write
+//     "pipes": "8"), so the parameter system itself refuses any other count.
 #pragma once
 
 #include <array>
@@ -44,6 +47,17 @@ const char* sediment_transport_name(SedimentTransport transport);
 const char* pipe_boundary_name(PipeBoundary boundary);
 const char* diffusion_weighting_name(DiffusionWeighting weighting);
 
+// Pipe k of a cell leads to (x + dx, y + dy): L, R, T, B = 0..3 (Mei: T is +y), then the diagonals
+// TL, BR, TR, BL = 4..7 (used with 8 pipes only); pipe k and pipe k^1 are opposite.
+struct PipeOffset {
+  int dx;
+  int dy;
+};
+inline constexpr std::array<PipeOffset, 8> pipe_offsets{{{-1, 0}, {1, 0}, {0, 1}, {0, -1},
+                                                         {-1, 1}, {1, -1}, {1, 1}, {-1, -1}}};
+// "L", "R", "T", "B", "TL", "BR", "TR", "BL" for pipes 0..7.
+const char* pipe_name(int pipe);
+
 struct HydraulicParams {
   int steps = 200;
   double time_step = 0.05;              // Δt, s
@@ -57,6 +71,7 @@ struct HydraulicParams {
   double dissolving_rate = 0.5;         // K_s, 1/s
   double deposition_rate = 0.5;         // K_d, 1/s
   double velocity_depth_floor = 1e-3;   // the mean depth in u = ΔW_X/(l_y·d̄) is at least this, m
+  int pipe_count = 4;                   // 4 (L, R, T, B) or 8 (and the diagonals)
   SedimentTransport transport = SedimentTransport::flux;
   PipeBoundary boundary = PipeBoundary::closed;
   // Seed 001's variant (digest 001 §3.8-3.9); 0 switches a stage off.
@@ -95,6 +110,7 @@ struct PipeConstants {
   double pipe_area = 1.0;             // A, resolved (never 0)
   double length_x = 1.0;              // l_x = cell_size_x, m
   double length_y = 1.0;              // l_y = cell_size_y, m
+  double length_diagonal = 1.0;       // l_d = sqrt(l_x² + l_y²), m: the diagonal pipes' length
   double cell_area = 1.0;             // l_x·l_y, m²
   double rain_rate = 0.0;             // m/s
   double evaporation_kept = 1.0;      // 1 − K_e·Δt, in [0, 1]
@@ -104,6 +120,7 @@ struct PipeConstants {
   double dissolving_fraction = 0.0;   // min(1, K_s·Δt)
   double deposition_fraction = 0.0;   // min(1, K_d·Δt)
   double velocity_depth_floor = 1e-3; // m
+  int pipe_count = 4;                 // 4 or 8
   SedimentTransport transport = SedimentTransport::flux;
   PipeBoundary boundary = PipeBoundary::closed;
   double sediment_diffusion = 0.0;             // w; 0 = off
@@ -117,17 +134,18 @@ struct PipeConstants {
 
 // Constants for `params` on the grid of `terrain` (its cell sizes). Throws InputError for values a
 // struct built in code can hold but the JSON ranges refuse (Δt ≤ 0, negative rates, a depth floor
-// ≤ 0, non-finite values) and for K_e·Δt > 1.
+// ≤ 0, non-finite values, a pipe count other than 4 or 8) and for K_e·Δt > 1.
 PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& terrain);
 
-// The state of a pipe-model run. Pipes are indexed L, R, T, B = 0..3, pointing to (x−1, y),
-// (x+1, y), (x, y+1), (x, y−1) (Mei: T is +y); pipe k and pipe k^1 are opposite.
+// The state of a pipe-model run. Pipes are indexed as pipe_offsets: L, R, T, B = 0..3, pointing to
+// (x−1, y), (x+1, y), (x, y+1), (x, y−1) (Mei: T is +y), then TL, BR, TR, BL = 4..7; pipe k and
+// pipe k^1 are opposite. With 4 pipes the diagonal fluxes are 0 (the twins refuse others).
 template <class Real>
 struct PipeState {
   Grid<Real> terrain;                       // b, m
   Grid<Real> water;                         // d, m
   Grid<Real> sediment;                      // s, m of material over the cell
-  std::vector<std::array<Real, 4>> outflow; // f^L, f^R, f^T, f^B, m³/s (scaled, ≥ 0)
+  std::vector<std::array<Real, 8>> outflow; // f per pipe as pipe_offsets, m³/s (scaled, ≥ 0)
   Grid<Real> velocity_x;                    // u, m/s, +x
   Grid<Real> velocity_y;                    // v, m/s, +y
   Grid<Real> regolith;                      // r, m of loosened bed material (seed 001 §3.9)

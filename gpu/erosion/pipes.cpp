@@ -7,7 +7,7 @@
 // Passes per step (gpu/shaders/erosion/):
 //   pipes_water.comp     stage 1   d_A = d + Δt·(r + r_map)
 //   pipes_sources.comp   stage 1   + point sources (only when there are any; one invocation per cell)
-//   pipes_outflow.comp   stage 2   fluxes, in place (reads the neighbours' d_A)
+//   pipes_outflow.comp   stage 2   fluxes of the 4 or 8 pipes, in place (reads the neighbours' d_A)
 //   pipes_flow.comp      3, 4, 5, 5b, 6a  d_B, velocity, erosion/deposition, regolith exchange,
 //                        what leaves each cell
 //   pipes_sediment.comp  6, 7      transport (gather or backtrace) of s and r, and evaporation
@@ -15,10 +15,11 @@
 //   pipes_thermal_outflow.comp, pipes_thermal_gather.comp
 //                        8         Jákó & Tóth's thermal iteration on b0 + Δb (only with thermal_step)
 // Buffers: per-cell constants {b0, rain depth, flags}, Δb (two, ping-pong: the tilt reads the
-// neighbours' old Δb), water {d, d_A, d_B}, outflow {f_L, f_R, f_T, f_B}, velocity, s, the sediment
-// a cell keeps before transport (also the diffusion's output, swapped with s), what it sends down
-// each pipe, and the same three for the regolith r (allocated only when K_r > 0). Variants are
-// compiled in with defines: TRANSPORT_FLUX, REGOLITH, DIFFUSION_WATER.
+// neighbours' old Δb), water {d, d_A, d_B}, outflow {f_L, f_R, f_T, f_B} (+ {f_TL, f_BR, f_TR, f_BL}
+// with 8 pipes), velocity, s, the sediment a cell keeps before transport (also the diffusion's
+// output, swapped with s), what it sends down each pipe (one or two vec4 as the outflow), and the
+// same three for the regolith r (allocated only when K_r > 0). Variants are compiled in with
+// defines: PIPES_8, TRANSPORT_FLUX, REGOLITH, DIFFUSION_WATER.
 //
 // The float trap (issue 3) and its solution. ref<float> stores b as a float: an erosion amount a
 // below half the float spacing of b (2^-15 m = 3.05e-5 m between floats at 500 m, so a < 1.5e-5 m)
@@ -62,7 +63,7 @@ namespace {
 constexpr const char* algorithm_name = "erosion.pipe";
 constexpr int local_size = 16;          // local_size_x/y of the 2-D passes
 constexpr int source_local_size = 64;   // local_size_x of pipes_sources.comp
-constexpr unsigned valid_flag = 16u;    // bit 4 of CellConstants::flags
+constexpr unsigned valid_flag = 256u;   // bit 8 of CellConstants::flags (bits 0-7: exterior pipes)
 
 // Bindings of gpu/shaders/erosion/pipes_block.glsl and pipes_sources.comp.
 enum Binding : GLuint {
@@ -86,7 +87,7 @@ enum Binding : GLuint {
 
 // Mirror of `PipeBlock` in gpu/shaders/erosion/pipes_block.glsl (std140).
 struct PipeBlock {
-  float flux_gain[4];
+  float flux_gain[8];
   float slope_span_x[2];
   float slope_span_y[2];
   std::int32_t grid_size[2];
@@ -110,26 +111,27 @@ struct PipeBlock {
   float regolith_dissolving;
   float regolith_deposition;
   float diffusion_weight;
-  std::uint32_t padding[2];
+  float diagonal_share[2];
   float talus_limit_cardinal[4];
   float talus_limit_diagonal[4];
   float thermal_rate;
   std::uint32_t tail_padding[3];
 };
 static_assert(offsetof(PipeBlock, flux_gain) == 0);
-static_assert(offsetof(PipeBlock, slope_span_x) == 16);
-static_assert(offsetof(PipeBlock, slope_span_y) == 24);
-static_assert(offsetof(PipeBlock, grid_size) == 32);
-static_assert(offsetof(PipeBlock, area_per_time) == 40);
-static_assert(offsetof(PipeBlock, min_tilt_sine) == 76);
-static_assert(offsetof(PipeBlock, evaporation_kept) == 92);
-static_assert(offsetof(PipeBlock, boundary_open) == 96);
-static_assert(offsetof(PipeBlock, regolith_depth) == 104);
-static_assert(offsetof(PipeBlock, diffusion_weight) == 116);
-static_assert(offsetof(PipeBlock, talus_limit_cardinal) == 128);
-static_assert(offsetof(PipeBlock, talus_limit_diagonal) == 144);
-static_assert(offsetof(PipeBlock, thermal_rate) == 160);
-static_assert(sizeof(PipeBlock) == 176);
+static_assert(offsetof(PipeBlock, slope_span_x) == 32);
+static_assert(offsetof(PipeBlock, slope_span_y) == 40);
+static_assert(offsetof(PipeBlock, grid_size) == 48);
+static_assert(offsetof(PipeBlock, area_per_time) == 56);
+static_assert(offsetof(PipeBlock, min_tilt_sine) == 92);
+static_assert(offsetof(PipeBlock, evaporation_kept) == 108);
+static_assert(offsetof(PipeBlock, boundary_open) == 112);
+static_assert(offsetof(PipeBlock, regolith_depth) == 120);
+static_assert(offsetof(PipeBlock, diffusion_weight) == 132);
+static_assert(offsetof(PipeBlock, diagonal_share) == 136);
+static_assert(offsetof(PipeBlock, talus_limit_cardinal) == 144);
+static_assert(offsetof(PipeBlock, talus_limit_diagonal) == 160);
+static_assert(offsetof(PipeBlock, thermal_rate) == 176);
+static_assert(sizeof(PipeBlock) == 192);
 
 // Mirror of `CellConstants` (std430).
 struct CellConstants {
@@ -139,12 +141,6 @@ struct CellConstants {
   std::uint32_t unused;
 };
 static_assert(sizeof(CellConstants) == 16);
-
-struct Pipe {
-  int dx;
-  int dy;
-};
-constexpr Pipe pipes[4] = {{-1, 0}, {1, 0}, {0, 1}, {0, -1}};  // L, R, T, B
 
 [[noreturn]] void refuse(const std::string& what) { throw InputError(fmt::format("{}: {}", algorithm_name, what)); }
 
@@ -181,7 +177,7 @@ void require_non_negative(const Grid<double>& field, const Grid<double>& terrain
   }
 }
 
-void check_initial_state(const PipeState<double>& state) {
+void check_initial_state(const PipeState<double>& state, int pipe_count) {
   const auto& terrain = state.terrain;
   if (count_valid(terrain) == 0) refuse("the terrain's mask covers every cell");
   require_same_size(state.water, terrain, "the water depth");
@@ -202,10 +198,15 @@ void check_initial_state(const PipeState<double>& state) {
   require_non_negative(state.sediment, terrain, "the sediment");
   require_non_negative(state.regolith, terrain, "the regolith");
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
-    for (double flux : state.outflow[cell]) {
+    for (int k = 0; k < 8; ++k) {
+      const double flux = state.outflow[cell][k];
       const bool fits = std::isfinite(flux) && std::isfinite(static_cast<float>(flux)) && flux >= 0.0;
       if (terrain.is_valid(cell) && !fits) {
         refuse(fmt::format("outflow flux {} at cell {} must be finite and >= 0", flux, cell));
+      }
+      if (terrain.is_valid(cell) && k >= pipe_count && flux != 0.0) {
+        refuse(fmt::format("outflow flux {} through pipe {} at cell {}: with {} pipes it must be 0", flux,
+                           pipe_name(k), cell, pipe_count));
       }
     }
   }
@@ -256,15 +257,15 @@ std::vector<std::pair<std::size_t, float>> source_depths(const Grid<double>& ter
   return depths;
 }
 
-std::vector<unsigned char> cell_flags(const Grid<double>& terrain) {
-  std::vector<unsigned char> flags(terrain.size(), 0);
+std::vector<std::uint32_t> cell_flags(const Grid<double>& terrain) {
+  std::vector<std::uint32_t> flags(terrain.size(), 0);
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
       auto& cell = flags[terrain.index(x, y)];
       if (terrain.is_valid(x, y)) cell |= valid_flag;
-      for (int k = 0; k < 4; ++k) {
-        const int nx = x + pipes[k].dx;
-        const int ny = y + pipes[k].dy;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + pipe_offsets[k].dx;
+        const int ny = y + pipe_offsets[k].dy;
         if (!terrain.inside(nx, ny) || !terrain.is_valid(nx, ny)) cell |= 1u << k;
       }
     }
@@ -278,6 +279,7 @@ PipeBlock block_for(const PipeConstants& constants, int width, int height, std::
   const double gain = constants.time_step * constants.pipe_area * constants.gravity;
   block.flux_gain[0] = block.flux_gain[1] = static_cast<float>(gain / constants.length_x);
   block.flux_gain[2] = block.flux_gain[3] = static_cast<float>(gain / constants.length_y);
+  for (int k = 4; k < 8; ++k) block.flux_gain[k] = static_cast<float>(gain / constants.length_diagonal);
   block.slope_span_x[0] = static_cast<float>(1 * constants.length_x);
   block.slope_span_x[1] = static_cast<float>(2 * constants.length_x);
   block.slope_span_y[0] = static_cast<float>(1 * constants.length_y);
@@ -304,6 +306,8 @@ PipeBlock block_for(const PipeConstants& constants, int width, int height, std::
   block.regolith_dissolving = static_cast<float>(constants.regolith_dissolving_fraction);
   block.regolith_deposition = static_cast<float>(constants.regolith_deposition_fraction);
   block.diffusion_weight = static_cast<float>(constants.sediment_diffusion);
+  block.diagonal_share[0] = static_cast<float>(constants.length_x / constants.length_diagonal);
+  block.diagonal_share[1] = static_cast<float>(constants.length_y / constants.length_diagonal);
   // T·l per pipe, rounded once from double as reference/erosion/thermal_jako.cpp does.
   const auto& thermal = constants.thermal;
   const float limit_x = static_cast<float>(thermal.talus_slope * thermal.length_x);
@@ -319,8 +323,13 @@ PipeBlock block_for(const PipeConstants& constants, int width, int height, std::
 bool has_regolith(const PipeConstants& constants) { return constants.regolith_depth > 0.0; }
 bool has_diffusion(const PipeConstants& constants) { return constants.sediment_diffusion > 0.0; }
 
+// The define of the pipe count alone (the outflow pass needs no other), and those of every variant.
+std::vector<std::string> pipe_defines(const PipeConstants& constants) {
+  return constants.pipe_count == 8 ? std::vector<std::string>{"PIPES_8"} : std::vector<std::string>{};
+}
+
 std::vector<std::string> stage_defines(const PipeConstants& constants) {
-  std::vector<std::string> defines;
+  std::vector<std::string> defines = pipe_defines(constants);
   if (constants.transport == SedimentTransport::flux) defines.push_back("TRANSPORT_FLUX");
   if (has_regolith(constants)) defines.push_back("REGOLITH");
   if (constants.diffusion_weighting == DiffusionWeighting::water) defines.push_back("DIFFUSION_WATER");
@@ -342,7 +351,7 @@ std::vector<float> floats_of(const Grid<double>& field, const Grid<double>& terr
 
 // The CFL number of the reference: max over valid cells and axes of Δt·|u|/l_x and Δt·|v|/l_y,
 // in double.
-double max_cfl_of(const std::vector<float>& velocity, const std::vector<unsigned char>& flags,
+double max_cfl_of(const std::vector<float>& velocity, const std::vector<std::uint32_t>& flags,
                   const PipeConstants& constants) {
   double largest = 0.0;
   for (std::size_t cell = 0; cell < flags.size(); ++cell) {
@@ -355,8 +364,8 @@ double max_cfl_of(const std::vector<float>& velocity, const std::vector<unsigned
   return largest;
 }
 
-const PipeState<double>& checked(const PipeState<double>& state) {
-  check_initial_state(state);
+const PipeState<double>& checked(const PipeState<double>& state, const PipeConstants& constants) {
+  check_initial_state(state, constants.pipe_count);
   return state;
 }
 
@@ -366,24 +375,24 @@ const PipeState<double>& checked(const PipeState<double>& state) {
 struct PipeErosion::Download {
   std::vector<float> delta;          // Δb
   std::vector<float> water;          // d, d_A, d_B, unused per cell
-  std::vector<float> outflow;        // f_L, f_R, f_T, f_B per cell
+  std::vector<float> outflow;        // f per pipe, 4 per cell (+ 4 diagonals with 8 pipes)
   std::vector<float> velocity;       // u, v per cell
   std::vector<float> sediment;       // s
   std::vector<float> regolith;       // r
-  std::vector<float> sent;           // flux form: sent per pipe; semi-Lagrangian: x = left the grid
+  std::vector<float> sent;           // flux form: sent per pipe (as outflow); semi-Lagrangian: [0] = left the grid
   std::vector<float> regolith_sent;  // the same for r (empty without the regolith stage)
 };
 
 PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& constants,
                          const HydraulicForcing& forcing, bool keep_ledger)
-    : width_(checked(initial).terrain.width),
+    : width_(checked(initial, constants).terrain.width),
       height_(initial.terrain.height),
       constants_(constants),
       keep_ledger_(keep_ledger),
       rain_depth_(rain_depths(initial.terrain, constants, forcing.rain_map)),
       source_depths_(source_depths(initial.terrain, constants, forcing.sources)),
       water_program_(ComputeProgram::load("erosion/pipes_water.comp")),
-      outflow_program_(ComputeProgram::load("erosion/pipes_outflow.comp")),
+      outflow_program_(ComputeProgram::load("erosion/pipes_outflow.comp", pipe_defines(constants))),
       flow_program_(ComputeProgram::load("erosion/pipes_flow.comp", stage_defines(constants))),
       sediment_program_(ComputeProgram::load("erosion/pipes_sediment.comp", stage_defines(constants))),
       block_(sizeof(PipeBlock)),
@@ -440,17 +449,20 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
   source_cell_count_ = by_cell.size();
   if (source_cell_count_ > 0) sources_program_.emplace(ComputeProgram::load("erosion/pipes_sources.comp"));
 
-  std::vector<float> water(4 * cells, 0.0f), outflow(4 * cells, 0.0f), velocity(2 * cells, 0.0f);
+  const std::size_t per_cell = pipe_values_per_cell();
+  std::vector<float> water(4 * cells, 0.0f), outflow(per_cell * cells, 0.0f), velocity(2 * cells, 0.0f);
   water_before_.assign(cells, 0.0f);
   for (std::size_t cell = 0; cell < cells; ++cell) {
     if (!terrain.is_valid(cell)) continue;
     water[4 * cell] = static_cast<float>(initial.water.values[cell]);
     water_before_[cell] = water[4 * cell];
-    for (int k = 0; k < 4; ++k) outflow[4 * cell + k] = static_cast<float>(initial.outflow[cell][k]);
+    for (int k = 0; k < constants_.pipe_count; ++k) {
+      outflow[per_cell * cell + k] = static_cast<float>(initial.outflow[cell][k]);
+    }
     velocity[2 * cell] = static_cast<float>(initial.velocity_x.values[cell]);
     velocity[2 * cell + 1] = static_cast<float>(initial.velocity_y.values[cell]);
   }
-  const std::vector<float> zeros(cells, 0.0f), zero_vectors(4 * cells, 0.0f);
+  const std::vector<float> zeros(cells, 0.0f), zero_vectors(per_cell * cells, 0.0f);
   block_.upload(block_for(constants_, width_, height_, source_cell_count_));
   cells_ = StorageBuffer::from(constants_per_cell);
   delta_ = StorageBuffer::from(zeros);
@@ -471,6 +483,8 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
 
   record_ledger(download());
 }
+
+std::size_t PipeErosion::pipe_values_per_cell() const { return static_cast<std::size_t>(constants_.pipe_count); }
 
 int PipeErosion::passes_per_step() const {
   return 4 + (sources_program_ ? 1 : 0) + (diffusion_program_ ? 1 : 0) + (thermal_outflow_program_ ? 2 : 0);
@@ -533,11 +547,12 @@ void PipeErosion::run(int steps) {
 PipeErosion::Download PipeErosion::download() const {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   const std::size_t cells = base_.size();
-  Download fields{delta_.download<float>(cells),      water_.download<float>(4 * cells),
-                  outflow_.download<float>(4 * cells), velocity_.download<float>(2 * cells),
-                  sediment_.download<float>(cells),   regolith_.download<float>(cells),
-                  sent_.download<float>(4 * cells),    {}};
-  if (has_regolith(constants_)) fields.regolith_sent = regolith_sent_.download<float>(4 * cells);
+  const std::size_t per_cell = pipe_values_per_cell();
+  Download fields{delta_.download<float>(cells),             water_.download<float>(4 * cells),
+                  outflow_.download<float>(per_cell * cells), velocity_.download<float>(2 * cells),
+                  sediment_.download<float>(cells),          regolith_.download<float>(cells),
+                  sent_.download<float>(per_cell * cells),    {}};
+  if (has_regolith(constants_)) fields.regolith_sent = regolith_sent_.download<float>(per_cell * cells);
   return fields;
 }
 
@@ -561,9 +576,12 @@ PipeState<double> PipeErosion::state() const {
   state.velocity_x = from(fields.velocity, 2, 0);
   state.velocity_y = from(fields.velocity, 2, 1);
   state.regolith = from(fields.regolith, 1, 0);
+  const std::size_t per_cell = pipe_values_per_cell();
   state.outflow.resize(base_.size());
   for (std::size_t cell = 0; cell < base_.size(); ++cell) {
-    for (int k = 0; k < 4; ++k) state.outflow[cell][k] = static_cast<double>(fields.outflow[4 * cell + k]);
+    for (int k = 0; k < constants_.pipe_count; ++k) {
+      state.outflow[cell][k] = static_cast<double>(fields.outflow[per_cell * cell + k]);
+    }
   }
   return state;
 }
@@ -573,7 +591,11 @@ PipeState<double> PipeErosion::state() const {
 void PipeErosion::record_step() {
   const auto fields = download();
   const double area = constants_.cell_area;
+  // The float l_x·l_y/Δt the shaders divide fluxes by (pipes_flow.comp, stage 3).
+  const double area_per_time = static_cast<float>(constants_.cell_area / constants_.time_step);
   const std::size_t cells = base_.size();
+  const std::size_t per_cell = pipe_values_per_cell();
+  const int pipes = constants_.pipe_count;
   auto exterior = [this](std::size_t cell, int k) { return ((flags_[cell] >> k) & 1u) != 0; };
   auto valid = [this](std::size_t cell) { return (flags_[cell] & valid_flag) != 0; };
   for (std::size_t cell = 0; cell < cells; ++cell) {
@@ -588,9 +610,10 @@ void PipeErosion::record_step() {
   }
   for (std::size_t cell = 0; cell < cells; ++cell) {
     if (!valid(cell)) continue;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < pipes; ++k) {
       if (exterior(cell, k)) {
-        flows_.boundary_out_water.add(constants_.time_step * static_cast<double>(fields.outflow[4 * cell + k]));
+        const double depth = static_cast<double>(fields.outflow[per_cell * cell + k]) / area_per_time;
+        flows_.boundary_out_water.add(depth * area);
       }
     }
   }
@@ -599,8 +622,8 @@ void PipeErosion::record_step() {
   auto add_leaving = [&](const std::vector<float>& sent, CompensatedSum& boundary_out) {
     for (std::size_t cell = 0; cell < cells; ++cell) {
       if (!valid(cell)) continue;
-      for (int k = 0; k < (flux ? 4 : 1); ++k) {
-        if (!flux || exterior(cell, k)) boundary_out.add(static_cast<double>(sent[4 * cell + k]) * area);
+      for (int k = 0; k < (flux ? pipes : 1); ++k) {
+        if (!flux || exterior(cell, k)) boundary_out.add(static_cast<double>(sent[per_cell * cell + k]) * area);
       }
     }
   };
@@ -627,23 +650,28 @@ void PipeErosion::check_state(const Download& fields) const {
         double value;
         bool non_negative;
       };
+      const auto report = [&](const std::string& name, double value) {
+        refuse(fmt::format("step {}, cell (x={}, y={}): {} is {} (Δt = {} s, largest CFL number this step {:.3g}); "
+                           "the time step is too large or the input out of range",
+                           steps_done_, x, y, name, value, constants_.time_step,
+                           max_cfl_of(fields.velocity, flags_, constants_)));
+      };
+      auto acceptable = [](double value, bool non_negative) {
+        return std::isfinite(value) && !(non_negative && value < 0.0);
+      };
       const Checked values[] = {
           {"terrain height", static_cast<double>(base_[cell]) + static_cast<double>(fields.delta[cell]), false},
           {"water depth", fields.water[4 * cell], true},
           {"sediment", fields.sediment[cell], true},
           {"regolith", fields.regolith[cell], true},
           {"x velocity", fields.velocity[2 * cell], false},
-          {"y velocity", fields.velocity[2 * cell + 1], false},
-          {"outflow L", fields.outflow[4 * cell], true},
-          {"outflow R", fields.outflow[4 * cell + 1], true},
-          {"outflow T", fields.outflow[4 * cell + 2], true},
-          {"outflow B", fields.outflow[4 * cell + 3], true}};
+          {"y velocity", fields.velocity[2 * cell + 1], false}};
       for (const auto& [name, value, non_negative] : values) {
-        if (std::isfinite(value) && !(non_negative && value < 0.0)) continue;
-        refuse(fmt::format("step {}, cell (x={}, y={}): {} is {} (Δt = {} s, largest CFL number this step {:.3g}); "
-                           "the time step is too large or the input out of range",
-                           steps_done_, x, y, name, value, constants_.time_step,
-                           max_cfl_of(fields.velocity, flags_, constants_)));
+        if (!acceptable(value, non_negative)) report(name, value);
+      }
+      for (int k = 0; k < constants_.pipe_count; ++k) {
+        const double flux = fields.outflow[pipe_values_per_cell() * cell + k];
+        if (!acceptable(flux, true)) report(fmt::format("outflow {}", pipe_name(k)), flux);
       }
     }
   }

@@ -1,8 +1,9 @@
 // Hydraulic erosion with virtual pipes (Mei, Decaudin, Hu 2007), GPU twin of
-// reference/erosion/pipes.hpp: the same stages (with seed 001's regolith and sediment diffusion
-// and Jákó & Tóth's thermal step when the constants ask for them), the same float operations in
-// the same order, the same boundary and 0/0 rules (listed in reference/erosion/pipes.cpp), on
-// compute shaders gpu/shaders/erosion/pipes_*.comp. Needs a current GlContext.
+// reference/erosion/pipes.hpp: the same stages over 4 or 8 pipes (with seed 001's regolith and
+// sediment diffusion and Jákó & Tóth's thermal step when the constants ask for them), the same
+// float operations in the same order, the same boundary and 0/0 rules (listed in
+// reference/erosion/pipes.cpp), on compute shaders gpu/shaders/erosion/pipes_*.comp. Needs a
+// current GlContext.
 //
 // The one deliberate difference from ref<float> — the float trap (issue 3): the terrain is stored
 // as the initial height b0 (float, never written) plus a float change Δb that starts at 0, and
@@ -13,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -29,8 +31,9 @@ class PipeErosion {
   // Uploads `initial` (each value rounded to float once), the forcing and the constants. Refuses
   // (InputError, the reference's messages) grids of another size than the terrain, a mask without
   // a valid cell, non-finite values (also after rounding to float), negative water, sediment,
-  // regolith or flux on valid cells, a rain map of another size or with negative or non-finite
-  // rates, and sources off the grid, on no-data cells or with a negative or non-finite rate.
+  // regolith or flux on valid cells, a diagonal flux other than 0 with 4 pipes, a rain map of
+  // another size or with negative or non-finite rates, and sources off the grid, on no-data cells
+  // or with a negative or non-finite rate.
   // No-data cells hold no water, sediment, regolith, flux or velocity.
   // keep_ledger = true: every step() downloads the state, appends a PipeLedgerEntry summed in double
   // exactly as the reference's (the same float quantities, the same compensated sums and order) and
@@ -57,6 +60,8 @@ class PipeErosion {
 
  private:
   struct Download;
+  // Floats per cell of the outflow and sent buffers: 4, or 8 with the diagonal pipes.
+  std::size_t pipe_values_per_cell() const;
   Download download() const;
   void bind() const;
   void record_step();
@@ -71,7 +76,7 @@ class PipeErosion {
   std::vector<std::pair<std::size_t, float>> source_depths_;  // cell, rate·Δt/(l_x·l_y), in the order given
   std::vector<float> base_;            // b0 as uploaded
   std::vector<float> water_before_;    // d at the start of the next step (for the ledger's water_added)
-  std::vector<unsigned char> flags_;   // bits 0-3 exterior pipes, bit 4 valid
+  std::vector<std::uint32_t> flags_;   // bits 0-7 exterior pipes, bit 8 valid
   Grid<double> layout_;                // geometry, units and mask of the terrain
   double base_volume_ = 0.0;           // Σ b0·l_x·l_y over valid cells
   std::size_t source_cell_count_ = 0;

@@ -1,12 +1,17 @@
 // Hydraulic erosion with virtual pipes: Mei, Decaudin, Hu 2007 (digest 000 §3.4, eqs. 2.10-2.25,
 // with the fixes of Appendix B items 1-3). Each stage reads the previous stage's fields over the
-// whole grid (synchronous, as the GPU passes):
+// whole grid (synchronous, as the GPU passes). Pipes k = 0..3 are L, R, T, B (Mei); with `pipes` = 8
+// also the diagonals k = 4..7, TL, BR, TR, BL (gt::pipe_offsets), of length l_d = sqrt(l_x² + l_y²);
+// l_k below is l_x, l_y or l_d, and every sum over pipes (Σ) runs over all the pipes in use:
 //   1 water    d_A = d + Δt·(r + r_map) + Σ sources·Δt/(l_x·l_y)                 (2.10, with Δt)
 //   2 flux     f̂_k = max(0, f_k + Δt·A·g·Δh_k/l_k), Δh_k = (b + d_A) − (b_k + d_A,k)   (2.11, d_A)
 //              K = min(1, d_A·l_x·l_y / (Σ f̂·Δt)), f_k = K·f̂_k                 (2.12-2.13)
 //   3 depth    d_B = max(0, d_A − Δt·Σf_out/(l_x·l_y)) + Δt·Σf_in/(l_x·l_y)     (2.14-2.17)
 //   4 velocity ΔW_X = ½((f^R(x−1) − f^L) + (f^R − f^L(x+1))), u = ΔW_X/(l_y·d̄),
 //              d̄ = max(½(d_A + d_B), depth floor); v likewise with T/B and l_x    (2.18-2.19)
+//              With 8 pipes ΔW_X = ½ Σ_k dx_k·(l_x/l_k)·(f_k − f_in,k), f_in,k = what neighbour k
+//              sends this cell: the axis terms as above plus (l_x/l_d)·Σ_diagonals dx_k·(f_k −
+//              f_in,k), the x component of the diagonal pipes' net flux; ΔW_Y with dy_k and l_y/l_d
 //   5 erosion  C = K_c·max(sin α, min_tilt_sine)·|v|·l(d_B), l(d) = min(1, d/K_w) (2.20-2.21)
 //              C > s: b −= k_s·(C − s), s += k_s·(C − s);  else b += k_d·(s − C), s −= k_d·(s − C)
 //              with k = min(1, K·Δt)                                  (2.22, 2.23 with Mei's sign)
@@ -15,10 +20,12 @@
 //              r −= the same
 //   6 sediment semi-Lagrangian: s(x) = s_A(x − (u, v)·Δt), bilinear                 (2.24-2.25)
 //              or flux form: each pipe carries s_A·f_k·Δt/(d_A·l_x·l_y), the share of the cell's
-//              water it moved; what one cell sends, the neighbour receives as the same number.
+//              water it moved (diagonal pipes too); what one cell sends, the neighbour receives as
+//              the same number.
 //              The regolith moves with the water the same way (seed 001 §3.9).
 //   6b diffusion (seed 001 §3.8; only when w > 0), of s and r from the state after 6: each cell
-//              sends σ_k·s to each neighbour k whose pipe is not exterior and keeps s − Σσ_k·s;
+//              sends σ_k·s to each of its 4 axis neighbours k whose pipe is not exterior (with 8
+//              pipes too: the seed's 4-neighbour stencil) and keeps s − Σσ_k·s;
 //              uniform σ_k = w (the thesis), water σ_k = ½d_k / (d + ½Σd_n) with depths d_B (its
 //              code; nothing moves when that sum is 0); what is kept is clamped at 0 (a dry cell
 //              sends all of it, and rounding can make the shares' sum exceed it by an ulp)
@@ -26,19 +33,29 @@
 //   8 thermal (Jákó & Tóth's combined step; only when thermal_step): one iteration of
 //              reference/erosion/thermal_jako.hpp on b
 // Decisions where the source is vague:
-//   - Exterior pipes: a pipe leading off the grid or into a no-data cell. Closed boundary: its flux
-//     is 0 (walls). Open boundary: the exterior is a dry cell at the cell's own terrain height
-//     (Δh = d_A), so water drains under its own depth and nothing flows back in; water leaving that
-//     way, and the sediment the flux form carries with it, is counted as boundary_out. The
-//     semi-Lagrangian mode removes the same sediment share at exterior pipes before backtracing.
+//   - Exterior pipes: a pipe leading off the grid or into a no-data cell (a diagonal pipe too: its
+//     diagonal neighbour is off the grid or no data, whatever the axis neighbours are). Closed
+//     boundary: its flux is 0 (walls). Open boundary: the exterior is a dry cell at the cell's own
+//     terrain height (Δh = d_A), so water drains under its own depth and nothing flows back in;
+//     water leaving that way, and the sediment the flux form carries with it, is counted as
+//     boundary_out. The semi-Lagrangian mode removes the same sediment share at exterior pipes
+//     before backtracing (the axis pipes' shares added in the order L, R, T, B, then the diagonals'
+//     (TL + BR) + (TR + BL)).
 //     No-data cells hold no water or sediment and get no rain; sources on them are refused.
+//   - 8 pipes: every pipe has the cross-section A, so a diagonal conducts l_x/l_d as much per metre
+//     of head as an x pipe; the tilt sin α stays the central differences along x and y; diffusion
+//     stays on 4 neighbours. With 4 pipes the diagonal fluxes of the state are 0 (a state with
+//     others is refused) and every operation is the one of the 4-pipe model, bit for bit: the
+//     diagonal terms are added only with 8 pipes.
 //   - K's 0/0 (Σ f̂ = 0): K = 1, tested explicitly (the fluxes are 0 anyway).
 //   - A cell the K scaling drained (K < 1) keeps exactly 0, its value in exact arithmetic. Elsewhere
 //     the remainder d_A − Δt·Σf_out/(l_x·l_y) is clamped at 0: K makes it ≥ 0 in exact arithmetic,
 //     the clamp only removes a rounding-sized negative (which the step check would refuse). Setting
 //     drained cells to 0 rather than clamping their rounding residual matters in float: the clamp
 //     only ever created water (negative residuals cut, positive kept), a bias of about 1e-6 of the
-//     water over hundreds of steps; 0 rounds either way. The flux form sends at most all of s_A.
+//     water over hundreds of steps; 0 rounds either way. For the same reason fluxes become depths
+//     by dividing by l_x·l_y/Δt, the very constant K is formed with: multiplying by Δt/(l_x·l_y),
+//     rounded on its own, made every drained cell deliver d_A·(1 + ε) with one fixed ε. The flux form sends at most all of s_A.
 //   - Velocity at d → 0: the mean depth is bounded below by velocity_depth_floor (seed 001 uses
 //     0.05 m), so thin films cannot produce unbounded speeds; with d̄ = 0 no water moved (K), the
 //     flux sums are 0 and so is the velocity — no 0/0.
@@ -52,8 +69,10 @@
 //     the cell being updated (zero gradient at walls, Mei's clamp-to-edge on the grid border). The
 //     weights are ceil(p) − p and p − floor(p), so mirrored displacements give mirrored weights
 //     bit for bit (1 − w would not); a displacement of whole cells (at rest: 0) reads one cell.
-//   - Fixed summation order (L + R) + (T + B) for the four pipes, so mirror-symmetric inputs give
-//     bitwise mirror-symmetric results in both transport modes.
+//   - Fixed summation order (L + R) + (T + B) for the four pipes, + ((TL + BR) + (TR + BL)) with
+//     eight, so mirror-symmetric inputs give bitwise mirror-symmetric results in both transport
+//     modes (along x and y; along the diagonal of a square-celled grid in the flux form — the
+//     backtrace's bilinear weights associate x before y).
 // Units: metres, seconds, m³/s (see core/params/hydraulic.hpp); the ledger is in m³.
 #include "reference/erosion/pipes.hpp"
 
@@ -71,24 +90,60 @@ namespace {
 
 constexpr const char* algorithm_name = "erosion.pipe";
 
-struct Pipe {
-  int dx;
-  int dy;
-};
-
-// L, R, T, B; pipe k and pipe k ^ 1 are opposite.
-constexpr std::array<Pipe, 4> pipes{{{-1, 0}, {1, 0}, {0, 1}, {0, -1}}};
-constexpr int left = 0, right = 1, top = 2, bottom = 3;
+// Pipes as gt::pipe_offsets (core/params/hydraulic.hpp); pipe k and pipe k ^ 1 are opposite.
+constexpr int left = 0, right = 1, top = 2, bottom = 3, top_left = 4, bottom_right = 5, top_right = 6, bottom_left = 7;
+constexpr int all_pipes = 8;
+constexpr int axis_pipes = 4;  // the diffusion's 4 neighbours (seed 001), whatever the pipe count
 constexpr int opposite(int pipe) { return pipe ^ 1; }
 
 template <class Real>
-Real pipe_sum(const std::array<Real, 4>& values) {
-  return (values[left] + values[right]) + (values[top] + values[bottom]);
-}
+using PipeValues = std::array<Real, all_pipes>;
 
 template <class Real>
 bool is_finite(Real value) {
   return std::isfinite(static_cast<double>(value));
+}
+
+// (L + R) + (T + B) and (TL + BR) + (TR + BL): orders that the mirrors along x, y and the diagonal
+// map onto themselves (each swaps pipes within a bracket or swaps the brackets), so mirror-
+// symmetric inputs give bitwise mirror-symmetric sums.
+template <class Real>
+Real axis_sum(const PipeValues<Real>& values) {
+  return (values[left] + values[right]) + (values[top] + values[bottom]);
+}
+
+template <class Real>
+Real diagonal_sum(const PipeValues<Real>& values) {
+  return (values[top_left] + values[bottom_right]) + (values[top_right] + values[bottom_left]);
+}
+
+// The sum over the first `pipe_count` pipes: axis_sum, + diagonal_sum with 8 pipes.
+template <class Real>
+Real pipe_sum(const PipeValues<Real>& values, int pipe_count) {
+  return pipe_count == axis_pipes ? axis_sum(values) : axis_sum(values) + diagonal_sum(values);
+}
+
+// The net outflow out − in of a pipe times its step (±1) along one axis, formed as out − in or
+// in − out rather than negated, so that a balanced pipe gives +0 either way.
+template <class Real>
+Real directed_outflow(Real out, Real in, int step) {
+  return step > 0 ? out - in : in - out;
+}
+
+// diagonal_sum of the diagonal pipes' step along x (along_x) or y times out − in.
+template <class Real>
+Real diagonal_outflow(const PipeValues<Real>& out, const PipeValues<Real>& in, bool along_x) {
+  PipeValues<Real> terms{};
+  for (int k = axis_pipes; k < all_pipes; ++k) {
+    terms[k] = directed_outflow(out[k], in[k], along_x ? pipe_offsets[k].dx : pipe_offsets[k].dy);
+  }
+  return diagonal_sum(terms);
+}
+
+// A finite value, and not negative where it must not be (the state check after each step).
+template <class Real>
+bool acceptable(Real value, bool non_negative) {
+  return is_finite(value) && !(non_negative && value < Real(0));
 }
 
 [[noreturn]] void refuse(const std::string& what) { throw InputError(fmt::format("{}: {}", algorithm_name, what)); }
@@ -114,7 +169,7 @@ void require_non_negative(const Grid<Real>& field, const Grid<Real>& terrain, co
 }
 
 template <class Real>
-void check_initial_state(const PipeState<Real>& state) {
+void check_initial_state(const PipeState<Real>& state, int pipe_count) {
   const auto& terrain = state.terrain;
   if (count_valid(terrain) == 0) refuse("the terrain's mask covers every cell");
   require_same_size(state.water, terrain, "the water depth");
@@ -140,9 +195,14 @@ void check_initial_state(const PipeState<Real>& state) {
   require_non_negative(state.sediment, terrain, "the sediment");
   require_non_negative(state.regolith, terrain, "the regolith");
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
-    for (Real flux : state.outflow[cell]) {
+    for (int k = 0; k < all_pipes; ++k) {
+      const Real flux = state.outflow[cell][k];
       if (terrain.is_valid(cell) && !(is_finite(flux) && flux >= Real(0))) {
         refuse(fmt::format("outflow flux {} at cell {} must be finite and >= 0", static_cast<double>(flux), cell));
+      }
+      if (terrain.is_valid(cell) && k >= pipe_count && flux != Real(0)) {
+        refuse(fmt::format("outflow flux {} through pipe {} at cell {}: with {} pipes it must be 0",
+                           static_cast<double>(flux), pipe_name(k), cell, pipe_count));
       }
     }
   }
@@ -207,9 +267,9 @@ std::vector<unsigned char> exterior_pipe_bits(const Grid<Real>& terrain) {
   std::vector<unsigned char> bits(terrain.size(), 0);
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
-      for (int k = 0; k < 4; ++k) {
-        const int nx = x + pipes[k].dx;
-        const int ny = y + pipes[k].dy;
+      for (int k = 0; k < all_pipes; ++k) {
+        const int nx = x + pipe_offsets[k].dx;
+        const int ny = y + pipe_offsets[k].dy;
         if (!terrain.inside(nx, ny) || !terrain.is_valid(nx, ny)) bits[terrain.index(x, y)] |= 1u << k;
       }
     }
@@ -255,7 +315,7 @@ AxisTaps<Real> axis_taps(Real displacement, Real reach) {
 template <class Real>
 PipeErosion<Real>::PipeErosion(PipeState<Real> initial, const PipeConstants& constants, HydraulicForcing forcing)
     : state_(std::move(initial)), constants_(constants) {
-  check_initial_state(state_);
+  check_initial_state(state_, constants_.pipe_count);
   clear_no_data_cells(state_);
   rain_depth_ = rain_depths(state_.terrain, constants_, forcing.rain_map);
   source_depths_ = source_depths(state_.terrain, constants_, forcing.sources);
@@ -271,8 +331,8 @@ template <class Real>
 typename PipeErosion<Real>::Fluxes PipeErosion<Real>::inflows(int x, int y) const {
   const std::size_t cell = state_.terrain.index(x, y);
   Fluxes in{};
-  for (int k = 0; k < 4; ++k) {
-    if (!exterior(cell, k)) in[k] = state_.outflow[state_.terrain.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
+  for (int k = 0; k < pipe_count(); ++k) {
+    if (!exterior(cell, k)) in[k] = state_.outflow[neighbour(x, y, k)][opposite(k)];
   }
   return in;
 }
@@ -285,12 +345,29 @@ typename PipeErosion<Real>::Fluxes PipeErosion<Real>::carried_shares(std::size_t
   Fluxes shares{};
   if (!(water > Real(0))) return shares;
   const Real volume_to_depth = static_cast<Real>(constants_.time_step / constants_.cell_area);
-  for (int k = 0; k < 4; ++k) shares[k] = state_.outflow[cell][k] * volume_to_depth / water;
-  const Real total = pipe_sum(shares);
+  for (int k = 0; k < pipe_count(); ++k) shares[k] = state_.outflow[cell][k] * volume_to_depth / water;
+  const Real total = pipe_sum(shares, pipe_count());
   if (total > Real(1)) {
     for (auto& share : shares) share = share / total;
   }
   return shares;
+}
+
+// The share of the cell's water, and so of what it carries, that left through exterior pipes: the
+// exterior axis pipes' shares added in the order L, R, T, B, then with 8 pipes the diagonal_sum of
+// the exterior diagonals' shares.
+template <class Real>
+Real PipeErosion<Real>::exterior_share(std::size_t cell, const Fluxes& shares) const {
+  Real leaving = Real(0);
+  for (int k = 0; k < axis_pipes; ++k) {
+    if (exterior(cell, k)) leaving = leaving + shares[k];
+  }
+  if (pipe_count() == axis_pipes) return leaving;
+  Fluxes exterior_diagonals{};
+  for (int k = axis_pipes; k < all_pipes; ++k) {
+    if (exterior(cell, k)) exterior_diagonals[k] = shares[k];
+  }
+  return leaving + diagonal_sum(exterior_diagonals);
 }
 
 template <class Real>
@@ -301,8 +378,8 @@ Real PipeErosion<Real>::tilt_sine(int x, int y) const {
     const int lower = exterior(cell, lower_pipe) ? 0 : 1;
     const int upper = exterior(cell, upper_pipe) ? 0 : 1;
     if (lower + upper == 0) return Real(0);
-    const Real low = terrain.at(x + lower * pipes[lower_pipe].dx, y + lower * pipes[lower_pipe].dy);
-    const Real high = terrain.at(x + upper * pipes[upper_pipe].dx, y + upper * pipes[upper_pipe].dy);
+    const Real low = terrain.at(x + lower * pipe_offsets[lower_pipe].dx, y + lower * pipe_offsets[lower_pipe].dy);
+    const Real high = terrain.at(x + upper * pipe_offsets[upper_pipe].dx, y + upper * pipe_offsets[upper_pipe].dy);
     return (high - low) / static_cast<Real>((lower + upper) * length);
   };
   const Real slope_x = slope(left, right, constants_.length_x);
@@ -352,9 +429,14 @@ void PipeErosion<Real>::add_water() {
 }
 
 template <class Real>
+std::size_t PipeErosion<Real>::neighbour(int x, int y, int pipe) const {
+  return state_.terrain.index(x + pipe_offsets[pipe].dx, y + pipe_offsets[pipe].dy);
+}
+
+template <class Real>
 Real PipeErosion<Real>::neighbour_surface(int x, int y, int pipe) const {
-  const std::size_t neighbour = state_.terrain.index(x + pipes[pipe].dx, y + pipes[pipe].dy);
-  return state_.terrain.values[neighbour] + state_.water.values[neighbour];
+  const std::size_t cell = neighbour(x, y, pipe);
+  return state_.terrain.values[cell] + state_.water.values[cell];
 }
 
 template <class Real>
@@ -363,10 +445,12 @@ void PipeErosion<Real>::update_outflow() {
   const auto& water = state_.water;
   const bool open = constants_.boundary == PipeBoundary::open;
   const double gain = constants_.time_step * constants_.pipe_area * constants_.gravity;
-  const std::array<Real, 4> flux_gain{static_cast<Real>(gain / constants_.length_x),
-                                      static_cast<Real>(gain / constants_.length_x),
-                                      static_cast<Real>(gain / constants_.length_y),
-                                      static_cast<Real>(gain / constants_.length_y)};
+  const Real diagonal_gain = static_cast<Real>(gain / constants_.length_diagonal);
+  const Fluxes flux_gain{static_cast<Real>(gain / constants_.length_x),
+                         static_cast<Real>(gain / constants_.length_x),
+                         static_cast<Real>(gain / constants_.length_y),
+                         static_cast<Real>(gain / constants_.length_y),
+                         diagonal_gain, diagonal_gain, diagonal_gain, diagonal_gain};
   const Real area_per_time = static_cast<Real>(constants_.cell_area / constants_.time_step);
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
@@ -374,14 +458,14 @@ void PipeErosion<Real>::update_outflow() {
       if (!terrain.is_valid(cell)) continue;
       const Real surface = terrain.values[cell] + water.values[cell];
       Fluxes tentative{};
-      for (int k = 0; k < 4; ++k) {
+      for (int k = 0; k < pipe_count(); ++k) {
         if (exterior(cell, k) && !open) continue;
         const Real head = exterior(cell, k) ? water.values[cell] : surface - neighbour_surface(x, y, k);
         tentative[k] = std::max(Real(0), state_.outflow[cell][k] + flux_gain[k] * head);
       }
-      const Real total = pipe_sum(tentative);
+      const Real total = pipe_sum(tentative, pipe_count());
       const Real scale = total > Real(0) ? std::min(Real(1), water.values[cell] * area_per_time / total) : Real(1);
-      for (int k = 0; k < 4; ++k) state_.outflow[cell][k] = scale * tentative[k];
+      for (int k = 0; k < pipe_count(); ++k) state_.outflow[cell][k] = scale * tentative[k];
       drained_[cell] = scale < Real(1);
     }
   }
@@ -390,17 +474,22 @@ void PipeErosion<Real>::update_outflow() {
 template <class Real>
 void PipeErosion<Real>::update_water_depth() {
   const auto& terrain = state_.terrain;
-  const Real volume_to_depth = static_cast<Real>(constants_.time_step / constants_.cell_area);
+  // Fluxes become depths by dividing by the same l_x·l_y/Δt that K used (see update_outflow).
+  const Real area_per_time = static_cast<Real>(constants_.cell_area / constants_.time_step);
+  const double area = constants_.cell_area;
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
       const std::size_t cell = terrain.index(x, y);
       if (!terrain.is_valid(cell)) continue;
       const auto& out = state_.outflow[cell];
-      const Real remaining =
-          drained_[cell] ? Real(0) : std::max(Real(0), water_before_flow_[cell] - volume_to_depth * pipe_sum(out));
-      state_.water.values[cell] = remaining + volume_to_depth * pipe_sum(inflows(x, y));
-      for (int k = 0; k < 4; ++k) {
-        if (exterior(cell, k)) flows_.boundary_out_water.add(constants_.time_step * static_cast<double>(out[k]));
+      const Real remaining = drained_[cell] ? Real(0)
+                                            : std::max(Real(0), water_before_flow_[cell] -
+                                                                    pipe_sum(out, pipe_count()) / area_per_time);
+      state_.water.values[cell] = remaining + pipe_sum(inflows(x, y), pipe_count()) / area_per_time;
+      for (int k = 0; k < pipe_count(); ++k) {
+        if (exterior(cell, k)) {
+          flows_.boundary_out_water.add(static_cast<double>(out[k]) / static_cast<double>(area_per_time) * area);
+        }
       }
     }
   }
@@ -413,6 +502,10 @@ void PipeErosion<Real>::update_velocity() {
   const Real depth_floor = static_cast<Real>(constants_.velocity_depth_floor);
   const Real length_x = static_cast<Real>(constants_.length_x);
   const Real length_y = static_cast<Real>(constants_.length_y);
+  // cos of the diagonal pipes' angle with x and y: their flux's share along each axis
+  const Real diagonal_share_x = static_cast<Real>(constants_.length_x / constants_.length_diagonal);
+  const Real diagonal_share_y = static_cast<Real>(constants_.length_y / constants_.length_diagonal);
+  const bool diagonals = pipe_count() == all_pipes;
   step_max_cfl_ = 0.0;
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
@@ -420,8 +513,14 @@ void PipeErosion<Real>::update_velocity() {
       if (!terrain.is_valid(cell)) continue;
       const auto& out = state_.outflow[cell];
       const auto in = inflows(x, y);
-      const Real flow_x = half * ((in[left] - out[left]) + (out[right] - in[right]));
-      const Real flow_y = half * ((in[bottom] - out[bottom]) + (out[top] - in[top]));
+      Real twice_flow_x = (in[left] - out[left]) + (out[right] - in[right]);
+      Real twice_flow_y = (in[bottom] - out[bottom]) + (out[top] - in[top]);
+      if (diagonals) {
+        twice_flow_x = twice_flow_x + diagonal_share_x * diagonal_outflow(out, in, true);
+        twice_flow_y = twice_flow_y + diagonal_share_y * diagonal_outflow(out, in, false);
+      }
+      const Real flow_x = half * twice_flow_x;
+      const Real flow_y = half * twice_flow_y;
       const Real mean_depth = std::max(depth_floor, half * (water_before_flow_[cell] + state_.water.values[cell]));
       const Real u = flow_x / (length_y * mean_depth);
       const Real v = flow_y / (length_x * mean_depth);
@@ -479,25 +578,25 @@ void PipeErosion<Real>::regolith_exchange() {
   }
 }
 
-// The exchange of one step between neighbours: `sent[cell][k]` leaves the cell through pipe k
-// (exterior pipes: into `boundary_out`), `scratch_` holds what stays; afterwards each cell holds
-// what stayed plus what its neighbours sent it.
+// The exchange of one step between neighbours through the first `pipes` pipes: `sent[cell][k]`
+// leaves the cell through pipe k (exterior pipes: into `boundary_out`), `scratch_` holds what
+// stays; afterwards each cell holds what stayed plus what its neighbours sent it.
 template <class Real>
-void PipeErosion<Real>::gather_sent(std::vector<Real>& field, CompensatedSum& boundary_out) {
+void PipeErosion<Real>::gather_sent(std::vector<Real>& field, CompensatedSum& boundary_out, int pipes) {
   const auto& terrain = state_.terrain;
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
       const std::size_t cell = terrain.index(x, y);
       if (!terrain.is_valid(cell)) continue;
       Fluxes received{};
-      for (int k = 0; k < 4; ++k) {
+      for (int k = 0; k < pipes; ++k) {
         if (exterior(cell, k)) {
           boundary_out.add(static_cast<double>(sent_[cell][k]) * constants_.cell_area);
         } else {
-          received[k] = sent_[terrain.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
+          received[k] = sent_[neighbour(x, y, k)][opposite(k)];
         }
       }
-      scratch_[cell] = scratch_[cell] + pipe_sum(received);
+      scratch_[cell] = scratch_[cell] + pipe_sum(received, pipes);
     }
   }
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
@@ -511,10 +610,10 @@ void PipeErosion<Real>::transport_with_fluxes(std::vector<Real>& field, Compensa
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     if (!terrain.is_valid(cell)) continue;
     const auto shares = carried_shares(cell);
-    for (int k = 0; k < 4; ++k) sent_[cell][k] = field[cell] * shares[k];
-    scratch_[cell] = field[cell] * (Real(1) - std::min(Real(1), pipe_sum(shares)));
+    for (int k = 0; k < pipe_count(); ++k) sent_[cell][k] = field[cell] * shares[k];
+    scratch_[cell] = field[cell] * (Real(1) - std::min(Real(1), pipe_sum(shares, pipe_count())));
   }
-  gather_sent(field, boundary_out);
+  gather_sent(field, boundary_out, pipe_count());
 }
 
 template <class Real>
@@ -522,11 +621,7 @@ void PipeErosion<Real>::transport_semi_lagrangian(std::vector<Real>& field, Comp
   const auto& terrain = state_.terrain;
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     if (!terrain.is_valid(cell)) continue;
-    const auto shares = carried_shares(cell);
-    Real leaving = Real(0);
-    for (int k = 0; k < 4; ++k) {
-      if (exterior(cell, k)) leaving = leaving + shares[k];
-    }
+    const Real leaving = exterior_share(cell, carried_shares(cell));
     const Real staying = field[cell] * (Real(1) - std::min(Real(1), leaving));
     boundary_out.add(static_cast<double>(field[cell] - staying) * constants_.cell_area);
     scratch_[cell] = staying;
@@ -555,17 +650,17 @@ typename PipeErosion<Real>::Fluxes PipeErosion<Real>::diffusion_shares(int x, in
   Fluxes shares{};
   if (constants_.diffusion_weighting == DiffusionWeighting::uniform) {
     const Real weight = static_cast<Real>(constants_.sediment_diffusion);
-    for (int k = 0; k < 4; ++k) shares[k] = exterior(cell, k) ? Real(0) : weight;
+    for (int k = 0; k < axis_pipes; ++k) shares[k] = exterior(cell, k) ? Real(0) : weight;
     return shares;
   }
   const Real half = Real(0.5);
   Fluxes neighbour_weights{};
-  for (int k = 0; k < 4; ++k) {
-    if (!exterior(cell, k)) neighbour_weights[k] = half * state_.water.at(x + pipes[k].dx, y + pipes[k].dy);
+  for (int k = 0; k < axis_pipes; ++k) {
+    if (!exterior(cell, k)) neighbour_weights[k] = half * state_.water.values[neighbour(x, y, k)];
   }
-  const Real base = state_.water.values[cell] + pipe_sum(neighbour_weights);
+  const Real base = state_.water.values[cell] + pipe_sum(neighbour_weights, axis_pipes);
   if (!(base > Real(0))) return shares;
-  for (int k = 0; k < 4; ++k) shares[k] = neighbour_weights[k] / base;
+  for (int k = 0; k < axis_pipes; ++k) shares[k] = neighbour_weights[k] / base;
   return shares;
 }
 
@@ -577,14 +672,14 @@ void PipeErosion<Real>::diffuse(std::vector<Real>& field) {
       const std::size_t cell = terrain.index(x, y);
       if (!terrain.is_valid(cell)) continue;
       const auto shares = diffusion_shares(x, y);
-      for (int k = 0; k < 4; ++k) sent_[cell][k] = field[cell] * shares[k];
+      for (int k = 0; k < axis_pipes; ++k) sent_[cell][k] = field[cell] * shares[k];
       // Water weighting of a dry cell sends all of it (Σσ = 1): rounding can make Σ sent exceed
       // what the cell holds by an ulp; the clamp removes that (as the water remainder's clamp).
-      scratch_[cell] = std::max(Real(0), field[cell] - pipe_sum(sent_[cell]));
+      scratch_[cell] = std::max(Real(0), field[cell] - pipe_sum(sent_[cell], axis_pipes));
     }
   }
   CompensatedSum nothing_leaves;  // exterior pipes send nothing (σ = 0 there)
-  gather_sent(field, nothing_leaves);
+  gather_sent(field, nothing_leaves, axis_pipes);
 }
 
 template <class Real>
@@ -606,27 +701,28 @@ void PipeErosion<Real>::check_state() const {
     for (int x = 0; x < terrain.width; ++x) {
       const std::size_t cell = terrain.index(x, y);
       if (!terrain.is_valid(cell)) continue;
-      const auto& out = state_.outflow[cell];
+      const auto report = [&](const std::string& name, Real value) {
+        refuse(fmt::format("step {}, cell (x={}, y={}): {} is {} (Δt = {} s, largest CFL number this step {:.3g}); "
+                           "the time step is too large or the input out of range",
+                           steps_done_, x, y, name, static_cast<double>(value), constants_.time_step, step_max_cfl_));
+      };
       struct Checked {
         const char* name;
         Real value;
         bool non_negative;
       };
-      const std::array<Checked, 10> values{{{"terrain height", terrain.values[cell], false},
-                                           {"water depth", state_.water.values[cell], true},
-                                           {"sediment", state_.sediment.values[cell], true},
-                                           {"regolith", state_.regolith.values[cell], true},
-                                           {"x velocity", state_.velocity_x.values[cell], false},
-                                           {"y velocity", state_.velocity_y.values[cell], false},
-                                           {"outflow L", out[left], true},
-                                           {"outflow R", out[right], true},
-                                           {"outflow T", out[top], true},
-                                           {"outflow B", out[bottom], true}}};
+      const std::array<Checked, 6> values{{{"terrain height", terrain.values[cell], false},
+                                          {"water depth", state_.water.values[cell], true},
+                                          {"sediment", state_.sediment.values[cell], true},
+                                          {"regolith", state_.regolith.values[cell], true},
+                                          {"x velocity", state_.velocity_x.values[cell], false},
+                                          {"y velocity", state_.velocity_y.values[cell], false}}};
       for (const auto& [name, value, non_negative] : values) {
-        if (is_finite(value) && !(non_negative && value < Real(0))) continue;
-        refuse(fmt::format("step {}, cell (x={}, y={}): {} is {} (Δt = {} s, largest CFL number this step {:.3g}); "
-                           "the time step is too large or the input out of range",
-                           steps_done_, x, y, name, static_cast<double>(value), constants_.time_step, step_max_cfl_));
+        if (!acceptable(value, non_negative)) report(name, value);
+      }
+      for (int k = 0; k < pipe_count(); ++k) {
+        const Real flux = state_.outflow[cell][k];
+        if (!acceptable(flux, true)) report(fmt::format("outflow {}", pipe_name(k)), flux);
       }
     }
   }

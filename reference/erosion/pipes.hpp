@@ -5,7 +5,7 @@
 //   initial    terrain b, water d, sediment s, outflow flux f, velocity; all in metres, m³/s, m/s.
 //              No-data cells of the terrain's mask are walls or sinks (see pipes.cpp) and hold no
 //              water, sediment, flux or velocity: the constructor sets those to 0 there.
-//   constants  from pipe_constants() (core/params/hydraulic.hpp).
+//   constants  from pipe_constants() (core/params/hydraulic.hpp), 4 or 8 pipes among them.
 //   forcing    rain map (m/s) and point sources (m³/s).
 // Real = double is the truth; Real = float repeats the GPU's arithmetic operation by operation.
 //
@@ -27,9 +27,9 @@ template <class Real>
 class PipeErosion {
  public:
   // Throws InputError for grids whose size differs from the terrain's, a mask without a valid cell,
-  // non-finite values, negative water, sediment or flux on valid cells, a rain map of another size
-  // or with negative or non-finite rates, and sources outside the grid, on no-data cells or with a
-  // negative or non-finite rate.
+  // non-finite values, negative water, sediment or flux on valid cells, a diagonal flux other than 0
+  // with 4 pipes, a rain map of another size or with negative or non-finite rates, and sources
+  // outside the grid, on no-data cells or with a negative or non-finite rate.
   PipeErosion(PipeState<Real> initial, const PipeConstants& constants, HydraulicForcing forcing = {});
 
   // One step: water increment, outflow flux, water depth, velocity, erosion/deposition, regolith,
@@ -46,12 +46,15 @@ class PipeErosion {
   struct Flows {
     CompensatedSum rain_in, source_in, water_added, evaporated, boundary_out_water, boundary_out_sediment, boundary_out_regolith;
   };
-  using Fluxes = std::array<Real, 4>;
+  using Fluxes = std::array<Real, 8>;  // one value per pipe, as gt::pipe_offsets
 
+  int pipe_count() const { return constants_.pipe_count; }
   bool exterior(std::size_t cell, int pipe) const { return (exterior_pipes_[cell] >> pipe) & 1u; }
+  std::size_t neighbour(int x, int y, int pipe) const;
   Fluxes inflows(int x, int y) const;
   Real neighbour_surface(int x, int y, int pipe) const;
   Fluxes carried_shares(std::size_t cell) const;
+  Real exterior_share(std::size_t cell, const Fluxes& shares) const;
   Real tilt_sine(int x, int y) const;
   Real backtraced_sediment(const std::vector<Real>& source, int x, int y) const;
   Fluxes diffusion_shares(int x, int y) const;
@@ -62,7 +65,7 @@ class PipeErosion {
   void update_velocity();
   void erode_and_deposit();
   void regolith_exchange();
-  void gather_sent(std::vector<Real>& field, CompensatedSum& boundary_out);
+  void gather_sent(std::vector<Real>& field, CompensatedSum& boundary_out, int pipes);
   void transport_with_fluxes(std::vector<Real>& field, CompensatedSum& boundary_out);
   void transport_semi_lagrangian(std::vector<Real>& field, CompensatedSum& boundary_out);
   void transport(std::vector<Real>& field, CompensatedSum& boundary_out);
@@ -75,7 +78,7 @@ class PipeErosion {
   PipeConstants constants_;
   std::vector<Real> rain_depth_;               // Δt·(rain_rate + rain_map) per cell, m
   std::vector<std::pair<std::size_t, Real>> source_depths_;  // cell, Δt·rate/(l_x·l_y), m
-  std::vector<unsigned char> exterior_pipes_;  // bit k: pipe k leads off the grid or to no data
+  std::vector<unsigned char> exterior_pipes_;  // bit k (all 8 pipes): pipe k leads off the grid or to no data
   std::vector<Real> water_before_flow_;        // d_A of the current step
   std::vector<unsigned char> drained_;         // K < 1 this step: the pipes took all of d_A
   std::vector<Real> scratch_;                  // next terrain or sediment of the current step

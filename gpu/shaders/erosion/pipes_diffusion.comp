@@ -1,7 +1,8 @@
 #version 450
 // Stage 6b' of the pipe erosion, seed 001 §3.8 (only when w > 0): diffusion of the sediment (and,
 // with REGOLITH, of the regolith) from the state after transport. Each valid cell sends σ_k·s to
-// each neighbour k whose pipe is not exterior and keeps max(0, s - Σ σ_k·s); it then holds what it kept
+// each of its 4 axis neighbours k whose pipe is not exterior (with 8 pipes too: the seed's stencil)
+// and keeps max(0, s - Σ σ_k·s); it then holds what it kept
 // plus what its neighbours sent it (the same numbers they lost, each recomputed here from the
 // neighbour's own data with the same operations, so the exchange conserves bit for bit).
 //   uniform weighting: σ_k = w;

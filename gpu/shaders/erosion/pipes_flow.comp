@@ -2,12 +2,13 @@
 // Stages 3-5 and the first half of 6 of the virtual-pipe erosion (Mei 2007, digest 000
 // eqs. 2.14-2.23), all per cell from the fluxes of pipes_outflow.comp:
 //   3 depth     d_B = (0 if K < 1 drained the cell, else max(0, d_A - Δt·Σf_out/(l_x·l_y))) + Δt·Σf_in/(l_x·l_y)
-//   4 velocity  u = ½((f_in,L - f_L) + (f_R - f_in,R))/(l_y·d̄), d̄ = max(floor, ½(d_A + d_B)); v alike
+//   4 velocity  u = ½((f_in,L - f_L) + (f_R - f_in,R))/(l_y·d̄), d̄ = max(floor, ½(d_A + d_B)); v alike;
+//               with PIPES_8 the diagonals add (l_x/l_d)·Σ dx_k·(f_k - f_in,k) inside the ½(...)
 //   5 erosion   C = K_c·max(sin α, T)·|v|·min(1, d_B/K_w); the terrain change Δb and s move by
 //               k_s·(C - s) or -k_d·(s - C); sin α from central differences of b0 + Δb
 //   5b regolith (REGOLITH, seed 001 §3.9) r_max = min(d_B, K_r); r < r_max: Δb and r move by
 //               k_re·(r_max - r); else by -k_rd·(r - r_max)
-//   6a shares   what each pipe carries, s_A·f_k·Δt/(d_A·l_x·l_y) (flux transport: `sent`, the
+//   6a shares   what each pipe (4 or 8) carries, s_A·f_k·Δt/(d_A·l_x·l_y) (flux transport: `sent`, the
 //               rest `staying`), or the sediment kept after the exterior pipes' share
 //               (semi-Lagrangian: `staying`, and what left in sent.x); the regolith likewise
 // Reads neighbours' Δb (the tilt) and fluxes; writes its own d_B, velocity, Δb into the next
@@ -40,15 +41,57 @@ float tilt_sine(ivec2 cell, uint index, uint flags) {
 
 // The share of the cell's water each pipe moved, f_k·Δt/(d_A·l_x·l_y), scaled down to sum to 1
 // where rounding made the total exceed it; 0 for a dry cell.
-vec4 carried_shares(float depth_before, vec4 out_flux) {
-  precise vec4 shares = vec4(0.0);
+vec4[2] carried_shares(float depth_before, vec4 out_flux[2]) {
+  precise vec4 shares[2] = vec4[2](vec4(0.0), vec4(0.0));
   if (!(depth_before > 0.0)) return shares;
-  for (int k = 0; k < 4; ++k) shares[k] = out_flux[k] * volume_to_depth / depth_before;
-  precise float total = pipe_sum(shares);
+  for (int k = 0; k < pipe_count; ++k) shares[k / 4][k % 4] = out_flux[k / 4][k % 4] * volume_to_depth / depth_before;
+  precise float total = pipe_total(shares);
   if (total > 1.0) {
-    for (int k = 0; k < 4; ++k) shares[k] = shares[k] / total;
+    for (int k = 0; k < pipe_count; ++k) shares[k / 4][k % 4] = shares[k / 4][k % 4] / total;
   }
   return shares;
+}
+
+// The share that left through exterior pipes (semi-Lagrangian transport): the exterior axis pipes'
+// shares added in the order L, R, T, B, then with 8 pipes the exterior diagonals' pipe_sum.
+float exterior_share(uint flags, vec4 shares[2]) {
+  precise float leaving = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    if (exterior(flags, k)) leaving = leaving + shares[0][k];
+  }
+  if (pipe_groups > 1) {
+    precise vec4 exterior_diagonals = vec4(0.0);
+    for (int k = 4; k < 8; ++k) {
+      if (exterior(flags, k)) exterior_diagonals[k % 4] = shares[1][k % 4];
+    }
+    leaving = leaving + pipe_sum(exterior_diagonals);
+  }
+  return leaving;
+}
+
+// The diagonals' pipe_sum of dx_k·(f_k - f_in,k) (axis 0) or dy_k·(f_k - f_in,k) (axis 1), each
+// term formed as f_k - f_in,k or f_in,k - f_k (the reference's directed_outflow).
+float diagonal_outflow(vec4 out_flux, vec4 in_flux, int axis) {
+  precise vec4 terms = vec4(0.0);
+  for (int k = 4; k < 8; ++k) {
+    int j = k % 4;
+    if (pipe_offsets[k][axis] > 0) {
+      terms[j] = out_flux[j] - in_flux[j];
+    } else {
+      terms[j] = in_flux[j] - out_flux[j];
+    }
+  }
+  return pipe_sum(terms);
+}
+
+// f_k of the cell's neighbours through its pipes towards it (f_in,k = neighbour k's pipe k ^ 1),
+// 0 through exterior pipes.
+vec4[2] inflows(ivec2 cell, uint flags) {
+  vec4 in_flux[2] = vec4[2](vec4(0.0), vec4(0.0));
+  for (int k = 0; k < pipe_count; ++k) {
+    if (!exterior(flags, k)) in_flux[k / 4][k % 4] = outflow[pipe_slot(neighbour_index(cell, k), k)][opposite(k) % 4];
+  }
+  return in_flux;
 }
 
 void main() {
@@ -59,20 +102,26 @@ void main() {
   if (!cell_valid(flags)) return;  // no-data cells keep Δb = 0 in both buffers, s = 0, v = 0
 
   // 3 water depth
-  precise vec4 out_flux = outflow[index];
-  precise vec4 in_flux = vec4(0.0);
-  for (int k = 0; k < 4; ++k) {
-    if (!exterior(flags, k)) in_flux[k] = outflow[neighbour_index(cell, k)][opposite(k)];
-  }
+  vec4 out_flux[2] = vec4[2](vec4(0.0), vec4(0.0));
+  for (int group = 0; group < pipe_groups; ++group) out_flux[group] = outflow[group_slot(index, group)];
+  vec4 in_flux[2] = inflows(cell, flags);
   precise float depth_before = water[index].y;
-  precise float drained = depth_before - volume_to_depth * pipe_sum(out_flux);
+  precise float drained = depth_before - pipe_total(out_flux) / area_per_time;
   precise float remaining = water[index].w > 0.0 ? 0.0 : ref_max(0.0, drained);
-  precise float depth = remaining + volume_to_depth * pipe_sum(in_flux);
+  precise float depth = remaining + pipe_total(in_flux) / area_per_time;
   water[index].z = depth;
 
   // 4 velocity
-  precise float flow_x = 0.5 * ((in_flux[pipe_left] - out_flux[pipe_left]) + (out_flux[pipe_right] - in_flux[pipe_right]));
-  precise float flow_y = 0.5 * ((in_flux[pipe_bottom] - out_flux[pipe_bottom]) + (out_flux[pipe_top] - in_flux[pipe_top]));
+  vec4 out_axis = out_flux[0];
+  vec4 in_axis = in_flux[0];
+  precise float twice_flow_x = (in_axis[pipe_left] - out_axis[pipe_left]) + (out_axis[pipe_right] - in_axis[pipe_right]);
+  precise float twice_flow_y = (in_axis[pipe_bottom] - out_axis[pipe_bottom]) + (out_axis[pipe_top] - in_axis[pipe_top]);
+  if (pipe_groups > 1) {
+    twice_flow_x = twice_flow_x + diagonal_share.x * diagonal_outflow(out_flux[1], in_flux[1], 0);
+    twice_flow_y = twice_flow_y + diagonal_share.y * diagonal_outflow(out_flux[1], in_flux[1], 1);
+  }
+  precise float flow_x = 0.5 * twice_flow_x;
+  precise float flow_y = 0.5 * twice_flow_y;
   precise float mean_depth = ref_max(depth_floor, 0.5 * (depth_before + depth));
   precise float u = flow_x / (length_y * mean_depth);
   precise float v = flow_y / (length_x * mean_depth);
@@ -108,27 +157,31 @@ void main() {
   delta_next[index] = changed;
 
   // 6a what leaves the cell
-  precise vec4 shares = carried_shares(depth_before, out_flux);
+  vec4 shares[2] = carried_shares(depth_before, out_flux);
 #ifdef TRANSPORT_FLUX
-  precise float kept_share = 1.0 - ref_min(1.0, pipe_sum(shares));
-  sent[index] = vec4(carried * shares[0], carried * shares[1], carried * shares[2], carried * shares[3]);
+  precise float kept_share = 1.0 - ref_min(1.0, pipe_total(shares));
+  for (int group = 0; group < pipe_groups; ++group) {
+    vec4 share = shares[group];
+    precise vec4 sent_down = vec4(carried * share[0], carried * share[1], carried * share[2], carried * share[3]);
+    sent[group_slot(index, group)] = sent_down;
+#ifdef REGOLITH
+    precise vec4 regolith_down = vec4(loose * share[0], loose * share[1], loose * share[2], loose * share[3]);
+    regolith_sent[group_slot(index, group)] = regolith_down;
+#endif
+  }
   staying[index] = carried * kept_share;
 #ifdef REGOLITH
-  regolith_sent[index] = vec4(loose * shares[0], loose * shares[1], loose * shares[2], loose * shares[3]);
   regolith_staying[index] = loose * kept_share;
 #endif
 #else
-  precise float leaving = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    if (exterior(flags, k)) leaving = leaving + shares[k];
-  }
+  precise float leaving = exterior_share(flags, shares);
   precise float kept_share = 1.0 - ref_min(1.0, leaving);
   precise float kept = carried * kept_share;
-  sent[index] = vec4(carried - kept, 0.0, 0.0, 0.0);
+  sent[group_slot(index, 0)] = vec4(carried - kept, 0.0, 0.0, 0.0);
   staying[index] = kept;
 #ifdef REGOLITH
   precise float loose_kept = loose * kept_share;
-  regolith_sent[index] = vec4(loose - loose_kept, 0.0, 0.0, 0.0);
+  regolith_sent[group_slot(index, 0)] = vec4(loose - loose_kept, 0.0, 0.0, 0.0);
   regolith_staying[index] = loose_kept;
 #endif
 #endif

@@ -1,7 +1,7 @@
 #version 450
 // Stages 6b and 7 of the virtual-pipe erosion (Mei 2007, digest 000 eqs. 2.24-2.26), per cell:
-//   flux form (TRANSPORT_FLUX): s = staying + Σ what the neighbours sent this cell, the same
-//     numbers they lost, summed (L + R) + (T + B);
+//   flux form (TRANSPORT_FLUX): s = staying + Σ what the neighbours sent this cell through the 4
+//     or 8 pipes, the same numbers they lost, summed (L + R) + (T + B) [+ ((TL + BR) + (TR + BL))];
 //   semi-Lagrangian: s(x) = staying(x - (u, v)·Δt), bilinear, a corner off the grid or on a
 //     no-data cell reading the cell itself; weights ceil(p) - p and p - floor(p);
 //   the regolith (REGOLITH, seed 001 §3.9) the same way, from its own buffers;
@@ -16,14 +16,14 @@ const int carried_sediment = 0, carried_regolith = 1;
 
 #ifdef TRANSPORT_FLUX
 float gathered(ivec2 cell, uint index, uint flags, int carried) {
-  precise vec4 received = vec4(0.0);
-  for (int k = 0; k < 4; ++k) {
+  vec4 received[2] = vec4[2](vec4(0.0), vec4(0.0));
+  for (int k = 0; k < pipe_count; ++k) {
     if (exterior(flags, k)) continue;
-    uint neighbour = neighbour_index(cell, k);
-    received[k] = carried == carried_sediment ? sent[neighbour][opposite(k)] : regolith_sent[neighbour][opposite(k)];
+    uint slot = pipe_slot(neighbour_index(cell, k), k);
+    received[k / 4][k % 4] = carried == carried_sediment ? sent[slot][opposite(k) % 4] : regolith_sent[slot][opposite(k) % 4];
   }
   precise float kept = carried == carried_sediment ? staying[index] : regolith_staying[index];
-  precise float total = kept + pipe_sum(received);
+  precise float total = kept + pipe_total(received);
   return total;
 }
 #else
