@@ -32,6 +32,7 @@
 #include "gpu/erosion/pipes.hpp"
 #include "reference/erosion/pipes.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/pipe_fields.hpp"
 #include "tests/support/refusal.hpp"
 
 namespace {
@@ -47,35 +48,11 @@ using gt::SedimentTransport;
 constexpr double float_roundoff = 0x1p-24;
 constexpr double double_roundoff = 0x1p-53;
 
-template <class Function>
-Grid<double> field(int width, int height, double cell_x, double cell_y, Function value) {
-  Grid<double> grid(width, height);
-  grid.cell_size_x = cell_x;
-  grid.cell_size_y = cell_y;
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) grid.at(x, y) = value(x, y);
-  }
-  return grid;
-}
-
-// Uniform noise in [0, 1) from the project's counter-based hash.
-double noise(int x, int y, std::uint32_t seed) {
-  return gt::uniform01(gt::random_u32(seed, static_cast<std::uint32_t>(x * 7919 + y), 0, 0));
-}
+using gt::testing::field;
+using gt::testing::noise;
 
 double quantized(double value, double step) { return std::floor(value / step) * step; }
 double as_float(double value) { return static_cast<double>(static_cast<float>(value)); }
-
-template <class Real>
-PipeState<Real> cast_state(const PipeState<double>& state) {
-  PipeState<Real> out{state.terrain.cast<Real>(),    state.water.cast<Real>(),      state.sediment.cast<Real>(), {},
-                      state.velocity_x.cast<Real>(), state.velocity_y.cast<Real>(), state.regolith.cast<Real>()};
-  for (const auto& flux : state.outflow) {
-    auto& cast = out.outflow.emplace_back();
-    for (std::size_t k = 0; k < flux.size(); ++k) cast[k] = static_cast<Real>(flux[k]);
-  }
-  return out;
-}
 
 // Largest |a − b| over the cells valid in `mask`.
 template <class A, class B>
@@ -222,7 +199,7 @@ TEST_P(PipesGpuOneStep, MatchesTheFloatReference) {
   const auto initial = small_state(GetParam().pipes);
   const auto forcing = small_forcing();
   const auto constants = gt::pipe_constants(small_params(GetParam()), initial.terrain);
-  gt::reference::PipeErosion<float> reference(cast_state<float>(initial), constants, forcing);
+  gt::reference::PipeErosion<float> reference(gt::cast_pipe_state<float>(initial), constants, forcing);
   gt::gpu::PipeErosion gpu(initial, constants, forcing);
   reference.step();
   gpu.step();
@@ -333,7 +310,7 @@ TEST_F(PipesGpu, ThermalStepMatchesTheFloatReference) {
   params.thermal_talus_angle = 30.0;
   params.thermal_rate = 0.5;
   const auto constants = gt::pipe_constants(params, initial.terrain);
-  gt::reference::PipeErosion<float> reference(cast_state<float>(initial), constants, small_forcing());
+  gt::reference::PipeErosion<float> reference(gt::cast_pipe_state<float>(initial), constants, small_forcing());
   gt::gpu::PipeErosion gpu(initial, constants, small_forcing());
   reference.step();
   gpu.step();
@@ -392,7 +369,7 @@ TEST_F(PipesGpu, StepsFollowTheDoubleReferenceAtAHighBase) {
   const auto initial = slope_state(32, 24, 500.0);
   const auto constants = gt::pipe_constants(slope_params(), initial.terrain);
   gt::reference::PipeErosion<double> truth(initial, constants);
-  gt::reference::PipeErosion<float> in_float(cast_state<float>(initial), constants);
+  gt::reference::PipeErosion<float> in_float(gt::cast_pipe_state<float>(initial), constants);
   gt::gpu::PipeErosion gpu(initial, constants);
   const auto& mask = initial.terrain;
   int done = 0;
@@ -492,7 +469,7 @@ TEST_F(PipesGpu, FluxTransportConservesMaterialAt500Metres) {
   const auto constants = gt::pipe_constants(params, initial.terrain);
   gt::gpu::PipeErosion gpu(initial, constants);
   gpu.run(steps);
-  gt::reference::PipeErosion<float> in_float(cast_state<float>(initial), constants);
+  gt::reference::PipeErosion<float> in_float(gt::cast_pipe_state<float>(initial), constants);
   in_float.run(steps);
   const auto state = gpu.state();
   double changes = 0.0;
@@ -658,7 +635,9 @@ TEST_F(PipesGpu, RefusesBadInput) {
   EXPECT_NE(refused(nan_terrain).find("(x=2, y=3)"), std::string::npos);
   auto too_high = gt::dry_pipe_state(terrain);
   too_high.terrain.at(4, 1) = 1e39;  // finite in double, infinite as the GPU's float
-  EXPECT_NE(refused(too_high).find("rounded to float: cell (x=4, y=1)"), std::string::npos);
+  const auto too_high_message = refused(too_high);
+  EXPECT_NE(too_high_message.find("(x=4, y=1)"), std::string::npos) << too_high_message;
+  EXPECT_NE(too_high_message.find("rounded to the float the GPU stores"), std::string::npos) << too_high_message;
   auto negative_water = gt::dry_pipe_state(terrain);
   negative_water.water.at(1, 1) = -0.1;
   EXPECT_NE(refused(negative_water).find("water depth at cell (x=1, y=1)"), std::string::npos);

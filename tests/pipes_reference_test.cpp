@@ -18,6 +18,7 @@
 #include "core/params/hydraulic.hpp"
 #include "core/rng.hpp"
 #include "reference/erosion/pipes.hpp"
+#include "tests/support/pipe_fields.hpp"
 #include "tests/support/refusal.hpp"
 
 namespace {
@@ -33,21 +34,8 @@ using gt::reference::PipeErosion;
 constexpr double double_roundoff = 0x1p-53;
 constexpr double float_roundoff = 0x1p-24;
 
-template <class Function>
-Grid<double> field(int width, int height, double cell_x, double cell_y, Function value) {
-  Grid<double> grid(width, height);
-  grid.cell_size_x = cell_x;
-  grid.cell_size_y = cell_y;
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) grid.at(x, y) = value(x, y);
-  }
-  return grid;
-}
-
-// Uniform noise in [0, 1) from the project's counter-based hash, exact in float and double.
-double noise(int x, int y, std::uint32_t seed) {
-  return gt::uniform01(gt::random_u32(seed, static_cast<std::uint32_t>(x * 7919 + y), 0, 0));
-}
+using gt::testing::field;
+using gt::testing::noise;
 
 // A state on `terrain` with `water` as initial depth (same size).
 template <class Real>

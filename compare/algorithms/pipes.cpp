@@ -236,22 +236,9 @@ BackendRun run_reference_double(const PipeScenario& scenario, const std::vector<
   return run;
 }
 
-template <class Real>
-PipeState<Real> cast_state(const PipeState<double>& state) {
-  PipeState<Real> cast{state.terrain.template cast<Real>(), state.water.template cast<Real>(),
-                       state.sediment.template cast<Real>(), {}, state.velocity_x.template cast<Real>(),
-                       state.velocity_y.template cast<Real>(), state.regolith.template cast<Real>()};
-  cast.outflow.reserve(state.outflow.size());
-  for (const auto& fluxes : state.outflow) {
-    auto& cast_fluxes = cast.outflow.emplace_back();
-    for (std::size_t k = 0; k < fluxes.size(); ++k) cast_fluxes[k] = static_cast<Real>(fluxes[k]);
-  }
-  return cast;
-}
-
 BackendRun run_reference_float(const PipeScenario& scenario, const std::vector<int>& at) {
   BackendRun run;
-  reference::PipeErosion<float> erosion(cast_state<float>(scenario.initial), scenario.constants, scenario.forcing);
+  reference::PipeErosion<float> erosion(cast_pipe_state<float>(scenario.initial), scenario.constants, scenario.forcing);
   const auto state_of = [](const reference::PipeErosion<float>& e) { return e.state(); };
   step_through(erosion, scenario.params.steps, at, scenario.initial.terrain, state_of, run.checkpoints);
   run.ledger = erosion.ledger();
@@ -402,7 +389,7 @@ double rounding_floor(const Grid<double>& field) { return rounded_operations_per
 // |float − double| ≤ 2·max|float − double| + the floor, if the GPU is no less exact than ref<float>.
 // A logic error (a stage missing, a wrong index) shows as far more than that.
 void add_one_step_parity(const PipeScenario& scenario, CaseResult& result) {
-  reference::PipeErosion<float> float_step(cast_state<float>(scenario.initial), scenario.constants, scenario.forcing);
+  reference::PipeErosion<float> float_step(cast_pipe_state<float>(scenario.initial), scenario.constants, scenario.forcing);
   float_step.step();
   reference::PipeErosion<double> double_step(scenario.initial, scenario.constants, scenario.forcing);
   double_step.step();

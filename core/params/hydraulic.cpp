@@ -214,6 +214,117 @@ PipeState<Real> dry_pipe_state(const Grid<Real>& terrain) {
 template PipeState<float> dry_pipe_state(const Grid<float>&);
 template PipeState<double> dry_pipe_state(const Grid<double>&);
 
+template <class To, class From>
+PipeState<To> cast_pipe_state(const PipeState<From>& state) {
+  PipeState<To> cast{state.terrain.template cast<To>(),    state.water.template cast<To>(),
+                     state.sediment.template cast<To>(),   {},
+                     state.velocity_x.template cast<To>(), state.velocity_y.template cast<To>(),
+                     state.regolith.template cast<To>()};
+  cast.outflow.reserve(state.outflow.size());
+  for (const auto& fluxes : state.outflow) {
+    auto& cast_fluxes = cast.outflow.emplace_back();
+    for (std::size_t k = 0; k < fluxes.size(); ++k) cast_fluxes[k] = static_cast<To>(fluxes[k]);
+  }
+  return cast;
+}
+
+template PipeState<float> cast_pipe_state(const PipeState<double>&);
+template PipeState<double> cast_pipe_state(const PipeState<float>&);
+
+namespace {
+
+template <class Real>
+void require_same_size(const Grid<Real>& field, const Grid<Real>& terrain, const char* name) {
+  require(field.width == terrain.width && field.height == terrain.height,
+          fmt::format("{} is {}x{}, the terrain {}x{}", name, field.width, field.height, terrain.width, terrain.height));
+}
+
+// Finite on valid cells (check_finite names the cell), and not negative where it must not be.
+template <class Real>
+void require_field(const Grid<Real>& field, const Grid<Real>& terrain, const char* name, bool non_negative) {
+  Grid<Real> masked = field;
+  masked.valid = terrain.valid;
+  check_finite(masked, fmt::format("{}: {}", algorithm_name, name));
+  if (!non_negative) return;
+  for (int y = 0; y < field.height; ++y) {
+    for (int x = 0; x < field.width; ++x) {
+      require(!terrain.is_valid(x, y) || field.at(x, y) >= Real(0),
+              fmt::format("the {} at cell (x={}, y={}) is {}; it must be >= 0", name, x, y,
+                          static_cast<double>(field.at(x, y))));
+    }
+  }
+}
+
+template <class Real>
+void require_fluxes(const PipeState<Real>& state, int pipe_count) {
+  const auto& terrain = state.terrain;
+  require(state.outflow.size() == terrain.size(),
+          fmt::format("the outflow flux has {} cells, the terrain {}", state.outflow.size(), terrain.size()));
+  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+    if (!terrain.is_valid(cell)) continue;
+    for (int k = 0; k < 8; ++k) {
+      const double flux = static_cast<double>(state.outflow[cell][k]);
+      require(std::isfinite(flux) && flux >= 0.0,
+              fmt::format("outflow flux {} at cell {} must be finite and >= 0", flux, cell));
+      require(k < pipe_count || flux == 0.0, fmt::format("outflow flux {} through pipe {} at cell {}: with {} pipes "
+                                                         "it must be 0",
+                                                         flux, pipe_name(k), cell, pipe_count));
+    }
+  }
+}
+
+// A rate that is finite and >= 0 and stays finite once rounded to Real.
+template <class Real>
+bool usable_rate(double rate) {
+  return std::isfinite(rate) && rate >= 0.0 && std::isfinite(static_cast<Real>(rate));
+}
+
+template <class Real>
+void require_forcing(const Grid<Real>& terrain, const HydraulicForcing& forcing, const PipeConstants& constants) {
+  const auto& rain_map = forcing.rain_map;
+  if (!rain_map.values.empty()) {
+    require(rain_map.width == terrain.width && rain_map.height == terrain.height,
+            fmt::format("the rain map is {}x{}, the terrain {}x{}", rain_map.width, rain_map.height, terrain.width,
+                        terrain.height));
+    for (std::size_t cell = 0; cell < rain_map.size(); ++cell) {
+      require(!terrain.is_valid(cell) || usable_rate<Real>(rain_map.values[cell]),
+              fmt::format("the rain map holds {} m/s at cell {}; rain must be finite and >= 0", rain_map.values[cell],
+                          cell));
+    }
+  }
+  for (const auto& source : forcing.sources) {
+    require(terrain.inside(source.x, source.y) && terrain.is_valid(source.x, source.y),
+            fmt::format("point source at cell (x={}, y={}) is off the grid or on a no-data cell", source.x, source.y));
+    require(usable_rate<Real>(source.rate) && usable_rate<Real>(source.rate * constants.time_step / constants.cell_area),
+            fmt::format("point source at cell (x={}, y={}) has rate {} m³/s; it must be finite and >= 0", source.x,
+                        source.y, source.rate));
+  }
+}
+
+}  // namespace
+
+template <class Real>
+void check_pipe_input(const PipeState<Real>& state, const HydraulicForcing& forcing, const PipeConstants& constants) {
+  const auto& terrain = state.terrain;
+  require(count_valid(terrain) > 0, "the terrain's mask covers every cell");
+  require_same_size(state.water, terrain, "the water depth");
+  require_same_size(state.sediment, terrain, "the sediment");
+  require_same_size(state.velocity_x, terrain, "the x velocity");
+  require_same_size(state.velocity_y, terrain, "the y velocity");
+  require_same_size(state.regolith, terrain, "the regolith");
+  require_field(terrain, terrain, "terrain", false);
+  require_field(state.water, terrain, "water depth", true);
+  require_field(state.sediment, terrain, "sediment", true);
+  require_field(state.regolith, terrain, "regolith", true);
+  require_field(state.velocity_x, terrain, "x velocity", false);
+  require_field(state.velocity_y, terrain, "y velocity", false);
+  require_fluxes(state, constants.pipe_count);
+  require_forcing(terrain, forcing, constants);
+}
+
+template void check_pipe_input(const PipeState<float>&, const HydraulicForcing&, const PipeConstants&);
+template void check_pipe_input(const PipeState<double>&, const HydraulicForcing&, const PipeConstants&);
+
 double water_balance(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
   return (entry.water - initial.water) - entry.water_added +
          (entry.evaporated + entry.boundary_out_water);

@@ -155,6 +155,18 @@ struct PipeState {
 template <class Real>
 PipeState<Real> dry_pipe_state(const Grid<Real>& terrain);
 
+// Every field and flux of `state` rounded once to To.
+template <class To, class From>
+PipeState<To> cast_pipe_state(const PipeState<From>& state);
+
+// What both twins refuse before they run (InputError, "erosion.pipe: ..."): fields of another size
+// than the terrain, a mask without a valid cell, non-finite values on valid cells (in Real: a value
+// that rounds to infinity is refused too), negative water, sediment, regolith or flux, flux through
+// diagonal pipes with 4 pipes, a rain map of another size or with negative or non-finite rates, and
+// sources off the grid, on no-data cells or with a negative or non-finite rate or depth.
+template <class Real>
+void check_pipe_input(const PipeState<Real>& state, const HydraulicForcing& forcing, const PipeConstants& constants);
+
 // One line of the ledger: volumes in m³, summed over valid cells in double with compensated
 // sums. State totals are after the step; the flows are cumulative since the initial state (entry 0).
 struct PipeLedgerEntry {

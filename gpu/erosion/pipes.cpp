@@ -144,89 +144,9 @@ static_assert(sizeof(CellConstants) == 16);
 
 [[noreturn]] void refuse(const std::string& what) { throw InputError(fmt::format("{}: {}", algorithm_name, what)); }
 
-// --- Validation: the reference's refusals (reference/erosion/pipes.cpp), on the double input. ---
-
-void require_same_size(const Grid<double>& field, const Grid<double>& terrain, const char* name) {
-  if (field.width != terrain.width || field.height != terrain.height) {
-    refuse(fmt::format("{} is {}x{}, the terrain {}x{}", name, field.width, field.height, terrain.width,
-                       terrain.height));
-  }
-}
-
-template <class T>
-Grid<T> masked_like(const Grid<T>& field, const Grid<double>& terrain) {
-  Grid<T> out = field;
-  out.valid = terrain.valid;
-  return out;
-}
-
-// Finite in double and still finite once rounded to the float the GPU stores.
-void require_finite(const Grid<double>& field, const Grid<double>& terrain, const std::string& name) {
-  const auto masked = masked_like(field, terrain);
-  check_finite(masked, fmt::format("{}: {}", algorithm_name, name));
-  check_finite(masked.cast<float>(), fmt::format("{}: {} rounded to float", algorithm_name, name));
-}
-
-void require_non_negative(const Grid<double>& field, const Grid<double>& terrain, const char* name) {
-  for (int y = 0; y < field.height; ++y) {
-    for (int x = 0; x < field.width; ++x) {
-      if (terrain.is_valid(x, y) && !(field.at(x, y) >= 0.0)) {
-        refuse(fmt::format("{} at cell (x={}, y={}) is {}; it must be >= 0", name, x, y, field.at(x, y)));
-      }
-    }
-  }
-}
-
-void check_initial_state(const PipeState<double>& state, int pipe_count) {
-  const auto& terrain = state.terrain;
-  if (count_valid(terrain) == 0) refuse("the terrain's mask covers every cell");
-  require_same_size(state.water, terrain, "the water depth");
-  require_same_size(state.sediment, terrain, "the sediment");
-  require_same_size(state.velocity_x, terrain, "the x velocity");
-  require_same_size(state.velocity_y, terrain, "the y velocity");
-  require_same_size(state.regolith, terrain, "the regolith");
-  if (state.outflow.size() != terrain.size()) {
-    refuse(fmt::format("the outflow flux has {} cells, the terrain {}", state.outflow.size(), terrain.size()));
-  }
-  require_finite(terrain, terrain, "terrain");
-  require_finite(state.water, terrain, "water depth");
-  require_finite(state.sediment, terrain, "sediment");
-  require_finite(state.velocity_x, terrain, "x velocity");
-  require_finite(state.velocity_y, terrain, "y velocity");
-  require_finite(state.regolith, terrain, "regolith");
-  require_non_negative(state.water, terrain, "the water depth");
-  require_non_negative(state.sediment, terrain, "the sediment");
-  require_non_negative(state.regolith, terrain, "the regolith");
-  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
-    for (int k = 0; k < 8; ++k) {
-      const double flux = state.outflow[cell][k];
-      const bool fits = std::isfinite(flux) && std::isfinite(static_cast<float>(flux)) && flux >= 0.0;
-      if (terrain.is_valid(cell) && !fits) {
-        refuse(fmt::format("outflow flux {} at cell {} must be finite and >= 0", flux, cell));
-      }
-      if (terrain.is_valid(cell) && k >= pipe_count && flux != 0.0) {
-        refuse(fmt::format("outflow flux {} through pipe {} at cell {}: with {} pipes it must be 0", flux,
-                           pipe_name(k), cell, pipe_count));
-      }
-    }
-  }
-}
-
 // Δt·(r + r_map) per cell in float, as ref<float> computes it; 0 on no-data cells.
 std::vector<float> rain_depths(const Grid<double>& terrain, const PipeConstants& constants,
                                const Grid<double>& rain_map) {
-  if (!rain_map.values.empty()) {
-    if (rain_map.width != terrain.width || rain_map.height != terrain.height) {
-      refuse(fmt::format("the rain map is {}x{}, the terrain {}x{}", rain_map.width, rain_map.height, terrain.width,
-                         terrain.height));
-    }
-    for (std::size_t cell = 0; cell < rain_map.size(); ++cell) {
-      const double rate = rain_map.values[cell];
-      if (terrain.is_valid(cell) && !(std::isfinite(rate) && std::isfinite(static_cast<float>(rate)) && rate >= 0.0)) {
-        refuse(fmt::format("the rain map holds {} m/s at cell {}; rain must be finite and >= 0", rate, cell));
-      }
-    }
-  }
   const float time_step = static_cast<float>(constants.time_step);
   const float uniform = static_cast<float>(constants.rain_rate);
   std::vector<float> depths(terrain.size(), 0.0f);
@@ -243,15 +163,7 @@ std::vector<std::pair<std::size_t, float>> source_depths(const Grid<double>& ter
                                                          const std::vector<PointSource>& sources) {
   std::vector<std::pair<std::size_t, float>> depths;
   for (const auto& source : sources) {
-    if (!terrain.inside(source.x, source.y) || !terrain.is_valid(source.x, source.y)) {
-      refuse(fmt::format("point source at cell (x={}, y={}) is off the grid or on a no-data cell", source.x,
-                         source.y));
-    }
     const double depth = source.rate * constants.time_step / constants.cell_area;
-    if (!(std::isfinite(source.rate) && source.rate >= 0.0 && std::isfinite(static_cast<float>(depth)))) {
-      refuse(fmt::format("point source at cell (x={}, y={}) has rate {} m³/s; it must be finite and >= 0",
-                         source.x, source.y, source.rate));
-    }
     depths.emplace_back(terrain.index(source.x, source.y), static_cast<float>(depth));
   }
   return depths;
@@ -364,8 +276,15 @@ double max_cfl_of(const std::vector<float>& velocity, const std::vector<std::uin
   return largest;
 }
 
-const PipeState<double>& checked(const PipeState<double>& state, const PipeConstants& constants) {
-  check_initial_state(state, constants.pipe_count);
+// The reference's refusals, on the state as given and as the float the GPU stores.
+const PipeState<double>& checked(const PipeState<double>& state, const HydraulicForcing& forcing,
+                                 const PipeConstants& constants) {
+  check_pipe_input(state, forcing, constants);
+  try {
+    check_pipe_input(cast_pipe_state<float>(state), forcing, constants);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{} (rounded to the float the GPU stores)", error.what()));
+  }
   return state;
 }
 
@@ -385,7 +304,7 @@ struct PipeErosion::Download {
 
 PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& constants,
                          const HydraulicForcing& forcing, bool keep_ledger)
-    : width_(checked(initial, constants).terrain.width),
+    : width_(checked(initial, forcing, constants).terrain.width),
       height_(initial.terrain.height),
       constants_(constants),
       keep_ledger_(keep_ledger),

@@ -149,66 +149,6 @@ bool acceptable(Real value, bool non_negative) {
 [[noreturn]] void refuse(const std::string& what) { throw InputError(fmt::format("{}: {}", algorithm_name, what)); }
 
 template <class Real>
-void require_same_size(const Grid<Real>& field, const Grid<Real>& terrain, const char* name) {
-  if (field.width != terrain.width || field.height != terrain.height) {
-    refuse(fmt::format("{} is {}x{}, the terrain {}x{}", name, field.width, field.height, terrain.width,
-                       terrain.height));
-  }
-}
-
-template <class Real>
-void require_non_negative(const Grid<Real>& field, const Grid<Real>& terrain, const char* name) {
-  for (int y = 0; y < field.height; ++y) {
-    for (int x = 0; x < field.width; ++x) {
-      if (terrain.is_valid(x, y) && !(field.at(x, y) >= Real(0))) {
-        refuse(fmt::format("{} at cell (x={}, y={}) is {}; it must be >= 0", name, x, y,
-                           static_cast<double>(field.at(x, y))));
-      }
-    }
-  }
-}
-
-template <class Real>
-void check_initial_state(const PipeState<Real>& state, int pipe_count) {
-  const auto& terrain = state.terrain;
-  if (count_valid(terrain) == 0) refuse("the terrain's mask covers every cell");
-  require_same_size(state.water, terrain, "the water depth");
-  require_same_size(state.sediment, terrain, "the sediment");
-  require_same_size(state.velocity_x, terrain, "the x velocity");
-  require_same_size(state.velocity_y, terrain, "the y velocity");
-  require_same_size(state.regolith, terrain, "the regolith");
-  if (state.outflow.size() != terrain.size()) {
-    refuse(fmt::format("the outflow flux has {} cells, the terrain {}", state.outflow.size(), terrain.size()));
-  }
-  check_finite(terrain, std::string(algorithm_name) + ": terrain");
-  auto masked = [&terrain](const Grid<Real>& field) {
-    Grid<Real> out = field;
-    out.valid = terrain.valid;
-    return out;
-  };
-  check_finite(masked(state.water), std::string(algorithm_name) + ": water depth");
-  check_finite(masked(state.sediment), std::string(algorithm_name) + ": sediment");
-  check_finite(masked(state.velocity_x), std::string(algorithm_name) + ": x velocity");
-  check_finite(masked(state.velocity_y), std::string(algorithm_name) + ": y velocity");
-  check_finite(masked(state.regolith), std::string(algorithm_name) + ": regolith");
-  require_non_negative(state.water, terrain, "the water depth");
-  require_non_negative(state.sediment, terrain, "the sediment");
-  require_non_negative(state.regolith, terrain, "the regolith");
-  for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
-    for (int k = 0; k < all_pipes; ++k) {
-      const Real flux = state.outflow[cell][k];
-      if (terrain.is_valid(cell) && !(is_finite(flux) && flux >= Real(0))) {
-        refuse(fmt::format("outflow flux {} at cell {} must be finite and >= 0", static_cast<double>(flux), cell));
-      }
-      if (terrain.is_valid(cell) && k >= pipe_count && flux != Real(0)) {
-        refuse(fmt::format("outflow flux {} through pipe {} at cell {}: with {} pipes it must be 0",
-                           static_cast<double>(flux), pipe_name(k), cell, pipe_count));
-      }
-    }
-  }
-}
-
-template <class Real>
 void clear_no_data_cells(PipeState<Real>& state) {
   for (std::size_t cell = 0; cell < state.terrain.size(); ++cell) {
     if (state.terrain.is_valid(cell)) continue;
@@ -220,18 +160,6 @@ void clear_no_data_cells(PipeState<Real>& state) {
 
 template <class Real>
 std::vector<Real> rain_depths(const Grid<Real>& terrain, const PipeConstants& constants, const Grid<double>& rain_map) {
-  if (!rain_map.values.empty()) {
-    if (rain_map.width != terrain.width || rain_map.height != terrain.height) {
-      refuse(fmt::format("the rain map is {}x{}, the terrain {}x{}", rain_map.width, rain_map.height, terrain.width,
-                         terrain.height));
-    }
-    for (std::size_t cell = 0; cell < rain_map.size(); ++cell) {
-      if (terrain.is_valid(cell) && !(std::isfinite(rain_map.values[cell]) && rain_map.values[cell] >= 0.0)) {
-        refuse(fmt::format("the rain map holds {} m/s at cell {}; rain must be finite and >= 0",
-                           rain_map.values[cell], cell));
-      }
-    }
-  }
   const Real time_step = static_cast<Real>(constants.time_step);
   const Real uniform = static_cast<Real>(constants.rain_rate);
   std::vector<Real> depths(terrain.size(), Real(0));
@@ -248,14 +176,6 @@ std::vector<std::pair<std::size_t, Real>> source_depths(const Grid<Real>& terrai
                                                         const std::vector<PointSource>& sources) {
   std::vector<std::pair<std::size_t, Real>> depths;
   for (const auto& source : sources) {
-    if (!terrain.inside(source.x, source.y) || !terrain.is_valid(source.x, source.y)) {
-      refuse(fmt::format("point source at cell (x={}, y={}) is off the grid or on a no-data cell", source.x,
-                         source.y));
-    }
-    if (!(std::isfinite(source.rate) && source.rate >= 0.0)) {
-      refuse(fmt::format("point source at cell (x={}, y={}) has rate {} m³/s; it must be finite and >= 0",
-                         source.x, source.y, source.rate));
-    }
     depths.emplace_back(terrain.index(source.x, source.y),
                         static_cast<Real>(source.rate * constants.time_step / constants.cell_area));
   }
@@ -315,7 +235,7 @@ AxisTaps<Real> axis_taps(Real displacement, Real reach) {
 template <class Real>
 PipeErosion<Real>::PipeErosion(PipeState<Real> initial, const PipeConstants& constants, HydraulicForcing forcing)
     : state_(std::move(initial)), constants_(constants) {
-  check_initial_state(state_, constants_.pipe_count);
+  check_pipe_input(state_, forcing, constants_);
   clear_no_data_cells(state_);
   rain_depth_ = rain_depths(state_.terrain, constants_, forcing.rain_map);
   source_depths_ = source_depths(state_.terrain, constants_, forcing.sources);
