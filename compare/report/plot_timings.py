@@ -41,14 +41,22 @@ def plot(rows, out_path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, (time_axis, rate_axis) = plt.subplots(1, 2, figsize=(12, 5), constrained_layout=True)
-    for (algorithm, backend), points in series_by_line(rows).items():
-        style = "-o" if backend == "gpu" else "--s"
+    lines = series_by_line(rows)
+    algorithms = sorted({algorithm for algorithm, _ in lines})
+    colours = {algorithm: plt.get_cmap("tab20")(i % 20) for i, algorithm in enumerate(algorithms)}
+    styles = {"gpu": "-o", "cpu": "--s"}  # anything else (published figures): dotted triangles
+    legend_rows = (len(lines) + 2) // 3
+    legend_height = 0.3 + 0.2 * legend_rows  # inches
+    height = 5.0 + legend_height
+    fig, (time_axis, rate_axis) = plt.subplots(1, 2, figsize=(12, height))
+    for (algorithm, backend), points in lines.items():
+        style = styles.get(backend, ":^")
+        colour = colours[algorithm]
         label = f"{algorithm} ({backend})"
         sizes = [p[0] for p in points]
-        time_axis.plot(sizes, [p[1] for p in points], style, label=label)
+        time_axis.plot(sizes, [p[1] for p in points], style, color=colour, label=label)
         rated = [p for p in points if p[2] is not None and p[2] > 0]
-        rate_axis.plot([p[0] for p in rated], [p[2] for p in rated], style, label=label)
+        rate_axis.plot([p[0] for p in rated], [p[2] for p in rated], style, color=colour)
 
     time_axis.set(xscale="log", yscale="log", xlabel="side n (n × n cells; n³ voxels for 3-D rows)", ylabel="median ms per run",
                   title="Time per run (lower is better)")
@@ -56,7 +64,10 @@ def plot(rows, out_path):
                   title="Throughput (higher is better)")
     for axis in (time_axis, rate_axis):
         axis.grid(True, which="both", alpha=0.3)
-        axis.legend(fontsize="small")
+    # One legend for both plots, below them, so that it covers no line.
+    fig.legend(loc="lower center", ncol=3, fontsize="small")
+    fig.subplots_adjust(left=0.07, right=0.98, wspace=0.25, top=1.0 - 0.9 / height,
+                        bottom=(legend_height + 0.6) / height)
     fig.suptitle(devices_title(rows), fontsize="medium")
     fig.savefig(out_path, dpi=100)
 
