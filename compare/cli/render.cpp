@@ -24,6 +24,7 @@
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/io/mesh_io.hpp"
+#include "core/vec3.hpp"
 #include "gpu/context/context.hpp"
 #include "gpu/render/phong.hpp"
 #include "reference/render/phong.hpp"
@@ -35,20 +36,10 @@ namespace gt {
 namespace {
 
 namespace fs = std::filesystem;
-using reference::Vec3;
 
 constexpr int exit_written = 0;
 constexpr int exit_bad_input = 2;
 constexpr int max_side = 16384;
-
-Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 operator*(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double length(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
 std::string lower(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });

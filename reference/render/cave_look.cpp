@@ -12,6 +12,7 @@
 
 #include "core/errors.hpp"
 #include "core/noise/perlin_texture_table.hpp"
+#include "core/vec3.hpp"
 #include "reference/cave/density.hpp"
 #include "reference/cave/marching_tetrahedra.hpp"
 #include "reference/cave/normals.hpp"
@@ -21,10 +22,6 @@
 
 namespace gt::reference {
 namespace {
-
-Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 operator*(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // The permutation and the texture table of one noise seed, built once per seed (the table is
 // 256 KiB; the fragment functions run once per pixel).

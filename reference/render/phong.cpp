@@ -10,19 +10,11 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/vec3.hpp"
 #include "reference/render/rasterizer.hpp"
 
 namespace gt::reference {
 namespace {
-
-Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 operator*(double s, const Vec3& a) { return {s * a[0], s * a[1], s * a[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 normalised(const Vec3& a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
