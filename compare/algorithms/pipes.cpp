@@ -424,8 +424,8 @@ void add_parity_vs_double(const BackendRun& truth, const BackendRun& float_run, 
   const std::size_t shots = std::min({truth.checkpoints.size(), float_run.checkpoints.size(), gpu_run.checkpoints.size()});
   if (shots == 0) return;
   for (const auto& [name, field] : compared_fields) {
-    Series gpu_series{.label = std::string(name) + " gpu"};
-    Series float_series{.label = std::string(name) + " ref<float>", .dashed = true};
+    Series gpu_series{.label = std::string(name) + " gpu", .group = name};
+    Series float_series{.label = std::string(name) + " ref<float>", .dashed = true, .group = name};
     FieldDifference gpu_last, float_last;
     for (std::size_t i = 0; i < shots; ++i) {
       gpu_last = field_difference(truth.checkpoints[i].*field, gpu_run.checkpoints[i].*field);
@@ -484,8 +484,8 @@ BackendRun run_gpu(const PipeScenario& scenario, const std::vector<int>& at, Cas
 }
 
 Series ledger_series(const std::string& label, const std::vector<double>& steps, const std::vector<double>& values,
-                     bool dashed = false) {
-  return {.label = label, .x = steps, .y = values, .dashed = dashed};
+                     bool dashed = false, const std::string& group = "") {
+  return {.label = label, .x = steps, .y = values, .dashed = dashed, .group = group};
 }
 
 void plot_ledgers(const BackendRun& truth, const std::vector<std::pair<std::string, LedgerErrors>>& errors,
@@ -495,8 +495,8 @@ void plot_ledgers(const BackendRun& truth, const std::vector<std::pair<std::stri
                         .y_label = "relative error (exact zeros at 1e-18)",
                         .log_y = true};
   for (const auto& [backend, error] : errors) {
-    error_plot.series.push_back(ledger_series("water balance " + backend, error.steps, error.water));
-    error_plot.series.push_back(ledger_series("material drift " + backend, error.steps, error.material, true));
+    error_plot.series.push_back(ledger_series("water balance " + backend, error.steps, error.water, false, backend));
+    error_plot.series.push_back(ledger_series("material drift " + backend, error.steps, error.material, true, backend));
   }
   SeriesPlot volume_plot{.title = "Water ledger (ref<double>)", .x_label = "step", .y_label = "m³"};
   std::vector<double> steps, water, inflow, evaporated, out;

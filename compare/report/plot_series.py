@@ -4,7 +4,9 @@
 Usage: plot_series.py PLOT.json OUT.png
 
 PLOT.json: {"title", "x_label", "y_label", "log_x", "log_y",
-            "series": [{"label", "x": [...], "y": [...], "dashed": bool}]}
+            "series": [{"label", "x": [...], "y": [...], "dashed": bool, "group": str}]}
+Series with the same non-empty group share a colour (a measurement beside its twin or its bound);
+the others get one each. Points carry markers only where there are few of them (up to 40).
 Non-finite or (on a log axis) non-positive points are left out. Exits 3 with a one-line reason
 when matplotlib is missing, 2 on bad input; compare/report/plots.cpp shows the last line.
 """
@@ -34,13 +36,19 @@ def main(argv):
         with open(argv[1], encoding="utf-8") as f:
             plot = json.load(f)
         figure, axes = plt.subplots(figsize=(8, 4.5), dpi=100)
+        palette = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        colours = {}
         for series in plot["series"]:
+            key = series.get("group") or series["label"]
+            colours.setdefault(key, palette[len(colours) % len(palette)])
             points = [(x, y) for x, y in zip(series["x"], series["y"])
                       if usable(x, y, plot["log_x"], plot["log_y"])]
             if not points:
                 continue
             xs, ys = zip(*points)
-            axes.plot(xs, ys, "--" if series.get("dashed") else "-o", label=series["label"], markersize=4)
+            line = "--" if series.get("dashed") else "-"
+            marker = "o" if len(points) <= 40 and not series.get("dashed") else ""
+            axes.plot(xs, ys, line + marker, color=colours[key], label=series["label"], markersize=4)
         axes.set(xlabel=plot["x_label"], ylabel=plot["y_label"], title=plot["title"],
                  xscale="log" if plot["log_x"] else "linear", yscale="log" if plot["log_y"] else "linear")
         axes.grid(True, which="both", alpha=0.3)

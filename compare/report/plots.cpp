@@ -133,7 +133,11 @@ std::optional<Artifact> plot_series(const SeriesPlot& plot, const std::filesyste
   nlohmann::json document = {{"title", plot.title},   {"x_label", plot.x_label}, {"y_label", plot.y_label},
                              {"log_x", plot.log_x},   {"log_y", plot.log_y},     {"series", nlohmann::json::array()}};
   for (const Series& series : plot.series) {
-    document["series"].push_back({{"label", series.label}, {"x", series.x}, {"y", series.y}, {"dashed", series.dashed}});
+    document["series"].push_back({{"label", series.label},
+                                  {"x", series.x},
+                                  {"y", series.y},
+                                  {"dashed", series.dashed},
+                                  {"group", series.group}});
   }
   reason = draw(series_script, document, report_folder / relative_png);
   if (!reason.empty()) return std::nullopt;

@@ -27,6 +27,7 @@ struct Series {
   std::vector<double> x;
   std::vector<double> y;
   bool dashed = false;  // bounds and models dashed, measurements solid
+  std::string group;    // series with the same non-empty group share a colour (a measurement and its twin)
 };
 
 struct SeriesPlot {
