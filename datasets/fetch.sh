@@ -3,7 +3,9 @@
 # the four DEMs (volcano.json from the npm package vega-datasets, jacksboro_fault_dem.npz and
 # topobathy.npz from the Debian package python-matplotlib-data, elev.tif from the Debian package
 # r-cran-terra) and, into datasets/real/meshes/, four ASCII OFF meshes of CGAL's demo data
-# (bunny00, elephant, cow, elephant-with-holes from libcgal-demo's data.tar.gz).
+# (bunny00, elephant, cow, elephant-with-holes from libcgal-demo's data.tar.gz) and, into
+# datasets/real/textures/, two images of scikit-image's sample data used as colour drapes
+# (astronaut.png, grass.png from the Debian package python3-skimage).
 #
 # Conventions
 #   - Every file is pinned by SHA-256; a mismatch stops the script with an error.
@@ -26,10 +28,12 @@ readonly terra_deb="r-cran-terra=1.7-3-1"
 readonly cgal_demo_deb="libcgal-demo=5.5.1-2"
 # libcgal-demo's doc folder is a link to libcgal-dev's, so its copyright file ships in libcgal-dev.
 readonly cgal_dev_deb="libcgal-dev=5.5.1-2"
+readonly skimage_deb="python3-skimage=0.19.3-8"
 readonly mpl_sample_dir="usr/share/matplotlib/mpl-data/sample_data"
 readonly terra_ex_dir="usr/lib/R/site-library/terra/ex"
 readonly cgal_data_tar="usr/share/doc/libcgal-dev/data.tar.gz"
 readonly cgal_copyright="usr/share/doc/libcgal-dev/copyright"
+readonly skimage_data_dir="usr/lib/python3/dist-packages/skimage/data"
 
 readonly volcano_sha=49578c17a2a595a83a393a6da2cc85e3d3d4c93043e942a5e04dc113ca4a8528
 readonly jacksboro_sha=d493f50a33e82a4420494c54d1fca1539d177bdc27ab190bc5fe6e92f62fb637
@@ -39,6 +43,8 @@ readonly bunny00_sha=ab651cb04955c161efaeb079035a1e5e1f0e0d1f816a2df67beaea68f39
 readonly elephant_sha=be4e1ea68f5f840a3d2ada69d828222e76a57d9e25b21e19a9deacd3f2328e02
 readonly cow_sha=1c5a25c3047fc6b14dd0c962d3562b1796671422ab4634f9d46f9f23814cd54a
 readonly elephant_with_holes_sha=0262a20c433534623af10f2b8b3aeb9067792486195cac47738bc6abea0cb8d0
+readonly astronaut_sha=88431cd9653ccd539741b555fb0a46b61558b301d4110412b5bc28b5e3ea6cb5
+readonly grass_sha=b6b6022426b38936c43a4ac09635cd78af074e90f42ffa8227ac8b7452d39f89
 
 work_dir="$(mktemp -d)"
 readonly work_dir
@@ -258,7 +264,49 @@ EOF
   echo "meshes/$name.off: fetched"
 }
 
-mkdir -p "$real_dir/meshes"
+# skimage_texture_notice NAME: the licence notice of one scikit-image sample image, on stdout: the
+# docstring of skimage.data.NAME (which states the image's own licence and origin), then the
+# package's copyright file as shipped.
+skimage_texture_notice() {
+  echo "$1.png from $skimage_deb, $skimage_data_dir/$1.png."
+  echo "Its licence and origin, as the docstring of skimage.data.$1 ($skimage_data_dir/_fetchers.py) states them:"
+  echo
+  python3 - "$work_dir/python3-skimage/$skimage_data_dir/_fetchers.py" "$1" <<'EOF'
+import ast, sys
+tree = ast.parse(open(sys.argv[1]).read())
+print(next(ast.get_docstring(f) for f in tree.body if isinstance(f, ast.FunctionDef) and f.name == sys.argv[2]))
+EOF
+  echo
+  echo "Copyright file of $skimage_deb:"
+  echo
+  cat "$work_dir/python3-skimage/usr/share/doc/python3-skimage/copyright"
+}
+
+# fetch_skimage_texture NAME SHA CHANNELS LICENCE DESCRIPTION: one scikit-image sample image into
+# datasets/real/textures/NAME.png, with its licence notice and sidecar.
+fetch_skimage_texture() {
+  local name="$1" sha="$2"
+  is_current "textures/$name.png" "textures/$name" "$sha" && { echo "textures/$name.png: up to date"; return; }
+  apt_fetch "$skimage_deb"
+  skimage_texture_notice "$name" >"$work_dir/$name-license.txt"
+  install_file "$work_dir/python3-skimage/$skimage_data_dir/$name.png" "textures/$name.png" "textures/$name" "$sha" \
+    "$work_dir/$name-license.txt"
+  write_sidecar "textures/$name" <<EOF
+{
+  "file": "textures/$name.png",
+  "origin": {"package": "deb:$skimage_deb", "path": "$skimage_data_dir/$name.png"},
+  "sha256": "$sha",
+  "licence": {"name": "$4", "notice": "LICENSE.$name.txt"},
+  "description": "$5",
+  "format": "PNG, 8 bits per channel, $3",
+  "image": {"width": 512, "height": 512, "row_0": "top"},
+  "use": "colour drape of render.terrain (drape = $name): u east, v south, row 0 at the north edge"
+}
+EOF
+  echo "textures/$name.png: fetched"
+}
+
+mkdir -p "$real_dir/meshes" "$real_dir/textures"
 fetch_volcano
 fetch_jacksboro
 fetch_topobathy
@@ -273,3 +321,7 @@ fetch_cgal_mesh cow "$cow_sha" 2904 5804 "cow" \
   "closed 2-manifold, genus 0, consistently oriented; 101 pairs of faces cross (self-intersections)"
 fetch_cgal_mesh elephant-with-holes "$elephant_with_holes_sha" 2798 4463 "elephant, open (holes in the surface)" \
   "open: 1353 boundary edges in 106 loops, genus 3 (Euler characteristic -110); 173 pairs of faces cross"
+fetch_skimage_texture astronaut "$astronaut_sha" "RGB" "public domain (NASA; no known copyright restrictions)" \
+  "Eileen Collins, NASA astronaut (NASA Great Images), as shipped in scikit-image's sample data"
+fetch_skimage_texture grass "$grass_sha" "gray" "CC0 1.0" \
+  "grass (DeviantArt linolafett, cropped to 512x512 and converted to gray by scikit-image)"

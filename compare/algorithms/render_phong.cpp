@@ -186,7 +186,14 @@ gpu::PhongDraw phong_draw(const reference::PhongScene& scene) {
                   .height_high = terrain.height_high,
                   .rock = terrain.rock,
                   .rock_start_deg = terrain.rock_start_deg,
-                  .rock_full_deg = terrain.rock_full_deg};
+                  .rock_full_deg = terrain.rock_full_deg,
+                  .drape = {}};
+  if (terrain.drape) {
+    const reference::TerrainDrape& drape = *terrain.drape;
+    draw.terrain.drape = gpu::PhongTerrainDrape{.width = drape.width, .height = drape.height, .rgb = drape.rgb,
+                                                .x_west = drape.x_west, .x_east = drape.x_east,
+                                                .z_north = drape.z_north, .z_south = drape.z_south};
+  }
   return draw;
 }
 

@@ -18,17 +18,27 @@
 // base is the un-eroded terrain's, so that a before/after pair shares its base and skirt bottoms.
 // Look: terrain (reference/render/phong.hpp's height ramp and rock by slope) with the ramp over the
 // input's heights before erosion, or plain.
+// Drape (terrain look only): drape = <name> reads datasets/real/textures/<name>.png (fetched by
+// datasets/fetch.sh; the folder is the build's GT_DATASET_DIR) and lays it over the solid's xz
+// bounding box, west to east and north to south (the surface's extent: the skirts and the base lie
+// within it), image row 0 at the north edge; its colour replaces the height ramp, the rock blend
+// stays. A gray image gives r = g = b, an alpha channel is dropped. A missing or unreadable file is
+// an InputError naming the path; drape = none renders the ramp exactly as before drapes existed.
 // Checks: those of run_phong_twins (image.*, determinism.gpu) and the mesh checks of the solid
 // (compare/checks/mesh.hpp, backend "cpu", closed expected): the solid must be watertight,
 // manifold, outward and free of self-intersections; genus, components and volume are informative.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <OpenImageIO/imagebuf.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/checks/image.hpp"
 #include "compare/checks/mesh.hpp"
 #include "compare/render_case.hpp"
 #include "core/errors.hpp"
@@ -81,6 +91,9 @@ const ParamSpecs& terrain_specs() {
         {"look", ParamKind::choice, "terrain", 0, 0, {"terrain", "plain"}, "1",
          "terrain: height ramp from the lowest to the highest input height (before erosion, so that a before/after "
          "pair shares its colours), rock by slope (skirts and base are rock); plain: seed 004's one albedo"},
+        {"drape", ParamKind::choice, "none", 0, 0, {"none", "astronaut", "grass"}, "1",
+         "terrain look: colour image draped over the surface in plan view (datasets/real/textures/<name>.png, "
+         "west to east, north at the top), replacing the height ramp; none: the ramp"},
         {"min_covered_share", ParamKind::real, 0.05, 0.0, 1.0, {}, "1",
          "least share of pixels the solid must cover in the reference image (0: not checked)"},
         {"erode", ParamKind::choice, "none", 0, 0, {"none", "thermal", "pipe"}, "",
@@ -156,6 +169,39 @@ double base_depth(const Heightmap& input, const Heightmap& eroded, const nlohman
   return depth > 0.0 ? depth : 0.0;
 }
 
+// The RGB8 texels of an image file: gray replicated to r = g = b, channels beyond the third dropped.
+reference::TerrainDrape drape_texels(const std::filesystem::path& file) {
+  const OIIO::ImageBuf image = read_image(file);
+  const OIIO::ImageSpec& spec = image.spec();
+  std::vector<std::uint8_t> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
+  if (!image.get_pixels(image.roi(), OIIO::TypeDesc::UINT8, pixels.data())) {
+    throw InputError(fmt::format("cannot read the pixels of {}: {}", file.string(), image.geterror()));
+  }
+  reference::TerrainDrape drape{.width = spec.width, .height = spec.height, .rgb = {}};
+  drape.rgb.reserve(3 * pixels.size() / std::size_t(spec.nchannels));
+  for (std::size_t first = 0; first < pixels.size(); first += std::size_t(spec.nchannels)) {
+    for (int channel = 0; channel < 3; ++channel) {
+      drape.rgb.push_back(pixels[first + std::size_t(spec.nchannels >= 3 ? channel : 0)]);
+    }
+  }
+  return drape;
+}
+
+// datasets/real/textures/<name>.png over the solid's xz bounding box.
+reference::TerrainDrape terrain_drape(const std::string& name, const Mesh& solid) {
+  const auto file = std::filesystem::path(GT_DATASET_DIR) / "real" / "textures" / (name + ".png");
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(fmt::format("render.terrain: the drape {} is missing (datasets/fetch.sh fetches it)", file.string()));
+  }
+  reference::TerrainDrape drape = drape_texels(file);
+  const auto [low, high] = bounding_box(solid);
+  drape.x_west = low[0];
+  drape.x_east = high[0];
+  drape.z_north = low[2];
+  drape.z_south = high[2];
+  return drape;
+}
+
 struct TerrainCase {
   reference::TerrainSolid solid;
   reference::PhongScene scene;
@@ -199,6 +245,15 @@ PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& 
       terrain.scene.terrain.height_low = vertical_scale * low;
       terrain.scene.terrain.height_high = vertical_scale * high;
     }
+  }
+  const std::string drape = resolved.at("drape");
+  if (drape != "none") {
+    if (!terrain_look) throw InputError("render.terrain: a drape needs look = terrain");
+    terrain.scene.terrain.drape = terrain_drape(drape, solid.mesh);
+    const reference::TerrainDrape& placed = *terrain.scene.terrain.drape;
+    terrain.notes.push_back(fmt::format("drape {}.png, {}x{} texels over x [{:.4g}, {:.4g}] m, z [{:.4g}, {:.4g}] m",
+                                        drape, placed.width, placed.height, placed.x_west, placed.x_east,
+                                        placed.z_north, placed.z_south));
   }
   if (!terrain_heights.description.empty()) terrain.notes.push_back(terrain_heights.description);
   terrain.notes.push_back(fmt::format(

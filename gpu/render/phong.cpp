@@ -31,7 +31,12 @@ struct PhongLookBlock {
   float inverse_rock_width;  // 1/(cos(rock_start) - cos(rock_full))
   std::int32_t strip_size;
   float colour_octave_limit;
-  std::int32_t padding[2];
+  std::int32_t drape_width;
+  std::int32_t drape_height;
+  float drape_x_west;
+  float drape_inverse_width;  // 1/(x_east - x_west)
+  float drape_z_north;
+  float drape_inverse_depth;  // 1/(z_south - z_north)
 };
 static_assert(offsetof(PhongLookBlock, bump_frequency) == 16);
 static_assert(offsetof(PhongLookBlock, up) == 32);
@@ -40,14 +45,33 @@ static_assert(offsetof(PhongLookBlock, rock) == 48);
 static_assert(offsetof(PhongLookBlock, inverse_rock_width) == 60);
 static_assert(offsetof(PhongLookBlock, strip_size) == 64);
 static_assert(offsetof(PhongLookBlock, colour_octave_limit) == 68);
-static_assert(sizeof(PhongLookBlock) == 80);
+static_assert(offsetof(PhongLookBlock, drape_width) == 72);
+static_assert(offsetof(PhongLookBlock, drape_inverse_depth) == 92);
+static_assert(sizeof(PhongLookBlock) == 96);
 
-constexpr GLuint look_block_binding = 0, strip_binding = 6, permutation_binding = 5;
+constexpr GLuint look_block_binding = 0, strip_binding = 6, permutation_binding = 5, drape_binding = 7;
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
+bool has_drape(const PhongDraw& draw) { return draw.look == PhongLook::terrain && draw.terrain.drape.has_value(); }
+
 const std::vector<std::array<double, 3>>& look_strip(const PhongDraw& draw) {
   return draw.look == PhongLook::cave ? draw.cave.colour_strip : draw.terrain.ramp;
+}
+
+void set_drape(PhongLookBlock& block, const PhongTerrainDrape& drape) {
+  if (drape.width < 1 || drape.height < 1 ||
+      drape.rgb.size() != 3 * std::size_t(drape.width) * std::size_t(drape.height) ||
+      !(drape.x_east > drape.x_west && drape.z_south > drape.z_north)) {
+    throw std::invalid_argument("Phong render: the terrain drape needs 3·width·height bytes, x_west < x_east and "
+                                "z_north < z_south");
+  }
+  block.drape_width = drape.width;
+  block.drape_height = drape.height;
+  block.drape_x_west = float(drape.x_west);
+  block.drape_inverse_width = float(1.0 / (drape.x_east - drape.x_west));
+  block.drape_z_north = float(drape.z_north);
+  block.drape_inverse_depth = float(1.0 / (drape.z_south - drape.z_north));
 }
 
 PhongLookBlock look_block(const PhongDraw& draw) {
@@ -78,7 +102,19 @@ PhongLookBlock look_block(const PhongDraw& draw) {
     block.rock[axis] = float(terrain.rock[axis]);
   }
   block.strip_size = std::int32_t(look_strip(draw).size());
+  if (has_drape(draw)) set_drape(block, *terrain.drape);
   return block;
+}
+
+// The drape's texels packed for unpackUnorm4x8: r | g << 8 | b << 16 | 255 << 24.
+std::vector<std::uint32_t> packed_drape(const PhongTerrainDrape& drape) {
+  std::vector<std::uint32_t> texels;
+  texels.reserve(drape.rgb.size() / 3);
+  for (std::size_t first = 0; first + 2 < drape.rgb.size(); first += 3) {
+    texels.push_back(std::uint32_t(drape.rgb[first]) | std::uint32_t(drape.rgb[first + 1]) << 8 |
+                     std::uint32_t(drape.rgb[first + 2]) << 16 | 0xff000000u);
+  }
+  return texels;
 }
 
 std::vector<std::array<float, 4>> strip_texels(const PhongDraw& draw) {
@@ -90,8 +126,10 @@ std::vector<std::array<float, 4>> strip_texels(const PhongDraw& draw) {
   return texels;
 }
 
-std::vector<std::string> look_defines(PhongLook look) {
-  return {"GT_PHONG_LOOK=" + std::to_string(static_cast<int>(look))};
+std::vector<std::string> look_defines(const PhongDraw& draw) {
+  std::vector<std::string> defines = {"GT_PHONG_LOOK=" + std::to_string(static_cast<int>(draw.look))};
+  if (has_drape(draw)) defines.emplace_back("GT_TERRAIN_DRAPE");
+  return defines;
 }
 
 std::vector<Vertex> interleaved_vertices(const PhongDraw& draw) {
@@ -136,7 +174,7 @@ PhongRenderer::PhongRenderer(const PhongDraw& draw)
     : target_(GL_RGBA8, draw.width, draw.height, "Phong image"),
       index_count_(draw.mesh.triangles.size() * 3),
       look_(draw.look),
-      program_(GraphicsProgram::load("render/phong.vert", "render/phong.frag", look_defines(draw.look))),
+      program_(GraphicsProgram::load("render/phong.vert", "render/phong.frag", look_defines(draw))),
       vertices_(StorageBuffer::from(interleaved_vertices(draw))),
       indices_(StorageBuffer::from(draw.mesh.triangles)) {
   set_uniforms(program_.id(), draw);
@@ -144,6 +182,7 @@ PhongRenderer::PhongRenderer(const PhongDraw& draw)
     strip_.emplace(StorageBuffer::from(strip_texels(draw)));
     look_block_.emplace(UniformBuffer::from(look_block(draw)));
   }
+  if (has_drape(draw)) drape_.emplace(StorageBuffer::from(packed_drape(*draw.terrain.drape)));
   if (look_ == PhongLook::cave) {
     const Permutation permutation = seeded_permutation(draw.cave.noise_seed);
     permutation_.emplace(StorageBuffer::from(doubled_permutation(permutation)));
@@ -162,6 +201,7 @@ PhongRenderer::~PhongRenderer() { glDeleteVertexArrays(1, &vertex_array_); }
 void PhongRenderer::run() const {
   if (look_block_) look_block_->bind(look_block_binding);
   if (strip_) strip_->bind(strip_binding);
+  if (drape_) drape_->bind(drape_binding);
   if (permutation_) permutation_->bind(permutation_binding);
   if (noise_texture_) noise_texture_->bind(perlin_texture_unit);
   target_.draw(program_, vertex_array_, index_count_);

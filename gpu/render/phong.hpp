@@ -21,8 +21,14 @@
 // (binding 5) of its improved Perlin bump and the texture of Gustavson's Perlin noise (unit 0) of
 // its colour, both of seeded_permutation(noise_seed). The host derives, in double and rounded to
 // float once: bump slope a·s, the terrain's 1/(high - low), cos(rock_start) and
-// 1/(cos(rock_start) - cos(rock_full)). std::invalid_argument for an empty strip (cave, terrain)
-// and for a terrain look without height_low < height_high and 0 <= rock_start < rock_full <= 180.
+// 1/(cos(rock_start) - cos(rock_full)), the drape's 1/(x_east - x_west) and 1/(z_south - z_north).
+// A terrain drape (PhongTerrainLook::drape) adds the define GT_TERRAIN_DRAPE (without one the
+// terrain program is unchanged) and a storage buffer (binding 7) of one uint per texel, RGBA8
+// packed as unpackUnorm4x8 reads it (r in the low byte, alpha 255), row-major, row 0 at v = 0; the
+// shader reads its four texels by index and blends them in arithmetic, never through a sampler.
+// std::invalid_argument for an empty strip (cave, terrain), for a terrain look without
+// height_low < height_high and 0 <= rock_start < rock_full <= 180, and for a drape without
+// 3·width·height bytes, x_west < x_east and z_north < z_south.
 #pragma once
 
 #include <array>
@@ -55,6 +61,13 @@ struct PhongCaveLook {
   std::uint32_t noise_seed = 0;
 };
 
+// reference::TerrainDrape's fields (reference/render/phong.hpp "Colour drape").
+struct PhongTerrainDrape {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // 3 per texel, row-major, row 0 at v = 0 (north)
+  double x_west = 0.0, x_east = 1.0, z_north = 0.0, z_south = 1.0;
+};
+
 // reference::TerrainLook's fields (reference/render/phong.hpp).
 struct PhongTerrainLook {
   std::vector<std::array<double, 3>> ramp;  // colour over normalised height
@@ -62,6 +75,7 @@ struct PhongTerrainLook {
   double height_low = 0.0, height_high = 1.0;
   std::array<double, 3> rock{0.42, 0.40, 0.38};
   double rock_start_deg = 30.0, rock_full_deg = 45.0;
+  std::optional<PhongTerrainDrape> drape;  // replaces the ramp when set
 };
 
 struct PhongDraw {
@@ -102,6 +116,7 @@ class PhongRenderer {
   GLuint vertex_array_ = 0;
   std::optional<UniformBuffer> look_block_;      // cave, terrain
   std::optional<StorageBuffer> strip_;           // cave, terrain
+  std::optional<StorageBuffer> drape_;           // terrain with a drape
   std::optional<StorageBuffer> permutation_;     // cave
   std::optional<PerlinTexture> noise_texture_;   // cave
 };

@@ -73,6 +73,40 @@ void require_finite(double value, const char* what) {
   if (!std::isfinite(value)) throw InputError(fmt::format("Phong render: {} must be finite", what));
 }
 
+void require_drape(const TerrainDrape& drape) {
+  if (drape.width < 1 || drape.height < 1 || drape.width > 16384 || drape.height > 16384) {
+    throw InputError("terrain look: the drape's sides must lie in [1, 16384] texels");
+  }
+  if (drape.rgb.size() != 3 * std::size_t(drape.width) * std::size_t(drape.height)) {
+    throw InputError(fmt::format("terrain look: a {}x{} drape needs {} bytes, it has {}", drape.width, drape.height,
+                                 3 * std::size_t(drape.width) * std::size_t(drape.height), drape.rgb.size()));
+  }
+  if (!(drape.x_east > drape.x_west) || !(drape.z_south > drape.z_north) ||
+      !std::isfinite(drape.x_east - drape.x_west) || !std::isfinite(drape.z_south - drape.z_north)) {
+    throw InputError("terrain look: the drape needs x_west < x_east and z_north < z_south");
+  }
+}
+
+// Texel (column, row) of the drape, channels byte/255.
+Vec3 drape_texel(const TerrainDrape& drape, int column, int row) {
+  const std::size_t first = 3 * (std::size_t(row) * std::size_t(drape.width) + std::size_t(column));
+  return {drape.rgb[first] / 255.0, drape.rgb[first + 1] / 255.0, drape.rgb[first + 2] / 255.0};
+}
+
+// Texel coordinate t in [0, 1] over `size` texels: the two clamped neighbours and the weight of the second.
+struct TexelPair {
+  int first, second;
+  double weight;
+};
+
+TexelPair texel_pair(double t, int size) {
+  const double x = double(size) * std::clamp(t, 0.0, 1.0) - 0.5;
+  const double lower = std::floor(x);
+  return {std::clamp(int(lower), 0, size - 1), std::clamp(int(lower) + 1, 0, size - 1), x - lower};
+}
+
+Vec3 mix(const Vec3& a, const Vec3& b, double weight) { return a + weight * (b - a); }
+
 void require_look(const PhongScene& scene) {
   if (scene.look == Look::cave) {
     const CaveLook& cave = scene.cave;
@@ -100,6 +134,7 @@ void require_look(const PhongScene& scene) {
     if (!(terrain.rock_start_deg >= 0.0 && terrain.rock_start_deg < terrain.rock_full_deg && terrain.rock_full_deg <= 180.0)) {
       throw InputError("terrain look: need 0 <= rock_start_deg < rock_full_deg <= 180");
     }
+    if (terrain.drape) require_drape(*terrain.drape);
   }
 }
 
@@ -264,15 +299,34 @@ TerrainLook terrain_look(const Mesh& mesh, const Vec3& up) {
   return look;
 }
 
-Vec3 terrain_albedo(const TerrainLook& look, const Vec3& p, const Vec3& n) {
+Vec3 drape_colour(const TerrainDrape& drape, double u, double v) {
+  const TexelPair column = texel_pair(u, drape.width), row = texel_pair(v, drape.height);
+  const Vec3 top = mix(drape_texel(drape, column.first, row.first), drape_texel(drape, column.second, row.first),
+                       column.weight);
+  const Vec3 bottom = mix(drape_texel(drape, column.first, row.second), drape_texel(drape, column.second, row.second),
+                          column.weight);
+  return mix(top, bottom, row.weight);
+}
+
+// The colour the rock blend starts from: the drape's at p when there is one, else the height ramp's.
+Vec3 ground_colour(const TerrainLook& look, const Vec3& p) {
+  if (look.drape) {
+    const TerrainDrape& drape = *look.drape;
+    return drape_colour(drape, (p[0] - drape.x_west) / (drape.x_east - drape.x_west),
+                        (p[2] - drape.z_north) / (drape.z_south - drape.z_north));
+  }
   const double h = std::clamp((terrain_height(look.up, p) - look.height_low) / (look.height_high - look.height_low),
                               0.0, 1.0);
-  const Vec3 ramp = strip_colour(look.ramp, h);
+  return strip_colour(look.ramp, h);
+}
+
+Vec3 terrain_albedo(const TerrainLook& look, const Vec3& p, const Vec3& n) {
+  const Vec3 ground = ground_colour(look, p);
   const double cos_start = std::cos(radians(look.rock_start_deg)), cos_full = std::cos(radians(look.rock_full_deg));
   const double c = terrain_height(look.up, n);
   double w = std::clamp((cos_start - c) / (cos_start - cos_full), 0.0, 1.0);
   w = w * w * (3.0 - 2.0 * w);
-  return ramp + w * (look.rock - ramp);
+  return ground + w * (look.rock - ground);
 }
 
 Vec3 shade_fragment(const PhongScene& scene, const Vec3& position, const Vec3& normal) {

@@ -50,11 +50,12 @@
 //   colour = a·(0.1 + E·max(0, n'·l)) + 0.3·E·max(0, r'·v)^5, r' = 2(n'·l)n' - l, clamped to [0, 1]
 // (phong_lit). The plain look is phong_colour itself.
 //
-// Terrain look (this project's, for heightmap meshes; no texture drape):
+// Terrain look (this project's, for heightmap meshes):
 //   h = clamp((p·up - height_low)/(height_high - height_low), 0, 1)   (p·up = (p_x·u_x + p_y·u_y) + p_z·u_z)
 //   ramp colour = strip_colour(ramp, h) (cave_look.hpp: GL_LINEAR lookup in a 256-entry strip)
 //   c = n·up, w = clamp((cos(rock_start) - c)/(cos(rock_start) - cos(rock_full)), 0, 1),
-//   w = w²(3 - 2w) (smoothstep), albedo = ramp + w·(rock - ramp)
+//   w = w²(3 - 2w) (smoothstep), albedo = ground + w·(rock - ground), ground = the ramp colour
+//   (or the drape's, see "Colour drape")
 // so faces steeper than rock_start_deg (default 30°) turn towards the rock colour, fully rock from
 // rock_full_deg (45°) on; walls and faces seen from below (c <= 0) are rock. terrain_height_ramp()
 // is a hypsometric ramp, piecewise-linear between these stops at the entry centres (i + 0.5)/256,
@@ -62,10 +63,25 @@
 //   0.00 (0.16, 0.32, 0.14) lowland green   0.30 (0.36, 0.52, 0.20) grass
 //   0.55 (0.62, 0.56, 0.36) dry grass       0.78 (0.50, 0.42, 0.34) bare earth
 //   0.90 (0.60, 0.58, 0.56) scree           1.00 (0.96, 0.96, 0.98) snow
-// rock = (0.42, 0.40, 0.38). terrain_look(mesh, up) takes height_low/high from the mesh's extent
+// rock = (0.42, 0.40, 0.38).
+// Colour drape (optional, TerrainLook::drape; issue 6): an RGB8 image laid over the terrain in plan
+// view, projected along world y whatever `up` is (meant for up = +y, the terrain solid's). u runs
+// along +x (east) from x_west (u = 0) to x_east (u = 1), v along +z (south) from z_north (v = 0) to
+// z_south (v = 1); image row 0 is v = 0 (north, the top of the picture as stored), column 0 u = 0.
+//   u = clamp((p_x - x_west)/(x_east - x_west), 0, 1), v likewise with p_z, z_north, z_south
+//   x = W·u - 0.5, i = floor(x), f = x - i (texel centres at (i + 0.5)/W), y, j, g likewise with H
+//   top = t(i0, j0) + f·(t(i1, j0) - t(i0, j0)), bottom = t(i0, j1) + f·(t(i1, j1) - t(i0, j1)),
+//   drape colour = top + g·(bottom - top), t(i, j) = byte/255, i0 = clamp(i, 0, W - 1), i1 =
+//   clamp(i + 1, 0, W - 1), j0, j1 likewise (bilinear with clamp to edge, the 2-D form of the strip
+//   lookup in cave_look.hpp, in plain arithmetic on both twins for the same reason: GL leaves the
+//   texture unit's weight precision open). The bytes are used as stored (sRGB-encoded, like the
+//   strips); no mip-mapping, so a drape much finer than the pixels aliases.
+// The drape colour replaces the ramp colour above (h is not used); the rock blend stays, so cliffs,
+// skirts and the base stay rock. terrain_look(mesh, up) takes height_low/high from the mesh's extent
 // along `up` (for a terrain solid with a base below the surface, set height_low to the lowest
 // surface height instead, so the base does not stretch the ramp).
-// Throws InputError for a mesh without triangles or without extent, and for an unusable camera
+// Throws InputError for a mesh without triangles or without extent, for a drape whose sides lie
+// outside [1, 16384], whose bytes are not 3·W·H or whose extent is empty, and for an unusable camera
 // (eye at the target, up along the view direction, fov_y outside (0, 180) degrees, not
 // 0 < near < far, sides outside [1, 16384]).
 #pragma once
@@ -73,6 +89,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/mesh.hpp"
@@ -103,12 +120,24 @@ enum class Look { plain, cave, terrain };
 
 std::vector<Vec3> terrain_height_ramp();
 
+// The colour drape of the terrain look ("Colour drape" above).
+struct TerrainDrape {
+  int width = 0, height = 0;          // texels, each in [1, 16384]
+  std::vector<std::uint8_t> rgb;      // 3 per texel, row-major, row 0 at v = 0 (north)
+  double x_west = 0.0, x_east = 1.0;  // world x of u = 0 and u = 1
+  double z_north = 0.0, z_south = 1.0;  // world z of v = 0 and v = 1
+};
+
+// The bilinear drape colour at (u, v) (each clamped to [0, 1]), channels in [0, 1].
+Vec3 drape_colour(const TerrainDrape& drape, double u, double v);
+
 struct TerrainLook {
-  std::vector<Vec3> ramp = terrain_height_ramp();  // colour over normalised height
+  std::vector<Vec3> ramp = terrain_height_ramp();  // colour over normalised height (unused with a drape)
   Vec3 up{0.0, 1.0, 0.0};                          // unit vector: the height axis
   double height_low = 0.0, height_high = 1.0;      // p·up mapped to h = 0 and h = 1
   Vec3 rock{0.42, 0.40, 0.38};
   double rock_start_deg = 30.0, rock_full_deg = 45.0;  // slope angles of the rock blend
+  std::optional<TerrainDrape> drape;                  // replaces the ramp when set
 };
 
 // height_low/high = the smallest and largest p·up over the mesh's vertices (InputError when they

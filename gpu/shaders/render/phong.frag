@@ -11,7 +11,8 @@
 // (gpu/render/phong.cpp), picks how albedo and n are made before the Phong terms:
 //   0 plain    the uniform albedo and n (the shader as it was before looks: the #if blocks vanish)
 //   1 cave     albedo from the colour strip and moss, n bumped (render/phong_look.glsl)
-//   2 terrain  albedo from the height ramp and the slope (render/phong_look.glsl)
+//   2 terrain  albedo from the height ramp (or, with GT_TERRAIN_DRAPE, the colour drape) and the
+//              slope (render/phong_look.glsl)
 
 #ifndef GT_PHONG_LOOK
 #define GT_PHONG_LOOK 0

@@ -11,6 +11,9 @@
 //                   one vec4 (rgb, 1) per entry, look.strip_size entries
 //   cave only: the permutation buffer (binding 5, noise/permutation.glsl) of the improved Perlin
 //   bump and the texture of Gustavson's 2004 Perlin noise (unit 0, noise/perlin_texture.glsl).
+//   terrain with GT_TERRAIN_DRAPE defined: the drape, storage buffer binding 7, one uint per texel
+//   (RGBA8 as unpackUnorm4x8 reads it), row-major, row 0 at v = 0 (north); its colour replaces the
+//   height ramp's (reference/render/phong.hpp "Colour drape").
 #ifndef GT_RENDER_PHONG_LOOK_GLSL
 #define GT_RENDER_PHONG_LOOK_GLSL
 
@@ -33,6 +36,12 @@ layout(std140, binding = 0) uniform PhongLookBlock {
   float inverse_rock_width;       // 1/(cos(rock_start) - cos(rock_full))
   int strip_size;
   float colour_octave_limit;      // |L| <= limit
+  int drape_width;                // texels
+  int drape_height;
+  float drape_x_west;             // world x of u = 0
+  float drape_inverse_width;      // 1/(x_east - x_west)
+  float drape_z_north;            // world z of v = 0
+  float drape_inverse_depth;      // 1/(z_south - z_north)
 } look;
 
 layout(std430, binding = 6) readonly buffer PhongLookStrip { vec4 strip[]; };
@@ -104,13 +113,49 @@ float gt_terrain_height(vec3 p) {
   return height;
 }
 
-// Ramp colour at the normalised height, blended towards rock by the slope of the facing normal n.
+#ifdef GT_TERRAIN_DRAPE
+
+layout(std430, binding = 7) readonly buffer PhongTerrainDrape { uint drape_texels[]; };
+
+vec3 gt_drape_texel(int column, int row) {
+  return unpackUnorm4x8(drape_texels[row * look.drape_width + column]).rgb;
+}
+
+// Bilinear in arithmetic over the texels around p's plan position (u east, v south, texel centres
+// at (i + 0.5)/W), clamped to the edge: the rows' blends along u, then the blend between the rows.
+vec3 gt_drape_colour(vec3 p) {
+  precise float u = clamp((p.x - look.drape_x_west) * look.drape_inverse_width, 0.0, 1.0);
+  precise float v = clamp((p.z - look.drape_z_north) * look.drape_inverse_depth, 0.0, 1.0);
+  precise float x = float(look.drape_width) * u - 0.5;
+  precise float y = float(look.drape_height) * v - 0.5;
+  precise float left = floor(x);
+  precise float upper = floor(y);
+  precise float fx = x - left;
+  precise float fy = y - upper;
+  int i0 = clamp(int(left), 0, look.drape_width - 1), i1 = clamp(int(left) + 1, 0, look.drape_width - 1);
+  int j0 = clamp(int(upper), 0, look.drape_height - 1), j1 = clamp(int(upper) + 1, 0, look.drape_height - 1);
+  vec3 north_west = gt_drape_texel(i0, j0), north_east = gt_drape_texel(i1, j0);
+  vec3 south_west = gt_drape_texel(i0, j1), south_east = gt_drape_texel(i1, j1);
+  precise vec3 north = north_west + fx * (north_east - north_west);
+  precise vec3 south = south_west + fx * (south_east - south_west);
+  precise vec3 blended = north + fy * (south - north);
+  return blended;
+}
+
+#endif  // GT_TERRAIN_DRAPE
+
+// Ground colour (the drape's at p, or the ramp's at the normalised height), blended towards rock by
+// the slope of the facing normal n.
 vec3 gt_terrain_albedo(vec3 p, vec3 n) {
+#ifdef GT_TERRAIN_DRAPE
+  vec3 ground = gt_drape_colour(p);
+#else
   precise float h = clamp((gt_terrain_height(p) - look.height_low) * look.inverse_height_range, 0.0, 1.0);
-  vec3 ramp = gt_strip_colour(h);
+  vec3 ground = gt_strip_colour(h);
+#endif
   precise float w = clamp((look.rock_start_cos - gt_terrain_height(n)) * look.inverse_rock_width, 0.0, 1.0);
   precise float smooth_w = w * w * (3.0 - 2.0 * w);
-  precise vec3 albedo = ramp + smooth_w * (look.rock - ramp);
+  precise vec3 albedo = ground + smooth_w * (look.rock - ground);
   return albedo;
 }
 
