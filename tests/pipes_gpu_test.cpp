@@ -3,7 +3,8 @@
 //   - one step from the same state agrees with ref<float> bit for bit in every field but the
 //     terrain, whose base + change storage differs from ref<float>'s rounding of b by at most the
 //     roundings ref<float> makes (half an ulp of |b| per write); every transport, border, variant,
-//     with 4 pipes and with 8 (issue 3);
+//     with 4 pipes and with 8 (issue 3), and seed 001's code choices (raw-difference tilt, regolith
+//     not diffused);
 //   - many steps follow ref<double> within a linear growth model that does not involve the base
 //     height (ref<float> at 500 m does not);
 //   - the water ledger closes, the flux form conserves material at a 500 m base where ref<float>
@@ -117,17 +118,23 @@ class PipesGpu : public gt::testing::GlTest {
 
 enum class Variant { plain, regolith_uniform_diffusion, regolith_water_diffusion };
 
+// Seed 001's code choices (the defaults are the thesis's): its raw-difference tilt and, in the
+// regolith variants, a regolith that is not diffused.
 struct OneStepCase {
   SedimentTransport transport;
   PipeBoundary boundary;
   Variant variant;
   int pipes = 4;
+  gt::TiltDifferences tilt = gt::TiltDifferences::central;
+  bool regolith_diffusion = true;
 };
 
 std::string case_name(const OneStepCase& c) {
   const char* variants[] = {"plain", "regolith_uniform_diffusion", "regolith_water_diffusion"};
   return std::string(gt::sediment_transport_name(c.transport)) + "_" + gt::pipe_boundary_name(c.boundary) + "_" +
-         variants[static_cast<int>(c.variant)] + (c.pipes == 8 ? "_8_pipes" : "");
+         variants[static_cast<int>(c.variant)] + (c.pipes == 8 ? "_8_pipes" : "") +
+         (c.tilt == gt::TiltDifferences::seed001_code ? "_code_tilt" : "") +
+         (c.regolith_diffusion ? "" : "_regolith_undiffused");
 }
 
 void PrintTo(const OneStepCase& c, std::ostream* out) { *out << case_name(c); }
@@ -182,6 +189,8 @@ HydraulicParams small_params(const OneStepCase& c) {
   params.transport = c.transport;
   params.boundary = c.boundary;
   params.pipe_count = c.pipes;
+  params.tilt_differences = c.tilt;
+  params.regolith_diffusion = c.regolith_diffusion;
   if (c.variant != Variant::plain) {
     params.regolith_depth = 0.05;
     params.regolith_dissolving_rate = 8.0;  // k_re = 1/4
@@ -292,7 +301,17 @@ INSTANTIATE_TEST_SUITE_P(
                       OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::open, Variant::plain, 8},
                       OneStepCase{SedimentTransport::flux, PipeBoundary::open, Variant::regolith_water_diffusion, 8},
                       OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::open,
-                                  Variant::regolith_uniform_diffusion, 8}),
+                                  Variant::regolith_uniform_diffusion, 8},
+                      // Seed 001's code choices: each alone, then both on 8 pipes. The 2 m x 1 m
+                      // cells make the raw differences differ from the slopes along both axes.
+                      OneStepCase{SedimentTransport::flux, PipeBoundary::closed, Variant::plain, 4,
+                                  gt::TiltDifferences::seed001_code},
+                      OneStepCase{SedimentTransport::flux, PipeBoundary::open, Variant::regolith_uniform_diffusion, 4,
+                                  gt::TiltDifferences::central, false},
+                      OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::closed,
+                                  Variant::regolith_water_diffusion, 4, gt::TiltDifferences::central, false},
+                      OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::open,
+                                  Variant::regolith_water_diffusion, 8, gt::TiltDifferences::seed001_code, false}),
     [](const ::testing::TestParamInfo<OneStepCase>& info) { return case_name(info.param); });
 
 TEST_F(PipesGpu, ThermalStepMatchesTheFloatReference) {

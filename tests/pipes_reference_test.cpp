@@ -3,15 +3,17 @@
 // the flux-form transport conserves material while the semi-Lagrangian one reports its drift,
 // water never turns negative, a lake at rest stays at rest, mirror symmetry, the CFL number, the
 // refusals, the seed's K example, deposition raising the terrain, float vs double agreement and
-// the float trap at 500 m; seed 001's regolith layer and sediment diffusion (both weightings); the
-// 8-pipe option (issue 3): the K scaling over 8 pipes, the flux gain and velocity of the diagonals,
-// water and material balances, a more isotropic spread on a cone, mirror symmetry along the
-// diagonal, the refusal of other pipe counts.
+// the float trap at 500 m; seed 001's regolith layer and sediment diffusion (both weightings), its
+// code's undiffused regolith and raw-difference tilt; the 8-pipe option (issue 3): the K scaling
+// over 8 pipes, the flux gain and velocity of the diagonals, water and material balances, a more
+// isotropic spread on a cone, mirror symmetry along the diagonal, the refusal of other pipe counts.
 //
 // Rounding bounds below use u = 2^-53 (double) or 2^-24 (float), the unit roundoff: one rounded
 // operation changes a value v by at most u·|v|.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -424,6 +426,12 @@ TEST(PipesReference, ParametersRoundTripThroughJson) {
   EXPECT_EQ(params.boundary, PipeBoundary::open);
   EXPECT_EQ(params.rain_rate, 1e-3);
   EXPECT_EQ(params.time_step, HydraulicParams{}.time_step);
+  EXPECT_TRUE(params.regolith_diffusion);
+  EXPECT_EQ(params.tilt_differences, gt::TiltDifferences::central);
+  const auto code = gt::hydraulic_params_from_json(gt::resolve_params(
+      "erosion.pipe", gt::hydraulic_param_specs(), {{"regolith_diffusion", false}, {"tilt_differences", "seed001_code"}}));
+  EXPECT_FALSE(code.regolith_diffusion);
+  EXPECT_EQ(code.tilt_differences, gt::TiltDifferences::seed001_code);
 }
 
 // Terrain on a base height: a gentle slope with roughness, rain on it.
@@ -561,6 +569,92 @@ TEST(PipesReference, WaterWeightedDiffusionSpreadsOnlyIntoWetCells) {
   EXPECT_NEAR(after.sediment.at(4, 2), 0.2, 1e-4);
   EXPECT_NEAR(after.sediment.at(3, 2), 0.4, 1e-4);
   EXPECT_NEAR(erosion.ledger().back().sediment, 1.0, 16 * double_roundoff);
+}
+
+// Seed 001's code (§3.9, table §5): the regolith moves with the water but is not diffused. On dry,
+// flat ground (nothing flows) with the exchanges switched off (k_rd = 0 keeps the regolith that
+// r_max = 0 would settle, k_d = 0 the sediment), a regolith spike stays put exactly while a sediment
+// spike beside it spreads as the 5-point stencil; with the thesis's default both spread.
+TEST(PipesReference, RegolithIsNotDiffusedInTheSeedsCode) {
+  const auto terrain = field(9, 7, 1.0, 1.0, [](int, int) { return 1.0; });
+  const auto dry = field(9, 7, 1.0, 1.0, [](int, int) { return 0.0; });
+  auto params = quiet_params(1);
+  params.sediment_diffusion = 0.1;
+  params.dissolving_rate = params.deposition_rate = 0.0;
+  params.regolith_depth = 0.01;
+  params.regolith_deposition_rate = 0.0;
+  auto state = wet_state<double>(terrain, dry);
+  state.sediment.at(4, 3) = 1.0;
+  state.regolith.at(4, 3) = 0.5;
+  auto stepped = [&](bool regolith_diffusion) {
+    params.regolith_diffusion = regolith_diffusion;
+    PipeErosion<double> erosion(state, gt::pipe_constants(params, terrain));
+    erosion.step();
+    return erosion;
+  };
+  const auto code = stepped(false);
+  EXPECT_EQ(largest_difference(code.state().regolith, state.regolith), 0.0) << "the regolith stays put";
+  EXPECT_DOUBLE_EQ(code.state().sediment.at(4, 3), 1.0 - 4 * 0.1);
+  EXPECT_DOUBLE_EQ(code.state().sediment.at(5, 3), 0.1);
+  EXPECT_EQ(largest_difference(code.state().terrain, terrain), 0.0);
+  const auto thesis = stepped(true);
+  EXPECT_DOUBLE_EQ(thesis.state().regolith.at(4, 3), 0.5 * (1.0 - 4 * 0.1));
+  EXPECT_DOUBLE_EQ(thesis.state().regolith.at(5, 3), 0.5 * 0.1);
+}
+
+// Seed 001's code tilt (§3.5): on a plane of gradient (0.3, 0.1) with 2 m cells, one step of water
+// flowing down it erodes Δb = k_s·K_c·sin α·|v| with k_s = K_c = 1 and no ramp, so sin α = Δb/|v|
+// (|v| read from the state, the same value the step used). Central differences give the slope
+// itself, q = 0.3² + 0.1² = 0.1; the code's raw differences across two 2 m cells are 4 m of run:
+// dx = 0.3·4 = 1.2 m, dy = 0.1·4 = 0.4 m, q = 1.6, sin φ = sqrt(1.6/2.6). At the left border the
+// x difference is one-sided: central still 0.3 (over 1·l), the code's 0.3·2 = 0.6 (over 1, not
+// doubled), q = 0.36 + 0.16.
+// Error model: Δb is read back as b − (b − moved), two roundings of |b| < 8 m (the plane's highest
+// cell is 6.8 m), and `moved` is a product of a few rounded factors (≤ 8u relative, sin α < 1), so
+// sin α is recovered to 2u·8 m/|v| + 8u.
+TEST(PipesReference, SeedsCodeTiltUsesRawDifferences) {
+  const auto terrain = field(10, 8, 2.0, 2.0, [](int x, int y) { return 0.3 * 2.0 * x + 0.1 * 2.0 * y; });
+  const auto water = field(10, 8, 2.0, 2.0, [](int, int) { return 0.1; });
+  auto params = quiet_params(1);
+  params.capacity = 1.0;
+  params.dissolving_rate = 20.0;  // k_s = min(1, 20·0.05) = 1
+  auto observed_sine = [&](gt::TiltDifferences differences, int x, int y) {
+    params.tilt_differences = differences;
+    PipeErosion<double> erosion(wet_state<double>(terrain, water), gt::pipe_constants(params, terrain));
+    erosion.step();
+    const auto& after = erosion.state();
+    const double u = after.velocity_x.at(x, y), v = after.velocity_y.at(x, y);
+    const double speed = std::sqrt(u * u + v * v);
+    EXPECT_GT(speed, 1e-3) << "the water should flow at (" << x << ", " << y << ")";
+    const double eroded = terrain.at(x, y) - after.terrain.at(x, y);
+    return std::pair{eroded / speed, 2 * double_roundoff * 8.0 / speed + 8 * double_roundoff};
+  };
+  using gt::TiltDifferences;
+  const double central = std::sqrt(0.1 / 1.1);
+  for (auto [x, y, code] : {std::tuple{4, 3, std::sqrt(1.6 / 2.6)}, {0, 3, std::sqrt(0.52 / 1.52)}}) {
+    const auto [code_sine, code_bound] = observed_sine(TiltDifferences::seed001_code, x, y);
+    EXPECT_NEAR(code_sine, code, code_bound) << x << "," << y;
+    const auto [central_sine, central_bound] = observed_sine(TiltDifferences::central, x, y);
+    EXPECT_NEAR(central_sine, central, central_bound) << x << "," << y;
+  }
+}
+
+// The code tilt changes how much is eroded, not where material goes: a rainy run on the same 2 m
+// plane (closed, flux transport) conserves material to rounding, as the open-border test's model:
+// at most 12 rounded operations per cell and step on values no larger than b + s.
+TEST(PipesReference, SeedsCodeTiltConservesMaterial) {
+  const auto terrain =
+      field(24, 16, 2.0, 2.0, [](int x, int y) { return 0.3 * 2.0 * x + 0.1 * 2.0 * y + 0.2 * noise(x, y, 29); });
+  const auto dry = field(24, 16, 2.0, 2.0, [](int, int) { return 0.0; });
+  auto params = quiet_params(200);
+  params.rain_rate = 1e-3;
+  params.capacity = 0.01;
+  params.tilt_differences = gt::TiltDifferences::seed001_code;
+  const auto erosion = simulate<double>(terrain, dry, params);
+  const auto& first = erosion.ledger().front();
+  const auto& last = erosion.ledger().back();
+  EXPECT_GT(last.sediment, 0.0) << "the water should erode";
+  EXPECT_LE(std::abs(gt::material_drift(last, first)), 12 * 200 * double_roundoff * (first.terrain + last.sediment));
 }
 
 // The whole variant (ramp, diffusion, regolith) on a rainy slope: water and material still close

@@ -47,6 +47,18 @@ const char* diffusion_weighting_name(DiffusionWeighting weighting) {
   return "?";
 }
 
+const char* tilt_differences_name(TiltDifferences differences) {
+  switch (differences) {
+    case TiltDifferences::central: return "central";
+    case TiltDifferences::seed001_code: return "seed001_code";
+  }
+  return "?";
+}
+
+double tilt_span(TiltDifferences differences, int sides, double length) {
+  return differences == TiltDifferences::central ? sides * length : 1.0;
+}
+
 const char* pipe_name(int pipe) {
   static constexpr std::array<const char*, 8> names{"L", "R", "T", "B", "TL", "BR", "TR", "BL"};
   return names.at(static_cast<std::size_t>(pipe));
@@ -62,6 +74,9 @@ const ParamSpecs& hydraulic_param_specs() {
       {"evaporation_rate", ParamKind::real, 0.0, 0.0, 1e3, {}, "1/s", "K_e: d ← d·(1 − K_e·Δt); K_e·Δt ≤ 1"},
       {"capacity", ParamKind::real, 0.1, 0.0, 1e3, {}, "s", "K_c of the capacity C = K_c·sin α·|v|·l(d)"},
       {"min_tilt_sine", ParamKind::real, 0.05, 0.0, 1.0, {}, "1", "lower bound of sin α (flat ground still erodes)"},
+      {"tilt_differences", ParamKind::choice, "central", 0, 0, {"central", "seed001_code"}, "",
+       "seed 001 §3.5: sin α from central differences over 2l, or its code's raw |b(x−1) − b(x+1)| (as if l = 1, "
+       "not halved)"},
       {"depth_ramp", ParamKind::real, 0.0, 0.0, 1e3, {}, "m",
        "K_w of the depth ramp l(d) = min(1, d/K_w) (Jákó 2011, seed 001); 0 = no ramp"},
       {"dissolving_rate", ParamKind::real, 0.5, 0.0, 1e3, {}, "1/s",
@@ -86,6 +101,8 @@ const ParamSpecs& hydraulic_param_specs() {
        "K_re: a step closes min(1, K_re·Δt) of the gap r_max − r"},
       {"regolith_deposition_rate", ParamKind::real, 20.0, 0.0, 1e6, {}, "1/s",
        "K_rd: a step closes min(1, K_rd·Δt) of the gap r − r_max"},
+      {"regolith_diffusion", ParamKind::boolean, true, 0, 0, {}, "",
+       "seed 001 §3.9: the regolith is diffused like the sediment (the thesis); false = its code (not diffused)"},
       {"thermal_step", ParamKind::boolean, false, 0, 0, {}, "",
        "Jákó & Tóth 2011's combined step: one iteration of their thermal erosion after each pipe step"},
       {"thermal_talus_angle", ParamKind::real, 30.0, 0.0, 89.0, {}, "degree", "talus angle of the thermal step"},
@@ -104,6 +121,10 @@ HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved) {
   params.evaporation_rate = resolved.at("evaporation_rate").get<double>();
   params.capacity = resolved.at("capacity").get<double>();
   params.min_tilt_sine = resolved.at("min_tilt_sine").get<double>();
+  params.tilt_differences = resolved.at("tilt_differences").get<std::string>() ==
+                                    tilt_differences_name(TiltDifferences::seed001_code)
+                                ? TiltDifferences::seed001_code
+                                : TiltDifferences::central;
   params.depth_ramp = resolved.at("depth_ramp").get<double>();
   params.dissolving_rate = resolved.at("dissolving_rate").get<double>();
   params.deposition_rate = resolved.at("deposition_rate").get<double>();
@@ -123,6 +144,7 @@ HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved) {
   params.regolith_depth = resolved.at("regolith_depth").get<double>();
   params.regolith_dissolving_rate = resolved.at("regolith_dissolving_rate").get<double>();
   params.regolith_deposition_rate = resolved.at("regolith_deposition_rate").get<double>();
+  params.regolith_diffusion = resolved.at("regolith_diffusion").get<bool>();
   params.thermal_step = resolved.at("thermal_step").get<bool>();
   params.thermal_talus_angle = resolved.at("thermal_talus_angle").get<double>();
   params.thermal_rate = resolved.at("thermal_rate").get<double>();
@@ -176,6 +198,7 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.evaporation_kept = 1.0 - evaporated_share;
   constants.capacity = params.capacity;
   constants.min_tilt_sine = params.min_tilt_sine;
+  constants.tilt_differences = params.tilt_differences;
   constants.depth_ramp = params.depth_ramp;
   constants.dissolving_fraction = std::min(1.0, params.dissolving_rate * params.time_step);
   constants.deposition_fraction = std::min(1.0, params.deposition_rate * params.time_step);
@@ -188,6 +211,7 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.regolith_depth = params.regolith_depth;
   constants.regolith_dissolving_fraction = std::min(1.0, params.regolith_dissolving_rate * params.time_step);
   constants.regolith_deposition_fraction = std::min(1.0, params.regolith_deposition_rate * params.time_step);
+  constants.regolith_diffusion = params.regolith_diffusion;
   constants.thermal_step = params.thermal_step;
   constants.thermal = thermal_jako_constants({1, params.thermal_talus_angle, params.thermal_rate}, terrain);
   return constants;

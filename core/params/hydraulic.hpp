@@ -23,6 +23,13 @@
 //   - Seed 001's sediment diffusion (§3.8): `uniform` is the thesis's weight w per neighbour;
 //     `water` is its code's weighting by water depth (centre d, neighbours ½·d_n), in which w only
 //     switches the stage on.
+//   - Seed 001's regolith (§3.9): `regolith_diffusion` = true diffuses r like s (the thesis); false
+//     is its code, where r moves with the water but stage 6b diffuses only s.
+//   - `tilt_differences` (seed 001 §3.5, §5): `central` = sin α from central differences over 2l
+//     (the true slope); `seed001_code` = its code's get_steepness, the raw differences
+//     |b(x−1) − b(x+1)| (as if l = 1 and without halving) in the same sqrt(q/(1 + q)); at an exterior
+//     neighbour both take the one-sided difference, the code variant over 1 too (not doubled: the
+//     seed's code wraps periodically and never meets a border), and 0 with both sides exterior.
 //   - `pipes` (issue 3): 4 pipes (Mei) or 8, the diagonal pipes of length l_d = sqrt(l_x² + l_y²)
 //     with the same cross-section A. A choice of the names "4" and "8" (JSON case files write
 //     "pipes": "8"), so the parameter system itself refuses any other count.
@@ -41,11 +48,15 @@ enum class SedimentTransport { semi_lagrangian, flux };
 enum class PipeBoundary { closed, open };
 // Seed 001 §3.8: the thesis's uniform weights, or its code's weights by water depth.
 enum class DiffusionWeighting { uniform, water };
+// Seed 001 §3.5: sin α from central differences over the distance, or its code's raw differences.
+enum class TiltDifferences { central, seed001_code };
 
-// "semi_lagrangian", "flux" and "closed", "open": the names of the `transport` and `boundary` parameters.
+// "semi_lagrangian", "flux", "closed", "open", "uniform", "water", "central", "seed001_code": the names
+// of the `transport`, `boundary`, `diffusion_weighting` and `tilt_differences` parameters.
 const char* sediment_transport_name(SedimentTransport transport);
 const char* pipe_boundary_name(PipeBoundary boundary);
 const char* diffusion_weighting_name(DiffusionWeighting weighting);
+const char* tilt_differences_name(TiltDifferences differences);
 
 // Pipe k of a cell leads to (x + dx, y + dy): L, R, T, B = 0..3 (Mei: T is +y), then the diagonals
 // TL, BR, TR, BL = 4..7 (used with 8 pipes only); pipe k and pipe k^1 are opposite.
@@ -67,6 +78,7 @@ struct HydraulicParams {
   double evaporation_rate = 0.0;        // K_e, 1/s
   double capacity = 0.1;                // K_c, s
   double min_tilt_sine = 0.05;          // lower bound of sin α (Mei's T_α, seed 001's 0.05)
+  TiltDifferences tilt_differences = TiltDifferences::central;
   double depth_ramp = 0.0;              // K_w of l(d) = min(1, d/K_w), m; 0 = no ramp (Mei)
   double dissolving_rate = 0.5;         // K_s, 1/s
   double deposition_rate = 0.5;         // K_d, 1/s
@@ -80,6 +92,7 @@ struct HydraulicParams {
   double regolith_depth = 0.0;          // K_r, the most water can loosen of the bed, m
   double regolith_dissolving_rate = 20.0;   // K_re, 1/s: a step closes min(1, K_re·Δt) of r_max − r
   double regolith_deposition_rate = 20.0;   // K_rd, 1/s: a step closes min(1, K_rd·Δt) of r − r_max
+  bool regolith_diffusion = true;       // r diffused like s (the thesis) or not (seed 001's code)
   // Jákó & Tóth 2011's combined step: one iteration of their thermal erosion after each pipe step.
   bool thermal_step = false;
   double thermal_talus_angle = 30.0;    // degrees
@@ -116,6 +129,7 @@ struct PipeConstants {
   double evaporation_kept = 1.0;      // 1 − K_e·Δt, in [0, 1]
   double capacity = 0.1;              // K_c, s
   double min_tilt_sine = 0.05;
+  TiltDifferences tilt_differences = TiltDifferences::central;
   double depth_ramp = 0.0;            // K_w, m; 0 = off
   double dissolving_fraction = 0.0;   // min(1, K_s·Δt)
   double deposition_fraction = 0.0;   // min(1, K_d·Δt)
@@ -128,6 +142,7 @@ struct PipeConstants {
   double regolith_depth = 0.0;                 // K_r, m; 0 = off
   double regolith_dissolving_fraction = 1.0;   // min(1, K_re·Δt)
   double regolith_deposition_fraction = 1.0;   // min(1, K_rd·Δt)
+  bool regolith_diffusion = true;              // stage 6b diffuses r too (with w > 0 and K_r > 0)
   bool thermal_step = false;
   ThermalConstants thermal;                    // thermal_jako_constants() on the terrain's grid
 };
@@ -136,6 +151,10 @@ struct PipeConstants {
 // struct built in code can hold but the JSON ranges refuse (Δt ≤ 0, negative rates, a depth floor
 // ≤ 0, non-finite values, a pipe count other than 4 or 8) and for K_e·Δt > 1.
 PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& terrain);
+
+// What the tilt divides a height difference across `sides` (1: one-sided, 2: central) cells of size
+// `length` by: sides·length (central, the slope), or 1 (seed001_code: the raw difference).
+double tilt_span(TiltDifferences differences, int sides, double length);
 
 // The state of a pipe-model run. Pipes are indexed as pipe_offsets: L, R, T, B = 0..3, pointing to
 // (x−1, y), (x+1, y), (x, y+1), (x, y−1) (Mei: T is +y), then TL, BR, TR, BL = 4..7; pipe k and

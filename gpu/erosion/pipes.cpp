@@ -11,7 +11,8 @@
 //   pipes_flow.comp      3, 4, 5, 5b, 6a  d_B, velocity, erosion/deposition, regolith exchange,
 //                        what leaves each cell
 //   pipes_sediment.comp  6, 7      transport (gather or backtrace) of s and r, and evaporation
-//   pipes_diffusion.comp 6b        diffusion of s and r (seed 001 §3.8; only when w > 0)
+//   pipes_diffusion.comp 6b        diffusion of s and r (seed 001 §3.8; only when w > 0; r only with
+//                                  regolith_diffusion)
 //   pipes_thermal_outflow.comp, pipes_thermal_gather.comp
 //                        8         Jákó & Tóth's thermal iteration on b0 + Δb (only with thermal_step)
 // Buffers: per-cell constants {b0, rain depth, flags}, Δb (two, ping-pong: the tilt reads the
@@ -19,7 +20,9 @@
 // with 8 pipes), velocity, s, the sediment a cell keeps before transport (also the diffusion's
 // output, swapped with s), what it sends down each pipe (one or two vec4 as the outflow), and the
 // same three for the regolith r (allocated only when K_r > 0). Variants are compiled in with
-// defines: PIPES_8, TRANSPORT_FLUX, REGOLITH, DIFFUSION_WATER.
+// defines: PIPES_8, TRANSPORT_FLUX, REGOLITH, REGOLITH_DIFFUSION (r diffused too: the thesis, not
+// seed 001's code), DIFFUSION_WATER. seed 001's code tilt (tilt_differences) needs no define: it is
+// the spans of the tilt's differences in the parameter block, 1 instead of l and 2l.
 //
 // The float trap (issue 3) and its solution. ref<float> stores b as a float: an erosion amount a
 // below half the float spacing of b (2^-15 m = 3.05e-5 m between floats at 500 m, so a < 1.5e-5 m)
@@ -192,10 +195,11 @@ PipeBlock block_for(const PipeConstants& constants, int width, int height, std::
   block.flux_gain[0] = block.flux_gain[1] = static_cast<float>(gain / constants.length_x);
   block.flux_gain[2] = block.flux_gain[3] = static_cast<float>(gain / constants.length_y);
   for (int k = 4; k < 8; ++k) block.flux_gain[k] = static_cast<float>(gain / constants.length_diagonal);
-  block.slope_span_x[0] = static_cast<float>(1 * constants.length_x);
-  block.slope_span_x[1] = static_cast<float>(2 * constants.length_x);
-  block.slope_span_y[0] = static_cast<float>(1 * constants.length_y);
-  block.slope_span_y[1] = static_cast<float>(2 * constants.length_y);
+  const auto differences = constants.tilt_differences;
+  for (int sides = 1; sides <= 2; ++sides) {
+    block.slope_span_x[sides - 1] = static_cast<float>(tilt_span(differences, sides, constants.length_x));
+    block.slope_span_y[sides - 1] = static_cast<float>(tilt_span(differences, sides, constants.length_y));
+  }
   block.grid_size[0] = width;
   block.grid_size[1] = height;
   block.area_per_time = static_cast<float>(constants.cell_area / constants.time_step);
@@ -234,6 +238,9 @@ PipeBlock block_for(const PipeConstants& constants, int width, int height, std::
 
 bool has_regolith(const PipeConstants& constants) { return constants.regolith_depth > 0.0; }
 bool has_diffusion(const PipeConstants& constants) { return constants.sediment_diffusion > 0.0; }
+bool diffuses_regolith(const PipeConstants& constants) {
+  return has_regolith(constants) && has_diffusion(constants) && constants.regolith_diffusion;
+}
 
 // The define of the pipe count alone (the outflow pass needs no other), and those of every variant.
 std::vector<std::string> pipe_defines(const PipeConstants& constants) {
@@ -244,6 +251,7 @@ std::vector<std::string> stage_defines(const PipeConstants& constants) {
   std::vector<std::string> defines = pipe_defines(constants);
   if (constants.transport == SedimentTransport::flux) defines.push_back("TRANSPORT_FLUX");
   if (has_regolith(constants)) defines.push_back("REGOLITH");
+  if (diffuses_regolith(constants)) defines.push_back("REGOLITH_DIFFUSION");
   if (constants.diffusion_weighting == DiffusionWeighting::water) defines.push_back("DIFFUSION_WATER");
   return defines;
 }
@@ -446,7 +454,7 @@ void PipeErosion::step() {
   if (diffusion_program_) {
     pass(*diffusion_program_);
     std::swap(sediment_, staying_);
-    if (has_regolith(constants_)) std::swap(regolith_, regolith_staying_);
+    if (diffuses_regolith(constants_)) std::swap(regolith_, regolith_staying_);
   }
   if (thermal_outflow_program_) {
     delta_.bind(delta_binding);

@@ -23,7 +23,8 @@
 //              water it moved (diagonal pipes too); what one cell sends, the neighbour receives as
 //              the same number.
 //              The regolith moves with the water the same way (seed 001 §3.9).
-//   6b diffusion (seed 001 §3.8; only when w > 0), of s and r from the state after 6: each cell
+//   6b diffusion (seed 001 §3.8; only when w > 0), of s and r from the state after 6 (r only with
+//              regolith_diffusion, the thesis; seed 001's code diffuses s alone): each cell
 //              sends σ_k·s to each of its 4 axis neighbours k whose pipe is not exterior (with 8
 //              pipes too: the seed's 4-neighbour stencil) and keeps s − Σσ_k·s;
 //              uniform σ_k = w (the thesis), water σ_k = ½d_k / (d + ½Σd_n) with depths d_B (its
@@ -65,6 +66,10 @@
 //     accelerate until that cap: runs on slopes sit at 1).
 //   - sin α of the terrain: |∇b|/sqrt(1 + |∇b|²), ∇b by central differences over l_x, l_y; at an
 //     exterior neighbour the difference is one-sided, with exterior neighbours on both sides 0.
+//     tilt_differences = seed001_code: the same with the raw differences b(x+1) − b(x−1) in place of
+//     ∇b (not divided by 2l: its code's get_steepness; its sqrt(q)/sqrt(q + 1) is sqrt(q/(1 + q)) in
+//     exact arithmetic); one-sided at an exterior neighbour and not doubled (its code wraps and never
+//     meets a border), so on a plane a border cell's q is a quarter of an interior cell's.
 //   - Backtrace sampling: a bilinear corner off the grid or on a no-data cell takes the value of
 //     the cell being updated (zero gradient at walls, Mei's clamp-to-edge on the grid border). The
 //     weights are ceil(p) − p and p − floor(p), so mirrored displacements give mirrored weights
@@ -300,7 +305,7 @@ Real PipeErosion<Real>::tilt_sine(int x, int y) const {
     if (lower + upper == 0) return Real(0);
     const Real low = terrain.at(x + lower * pipe_offsets[lower_pipe].dx, y + lower * pipe_offsets[lower_pipe].dy);
     const Real high = terrain.at(x + upper * pipe_offsets[upper_pipe].dx, y + upper * pipe_offsets[upper_pipe].dy);
-    return (high - low) / static_cast<Real>((lower + upper) * length);
+    return (high - low) / static_cast<Real>(tilt_span(constants_.tilt_differences, lower + upper, length));
   };
   const Real slope_x = slope(left, right, constants_.length_x);
   const Real slope_y = slope(bottom, top, constants_.length_y);
@@ -680,7 +685,7 @@ void PipeErosion<Real>::step() {
   if (regolith) transport(state_.regolith.values, flows_.boundary_out_regolith);
   if (constants_.sediment_diffusion > 0.0) {
     diffuse(state_.sediment.values);
-    if (regolith) diffuse(state_.regolith.values);
+    if (regolith && constants_.regolith_diffusion) diffuse(state_.regolith.values);
   }
   evaporate();
   if (constants_.thermal_step) state_.terrain = thermal_jako_erosion(state_.terrain, constants_.thermal, 1);

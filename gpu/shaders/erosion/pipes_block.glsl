@@ -27,7 +27,7 @@ layout(std140, binding = 0) uniform PipeBlock {
   vec4 flux_gain[2];        // Δt·A·g/l for pipes L, R, T, B (l = l_x, l_x, l_y, l_y), then the
                             // diagonals (l = l_d = sqrt(l_x² + l_y²))
   vec2 slope_span_x;        // 1·l_x, 2·l_x: one- and two-sided difference spans of the tilt
-  vec2 slope_span_y;        // 1·l_y, 2·l_y
+  vec2 slope_span_y;        // 1·l_y, 2·l_y (both 1 for seed 001's code tilt: raw differences)
   ivec2 grid_size;          // width, height
   float area_per_time;      // l_x·l_y/Δt
   float volume_to_depth;    // Δt/(l_x·l_y)

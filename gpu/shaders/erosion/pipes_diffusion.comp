@@ -1,6 +1,7 @@
 #version 450
 // Stage 6b' of the pipe erosion, seed 001 §3.8 (only when w > 0): diffusion of the sediment (and,
-// with REGOLITH, of the regolith) from the state after transport. Each valid cell sends σ_k·s to
+// with REGOLITH_DIFFUSION, of the regolith: the thesis; seed 001's code diffuses the sediment only)
+// from the state after transport. Each valid cell sends σ_k·s to
 // each of its 4 axis neighbours k whose pipe is not exterior (with 8 pipes too: the seed's stencil)
 // and keeps max(0, s - Σ σ_k·s); it then holds what it kept
 // plus what its neighbours sent it (the same numbers they lost, each recomputed here from the
@@ -61,12 +62,12 @@ void main() {
     uint neighbour = cell_index(neighbour_cell, grid_size);
     towards_here[k] = diffusion_shares(neighbour_cell, neighbour, cells[neighbour].flags)[opposite(k)];
     neighbour_sediment[k] = sediment[neighbour];
-#ifdef REGOLITH
+#ifdef REGOLITH_DIFFUSION
     neighbour_regolith[k] = regolith[neighbour];
 #endif
   }
   staying[index] = diffused(sediment[index], own_shares, neighbour_sediment, towards_here);
-#ifdef REGOLITH
+#ifdef REGOLITH_DIFFUSION
   regolith_staying[index] = diffused(regolith[index], own_shares, neighbour_regolith, towards_here);
 #endif
 }

@@ -6,6 +6,7 @@
 //               with PIPES_8 the diagonals add (l_x/l_d)·Σ dx_k·(f_k - f_in,k) inside the ½(...)
 //   5 erosion   C = K_c·max(sin α, T)·|v|·min(1, d_B/K_w); the terrain change Δb and s move by
 //               k_s·(C - s) or -k_d·(s - C); sin α from central differences of b0 + Δb
+//               over the block's spans (2l, or 1 for seed 001's code: raw differences)
 //   5b regolith (REGOLITH, seed 001 §3.9) r_max = min(d_B, K_r); r < r_max: Δb and r move by
 //               k_re·(r_max - r); else by -k_rd·(r - r_max)
 //   6a shares   what each pipe (4 or 8) carries, s_A·f_k·Δt/(d_A·l_x·l_y) (flux transport: `sent`, the
