@@ -21,6 +21,7 @@
 #include "reference/render/cave_look.hpp"
 #include "reference/render/phong.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/phong_twins.hpp"
 
 namespace {
 
@@ -242,11 +243,6 @@ TEST(CaveScene, TunnelCameraSeesWallsNotTheVoid) {
 
 class CaveLookGpu : public gt::testing::GlTest {};
 
-OIIO::ImageBuf rgb8(int width, int height, const std::vector<std::uint8_t>& rgb) {
-  OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8));
-  image.set_pixels(image.roi(), OIIO::TypeDesc::UINT8, rgb.data());
-  return image;
-}
 
 TEST_F(CaveLookGpu, TunnelMatchesTheReference) {
   // Error model: the GPU evaluates the same formulas in float from float positions; its
@@ -259,14 +255,7 @@ TEST_F(CaveLookGpu, TunnelMatchesTheReference) {
   // 1.5/255 must pass everywhere but a few edge pixels, well inside issue 6's acceptance
   // (PSNR >= 40 dB, <= 0.5 % beyond 4/255 after the edge tolerance).
   const auto scene = gt::reference::cave_scene(tunnel_block(), tunnel_camera(128, 96), CaveLook{}, 25.0);
-  const auto cpu = gt::reference::render_phong(scene);
-  const gt::gpu::PhongRenderer renderer(gt::phong_draw(scene));
-  renderer.run();
-  const auto gpu = renderer.image();
-  const auto a = rgb8(cpu.width, cpu.height, cpu.rgb), b = rgb8(gpu.width, gpu.height, gpu.rgb);
-  EXPECT_GE(gt::compare_images(a, b, 4.0 / 255.0).psnr_db, 40.0);
-  EXPECT_LE(gt::compare_neighbourhoods(a, b, 4.0 / 255.0).failing_share, 0.005);
-  EXPECT_LE(gt::compare_neighbourhoods(a, b, 1.5 / 255.0).failing_share, 0.002);
+  gt::testing::expect_twins_agree(gt::testing::render_twins(scene));
 }
 
 TEST_F(CaveLookGpu, CrossFadeAndClampMatchTheReference) {
@@ -278,13 +267,7 @@ TEST_F(CaveLookGpu, CrossFadeAndClampMatchTheReference) {
   look.colour_octaves_per_unit = 0.125;
   look.colour_octave_limit = 1.5;
   const auto scene = gt::reference::cave_scene(tunnel_block(), tunnel_camera(128, 96), look, 25.0);
-  const auto cpu = gt::reference::render_phong(scene);
-  const gt::gpu::PhongRenderer renderer(gt::phong_draw(scene));
-  renderer.run();
-  const auto gpu = renderer.image();
-  const auto a = rgb8(cpu.width, cpu.height, cpu.rgb), b = rgb8(gpu.width, gpu.height, gpu.rgb);
-  EXPECT_GE(gt::compare_images(a, b, 4.0 / 255.0).psnr_db, 40.0);
-  EXPECT_LE(gt::compare_neighbourhoods(a, b, 1.5 / 255.0).failing_share, 0.002);
+  gt::testing::expect_twins_agree(gt::testing::render_twins(scene));
 }
 
 TEST_F(CaveLookGpu, ZeroBumpFlatStripAndNoMossIsThePlainProgramExactly) {

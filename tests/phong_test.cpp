@@ -23,6 +23,7 @@
 #include "gpu/render/phong.hpp"
 #include "reference/render/phong.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/phong_twins.hpp"
 
 namespace {
 
@@ -243,11 +244,6 @@ TEST(PhongLooks, TerrainRangeComesFromTheMeshAlongUp) {
 
 class PhongGpu : public gt::testing::GlTest {};
 
-OIIO::ImageBuf rgb8(int width, int height, const std::vector<std::uint8_t>& rgb) {
-  OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8));
-  image.set_pixels(image.roi(), OIIO::TypeDesc::UINT8, rgb.data());
-  return image;
-}
 
 TEST_F(PhongGpu, BunnyMatchesTheReference) {
   const std::filesystem::path bunny = std::filesystem::path(GT_DATASET_DIR) / "real/meshes/bunny00.off";
@@ -261,7 +257,7 @@ TEST_F(PhongGpu, BunnyMatchesTheReference) {
                                          .width = scene.camera.width, .height = scene.camera.height});
   renderer.run();
   const auto gpu = renderer.image();
-  const auto a = rgb8(cpu.width, cpu.height, cpu.rgb), b = rgb8(gpu.width, gpu.height, gpu.rgb);
+  const auto a = gt::testing::rgb8(cpu.width, cpu.height, cpu.rgb), b = gt::testing::rgb8(gpu.width, gpu.height, gpu.rgb);
   const double tolerance = 4.0 / 255.0;
   EXPECT_GE(gt::compare_images(a, b, tolerance).psnr_db, 40.0);
   EXPECT_LE(gt::compare_neighbourhoods(a, b, tolerance).failing_share, 0.005);
@@ -277,14 +273,9 @@ TEST_F(PhongGpu, TerrainLookOnAHillMatchesTheReference) {
   const gt::Mesh mesh = hill_mesh();
   const auto scene = gt::reference::phong_scene(mesh, gt::reference::orbit_camera(mesh, 30.0, 35.0, 40.0, 160, 120),
                                                 gt::reference::Look::terrain);
-  const auto cpu = gt::reference::render_phong(scene);
-  const gt::gpu::PhongRenderer renderer(gt::phong_draw(scene));
-  renderer.run();
-  const auto gpu = renderer.image();
-  const auto a = rgb8(cpu.width, cpu.height, cpu.rgb), b = rgb8(gpu.width, gpu.height, gpu.rgb);
-  EXPECT_GE(gt::compare_images(a, b, 4.0 / 255.0).psnr_db, 40.0);
-  EXPECT_LE(gt::compare_neighbourhoods(a, b, 4.0 / 255.0).failing_share, 0.005);
-  EXPECT_LE(gt::compare_neighbourhoods(a, b, 1.5 / 255.0).failing_share, 0.002);
+  const auto twins = gt::testing::render_twins(scene);
+  gt::testing::expect_twins_agree(twins);
+  const auto& cpu = twins.cpu;
   EXPECT_GT(cpu.covered_pixels, std::size_t(160 * 120 / 4)) << "the hill fills a good part of the picture";
 }
 
