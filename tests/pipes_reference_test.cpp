@@ -276,6 +276,46 @@ Grid<Real> negated(Grid<Real> grid) {
   return grid;
 }
 
+template <class Real>
+Grid<Real> transposed(const Grid<Real>& grid) {
+  Grid<Real> out = grid;
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) out.at(x, y) = grid.at(y, x);
+  }
+  return out;
+}
+
+// Largest difference, relative to each field's largest value, between the state's fields and their
+// mirror images along x and y (and the diagonal): terrain, water and sediment map onto themselves,
+// the velocity component along the mirror's axis changes sign, and under the diagonal u and v swap.
+template <class Real>
+double mirror_asymmetry(const PipeState<Real>& state, bool along_the_diagonal) {
+  double asymmetry = 0.0;
+  auto measure = [&](const Grid<Real>& a, const Grid<Real>& b, const Grid<Real>& scale) {
+    const double largest = largest_value(scale);
+    if (largest > 0.0) asymmetry = std::max(asymmetry, largest_difference(a, b) / largest);
+  };
+  for (const auto* grid : {&state.terrain, &state.water, &state.sediment}) {
+    measure(*grid, mirrored_x(*grid), *grid);
+    measure(*grid, mirrored_y(*grid), *grid);
+    if (along_the_diagonal) measure(*grid, transposed(*grid), *grid);
+  }
+  measure(state.velocity_x, negated(mirrored_x(state.velocity_x)), state.velocity_x);
+  measure(state.velocity_y, negated(mirrored_y(state.velocity_y)), state.velocity_y);
+  if (along_the_diagonal) measure(state.velocity_x, transposed(state.velocity_y), state.velocity_x);
+  return asymmetry;
+}
+
+// 100 rainy steps with open borders, eroding hard: what the symmetry tests run.
+HydraulicParams symmetry_run_params(SedimentTransport transport) {
+  auto params = quiet_params(100);
+  params.rain_rate = 1e-3;
+  params.capacity = 0.5;
+  params.transport = transport;
+  params.boundary = PipeBoundary::open;
+  return params;
+}
+
 // Largest asymmetry of the fields after a run on input symmetric under both mirrors, relative to
 // the largest value of each field.
 template <class Real>
@@ -289,24 +329,8 @@ double largest_asymmetry(SedimentTransport transport) {
     return 3.0 - 0.01 * dx * dx + 0.5 * folded(x, y, 19);
   });
   const auto water = field(width, height, 1.0, 1.0, [&](int x, int y) { return 0.5 * folded(x, y, 23); });
-  auto params = quiet_params(100);
-  params.rain_rate = 1e-3;
-  params.capacity = 0.5;
-  params.transport = transport;
-  params.boundary = PipeBoundary::open;
-  const auto state = simulate<Real>(terrain, water, params).state();
-  double asymmetry = 0.0;
-  auto measure = [&](const Grid<Real>& a, const Grid<Real>& b, const Grid<Real>& scale) {
-    const double largest = largest_value(scale);
-    if (largest > 0.0) asymmetry = std::max(asymmetry, largest_difference(a, b) / largest);
-  };
-  for (const auto* grid : {&state.terrain, &state.water, &state.sediment}) {
-    measure(*grid, mirrored_x(*grid), *grid);
-    measure(*grid, mirrored_y(*grid), *grid);
-  }
-  measure(state.velocity_x, negated(mirrored_x(state.velocity_x)), state.velocity_x);
-  measure(state.velocity_y, negated(mirrored_y(state.velocity_y)), state.velocity_y);
-  return asymmetry;
+  const auto state = simulate<Real>(terrain, water, symmetry_run_params(transport)).state();
+  return mirror_asymmetry(state, false);
 }
 
 TEST(PipesReference, SymmetricInputStaysSymmetric) {
@@ -884,44 +908,17 @@ PipeState<Real> dihedral_state(int size) {
   return wet_state<Real>(terrain, water);
 }
 
-template <class Real>
-Grid<Real> transposed(const Grid<Real>& grid) {
-  Grid<Real> out = grid;
-  for (int y = 0; y < grid.height; ++y) {
-    for (int x = 0; x < grid.width; ++x) out.at(x, y) = grid.at(y, x);
-  }
-  return out;
-}
-
 // Largest asymmetry, relative to each field's largest value, after 100 steps from dihedral_state;
 // under the diagonal mirror u and v swap.
 template <class Real>
 double largest_dihedral_asymmetry(SedimentTransport transport, int pipe_count, bool along_the_diagonal) {
-  auto params = quiet_params(100);
-  params.rain_rate = 1e-3;
-  params.capacity = 0.5;
-  params.transport = transport;
-  params.boundary = PipeBoundary::open;
+  auto params = symmetry_run_params(transport);
   params.pipe_count = pipe_count;
   const auto initial = dihedral_state<Real>(20);
   const auto terrain = initial.terrain.template cast<double>();
   PipeErosion<Real> erosion(initial, gt::pipe_constants(params, terrain));
   erosion.run(params.steps);
-  const auto& state = erosion.state();
-  double asymmetry = 0.0;
-  auto measure = [&](const Grid<Real>& a, const Grid<Real>& b, const Grid<Real>& scale) {
-    const double largest = largest_value(scale);
-    if (largest > 0.0) asymmetry = std::max(asymmetry, largest_difference(a, b) / largest);
-  };
-  for (const auto* grid : {&state.terrain, &state.water, &state.sediment}) {
-    measure(*grid, mirrored_x(*grid), *grid);
-    measure(*grid, mirrored_y(*grid), *grid);
-    if (along_the_diagonal) measure(*grid, transposed(*grid), *grid);
-  }
-  measure(state.velocity_x, negated(mirrored_x(state.velocity_x)), state.velocity_x);
-  measure(state.velocity_y, negated(mirrored_y(state.velocity_y)), state.velocity_y);
-  if (along_the_diagonal) measure(state.velocity_x, transposed(state.velocity_y), state.velocity_x);
-  return asymmetry;
+  return mirror_asymmetry(erosion.state(), along_the_diagonal);
 }
 
 TEST(PipesReference, EightPipesKeepMirrorSymmetryAlongTheAxesAndTheDiagonal) {
