@@ -349,6 +349,16 @@ void check_pipe_input(const PipeState<Real>& state, const HydraulicForcing& forc
 template void check_pipe_input(const PipeState<float>&, const HydraulicForcing&, const PipeConstants&);
 template void check_pipe_input(const PipeState<double>&, const HydraulicForcing&, const PipeConstants&);
 
+void PipeFlows::write_to(PipeLedgerEntry& entry) const {
+  entry.rain_in = rain_in.value();
+  entry.source_in = source_in.value();
+  entry.water_added = water_added.value();
+  entry.evaporated = evaporated.value();
+  entry.boundary_out_water = boundary_out_water.value();
+  entry.boundary_out_sediment = boundary_out_sediment.value();
+  entry.boundary_out_regolith = boundary_out_regolith.value();
+}
+
 double water_balance(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
   return (entry.water - initial.water) - entry.water_added +
          (entry.evaporated + entry.boundary_out_water);

@@ -41,6 +41,7 @@
 #include "core/grid.hpp"
 #include "core/params.hpp"
 #include "core/params/thermal.hpp"
+#include "core/sum.hpp"
 
 namespace gt {
 
@@ -207,6 +208,14 @@ struct PipeLedgerEntry {
   double boundary_out_sediment = 0.0;
   double boundary_out_regolith = 0.0;
   double max_cfl = 0.0;                // this step: max of Δt·|u|/l_x and Δt·|v|/l_y over valid cells
+};
+
+// The cumulative flows of a run, each a compensated sum in double, as both twins keep them;
+// write_to copies them into a ledger entry.
+struct PipeFlows {
+  CompensatedSum rain_in, source_in, water_added, evaporated, boundary_out_water, boundary_out_sediment,
+      boundary_out_regolith;
+  void write_to(PipeLedgerEntry& entry) const;
 };
 
 // W_t − W_0 − water_added + evaporated + boundary_out_water: 0 for exact arithmetic, m³.

@@ -620,13 +620,7 @@ void PipeErosion::record_ledger(const Download& fields) {
   entry.terrain = base_volume_ + delta.value();
   entry.sediment = sediment.value();
   entry.regolith = regolith.value();
-  entry.rain_in = flows_.rain_in.value();
-  entry.source_in = flows_.source_in.value();
-  entry.water_added = flows_.water_added.value();
-  entry.evaporated = flows_.evaporated.value();
-  entry.boundary_out_water = flows_.boundary_out_water.value();
-  entry.boundary_out_sediment = flows_.boundary_out_sediment.value();
-  entry.boundary_out_regolith = flows_.boundary_out_regolith.value();
+  flows_.write_to(entry);
   entry.max_cfl = steps_done_ == 0 ? 0.0 : max_cfl_of(fields.velocity, flags_, constants_);
   ledger_.push_back(entry);
 }

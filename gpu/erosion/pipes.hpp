@@ -106,10 +106,7 @@ class PipeErosion {
   StorageBuffer source_cells_;
   StorageBuffer source_list_;
 
-  struct Flows {
-    CompensatedSum rain_in, source_in, water_added, evaporated, boundary_out_water, boundary_out_sediment, boundary_out_regolith;
-  };
-  Flows flows_;
+  PipeFlows flows_;
   int steps_done_ = 0;
   std::vector<PipeLedgerEntry> ledger_;
 };

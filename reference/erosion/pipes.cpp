@@ -661,13 +661,7 @@ void PipeErosion<Real>::record_ledger() {
   entry.terrain = volume(state_.terrain, state_.terrain, constants_.cell_area);
   entry.sediment = volume(state_.sediment, state_.terrain, constants_.cell_area);
   entry.regolith = volume(state_.regolith, state_.terrain, constants_.cell_area);
-  entry.rain_in = flows_.rain_in.value();
-  entry.source_in = flows_.source_in.value();
-  entry.water_added = flows_.water_added.value();
-  entry.evaporated = flows_.evaporated.value();
-  entry.boundary_out_water = flows_.boundary_out_water.value();
-  entry.boundary_out_sediment = flows_.boundary_out_sediment.value();
-  entry.boundary_out_regolith = flows_.boundary_out_regolith.value();
+  flows_.write_to(entry);
   entry.max_cfl = step_max_cfl_;
   ledger_.push_back(entry);
 }

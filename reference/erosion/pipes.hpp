@@ -43,9 +43,6 @@ class PipeErosion {
   const std::vector<PipeLedgerEntry>& ledger() const { return ledger_; }
 
  private:
-  struct Flows {
-    CompensatedSum rain_in, source_in, water_added, evaporated, boundary_out_water, boundary_out_sediment, boundary_out_regolith;
-  };
   using Fluxes = std::array<Real, 8>;  // one value per pipe, as gt::pipe_offsets
 
   int pipe_count() const { return constants_.pipe_count; }
@@ -83,7 +80,7 @@ class PipeErosion {
   std::vector<unsigned char> drained_;         // K < 1 this step: the pipes took all of d_A
   std::vector<Real> scratch_;                  // next terrain or sediment of the current step
   std::vector<Fluxes> sent_;                   // sediment or regolith leaving through each pipe, m
-  Flows flows_;
+  PipeFlows flows_;
   double step_max_cfl_ = 0.0;
   int steps_done_ = 0;
   std::vector<PipeLedgerEntry> ledger_;
