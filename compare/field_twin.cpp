@@ -6,16 +6,18 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/report/images.hpp"
+#include "compare/report/plots.hpp"
 #include "core/errors.hpp"
-#include "core/rng.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "compare/timing.hpp"
 #include "gpu/timing.hpp"
@@ -23,24 +25,127 @@
 namespace gt {
 namespace {
 
+// Shadow steps: 8 checkpoints spread evenly over the run (every iteration of a shorter run), and
+// from each one iteration and then up to 4.
+constexpr int shadow_checkpoints = 8;
+constexpr int shadow_iterations = 4;
+
 void report_stage(const RunOptions& options, const std::string& what) {
   if (options.progress != nullptr) options.progress->stage(what);
 }
 
-struct GpuOutputs {
-  Grid<float> first;
-  Grid<float> second;
+// The iterations the shadow steps start from: k·N/8 for k = 0..7, or 0..N-1 when N < 8.
+std::vector<int> shadow_starts(int iterations) {
+  std::vector<int> starts;
+  const int count = std::min(iterations, shadow_checkpoints);
+  for (int k = 0; k < count; ++k) {
+    starts.push_back(static_cast<int>(static_cast<long long>(k) * iterations / count));
+  }
+  return starts;
+}
+
+int shadow_length(int iterations, int start) { return std::min(shadow_iterations, iterations - start); }
+
+// The iterations after which a run's state is kept: the shadow starts, then the end of the run.
+std::vector<int> path_marks(int iterations) {
+  std::vector<int> marks = shadow_starts(iterations);
+  marks.push_back(iterations);
+  return marks;
+}
+
+template <class Real>
+using Stepper = std::function<Grid<Real>(const Grid<Real>&, int, int)>;
+
+// The states after marks[i] iterations of one run from `input`.
+template <class Real>
+std::vector<Grid<Real>> step_through(const Stepper<Real>& step, const Grid<Real>& input, const std::vector<int>& marks) {
+  std::vector<Grid<Real>> states;
+  Grid<Real> state = input;
+  int done = 0;
+  for (const int mark : marks) {
+    state = step(state, done, mark - done);
+    done = mark;
+    states.push_back(state);
+  }
+  return states;
+}
+
+// From one checkpoint's state: after one iteration and after shadow_length iterations.
+struct ShadowStep {
+  Grid<float> one;
+  Grid<float> multi;
 };
 
-// First run gives the result, a second run from the same input checks determinism, then
-// `gpu_reps` timed runs of the iterations alone (upload and download excluded).
-GpuOutputs run_gpu(const FieldTwin& twin, const Grid<float>& input, const RunOptions& options, CaseResult& result) {
+struct ReferenceRuns {
+  Grid<double> cpu;                        // ref<double>, whole run
+  Grid<float> cpu_float;                   // ref<float>, whole run
+  std::vector<Grid<double>> double_path;   // at path_marks (stepping twins)
+  std::vector<Grid<float>> float_path;
+  std::vector<ShadowStep> shadow;          // ref<float> from its own states at the shadow starts
+};
+
+struct GpuOutputs {
+  Grid<float> first;                    // whole run; stepped through the path marks when the twin steps
+  Grid<float> second;                   // whole run in one go, for determinism
+  std::vector<Grid<float>> path;        // at path_marks (stepping twins)
+  std::vector<ShadowStep> shadow;       // from ref<float>'s states at the shadow starts
+};
+
+std::vector<ShadowStep> reference_shadow(const FieldTwin::Stepping& stepping, const std::vector<Grid<float>>& path) {
+  std::vector<ShadowStep> steps;
+  const auto starts = shadow_starts(stepping.iterations);
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const int start = starts[k];
+    const int length = shadow_length(stepping.iterations, start);
+    ShadowStep step;
+    step.one = stepping.reference_float(path[k], start, 1);
+    step.multi = length > 1 ? stepping.reference_float(step.one, start + 1, length - 1) : step.one;
+    steps.push_back(std::move(step));
+  }
+  return steps;
+}
+
+// The GPU through the run's checkpoints, then from each of ref<float>'s checkpoint states.
+void step_gpu(const FieldTwin::Stepping& stepping, GpuFieldRunner& runner, const Grid<float>& input,
+              const std::vector<Grid<float>>& float_path, GpuOutputs& outputs) {
+  if (!runner.step) throw std::logic_error("the GPU runner of an iterative field twin must offer step()");
+  runner.load(input);
+  int done = 0;
+  for (const int mark : path_marks(stepping.iterations)) {
+    runner.step(done, mark - done);
+    done = mark;
+    outputs.path.push_back(runner.result());
+  }
+  outputs.first = outputs.path.back();
+  const auto starts = shadow_starts(stepping.iterations);
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const int start = starts[k];
+    const int length = shadow_length(stepping.iterations, start);
+    ShadowStep step;
+    runner.load(float_path[k]);
+    runner.step(start, 1);
+    step.one = runner.result();
+    if (length > 1) runner.step(start + 1, length - 1);
+    step.multi = length > 1 ? runner.result() : step.one;
+    outputs.shadow.push_back(std::move(step));
+  }
+}
+
+// First run gives the result (stepped through the checkpoints, with the shadow steps, when the twin
+// steps), a second run from the same input in one go checks determinism, then `gpu_reps` timed runs
+// of the iterations alone (upload and download excluded).
+GpuOutputs run_gpu(const FieldTwin& twin, const Grid<float>& input, const ReferenceRuns& reference,
+                   const RunOptions& options, CaseResult& result) {
   report_stage(options, "gpu");
   GpuFieldRunner runner = twin.make_gpu();
   GpuOutputs outputs;
-  runner.load(input);
-  runner.run();
-  outputs.first = runner.result();
+  if (twin.stepping) {
+    step_gpu(*twin.stepping, runner, input, reference.float_path, outputs);
+  } else {
+    runner.load(input);
+    runner.run();
+    outputs.first = runner.result();
+  }
   runner.load(input);
   runner.run();
   outputs.second = runner.result();
@@ -55,12 +160,28 @@ GpuOutputs run_gpu(const FieldTwin& twin, const Grid<float>& input, const RunOpt
   return outputs;
 }
 
-Grid<double> run_reference(const FieldTwin& twin, const Heightmap& input, const RunOptions& options,
-                           CaseResult& result) {
+// ref<double> timed (its first run is the warm-up), ref<float>; a stepping twin's references also
+// run once through the checkpoints, and ref<float> takes the shadow steps from its states.
+ReferenceRuns run_references(const FieldTwin& twin, const Heightmap& input, const RunOptions& options,
+                             CaseResult& result) {
+  ReferenceRuns runs;
   report_stage(options, "cpu reference (double)");
-  Grid<double> output = twin.reference_double(input);  // also the warm-up run
-  time_cpu(options.cpu_reps, [&] { output = twin.reference_double(input); }, result.timings);
-  return output;
+  runs.cpu = twin.reference_double(input);  // also the warm-up run
+  time_cpu(options.cpu_reps, [&] { runs.cpu = twin.reference_double(input); }, result.timings);
+  report_stage(options, "cpu reference (float)");
+  const Grid<float> input_float = input.cast<float>();
+  if (!twin.stepping) {
+    runs.cpu_float = twin.reference_float(input_float);
+    return runs;
+  }
+  const auto& stepping = *twin.stepping;
+  const auto marks = path_marks(stepping.iterations);
+  runs.float_path = step_through<float>(stepping.reference_float, input_float, marks);
+  runs.cpu_float = runs.float_path.back();
+  runs.shadow = reference_shadow(stepping, runs.float_path);
+  report_stage(options, "cpu reference (double) through the checkpoints");
+  runs.double_path = step_through<double>(stepping.reference_double, input, marks);
+  return runs;
 }
 
 // Roundings of one float height over a run: the input's conversion to float, then every addition.
@@ -84,20 +205,23 @@ void add_mass_checks(const FieldTwin& twin, const Heightmap& input, const Grid<d
   }
 }
 
-// κ: max |ref(h') - ref(h)| / max |h' - h| for h' = h with every valid height moved by one float
-// rounding, up or down as the counter RNG says. One more run of the double reference.
-double measured_amplification(const FieldTwin& twin, const Heightmap& input, const Grid<double>& cpu,
-                              const RunOptions& options) {
-  report_stage(options, "cpu reference (double), perturbed input");
-  Heightmap perturbed = input;
-  for (std::size_t i = 0; i < perturbed.size(); ++i) {
-    const double direction = (random_u32(0, static_cast<std::uint32_t>(i), 0, 1) & 1u) != 0 ? 1.0 : -1.0;
-    const double magnitude = std::max(std::abs(input.values[i]), double{std::numeric_limits<float>::min()});
-    perturbed.values[i] += direction * unit_roundoff_float * magnitude;
+// The material the double reference moves in its first iteration from the input, against the
+// twin's spec of that iteration (both ½Σ|h1 - h0|). Catches a transfer misapplied in both twins
+// (talus, rate, a side of the exchange), which the twins' agreement cannot.
+void add_moved_ledger(const FieldTwin::Stepping& stepping, const Heightmap& input, CaseResult& result) {
+  if (!stepping.first_iteration_spec || stepping.iterations < 1) return;
+  const double moved_spec = moved_material(input, stepping.first_iteration_spec(input));
+  const double moved_twin = moved_material(input, stepping.reference_double(input, 0, 1));
+  const std::string measured = fmt::format("moved {:.9g} where the spec (host, double) moves {:.9g}", moved_twin, moved_spec);
+  if (moved_spec == 0.0) {
+    result.checks.push_back(bounded_check("mass.moved_first_iteration.cpu", moved_twin, 0.0, std::nullopt,
+                                          measured + "; the spec moves nothing, so the twin must not"));
+    return;
   }
-  const double moved = field_difference(input, perturbed).max_abs;
-  const double response = field_difference(cpu, twin.reference_double(perturbed)).max_abs;
-  return response / moved;
+  const auto bounds = moved_ledger_bounds(stepping.additions_per_iteration, field_totals(input), moved_spec);
+  result.checks.push_back(bounded_check("mass.moved_first_iteration.cpu", std::abs(moved_twin - moved_spec) / moved_spec,
+                                        bounds.strict, std::nullopt,
+                                        fmt::format("relative to the spec's: {}; {}", measured, bounds.model)));
 }
 
 void add_parity_pair(const std::string& what, const FieldDifference& difference, double range, const Bounds& bounds,
@@ -108,32 +232,172 @@ void add_parity_pair(const std::string& what, const FieldDifference& difference,
       bounded_check("parity.rms." + what, difference.rms / range, bounds.strict, bounds.loose, bounds.model));
 }
 
-void add_parity_checks(const FieldTwin& twin, const Heightmap& input, const Grid<double>& cpu,
-                       const Grid<float>& cpu_float, const std::optional<GpuOutputs>& gpu, const RunOptions& options,
-                       CaseResult& result) {
-  const auto totals = field_totals(input);
-  const bool generated = twin.generated.has_value();
-  const double range = generated ? 1.0 : (totals.high > totals.low ? totals.high - totals.low : 1.0);
-  const double magnitude = std::max(std::abs(totals.low), std::abs(totals.high)) / range;
-  const auto logic = generated ? twin.generated->logic : parity_bounds_same_arithmetic(twin.additions_per_cell, magnitude);
-  const auto precision =
-      generated ? twin.generated->precision
-                : parity_bounds_float_vs_double(float_roundings(twin), magnitude,
-                                                measured_amplification(twin, input, cpu, options),
-                                                twin.largest_switched_transfer);
-  add_parity_pair("float_vs_double", field_difference(cpu, cpu_float), range, precision, result);
-  if (!gpu) {
-    for (const char* name : {"parity.max_abs.gpu_vs_float", "parity.rms.gpu_vs_float", "parity.max_abs.gpu_vs_double",
-                             "parity.rms.gpu_vs_double", "determinism.gpu"}) {
-      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+std::string exactness(const FieldDifference& difference) {
+  return difference.differing_bits == 0 ? "bit-exact; " : fmt::format("{} cells differ; ", difference.differing_bits);
+}
+
+// A whole run's distance, reported without a verdict (see field_twin.hpp).
+void add_informative_pair(const std::string& what, const FieldDifference& difference, double range, int iterations,
+                          CaseResult& result) {
+  const std::string detail = fmt::format(
+      "{}at the end of the run ({} iterations), relative to the input's height range; informative: over a run "
+      "the method amplifies rounding differences by an amount not known before it (verdicts: parity.shadow.*)",
+      exactness(difference), iterations);
+  result.checks.push_back(informative_check("parity.max_abs." + what, difference.max_abs / range, detail));
+  result.checks.push_back(informative_check("parity.rms." + what, difference.rms / range, detail));
+}
+
+// NaN (a non-finite cell) wins, so that the check fails.
+double worse(double a, double b) { return std::isnan(a) || std::isnan(b) ? std::nan("") : std::max(a, b); }
+
+// GPU vs ref<float>, each stepped from ref<float>'s state at the checkpoints.
+void add_shadow_checks(const FieldTwin::Stepping& stepping, const std::vector<ShadowStep>& expected,
+                       const std::vector<ShadowStep>& measured, double range, double magnitude, CaseResult& result) {
+  const auto starts = shadow_starts(stepping.iterations);
+  double worst_one = 0.0, worst_multi = 0.0;
+  std::size_t differing_one = 0, differing_multi = 0;
+  int longest = 1;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const auto one = field_difference(expected[k].one, measured[k].one);
+    const auto multi = field_difference(expected[k].multi, measured[k].multi);
+    worst_one = worse(worst_one, one.max_abs / range);
+    worst_multi = worse(worst_multi, multi.max_abs / range);
+    differing_one += one.differing_bits;
+    differing_multi += multi.differing_bits;
+    longest = std::max(longest, shadow_length(stepping.iterations, starts[k]));
+  }
+  const std::string from = fmt::format("from ref<float>'s state at {} checkpoints (after iterations {})", starts.size(),
+                                       fmt::join(starts, ", "));
+  const auto bit_exact = [](std::size_t differing) {
+    return differing == 0 ? std::string("bit-exact; ") : fmt::format("{} cell-steps differ; ", differing);
+  };
+  const auto one_bounds = parity_bounds_same_arithmetic(stepping.additions_per_iteration, magnitude);
+  result.checks.push_back(bounded_check(
+      "parity.shadow.max_abs.gpu_vs_float", worst_one, one_bounds.strict, one_bounds.loose,
+      fmt::format("{}max over checkpoints of |gpu - ref<float>| after one iteration {}; {} ({} additions per cell)",
+                  bit_exact(differing_one), from, one_bounds.model, stepping.additions_per_iteration)));
+  const auto multi_bounds = parity_bounds_same_arithmetic(stepping.additions_per_iteration * longest, magnitude);
+  result.checks.push_back(bounded_check(
+      "parity.shadow.max_abs_multi.gpu_vs_float", worst_multi, multi_bounds.strict, multi_bounds.loose,
+      fmt::format("{}the same after up to {} iterations; {} ({} additions per cell)", bit_exact(differing_multi),
+                  longest, multi_bounds.model, stepping.additions_per_iteration * longest)));
+  result.checks.push_back(informative_check(
+      "parity.shadow.cells_differing.gpu_vs_float", static_cast<double>(differing_one),
+      "cells whose bits differ after one iteration, summed over the checkpoints (0 where division rounds correctly)"));
+}
+
+// exp of the least-squares slope of ln y over x, over the points with y > 0: the factor by which y
+// grows per unit of x. Empty with fewer than two such points at different x.
+std::optional<double> fitted_growth(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<std::pair<double, double>> points;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (y[i] > 0.0 && std::isfinite(y[i])) points.emplace_back(x[i], std::log(y[i]));
+  }
+  if (points.size() < 2) return std::nullopt;
+  double mean_x = 0.0, mean_y = 0.0;
+  for (const auto& [px, py] : points) mean_x += px, mean_y += py;
+  mean_x /= static_cast<double>(points.size());
+  mean_y /= static_cast<double>(points.size());
+  double sxy = 0.0, sxx = 0.0;
+  for (const auto& [px, py] : points) sxy += (px - mean_x) * (py - mean_y), sxx += (px - mean_x) * (px - mean_x);
+  if (sxx == 0.0) return std::nullopt;
+  return std::exp(sxy / sxx);
+}
+
+// How fast each float run leaves ref<double>: distances at the checkpoints, a fitted growth per
+// iteration (informative) and a plot.
+void add_divergence(const FieldTwin::Stepping& stepping, const ReferenceRuns& runs, const std::optional<GpuOutputs>& gpu,
+                    double range, const RunOptions& options, CaseResult& result) {
+  constexpr double plotted_zero = 1e-18;
+  const auto marks = path_marks(stepping.iterations);
+  SeriesPlot plot{.title = "Distance from ref<double> along the run",
+                  .x_label = "iteration",
+                  .y_label = "max |· - ref<double>| / height range (exact zeros at 1e-18)",
+                  .log_y = true};
+  const auto add_series = [&](const std::string& label, const std::string& backend, const auto& path, bool dashed) {
+    Series series{.label = label, .dashed = dashed};
+    std::vector<double> distances;
+    for (std::size_t i = 0; i < marks.size(); ++i) {
+      const double distance = field_difference(runs.double_path[i], path[i]).max_abs / range;
+      series.x.push_back(marks[i]);
+      series.y.push_back(std::max(distance, plotted_zero));
+      distances.push_back(distance);
     }
+    if (const auto growth = fitted_growth(series.x, distances)) {
+      result.checks.push_back(informative_check(
+          "parity.growth_per_iteration." + backend + "_vs_double", *growth,
+          fmt::format("factor per iteration of max |{} - ref<double>|, least squares of its log over {} checkpoints "
+                      "(iterations {}); informative",
+                      label, marks.size(), fmt::join(marks, ", "))));
+    }
+    plot.series.push_back(std::move(series));
+  };
+  add_series("ref<float>", "float", runs.float_path, true);
+  if (gpu) add_series("GPU", "gpu", gpu->path, false);
+  if (options.report_dir.empty()) return;
+  std::string reason;
+  if (auto artifact = plot_series(plot, options.report_dir, result.name + "/parity.png",
+                                  "distance from ref<double> at the checkpoints: GPU (solid), ref<float> (dashed)",
+                                  reason)) {
+    result.artifacts.push_back(*artifact);
+  } else {
+    result.notes.push_back("parity plot unavailable: " + reason);
+  }
+}
+
+void add_determinism_check(const GpuOutputs& gpu, CaseResult& result) {
+  const auto repeat = field_difference(gpu.first, gpu.second);
+  result.checks.push_back(bounded_check("determinism.gpu", static_cast<double>(repeat.differing_bits), 0.0,
+                                        std::nullopt,
+                                        "cells whose bits differ between two GPU runs of the same input (the first "
+                                        "stepped through the checkpoints when the twin steps, the second in one go)"));
+}
+
+void skip_checks(std::initializer_list<const char*> names, const std::string& reason, CaseResult& result) {
+  for (const char* name : names) result.checks.push_back(skipped_check(name, reason));
+}
+
+// A generator's whole output against the bounds it declares.
+void add_generated_parity(const FieldTwin& twin, const ReferenceRuns& runs, const std::optional<GpuOutputs>& gpu,
+                          const RunOptions& options, CaseResult& result) {
+  add_parity_pair("float_vs_double", field_difference(runs.cpu, runs.cpu_float), 1.0, twin.generated->precision, result);
+  if (!gpu) {
+    skip_checks({"parity.max_abs.gpu_vs_float", "parity.rms.gpu_vs_float", "parity.max_abs.gpu_vs_double",
+                 "parity.rms.gpu_vs_double", "determinism.gpu"},
+                options.gpu_unavailable_reason, result);
     return;
   }
-  add_parity_pair("gpu_vs_float", field_difference(cpu_float, gpu->first), range, logic, result);
-  add_parity_pair("gpu_vs_double", field_difference(cpu, gpu->first), range, precision, result);
-  const auto repeat = field_difference(gpu->first, gpu->second);
-  result.checks.push_back(bounded_check("determinism.gpu", static_cast<double>(repeat.differing_bits), 0.0,
-                                        std::nullopt, "cells whose bits differ between two GPU runs of the same input"));
+  add_parity_pair("gpu_vs_float", field_difference(runs.cpu_float, gpu->first), 1.0, twin.generated->logic, result);
+  add_parity_pair("gpu_vs_double", field_difference(runs.cpu, gpu->first), 1.0, twin.generated->precision, result);
+  add_determinism_check(*gpu, result);
+}
+
+// An iterative twin: shadow steps give the verdicts, the whole run's distances are informative.
+void add_stepping_parity(const FieldTwin::Stepping& stepping, const Heightmap& input, const ReferenceRuns& runs,
+                         const std::optional<GpuOutputs>& gpu, const RunOptions& options, CaseResult& result) {
+  const auto totals = field_totals(input);
+  const double range = totals.high > totals.low ? totals.high - totals.low : 1.0;
+  const double magnitude = std::max(std::abs(totals.low), std::abs(totals.high)) / range;
+  add_informative_pair("float_vs_double", field_difference(runs.cpu, runs.cpu_float), range, stepping.iterations,
+                       result);
+  if (gpu) {
+    add_informative_pair("gpu_vs_float", field_difference(runs.cpu_float, gpu->first), range, stepping.iterations,
+                         result);
+    add_informative_pair("gpu_vs_double", field_difference(runs.cpu, gpu->first), range, stepping.iterations, result);
+    add_determinism_check(*gpu, result);
+    if (stepping.iterations > 0) {
+      add_shadow_checks(stepping, runs.shadow, gpu->shadow, range, magnitude, result);
+    } else {
+      skip_checks({"parity.shadow.max_abs.gpu_vs_float", "parity.shadow.max_abs_multi.gpu_vs_float"},
+                  "the run has no iterations to step", result);
+    }
+  } else {
+    skip_checks({"parity.max_abs.gpu_vs_float", "parity.rms.gpu_vs_float", "parity.max_abs.gpu_vs_double",
+                 "parity.rms.gpu_vs_double", "determinism.gpu", "parity.shadow.max_abs.gpu_vs_float",
+                 "parity.shadow.max_abs_multi.gpu_vs_float"},
+                options.gpu_unavailable_reason, result);
+  }
+  add_divergence(stepping, runs, gpu, range, options, result);
 }
 
 template <class Real>
@@ -237,14 +501,14 @@ void write_artifacts(const FieldTwin& twin, const Heightmap& input, const Grid<d
 
 void run_field_twin(const FieldTwin& twin, const Heightmap& input, const nlohmann::json& expect,
                     const RunOptions& options, CaseResult& result) {
-  const Grid<double> cpu = run_reference(twin, input, options, result);
-  report_stage(options, "cpu reference (float)");
-  const Grid<float> input_float = input.cast<float>();
-  const Grid<float> cpu_float = twin.reference_float(input_float);
+  if (!twin.generated && !twin.stepping) {
+    throw std::logic_error("a field twin is either generated or iterative (stepping)");
+  }
+  const ReferenceRuns runs = run_references(twin, input, options, result);
   std::optional<GpuOutputs> gpu;
   if (options.gpu_available) {
     try {
-      gpu = run_gpu(twin, input_float, options, result);
+      gpu = run_gpu(twin, input.cast<float>(), runs, options, result);
     } catch (const std::exception& error) {
       result.error = fmt::format("GPU twin failed: {}", error.what());
     }
@@ -252,14 +516,19 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& input, const nlohman
   const std::string unavailable = gpu ? "" : (result.error.empty() ? options.gpu_unavailable_reason : result.error);
   RunOptions checked_options = options;
   checked_options.gpu_unavailable_reason = unavailable;
-  add_mass_checks(twin, input, cpu, cpu_float, gpu ? std::optional<Grid<float>>(gpu->first) : std::nullopt,
+  add_mass_checks(twin, input, runs.cpu, runs.cpu_float, gpu ? std::optional<Grid<float>>(gpu->first) : std::nullopt,
                   checked_options, result);
-  add_parity_checks(twin, input, cpu, cpu_float, gpu, checked_options, result);
+  if (twin.stepping) {
+    add_moved_ledger(*twin.stepping, input, result);
+    add_stepping_parity(*twin.stepping, input, runs, gpu, checked_options, result);
+  } else {
+    add_generated_parity(twin, runs, gpu, checked_options, result);
+  }
   if (expect.is_object()) {
-    add_spec_checks(expect, cpu, "cpu", result);
+    add_spec_checks(expect, runs.cpu, "cpu", result);
     if (gpu) add_spec_checks(expect, gpu->first, "gpu", result);
   }
-  write_artifacts(twin, input, cpu, cpu_float, gpu, options, result);
+  write_artifacts(twin, input, runs.cpu, runs.cpu_float, gpu, options, result);
 }
 
 }  // namespace gt

@@ -5,12 +5,25 @@
 // three, times the double reference and the GPU, writes the pictures and fields, and adds the
 // checks of DESIGN.md to the case result:
 //   mass.relative_drift.{cpu,cpu_float,gpu}   |Σ after - Σ before| / Σ|before|   (conserving algorithms)
-//   parity.max_abs.gpu_vs_float, parity.rms.gpu_vs_float     relative to the input's height range
-//                                                            (absolute for generated fields)
-//   parity.max_abs.gpu_vs_double, parity.rms.gpu_vs_double
-//   parity.max_abs.float_vs_double                           float precision of the method itself
-//   determinism.gpu                                          cells differing between two GPU runs
+//   determinism.gpu                           cells differing between two GPU runs
 //   spec.cells.{cpu,gpu}, spec.total.{cpu,gpu}               when the case lists expected values
+// A generator (`generated`: noise) is judged on its whole output, with the bounds it gives:
+//   parity.max_abs.gpu_vs_float, parity.rms.gpu_vs_float     (logic bounds)
+//   parity.max_abs.{gpu,float}_vs_double, parity.rms.*       (precision bounds)
+// An iterative twin (`stepping`: erosion) is judged by shadow steps: at 8 checkpoints along the run
+// (every iteration of a shorter run) ref<float>'s state is loaded into the GPU, which takes one and
+// then up to 4 iterations, compared cell by cell with ref<float> stepped from the same state:
+//   parity.shadow.max_abs.gpu_vs_float         one iteration, max over the checkpoints, relative to
+//                                              the input's height range; bound parity_bounds_same_arithmetic
+//   parity.shadow.max_abs_multi.gpu_vs_float   up to 4 iterations, the same model over their passes
+//   parity.shadow.cells_differing.gpu_vs_float cells differing in any bit after one iteration (informative)
+//   mass.moved_first_iteration.cpu             material the double reference moved in its first
+//                                              iteration against the twin's host spec of that iteration
+// Over a whole run the method amplifies rounding differences by an amount no model gives before the
+// run (ties on a cone's apex break either way), so the end-of-run distances are informative:
+//   parity.{max_abs,rms}.gpu_vs_float, parity.{max_abs,rms}.{gpu,float}_vs_double,
+//   parity.growth_per_iteration.{gpu,float}_vs_double   fitted growth of the distance from
+//                                              ref<double> over the checkpoints (also plotted)
 // Without a GL context the GPU checks are `skip` with the reason and the CPU side still runs.
 #pragma once
 
@@ -30,10 +43,13 @@ namespace gt {
 
 // The GPU side keeps its buffers between repetitions: load (upload, not timed), run (all
 // iterations, not synchronised: the caller brackets it with glFinish), result (download).
+// Iterative twins also give step(first, count): `count` iterations from the current state, the
+// first of them numbered `first` (the number of iterations the state has behind it).
 struct GpuFieldRunner {
   std::function<void(const Grid<float>&)> load;
   std::function<void()> run;
   std::function<Grid<float>()> result;
+  std::function<void(int first, int count)> step;  // empty for generators
 };
 
 struct FieldTwin {
@@ -41,10 +57,6 @@ struct FieldTwin {
   std::function<Grid<float>(const Grid<float>&)> reference_float;
   std::function<GpuFieldRunner()> make_gpu;  // called only with a current GL context
   double additions_per_cell = 0.0;           // rounded additions into one height over the run
-  // Largest change of one height, relative to the range, that a rounding can switch on or off:
-  // 0 for a continuous method; for a threshold-triggered one (Jákó's talus test) the whole
-  // transfer that the threshold gates. Loosens only the float-vs-double bounds.
-  double largest_switched_transfer = 0.0;
   bool conserves_mass = true;
   // A generator (noise) makes a new field on the input's grid rather than changing the input: its
   // pictures show the output alone, and its parity bounds are absolute and given here rather than
@@ -54,6 +66,19 @@ struct FieldTwin {
     Bounds precision;  // ref<float> and GPU vs ref<double>
   };
   std::optional<GeneratedField> generated;
+  // An iterative method that can be stepped from any state (every twin that is not generated):
+  // the references from `state`, which has `first` iterations behind it, run `count` more; the GPU
+  // runner's step() does the same.
+  struct Stepping {
+    int iterations = 0;                    // of the whole run
+    double additions_per_iteration = 0.0;  // rounded additions into one height per iteration
+    std::function<Grid<double>(const Grid<double>& state, int first, int count)> reference_double;
+    std::function<Grid<float>(const Grid<float>& state, int first, int count)> reference_float;
+    // Optional: the heights after the first iteration from `input`, computed on the host in double
+    // from the method's equations, written apart from the twins (a spec of the transfer).
+    std::function<Grid<double>(const Grid<double>& input)> first_iteration_spec;
+  };
+  std::optional<Stepping> stepping;
 };
 
 struct RunOptions {

@@ -1,6 +1,11 @@
 // The driver's view of the two thermal-erosion models: parameters to constants, the three
-// versions (ref<double>, ref<float>, GPU) and the error model's count of rounded additions.
+// versions (ref<double>, ref<float>, GPU) as steppable field twins, the error model's count of
+// rounded additions, and each model's first iteration written on the host as a spec of the
+// transfer (the ledger mass.moved_first_iteration.cpu of compare/field_twin.cpp).
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -17,10 +22,112 @@ namespace gt {
 namespace {
 
 // The GPU object lives as long as the runner's closures.
-template <class Gpu>
-GpuFieldRunner field_runner(std::shared_ptr<Gpu> gpu) {
+GpuFieldRunner field_runner(std::shared_ptr<gpu::ThermalErosion> gpu) {
   return {[gpu](const Grid<float>& heights) { gpu->load(heights); }, [gpu] { gpu->run(); },
-          [gpu] { return gpu->result(); }};
+          [gpu] { return gpu->result(); }, [gpu](int first, int count) { gpu->step(first, count); }};
+}
+
+GpuFieldRunner field_runner(std::shared_ptr<gpu::ThermalJakoErosion> gpu) {
+  return {[gpu](const Grid<float>& heights) { gpu->load(heights); }, [gpu] { gpu->run(); },
+          [gpu] { return gpu->result(); }, [gpu](int, int count) { gpu->step(count); }};
+}
+
+// For the specs below, written here apart from either twin: a pipe's offset to its neighbour, and
+// whether a cell takes part (inside the grid and not masked).
+struct Offset {
+  int dx;
+  int dy;
+};
+
+bool takes_part(const Grid<double>& heights, int x, int y) { return heights.inside(x, y) && heights.is_valid(x, y); }
+
+// Seed 000's first iteration (Algorithms 9-11) on the host in double, visiting each pair of
+// neighbours once (the twins visit each cell's four pipes): requests by Algorithm 10, then across
+// each pipe the smaller of two opposite requests moves (Algorithm 11). Iteration 0 uses the
+// cardinal pipes unless the neighbourhood is diagonal.
+Grid<double> hydra_first_iteration(const Grid<double>& heights, const ThermalConstants& constants,
+                                   Neighbourhood neighbourhood) {
+  const bool cardinal = neighbourhood != Neighbourhood::diagonal;
+  const std::array<Offset, 4> offsets = cardinal ? std::array<Offset, 4>{{{-1, 0}, {0, 1}, {1, 0}, {0, -1}}}
+                                                 : std::array<Offset, 4>{{{-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
+  const auto length = [&](int k) {
+    return cardinal ? (k % 2 == 0 ? constants.length_x : constants.length_y) : constants.length_diagonal;
+  };
+  std::vector<std::array<double, 4>> request(heights.size(), std::array<double, 4>{});
+  for (int y = 0; y < heights.height; ++y) {
+    for (int x = 0; x < heights.width; ++x) {
+      if (!heights.is_valid(x, y)) continue;
+      std::array<double, 4> demand{}, supply{};
+      for (int k = 0; k < 4; ++k) {
+        if (!takes_part(heights, x + offsets[k].dx, y + offsets[k].dy)) continue;
+        const double rise = heights.at(x + offsets[k].dx, y + offsets[k].dy) - heights.at(x, y);
+        const double limit = constants.talus_slope * length(k);
+        if (rise > limit) demand[k] = rise - limit;
+        if (rise < -limit) supply[k] = rise + limit;
+      }
+      const double demand_sum = demand[0] + demand[1] + demand[2] + demand[3];
+      const double supply_sum = supply[0] + supply[1] + supply[2] + supply[3];
+      const double c_d = demand_sum > 0.0
+                             ? std::clamp(constants.request_factor * *std::max_element(demand.begin(), demand.end()) /
+                                              demand_sum, 0.0, 1.0)
+                             : 0.0;
+      const double c_s = supply_sum < 0.0
+                             ? std::clamp(constants.request_factor * *std::min_element(supply.begin(), supply.end()) /
+                                              supply_sum, 0.0, 1.0)
+                             : 0.0;
+      for (int k = 0; k < 4; ++k) request[heights.index(x, y)][k] = demand[k] * c_d + supply[k] * c_s;
+    }
+  }
+  Grid<double> after = heights;
+  for (int y = 0; y < heights.height; ++y) {
+    for (int x = 0; x < heights.width; ++x) {
+      for (int k = 0; k < 2; ++k) {  // pipes k and k + 2 are the two ends of one pair
+        const int nx = x + offsets[k].dx, ny = y + offsets[k].dy;
+        if (!heights.is_valid(x, y) || !takes_part(heights, nx, ny)) continue;
+        const double mine = request[heights.index(x, y)][k];
+        const double theirs = request[heights.index(nx, ny)][k + 2];
+        if (!((mine > 0.0 && theirs < 0.0) || (mine < 0.0 && theirs > 0.0))) continue;  // one asks, one offers
+        const double amount = std::min(std::abs(mine), std::abs(theirs));
+        const double to_me = mine > 0.0 ? amount : -amount;
+        after.at(x, y) += to_me;
+        after.at(nx, ny) -= to_me;
+      }
+    }
+  }
+  if (constants.clamp_unit) {
+    for (double& height : after.values) height = std::clamp(height, 0.0, 1.0);
+  }
+  return after;
+}
+
+// Jákó & Tóth's first iteration (eqs. 2.30-2.34 as decided in reference/erosion/thermal_jako.cpp)
+// on the host in double, sending each outflow to its neighbour as it is computed: A = the lower
+// neighbours beyond T·l, ΔS = rate·H/2 with H the largest drop in A, shared by the drops.
+Grid<double> jako_first_iteration(const Grid<double>& heights, const ThermalConstants& constants) {
+  const std::array<Offset, 8> offsets{{{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
+  Grid<double> after = heights;
+  for (int y = 0; y < heights.height; ++y) {
+    for (int x = 0; x < heights.width; ++x) {
+      if (!heights.is_valid(x, y)) continue;
+      std::array<double, 8> drop{};
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + offsets[k].dx, ny = y + offsets[k].dy;
+        if (!takes_part(heights, nx, ny)) continue;
+        const double length = k >= 4 ? constants.length_diagonal : (k % 2 == 0 ? constants.length_x : constants.length_y);
+        const double fall = heights.at(x, y) - heights.at(nx, ny);
+        if (fall > constants.talus_slope * length) drop[k] = fall;
+      }
+      const double drop_sum = drop[0] + drop[1] + drop[2] + drop[3] + drop[4] + drop[5] + drop[6] + drop[7];
+      if (drop_sum <= 0.0) continue;
+      const double sent = constants.request_factor * *std::max_element(drop.begin(), drop.end()) / 2.0;
+      for (int k = 0; k < 8; ++k) {
+        const double share = sent * drop[k] / drop_sum;
+        after.at(x, y) -= share;
+        if (drop[k] > 0.0) after.at(x + offsets[k].dx, y + offsets[k].dy) += share;
+      }
+    }
+  }
+  return after;
 }
 
 // Spec vector of eq. 4.10 when a case asks for it: {"talus_eq_4_10": {"angle", "width",
@@ -55,7 +162,20 @@ PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& in
     return field_runner(std::make_shared<gpu::ThermalErosion>(width, height, constants, params.neighbourhood,
                                                               params.iterations));
   };
-  twin.additions_per_cell = 4.0 * params.iterations;  // one per pipe and iteration (Algorithm 11)
+  constexpr double additions_per_iteration = 4.0;  // one per pipe (Algorithm 11)
+  twin.additions_per_cell = additions_per_iteration * params.iterations;
+  twin.stepping = FieldTwin::Stepping{
+      .iterations = params.iterations,
+      .additions_per_iteration = additions_per_iteration,
+      .reference_double = [=](const Grid<double>& state, int first, int count) {
+        return reference::thermal_erosion(state, constants, count, params.neighbourhood, first);
+      },
+      .reference_float = [=](const Grid<float>& state, int first, int count) {
+        return reference::thermal_erosion(state, constants, count, params.neighbourhood, first);
+      },
+      .first_iteration_spec = [=](const Grid<double>& heights) {
+        return hydra_first_iteration(heights, constants, params.neighbourhood);
+      }};
   prepared.extra_checks = add_talus_spec;
   return prepared;
 }
@@ -76,9 +196,18 @@ PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightma
   twin.make_gpu = [=, width = input.width, height = input.height] {
     return field_runner(std::make_shared<gpu::ThermalJakoErosion>(width, height, constants, params.iterations));
   };
-  twin.additions_per_cell = 16.0 * params.iterations;  // 8 outflows subtracted, 8 inflows added
-  // The talus test switches the whole outflow rate·H/2 on or off, and H is at most the range.
-  twin.largest_switched_transfer = 0.5 * params.rate;
+  constexpr double additions_per_iteration = 16.0;  // 8 outflows subtracted, 8 inflows added
+  twin.additions_per_cell = additions_per_iteration * params.iterations;
+  twin.stepping = FieldTwin::Stepping{
+      .iterations = params.iterations,
+      .additions_per_iteration = additions_per_iteration,
+      .reference_double = [=](const Grid<double>& state, int, int count) {
+        return reference::thermal_jako_erosion(state, constants, count);
+      },
+      .reference_float = [=](const Grid<float>& state, int, int count) {
+        return reference::thermal_jako_erosion(state, constants, count);
+      },
+      .first_iteration_spec = [=](const Grid<double>& heights) { return jako_first_iteration(heights, constants); }};
   return prepared;
 }
 

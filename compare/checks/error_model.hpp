@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "compare/checks/field.hpp"
@@ -48,6 +47,10 @@ inline Bounds mass_drift_bounds(double unit_roundoff, double additions_per_cell,
 // way, another u·|h| = u·magnitude·range. Over A additions per cell, relative to the range:
 // worst case A·u·(3 + magnitude) (loose), random walk 6/√3·sqrt(A)·u·(3 + magnitude) (strict).
 // A device that divides correctly (llvmpipe) gives 0.
+// The model holds for steps taken from one shared state (the shadow steps of field_twin.cpp): in
+// the first iteration both sides compare identical numbers and branch alike. Over more iterations
+// a division's ulps could flip a later talus comparison, which the model leaves out; that cannot
+// happen where division rounds correctly, and the one-iteration check stands without it.
 inline Bounds parity_bounds_same_arithmetic(double additions_per_cell, double magnitude) {
   const double per_addition = unit_roundoff_float * (3.0 + magnitude);
   const double loose = additions_per_cell * per_addition;
@@ -55,28 +58,21 @@ inline Bounds parity_bounds_same_arithmetic(double additions_per_cell, double ma
           "same float operations; GLSL division within 2.5 ulp; relative to the input's height range"};
 }
 
-// float vs double: every addition rounds float heights by <= u·|h| = u·magnitude·range more than
-// double does. If the method never amplified a perturbation, A additions would give at most
-// A·u·magnitude (relative to the range) and typically the random walk 6/√3·sqrt(A)·u·magnitude
-// (strict). Thermal erosion is not that tame: the shares max/Σ of Algorithm 10 change fast where
-// the excess is small, and symmetric inputs (a cone's apex) break their ties either way. So the
-// loose bound multiplies the worst case by the measured amplification κ of the method on this
-// input: the largest change of the double result per unit of perturbation when every input
-// height is moved by one float rounding (see measured_amplification in field_twin.cpp).
-// A method that switches a transfer on at a threshold is discontinuous: one rounding on either side
-// of the threshold moves a whole transfer, so the loose bound is at least that transfer.
-inline Bounds parity_bounds_float_vs_double(double additions_per_cell, double magnitude, double amplification,
-                                            double largest_switched_transfer) {
-  const double per_addition = unit_roundoff_float * std::max(magnitude, 1.0);
-  const double loose =
-      std::max(additions_per_cell * per_addition * std::max(amplification, 1.0), largest_switched_transfer);
-  const double strict = std::min(6.0 / std::sqrt(3.0) * std::sqrt(additions_per_cell) * per_addition, loose);
-  char model[200];
-  std::snprintf(model, sizeof model,
-                "float rounding of heights relative to the height range; measured amplification %.3g; "
-                "largest switched transfer %.3g",
-                amplification, largest_switched_transfer);
-  return {strict, loose, model};
+// Material moved by one iteration (½Σ|h1 - h0|): a double twin against a double spec of the same
+// iteration written apart from it (other loop order, so other roundings). Each computes a new
+// height by A rounded additions of transfers, each transfer at most the range and within 8u of
+// itself (difference, talus subtraction, share product and quotient, minimum); a partial sum is at
+// most |h| + A·range. So either height is within A·u·(|h| + (A + 8)·range) of the exact one, and
+// |moved_twin - moved_spec| <= ½Σ|h1_twin - h1_spec| <= A·u·(Σ|h| + cells·(A + 8)·range), plus 2u
+// for the compensated sums; relative to the spec's moved material (no loose bound: worst case).
+inline Bounds moved_ledger_bounds(double additions_per_iteration, const FieldTotals& before, double moved_spec) {
+  const double range = before.high - before.low;
+  const double worst = additions_per_iteration * unit_roundoff_double *
+                       (before.sum_abs + static_cast<double>(before.cells) * (additions_per_iteration + 8.0) * range);
+  const double strict = worst / moved_spec + 2.0 * unit_roundoff_double;
+  return {strict, strict,
+          "double roundings of one iteration in the twin and in the spec: A·u·(Σ|h| + cells·(A + 8)·range) "
+          "over the spec's moved material"};
 }
 
 }  // namespace gt

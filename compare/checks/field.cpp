@@ -55,6 +55,15 @@ double relative_mass_drift(const Grid<A>& before, const Grid<B>& after) {
   return std::abs(totals_after.sum - totals_before.sum) / totals_before.sum_abs;
 }
 
+double moved_material(const Grid<double>& before, const Grid<double>& after) {
+  require_same_shape(before, after);
+  CompensatedSum moved;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    if (before.is_valid(i) && after.is_valid(i)) moved.add(std::abs(after.values[i] - before.values[i]));
+  }
+  return 0.5 * moved.value();
+}
+
 template <class A, class B>
 FieldDifference field_difference(const Grid<A>& a, const Grid<B>& b) {
   require_same_shape(a, b);

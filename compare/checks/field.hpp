@@ -24,6 +24,10 @@ FieldTotals field_totals(const Grid<T>& field);
 template <class A, class B>
 double relative_mass_drift(const Grid<A>& before, const Grid<B>& after);
 
+// ½Σ|after - before|: the material one step moved, when every cell either gains or loses (a cell
+// that does both shows only its net change).
+double moved_material(const Grid<double>& before, const Grid<double>& after);
+
 struct FieldDifference {
   double max_abs = 0.0;          // max |b - a|; NaN when any compared value is NaN or infinite
   double rms = 0.0;              // sqrt(mean (b - a)²)

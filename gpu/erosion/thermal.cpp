@@ -3,8 +3,12 @@
 // reference/erosion/thermal.cpp and gpu/shaders/erosion/thermal_requests.comp.
 #include "gpu/erosion/thermal.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
+
+#include "core/mutant.hpp"
 
 namespace gt::gpu {
 namespace {
@@ -29,12 +33,20 @@ static_assert(sizeof(ThermalBlock) == 64);
 constexpr int local_size = 16;  // local_size_x/y of thermal_block.glsl
 constexpr GLuint block_binding = 0, requests_binding = 3;  // heights: see HeightfieldBuffers
 
+// T, or under mutant erosion.thermal.talus_degree_off the slope of an angle one degree steeper
+// (a parameter misapplied in both twins: the shader receives T·l from here).
+double applied_talus_slope(const ThermalConstants& constants) {
+  if (!mutant_active("erosion.thermal.talus_degree_off")) return constants.talus_slope;
+  return std::tan(std::atan(constants.talus_slope) + std::numbers::pi / 180.0);
+}
+
 // T·l rounded once from double, as the reference does.
 ThermalBlock make_block(const ThermalConstants& constants, bool cardinal, int width, int height) {
   ThermalBlock block{};
-  const float limit_x = static_cast<float>(constants.talus_slope * constants.length_x);
-  const float limit_y = static_cast<float>(constants.talus_slope * constants.length_y);
-  const float limit_diagonal = static_cast<float>(constants.talus_slope * constants.length_diagonal);
+  const double talus_slope = applied_talus_slope(constants);
+  const float limit_x = static_cast<float>(talus_slope * constants.length_x);
+  const float limit_y = static_cast<float>(talus_slope * constants.length_y);
+  const float limit_diagonal = static_cast<float>(talus_slope * constants.length_diagonal);
   const int cardinal_dx[4] = {-1, 0, 1, 0}, cardinal_dy[4] = {0, 1, 0, -1};
   const int diagonal_dx[4] = {-1, -1, 1, 1}, diagonal_dy[4] = {-1, 1, 1, -1};
   for (int k = 0; k < 4; ++k) {
@@ -70,9 +82,11 @@ ThermalErosion::ThermalErosion(int width, int height, const ThermalConstants& co
 
 void ThermalErosion::load(const Grid<float>& heights) { heights_.load(heights); }
 
-void ThermalErosion::run() {
+void ThermalErosion::run() { step(0, iterations_); }
+
+void ThermalErosion::step(int first_iteration, int count) {
   requests_.bind(requests_binding);
-  for (int iteration = 0; iteration < iterations_; ++iteration) {
+  for (int iteration = first_iteration; iteration < first_iteration + count; ++iteration) {
     const bool cardinal = neighbourhood_ == Neighbourhood::cardinal ||
                           (neighbourhood_ == Neighbourhood::alternating && iteration % 2 == 0);
     (cardinal ? cardinal_block_ : diagonal_block_).bind(block_binding);

@@ -3,8 +3,10 @@
 // ThermalErosion(width, height, constants, neighbourhood, iterations) compiles
 // gpu/shaders/erosion/thermal_requests.comp and thermal_transfer.comp and allocates the buffers;
 // load() uploads a float heightfield (mask honoured as in the reference), run() dispatches all
-// iterations (two passes each, no synchronisation: bracket with glFinish to time it), result()
-// downloads. Needs a current GlContext.
+// iterations (two passes each, no synchronisation: bracket with glFinish to time it), step(first,
+// count) dispatches `count` iterations from the current state numbered from `first` (the number
+// picks an alternating run's pipes; run() is step(0, iterations)), result() downloads.
+// Needs a current GlContext.
 #pragma once
 
 #include "core/grid.hpp"
@@ -21,6 +23,7 @@ class ThermalErosion {
                  int iterations);
   void load(const Grid<float>& heights);
   void run();
+  void step(int first_iteration, int count);
   Grid<float> result() const;
 
  private:

@@ -3,8 +3,12 @@
 // reference/erosion/thermal_jako.cpp.
 #include "gpu/erosion/thermal_jako.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
+
+#include "core/mutant.hpp"
 
 namespace gt::gpu {
 namespace {
@@ -26,12 +30,20 @@ static_assert(sizeof(ThermalJakoBlock) == 48);
 constexpr int local_size = 16;  // local_size_x/y of thermal_jako_block.glsl
 constexpr GLuint block_binding = 0, outflows_binding = 3;  // heights: see HeightfieldBuffers
 
+// T, or under mutant erosion.thermal_jako.talus_degree_off the slope of an angle one degree steeper
+// (a parameter misapplied in both twins: the shader receives T·l from here).
+double applied_talus_slope(const ThermalConstants& constants) {
+  if (!mutant_active("erosion.thermal_jako.talus_degree_off")) return constants.talus_slope;
+  return std::tan(std::atan(constants.talus_slope) + std::numbers::pi / 180.0);
+}
+
 // T·l rounded once from double, as the reference does.
 UniformBuffer block_buffer(const ThermalConstants& constants, int width, int height) {
   ThermalJakoBlock block{};
-  const float limit_x = static_cast<float>(constants.talus_slope * constants.length_x);
-  const float limit_y = static_cast<float>(constants.talus_slope * constants.length_y);
-  const float limit_diagonal = static_cast<float>(constants.talus_slope * constants.length_diagonal);
+  const double talus_slope = applied_talus_slope(constants);
+  const float limit_x = static_cast<float>(talus_slope * constants.length_x);
+  const float limit_y = static_cast<float>(talus_slope * constants.length_y);
+  const float limit_diagonal = static_cast<float>(talus_slope * constants.length_diagonal);
   for (int k = 0; k < 4; ++k) {
     block.talus_limit_cardinal[k] = k % 2 == 0 ? limit_x : limit_y;
     block.talus_limit_diagonal[k] = limit_diagonal;
@@ -56,10 +68,12 @@ ThermalJakoErosion::ThermalJakoErosion(int width, int height, const ThermalConst
 
 void ThermalJakoErosion::load(const Grid<float>& heights) { heights_.load(heights); }
 
-void ThermalJakoErosion::run() {
+void ThermalJakoErosion::run() { step(iterations_); }
+
+void ThermalJakoErosion::step(int count) {
   block_.bind(block_binding);
   outflows_.bind(outflows_binding);
-  for (int iteration = 0; iteration < iterations_; ++iteration) {
+  for (int iteration = 0; iteration < count; ++iteration) {
     heights_.iterate(outflow_program_, gather_program_, local_size);
   }
 }

@@ -2,7 +2,8 @@
 //
 // ThermalJakoErosion(width, height, constants, iterations) compiles
 // gpu/shaders/erosion/thermal_jako_outflow.comp and thermal_jako_gather.comp; load() uploads,
-// run() dispatches all iterations (not synchronised), result() downloads. Needs a current GlContext.
+// run() dispatches all iterations (not synchronised), step(count) `count` of them from the current
+// state (run() is step(iterations)), result() downloads. Needs a current GlContext.
 #pragma once
 
 #include "core/grid.hpp"
@@ -18,6 +19,7 @@ class ThermalJakoErosion {
   ThermalJakoErosion(int width, int height, const ThermalConstants& constants, int iterations);
   void load(const Grid<float>& heights);
   void run();
+  void step(int count);
   Grid<float> result() const;
 
  private:

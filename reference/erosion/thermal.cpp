@@ -19,10 +19,16 @@
 //   - Odd iteration counts return the last state (upstream returns the previous one).
 //   - Normalised heights are clamped to [0, 1] after each iteration, as upstream does.
 // Units: heights and lengths in the same unit (metres by default); T dimensionless.
+// Mutants (compare/mutants/thermal.cpp; the GPU twin carries the same ones): talus_degree_off,
+// unconserved_transfer, doubled_rate.
 #include "reference/erosion/thermal.hpp"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numbers>
+
+#include "core/mutant.hpp"
 
 namespace gt::reference {
 namespace {
@@ -74,9 +80,10 @@ std::array<Real, 4> cell_requests(const Grid<Real>& heights, int x, int y, const
   return request;
 }
 
+// Mutant erosion.thermal.unconserved_transfer: the giving cell keeps what it gives.
 template <class Real>
 Real transferred_height(const Grid<Real>& heights, const Requests<Real>& requests, int x, int y,
-                        const std::array<Pipe, 4>& pipes, bool clamp_unit) {
+                        const std::array<Pipe, 4>& pipes, bool clamp_unit, bool giver_pays) {
   Real height = heights.at(x, y);
   const auto& own = requests[heights.index(x, y)];
   for (int k = 0; k < 4; ++k) {
@@ -84,7 +91,7 @@ Real transferred_height(const Grid<Real>& heights, const Requests<Real>& request
     const Real theirs = requests[heights.index(x + pipes[k].dx, y + pipes[k].dy)][(k + 2) % 4];
     if (theirs < Real(0) && own[k] > Real(0)) {
       height = height + std::min(-theirs, own[k]);
-    } else if (theirs > Real(0) && own[k] < Real(0)) {
+    } else if (theirs > Real(0) && own[k] < Real(0) && giver_pays) {
       height = height - std::min(theirs, -own[k]);
     }
   }
@@ -95,7 +102,10 @@ template <class Real>
 void thermal_iteration(const Grid<Real>& heights, Grid<Real>& next, Requests<Real>& requests,
                        const std::array<Pipe, 4>& pipes, const std::array<Real, 4>& talus_limit,
                        const ThermalConstants& constants) {
-  const Real request_factor = static_cast<Real>(constants.request_factor);
+  // Mutant erosion.thermal.doubled_rate: f_s = strength instead of strength/2.
+  const double factor = mutant_active("erosion.thermal.doubled_rate") ? 2.0 : 1.0;
+  const Real request_factor = static_cast<Real>(factor * constants.request_factor);
+  const bool giver_pays = !mutant_active("erosion.thermal.unconserved_transfer");
   for (int y = 0; y < heights.height; ++y) {
     for (int x = 0; x < heights.width; ++x) {
       requests[heights.index(x, y)] =
@@ -106,30 +116,35 @@ void thermal_iteration(const Grid<Real>& heights, Grid<Real>& next, Requests<Rea
   for (int y = 0; y < heights.height; ++y) {
     for (int x = 0; x < heights.width; ++x) {
       next.at(x, y) = heights.is_valid(x, y)
-                          ? transferred_height(heights, requests, x, y, pipes, constants.clamp_unit)
+                          ? transferred_height(heights, requests, x, y, pipes, constants.clamp_unit, giver_pays)
                           : heights.at(x, y);
     }
   }
+}
+
+// T, or under mutant erosion.thermal.talus_degree_off the slope of an angle one degree steeper.
+double applied_talus_slope(const ThermalConstants& constants) {
+  if (!mutant_active("erosion.thermal.talus_degree_off")) return constants.talus_slope;
+  return std::tan(std::atan(constants.talus_slope) + std::numbers::pi / 180.0);
 }
 
 }  // namespace
 
 template <class Real>
 Grid<Real> thermal_erosion(const Grid<Real>& heights, const ThermalConstants& constants, int iterations,
-                           Neighbourhood neighbourhood) {
+                           Neighbourhood neighbourhood, int first_iteration) {
   // T·l per pipe, computed in double and rounded once, as the GPU twin receives it.
+  const double talus_slope = applied_talus_slope(constants);
   const std::array<Real, 4> cardinal_limit{
-      static_cast<Real>(constants.talus_slope * constants.length_x),
-      static_cast<Real>(constants.talus_slope * constants.length_y),
-      static_cast<Real>(constants.talus_slope * constants.length_x),
-      static_cast<Real>(constants.talus_slope * constants.length_y)};
-  const Real diagonal = static_cast<Real>(constants.talus_slope * constants.length_diagonal);
+      static_cast<Real>(talus_slope * constants.length_x), static_cast<Real>(talus_slope * constants.length_y),
+      static_cast<Real>(talus_slope * constants.length_x), static_cast<Real>(talus_slope * constants.length_y)};
+  const Real diagonal = static_cast<Real>(talus_slope * constants.length_diagonal);
   const std::array<Real, 4> diagonal_limit{diagonal, diagonal, diagonal, diagonal};
 
   Grid<Real> current = heights;
   Grid<Real> next = heights;
   Requests<Real> requests(heights.size());
-  for (int iteration = 0; iteration < iterations; ++iteration) {
+  for (int iteration = first_iteration; iteration < first_iteration + iterations; ++iteration) {
     const bool cardinal = neighbourhood == Neighbourhood::cardinal ||
                           (neighbourhood == Neighbourhood::alternating && iteration % 2 == 0);
     thermal_iteration(current, next, requests, cardinal ? cardinal_pipes : diagonal_pipes,
@@ -139,7 +154,7 @@ Grid<Real> thermal_erosion(const Grid<Real>& heights, const ThermalConstants& co
   return current;
 }
 
-template Grid<float> thermal_erosion(const Grid<float>&, const ThermalConstants&, int, Neighbourhood);
-template Grid<double> thermal_erosion(const Grid<double>&, const ThermalConstants&, int, Neighbourhood);
+template Grid<float> thermal_erosion(const Grid<float>&, const ThermalConstants&, int, Neighbourhood, int);
+template Grid<double> thermal_erosion(const Grid<double>&, const ThermalConstants&, int, Neighbourhood, int);
 
 }  // namespace gt::reference

@@ -11,10 +11,16 @@
 // outside the grid or masked are absent (no flow across the border). What leaves one cell arrives
 // at the other as the same number, so material is conserved up to the rounding of the additions.
 // Units: heights and lengths in metres; rate dimensionless in [0, 1].
+// Mutants (compare/mutants/thermal.cpp; the GPU twin carries the same ones): talus_degree_off,
+// unhalved_transfer, first_outflow_kept.
 #include "reference/erosion/thermal_jako.hpp"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numbers>
+
+#include "core/mutant.hpp"
 
 namespace gt::reference {
 namespace {
@@ -38,9 +44,10 @@ bool pipe_open(const Grid<Real>& heights, int x, int y, int k) {
   return heights.inside(nx, ny) && heights.is_valid(nx, ny);
 }
 
+// `half` is 1/2 of eq. 2.32 (mutant erosion.thermal_jako.unhalved_transfer: 1).
 template <class Real>
 std::array<Real, 8> cell_outflows(const Grid<Real>& heights, int x, int y, const std::array<Real, 8>& talus_limit,
-                                  Real rate) {
+                                  Real rate, Real half) {
   const Real height = heights.at(x, y);
   std::array<Real, 8> drop{};
   Real largest_drop = Real(0);
@@ -56,17 +63,19 @@ std::array<Real, 8> cell_outflows(const Grid<Real>& heights, int x, int y, const
   }
   std::array<Real, 8> outflow{};
   if (drop_total > Real(0)) {
-    const Real moved = rate * largest_drop * Real(0.5);
+    const Real moved = rate * largest_drop * half;
     for (int k = 0; k < 8; ++k) outflow[k] = moved * drop[k] / drop_total;
   }
   return outflow;
 }
 
+// `first_paid` is the first pipe whose outflow the cell pays (mutant
+// erosion.thermal_jako.first_outflow_kept: 1, what leaves through pipe 0 is never subtracted).
 template <class Real>
-Real gathered_height(const Grid<Real>& heights, const Outflows<Real>& outflows, int x, int y) {
+Real gathered_height(const Grid<Real>& heights, const Outflows<Real>& outflows, int x, int y, int first_paid) {
   const auto& own = outflows[heights.index(x, y)];
   Real height = heights.at(x, y);
-  for (int k = 0; k < 8; ++k) height = height - own[k];
+  for (int k = first_paid; k < 8; ++k) height = height - own[k];
   for (int k = 0; k < 8; ++k) {
     if (!pipe_open(heights, x, y, k)) continue;
     height = height + outflows[heights.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
@@ -74,17 +83,26 @@ Real gathered_height(const Grid<Real>& heights, const Outflows<Real>& outflows, 
   return height;
 }
 
+// T, or under mutant erosion.thermal_jako.talus_degree_off the slope of an angle one degree steeper.
+double applied_talus_slope(const ThermalConstants& constants) {
+  if (!mutant_active("erosion.thermal_jako.talus_degree_off")) return constants.talus_slope;
+  return std::tan(std::atan(constants.talus_slope) + std::numbers::pi / 180.0);
+}
+
 }  // namespace
 
 template <class Real>
 Grid<Real> thermal_jako_erosion(const Grid<Real>& heights, const ThermalConstants& constants, int iterations) {
   // T·l per pipe, computed in double and rounded once, as the GPU twin receives it.
-  const Real cardinal_x = static_cast<Real>(constants.talus_slope * constants.length_x);
-  const Real cardinal_y = static_cast<Real>(constants.talus_slope * constants.length_y);
-  const Real diagonal = static_cast<Real>(constants.talus_slope * constants.length_diagonal);
+  const double talus_slope = applied_talus_slope(constants);
+  const Real cardinal_x = static_cast<Real>(talus_slope * constants.length_x);
+  const Real cardinal_y = static_cast<Real>(talus_slope * constants.length_y);
+  const Real diagonal = static_cast<Real>(talus_slope * constants.length_diagonal);
   const std::array<Real, 8> talus_limit{cardinal_x, cardinal_y, cardinal_x, cardinal_y,
                                         diagonal,   diagonal,   diagonal,   diagonal};
   const Real rate = static_cast<Real>(constants.request_factor);
+  const Real half = mutant_active("erosion.thermal_jako.unhalved_transfer") ? Real(1) : Real(0.5);
+  const int first_paid = mutant_active("erosion.thermal_jako.first_outflow_kept") ? 1 : 0;
 
   Grid<Real> current = heights;
   Grid<Real> next = heights;
@@ -93,12 +111,12 @@ Grid<Real> thermal_jako_erosion(const Grid<Real>& heights, const ThermalConstant
     for (int y = 0; y < current.height; ++y) {
       for (int x = 0; x < current.width; ++x) {
         outflows[current.index(x, y)] =
-            current.is_valid(x, y) ? cell_outflows(current, x, y, talus_limit, rate) : std::array<Real, 8>{};
+            current.is_valid(x, y) ? cell_outflows(current, x, y, talus_limit, rate, half) : std::array<Real, 8>{};
       }
     }
     for (int y = 0; y < current.height; ++y) {
       for (int x = 0; x < current.width; ++x) {
-        next.at(x, y) = current.is_valid(x, y) ? gathered_height(current, outflows, x, y) : current.at(x, y);
+        next.at(x, y) = current.is_valid(x, y) ? gathered_height(current, outflows, x, y, first_paid) : current.at(x, y);
       }
     }
     std::swap(current.values, next.values);

@@ -2,6 +2,7 @@
 // Gather pass of Jákó & Tóth's thermal erosion (digest 000 §3.6): a cell loses what it sends and
 // gains what its neighbours send to it, the same numbers, so material is conserved. CPU reference:
 // reference/erosion/thermal_jako.cpp.
+// Mutants (compare/mutants/thermal.cpp): SWAPPED_INFLOW (GPU only), FIRST_OUTFLOW_KEPT (both twins).
 #include "common/grid.glsl"
 #include "erosion/thermal_jako_block.glsl"
 
@@ -11,10 +12,18 @@ void main() {
   uint index = cell_index(cell, grid_size);
   precise float height = heights[index];
   if (valid[index] != 0u) {
+#ifdef GT_MUTANT_EROSION_THERMAL_JAKO_FIRST_OUTFLOW_KEPT
+    for (int k = 1; k < 8; ++k) height = height - outflow(index, k);
+#else
     for (int k = 0; k < 8; ++k) height = height - outflow(index, k);
+#endif
     for (int k = 0; k < 8; ++k) {
       if (!pipe_open(cell, k)) continue;
+#ifdef GT_MUTANT_EROSION_THERMAL_JAKO_SWAPPED_INFLOW
+      height = height + outflow(cell_index(cell + pipe_offsets[k], grid_size), k);
+#else
       height = height + outflow(cell_index(cell + pipe_offsets[k], grid_size), opposite_pipe(k));
+#endif
     }
   }
   next_heights[index] = height;

@@ -2,6 +2,7 @@
 // Outflow pass of Jákó & Tóth's thermal erosion (digest 000 §3.6, eqs. 2.30-2.34): what each cell
 // sends down each of its 8 pipes. CPU reference and decisions: reference/erosion/thermal_jako.cpp.
 // All arithmetic is `precise` so that no multiply-add is fused: ref<float> repeats it exactly.
+// Mutants (compare/mutants/thermal.cpp): DROPPED_DIRECTION (GPU only), UNHALVED_TRANSFER (both twins).
 #include "common/grid.glsl"
 #include "erosion/thermal_jako_block.glsl"
 
@@ -14,7 +15,11 @@ void main() {
   precise float drop_total = 0.0;
   if (valid[index] != 0u) {
     precise float height = heights[index];
+#ifdef GT_MUTANT_EROSION_THERMAL_JAKO_DROPPED_DIRECTION
+    for (int k = 0; k < 7; ++k) {
+#else
     for (int k = 0; k < 8; ++k) {
+#endif
       if (!pipe_open(cell, k)) continue;
       precise float difference = height - heights[cell_index(cell + pipe_offsets[k], grid_size)];
       if (difference > talus_limit(k)) {
@@ -26,7 +31,11 @@ void main() {
   }
   precise float sent[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
   if (drop_total > 0.0) {
+#ifdef GT_MUTANT_EROSION_THERMAL_JAKO_UNHALVED_TRANSFER
+    precise float moved = rate * largest_drop * 1.0;
+#else
     precise float moved = rate * largest_drop * 0.5;
+#endif
     for (int k = 0; k < 8; ++k) sent[k] = moved * drop[k] / drop_total;
   }
   outflows[2u * index] = vec4(sent[0], sent[1], sent[2], sent[3]);

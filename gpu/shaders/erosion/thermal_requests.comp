@@ -3,6 +3,7 @@
 // per pipe: negative = material this cell offers, positive = material it asks for. The CPU
 // reference is reference/erosion/thermal.cpp; decisions (0/0, borders, masks) are listed there.
 // All arithmetic is `precise` so that no multiply-add is fused: ref<float> repeats it exactly.
+// Mutants (compare/mutants/thermal.cpp): DEMAND_TOTAL_THREE_PIPES (GPU only), DOUBLED_RATE (both twins).
 #include "common/grid.glsl"
 #include "erosion/thermal_block.glsl"
 
@@ -28,12 +29,21 @@ void main() {
   }
   precise float largest_demand = max(max(demand[0], demand[1]), max(demand[2], demand[3]));
   precise float largest_supply = min(min(supply[0], supply[1]), min(supply[2], supply[3]));
+#ifdef GT_MUTANT_EROSION_THERMAL_DEMAND_TOTAL_THREE_PIPES
+  precise float demand_total = (demand[0] + demand[1]) + demand[2];
+#else
   precise float demand_total = ((demand[0] + demand[1]) + demand[2]) + demand[3];
+#endif
   precise float supply_total = ((supply[0] + supply[1]) + supply[2]) + supply[3];
+#ifdef GT_MUTANT_EROSION_THERMAL_DOUBLED_RATE
+  precise float factor = 2.0 * request_factor;
+#else
+  precise float factor = request_factor;
+#endif
   precise float demand_share = 0.0;
   precise float supply_share = 0.0;
-  if (demand_total > 0.0) demand_share = clamp(request_factor * largest_demand / demand_total, 0.0, 1.0);
-  if (supply_total < 0.0) supply_share = clamp(request_factor * largest_supply / supply_total, 0.0, 1.0);
+  if (demand_total > 0.0) demand_share = clamp(factor * largest_demand / demand_total, 0.0, 1.0);
+  if (supply_total < 0.0) supply_share = clamp(factor * largest_supply / supply_total, 0.0, 1.0);
   precise vec4 request;
   for (int k = 0; k < 4; ++k) request[k] = supply[k] * supply_share + demand[k] * demand_share;
   requests[index] = request;

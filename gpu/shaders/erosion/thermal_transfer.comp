@@ -2,6 +2,7 @@
 // Pass B of seed 000's thermal erosion (digest 000 §4.6, Algorithm 11): across each pipe the two
 // cells hold requests of opposite sign and the smaller magnitude moves; both ends compute the
 // same minimum, so material is conserved. CPU reference: reference/erosion/thermal.cpp.
+// Mutants (compare/mutants/thermal.cpp): SWAPPED_GATHER (GPU only), UNCONSERVED_TRANSFER (both twins).
 #include "common/grid.glsl"
 #include "erosion/thermal_block.glsl"
 
@@ -17,11 +18,17 @@ void main() {
   vec4 own = requests[index];
   for (int k = 0; k < 4; ++k) {
     if (!pipe_open(cell, k)) continue;
+#ifdef GT_MUTANT_EROSION_THERMAL_SWAPPED_GATHER
+    float theirs = requests[cell_index(pipe_target(cell, k), grid_size)][k];
+#else
     float theirs = requests[cell_index(pipe_target(cell, k), grid_size)][(k + 2) % 4];
+#endif
     if (theirs < 0.0 && own[k] > 0.0) {
       height = height + min(-theirs, own[k]);
     } else if (theirs > 0.0 && own[k] < 0.0) {
+#ifndef GT_MUTANT_EROSION_THERMAL_UNCONSERVED_TRANSFER
       height = height - min(theirs, -own[k]);
+#endif
     }
   }
   if (clamp_unit != 0u) height = clamp(height, 0.0, 1.0);

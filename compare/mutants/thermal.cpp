@@ -1,0 +1,56 @@
+// Mutants of the thermal twins (erosion.thermal, erosion.thermal_jako); see
+// compare/mutants/mutants.hpp. Each runs on small cases of datasets/cases/erosion.thermal.json: the
+// seeds' 3x3 worked examples (one iteration) and 32x32 noisy cones (16 iterations, 8 checkpoints).
+//
+// one_twin: bugs in the GPU shaders only, killed by the shadow-step parity
+// (parity.shadow.max_abs.gpu_vs_float: the GPU loaded with ref<float>'s state and stepped one
+// iteration beside it). Each moves a share of a transfer, far above the a-priori bound of
+// compare/checks/error_model.hpp (a few float roundings per addition). A bug of one ulp in a
+// division would hide under that bound, which allows GLSL's 2.5-ulp division: none is registered.
+//
+// both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
+// was asked, computed on the host: spec.cells/spec.total (the worked examples), mass.relative_drift
+// (the methods conserve material) and mass.moved_first_iteration.cpu (the material the first
+// iteration moves, against a host spec of the transfer from the thesis' equations).
+#include "compare/mutants/mutants.hpp"
+
+namespace gt {
+
+std::vector<Mutant> thermal_mutants() {
+  const std::vector<std::string> hydra = {"erosion.thermal.spec.example_3x3", "erosion.thermal.mutant_probe.cone"};
+  const std::vector<std::string> hydra_probe = {"erosion.thermal.mutant_probe.cone"};
+  const std::vector<std::string> jako = {"erosion.thermal_jako.spec.example_3x3",
+                                         "erosion.thermal_jako.mutant_probe.cone"};
+  const std::vector<std::string> jako_probe = {"erosion.thermal_jako.mutant_probe.cone"};
+  return {
+      {"erosion.thermal.swapped_gather", MutantKind::one_twin,
+       "thermal_transfer.comp pairs a cell's pipe k with the neighbour's request on its pipe k instead of the "
+       "opposite pipe (k + 2) mod 4",
+       hydra_probe},
+      {"erosion.thermal.demand_total_three_pipes", MutantKind::one_twin,
+       "thermal_requests.comp sums the demand of pipes 0-2 only (pipe 3 left out of Σdemand), so C_d is too large "
+       "wherever pipe 3 demands",
+       hydra_probe},
+      {"erosion.thermal_jako.dropped_direction", MutantKind::one_twin,
+       "thermal_jako_outflow.comp loops over 7 pipes: nothing ever leaves through pipe 7 (+1, -1)", jako_probe},
+      {"erosion.thermal_jako.swapped_inflow", MutantKind::one_twin,
+       "thermal_jako_gather.comp gathers what a neighbour sends down its pipe k instead of the opposite pipe "
+       "(towards this cell)",
+       jako_probe},
+      {"erosion.thermal.talus_degree_off", MutantKind::both_twins,
+       "both twins apply the talus slope of an angle one degree steeper than asked (reference and GPU block)", hydra},
+      {"erosion.thermal.unconserved_transfer", MutantKind::both_twins,
+       "Algorithm 11 in both twins adds the transfer to the receiving cell but never subtracts it from the giver",
+       hydra},
+      {"erosion.thermal.doubled_rate", MutantKind::both_twins,
+       "both twins use f_s = strength instead of strength/2 in the shares of Algorithm 10", hydra},
+      {"erosion.thermal_jako.talus_degree_off", MutantKind::both_twins,
+       "both twins apply the talus slope of an angle one degree steeper than asked (reference and GPU block)", jako},
+      {"erosion.thermal_jako.unhalved_transfer", MutantKind::both_twins,
+       "both twins move ΔS = rate·H instead of rate·H/2 (eq. 2.32's halving forgotten)", jako},
+      {"erosion.thermal_jako.first_outflow_kept", MutantKind::both_twins,
+       "both twins' gather subtracts the outflows of pipes 1-7 only: what leaves through pipe 0 is created", jako},
+  };
+}
+
+}  // namespace gt
