@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/closest.hpp"
 #include "core/errors.hpp"
 
 namespace gt {
@@ -28,7 +29,8 @@ const ParamSpec& find_spec(const std::string& algorithm, const ParamSpecs& specs
   }
   std::vector<std::string> names;
   for (const auto& spec : specs) names.push_back(spec.name);
-  throw InputError(fmt::format("{}: unknown parameter '{}'; known: {}", algorithm, name, fmt::join(names, ", ")));
+  throw InputError(fmt::format("{}: unknown parameter '{}'{}; known: {}", algorithm, name, did_you_mean(name, names),
+                               fmt::join(names, ", ")));
 }
 
 std::string range_text(const ParamSpec& spec) {

@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/mutant.hpp"
+
 namespace gt {
 namespace {
 
@@ -156,9 +158,20 @@ struct StageSource {
   std::string description;
 };
 
+// The program's defines plus the active mutant's (core/mutant.hpp), so that a shader's
+// `#ifdef GT_MUTANT_...` switches on while that mutant runs.
+std::vector<std::string> with_mutant(const std::vector<std::string>& defines) {
+  if (active_mutant().empty()) return defines;
+  std::vector<std::string> all = defines;
+  all.push_back(mutant_define(active_mutant()));
+  return all;
+}
+
 StageSource load_stage(GLenum stage, const std::filesystem::path& root, const std::string& relative_path,
                        const std::vector<std::string>& defines) {
-  return {stage, expand_shader(root, relative_path, defines), describe(display_path(root / relative_path), defines)};
+  const auto all_defines = with_mutant(defines);
+  return {stage, expand_shader(root, relative_path, all_defines),
+          describe(display_path(root / relative_path), all_defines)};
 }
 
 // Compiles the stages and links them into a program; the shaders are deleted whether linking

@@ -55,6 +55,17 @@ TEST(GlContext, EglGivesCore45) {
   expect_core_45_context(gt::GlBackend::egl);
 }
 
+// The driver turns a GL error during a case into that case's `error`: the context must report
+// each error once, from the debug output or glGetError, and nothing when there was none.
+TEST(GlContext, ErrorsAreReportedOnceEach) {
+  const auto context = gt::GlContext::create(gt::GlBackend::egl);
+  EXPECT_TRUE(context->take_errors().empty());
+  glBindBuffer(GL_ARRAY_BUFFER, 0x7fff1234u);  // a name glGenBuffers never returned: GL_INVALID_OPERATION
+  const auto errors = context->take_errors();
+  ASSERT_FALSE(errors.empty());
+  EXPECT_TRUE(context->take_errors().empty());
+}
+
 TEST(GlContext, EglNamesItsPlatform) {
   const auto context = gt::GlContext::create(gt::GlBackend::egl);
   EXPECT_THAT(context->info().platform, AnyOf(Eq("egl-device"), Eq("egl-surfaceless")));

@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <glad/gl.h>
@@ -56,11 +57,32 @@ std::string_view debug_severity_name(GLenum severity) {
   }
 }
 
-// The GL debug-output log: one line on stderr per message.
+// Error messages of the debug output since the last GlContext::take_errors (one context at a time).
+std::vector<std::string>& recorded_errors() {
+  static std::vector<std::string> errors;
+  return errors;
+}
+
+// The GL debug-output log: one line on stderr per message; errors are also kept for take_errors.
 void GLAD_API_PTR log_gl_debug_message(GLenum /*source*/, GLenum type, GLuint id, GLenum severity,
                                        GLsizei length, const GLchar* message, const void* /*user*/) {
-  fmt::print(stderr, "[gl] {} ({} severity, id {}): {}\n", debug_type_name(type),
-             debug_severity_name(severity), id, std::string_view(message, static_cast<std::size_t>(length)));
+  const std::string_view text(message, static_cast<std::size_t>(length));
+  fmt::print(stderr, "[gl] {} ({} severity, id {}): {}\n", debug_type_name(type), debug_severity_name(severity), id,
+             text);
+  if (type == GL_DEBUG_TYPE_ERROR) recorded_errors().emplace_back(text);
+}
+
+std::string_view gl_error_name(GLenum error) {
+  switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
+    default: return "unknown GL error";
+  }
 }
 
 // Notifications are dropped; so are shader-compiler messages, which ComputeProgram reports from
@@ -166,6 +188,18 @@ GlContext::GlContext(std::string platform) {
 GlContext::~GlContext() { live_context.store(nullptr); }
 
 const GlInfo& GlContext::info() const { return info_; }
+
+std::vector<std::string> GlContext::take_errors() {
+  std::vector<std::string> errors = std::move(recorded_errors());
+  recorded_errors().clear();
+  // glGetError keeps one flag per kind; a bounded loop, since a lost context may keep answering.
+  for (int flag = 0; flag < 16; ++flag) {
+    const GLenum error = glGetError();
+    if (error == GL_NO_ERROR) break;
+    errors.push_back(fmt::format("glGetError: {} (0x{:04x})", gl_error_name(error), error));
+  }
+  return errors;
+}
 
 void GlContext::load_and_check_gl(GlProcLoader loader) {
   const int version = gladLoadGL(loader);

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace gt {
 
@@ -39,6 +40,11 @@ class GlContext {
   virtual ~GlContext();
 
   const GlInfo& info() const;
+
+  // The GL errors since the last call: error messages of the debug output (KHR_debug, core since
+  // 4.3) and the flags glGetError still holds, each as one line. The driver calls it after every
+  // case: any error makes that case `error`, whatever its checks say.
+  std::vector<std::string> take_errors();
 
  protected:
   using GlProc = void (*)();

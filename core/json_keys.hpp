@@ -1,0 +1,22 @@
+// Strict JSON objects (issue 11): a key nobody reads is a typo that silently drops a check or a
+// setting, so every object a user writes (case files, inputs, expectations) is checked against the
+// keys its reader knows, and an unknown one is bad input naming the closest known key.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace gt {
+
+// Throws InputError "<where>: unknown key 'X' (did you mean 'Y'?); known: ..." for the first key of
+// `object` not in `known`. `object` must be a JSON object (else InputError too).
+void require_known_keys(const nlohmann::json& object, const std::vector<std::string>& known, const std::string& where);
+
+// The same against a shape: an object whose keys are the known ones; a key's value in the shape
+// says what is checked below it: null (anything), an object (a nested strict object), or an
+// array holding one object (every element of the value is such an object).
+void require_shape(const nlohmann::json& value, const nlohmann::json& shape, const std::string& where);
+
+}  // namespace gt

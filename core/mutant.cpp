@@ -1,0 +1,49 @@
+// The process-wide mutant switch of core/mutant.hpp.
+#include "core/mutant.hpp"
+
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+std::string& active_name() {
+  static std::string name;
+  return name;
+}
+
+bool is_dotted_identifier(const std::string& name) {
+  if (name.empty() || name.front() == '.' || name.back() == '.') return false;
+  char previous = '.';
+  for (const char c : name) {
+    const bool allowed = std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) ||
+                         c == '_' || c == '.';
+    if (!allowed || (c == '.' && previous == '.')) return false;
+    previous = c;
+  }
+  return true;
+}
+
+}  // namespace
+
+const std::string& active_mutant() { return active_name(); }
+
+bool mutant_active(std::string_view name) { return !active_name().empty() && active_name() == name; }
+
+void set_active_mutant(const std::string& name) {
+  if (!name.empty() && !is_dotted_identifier(name)) {
+    throw InputError(fmt::format("mutant '{}': a mutant name is a dotted lower-case identifier", name));
+  }
+  active_name() = name;
+}
+
+std::string mutant_define(std::string_view name) {
+  std::string define = "GT_MUTANT_";
+  for (const char c : name) define += c == '.' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return define;
+}
+
+}  // namespace gt
