@@ -51,6 +51,9 @@ struct Algorithm {
   std::function<std::vector<BenchmarkRow>(const BenchmarkOptions& options, bool gpu_available,
                                           const Environment& environment)>
       benchmark = {};
+  // The keys a case's "expect" may hold (core/json_keys.hpp require_shape): what this algorithm's
+  // checks read. Any other key is bad input, so a typo cannot silently drop a check.
+  nlohmann::json expect_shape = nlohmann::json::object();
 };
 
 const std::vector<Algorithm>& algorithms();

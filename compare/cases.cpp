@@ -9,11 +9,12 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt {
 namespace {
 
-const std::set<std::string> known_case_keys = {"name", "algorithm", "params", "input", "crop", "expect", "description"};
+const std::vector<std::string> known_case_keys = {"name", "algorithm", "params", "input", "crop", "expect", "description"};
 
 std::vector<std::filesystem::path> case_files(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
@@ -30,9 +31,9 @@ std::vector<std::filesystem::path> case_files(const std::filesystem::path& folde
 
 CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) {
   if (!entry.is_object()) throw InputError(fmt::format("{}: a case must be a JSON object", origin));
-  for (const auto& [key, value] : entry.items()) {
-    if (!known_case_keys.contains(key)) throw InputError(fmt::format("{}: unknown case field '{}'", origin, key));
-  }
+  const std::string where =
+      entry.contains("name") && entry["name"].is_string() ? fmt::format("{}: case {}", origin, entry["name"].get<std::string>()) : origin;
+  require_known_keys(entry, known_case_keys, where);
   if (!entry.contains("name") || !entry["name"].is_string() || !entry.contains("algorithm") ||
       !entry["algorithm"].is_string() || (entry.contains("input") && !entry["input"].is_object())) {
     throw InputError(fmt::format("{}: a case needs string 'name', string 'algorithm' and, when it has one, "
@@ -50,10 +51,22 @@ CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) 
   return spec;
 }
 
-std::vector<CaseSpec> load_cases(const std::filesystem::path& folder) {
+std::vector<CaseSpec> load_cases(const std::filesystem::path& folder) { return load_suite(folder, {}); }
+
+std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std::vector<std::filesystem::path>& extra) {
   std::vector<CaseSpec> cases;
   std::set<std::string> names;
-  for (const auto& file : case_files(folder)) {
+  auto files = case_files(folder);
+  for (const auto& path : extra) {
+    if (std::filesystem::is_directory(path)) {
+      for (const auto& file : case_files(path)) files.push_back(file);
+    } else if (std::filesystem::is_regular_file(path)) {
+      files.push_back(path);
+    } else {
+      throw InputError(fmt::format("--cases {}: no such case file or folder", path.string()));
+    }
+  }
+  for (const auto& file : files) {
     std::ifstream stream(file);
     nlohmann::json document;
     try {

@@ -37,6 +37,10 @@ struct CaseSpec {
 // for malformed files and for duplicate names.
 std::vector<CaseSpec> load_cases(const std::filesystem::path& folder);
 
+// The bundled cases of `folder` plus those of each extra path (a case file or a folder of them,
+// `groundtruth run --cases`); a name used twice is refused.
+std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std::vector<std::filesystem::path>& extra);
+
 CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin);
 
 // The cases whose names match any of the shell-style patterns (fnmatch), in load order.

@@ -11,10 +11,14 @@
 #include "compare/algorithm.hpp"
 #include "compare/benchmark.hpp"
 #include "compare/cases.hpp"
+#include "compare/expectations.hpp"
 #include "compare/inputs.hpp"
+#include "compare/mutants/mutants.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/report/writers.hpp"
 #include "core/errors.hpp"
+#include "core/json_keys.hpp"
+#include "core/mutant.hpp"
 
 namespace gt {
 namespace {
@@ -71,7 +75,9 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
 
 std::vector<CaseSpec> selected_specs(const DriverOptions& options) {
   std::vector<CaseSpec> specs;
-  if (!options.patterns.empty()) specs = select_cases(load_cases(options.dataset_dir / "cases"), options.patterns);
+  if (!options.patterns.empty()) {
+    specs = select_cases(load_suite(options.dataset_dir / "cases", options.extra_cases), options.patterns);
+  }
   if (options.ad_hoc) specs.push_back(ad_hoc_spec(*options.ad_hoc));
   if (specs.empty()) throw InputError("nothing to run: name case patterns or an --algorithm with an --input");
   return specs;
@@ -84,6 +90,7 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
     job.spec = spec;
     const Algorithm& algorithm = find_algorithm(spec.algorithm);
     job.resolved = resolve_params(spec.name, *algorithm.params, spec.params);
+    if (!spec.expect.is_null()) require_shape(spec.expect, algorithm.expect_shape, fmt::format("case {}: expect (what {}'s checks read: Algorithm::expect_shape)", spec.name, spec.algorithm));
     try {
       job.input = load_input(spec.input, spec.crop, dataset_dir);
       job.prepared = algorithm.prepare(job.resolved, job.input);
@@ -96,22 +103,6 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
     jobs.push_back(std::move(job));
   }
   return jobs;
-}
-
-// datasets/expectations.txt: "<case name> <reason>" per line, '#' starts a comment.
-std::map<std::string, std::string> load_expectations(const std::filesystem::path& file) {
-  std::map<std::string, std::string> expectations;
-  std::ifstream stream(file);
-  std::string line;
-  while (std::getline(stream, line)) {
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos || line[first] == '#') continue;
-    const auto space = line.find_first_of(" \t", first);
-    const auto name = line.substr(first, space - first);
-    const auto reason_start = space == std::string::npos ? std::string::npos : line.find_first_not_of(" \t", space);
-    expectations[name] = reason_start == std::string::npos ? "expected to fail" : line.substr(reason_start);
-  }
-  return expectations;
 }
 
 std::string cpu_model() {
@@ -129,10 +120,18 @@ Environment base_environment() {
   environment.compiler = fmt::format("GCC {}", __VERSION__);
   environment.build_type = GT_BUILD_TYPE;
   environment.git = GT_GIT_DESCRIBE;
+  environment.mutant = active_mutant();
   return environment;
 }
 
-CaseResult run_job(const Job& job, const RunOptions& options, const std::map<std::string, std::string>& expectations) {
+// A case that skipped a check because the GPU was unavailable, when the user required the GPU.
+bool skipped_for_want_of_gpu(const CaseResult& result, const RunOptions& options) {
+  return std::any_of(result.checks.begin(), result.checks.end(), [&](const Check& check) {
+    return check.status == Outcome::skip && check.detail == options.gpu_unavailable_reason;
+  });
+}
+
+CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context, bool require_gpu) {
   CaseResult result;
   result.name = job.spec.name;
   result.algorithm = job.spec.algorithm;
@@ -152,8 +151,15 @@ CaseResult run_job(const Job& job, const RunOptions& options, const std::map<std
   } catch (const std::exception& error) {
     result.error = error.what();
   }
-  if (const auto expected = expectations.find(result.name); expected != expectations.end()) {
-    result.expected_failure = expected->second;
+  if (context != nullptr) {
+    const auto errors = context->take_errors();
+    if (!errors.empty() && result.error.empty()) {
+      result.error = fmt::format("GL error during the case: {}{}", errors.front(),
+                                 errors.size() > 1 ? fmt::format(" (and {} more)", errors.size() - 1) : "");
+    }
+  }
+  if (require_gpu && result.error.empty() && skipped_for_want_of_gpu(result, options)) {
+    result.error = fmt::format("--require-gpu: the GPU half did not run ({})", options.gpu_unavailable_reason);
   }
   result.status = case_outcome(result);
   return result;
@@ -163,12 +169,27 @@ void print_summary(const Report& report, const std::filesystem::path& out) {
   std::map<Outcome, int> counts;
   for (const auto& result : report.cases) {
     ++counts[result.status];
-    fmt::print("{:5} {}{}\n", outcome_name(result.status), result.name,
+    fmt::print("{:12} {}{}\n", outcome_name(result.status), result.name,
                result.expected_failure.empty() ? "" : " (expected failure)");
+    if (!result.error.empty()) fmt::print("             {}\n", result.error);
   }
-  fmt::print("groundtruth: {} cases: {} pass, {} warn, {} fail, {} error, {} skip; report in {}\n", report.cases.size(),
-             counts[Outcome::pass], counts[Outcome::warn], counts[Outcome::fail], counts[Outcome::error],
-             counts[Outcome::skip], (out / "index.html").string());
+  for (const auto& problem : report.expectation_problems) fmt::print("expectation  {}\n", problem);
+  fmt::print("groundtruth: {} cases: {} pass, {} warn, {} inconclusive, {} skip, {} fail, {} error; report in {}\n",
+             report.cases.size(), counts[Outcome::pass], counts[Outcome::warn], counts[Outcome::inconclusive],
+             counts[Outcome::skip], counts[Outcome::fail], counts[Outcome::error], (out / "index.html").string());
+}
+
+void print_mutation(const MutationReport& mutation) {
+  for (const auto& baseline : mutation.baselines) {
+    fmt::print("baseline     {} ({} cases): {}\n", baseline.family, baseline.cases.size(),
+               baseline.clean ? "clean" : "NOT CLEAN: " + baseline.problems.front());
+  }
+  for (const auto& mutant : mutation.mutants) {
+    fmt::print("{:12} {} [{}]{}\n", mutant.status, mutant.name, mutant.kind,
+               mutant.killed_by.empty() ? (mutant.error.empty() ? "" : ": " + mutant.error) : ": " + mutant.killed_by.front());
+  }
+  fmt::print("groundtruth: mutation score {}/{} ({:.0f} %){}\n", mutation.killed(), mutation.mutants.size(),
+             100.0 * mutation.score(), mutation.passed() ? "" : "; not every mutant was killed by its kind of check, or a baseline failed");
 }
 
 }  // namespace
@@ -215,9 +236,11 @@ void write_folder_atomically(const std::filesystem::path& out,
 }
 
 int run_driver(const DriverOptions& options) {
+  if (!options.mutant.empty()) set_active_mutant(find_mutant(options.mutant).name);
   const auto specs = options.patterns.empty() && !options.ad_hoc ? std::vector<CaseSpec>{} : selected_specs(options);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
-  const auto expectations = load_expectations(options.dataset_dir / "expectations.txt");
+  const auto expectations =
+      load_expectations(options.dataset_dir / "expectations.txt", load_suite(options.dataset_dir / "cases", options.extra_cases));
   check_output_folder(options.out);
 
   Report report;
@@ -234,7 +257,9 @@ int run_driver(const DriverOptions& options) {
       run_options.gpu_available = true;
     } catch (const GpuUnavailable& error) {
       run_options.gpu_unavailable_reason = fmt::format("no GL context: {}", error.what());
-      fmt::print(stderr, "groundtruth: {}; GPU checks are skipped, the CPU side still runs\n", error.what());
+      fmt::print(stderr, "groundtruth: {}; {}\n", error.what(),
+                 options.require_gpu ? "--require-gpu: every case with a GPU half ends as error"
+                                     : "GPU checks are skipped (never counted as passed), the CPU side still runs");
     }
   }
   report.environment.gl_renderer = context ? context->info().renderer : "none: " + run_options.gpu_unavailable_reason;
@@ -247,8 +272,9 @@ int run_driver(const DriverOptions& options) {
     run_options.progress = &progress;
     for (std::size_t index = 0; index < jobs.size(); ++index) {
       progress.start_case(static_cast<int>(index + 1), jobs[index].spec.name);
-      report.cases.push_back(run_job(jobs[index], run_options, expectations));
+      report.cases.push_back(run_job(jobs[index], run_options, context.get(), options.require_gpu));
     }
+    report.expectation_problems = apply_expectations(expectations, report);
     progress.finish();
     if (options.benchmark) {
       report.benchmarks = run_benchmarks(*options.benchmark, run_options.gpu_available, report.environment);
@@ -260,10 +286,33 @@ int run_driver(const DriverOptions& options) {
         fmt::print(stderr, "groundtruth: plot unavailable: {}\n", reason);
       }
     }
+    if (options.mutation) {
+      report.mutation = run_mutation(*options.mutation, folder / "mutants", options.dataset_dir);
+      std::ofstream(folder / "mutants" / "mutants.json") << mutation_to_json(*report.mutation).dump(2) << '\n';
+    }
     write_report_files(report, folder);
   });
   print_summary(report, options.out);
-  return run_failed(report) ? 1 : 0;
+  if (report.mutation) print_mutation(*report.mutation);
+  return run_failed(report) || (report.mutation && !report.mutation->passed()) ? 1 : 0;
+}
+
+int run_mutants_command(const MutationOptions& options, const std::filesystem::path& out, bool as_json) {
+  select_mutants(options.patterns);  // bad patterns are refused before anything is written
+  check_output_folder(out);
+  MutationReport report;
+  write_folder_atomically(out, [&](const std::filesystem::path& folder) {
+    report = run_mutation(options, folder, GT_DATASET_DIR);
+    std::ofstream(folder / "mutants.json") << mutation_to_json(report).dump(2) << '\n';
+    std::ofstream(folder / "report.json") << nlohmann::json{{"schema", 1}, {"mutation", mutation_to_json(report)}}.dump(2)
+                                          << '\n';
+  });
+  if (as_json) {
+    fmt::print("{}\n", mutation_to_json(report).dump(2));
+  } else {
+    print_mutation(report);
+  }
+  return report.passed() ? 0 : 1;
 }
 
 }  // namespace gt

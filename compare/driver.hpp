@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "compare/benchmark.hpp"
+#include "compare/mutation.hpp"
 #include "compare/result.hpp"
 #include "gpu/context/context.hpp"
 
@@ -32,10 +33,19 @@ struct DriverOptions {
   GlBackend gl = GlBackend::egl;
   std::filesystem::path out;
   std::filesystem::path dataset_dir;
+  std::vector<std::filesystem::path> extra_cases;  // --cases: more case files or folders
   int cpu_reps = 3;
   int gpu_reps = 5;
   std::optional<BenchmarkOptions> benchmark;
+  std::string mutant;                    // a registered mutant to activate (compare/mutants/), or empty
+  bool require_gpu = false;              // a missing GL context makes every GPU-using case `error`
+  std::optional<MutationOptions> mutation;  // also run the mutants (report: into OUT/mutants/)
 };
+
+// `groundtruth mutants`: runs the mutation into `out` (atomically, like a report), writes
+// mutants.json there and prints the table (or the JSON); returns 0 when every mutant was killed
+// and every baseline was clean, else 1.
+int run_mutants_command(const MutationOptions& options, const std::filesystem::path& out, bool as_json);
 
 // Runs everything and writes the report; returns the process exit status (0 nothing unexpected
 // failed, 1 something did). Throws InputError for bad usage or input before writing anything.

@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
+#include "core/json_keys.hpp"
 #include "core/io/mesh_io.hpp"
 #include "core/io/volume_io.hpp"
 #include "core/rng.hpp"
@@ -102,8 +104,32 @@ Heightmap example_3x3() {
   return field;
 }
 
+// The keys each generator reads (compare/inputs.hpp); any other is a typo.
+const std::vector<std::string>& generator_keys(const std::string& name) {
+  static const std::vector<std::string> grid = {"generator", "width", "height", "cell_size", "noise", "seed"};
+  static const std::map<std::string, std::vector<std::string>> keys = [] {
+    const auto with = [](std::vector<std::string> extra) {
+      extra.insert(extra.begin(), grid.begin(), grid.end());
+      return extra;
+    };
+    return std::map<std::string, std::vector<std::string>>{
+        {"cone", with({"peak", "radius"})},
+        {"step", with({"peak"})},
+        {"slope", with({"base", "gradient"})},
+        {"flat", grid},
+        {"terrain", {"generator", "width", "height", "cell_size", "algorithm", "params"}},
+        {"example_3x3", {"generator"}}};
+  }();
+  const auto found = keys.find(name);
+  if (found == keys.end()) {
+    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, slope, flat, terrain, example_3x3", name));
+  }
+  return found->second;
+}
+
 LoadedInput generated_input(const nlohmann::json& input) {
   const auto name = input["generator"].get<std::string>();
+  require_known_keys(input, generator_keys(name), fmt::format("input generator {}", name));
   LoadedInput loaded;
   if (name == "cone") {
     loaded.heights = cone(input);
@@ -115,10 +141,8 @@ LoadedInput generated_input(const nlohmann::json& input) {
     loaded.heights = noise_terrain(input);
   } else if (name == "flat") {
     loaded.heights = blank_field(input);
-  } else if (name == "example_3x3") {
+  } else {  // example_3x3: generator_keys refused every other name
     loaded.heights = example_3x3();
-  } else {
-    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, slope, flat, terrain, example_3x3", name));
   }
   if (name != "example_3x3" && name != "terrain") add_noise(loaded.heights, input);
   loaded.description = fmt::format("generated {} {}x{}, cell {} {}", name, loaded.heights.width,
@@ -127,6 +151,7 @@ LoadedInput generated_input(const nlohmann::json& input) {
 }
 
 LoadedInput file_input(const nlohmann::json& input, const std::filesystem::path& dataset_dir) {
+  require_known_keys(input, {"file", "cell_size", "vertical_scale"}, "input file");
   std::filesystem::path path = input["file"].get<std::string>();
   if (path.is_relative()) path = dataset_dir / path;
   HeightmapReadOptions options;
@@ -174,6 +199,7 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
     return loaded;
   }
   if (input.contains("mesh") && input["mesh"].is_string()) {
+    require_known_keys(input, {"mesh"}, "input mesh");
     std::filesystem::path path = input["mesh"].get<std::string>();
     if (path.is_relative()) path = dataset_dir / path;
     auto file = read_mesh(path);
@@ -184,6 +210,7 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
     return loaded;
   }
   if (input.contains("volume") && input["volume"].is_string()) {
+    require_known_keys(input, {"volume"}, "input volume");
     std::filesystem::path path = input["volume"].get<std::string>();
     if (path.is_relative()) path = dataset_dir / path;
     loaded.volume = read_volume(path);

@@ -11,13 +11,20 @@
 
 namespace gt {
 
-// dEQP-style outcome vocabulary of DESIGN.md.
-enum class Outcome { pass, fail, warn, skip, error };
+// dEQP-style outcome vocabulary of DESIGN.md:
+//   pass          the value is within the strict bound (or the check is informative);
+//   warn          beyond the strict bound, within a finite loose one justified beside the check;
+//   inconclusive  the error model's bound exceeds the share of the field's scale at which the
+//                 comparison could still tell a bug from rounding: nothing is known either way;
+//   fail          beyond every bound;
+//   skip          not run here, with the reason (a GPU half without a GL context): never a pass;
+//   error         could not run (an exception, a GL error, --require-gpu without a context).
+enum class Outcome { pass, fail, warn, inconclusive, skip, error };
 
 const char* outcome_name(Outcome outcome);
 
-// The worse of two outcomes: error > fail > warn > pass > skip (a case whose checks all skipped
-// is skip; any failure makes it fail).
+// The worse of two outcomes: error > fail > skip > inconclusive > warn > pass. A case with any
+// skipped check is at best skip (its GPU half did not run: not a pass); any failure makes it fail.
 Outcome worse(Outcome a, Outcome b);
 
 struct Check {
@@ -27,6 +34,8 @@ struct Check {
   std::optional<double> loose_threshold;  // value <= loose_threshold is `warn` rather than `fail`
   Outcome status = Outcome::pass;
   std::string detail;                // error model or reason (why a skip, what failed)
+  std::optional<Outcome> expected;   // the outcome datasets/expectations.txt names for this check
+  std::string expectation;           // that entry's reason
 };
 
 struct Timings {
@@ -50,7 +59,7 @@ struct CaseResult {
   int width = 0;
   int height = 0;
   Outcome status = Outcome::pass;
-  std::string expected_failure;  // reason from datasets/expectations.txt, empty when not expected
+  std::string expected_failure;  // when every failing check is listed in datasets/expectations.txt: their reasons
   nlohmann::json params = nlohmann::json::object();
   std::vector<Check> checks;
   Timings timings;
@@ -66,6 +75,7 @@ struct Environment {
   std::string compiler;
   std::string build_type;
   std::string git;
+  std::string mutant;         // the deliberate bug this run was made with (compare/mutants/), or empty
 };
 
 struct BenchmarkRow {
@@ -83,18 +93,53 @@ struct BenchmarkRow {
   std::string detail;         // what a timed row measured beyond its numbers (GPU passes per step, a published source)
 };
 
+// `groundtruth mutants` (compare/mutation.hpp): each registered mutant run on its cases in a worker.
+struct MutantOutcome {
+  std::string name;         // e.g. erosion.pipe.half_rain
+  std::string family;       // erosion, noise, cave, render
+  std::string kind;         // "one-twin" or "both-twins"
+  std::string description;
+  std::vector<std::string> cases;     // the case names it ran
+  std::string status;                 // killed, survived, error (the run could not tell), timeout
+  std::vector<std::string> killed_by; // "case: check = value (bound)", checks of the kind meant for it
+  std::vector<std::string> other_failures;  // failing checks of the other kind: they do not count
+  std::string error;                  // why the run could not tell
+  double seconds = 0.0;
+  std::string run_folder;             // its report, relative to the mutation report's folder
+};
+
+struct MutationBaseline {
+  std::string family;
+  std::vector<std::string> cases;
+  bool clean = false;                 // every case ran and nothing failed unmutated
+  std::vector<std::string> problems;  // what failed unmutated
+  double seconds = 0.0;
+  std::string run_folder;
+};
+
+struct MutationReport {
+  std::vector<MutationBaseline> baselines;
+  std::vector<MutantOutcome> mutants;
+  int killed() const;
+  double score() const;               // killed / registered, 0..1 (1 when none ran)
+  bool passed() const;                // every mutant killed and every baseline clean
+};
+
 struct Report {
   Environment environment;
   std::vector<CaseResult> cases;
   std::vector<BenchmarkRow> benchmarks;
   std::vector<Artifact> plots;  // report-level plots (timings over sizes)
+  // Broken rules of datasets/expectations.txt (compare/expectations.hpp): each fails the run.
+  std::vector<std::string> expectation_problems;
+  std::optional<MutationReport> mutation;  // when the run included the mutants (groundtruth report)
 };
 
 // Outcome of a whole case from its checks (and the expectation list).
 Outcome case_outcome(const CaseResult& result);
 
-// Whether the run as a whole failed: some case failed or errored and was not expected to, or an
-// expected failure passed (the expectation list is stale).
+// Whether the run as a whole failed: a case errored, a check failed that the expectation list
+// does not name with that outcome, or a rule of the expectation list was broken.
 bool run_failed(const Report& report);
 
 }  // namespace gt

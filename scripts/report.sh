@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-./build/release/groundtruth report "$@"
+./build/release/groundtruth report --require-gpu "$@"

@@ -57,7 +57,7 @@ TEST(Cases, MalformedCaseFilesAreRefused) {
   const auto folder = std::filesystem::temp_directory_path() / "groundtruth_params_test_cases";
   std::filesystem::create_directories(folder);
   std::ofstream(folder / "bad.json") << R"([{"name": "a", "algorithm": "erosion.thermal", "input": {}, "colour": 1}])";
-  EXPECT_THAT(refusal([&] { gt::load_cases(folder); }), HasSubstr("unknown case field 'colour'"));
+  EXPECT_THAT(refusal([&] { gt::load_cases(folder); }), HasSubstr("unknown key 'colour'"));
   std::ofstream(folder / "bad.json") << R"([{"name": "a", "algorithm": "x", "input": {}}, {"name": "a", "algorithm": "x", "input": {}}])";
   EXPECT_THAT(refusal([&] { gt::load_cases(folder); }), HasSubstr("used twice"));
   std::ofstream(folder / "bad.json") << "[{";

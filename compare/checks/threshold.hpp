@@ -27,6 +27,14 @@ inline Check informative_check(std::string name, double value, std::string detai
   return Check{std::move(name), value, std::nullopt, std::nullopt, Outcome::pass, std::move(detail)};
 }
 
+// A check that does not apply to this input (the volume of an open mesh): recorded with the reason
+// and no value, and not a skip, which says that something that should have run did not.
+inline Check not_applicable_check(std::string name, std::string reason) {
+  return Check{std::move(name), std::nan(""), std::nullopt, std::nullopt, Outcome::pass, "not applicable: " + reason};
+}
+
+// A check that should have run and did not (the GPU half without a GL context): the case is then
+// `skip` at best, never `pass`.
 inline Check skipped_check(std::string name, std::string reason) {
   Check check;
   check.name = std::move(name);

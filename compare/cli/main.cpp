@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compare/algorithm.hpp"
 #include "compare/cases.hpp"
@@ -24,6 +25,7 @@
 #include "compare/cli/diff_image.hpp"
 #include "compare/cli/render.hpp"
 #include "compare/driver.hpp"
+#include "compare/mutants/mutants.hpp"
 #include "core/errors.hpp"
 
 namespace {
@@ -38,6 +40,7 @@ struct Shared {
   std::string out;
   int cpu_reps = 3;
   int gpu_reps = 5;
+  bool require_gpu = false;
 };
 
 void add_shared_options(CLI::App& command, Shared& shared, const std::string& default_out) {
@@ -47,6 +50,8 @@ void add_shared_options(CLI::App& command, Shared& shared, const std::string& de
       ->capture_default_str();
   command.add_option("--out", shared.out, "report folder (written atomically; an existing report is replaced)")
       ->capture_default_str();
+  command.add_flag("--require-gpu", shared.require_gpu,
+                   "a missing GL context or a skipped GPU half makes the case `error` (exit 1) instead of `skip`");
   command.add_option("--cpu-reps", shared.cpu_reps, "timed repetitions of the CPU reference")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
@@ -63,6 +68,10 @@ gt::DriverOptions driver_options(const Shared& shared) {
   options.dataset_dir = GT_DATASET_DIR;
   options.cpu_reps = shared.cpu_reps;
   options.gpu_reps = shared.gpu_reps;
+  options.require_gpu = shared.require_gpu;
+  if (options.require_gpu && options.backends == Backends::cpu) {
+    throw gt::InputError("--require-gpu and --backend cpu contradict each other: choose one");
+  }
   return options;
 }
 
@@ -114,6 +123,22 @@ void print_list(bool as_json) {
   for (const auto& spec : listing["cases"]) fmt::print("  {}\n", spec["name"].get<std::string>());
 }
 
+void print_mutant_list(const std::vector<gt::Mutant>& selected, bool as_json) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& mutant : selected) {
+    out.push_back({{"name", mutant.name}, {"family", gt::mutant_family(mutant)}, {"kind", gt::mutant_kind_name(mutant.kind)},
+                   {"description", mutant.description}, {"cases", mutant.cases}});
+  }
+  if (as_json) {
+    fmt::print("{}\n", out.dump(2));
+    return;
+  }
+  for (const auto& mutant : selected) {
+    fmt::print("{:44} {:10} {}\n{:44} cases: {}\n", mutant.name, gt::mutant_kind_name(mutant.kind), mutant.description,
+               "", fmt::format("{}", fmt::join(mutant.cases, " ")));
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -141,12 +166,19 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"cpu", "gpu", "both"}))
       ->capture_default_str();
   add_shared_options(*run, run_shared, "groundtruth-report");
+  std::vector<std::string> extra_cases;
+  run->add_option("--cases", extra_cases, "more case files (JSON arrays of cases) or folders of them, beside the bundled ones");
+  std::string mutant;
+  run->add_option("--mutant", mutant,
+                  "run with a registered deliberate bug switched on (see `groundtruth mutants --list`)");
 
   Shared report_shared;
   bool skip_benchmark = false;
   auto* report = app.add_subcommand("report", "the main job: every bundled case and the benchmarks");
   add_shared_options(*report, report_shared, std::string(GT_SOURCE_DIR) + "/reports/latest");
   report->add_flag("--no-benchmark", skip_benchmark, "leave out the performance table");
+  bool skip_mutants = false;
+  report->add_flag("--no-mutants", skip_mutants, "leave out the mutation score (every registered mutant run)");
 
   Shared bench_shared;
   gt::BenchmarkOptions bench_options;
@@ -160,6 +192,23 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   bench->add_option("--reps", bench_options.reps, "timed runs per size")->check(CLI::Range(1, 100))->capture_default_str();
+
+  gt::MutationOptions mutation_options;
+  std::string mutants_out = "groundtruth-mutants";
+  bool mutants_as_json = false, list_mutants = false;
+  double mutant_timeout = 600.0;
+  auto* mutants = app.add_subcommand("mutants", "run each registered mutant (a deliberate bug) and show which checks kill it");
+  mutants->add_option("patterns", mutation_options.patterns, "mutant-name patterns, e.g. 'erosion.*' (all when none)");
+  mutants->add_flag("--list", list_mutants, "list the registered mutants and exit");
+  mutants->add_flag("--json", mutants_as_json, "machine-readable");
+  mutants->add_option("--out", mutants_out, "folder for the runs' reports and mutants.json")->capture_default_str();
+  mutants->add_option("--gl", mutation_options.gl, "GL context: egl or osmesa")
+      ->check(CLI::IsMember({"egl", "osmesa"}))
+      ->capture_default_str();
+  mutants->add_flag("--require-gpu", mutation_options.require_gpu, "a run without a GL context is an error");
+  mutants->add_option("--timeout", mutant_timeout, "seconds a mutant's run may take")
+      ->check(CLI::Range(1.0, 86400.0))
+      ->capture_default_str();
 
   std::string mesh_file;
   bool mesh_as_json = false;
@@ -229,6 +278,14 @@ int main(int argc, char** argv) {
     if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);
     if (diff_image->parsed()) return gt::diff_image_command(diff_options);
     if (render->parsed()) return gt::render_command(render_options);
+    if (mutants->parsed()) {
+      if (list_mutants) {
+        print_mutant_list(gt::select_mutants(mutation_options.patterns), mutants_as_json);
+        return 0;
+      }
+      mutation_options.timeout_seconds = mutant_timeout;
+      return gt::run_mutants_command(mutation_options, mutants_out, mutants_as_json);
+    }
     if (list->parsed()) {
       print_list(list_as_json);
       return 0;
@@ -236,6 +293,8 @@ int main(int argc, char** argv) {
     if (run->parsed()) {
       auto options = driver_options(run_shared);
       options.patterns = patterns;
+      options.mutant = mutant;
+      options.extra_cases.assign(extra_cases.begin(), extra_cases.end());
       if (ad_hoc.algorithm.empty() && !ad_hoc.input.empty()) {
         throw gt::InputError("--input belongs to an ad-hoc run: name its --algorithm too");
       }
@@ -253,6 +312,9 @@ int main(int argc, char** argv) {
       auto options = driver_options(report_shared);
       options.patterns = {"*"};
       if (!skip_benchmark) options.benchmark = gt::BenchmarkOptions{};
+      if (!skip_mutants) {
+        options.mutation = gt::MutationOptions{.gl = report_shared.gl, .require_gpu = report_shared.require_gpu};
+      }
       return gt::run_driver(options);
     }
     auto options = driver_options(bench_shared);

@@ -38,14 +38,15 @@ int OutcomeCounts::total() const {
   return sum;
 }
 
-std::array<LabelledField, 7> environment_fields(const Environment& environment) {
+std::array<LabelledField, 8> environment_fields(const Environment& environment) {
   return {{{"GL renderer", &environment.gl_renderer},
            {"GL version", &environment.gl_version},
            {"GL platform", &environment.gl_platform},
            {"CPU", &environment.cpu},
            {"compiler", &environment.compiler},
            {"build type", &environment.build_type},
-           {"git", &environment.git}}};
+           {"git", &environment.git},
+           {"mutant", &environment.mutant}}};
 }
 
 OutcomeCounts count_case_outcomes(const Report& report) {

@@ -23,11 +23,11 @@ struct LabelledField {
   const char* label;
   const std::string* value;
 };
-std::array<LabelledField, 7> environment_fields(const Environment& environment);
+std::array<LabelledField, 8> environment_fields(const Environment& environment);
 
 // Every outcome in the order the writers list them.
-inline constexpr std::array<Outcome, 5> all_outcomes = {Outcome::pass, Outcome::warn, Outcome::fail,
-                                                        Outcome::skip, Outcome::error};
+inline constexpr std::array<Outcome, 6> all_outcomes = {Outcome::pass, Outcome::warn, Outcome::inconclusive,
+                                                        Outcome::skip, Outcome::fail, Outcome::error};
 
 struct OutcomeCounts {
   std::array<int, all_outcomes.size()> by_outcome{};  // indexed like all_outcomes

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compare/report/report_common.hpp"
 #include "compare/report/writers.hpp"
@@ -113,9 +114,9 @@ void append_summary(std::string& out, const Report& report) {
     out += fmt::format("<span class=\"badge {}{}\">{} {}</span>", outcome_name(outcome),
                        counts[outcome] == 0 ? " zero" : "", counts[outcome], outcome_name(outcome));
   }
+  const bool failed = run_failed(report) || (report.mutation && !report.mutation->passed());
   out += fmt::format("</p>\n<p>{} cases, expected failures: {}. Run <span class=\"badge {}\">{}</span></p>\n",
-                     counts.total(), counts.expected_failures, run_failed(report) ? "fail" : "pass",
-                     run_failed(report) ? "failed" : "ok");
+                     counts.total(), counts.expected_failures, failed ? "fail" : "pass", failed ? "failed" : "ok");
   out += "</section>\n";
 }
 
@@ -286,6 +287,47 @@ void append_performance(std::string& out, const Report& report) {
   out += "</section>\n";
 }
 
+// Broken rules of datasets/expectations.txt, each of which failed the run.
+void append_expectation_problems(std::string& out, const Report& report) {
+  if (report.expectation_problems.empty()) return;
+  out += "<section>\n<h2>Expectations not met</h2>\n<ul>\n";
+  for (const auto& problem : report.expectation_problems) out += fmt::format("<li>{}</li>\n", h(problem));
+  out += "</ul>\n</section>\n";
+}
+
+// The mutation score: each registered mutant, its kind, and the checks that killed it.
+void append_mutation(std::string& out, const Report& report) {
+  if (!report.mutation) return;
+  const MutationReport& mutation = *report.mutation;
+  out += fmt::format(
+      "<section class=\"mutation\">\n<h2>Mutants</h2>\n<p>Mutation score <span class=\"badge {}\">{} of {} killed "
+      "({:.0f} %)</span>. Each mutant is a deliberate bug run on its cases in a worker process; a one-twin mutant "
+      "must be killed by a parity or image check, a both-twins mutant by any other kind (ledgers, spec vectors, "
+      "invariants).</p>\n",
+      mutation.passed() ? "pass" : "fail", mutation.killed(), mutation.mutants.size(), 100.0 * mutation.score());
+  out += "<table>\n<tr><th>family</th><th>cases unmutated</th><th>problems</th></tr>\n";
+  for (const auto& baseline : mutation.baselines) {
+    out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n", h(baseline.family),
+                       baseline.clean ? "<span class=\"badge pass\">clean</span>" : "<span class=\"badge fail\">failed</span>",
+                       h(fmt::format("{}", fmt::join(baseline.problems, "; "))));
+  }
+  out += "</table>\n<table>\n<tr><th>status</th><th>mutant</th><th>kind</th><th>the bug</th><th>killed by</th>"
+         "<th>s</th></tr>\n";
+  for (const auto& mutant : mutation.mutants) {
+    std::string killed_by;
+    if (!mutant.killed_by.empty()) {
+      for (const auto& line : mutant.killed_by) killed_by += (killed_by.empty() ? "" : "<br>") + h(line);
+    } else {
+      killed_by = h(mutant.error);
+    }
+    out += fmt::format("<tr><td><span class=\"badge {}\">{}</span></td><td><a href=\"mutants/{}/index.html\">{}</a></td>"
+                       "<td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{:.1f}</td></tr>\n",
+                       mutant.status == "killed" ? "pass" : "fail", h(mutant.status), h(mutant.run_folder),
+                       h(mutant.name), h(mutant.kind), h(mutant.description), killed_by, mutant.seconds);
+  }
+  out += "</table>\n</section>\n";
+}
+
 }  // namespace
 
 void write_report_html(const Report& report, const std::filesystem::path& file) {
@@ -295,7 +337,9 @@ void write_report_html(const Report& report, const std::filesystem::path& file) 
       style);
   append_header(out, report);
   append_summary(out, report);
+  append_expectation_problems(out, report);
   append_case_table(out, report);
+  append_mutation(out, report);
   for (const CaseResult& result : report.cases) append_case_section(out, result);
   append_performance(out, report);
   out += "</body>\n</html>\n";

@@ -6,6 +6,7 @@
 // "value_text". Strings that are not valid UTF-8 are written with U+FFFD replacements.
 #include <cmath>
 
+#include "compare/mutation.hpp"
 #include "compare/report/report_common.hpp"
 #include "compare/report/writers.hpp"
 
@@ -22,7 +23,7 @@ json environment_to_json(const Environment& environment) {
   return {{"gl_renderer", environment.gl_renderer}, {"gl_version", environment.gl_version},
           {"gl_platform", environment.gl_platform}, {"cpu", environment.cpu},
           {"compiler", environment.compiler},       {"build_type", environment.build_type},
-          {"git", environment.git}};
+          {"git", environment.git},                 {"mutant", environment.mutant}};
 }
 
 json check_to_json(const Check& check) {
@@ -32,6 +33,10 @@ json check_to_json(const Check& check) {
   if (check.loose_threshold) out["loose_threshold"] = number_or_null(*check.loose_threshold);
   out["status"] = outcome_name(check.status);
   if (!check.detail.empty()) out["detail"] = check.detail;
+  if (check.expected) {
+    out["expected"] = outcome_name(*check.expected);
+    out["expectation"] = check.expectation;
+  }
   return out;
 }
 
@@ -89,7 +94,7 @@ json summary_to_json(const Report& report) {
   const auto counts = report_detail::count_case_outcomes(report);
   json out = json::object();
   for (Outcome outcome : all_outcomes) out[outcome_name(outcome)] = counts[outcome];
-  out["failed"] = run_failed(report);
+  out["failed"] = run_failed(report) || (report.mutation && !report.mutation->passed());
   return out;
 }
 
@@ -101,6 +106,8 @@ json report_to_json(const Report& report) {
   for (const CaseResult& result : report.cases) out["cases"].push_back(case_to_json(result));
   out["benchmarks"] = report_detail::benchmarks_to_json(report.benchmarks);
   out["summary"] = summary_to_json(report);
+  out["expectation_problems"] = report.expectation_problems;
+  if (report.mutation) out["mutation"] = mutation_to_json(*report.mutation);
   return out;
 }
 

@@ -106,6 +106,23 @@ void append_benchmarks(std::string& out, const Report& report) {
   }
 }
 
+void append_mutation(std::string& out, const Report& report) {
+  for (const auto& problem : report.expectation_problems) out += fmt::format("Expectation not met: {}\n\n", cell(problem));
+  if (!report.mutation) return;
+  const MutationReport& mutation = *report.mutation;
+  out += fmt::format("## Mutants\n\nMutation score: {} of {} killed ({:.0f} %).\n\n", mutation.killed(),
+                     mutation.mutants.size(), 100.0 * mutation.score());
+  for (const auto& baseline : mutation.baselines) {
+    if (!baseline.clean) out += fmt::format("Baseline of {} not clean: {}\n\n", baseline.family, cell(baseline.problems.front()));
+  }
+  out += "| status | mutant | kind | killed by |\n|---|---|---|---|\n";
+  for (const auto& mutant : mutation.mutants) {
+    out += fmt::format("| {} | {} | {} | {} |\n", mutant.status, mutant.name, mutant.kind,
+                       cell(mutant.killed_by.empty() ? mutant.error : mutant.killed_by.front()));
+  }
+  out += "\n";
+}
+
 }  // namespace
 
 void write_report_markdown(const Report& report, const std::filesystem::path& file) {
@@ -122,6 +139,7 @@ void write_report_markdown(const Report& report, const std::filesystem::path& fi
   }
   if (!any_details) out += "Every check of every case passed.\n\n";
   append_benchmarks(out, report);
+  append_mutation(out, report);
   write_file_atomically(file, out);
 }
 

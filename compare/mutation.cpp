@@ -1,0 +1,214 @@
+// The mutation runner; see compare/mutation.hpp.
+#include "compare/mutation.hpp"
+
+#include <algorithm>
+#include <fnmatch.h>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "compare/cases.hpp"
+#include "compare/worker.hpp"
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+// A run's checks that failed, keyed "case: check".
+using Failures = std::map<std::string, nlohmann::json>;
+
+struct WorkerReport {
+  bool readable = false;
+  Failures failures;
+  std::vector<std::string> case_errors;  // "case: error"
+};
+
+WorkerReport read_worker_report(const std::filesystem::path& folder) {
+  WorkerReport report;
+  std::ifstream stream(folder / "report.json");
+  if (!stream) return report;
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(stream);
+  } catch (const nlohmann::json::exception&) {
+    return report;
+  }
+  report.readable = true;
+  for (const auto& result : document.value("cases", nlohmann::json::array())) {
+    const std::string name = result.value("name", "");
+    if (result.value("status", "") == "error") {
+      report.case_errors.push_back(fmt::format("{}: {}", name, result.value("error", std::string("error"))));
+    }
+    for (const auto& check : result.value("checks", nlohmann::json::array())) {
+      const std::string status = check.value("status", "");
+      if (status == "fail" || status == "error") report.failures[name + ": " + check.value("name", "")] = check;
+    }
+  }
+  return report;
+}
+
+std::string describe_check(const std::string& key, const nlohmann::json& check) {
+  std::string text = key;
+  if (check.contains("value") && check["value"].is_number()) text += fmt::format(" = {:.3g}", check["value"].get<double>());
+  if (check.contains("threshold") && check["threshold"].is_number()) {
+    text += fmt::format(" (bound {:.3g})", check["threshold"].get<double>());
+  }
+  return text;
+}
+
+std::vector<std::string> case_names(const Mutant& mutant, const std::vector<CaseSpec>& suite) {
+  std::vector<std::string> names;
+  try {
+    for (const auto& spec : select_cases(suite, mutant.cases)) names.push_back(spec.name);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("mutant {}: {}", mutant.name, error.what()));
+  }
+  if (names.empty()) throw InputError(fmt::format("mutant {} names no case", mutant.name));
+  return names;
+}
+
+std::vector<std::string> worker_args(const std::vector<std::string>& cases, const std::filesystem::path& out,
+                                     const MutationOptions& options, const std::string& mutant) {
+  std::vector<std::string> args = {"run"};
+  args.insert(args.end(), cases.begin(), cases.end());
+  args.insert(args.end(), {"--out", out.string(), "--gl", options.gl, "--cpu-reps", "1", "--gpu-reps", "1"});
+  if (options.require_gpu) args.push_back("--require-gpu");
+  if (!mutant.empty()) args.insert(args.end(), {"--mutant", mutant});
+  return args;
+}
+
+void print_line(const std::string& line) { fmt::print(stderr, "groundtruth mutants: {}\n", line); }
+
+MutationBaseline run_baseline(const std::string& family, const std::vector<std::string>& cases,
+                              const MutationOptions& options, const std::filesystem::path& folder, Failures& failures) {
+  MutationBaseline baseline;
+  baseline.family = family;
+  baseline.cases = cases;
+  baseline.run_folder = "baseline/" + family;
+  const auto out = folder / baseline.run_folder;
+  print_line(fmt::format("baseline of {} ({} cases)", family, cases.size()));
+  const WorkerResult worker = run_worker(worker_args(cases, out, options, ""), folder / "baseline" / (family + ".log"),
+                                         options.timeout_seconds);
+  baseline.seconds = worker.seconds;
+  const WorkerReport report = read_worker_report(out);
+  failures = report.failures;
+  if (worker.timed_out) baseline.problems.push_back(fmt::format("timed out after {:.0f} s", options.timeout_seconds));
+  if (!report.readable) baseline.problems.push_back(fmt::format("no readable report (exit status {})", worker.status));
+  for (const auto& error : report.case_errors) baseline.problems.push_back(error);
+  for (const auto& [key, check] : report.failures) baseline.problems.push_back(describe_check(key, check));
+  if (worker.status != 0 && baseline.problems.empty()) {
+    baseline.problems.push_back(fmt::format("exit status {} (see baseline/{}.log)", worker.status, family));
+  }
+  baseline.clean = baseline.problems.empty();
+  return baseline;
+}
+
+MutantOutcome run_one(const Mutant& mutant, const std::vector<std::string>& cases, const Failures& baseline,
+                      const MutationOptions& options, const std::filesystem::path& folder) {
+  MutantOutcome outcome{.name = mutant.name, .family = mutant_family(mutant), .kind = mutant_kind_name(mutant.kind),
+                        .description = mutant.description, .cases = cases};
+  outcome.run_folder = "runs/" + mutant.name;
+  const auto out = folder / outcome.run_folder;
+  const WorkerResult worker = run_worker(worker_args(cases, out, options, mutant.name),
+                                         folder / "runs" / (mutant.name + ".log"), options.timeout_seconds);
+  outcome.seconds = worker.seconds;
+  const WorkerReport report = read_worker_report(out);
+  for (const auto& [key, check] : report.failures) {
+    if (baseline.contains(key)) continue;
+    const auto check_name = key.substr(key.find(": ") + 2);
+    (check_kind_kills(mutant.kind, check_name) ? outcome.killed_by : outcome.other_failures)
+        .push_back(describe_check(key, check));
+  }
+  if (!outcome.killed_by.empty()) {
+    outcome.status = "killed";
+  } else if (worker.timed_out) {
+    outcome.status = "timeout";
+    outcome.error = fmt::format("timed out after {:.0f} s", options.timeout_seconds);
+  } else if (!report.readable || !report.case_errors.empty() || worker.status > 1) {
+    outcome.status = "error";
+    outcome.error = !report.case_errors.empty() ? report.case_errors.front()
+                                                : fmt::format("exit status {} (see runs/{}.log)", worker.status, mutant.name);
+  } else {
+    outcome.status = "survived";
+  }
+  return outcome;
+}
+
+}  // namespace
+
+std::vector<Mutant> select_mutants(const std::vector<std::string>& patterns) {
+  if (patterns.empty()) return mutants();
+  std::vector<Mutant> selected;
+  for (const auto& pattern : patterns) {
+    bool any = false;
+    for (const auto& mutant : mutants()) {
+      if (fnmatch(pattern.c_str(), mutant.name.c_str(), 0) != 0) continue;
+      any = true;
+      const bool already = std::any_of(selected.begin(), selected.end(),
+                                       [&](const Mutant& chosen) { return chosen.name == mutant.name; });
+      if (!already) selected.push_back(mutant);
+    }
+    if (!any) {
+      std::string message = fmt::format("no mutant matches '{}'", pattern);
+      if (pattern.find_first_of("*?[") == std::string::npos) find_mutant(pattern);  // names the closest
+      throw InputError(message + "; `groundtruth mutants --list` shows them");
+    }
+  }
+  return selected;
+}
+
+MutationReport run_mutation(const MutationOptions& options, const std::filesystem::path& folder,
+                            const std::filesystem::path& dataset_dir) {
+  const auto selected = select_mutants(options.patterns);
+  const auto suite = load_cases(dataset_dir / "cases");
+  std::vector<std::vector<std::string>> cases_of;
+  std::map<std::string, std::vector<std::string>> family_cases;
+  for (const auto& mutant : selected) {
+    cases_of.push_back(case_names(mutant, suite));
+    auto& cases = family_cases[mutant_family(mutant)];
+    for (const auto& name : cases_of.back()) {
+      if (std::find(cases.begin(), cases.end(), name) == cases.end()) cases.push_back(name);
+    }
+  }
+  std::filesystem::create_directories(folder / "runs");
+  std::filesystem::create_directories(folder / "baseline");
+  MutationReport report;
+  std::map<std::string, Failures> baseline_failures;
+  for (const auto& [family, cases] : family_cases) {
+    report.baselines.push_back(run_baseline(family, cases, options, folder, baseline_failures[family]));
+  }
+  for (std::size_t index = 0; index < selected.size(); ++index) {
+    const Mutant& mutant = selected[index];
+    auto outcome = run_one(mutant, cases_of[index], baseline_failures[mutant_family(mutant)], options, folder);
+    print_line(fmt::format("[{}/{}] {:9} {} ({:.1f} s)", index + 1, selected.size(), outcome.status, mutant.name,
+                           outcome.seconds));
+    report.mutants.push_back(std::move(outcome));
+  }
+  return report;
+}
+
+nlohmann::json mutation_to_json(const MutationReport& report) {
+  nlohmann::json out = {{"killed", report.killed()},
+                        {"registered", report.mutants.size()},
+                        {"score", report.score()},
+                        {"passed", report.passed()},
+                        {"baselines", nlohmann::json::array()},
+                        {"mutants", nlohmann::json::array()}};
+  for (const auto& baseline : report.baselines) {
+    out["baselines"].push_back({{"family", baseline.family}, {"cases", baseline.cases}, {"clean", baseline.clean},
+                                {"problems", baseline.problems}, {"seconds", baseline.seconds},
+                                {"run_folder", baseline.run_folder}});
+  }
+  for (const auto& mutant : report.mutants) {
+    out["mutants"].push_back({{"name", mutant.name}, {"family", mutant.family}, {"kind", mutant.kind},
+                              {"description", mutant.description}, {"cases", mutant.cases},
+                              {"status", mutant.status}, {"killed_by", mutant.killed_by},
+                              {"other_failures", mutant.other_failures}, {"error", mutant.error},
+                              {"seconds", mutant.seconds}, {"run_folder", mutant.run_folder}});
+  }
+  return out;
+}
+
+}  // namespace gt

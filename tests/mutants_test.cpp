@@ -1,0 +1,47 @@
+// The mutation score (issue 11): every registered mutant, run on its cases in a worker process, is
+// killed by a check of the kind meant for it (parity or image checks for one-twin mutants, ledger,
+// spec and invariant checks for both-twins ones), and the same cases pass unmutated. One test per
+// family, so that ctest runs them side by side; `groundtruth mutants` is run as a user runs it.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_program.hpp"
+#include "tests/support/temporary_folder.hpp"
+
+namespace {
+
+using nlohmann::json;
+
+void expect_every_mutant_killed(const std::string& family) {
+  const gt::testing::TemporaryFolder work;
+  const auto out = work / "mutants";
+  const auto run = gt::testing::run_program(GT_BINARY_DIR "/groundtruth",
+                                            {"mutants", family + ".*", "--require-gpu", "--json", "--out", out.string()},
+                                            work.path());
+  ASSERT_LE(run.status, 1) << run;
+  const json mutation = json::parse(run.out);
+  for (const auto& baseline : mutation.at("baselines")) {
+    EXPECT_TRUE(baseline.at("clean").get<bool>()) << "unmutated cases fail: " << baseline.dump(2);
+  }
+  ASSERT_GE(mutation.at("mutants").size(), 6u);
+  int one_twin = 0, both_twins = 0;
+  for (const auto& mutant : mutation.at("mutants")) {
+    EXPECT_EQ(mutant.at("status"), "killed") << mutant.dump(2);
+    (mutant.at("kind") == "one-twin" ? one_twin : both_twins) += 1;
+  }
+  EXPECT_GE(one_twin, 3);
+  EXPECT_GE(both_twins, 3);
+  EXPECT_EQ(run.status, 0) << run;
+  EXPECT_TRUE(std::filesystem::is_regular_file(out / "mutants.json"));
+}
+
+TEST(Mutants, ErosionFamilyIsKilled) { expect_every_mutant_killed("erosion"); }
+TEST(Mutants, NoiseFamilyIsKilled) { expect_every_mutant_killed("noise"); }
+TEST(Mutants, CaveFamilyIsKilled) { expect_every_mutant_killed("cave"); }
+TEST(Mutants, RenderFamilyIsKilled) { expect_every_mutant_killed("render"); }
+
+}  // namespace
