@@ -29,7 +29,7 @@ OIIO::ImageBuf rgb8_buffer(int width, int height, const std::vector<std::uint8_t
 }
 
 OIIO::ImageBuf run_reference(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
-                             const RunOptions& options, CaseResult& result) {
+                             const RunOptions& options, CaseResult& result, const RenderedImageSpec& spec) {
   if (options.progress) options.progress->stage("CPU reference (double)");
   reference::Rgb8Image image;
   time_cpu(std::max(options.cpu_reps, 1), [&] { image = reference::render_phong(scene, subpixel_bits); },
@@ -43,10 +43,12 @@ OIIO::ImageBuf run_reference(const reference::PhongScene& scene, int subpixel_bi
                                                                                  "least {:g} of the picture",
                                                                                  min_covered_share))
                               : informative_check("image.uncovered_share.cpu", uncovered, detail));
+  if (spec) spec(image.rgb, "cpu", result);
   return rgb8_buffer(image.width, image.height, image.rgb);
 }
 
-OIIO::ImageBuf run_gpu(const reference::PhongScene& scene, const RunOptions& options, CaseResult& result) {
+OIIO::ImageBuf run_gpu(const reference::PhongScene& scene, const RunOptions& options, CaseResult& result,
+                       const RenderedImageSpec& spec) {
   if (options.progress) options.progress->stage("GPU");
   const gpu::PhongRenderer renderer(phong_draw(scene));
   renderer.run();
@@ -57,6 +59,7 @@ OIIO::ImageBuf run_gpu(const reference::PhongScene& scene, const RunOptions& opt
                                           std::plus<>(), std::not_equal_to<>());
   result.checks.push_back(bounded_check("determinism.gpu", double(changed), 0.0, std::nullopt,
                                         "channel bytes differing between the first and the last GPU run"));
+  if (spec) spec(first.rgb, "gpu", result);
   return rgb8_buffer(first.width, first.height, first.rgb);
 }
 
@@ -104,7 +107,8 @@ void write_pictures(const OIIO::ImageBuf& cpu, const OIIO::ImageBuf* gpu_image,
 }  // namespace
 
 void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
-                     const std::string& input, const RunOptions& options, CaseResult& result) {
+                     const std::string& input, const RunOptions& options, CaseResult& result,
+                     const RenderedImageSpec& spec) {
   const auto& camera = scene.camera;
   result.input = fmt::format("{}, {}x{} pixels", input, camera.width, camera.height);
   result.width = camera.width;
@@ -114,7 +118,7 @@ void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, doub
                                      camera.eye[0], camera.eye[1], camera.eye[2], camera.target[0], camera.target[1],
                                      camera.target[2], camera.near, camera.far, scene.light_power,
                                      scene.mesh.triangles.size()));
-  const OIIO::ImageBuf cpu = run_reference(scene, subpixel_bits, min_covered_share, options, result);
+  const OIIO::ImageBuf cpu = run_reference(scene, subpixel_bits, min_covered_share, options, result, spec);
   if (!options.gpu_available) {
     for (const char* name : {"image.gpu_vs_cpu", "determinism.gpu"}) {
       result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
@@ -122,7 +126,7 @@ void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, doub
     write_pictures(cpu, nullptr, nullptr, options, result);
     return;
   }
-  const OIIO::ImageBuf gpu_image = run_gpu(scene, options, result);
+  const OIIO::ImageBuf gpu_image = run_gpu(scene, options, result, spec);
   const NeighbourhoodComparison tolerant = compare_neighbourhoods(cpu, gpu_image, phong_tolerance);
   add_image_checks(compare_images(cpu, gpu_image, phong_tolerance), tolerant, result);
   write_pictures(cpu, &gpu_image, &tolerant, options, result);

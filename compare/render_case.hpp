@@ -18,6 +18,10 @@
 //     image.uncovered_share.cpu    share of the reference's pixels no triangle covers: bound
 //                                  1 - min_covered_share when min_covered_share > 0, else informative
 //     determinism.gpu              bytes differing between the first and the last GPU run, bound 0
+//   spec (optional)              checks of each image against what is known of the scene without
+//                                either twin (a probe's closed-form colours, compare/algorithms/
+//                                render_probe.hpp): called with the reference's image ("cpu") and the
+//                                GPU's ("gpu"), RGB8 rows top first
 //   Without a GL context image.gpu_vs_cpu and determinism.gpu are `skip` and the reference still runs.
 //   Timings: the reference's whole render (cpu_ms, median of cpu_reps, at least one run), the GPU's
 //   clear and draw bracketed by glFinish (gpu_ms; upload and download excluded, median of gpu_reps).
@@ -27,7 +31,10 @@
 //   red failing). The report shows them side by side with the image.* metrics under them.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "compare/field_twin.hpp"
 #include "compare/result.hpp"
@@ -39,7 +46,12 @@ inline constexpr double phong_tolerance = 4.0 / 255.0;
 inline constexpr double phong_min_psnr_db = 40.0;
 inline constexpr double phong_max_failing_share = 0.005;
 
+// Spec checks of one backend's image (3 bytes per pixel, rows top first); backend "cpu" or "gpu".
+using RenderedImageSpec =
+    std::function<void(const std::vector<std::uint8_t>& rgb, const std::string& backend, CaseResult& result)>;
+
 void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
-                     const std::string& input, const RunOptions& options, CaseResult& result);
+                     const std::string& input, const RunOptions& options, CaseResult& result,
+                     const RenderedImageSpec& spec = {});
 
 }  // namespace gt

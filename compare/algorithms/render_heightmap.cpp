@@ -1,12 +1,20 @@
 // `render.heightmap_from_mesh`: seed 000's heightmap from a mesh (digest §4.3, eqs. 4.1–4.4) by the
-// reference rasterizer (double) and by the GL pipeline, on a mesh file ({"mesh": path}), with the
-// parity checks of issue 6 (texel classes and error model in render_heightmap.hpp):
+// reference rasterizer (double) and by the GL pipeline, on a mesh file ({"mesh": path}) or, with
+// generated = tent and no input, the probe tent of render_probe.hpp, with the parity checks of
+// issue 6 (texel classes and error model in render_heightmap.hpp):
 //   parity.interior_max_abs.gpu_vs_cpu     max |gpu - cpu| over interior texels, bound max B(t)
 //   parity.interior_model.gpu_vs_cpu       max |gpu - cpu| / B(t) over interior texels, bound 1
 //   parity.silhouette_texels.gpu_vs_cpu    coverage differences that are not silhouette texels
 //                                          (bound 0); the detail gives all coverage differences
 //   parity.silhouette_shift.gpu_vs_cpu     silhouette texels covered on both sides whose GPU height
 //                                          is no reference height of its 3×3 neighbourhood (bound 0)
+//   parity.coverage_exact.gpu_vs_cpu       only where every window coordinate is exact in float
+//                                          (exact_window_coordinates) and GL snaps to the case's
+//                                          subpixel bits: coverage differences beyond the box's
+//                                          bottom (bound 0; issue 11)
+//   spec.tent_coverage.{cpu,gpu}, spec.tent_heights.{cpu,gpu}
+//                                          the tent only: each twin against the closed form
+//                                          (render_probe.hpp; issue 11)
 //   parity.coverage_share.{cpu,gpu}        share of covered texels (informative)
 //   determinism.gpu                        texels differing between two GPU runs (bound 0)
 // Timings: the reference's whole render (cpu_ms, median of cpu_reps), the GPU's clear and draw
@@ -25,6 +33,7 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/algorithms/render_probe.hpp"
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/report/images.hpp"
@@ -61,11 +70,12 @@ bool has_uncovered_neighbour(const Grid<std::uint8_t>& covered, int x, int y) {
 }
 
 // s(t) of the error model: along x and along y, the larger difference to a covered neighbour
-// (covered in the reference, where the heights come from).
-double local_slope(const Heightmap& heights, const Grid<std::uint8_t>& covered, int x, int y) {
+// (covered in the reference, where the heights come from; the GPU's own for a texel only it covers).
+template <class T>
+double local_slope(const Grid<T>& heights, const Grid<std::uint8_t>& covered, int x, int y) {
   const double h = heights.at(x, y);
   const auto step = [&](int dx, int dy) {
-    return covered_at(covered, x + dx, y + dy) ? std::abs(heights.at(x + dx, y + dy) - h) : 0.0;
+    return covered_at(covered, x + dx, y + dy) ? std::abs(double(heights.at(x + dx, y + dy)) - h) : 0.0;
   };
   return std::max(step(1, 0), step(-1, 0)) + std::max(step(0, 1), step(0, -1));
 }
@@ -104,6 +114,10 @@ HeightmapParity compare_mesh_heightmaps(const Heightmap& cpu, const Grid<std::ui
       if (on_cpu != on_gpu) {
         ++parity.coverage_differences;
         parity.coverage_differences_off_silhouette += !silhouette;
+        const double covered_height = on_cpu ? cpu.at(x, y) : double(gpu.at(x, y));
+        const double covered_bound =
+            on_cpu ? bound : texel_bound(local_slope(gpu, gpu_covered, x, y), cpu.width, cpu.height);
+        parity.coverage_differences_beyond_bottom += covered_height > covered_bound;
       } else if (on_cpu && silhouette) {
         ++parity.silhouette_texels_both_covered;
         parity.silhouette_beyond_one_texel +=
@@ -119,6 +133,30 @@ HeightmapParity compare_mesh_heightmaps(const Heightmap& cpu, const Grid<std::ui
   return parity;
 }
 
+bool exact_window_coordinates(const Mesh& mesh, int width, int height, int subpixel_bits) {
+  const auto [low, high] = bounding_box(mesh);
+  const auto exact_in_float = [](double value) { return double(float(value)) == value; };
+  const auto power_of_two = [](double value) {
+    int exponent = 0;
+    return value > 0.0 && std::frexp(value, &exponent) == 0.5;
+  };
+  const double grid = std::ldexp(1.0, subpixel_bits), limit = std::ldexp(1.0, 23 - subpixel_bits);
+  for (int axis = 0; axis < 2; ++axis) {
+    const double scale = 2.0 / (high[axis] - low[axis]), centre = 0.5 * (low[axis] + high[axis]);
+    const double pixels = axis == 0 ? width : height;
+    if (!power_of_two(scale)) return false;
+    for (const auto& p : mesh.positions) {
+      const double offset = p[axis] - centre, ndc_plus_one = scale * offset + 1.0;
+      const double window = 0.5 * ndc_plus_one * pixels;
+      if (!exact_in_float(offset) || !exact_in_float(ndc_plus_one) || std::abs(window) >= limit ||
+          window * grid != std::round(window * grid)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 namespace {
 
 struct RenderCase {
@@ -126,6 +164,7 @@ struct RenderCase {
   int width = 0;
   int height = 0;
   int subpixel_bits = 8;
+  bool tent = false;  // the generated tent: spec.tent_* checks (render_probe.hpp)
 };
 
 const ParamSpecs& render_specs() {
@@ -134,8 +173,28 @@ const ParamSpecs& render_specs() {
       {"height", ParamKind::integer, 256, 1, 4096, {}, "texel", "heightmap rows (along the mesh's y)"},
       {"subpixel_bits", ParamKind::integer, 8, 0, 16, {}, "bit",
        "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"},
+      {"generated", ParamKind::choice, "none", 0, 0, {"none", "tent"}, "1",
+       "without a mesh input: tent, the probe tetrahedron of render_probe.hpp whose heightmap is known in closed "
+       "form (spec.tent_* checks)"},
   };
   return specs;
+}
+
+// spec.tent_coverage.<backend> and spec.tent_heights.<backend> (render_probe.hpp).
+void add_tent_checks(const Heightmap& heights, const Grid<std::uint8_t>& covered, const std::string& backend,
+                     CaseResult& result) {
+  const double unit_roundoff = backend == "gpu" ? unit_roundoff_float : unit_roundoff_double;
+  const TentComparison tent = compare_with_tent(heights, covered, unit_roundoff);
+  result.checks.push_back(bounded_check(
+      "spec.tent_coverage." + backend, double(tent.coverage_mismatches), 0.0, std::nullopt,
+      fmt::format("texels whose coverage differs from the tent's footprint, of {} whose centre lies more than 2^-8 "
+                  "texel from its outline",
+                  tent.coverage_compared)));
+  result.checks.push_back(bounded_check(
+      "spec.tent_heights." + backend, tent.height_max_abs, tent.height_bound, std::nullopt,
+      fmt::format("max |h - min(4x, 4y, 2(1 - x - y))| over {} texels at least one texel inside the footprint; bound "
+                  "B = 16u·(1 + s·(W + H)), u = {}",
+                  tent.height_compared, backend == "gpu" ? "2^-24" : "2^-53")));
 }
 
 reference::MeshHeightmap run_reference(const RenderCase& render, const RunOptions& options, CaseResult& result) {
@@ -188,6 +247,15 @@ void add_parity_checks(const HeightmapParity& parity, const RenderCase& render, 
       fmt::format("of {} silhouette texels covered on both sides, those whose GPU height lies outside the reference "
                   "heights of its 3×3 neighbourhood (± B(t)): more than a one-texel shift",
                   parity.silhouette_texels_both_covered)));
+  if (exact_window_coordinates(render.mesh, render.width, render.height, render.subpixel_bits) &&
+      gpu::HeightmapFromMesh::subpixel_bits() == render.subpixel_bits) {
+    result.checks.push_back(bounded_check(
+        "parity.coverage_exact.gpu_vs_cpu", double(parity.coverage_differences_beyond_bottom), 0.0, std::nullopt,
+        fmt::format("every window coordinate is exact in float, so both twins apply GL's coverage rules to the same "
+                    "snapped vertices: texels covered on one side only ({} in all; those whose height there is at "
+                    "most B(t), a surface at the box's bottom, are not counted)",
+                    parity.coverage_differences)));
+  }
 }
 
 void write_pictures(const reference::MeshHeightmap& cpu, const gpu::MeshHeightmap* gpu_heightmap,
@@ -214,6 +282,7 @@ void run_render(const RenderCase& render, const std::string& file, const RunOpti
   result.height = render.height;
   const reference::MeshHeightmap cpu = run_reference(render, options, result);
   result.notes.push_back(fmt::format("aspect ratios (eq. 4.3): d_xy = {:.6g}, d_z = {:.6g}", cpu.d_xy, cpu.d_z));
+  if (render.tent) add_tent_checks(cpu.heights, cpu.covered, "cpu", result);
   if (!options.gpu_available) {
     for (const char* name : {"parity.gpu_vs_cpu", "determinism.gpu"}) {
       result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
@@ -222,18 +291,26 @@ void run_render(const RenderCase& render, const std::string& file, const RunOpti
     return;
   }
   const gpu::MeshHeightmap gpu_heightmap = run_gpu(render, options, result);
+  if (render.tent) add_tent_checks(gpu_heightmap.heights.cast<double>(), gpu_heightmap.covered, "gpu", result);
   add_parity_checks(compare_mesh_heightmaps(cpu.heights, cpu.covered, gpu_heightmap.heights, gpu_heightmap.covered),
                     render, result);
   write_pictures(cpu, &gpu_heightmap, options, result);
 }
 
 PreparedTwin prepare_render(const nlohmann::json& resolved, const LoadedInput& input) {
-  if (!input.mesh) throw InputError("render.heightmap_from_mesh needs a mesh input: {\"mesh\": \"path.off\"}");
-  reference::require_visible_from_above(*input.mesh);
-  RenderCase render{*input.mesh, resolved.at("width"), resolved.at("height"), resolved.at("subpixel_bits")};
+  const bool tent = resolved.at("generated") == "tent";
+  if (input.mesh && tent) throw InputError("render.heightmap_from_mesh: generated = tent replaces the mesh input; give one");
+  if (!input.mesh && !tent) {
+    throw InputError("render.heightmap_from_mesh needs a mesh input ({\"mesh\": \"path.off\"}) or generated = tent");
+  }
+  const Mesh mesh = tent ? tent_mesh() : *input.mesh;
+  reference::require_visible_from_above(mesh);
+  RenderCase render{mesh, resolved.at("width"), resolved.at("height"), resolved.at("subpixel_bits"), tent};
   PreparedTwin prepared;
-  prepared.run = [render = std::move(render), file = input.description](const nlohmann::json&, const RunOptions& options,
-                                                                         CaseResult& result) {
+  prepared.run = [render = std::move(render), file = tent ? std::string("the probe tent (render_probe.hpp)")
+                                                          : input.description](const nlohmann::json&,
+                                                                               const RunOptions& options,
+                                                                               CaseResult& result) {
     run_render(render, file, options, result);
   };
   return prepared;

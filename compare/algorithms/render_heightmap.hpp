@@ -20,12 +20,18 @@
 // same error, another one than the reference (their heights then differ by no more).
 // Beyond interior texels nothing is exact: a silhouette texel's edge may move by one texel, so its
 // GPU height must be one of the reference heights around it, within the same B(t).
+// Exact coverage: when every window coordinate is exact in float (exact_window_coordinates below),
+// both twins snap the same vertices and apply GL's coverage rules to the same numbers, so they must
+// cover the same texels, silhouettes included, except where a surface lies at the bottom of the box:
+// its depth 1 - h/2 may round to the cleared depth 1 in float, so a texel covered on one side only
+// with a height there of at most B(t) is not counted (coverage_differences_beyond_bottom).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
 #include "core/grid.hpp"
+#include "core/mesh.hpp"
 
 namespace gt {
 
@@ -41,7 +47,16 @@ struct HeightmapParity {
   // reference heights in its 3×3 neighbourhood, widened by B(t): more than a one-texel shift.
   std::size_t silhouette_beyond_one_texel = 0;
   std::size_t covered_cpu = 0, covered_gpu = 0;
+  // Coverage differences whose covered side's height exceeds B(t) (that side's local slope).
+  std::size_t coverage_differences_beyond_bottom = 0;
 };
+
+// Whether both twins' window coordinates of every vertex are exact, so that coverage must agree
+// texel for texel: each vertex's offset from the box centre is exact in float, the scales 2/Δx and
+// 2/Δy are powers of two, NDC + 1 is exact in float, and the window coordinates are multiples of
+// 2^-subpixel_bits below 2^(23 - subpixel_bits) (so every float operation of the transform has a
+// representable exact result, and snapping moves nothing).
+bool exact_window_coordinates(const Mesh& mesh, int width, int height, int subpixel_bits);
 
 HeightmapParity compare_mesh_heightmaps(const Heightmap& cpu, const Grid<std::uint8_t>& cpu_covered,
                                         const Grid<float>& gpu, const Grid<std::uint8_t>& gpu_covered);

@@ -7,7 +7,12 @@
 // Inputs and cameras:
 //   {"mesh": path}   a mesh file; camera = orbit (around the bounding-box centre: azimuth_deg,
 //                    elevation_deg) or fixed (eye_*, target_*, near, far)
-//   {} (no input)    with look = cave only: the seed's cave, a block of block_size_* cells at
+//   {} (no input), generated = quad
+//                    the probe quad of compare/algorithms/render_probe.hpp (any look, either camera):
+//                    with look = plain its colours are known in closed form, and the case gets the
+//                    spec checks spec.phong_quad.{cpu,gpu} (issue 11; error model there)
+//   {} (no input), generated = cave (default)
+//                    with look = cave only: the seed's cave, a block of block_size_* cells at
 //                    block_origin_* of its density (scale 10, threshold 0, kernel 0.6, Perlin's
 //                    table, capped with air) meshed by the reference marching tetrahedra, normals from
 //                    the analytic noise gradient (reference/render/cave_look.hpp cave_scene), seen by
@@ -27,12 +32,15 @@
 #include "compare/algorithms/render_phong.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/algorithms/render_probe.hpp"
+#include "compare/checks/threshold.hpp"
 #include "compare/render_case.hpp"
 #include "core/errors.hpp"
 #include "core/params/cave.hpp"
@@ -91,6 +99,9 @@ const ParamSpecs& phong_specs() {
        "terrain look: slope where the rock colour starts"},
       {"rock_full_deg", ParamKind::real, terrain.rock_full_deg, 0.0, 180.0, {}, "degree",
        "terrain look: slope from which the surface is all rock"},
+      {"generated", ParamKind::choice, "cave", 0, 0, {"cave", "quad"}, "1",
+       "without an input: cave (the seed's cave, look = cave and camera = fixed) or quad (the probe quad of "
+       "render_probe.hpp, whose plain look has closed-form colours)"},
       {"block_origin_x", ParamKind::integer, -24, -100000, 100000, {}, "lattice", "generated cave: block origin x"},
       {"block_origin_y", ParamKind::integer, -24, -100000, 100000, {}, "lattice", "generated cave: block origin y"},
       {"block_origin_z", ParamKind::integer, -24, -100000, 100000, {}, "lattice", "generated cave: block origin z"},
@@ -105,6 +116,7 @@ struct PhongCase {
   reference::PhongScene scene;
   int subpixel_bits = 8;
   double min_covered_share = 0.0;
+  bool quad_spec = false;  // the probe quad in the plain look: its closed-form colours are checked
 };
 
 reference::Look look_from(const std::string& name) {
@@ -199,22 +211,31 @@ gpu::PhongDraw phong_draw(const reference::PhongScene& scene) {
 
 namespace {
 
+// The mesh of the case: the input's, or the generated probe quad.
+std::optional<Mesh> case_mesh(const nlohmann::json& resolved, const LoadedInput& input, std::string& description) {
+  if (input.mesh) return input.mesh;
+  if (resolved.at("generated") != "quad") return std::nullopt;
+  description = "the probe quad (render_probe.hpp)";
+  return phong_quad_mesh(phong_quad_probe());
+}
+
 PhongCase prepared_case(const nlohmann::json& resolved, const LoadedInput& input, std::string& description) {
   const reference::Look look = look_from(resolved.at("look"));
   const bool fixed = resolved.at("camera") == "fixed";
   const double light_power = resolved.at("light_power");
   reference::PhongScene scene;
-  if (input.mesh) {
+  if (const std::optional<Mesh> mesh = case_mesh(resolved, input, description)) {
     const reference::Camera camera =
         fixed ? fixed_camera(resolved)
-              : reference::orbit_camera(*input.mesh, resolved.at("azimuth_deg"), resolved.at("elevation_deg"),
+              : reference::orbit_camera(*mesh, resolved.at("azimuth_deg"), resolved.at("elevation_deg"),
                                         resolved.at("fov_deg"), resolved.at("width"), resolved.at("height"));
-    scene = reference::phong_scene(*input.mesh, camera, look);
-    if (look == reference::Look::terrain) scene.terrain = reference::terrain_look(*input.mesh, axis_vector(resolved.at("up_axis")));
+    scene = reference::phong_scene(*mesh, camera, look);
+    if (look == reference::Look::terrain) scene.terrain = reference::terrain_look(*mesh, axis_vector(resolved.at("up_axis")));
     if (light_power > 0.0) scene.light_power = light_power;
   } else {
     if (look != reference::Look::cave || !fixed) {
-      throw InputError("render.phong needs a mesh input ({\"mesh\": \"path.off\"}), or look = cave with camera = fixed "
+      throw InputError("render.phong needs a mesh input ({\"mesh\": \"path.off\"}), generated = quad, or look = cave "
+                       "with camera = fixed "
                        "to mesh a block of the seed's cave");
     }
     const CaveParams block = cave_block(resolved);
@@ -231,7 +252,29 @@ PhongCase prepared_case(const nlohmann::json& resolved, const LoadedInput& input
     scene.terrain.rock_start_deg = resolved.at("rock_start_deg");
     scene.terrain.rock_full_deg = resolved.at("rock_full_deg");
   }
-  return {std::move(scene), resolved.at("subpixel_bits"), resolved.at("min_covered_share")};
+  const bool quad_spec = !input.mesh && resolved.at("generated") == "quad" && look == reference::Look::plain;
+  return {std::move(scene), resolved.at("subpixel_bits"), resolved.at("min_covered_share"), quad_spec};
+}
+
+// spec.phong_quad.<backend>: the image against the probe quad's closed-form colours (render_probe.hpp).
+RenderedImageSpec quad_spec(const reference::PhongScene& scene) {
+  const reference::Camera& camera = scene.camera;
+  const ProbeCamera probe_camera{.eye = camera.eye, .target = camera.target, .up = camera.up,
+                                 .fov_y_deg = camera.fov_y_deg, .width = camera.width, .height = camera.height};
+  return [probe_camera, albedo = scene.albedo, light_power = scene.light_power](
+             const std::vector<std::uint8_t>& rgb, const std::string& backend, CaseResult& result) {
+    const ProbeImageComparison comparison = compare_with_phong_quad(phong_quad_probe(), probe_camera, albedo, light_power, rgb);
+    const bool gpu = backend == "gpu";
+    result.checks.push_back(bounded_check(
+        "spec.phong_quad." + backend, comparison.max_abs, gpu ? phong_probe_bound_gpu : phong_probe_bound_cpu,
+        std::nullopt,
+        fmt::format("largest |image - closed form| over channel values of {} pixels at least 1 pixel from the quad's "
+                    "outline ({} on the quad: seed 004 §2.9 with K_a 0.1, specular 0.3, exponent 5, light at the eye, "
+                    "1/d²; the rest background 0), at pixel ({}, {}); bound: {}",
+                    comparison.compared_pixels, comparison.quad_pixels, comparison.max_x, comparison.max_y,
+                    gpu ? "one 8-bit level (GL may round either way) + 2^-12 of float error"
+                        : "half an 8-bit level + 1e-9 of double error")));
+  };
 }
 
 PreparedTwin prepare_phong(const nlohmann::json& resolved, const LoadedInput& input) {
@@ -241,7 +284,8 @@ PreparedTwin prepare_phong(const nlohmann::json& resolved, const LoadedInput& in
   prepared.run = [phong = std::move(phong), file = std::move(description)](const nlohmann::json&,
                                                                             const RunOptions& options,
                                                                             CaseResult& result) {
-    run_phong_twins(phong.scene, phong.subpixel_bits, phong.min_covered_share, file, options, result);
+    run_phong_twins(phong.scene, phong.subpixel_bits, phong.min_covered_share, file, options, result,
+                    phong.quad_spec ? quad_spec(phong.scene) : RenderedImageSpec{});
   };
   return prepared;
 }

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 #include "reference/render/rasterizer.hpp"
 
 namespace gt::reference {
@@ -23,15 +24,17 @@ Box box_of(const Mesh& mesh) {
 }
 
 // Eq. 4.2 applied to every vertex: (s_x(x - c_x), s_y(y - c_y), 0.5 - s_z(z - c_z), 1), with z'
-// also as the one attribute the fragment shader reads.
+// also as the one attribute the fragment shader reads. Mutant render.heightmap_from_mesh.lowest_surface
+// (issue 11, in both twins): the depth is 1 - z', the box seen from below, so the lowest surface wins.
 RasterInput project_from_above(const Mesh& mesh, const Box& box, const std::array<double, 3>& scale) {
   RasterInput input;
   input.attribute_count = 1;
   input.triangles = mesh.triangles;
+  const bool from_below = mutant_active("render.heightmap_from_mesh.lowest_surface");
   for (const auto& p : mesh.positions) {
     const double z_prime = 0.5 - scale[2] * (p[2] - box.centre(2));
-    input.clip_positions.push_back(
-        {scale[0] * (p[0] - box.centre(0)), scale[1] * (p[1] - box.centre(1)), z_prime, 1.0});
+    input.clip_positions.push_back({scale[0] * (p[0] - box.centre(0)), scale[1] * (p[1] - box.centre(1)),
+                                    from_below ? 1.0 - z_prime : z_prime, 1.0});
     input.attributes.push_back(z_prime);
   }
   return input;
@@ -70,8 +73,10 @@ MeshHeightmap heightmap_from_mesh(const Mesh& mesh, int width, int height, int s
 
   MeshHeightmap result{texel_grid<double>(width, height, box), texel_grid<std::uint8_t>(width, height, box),
                        scale[0] / scale[1], scale[0] / scale[2]};
+  // Mutant render.heightmap_from_mesh.rows_flipped (issue 11, in both twins): grid row r is GL row r.
+  const bool flipped = mutant_active("render.heightmap_from_mesh.rows_flipped");
   for (int row = 0; row < height; ++row) {
-    const int gl_row = height - 1 - row;
+    const int gl_row = flipped ? row : height - 1 - row;
     for (int x = 0; x < width; ++x) {
       result.heights.at(x, row) = target.colour_at(x, gl_row, 0);
       result.covered.at(x, row) = target.depth_at(x, gl_row) < 1.0 ? 1 : 0;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 #include "core/vec3.hpp"
 #include "reference/render/rasterizer.hpp"
 
@@ -50,13 +51,20 @@ void require_valid(const Camera& camera) {
 }
 
 // The unit normal facing the viewer: the normalised interpolated normal, flipped when it points away
-// from the eye (two-sided), v when it is exactly zero.
+// from the eye (two-sided), v when it is exactly zero. Mutant render.phong.facing_reversed (issue 11,
+// in both twins): flipped when it points towards the eye instead.
 Vec3 facing_normal(const Vec3& position, const Vec3& normal, const Vec3& eye) {
   const Vec3 v = normalised(eye - position);
   Vec3 n = dot(normal, normal) > 0.0 ? normalised(normal) : v;
-  if (dot(n, v) < 0.0) n = -1.0 * n;
+  const bool faces_away = dot(n, v) < 0.0;
+  if (faces_away != mutant_active("render.phong.facing_reversed")) n = -1.0 * n;
   return n;
 }
+
+// The seed's constants (digest §2.9): K_a = 0.1 and exponent 5, or the mutants' (issue 11, in both
+// twins): render.phong.no_ambient drops the ambient term, render.phong.specular_exponent uses 10.
+double ambient() { return mutant_active("render.phong.no_ambient") ? 0.0 : 0.1; }
+double specular_exponent() { return mutant_active("render.phong.specular_exponent") ? 10.0 : 5.0; }
 
 double terrain_height(const Vec3& up, const Vec3& p) { return (p[0] * up[0] + p[1] * up[1]) + p[2] * up[2]; }
 
@@ -152,14 +160,17 @@ RasterInput clip_input(const PhongScene& scene) {
   return input;
 }
 
-// GL's bottom-first colour buffer to top-first RGB8.
+// GL's bottom-first colour buffer to top-first RGB8. Mutant render.phong.vertical_flip (issue 11, in
+// both twins): rows read bottom first, the picture upside down.
 Rgb8Image quantised_top_first(const RasterTarget& target) {
   Rgb8Image image{target.width, target.height, {}};
   image.rgb.reserve(std::size_t(target.width) * std::size_t(target.height) * 3);
+  const bool flipped = mutant_active("render.phong.vertical_flip");
   for (int row = 0; row < target.height; ++row) {
+    const int gl_row = flipped ? row : target.height - 1 - row;
     for (int x = 0; x < target.width; ++x) {
       for (int channel = 0; channel < 3; ++channel) {
-        image.rgb.push_back(quantise_unorm8(target.colour_at(x, target.height - 1 - row, channel)));
+        image.rgb.push_back(quantise_unorm8(target.colour_at(x, gl_row, channel)));
       }
     }
   }
@@ -266,10 +277,11 @@ Vec3 phong_lit(const Vec3& position, const Vec3& unit_normal, const Vec3& eye, c
   const Vec3& n = unit_normal;
   const double n_dot_l = dot(n, l);
   const Vec3 r = 2.0 * n_dot_l * n - l;
-  const double diffuse = std::max(0.0, n_dot_l), specular = std::pow(std::max(0.0, dot(r, v)), 5.0);
+  const double diffuse = std::max(0.0, n_dot_l), specular = std::pow(std::max(0.0, dot(r, v)), specular_exponent());
+  const double ambient_term = ambient();
   Vec3 colour{};
   for (int c = 0; c < 3; ++c) {
-    colour[c] = std::clamp(albedo[c] * (0.1 + irradiance * diffuse) + 0.3 * irradiance * specular, 0.0, 1.0);
+    colour[c] = std::clamp(albedo[c] * (ambient_term + irradiance * diffuse) + 0.3 * irradiance * specular, 0.0, 1.0);
   }
   return colour;
 }

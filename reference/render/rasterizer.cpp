@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/mutant.hpp"
+
 namespace gt::reference {
 namespace {
 
@@ -77,9 +79,11 @@ T edge(T ax, T ay, T bx, T by, T px, T py) {
 }
 
 // Whether pixel centres exactly on the edge a -> b of a counter-clockwise triangle belong to it.
+// Mutant render.heightmap_from_mesh.right_edges_owned (issue 11, this reference only): right edges
+// own their centres instead of left ones.
 bool owns_edge(const WindowVertex& a, const WindowVertex& b, TieRule rule) {
   const std::int64_t dx = b.snapped_x - a.snapped_x, dy = b.snapped_y - a.snapped_y;
-  if (dy != 0) return dy < 0;  // interior at +x: a left edge
+  if (dy != 0) return mutant_active("render.heightmap_from_mesh.right_edges_owned") ? dy > 0 : dy < 0;  // interior at +x: a left edge
   return rule == TieRule::lower_left ? dx > 0 : dx < 0;
 }
 

@@ -7,4 +7,9 @@ in float z_prime;
 
 layout(location = 0) out float red;
 
-void main() { red = 1.0 - z_prime; }
+void main() {
+  red = 1.0 - z_prime;
+#ifdef GT_MUTANT_RENDER_HEIGHTMAP_FROM_MESH_DRAW_ORDER_GPU
+  gl_FragDepth = 0.0;  // mutant (this shader only, issue 11): every fragment at depth 0, the first drawn stays
+#endif
+}

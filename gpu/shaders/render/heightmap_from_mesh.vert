@@ -14,4 +14,11 @@ out float z_prime;
 void main() {
   gl_Position = projection * vec4(centred_position, 1.0);
   z_prime = gl_Position.z;
+  // Mutants (both twins, issue 11; the reference's in reference/render/heightmap_from_mesh.cpp):
+#ifdef GT_MUTANT_RENDER_HEIGHTMAP_FROM_MESH_LOWEST_SURFACE
+  gl_Position.z = 1.0 - z_prime;  // the box seen from below: the lowest surface wins the depth test
+#endif
+#ifdef GT_MUTANT_RENDER_HEIGHTMAP_FROM_MESH_ROWS_FLIPPED
+  gl_Position.y = -gl_Position.y;  // north and south swapped
+#endif
 }

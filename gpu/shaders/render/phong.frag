@@ -18,6 +18,20 @@
 #define GT_PHONG_LOOK 0
 #endif
 
+// The seed's K_a = 0.1 and exponent 5, or the mutants' (issue 11, compare/mutants/render.cpp):
+// render.phong.no_ambient (both twins) drops the ambient term; render.phong.specular_exponent (both
+// twins) and render.phong.specular_exponent_gpu (this shader only) use the exponent 10.
+#ifdef GT_MUTANT_RENDER_PHONG_NO_AMBIENT
+const float ambient = 0.0;
+#else
+const float ambient = 0.1;
+#endif
+#if defined(GT_MUTANT_RENDER_PHONG_SPECULAR_EXPONENT) || defined(GT_MUTANT_RENDER_PHONG_SPECULAR_EXPONENT_GPU)
+const float specular_exponent = 10.0;
+#else
+const float specular_exponent = 5.0;
+#endif
+
 #if GT_PHONG_LOOK != 0
 #include "render/phong_look.glsl"
 #endif
@@ -33,11 +47,19 @@ layout(location = 0) out vec4 colour;
 
 void main() {
   vec3 to_eye = eye - world_position;
+#ifdef GT_MUTANT_RENDER_PHONG_NO_FALLOFF_GPU
+  float irradiance = light_power;  // mutant (this shader only): the 1/d² falloff dropped
+#else
   float irradiance = light_power / dot(to_eye, to_eye);
+#endif
   vec3 v = normalize(to_eye);
   vec3 l = v;
   vec3 n = dot(vertex_normal, vertex_normal) > 0.0 ? normalize(vertex_normal) : v;
+#ifdef GT_MUTANT_RENDER_PHONG_FACING_REVERSED
+  if (!(dot(n, v) < 0.0)) n = -n;  // mutant (both twins): the normal turned away from the viewer
+#else
   if (dot(n, v) < 0.0) n = -n;
+#endif
 #if GT_PHONG_LOOK == 1
   vec3 surface_albedo = gt_cave_albedo(world_position, n);
   n = gt_cave_bumped_normal(world_position, n);
@@ -47,6 +69,6 @@ void main() {
   vec3 surface_albedo = albedo;
 #endif
   float diffuse = max(0.0, dot(n, l));
-  float specular = pow(max(0.0, dot(reflect(-l, n), v)), 5.0);
-  colour = vec4(clamp(surface_albedo * (0.1 + irradiance * diffuse) + 0.3 * irradiance * specular, 0.0, 1.0), 1.0);
+  float specular = pow(max(0.0, dot(reflect(-l, n), v)), specular_exponent);
+  colour = vec4(clamp(surface_albedo * (ambient + irradiance * diffuse) + 0.3 * irradiance * specular, 0.0, 1.0), 1.0);
 }

@@ -14,6 +14,9 @@ out vec3 vertex_normal;
 
 void main() {
   gl_Position = view_projection * vec4(position, 1.0);
+#ifdef GT_MUTANT_RENDER_PHONG_VERTICAL_FLIP
+  gl_Position.y = -gl_Position.y;  // mutant (both twins, issue 11): the picture upside down
+#endif
   world_position = position;
   vertex_normal = normal;
 }

@@ -86,7 +86,11 @@ float gt_cave_shade(vec3 p) {
 // Strip colour plus moss on the unbumped, viewer-facing world normal n (green += moss·n.y, n.y > 0).
 vec3 gt_cave_albedo(vec3 p, vec3 n) {
   vec3 albedo = gt_strip_colour(gt_cave_shade(p));
+#ifdef GT_MUTANT_RENDER_PHONG_CAVE_MOSS_THRESHOLD_GPU
+  if (n.y > 0.5) {  // mutant (this shader only, issue 11): moss only on normals steeper than 60° from up
+#else
   if (n.y > 0.0) {
+#endif
     precise float green = albedo.g + look.moss * n.y;
     albedo.g = green;
   }
@@ -151,6 +155,9 @@ vec3 gt_terrain_albedo(vec3 p, vec3 n) {
   vec3 ground = gt_drape_colour(p);
 #else
   precise float h = clamp((gt_terrain_height(p) - look.height_low) * look.inverse_height_range, 0.0, 1.0);
+#ifdef GT_MUTANT_RENDER_TERRAIN_RAMP_REVERSED_GPU
+  h = 1.0 - h;  // mutant (this shader only, issue 11): the height ramp read from the top, snow at the foot
+#endif
   vec3 ground = gt_strip_colour(h);
 #endif
   precise float w = clamp((look.rock_start_cos - gt_terrain_height(n)) * look.inverse_rock_width, 0.0, 1.0);
