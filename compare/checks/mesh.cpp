@@ -483,7 +483,7 @@ Check zero_check(std::string name, std::size_t value, std::string detail) {
 
 Check bounds_volume_check(const MeshReport& report, const std::string& name) {
   if (!report.cgal.bounds_volume) {
-    return skipped_check(name, "not defined: the mesh is open, empty, degenerate or self-intersecting");
+    return not_applicable_check(name, "not defined: the mesh is open, empty, degenerate or self-intersecting");
   }
   const std::optional<bool> outward = report.cgal.outward;
   return zero_check(name, *report.cgal.bounds_volume && outward == true ? 0 : 1,
@@ -603,7 +603,7 @@ std::vector<Check> mesh_checks(const MeshReport& report, const std::string& back
   checks.push_back(informative_check(name("components"), static_cast<double>(om.components), "OpenMesh"));
   checks.push_back(informative_check(name("area"), cgal.area, "CGAL"));
   checks.push_back(cgal.volume ? informative_check(name("volume"), *cgal.volume, "CGAL; negative when oriented inward")
-                               : skipped_check(name("volume"), "the mesh is open"));
+                               : not_applicable_check(name("volume"), "the mesh is open"));
   return checks;
 }
 
@@ -613,9 +613,8 @@ SurfaceMesh surface_for_distances(const Mesh& mesh) {
   std::vector<Point> points;
   points.reserve(mesh.positions.size());
   for (const auto& position : mesh.positions) points.push_back(point_of(position));
-  std::vector<SoupTriangle> triangles;
-  triangles.reserve(mesh.triangles.size());
-  for (const auto& triangle : mesh.triangles) triangles.push_back({triangle[0], triangle[1], triangle[2]});
+  // Only the usable triangles: a broken mesh (a GPU bug) must give a distance, not a crash.
+  std::vector<SoupTriangle> triangles = usable_triangles(mesh);
   PMP::orient_polygon_soup(points, triangles);
   SurfaceMesh surface;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, surface);

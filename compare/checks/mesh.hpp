@@ -138,8 +138,9 @@ std::vector<Check> mesh_checks(const MeshReport& report, const std::string& back
 // CGAL's approximate symmetric Hausdorff distance between two surfaces: the farthest of points
 // sampled on a grid of `grid_spacing` over each mesh's faces (and its vertices) from the other
 // mesh. A lower bound of the true distance that approaches it as the spacing shrinks; deterministic
-// (grid sampling). Both meshes must have finite positions and triangles CGAL can orient into a
-// polygon mesh (the cave meshes); 0 for two empty meshes, infinity when only one is empty.
+// (grid sampling). Only the usable triangles count (three distinct in-range indices, finite
+// corners: a broken mesh gives a distance, not a crash); 0 for two empty meshes, infinity when
+// only one is empty.
 double approximate_hausdorff_distance(const Mesh& a, const Mesh& b, double grid_spacing);
 
 }  // namespace gt
