@@ -53,6 +53,23 @@ TEST(CaveMeshChecks, KeyTrianglesKeepOrientationAndIgnoreNumbering) {
   EXPECT_EQ(triangle_difference(key_triangles(mesh), key_triangles(flipped)), 2u) << "one triangle in each mesh only";
 }
 
+// A broken mesh (a GPU bug) may name a vertex it lacks: the comparisons count it, never read past
+// the mesh's vertices.
+TEST(CaveMeshChecks, TrianglesNamingMissingVerticesDifferAndStayOffTheBox) {
+  const Mesh mesh = single_rock_sample();
+  Mesh broken = mesh;
+  const auto missing = static_cast<std::uint32_t>(mesh.positions.size() + 7);
+  broken.triangles[0][1] = missing;
+  const auto keyed = key_triangles(broken);
+  EXPECT_TRUE(std::any_of(keyed.begin(), keyed.end(), [](const KeyTriangle& triangle) {
+    return std::find(triangle.begin(), triangle.end(), missing_vertex_key) != triangle.end();
+  }));
+  EXPECT_EQ(triangle_difference(key_triangles(mesh), keyed), 2u);
+  EXPECT_GT(border_edges_off_box(broken, LatticeBox{{-100, -100, -100}, {100, 100, 100}}), 0u);
+  const double distance = approximate_hausdorff_distance(broken, mesh, 0.1);
+  EXPECT_TRUE(std::isfinite(distance));
+}
+
 TEST(CaveMeshChecks, VerticesAreComparedByKeyAgainstTheirBound) {
   const Mesh mesh = single_rock_sample();
   Mesh moved = mesh;
@@ -129,6 +146,39 @@ TEST(CaveMeshChecks, VolumeOfOneRockSampleIsWithinTheCutCubeBound) {
   ASSERT_TRUE(report.cgal.volume.has_value());
   EXPECT_GT(*report.cgal.volume, 0.0);
   EXPECT_LE(std::abs(*report.cgal.volume - field.rock_samples), field.bound);
+}
+
+// Two samples -1 and 3 padded with air: the x edge between them crosses 0 at t = 1/4, every other
+// crossing edge runs into the pad (midpoints). Moving the inner vertex to 3/4 (measured from the
+// wrong end) or asking about another threshold is caught; the bound holds the clamp margin.
+TEST(CaveMeshChecks, VerticesSitOnTheFieldsCrossings) {
+  Volume<double> volume(2, 1, 1);
+  volume.values = {-1.0, 3.0};
+  const std::array<std::int64_t, 3> origin{10, 20, 30};
+  const Mesh mesh = reference::marching_tetrahedra(volume, 0.0, true, origin);
+  const VertexCrossings clean = vertex_crossings(mesh, volume, 0.0, origin, true);
+  EXPECT_EQ(clean.vertices, mesh.positions.size());
+  EXPECT_EQ(clean.not_crossing, 0u);
+  EXPECT_EQ(clean.off_crossing, 0u);
+  EXPECT_LE(clean.max_bound_ratio, 1.0);
+  const std::uint64_t inner_key = lattice_edge_key({10, 20, 30}, 1);
+  const auto inner = std::find(mesh.edge_keys.begin(), mesh.edge_keys.end(), inner_key) - mesh.edge_keys.begin();
+  ASSERT_LT(std::size_t(inner), mesh.edge_keys.size());
+  EXPECT_DOUBLE_EQ(mesh.positions[inner][0], 10.25);
+
+  Mesh wrong_end = mesh;
+  wrong_end.positions[inner][0] = 10.75;
+  const VertexCrossings moved = vertex_crossings(wrong_end, volume, 0.0, origin, true);
+  EXPECT_EQ(moved.off_crossing, 1u);
+  EXPECT_DOUBLE_EQ(moved.max_distance, 0.5);
+  EXPECT_EQ(vertex_crossings(mesh, volume, 0.0, origin, false).off_crossing, 1u) << "midpoint placement expects 10.5";
+  EXPECT_EQ(vertex_crossings(mesh, volume, -2.0, origin, true).not_crossing, mesh.positions.size())
+      << "at threshold -2 nothing is rock";
+}
+
+TEST(CaveMeshChecks, VertexCrossingBoundIsTheMarginPlusRounding) {
+  EXPECT_DOUBLE_EQ(vertex_crossing_bound(0.0, 0.0), 16.0 * 0x1p-53);
+  EXPECT_DOUBLE_EQ(vertex_crossing_bound(0x1p-10, 1000.0), 0x1p-10 + 8.0 * 0x1p-53 * 1002.0);
 }
 
 TEST(CaveMeshChecks, TriangleCubeSpansTheCubeItCameFrom) {

@@ -11,6 +11,10 @@
 //                                    twins may differ where samples change side, see below)
 //   volume.mesh_vs_field.cpu         solid: |CGAL volume - rock samples| against the cut-cube
 //                                    bound of compare/checks/cave_mesh.hpp
+//   spec.vertex_crossing.cpu         ref<double>'s vertices against the field (cave_mesh.hpp): on an
+//                                    edge whose endpoints differ in rock, within δ + 8u·(m + 2) of the
+//                                    linear interpolant's crossing (the midpoint at the pad or with
+//                                    midpoint placement); the count of vertices that are not (must be 0)
 //   normals.angle_*.cpu              seed's central differences vs the analytic gradient (degrees)
 //   parity.topology.{float,gpu}_vs_double   triangles (by edge keys) in one mesh only that no side
 //                                    change explains (must be 0): a sample that is rock in one
@@ -190,7 +194,7 @@ void add_block_mesh_checks(const Block& block, const Mesh& mesh, const std::stri
 void add_volume_check(const Block& block, const BlockMeshes& meshes, const MeshReport& report, CaseResult& result) {
   if (!block.params.solid) return;
   if (!report.cgal.volume) {
-    result.checks.push_back(skipped_check("volume.mesh_vs_field.cpu", "CGAL gives no volume for an open mesh"));
+    result.checks.push_back(not_applicable_check("volume.mesh_vs_field.cpu", "CGAL gives no volume for an open mesh"));
     return;
   }
   const FieldVolume field = volume_bound_from_field(meshes.density, block.params.threshold);
@@ -199,6 +203,18 @@ void add_volume_check(const Block& block, const BlockMeshes& meshes, const MeshR
       fmt::format("mesh volume {:.6g} vs {} rock samples (lattice units³); bound: Σ max(k, 8 - k)/8 over the {} cubes "
                   "the surface cuts (k rock corners)",
                   *report.cgal.volume, field.rock_samples, field.cut_cubes)));
+}
+
+void add_crossing_check(const Block& block, const BlockMeshes& meshes, CaseResult& result) {
+  const VertexCrossings crossings =
+      vertex_crossings(meshes.truth, meshes.density, block.params.threshold, lattice_origin(block.params),
+                       block.placement == EdgePlacement::linear);
+  result.checks.push_back(bounded_check(
+      "spec.vertex_crossing.cpu", double(crossings.not_crossing + crossings.off_crossing), 0.0, std::nullopt,
+      fmt::format("vertices of {} on an edge the surface does not cross ({}) or off the crossing by more than "
+                  "δ + 8u·(m + 2) ({}); largest distance {:.3g} lattice units, {:.3g} of its bound",
+                  crossings.vertices, crossings.not_crossing, crossings.off_crossing, crossings.max_distance,
+                  crossings.max_bound_ratio)));
 }
 
 void add_normal_checks(const Block& block, const Mesh& mesh, CaseResult& result) {
@@ -332,13 +348,14 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   add_block_mesh_checks(block, meshes.truth, "cpu", result, cpu_report);
   add_expected_triangles(expect, meshes.truth.triangles.size(), "cpu", result);
   add_volume_check(block, meshes, cpu_report, result);
+  add_crossing_check(block, meshes, result);
   if (!block.volume) add_normal_checks(block, meshes.truth, result);  // normals of the seed's noise
   add_vs_double(block, meshes, meshes.single, "float_vs_double", result);
   write_mesh_artifact(meshes.truth, "mesh.cpu." + block.mesh_format,
                       fmt::format("cpu mesh, {} triangles", meshes.truth.triangles.size()), options, result);
 
   if (block.mesher == Mesher::cubes) {
-    result.checks.push_back(skipped_check("parity.gpu", "the seed's marching cubes has no GPU twin: it is kept on the "
+    result.checks.push_back(not_applicable_check("parity.gpu", "the seed's marching cubes has no GPU twin: it is kept on the "
                                                         "CPU as the variant whose holes the checks must catch"));
     return;
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "compare/checks/error_model.hpp"
@@ -15,10 +16,13 @@ namespace gt {
 
 template <class Real>
 std::vector<KeyTriangle> key_triangles(const TriangleMesh<Real>& mesh) {
+  const auto key_of = [&mesh](std::uint32_t vertex) {
+    return vertex < mesh.edge_keys.size() ? mesh.edge_keys[vertex] : missing_vertex_key;
+  };
   std::vector<KeyTriangle> keyed;
   keyed.reserve(mesh.triangles.size());
   for (const auto& triangle : mesh.triangles) {
-    KeyTriangle keys = {mesh.edge_keys[triangle[0]], mesh.edge_keys[triangle[1]], mesh.edge_keys[triangle[2]]};
+    KeyTriangle keys = {key_of(triangle[0]), key_of(triangle[1]), key_of(triangle[2])};
     std::rotate(keys.begin(), std::min_element(keys.begin(), keys.end()), keys.end());
     keyed.push_back(keys);
   }
@@ -126,7 +130,8 @@ std::size_t border_edges_off_box(const TriangleMesh<Real>& mesh, const LatticeBo
   std::size_t off_box = 0;
   for (const auto& edge : border_edges(mesh)) {
     bool on_a_face = false;
-    for (int axis = 0; axis < 3 && !on_a_face; ++axis) {
+    const bool keyed = edge[0] < mesh.edge_keys.size() && edge[1] < mesh.edge_keys.size();  // else off the box
+    for (int axis = 0; axis < 3 && keyed && !on_a_face; ++axis) {
       for (const std::int64_t plane : {box.low[axis], box.high[axis]}) {
         on_a_face = on_a_face || (key_on_plane(mesh.edge_keys[edge[0]], axis, plane) &&
                                   key_on_plane(mesh.edge_keys[edge[1]], axis, plane));
@@ -184,6 +189,55 @@ FieldVolume volume_bound_from_field(const Volume<double>& density, double thresh
     }
   }
   return volume;
+}
+
+double vertex_crossing_bound(double margin, double magnitude) {
+  return margin + 8.0 * unit_roundoff_double * (magnitude + 2.0);
+}
+
+VertexCrossings vertex_crossings(const Mesh& mesh, const Volume<double>& density, double threshold,
+                                 const std::array<std::int64_t, 3>& origin, bool linear_placement) {
+  // The sample at a global lattice point, none in the pad.
+  const auto sample = [&](const std::array<std::int64_t, 3>& point) -> std::optional<double> {
+    std::array<std::int64_t, 3> local{};
+    for (int axis = 0; axis < 3; ++axis) local[axis] = point[axis] - origin[axis];
+    if (local[0] < 0 || local[1] < 0 || local[2] < 0 || local[0] >= density.nx || local[1] >= density.ny ||
+        local[2] >= density.nz) {
+      return std::nullopt;
+    }
+    return density.at(int(local[0]), int(local[1]), int(local[2]));
+  };
+  const auto rock = [threshold](const std::optional<double>& value) { return value && *value < threshold; };
+  VertexCrossings crossings;
+  crossings.vertices = mesh.edge_keys.size();
+  for (std::size_t vertex = 0; vertex < mesh.edge_keys.size(); ++vertex) {
+    const LatticeEdge edge = lattice_edge_from_key(mesh.edge_keys[vertex]);
+    std::array<std::int64_t, 3> upper = edge.lower_point;
+    double magnitude = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      upper[axis] += (edge.direction >> axis) & 1;
+      magnitude = std::max({magnitude, std::abs(double(edge.lower_point[axis])), std::abs(double(upper[axis]))});
+    }
+    const std::optional<double> lower_value = sample(edge.lower_point);
+    const std::optional<double> upper_value = sample(upper);
+    if (rock(lower_value) == rock(upper_value)) {
+      ++crossings.not_crossing;
+      continue;
+    }
+    const bool interpolated = linear_placement && lower_value && upper_value;
+    const double t = interpolated ? (threshold - *lower_value) / (*upper_value - *lower_value) : 0.5;
+    const double margin = interpolated ? edge_margin(edge.lower_point, edge.direction) : 0.0;
+    double distance = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double crossing = double(edge.lower_point[axis]) + t * double((edge.direction >> axis) & 1);
+      distance = std::max(distance, std::abs(mesh.positions[vertex][axis] - crossing));
+    }
+    const double ratio = distance / vertex_crossing_bound(margin, magnitude);
+    crossings.off_crossing += ratio > 1.0 ? 1 : 0;
+    crossings.max_distance = std::max(crossings.max_distance, distance);
+    crossings.max_bound_ratio = std::max(crossings.max_bound_ratio, ratio);
+  }
+  return crossings;
 }
 
 template std::vector<KeyTriangle> key_triangles(const TriangleMesh<float>&);

@@ -20,6 +20,20 @@
 // alike: marching tetrahedra puts no triangle there). Summed over cubes the estimate is the number
 // of rock samples (each sample is a corner of 8 cubes; pad samples are air) and the bound is
 // Σ max(k, 8 - k)/8 over cut cubes: about (surface area) · spacing, so it shrinks with the spacing.
+// Vertices against the field (vertex_crossings): the mesh's specification says where each vertex
+// sits, and the check asks the field, not a mesher: a vertex keyed to lattice edge a -> b = a + d
+// must lie on an edge the surface crosses (exactly one endpoint rock: value < threshold, samples
+// outside the volume are the air pad) at the crossing of the linear interpolant,
+//   c = a + t*·d,  t* = (θ - v_a)/(v_b - v_a)      (both endpoints samples, linear placement)
+//   c = a + d/2                                    (an endpoint in the pad, or midpoint placement)
+// A mesher in double may stand off c (∞-norm, lattice units) by at most
+//   δ (the clamp to [δ, 1 - δ], core/params/cave.hpp edge_margin; linear placement only)
+//   + 3u (t's subtraction, subtraction and division) + u·(m + 1) (the position's rounding)
+//   + 3u + u·(m + 1) (this check's own t* and c)
+// for m the largest |coordinate| of the edge and u = 2^-53; vertex_crossing_bound doubles the
+// rounding terms for slack: 8u·(m + 2). A vertex placed from the wrong end of its edge (1 - t*) or
+// meshed at another threshold stands off by a sizeable fraction of its edge. Only meshes in double
+// are held to it (a float mesh's density errs by ε, parity.vertex_model's business).
 #pragma once
 
 #include <array>
@@ -38,6 +52,10 @@
 namespace gt {
 
 using KeyTriangle = std::array<std::uint64_t, 3>;
+
+// The key key_triangles gives a corner whose index names no vertex (a broken GPU mesh): no lattice
+// edge has it (keys use 63 bits), so such a triangle differs from every real one.
+inline constexpr std::uint64_t missing_vertex_key = ~std::uint64_t{0};
 
 template <class Real>
 std::vector<KeyTriangle> key_triangles(const TriangleMesh<Real>& mesh);
@@ -111,5 +129,22 @@ struct FieldVolume {
 
 // For a solid (air-padded) block: rock iff value < threshold, pad samples air.
 FieldVolume volume_bound_from_field(const Volume<double>& density, double threshold);
+
+struct VertexCrossings {
+  std::size_t vertices = 0;
+  std::size_t not_crossing = 0;     // keyed to an edge whose endpoints are both rock or both air
+  std::size_t off_crossing = 0;     // on a crossing edge, farther than vertex_crossing_bound from c
+  double max_distance = 0.0;        // largest ∞-norm distance from c over crossing edges (lattice units)
+  double max_bound_ratio = 0.0;     // largest distance / vertex_crossing_bound
+};
+
+// The bound of the file comment for a mesh in double: the edge's margin (linear placement with
+// both endpoints samples, else 0) + 8u·(m + 2).
+double vertex_crossing_bound(double margin, double magnitude);
+
+// Every vertex of `mesh` (keyed) against the field: sample (0, 0, 0) of `density` is global lattice
+// point `origin`; `linear_placement` false: midpoints everywhere.
+VertexCrossings vertex_crossings(const Mesh& mesh, const Volume<double>& density, double threshold,
+                                 const std::array<std::int64_t, 3>& origin, bool linear_placement);
 
 }  // namespace gt
