@@ -2,8 +2,28 @@
 // case table; the order of the output is specified in marching_tetrahedra.hpp.
 #include "reference/cave/marching_tetrahedra.hpp"
 
+#include <utility>
+
+#include "core/mutant.hpp"
+
 namespace gt::reference {
 namespace {
+
+using CaseTable = std::array<TetCase, 16>;
+
+// The table the walk reads: tet_case_table, or under one of issue 11's both-twins mutants the
+// table with its bug (the GPU twin makes the same change in gpu/shaders/cave/tetrahedra.glsl).
+CaseTable walked_case_table() {
+  CaseTable table = tet_case_table;
+  if (mutant_active("cave.marching_tetrahedra.quad_half")) table[5].triangle_count = 1;
+  if (mutant_active("cave.marching_tetrahedra.complement_unreversed")) table[9] = table[6];
+  if (mutant_active("cave.marching_tetrahedra.winding_reversed")) {
+    for (TetCase& tet_case : table) {
+      for (auto& triangle : tet_case.triangles) std::swap(triangle[1], triangle[2]);
+    }
+  }
+  return table;
+}
 
 // Bit v of the result is bit kuhn_tetrahedra[tet][v] of the cube's rock corners.
 unsigned tet_code(unsigned cube_rock_corners, int tet) {
@@ -20,8 +40,9 @@ CornerPair cube_edge(int tet, int edge) {
 }
 
 template <class Real>
-void add_tet_triangles(CaveMeshBuilder<Real>& builder, const LatticePoint& cube, unsigned rock_corners, int tet) {
-  const TetCase& tet_case = tet_case_table[tet_code(rock_corners, tet)];
+void add_tet_triangles(CaveMeshBuilder<Real>& builder, const CaseTable& table, const LatticePoint& cube,
+                       unsigned rock_corners, int tet) {
+  const TetCase& tet_case = table[tet_code(rock_corners, tet)];
   for (int triangle = 0; triangle < tet_case.triangle_count; ++triangle) {
     const auto& edges = tet_case.triangles[triangle];
     builder.add_triangle(cube, {cube_edge(tet, edges[0]), cube_edge(tet, edges[1]), cube_edge(tet, edges[2])});
@@ -34,10 +55,11 @@ template <class Real>
 TriangleMesh<Real> marching_tetrahedra(const Volume<Real>& density, Real threshold, bool solid,
                                        const std::array<std::int64_t, 3>& lattice_origin, EdgePlacement placement) {
   CaveMeshBuilder<Real> builder("marching tetrahedra", density, threshold, solid, lattice_origin, placement);
-  for_each_cube(builder, [&builder](const LatticePoint& cube) {
+  const CaseTable table = walked_case_table();
+  for_each_cube(builder, [&builder, &table](const LatticePoint& cube) {
     const unsigned rock_corners = builder.rock_corners(cube);
     if (rock_corners == 0 || rock_corners == 0xFFu) return;
-    for (int tet = 0; tet < 6; ++tet) add_tet_triangles(builder, cube, rock_corners, tet);
+    for (int tet = 0; tet < 6; ++tet) add_tet_triangles(builder, table, cube, rock_corners, tet);
   });
   return builder.take_mesh();
 }

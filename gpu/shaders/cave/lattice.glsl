@@ -25,7 +25,23 @@ ivec3 corner_offset(int corner) { return ivec3(corner & 1, (corner >> 1) & 1, co
 
 bool is_pad(ivec3 point) { return any(lessThan(point, ivec3(0))) || any(greaterThanEqual(point, sample_counts.xyz)); }
 
-bool is_rock(ivec3 point) { return !is_pad(point) && density[sample_index(point)] < threshold; }
+// The threshold the mesher compares with (the block's, or under the both-twins mutant of issue 11
+// its negation, as reference/cave/lattice_cubes.cpp does).
+float rock_threshold() {
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_THRESHOLD_NEGATED
+  return -threshold;
+#else
+  return threshold;
+#endif
+}
+
+bool is_rock(ivec3 point) {
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_THRESHOLD_INCLUSIVE
+  return !is_pad(point) && density[sample_index(point)] <= rock_threshold();  // mutant (issue 11, GPU only)
+#else
+  return !is_pad(point) && density[sample_index(point)] < rock_threshold();
+#endif
+}
 
 // Bit c set iff corner c of the cube is rock.
 uint rock_corners(ivec3 cube) {
@@ -50,9 +66,17 @@ float edge_parameter(ivec3 lower, ivec3 step) {
   if (linear_placement == 0u || is_pad(lower) || is_pad(upper)) return 0.5;
   precise float lower_value = density[sample_index(lower)];
   precise float upper_value = density[sample_index(upper)];
-  precise float t = (threshold - lower_value) / (upper_value - lower_value);
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_T_FROM_UPPER
+  precise float t = (rock_threshold() - upper_value) / (lower_value - upper_value);  // mutant (issue 11, GPU only)
+#else
+  precise float t = (rock_threshold() - lower_value) / (upper_value - lower_value);
+#endif
   float margin = edge_margin(lattice_origin.xyz + lower, step);
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_VERTEX_WRONG_END
+  return 1.0 - clamp(t, margin, 1.0 - margin);  // mutant (issue 11, both twins): measured from the upper end
+#else
   return clamp(t, margin, 1.0 - margin);
+#endif
 }
 
 vec3 vertex_position(ivec3 lower, int direction) {

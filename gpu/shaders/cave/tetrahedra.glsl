@@ -28,7 +28,13 @@
 #include "cave/lattice.glsl"
 
 // Cube corners of tetrahedron t: [4t .. 4t + 3].
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_KUHN_VERTEX
+// Mutant (issue 11, GPU only): T0 written with corner 5 for 3, a second copy of T1's corners, so
+// the cube is not tiled (every corner pair still nests: all buffers stay in range).
+const int KUHN_TETRAHEDRA[24] = int[24](0, 1, 5, 7, 0, 5, 1, 7, 0, 3, 2, 7, 0, 2, 6, 7, 0, 4, 5, 7, 0, 6, 4, 7);
+#else
 const int KUHN_TETRAHEDRA[24] = int[24](0, 1, 3, 7, 0, 5, 1, 7, 0, 3, 2, 7, 0, 2, 6, 7, 0, 4, 5, 7, 0, 6, 4, 7);
+#endif
 
 // Tet edge e joins tet vertices [2e] and [2e + 1].
 const int TET_EDGES[12] = int[12](0, 1, 0, 2, 0, 3, 1, 2, 1, 3, 2, 3);
@@ -38,7 +44,11 @@ const int TET_EDGES[12] = int[12](0, 1, 0, 2, 0, 3, 1, 2, 1, 3, 2, 3);
 const int TET_TRIANGLE_COUNT[16] = int[16](0, 1, 1, 2, 1, 2, 2, 1, 1, 2, 2, 1, 2, 1, 1, 0);
 const int TET_TRIANGLE_EDGES[96] = int[96](
     0, 0, 0, 0, 0, 0,   // 0: all air
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_CASE_FLIPPED
+    0, 2, 1, 0, 0, 0,   // 1, mutant (issue 11, GPU only): wound the other way
+#else
     0, 1, 2, 0, 0, 0,   // 1
+#endif
     0, 4, 3, 0, 0, 0,   // 2
     1, 2, 4, 1, 4, 3,   // 3: quad (e02, e03, e13, e12)
     1, 3, 5, 0, 0, 0,   // 4
@@ -54,17 +64,36 @@ const int TET_TRIANGLE_EDGES[96] = int[96](
     0, 2, 1, 0, 0, 0,   // 14 = 15 - 1
     0, 0, 0, 0, 0, 0);  // 15: all rock
 
+// Mutants of issue 11 in both twins (the reference applies the same change to its table,
+// reference/cave/marching_tetrahedra.cpp): the table as the walk reads it.
+int walked_triangle_count(uint code) {
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_QUAD_HALF
+  if (code == 5u) return 1;  // the quad of code 5 loses its second triangle: holes
+#endif
+  return TET_TRIANGLE_COUNT[code];
+}
+
+int walked_tet_edge(uint code, int triangle, int corner) {
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_COMPLEMENT_UNREVERSED
+  if (code == 9u) code = 6u;  // 9 = 15 - 6 copied from 6 without reversing its polygon
+#endif
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_WINDING_REVERSED
+  if (corner != 0) corner = 3 - corner;  // every triangle's corners 0, 2, 1: normals into the rock
+#endif
+  return TET_TRIANGLE_EDGES[6 * int(code) + 3 * triangle + corner];
+}
+
 uint tet_code(uint rock, int tet) {
   uint code = 0u;
   for (int vertex = 0; vertex < 4; ++vertex) code |= ((rock >> uint(KUHN_TETRAHEDRA[4 * tet + vertex])) & 1u) << uint(vertex);
   return code;
 }
 
-int tet_triangle_count(uint code) { return TET_TRIANGLE_COUNT[code]; }
+int tet_triangle_count(uint code) { return walked_triangle_count(code); }
 
 // The cube edge under a triangle corner: (lower corner, upper corner).
 ivec2 corner_edge(int tet, uint code, int triangle, int corner) {
-  int tet_edge = TET_TRIANGLE_EDGES[6 * int(code) + 3 * triangle + corner];
+  int tet_edge = walked_tet_edge(code, triangle, corner);
   int first = KUHN_TETRAHEDRA[4 * tet + TET_EDGES[2 * tet_edge]];
   int second = KUHN_TETRAHEDRA[4 * tet + TET_EDGES[2 * tet_edge + 1]];
   return first < second ? ivec2(first, second) : ivec2(second, first);

@@ -1,0 +1,45 @@
+// Mutants of the cave twins; see compare/mutants/mutants.hpp. The bugs live in
+// gpu/shaders/cave/{tetrahedra,lattice}.glsl (#ifdef GT_MUTANT_CAVE_...) and, for both_twins, also
+// in reference/cave/{marching_tetrahedra,lattice_cubes}.cpp (mutant_active("cave....")). Cases are
+// the small probe blocks of datasets/cases/cave.json (8³ to 12³ cells: CGAL and OpenMesh on a few
+// thousand triangles per backend).
+#include "compare/mutants/mutants.hpp"
+
+namespace gt {
+
+std::vector<Mutant> cave_mutants() {
+  return {
+      // One twin (the GPU shaders): the GPU mesh leaves ref<float>'s, parity.*.gpu_vs_float fails.
+      {"cave.marching_tetrahedra.gpu_case_flipped", MutantKind::one_twin,
+       "GLSL case table: code 1's triangle written (e01, e03, e02) instead of (e01, e02, e03), wound into the rock",
+       {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      {"cave.marching_tetrahedra.gpu_t_from_upper", MutantKind::one_twin,
+       "GLSL edge parameter t = (θ - v_b)/(v_a - v_b) measured from the upper end but applied from the lower",
+       {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      {"cave.marching_tetrahedra.gpu_threshold_inclusive", MutantKind::one_twin,
+       "GLSL rock test density <= threshold instead of < (samples exactly at the threshold become rock)",
+       {"cave.marching_tetrahedra.open.block12"}},
+      {"cave.marching_tetrahedra.gpu_kuhn_vertex", MutantKind::one_twin,
+       "GLSL Kuhn split: tetrahedron T0 written {0,1,5,7} (T1's corners) instead of {0,1,3,7}",
+       {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      // Both twins: they agree; a mesh invariant (mesh.*) or the vertices against the field
+      // (spec.vertex_crossing.cpu) fails.
+      {"cave.marching_tetrahedra.winding_reversed", MutantKind::both_twins,
+       "every triangle's corners taken 0, 2, 1 in both twins: normals point into the rock",
+       {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      {"cave.marching_tetrahedra.complement_unreversed", MutantKind::both_twins,
+       "case 9 = 15 - 6 copied from case 6 without reversing its quad in both twins",
+       {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      {"cave.marching_tetrahedra.quad_half", MutantKind::both_twins,
+       "case 5's quad emits only its first triangle in both twins (triangle count 1): holes",
+       {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      {"cave.marching_tetrahedra.threshold_negated", MutantKind::both_twins,
+       "the threshold's sign flipped in both meshers (rock iff density < -θ)",
+       {"cave.marching_tetrahedra.mutant_probe.solid8_threshold"}},
+      {"cave.marching_tetrahedra.vertex_wrong_end", MutantKind::both_twins,
+       "the vertex placed at 1 - t, measured from the upper end of its edge, in both twins",
+       {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+  };
+}
+
+}  // namespace gt
