@@ -335,6 +335,7 @@ void add_divergence(const FieldTwin::Stepping& stepping, const ReferenceRuns& ru
   add_series("ref<float>", "float", runs.float_path, true);
   if (gpu) add_series("GPU", "gpu", gpu->path, false);
   if (options.report_dir.empty()) return;
+  std::filesystem::create_directories(options.report_dir / result.name);
   std::string reason;
   if (auto artifact = plot_series(plot, options.report_dir, result.name + "/parity.png",
                                   "distance from ref<double> at the checkpoints: GPU (solid), ref<float> (dashed)",

@@ -210,29 +210,32 @@ gt::CaseResult run_case(const gt::PreparedTwin& prepared) {
 
 class ThermalFieldTwinShadow : public gt::testing::GlTest {};
 
-TEST_F(ThermalFieldTwinShadow, ShadowChecksPassForTheTwinsAndFailForAGpuThatIsOff) {
+TEST_F(ThermalFieldTwinShadow, ShadowChecksPassForBothTwins) {
   for (const char* name : {"erosion.thermal", "erosion.thermal_jako"}) {
     SCOPED_TRACE(name);
-    auto prepared = prepare(name, {{"iterations", 12}, {"talus_angle", 35.0}}, small_cone());
-    const auto result = run_case(prepared);
+    const auto result = run_case(prepare(name, {{"iterations", 12}, {"talus_angle", 35.0}}, small_cone()));
     EXPECT_TRUE(result.error.empty()) << result.error;
     for (const char* check : {"parity.shadow.max_abs.gpu_vs_float", "parity.shadow.max_abs_multi.gpu_vs_float",
                               "mass.moved_first_iteration.cpu", "determinism.gpu"}) {
       EXPECT_EQ(find_check(result, check).status, gt::Outcome::pass) << check << ": " << find_check(result, check).detail;
     }
-    // The same twin whose GPU result is off by 1 mm in one cell after every step.
-    const auto make_gpu = prepared.twin.make_gpu;
-    prepared.twin.make_gpu = [make_gpu] {
-      auto runner = make_gpu();
-      runner.result = [result = runner.result] {
-        auto heights = result();
-        heights.values[5] += 1e-3f;
-        return heights;
-      };
-      return runner;
-    };
-    EXPECT_EQ(find_check(run_case(prepared), "parity.shadow.max_abs.gpu_vs_float").status, gt::Outcome::fail);
   }
+}
+
+// The same twin whose GPU result is off by 1 mm in one cell whenever it is read.
+TEST_F(ThermalFieldTwinShadow, ShadowCheckFailsForAGpuThatIsOff) {
+  auto prepared = prepare("erosion.thermal", {{"iterations", 12}, {"talus_angle", 35.0}}, small_cone());
+  const auto make_gpu = prepared.twin.make_gpu;
+  prepared.twin.make_gpu = [make_gpu] {
+    auto runner = make_gpu();
+    runner.result = [result = runner.result] {
+      auto heights = result();
+      heights.values[5] += 1e-3f;
+      return heights;
+    };
+    return runner;
+  };
+  EXPECT_EQ(find_check(run_case(prepared), "parity.shadow.max_abs.gpu_vs_float").status, gt::Outcome::fail);
 }
 
 TEST(ThermalFieldTwin, RefusesATwinThatIsNeitherGeneratedNorSteppable) {
