@@ -18,8 +18,9 @@
 // Devices: llvmpipe (where this suite runs) divides and takes square roots with correctly rounded
 // instructions, so the shaders' float operations are the reference's bit for bit. GLSL 4.50 §4.7.1
 // only promises 2.5 ulp for those; on another device the one-step comparison falls back to the
-// driver's model (compare/algorithms/pipes.cpp, one_step_bounds): 32 float roundings of the
-// field's scale.
+// driver's model (compare/checks/pipe_error_model.hpp, pipe_rounding_growth): 32 float roundings
+// of the field's scale. The driver's shadow steps (the GPU loaded with ref<float>'s state) and
+// their a-priori bound (pipe_shadow_bounds) are tested here too, with a mutant they must catch.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +29,8 @@
 
 #include <gtest/gtest.h>
 
+#include "compare/checks/pipe_error_model.hpp"
+#include "core/mutant.hpp"
 #include "core/params/hydraulic.hpp"
 #include "core/rng.hpp"
 #include "gpu/erosion/pipes.hpp"
@@ -218,7 +221,7 @@ TEST_P(PipesGpuOneStep, MatchesTheFloatReference) {
 
   // Exact on llvmpipe; elsewhere 32 float roundings of each field's scale (see the top).
   const bool exact = context->info().renderer.find("llvmpipe") != std::string::npos;
-  auto allowed = [&](const Grid<float>& scale) { return exact ? 0.0 : 32 * float_roundoff * largest_abs(scale, mask); };
+  auto allowed = [&](const Grid<float>& scale) { return exact ? 0.0 : gt::pipe_rounding_growth(1, largest_abs(scale, mask)); };
   EXPECT_LE(largest_difference(actual.water, expected.water, mask), allowed(expected.water));
   EXPECT_LE(largest_difference(actual.sediment, expected.sediment, mask), allowed(expected.sediment));
   EXPECT_LE(largest_difference(actual.regolith, expected.regolith, mask), allowed(expected.regolith));
@@ -231,7 +234,7 @@ TEST_P(PipesGpuOneStep, MatchesTheFloatReference) {
       largest_flux = std::max(largest_flux, static_cast<double>(expected.outflow[i][k]));
     }
   }
-  EXPECT_LE(flux_difference, exact ? 0.0 : 32 * float_roundoff * largest_flux);
+  EXPECT_LE(flux_difference, exact ? 0.0 : gt::pipe_rounding_growth(1, largest_flux));
 
   // The terrain: ref<float> rounds b at each write (erosion, and the regolith exchange), at most
   // u·|b| each; the GPU keeps b0 + Δb, Δb rounded at most u·|Δb| per write.
@@ -245,7 +248,7 @@ TEST_P(PipesGpuOneStep, MatchesTheFloatReference) {
     deposited = std::max(deposited, change);
     const double bound = writes * float_roundoff * (std::abs(static_cast<double>(expected.terrain.values[i])) +
                                                     std::abs(change)) +
-                         (exact ? 0.0 : 32 * float_roundoff * std::abs(change));
+                         (exact ? 0.0 : gt::pipe_rounding_growth(1, std::abs(change)));
     EXPECT_LE(std::abs(actual.terrain.values[i] - expected.terrain.values[i]), bound) << "cell " << i;
     terrain_bound_volume += bound * constants.cell_area;
   }
@@ -402,7 +405,7 @@ TEST_F(PipesGpu, StepsFollowTheDoubleReferenceAtAHighBase) {
     Grid<double> change = exact.terrain;
     for (std::size_t i = 0; i < change.size(); ++i) change.values[i] -= initial.terrain.values[i];
     const double scale = largest_abs(exact.water, mask) + largest_abs(change, mask) + largest_abs(exact.sediment, mask);
-    const double model = checkpoint * 32 * float_roundoff * scale;
+    const double model = gt::pipe_rounding_growth(checkpoint, scale);
     const double water = largest_difference(actual.water, exact.water, mask);
     const double terrain = largest_difference(actual.terrain, exact.terrain, mask);
     const double sediment = largest_difference(actual.sediment, exact.sediment, mask);
@@ -416,6 +419,68 @@ TEST_F(PipesGpu, StepsFollowTheDoubleReferenceAtAHighBase) {
       EXPECT_GT(float_terrain, model) << "ref<float> should show the float trap here";
     }
   }
+}
+
+// The driver's shadow step: ref<float>'s state after 30 steps of rain on the 500 m slope loaded
+// into the GPU (its floats as the base b0, Δb = 0), both stepped once; every field stays within the
+// a-priori bound of pipe_shadow_bounds. With the B pipe dropped in the outflow shader (a registered
+// one_twin mutant) the flux and the water leave that bound far behind.
+struct ShadowRun {
+  gt::PipeShadowBounds distance;  // max |gpu − ref<float>| per field
+  gt::PipeShadowBounds bound;
+};
+
+ShadowRun shadow_run(const std::string& mutant, int steps) {
+  const auto initial = slope_state(32, 24, 500.0);
+  HydraulicForcing forcing;
+  forcing.sources = {{20, 12, 0.2}};
+  auto params = slope_params();
+  params.evaporation_rate = 0.2;
+  const auto constants = gt::pipe_constants(params, initial.terrain);
+  gt::reference::PipeErosion<float> run_up(gt::cast_pipe_state<float>(initial), constants, forcing);
+  run_up.run(30);
+  const auto start = run_up.state();
+  gt::set_active_mutant(mutant);
+  gt::gpu::PipeErosion gpu(initial, constants, forcing, false);
+  gt::set_active_mutant("");
+  gpu.upload(gt::cast_pipe_state<double>(start));
+  gt::reference::PipeErosion<float> reference(start, constants, forcing);
+  gpu.run(steps);
+  reference.run(steps);
+  const auto actual = gpu.state();
+  const auto& expected = reference.state();
+  const auto& mask = initial.terrain;
+  ShadowRun run;
+  run.bound = gt::pipe_shadow_bounds(gt::pipe_shadow_scales(start, constants), constants, steps);
+  run.distance.terrain = largest_difference(actual.terrain, expected.terrain, mask);
+  run.distance.water = largest_difference(actual.water, expected.water, mask);
+  run.distance.sediment = largest_difference(actual.sediment, expected.sediment, mask);
+  run.distance.velocity = std::max(largest_difference(actual.velocity_x, expected.velocity_x, mask),
+                                   largest_difference(actual.velocity_y, expected.velocity_y, mask));
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    for (int k = 0; k < 4; ++k) {
+      run.distance.flux = std::max(run.distance.flux, std::abs(actual.outflow[i][k] - expected.outflow[i][k]));
+    }
+  }
+  return run;
+}
+
+TEST_F(PipesGpu, ShadowStepFromTheFloatStateStaysWithinItsBound) {
+  // One step, where the driver grades it (after several the worst case is too wide to grade).
+  const auto run = shadow_run("", 1);
+  EXPECT_LE(run.distance.terrain, run.bound.terrain);
+  EXPECT_LE(run.distance.water, run.bound.water);
+  EXPECT_LE(run.distance.sediment, run.bound.sediment);
+  EXPECT_LE(run.distance.velocity, run.bound.velocity);
+  EXPECT_LE(run.distance.flux, run.bound.flux);
+  // At a 500 m base ref<float> rounds every surface: the twins do differ, within the bound.
+  EXPECT_GT(run.distance.flux, 0.0);
+}
+
+TEST_F(PipesGpu, ShadowStepsCatchADroppedPipe) {
+  const auto run = shadow_run("erosion.pipe.gpu_drops_bottom_pipe", 1);
+  EXPECT_GT(run.distance.flux, run.bound.flux);
+  EXPECT_GT(run.distance.water, run.bound.water);
 }
 
 TEST_F(PipesGpu, WaterLedgerClosesAndNothingTurnsNegative) {

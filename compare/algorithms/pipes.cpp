@@ -12,40 +12,49 @@
 //                  high ground (a rain map in m/s, added to the uniform rain_rate).
 //   source_rate    one point source of that many m³/s at (source_x, source_y) (shares of the grid's
 //                  width and height); 0 = none. A source on a no-data cell is refused.
-//   checkpoints    how many states along the run the GPU is compared with ref<double>.
+//   checkpoints    how many states along the run the shadow steps start from and the GPU is
+//                  compared with ref<double> at.
 //
-// Checks (backend cpu = ref<double>, cpu_float = ref<float>, gpu = the GPU twin):
+// Checks (backend cpu = ref<double>, cpu_float = ref<float>, gpu = the GPU twin). Every bound is
+// fixed before the run from an error model (compare/checks/pipe_error_model.hpp); no check grades
+// a run against its own measurements.
+//   mass.water_added.{cpu,cpu_float,gpu}  max over steps of |water the twin's additions put into
+//                  its depths − asked| / (W_0 + asked), asked = step × (rain × valid area × Δt +
+//                  rain map + sources × Δt) computed on the host from the parameters and forcing;
+//                  bound u·((1 + sources)·steps + 4): the additions' rounding.
+//   mass.evaporation.{cpu,cpu_float,gpu}  max over steps of |evaporated − K/(1 − K)·Σ W_t| /
+//                  (Σ W_t/(1 − K)), K = K_e·Δt from the parameters, W_t the water held after step t:
+//                  the rate the twin evaporated at; bound 3u.
 //   mass.water_balance.{cpu,gpu}   max over steps of |W_t − W_0 − added + evaporated + out| divided
-//                  by the water handled, W_0 + rain_in + source_in (added: what the additions of rain
-//                  and sources put into the depths, as rounded): bound 1e-12 (cpu) and 1e-6 (gpu),
-//                  issue 3's figures. Derivation for the cpu bound: each step rounds a cell's depth
-//                  in at most 6 operations of relative error 2^-53 (reference tests), so n steps
-//                  move the total by at most 6n·2^-53 of it: 3.3e-13 at n = 500.
-//   mass.rain_rounding.{cpu,cpu_float,gpu}   informative: |rain + sources asked for − added| over
-//                  the water handled, the water the additions' rounding lost (float: about 1e-6, the
-//                  same small depth rounded the same way in every cell and step).
+//                  by the water handled, W_0 + rain_in + source_in: bound 1e-12 (cpu) and 1e-6 (gpu),
+//                  issue 3's figures (cpu: each step rounds a cell's depth in at most 6 operations of
+//                  relative error 2^-53, so n steps move the total by at most 6n·2^-53 of it: 3.3e-13
+//                  at n = 500). It catches water lost inside a step; the two checks above catch water
+//                  added or evaporated at the wrong rate, which this balance (booking what was
+//                  added and taken) cannot see. cpu_float: informative.
 //   mass.material_drift.{cpu,gpu}  max over steps of |material_drift| divided by the material
 //                  present, M_0 = Σ(|b_0| + s_0 + r_0)·l_x·l_y. Flux transport conserves: bounds
 //                  1e-12 (cpu, as the water) and 1e-6 (gpu). Semi-Lagrangian transport does not
-//                  (it is the method): `warn` beyond 1e-3, never a failure.
-//   mass.material_drift_of_moved.{cpu,cpu_float,gpu}  the same drift divided by the material moved
-//                  (Σ|b_T − b_0|·l_x·l_y + what is suspended or left): informative for flux
-//                  transport; for semi-Lagrangian transport `warn` beyond 1e-3.
+//                  (the method's property, no model of how much): informative.
+//   mass.material_drift_of_moved.{cpu,gpu}  the same drift divided by the material moved
+//                  (Σ|b_T − b_0|·l_x·l_y + what is suspended or left): informative.
 //   mass.material_drift.cpu_float  informative: the float trap of plain float storage (the GPU
 //                  stores heights as base + change, gpu/erosion/pipes.hpp).
 //   stability.pipe_wave_number     the stability number of the pipe scheme's gravity waves (see
-//                  pipe_wave_number below): `warn` above 1, where the flow turns to noise.
-//   stability.max_cfl.{cpu,gpu}    the largest Δt·|u|/l_x or Δt·|v|/l_y of the run: `warn` above 1
-//                  (the K scaling caps it at 1 where a cell drains in one step, so slopes sit at 1).
-//   parity.one_step.{terrain_change,water,sediment}.gpu_vs_float   one step from the initial state,
-//                  max |gpu − ref<float>|, bound 2·max|ref<float> − ref<double>| + a rounding floor
-//                  (add_one_step_parity).
-//   parity.{terrain_change,water,sediment}.gpu_vs_double    at the end of the run, max |gpu − ref<double>|
-//                  of b_T − b_0, d and s, against ref<float>'s own distance from ref<double> (the
-//                  model of how float runs of this flow drift: add_parity_vs_double): bound 4×, `warn`
-//                  up to 16×. RMS informative; a plot shows both distances at the checkpoints.
+//                  pipe_wave_number below), from the parameters: at most 1, no warn band.
+//   stability.max_cfl.{cpu,cpu_float,gpu}  the largest Δt·|u|/l_x or Δt·|v|/l_y of the run: at most
+//                  1 by the K scaling (max_cfl_bound), plus 24 float roundings; no warn band.
+//   parity.shadow.{terrain_change,water,sediment,regolith,velocity,flux}.gpu_vs_float  at every
+//                  checkpoint ref<float>'s state is loaded into the GPU and both take one step:
+//                  max |gpu − ref<float>| against pipe_shadow_bounds of that state (add_shadow_parity;
+//                  regolith only with K_r > 0). …four_steps…: the same after 4 steps, informative.
+//   parity.{terrain_change,water,sediment}.gpu_vs_double  informative: max |gpu − ref<double>| of
+//                  b_T − b_0, d and s at the end, its RMS, and the divergence rate (e-folding per
+//                  step) between the first and last checkpoint; a plot shows GPU and ref<float> at
+//                  every checkpoint. The flow is chaotic: no a-priori bound exists for long runs.
 //   determinism.gpu                cells whose terrain, water or sediment differ in any bit between
 //                  two GPU runs (the second without the ledger's downloads, timed): bound 0.
+// Mutants: compare/mutants/pipe.cpp (killed on the erosion.pipe.mutant_probe.* cases).
 // A state that turns NaN or negative makes the reference (or the GPU's check) throw InputError,
 // and the case ends as an error naming the step, the cell and the CFL number.
 // Pictures: terrain before and after, erosion (blue) and deposition (red), water depth, sediment,
@@ -66,6 +75,7 @@
 #include "compare/algorithm.hpp"
 #include "compare/benchmark.hpp"
 #include "compare/checks/field.hpp"
+#include "compare/checks/pipe_error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
@@ -80,13 +90,10 @@
 namespace gt {
 namespace {
 
-constexpr double float_roundoff = 0x1p-24;
-constexpr double rounded_operations_per_step = 32.0;  // per field and step, see rounding_floor
 constexpr double cpu_water_bound = 1e-12;
 constexpr double gpu_water_bound = 1e-6;
 constexpr double cpu_material_bound = 1e-12;
 constexpr double gpu_material_bound = 1e-6;
-constexpr double semi_lagrangian_warn = 1e-3;
 constexpr double drift_floor = 1e-18;  // log plots: exact zeros drawn here
 
 const ParamSpecs& pipe_specs() {
@@ -104,7 +111,8 @@ const ParamSpecs& pipe_specs() {
         {"source_x", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "the source's column as a share of the width"},
         {"source_y", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "the source's row as a share of the height"},
         {"checkpoints", ParamKind::integer, 16, 1, 1000, {}, "count",
-         "states along the run at which the GPU is compared with ref<double>"},
+         "states along the run from which the GPU takes shadow steps beside ref<float>, and at which it is "
+         "compared with ref<double>"},
     };
     all.insert(all.end(), scenario.begin(), scenario.end());
     return all;
@@ -207,6 +215,7 @@ struct BackendRun {
   std::vector<PipeLedgerEntry> ledger;
   std::vector<Snapshot> checkpoints;
   PipeState<double> final_state;
+  std::vector<PipeState<float>> float_states;  // ref<float> only: its whole state at each checkpoint
 };
 
 // Runs `erosion` (reference or GPU) step by step, taking snapshots at `at`.
@@ -239,7 +248,10 @@ BackendRun run_reference_double(const PipeScenario& scenario, const std::vector<
 BackendRun run_reference_float(const PipeScenario& scenario, const std::vector<int>& at) {
   BackendRun run;
   reference::PipeErosion<float> erosion(cast_pipe_state<float>(scenario.initial), scenario.constants, scenario.forcing);
-  const auto state_of = [](const reference::PipeErosion<float>& e) { return e.state(); };
+  const auto state_of = [&run](const reference::PipeErosion<float>& e) {
+    run.float_states.push_back(e.state());
+    return e.state();
+  };
   step_through(erosion, scenario.params.steps, at, scenario.initial.terrain, state_of, run.checkpoints);
   run.ledger = erosion.ledger();
   return run;
@@ -310,16 +322,54 @@ double pipe_wave_number(const PipeConstants& c) {
 
 bool conservative(const PipeScenario& scenario) { return scenario.constants.transport == SedimentTransport::flux; }
 
-// The ledger checks of one backend (cpu_float: the informative ones); returns the errors per step
-// for the plot.
+double unit_roundoff_of(const std::string& backend) {
+  return backend == "cpu" ? pipe_double_roundoff : pipe_float_roundoff;
+}
+
+// The ledger terms pinned against what was asked, computed on the host from the parameters and
+// the forcing (pipe_error_model.hpp derives both bounds).
+void add_asked_ledger_checks(const PipeScenario& scenario, const BackendRun& run, const std::string& backend,
+                             CaseResult& result) {
+  const double u = unit_roundoff_of(backend);
+  const int steps = run.ledger.back().step;
+  const double asked = pipe_asked_volume_per_step(scenario.constants, scenario.forcing, scenario.initial.terrain);
+  const std::size_t sources = scenario.forcing.sources.size();
+  result.checks.push_back(bounded_check(
+      "mass.water_added." + backend, pipe_water_added_error(run.ledger, asked), pipe_water_added_bound(u, steps, sources),
+      std::nullopt,
+      fmt::format("max over steps of |water the additions added - asked| / (W_0 + asked); asked = step x {:.6g} m³ "
+                  "(rain x valid area x Δt + rain map + sources x Δt, on the host); bound: the additions' rounding, "
+                  "u·((1 + {} sources)·{} steps + 4)",
+                  asked, sources, steps)));
+  const double share = scenario.params.evaporation_rate * scenario.params.time_step;
+  result.checks.push_back(bounded_check(
+      "mass.evaporation." + backend, pipe_evaporation_error(run.ledger, share), pipe_evaporation_bound(u, share),
+      std::nullopt,
+      fmt::format("max over steps of |evaporated - K/(1 - K)·Σ W_t| / (Σ W_t/(1 - K)), K = K_e·Δt = {:.6g} from the "
+                  "parameters; bound 3u (rounding of the kept share, the product, the difference)",
+                  share)));
+}
+
+// The CFL number's bound. |ΔW_X| ≤ ½(Σf_out + Σf_in) (a diagonal's share l_x/l_d ≤ 1), K makes
+// Σf_out·Δt ≤ d_A·l_x·l_y and the inflows arrive in d_B, so |u| = |ΔW_X|/(l_y·d̄) ≤ l_x/Δt:
+// Δt·|u|/l_x ≤ 1 in exact arithmetic, a property of the scheme (the cap sits at 1 where a cell
+// drains in one step). The float twins round K's quotient and product, the flux sums, ΔW_X, d̄
+// and the quotient: about 13 roundings, with GLSL's 2.5-ulp division 4u more; 24u covers them.
+// Above that bound something moved water faster than the K scaling allows: a failure, no warn band.
+constexpr double max_cfl_bound = 1.0 + 24.0 * pipe_float_roundoff;
+
+// The ledger checks of one backend (cpu_float: the water balance and material drift are
+// informative, the asked-for ledger and the CFL bound strict); returns the errors per step for
+// the plot.
 LedgerErrors add_ledger_checks(const PipeScenario& scenario, const BackendRun& run, double material,
                                const std::string& backend, CaseResult& result) {
   const LedgerErrors errors = ledger_errors(run.ledger, material);
   const auto& first = run.ledger.front();
   const auto& last = run.ledger.back();
-  result.checks.push_back(informative_check(
-      "mass.rain_rounding." + backend, std::abs(rain_rounding(last)) / water_handled(last, first),
-      "|rain + sources asked for - water the additions added| / water handled: what rounding the additions lost"));
+  add_asked_ledger_checks(scenario, run, backend, result);
+  result.checks.push_back(bounded_check("stability.max_cfl." + backend, errors.max_cfl, max_cfl_bound, std::nullopt,
+                                        "largest Δt·|u|/l_x or Δt·|v|/l_y of the run: at most 1 by the K scaling, "
+                                        "plus 24 float roundings"));
   if (backend == "cpu_float") {
     result.checks.push_back(informative_check(
         "mass.water_balance.cpu_float", errors.max_water,
@@ -345,28 +395,16 @@ LedgerErrors add_ledger_checks(const PipeScenario& scenario, const BackendRun& r
     result.checks.push_back(informative_check("mass.material_drift_of_moved." + backend, drift_of_moved,
                                               "final drift / material moved (eroded, deposited, suspended, out)"));
   } else {
-    const double unbounded = std::numeric_limits<double>::infinity();
-    result.checks.push_back(bounded_check("mass.material_drift." + backend, errors.max_material, semi_lagrangian_warn,
-                                          unbounded, material_detail + "; semi-Lagrangian transport is not conservative"));
-    result.checks.push_back(bounded_check("mass.material_drift_of_moved." + backend, drift_of_moved,
-                                          semi_lagrangian_warn, unbounded,
-                                          "final drift / material moved; semi-Lagrangian transport creates or destroys "
-                                          "material: warn, a property of the method"));
+    // Semi-Lagrangian transport creates and destroys material by construction (bilinear backtrace
+    // of a field that is not divergence-free); how much depends on the flow, and no error model
+    // bounds it, so the drift is reported, not graded.
+    result.checks.push_back(informative_check("mass.material_drift." + backend, errors.max_material,
+                                              material_detail + "; semi-Lagrangian transport is not conservative"));
+    result.checks.push_back(informative_check("mass.material_drift_of_moved." + backend, drift_of_moved,
+                                              "final drift / material moved; semi-Lagrangian transport creates or "
+                                              "destroys material (the method's property)"));
   }
-  // The K cap gives exactly 1 in exact arithmetic; the float velocity rounds a few times.
-  result.checks.push_back(bounded_check("stability.max_cfl." + backend, errors.max_cfl, 1.0 + 8.0 * float_roundoff,
-                                        std::numeric_limits<double>::infinity(),
-                                        "largest Δt·|u|/l_x or Δt·|v|/l_y of the run (the K scaling caps it at 1 where a "
-                                        "cell drains in one step); above 1 the flow outruns a cell per step"));
   return errors;
-}
-
-double largest_abs(const Grid<double>& field) {
-  double largest = 0.0;
-  for (std::size_t cell = 0; cell < field.size(); ++cell) {
-    if (field.is_valid(cell)) largest = std::max(largest, std::abs(field.values[cell]));
-  }
-  return largest;
 }
 
 // The fields compared between backends: the terrain as its change b − b_0, water, sediment.
@@ -379,42 +417,146 @@ constexpr ComparedField compared_fields[] = {{"terrain_change", &Snapshot::terra
                                              {"water", &Snapshot::water},
                                              {"sediment", &Snapshot::sediment}};
 
-// A floor for the yardsticks below: rounded_operations_per_step float roundings of the field's
-// largest value, so a field that float and double compute alike still gets a few ulps.
-double rounding_floor(const Grid<double>& field) { return rounded_operations_per_step * float_roundoff * largest_abs(field); }
+// Shadow steps: the GPU loaded with ref<float>'s state at each checkpoint, stepped beside a
+// ref<float> started from the same state.
+struct ShadowDistances {
+  double terrain = 0.0, water = 0.0, sediment = 0.0, regolith = 0.0, velocity = 0.0, flux = 0.0;
+};
 
-// One step from the initial state, GPU vs ref<float>. Both are float computations of the same step;
-// they differ from ref<double> by their roundings (the GPU's base-plus-change terrain rounds less,
-// plain float storage more), so by the triangle inequality |gpu − float| ≤ |gpu − double| +
-// |float − double| ≤ 2·max|float − double| + the floor, if the GPU is no less exact than ref<float>.
-// A logic error (a stage missing, a wrong index) shows as far more than that.
-void add_one_step_parity(const PipeScenario& scenario, CaseResult& result) {
-  reference::PipeErosion<float> float_step(cast_pipe_state<float>(scenario.initial), scenario.constants, scenario.forcing);
-  float_step.step();
-  reference::PipeErosion<double> double_step(scenario.initial, scenario.constants, scenario.forcing);
-  double_step.step();
-  gpu::PipeErosion gpu_step(scenario.initial, scenario.constants, scenario.forcing, false);
-  gpu_step.step();
-  const auto& terrain = scenario.initial.terrain;
-  const Snapshot truth = snapshot(double_step.state(), terrain, 1);
-  const Snapshot expected = snapshot(float_step.state(), terrain, 1);
-  const Snapshot measured = snapshot(gpu_step.state(), terrain, 1);
-  for (const auto& [name, field] : compared_fields) {
-    const FieldDifference difference = field_difference(expected.*field, measured.*field);
-    const double float_error = field_difference(truth.*field, expected.*field).max_abs;
-    const double bound = 2.0 * float_error + rounding_floor(truth.*field);
-    result.checks.push_back(bounded_check(
-        fmt::format("parity.one_step.{}.gpu_vs_float", name), difference.max_abs, bound, std::nullopt,
-        fmt::format("max |gpu - ref<float>| after one step, m ({} cells differ in any bit); bound 2·max|ref<float> - "
-                    "ref<double>| ({:.3g}) + 32 float roundings of the field",
-                    difference.differing_bits, float_error)));
+double cell_distance(double a, double b) {
+  const double distance = std::abs(a - b);
+  return std::isnan(distance) ? std::numeric_limits<double>::infinity() : distance;
+}
+
+ShadowDistances shadow_distances(const PipeState<double>& gpu, const PipeState<float>& reference, int pipes) {
+  ShadowDistances d;
+  const auto& mask = reference.terrain;
+  for (std::size_t cell = 0; cell < mask.size(); ++cell) {
+    if (!mask.is_valid(cell)) continue;
+    const auto field = [&](const Grid<double>& a, const Grid<float>& b) {
+      return cell_distance(a.values[cell], static_cast<double>(b.values[cell]));
+    };
+    d.terrain = std::max(d.terrain, field(gpu.terrain, reference.terrain));
+    d.water = std::max(d.water, field(gpu.water, reference.water));
+    d.sediment = std::max(d.sediment, field(gpu.sediment, reference.sediment));
+    d.regolith = std::max(d.regolith, field(gpu.regolith, reference.regolith));
+    d.velocity = std::max({d.velocity, field(gpu.velocity_x, reference.velocity_x), field(gpu.velocity_y, reference.velocity_y)});
+    for (int k = 0; k < pipes; ++k) {
+      d.flux = std::max(d.flux, cell_distance(gpu.outflow[cell][k], static_cast<double>(reference.outflow[cell][k])));
+    }
+  }
+  return d;
+}
+
+// Steps of each shadow run: the distance after one is graded, after shadow_steps reported.
+constexpr int shadow_steps = 4;
+
+struct ShadowField {
+  const char* name;
+  double ShadowDistances::*distance;
+  double PipeShadowBounds::*bound;
+  const char* unit;
+};
+
+constexpr ShadowField shadow_fields[] = {
+    {"terrain_change", &ShadowDistances::terrain, &PipeShadowBounds::terrain, "m"},
+    {"water", &ShadowDistances::water, &PipeShadowBounds::water, "m"},
+    {"sediment", &ShadowDistances::sediment, &PipeShadowBounds::sediment, "m"},
+    {"regolith", &ShadowDistances::regolith, &PipeShadowBounds::regolith, "m"},
+    {"velocity", &ShadowDistances::velocity, &PipeShadowBounds::velocity, "m/s"},
+    {"flux", &ShadowDistances::flux, &PipeShadowBounds::flux, "m³/s"},
+};
+
+// The worst shadow distance of one field over the checkpoints, as a share of its bound.
+struct ShadowWorst {
+  double distance = 0.0, bound = 0.0, ratio = -1.0;
+  int checkpoint = 0;
+  bool all_exact = true;  // every distance 0: bit for bit
+};
+
+void keep_worst(ShadowWorst& worst, double distance, double bound, int checkpoint) {
+  worst.all_exact = worst.all_exact && distance == 0.0;
+  const double ratio = std::isnan(distance) || (bound <= 0.0 && distance > 0.0) ? std::numeric_limits<double>::infinity()
+                       : bound > 0.0                                           ? distance / bound
+                                                                               : 0.0;
+  if (ratio > worst.ratio) {
+    worst.distance = std::isnan(distance) ? std::numeric_limits<double>::infinity() : distance;
+    worst.bound = bound;
+    worst.ratio = ratio;
+    worst.checkpoint = checkpoint;
   }
 }
 
-// N steps, GPU vs ref<double>. Model: the GPU's distance from ref<double> grows as ref<float>'s does —
-// both are float runs of the same equations, and the flow's thresholds (K scaling, capacity above or
-// below s, max(0, ·)) switch on single roundings and carry the switch on, so neither grows by a
-// fixed rate. Bound 4× ref<float>'s distance at the end (or the rounding floor), `warn` up to 16×.
+// Shadow-step parity. At each checkpoint ref<float>'s whole state (terrain, water, sediment,
+// regolith, fluxes, velocity) is loaded into the GPU twin and both are stepped from it; every field
+// is compared cell by cell with a bound fixed from that state before stepping (pipe_shadow_bounds,
+// compare/checks/pipe_error_model.hpp).
+// Decision on the terrain: the GPU stores b = b0 + Δb (the float trap fix); loading takes
+// ref<float>'s floats as the base b0 with Δb = 0, the state a run starts from, so both twins start
+// from the same heights bit for bit and differ only where later roundings land (ref<float> rounds
+// b + d and b − moved at the height's float spacing, the GPU at the change's), which the bound's
+// surface term allows.
+// Graded: one step (parity.shadow.<field>.gpu_vs_float, the worst checkpoint against its own
+// bound), where the model is sharp. After shadow_steps steps the first-order worst case grows by
+// about 10× a step (depth and flux feed each other through K and the heads) and is too wide to
+// grade: that distance is reported (…four_steps…) with the bound in the detail.
+void add_shadow_parity(const PipeScenario& scenario, const BackendRun& float_run, CaseResult& result) {
+  gpu::PipeErosion gpu_twin(scenario.initial, scenario.constants, scenario.forcing, false);
+  std::vector<ShadowWorst> one_step(std::size(shadow_fields)), several(std::size(shadow_fields));
+  for (std::size_t i = 0; i < float_run.float_states.size(); ++i) {
+    const auto& start = float_run.float_states[i];
+    const int checkpoint = float_run.checkpoints[i].step;
+    const PipeShadowScales scales = pipe_shadow_scales(start, scenario.constants);
+    gpu_twin.upload(cast_pipe_state<double>(start));
+    reference::PipeErosion<float> reference_twin(start, scenario.constants, scenario.forcing);
+    for (int step = 1; step <= shadow_steps; ++step) {
+      reference_twin.step();
+      gpu_twin.step();
+      if (step != 1 && step != shadow_steps) continue;
+      const ShadowDistances distances =
+          shadow_distances(gpu_twin.state(), reference_twin.state(), scenario.constants.pipe_count);
+      const PipeShadowBounds bounds = pipe_shadow_bounds(scales, scenario.constants, step);
+      auto& worst = step == 1 ? one_step : several;
+      for (std::size_t f = 0; f < std::size(shadow_fields); ++f) {
+        keep_worst(worst[f], distances.*shadow_fields[f].distance, bounds.*shadow_fields[f].bound, checkpoint);
+      }
+    }
+  }
+  const bool regolith = scenario.constants.regolith_depth > 0.0;
+  const std::size_t states = float_run.float_states.size();
+  for (std::size_t f = 0; f < std::size(shadow_fields); ++f) {
+    const auto& field = shadow_fields[f];
+    if (!regolith && std::string(field.name) == "regolith") continue;
+    const auto& one = one_step[f];
+    result.checks.push_back(bounded_check(
+        fmt::format("parity.shadow.{}.gpu_vs_float", field.name), one.distance, one.bound, std::nullopt,
+        fmt::format("GPU loaded with ref<float>'s state at {} checkpoints, one step beside it: max |gpu - ref<float>| "
+                    "{}{}; worst against its bound at the checkpoint after step {}; bound from that state before "
+                    "stepping (compare/checks/pipe_error_model.hpp)",
+                    states, field.unit, one.all_exact ? ", bit for bit (0) at every checkpoint" : "",
+                    one.checkpoint)));
+    const auto& four = several[f];
+    result.checks.push_back(informative_check(
+        fmt::format("parity.shadow.{}.four_steps.gpu_vs_float", field.name), four.distance,
+        fmt::format("the same after {} steps, {}{}; the first-order worst case there is {:.3g}, too wide to grade",
+                    shadow_steps, field.unit, four.all_exact ? ", bit for bit (0) at every checkpoint" : "",
+                    four.bound)));
+  }
+}
+
+// The e-folding rate of a distance that grows from `first` at step `from` to `last` at step
+// `to`: ln(last/first)/(to − from) per step; 0 when either is 0 or there is one checkpoint.
+double divergence_rate(double first, double last, int from, int to) {
+  if (!(first > 0.0) || !(last > 0.0) || to <= from) return 0.0;
+  return std::log(last / first) / (to - from);
+}
+
+// N steps, GPU and ref<float> vs ref<double>: informative. The flow's thresholds (K scaling,
+// capacity above or below s, max(0, ·)) switch on single roundings and carry the switch on, so
+// two float runs part from the double one at a rate set by the flow (0.1-0.3 m after ~130 steps on
+// the volcano), for which there is no a-priori bound; the twins' agreement is graded by the
+// shadow steps instead. Reported: the distance at the end, its RMS, and the rate at which the
+// GPU's distance grew between the first and the last checkpoint; the plot shows both runs.
 void add_parity_vs_double(const BackendRun& truth, const BackendRun& float_run, const BackendRun& gpu_run,
                           const RunOptions& options, CaseResult& result) {
   SeriesPlot plot{.title = "Distance from ref<double> along the run",
@@ -426,25 +568,32 @@ void add_parity_vs_double(const BackendRun& truth, const BackendRun& float_run, 
   for (const auto& [name, field] : compared_fields) {
     Series gpu_series{.label = std::string(name) + " gpu", .group = name};
     Series float_series{.label = std::string(name) + " ref<float>", .dashed = true, .group = name};
-    FieldDifference gpu_last, float_last;
+    FieldDifference gpu_first, gpu_last, float_last;
     for (std::size_t i = 0; i < shots; ++i) {
       gpu_last = field_difference(truth.checkpoints[i].*field, gpu_run.checkpoints[i].*field);
       float_last = field_difference(truth.checkpoints[i].*field, float_run.checkpoints[i].*field);
+      if (i == 0) gpu_first = gpu_last;
       const double step = truth.checkpoints[i].step;
       gpu_series.x.push_back(step);
       gpu_series.y.push_back(std::max(gpu_last.max_abs, drift_floor));
       float_series.x.push_back(step);
       float_series.y.push_back(std::max(float_last.max_abs, drift_floor));
     }
-    const int steps = truth.checkpoints[shots - 1].step;
-    const double yardstick = std::max(float_last.max_abs, rounding_floor(truth.checkpoints[shots - 1].*field));
-    result.checks.push_back(bounded_check(
-        fmt::format("parity.{}.gpu_vs_double", name), gpu_last.max_abs, 4.0 * yardstick, 16.0 * yardstick,
-        fmt::format("max |gpu - ref<double>| after {} steps, m; ref<float> is {:.3g} m away: bound 4× that, warn "
-                    "up to 16×",
-                    steps, float_last.max_abs)));
+    const int from = truth.checkpoints.front().step;
+    const int to = truth.checkpoints[shots - 1].step;
+    result.checks.push_back(informative_check(
+        fmt::format("parity.{}.gpu_vs_double", name), gpu_last.max_abs,
+        fmt::format("max |gpu - ref<double>| after {} steps, m (ref<float>: {:.3g} m); chaotic flow, no bound: the "
+                    "shadow steps grade the twins",
+                    to, float_last.max_abs)));
     result.checks.push_back(informative_check(fmt::format("parity.{}.rms.gpu_vs_double", name), gpu_last.rms,
                                               "RMS of gpu - ref<double> after the run, m"));
+    result.checks.push_back(informative_check(
+        fmt::format("parity.{}.divergence_rate.gpu_vs_double", name),
+        divergence_rate(gpu_first.max_abs, gpu_last.max_abs, from, to),
+        fmt::format("ln(distance at step {} / distance at step {}) per step: how fast the GPU run parts from "
+                    "ref<double>",
+                    to, from)));
     plot.series.push_back(std::move(gpu_series));
     plot.series.push_back(std::move(float_series));
   }
@@ -573,8 +722,11 @@ void run_pipe_case(const PipeScenario& scenario, const RunOptions& options, Case
   if (!options.report_dir.empty()) std::filesystem::create_directories(options.report_dir / result.name);
   const auto at = checkpoint_steps(scenario.params.steps, scenario.checkpoints);
   const double material = material_present(scenario.initial);
+  // Strict, no warn band: the number comes from the case's parameters alone (no rounding in it
+  // worth a margin), and above 1 the scheme's checkerboard mode grows every step — a case that
+  // asks for that is a failed case, not a doubtful one.
   result.checks.push_back(bounded_check(
-      "stability.pipe_wave_number", pipe_wave_number(scenario.constants), 1.0, std::numeric_limits<double>::infinity(),
+      "stability.pipe_wave_number", pipe_wave_number(scenario.constants), 1.0, std::nullopt,
       "Δt·sqrt(A·g/(l_x·l_y)·λ), λ = 1/l_x + 1/l_y with 4 pipes (more with 8): the explicit pipe scheme's "
       "gravity waves are stable up to 1"));
 
@@ -592,7 +744,7 @@ void run_pipe_case(const PipeScenario& scenario, const RunOptions& options, Case
     if (options.progress) options.progress->stage("GPU");
     gpu_run = run_gpu(scenario, at, result);
     errors.emplace_back("gpu", add_ledger_checks(scenario, *gpu_run, material, "gpu", result));
-    add_one_step_parity(scenario, result);
+    add_shadow_parity(scenario, float_run, result);
     add_parity_vs_double(truth, float_run, *gpu_run, options, result);
   } else {
     for (const char* name : {"mass.water_balance.gpu", "mass.material_drift.gpu", "parity.gpu", "determinism.gpu"}) {

@@ -59,6 +59,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 
 namespace gt::gpu {
 namespace {
@@ -166,7 +167,9 @@ std::vector<std::pair<std::size_t, float>> source_depths(const Grid<double>& ter
                                                          const std::vector<PointSource>& sources) {
   std::vector<std::pair<std::size_t, float>> depths;
   for (const auto& source : sources) {
-    const double depth = source.rate * constants.time_step / constants.cell_area;
+    // Mutant erosion.pipe.source_over_length (issue 11): the volume divided by l_x, not l_x·l_y.
+    const double area = mutant_active("erosion.pipe.source_over_length") ? constants.length_x : constants.cell_area;
+    const double depth = source.rate * constants.time_step / area;
     depths.emplace_back(terrain.index(source.x, source.y), static_cast<float>(depth));
   }
   return depths;
@@ -315,6 +318,7 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
     : width_(checked(initial, forcing, constants).terrain.width),
       height_(initial.terrain.height),
       constants_(constants),
+      forcing_(forcing),
       keep_ledger_(keep_ledger),
       rain_depth_(rain_depths(initial.terrain, constants, forcing.rain_map)),
       source_depths_(source_depths(initial.terrain, constants, forcing.sources)),
@@ -348,19 +352,7 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
   if (constants_.thermal_step) {
     thermal_outflow_program_.emplace(ComputeProgram::load("erosion/pipes_thermal_outflow.comp"));
     thermal_gather_program_.emplace(ComputeProgram::load("erosion/pipes_thermal_gather.comp"));
-    thermal_outflows_ = StorageBuffer::from(std::vector<float>(8 * terrain.size(), 0.0f));
   }
-
-  const std::size_t cells = terrain.size();
-  base_.assign(cells, 0.0f);
-  std::vector<CellConstants> constants_per_cell(cells);
-  CompensatedSum base_volume;
-  for (std::size_t cell = 0; cell < cells; ++cell) {
-    base_[cell] = static_cast<float>(terrain.values[cell]);
-    constants_per_cell[cell] = {base_[cell], rain_depth_[cell], flags_[cell], 0u};
-    if (terrain.is_valid(cell)) base_volume.add(static_cast<double>(base_[cell]) * constants_.cell_area);
-  }
-  base_volume_ = base_volume.value();
 
   // Sources grouped by cell, each cell's in the order given: {cell, first, count, 0}.
   std::map<std::size_t, std::vector<float>> by_cell;
@@ -375,39 +367,62 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
   }
   source_cell_count_ = by_cell.size();
   if (source_cell_count_ > 0) sources_program_.emplace(ComputeProgram::load("erosion/pipes_sources.comp"));
+  block_.upload(block_for(constants_, width_, height_, source_cell_count_));
+  source_cells_ = buffer_of(source_cells);
+  source_list_ = buffer_of(grouped_depths);
+  upload(initial);
+}
+
+void PipeErosion::upload(const PipeState<double>& state) {
+  checked(state, forcing_, constants_);
+  const auto& terrain = state.terrain;
+  if (terrain.width != layout_.width || terrain.height != layout_.height || terrain.valid != layout_.valid ||
+      terrain.cell_size_x != layout_.cell_size_x || terrain.cell_size_y != layout_.cell_size_y) {
+    refuse("a state uploaded into a running twin must have the grid and mask it was constructed with");
+  }
+  const std::size_t cells = terrain.size();
+  base_.assign(cells, 0.0f);
+  std::vector<CellConstants> constants_per_cell(cells);
+  CompensatedSum base_volume;
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    base_[cell] = static_cast<float>(terrain.values[cell]);
+    constants_per_cell[cell] = {base_[cell], rain_depth_[cell], flags_[cell], 0u};
+    if (terrain.is_valid(cell)) base_volume.add(static_cast<double>(base_[cell]) * constants_.cell_area);
+  }
+  base_volume_ = base_volume.value();
 
   const std::size_t per_cell = pipe_values_per_cell();
   std::vector<float> water(4 * cells, 0.0f), outflow(per_cell * cells, 0.0f), velocity(2 * cells, 0.0f);
   water_before_.assign(cells, 0.0f);
   for (std::size_t cell = 0; cell < cells; ++cell) {
     if (!terrain.is_valid(cell)) continue;
-    water[4 * cell] = static_cast<float>(initial.water.values[cell]);
+    water[4 * cell] = static_cast<float>(state.water.values[cell]);
     water_before_[cell] = water[4 * cell];
     for (int k = 0; k < constants_.pipe_count; ++k) {
-      outflow[per_cell * cell + k] = static_cast<float>(initial.outflow[cell][k]);
+      outflow[per_cell * cell + k] = static_cast<float>(state.outflow[cell][k]);
     }
-    velocity[2 * cell] = static_cast<float>(initial.velocity_x.values[cell]);
-    velocity[2 * cell + 1] = static_cast<float>(initial.velocity_y.values[cell]);
+    velocity[2 * cell] = static_cast<float>(state.velocity_x.values[cell]);
+    velocity[2 * cell + 1] = static_cast<float>(state.velocity_y.values[cell]);
   }
   const std::vector<float> zeros(cells, 0.0f), zero_vectors(per_cell * cells, 0.0f);
-  block_.upload(block_for(constants_, width_, height_, source_cell_count_));
   cells_ = StorageBuffer::from(constants_per_cell);
   delta_ = StorageBuffer::from(zeros);
   delta_next_ = StorageBuffer::from(zeros);
   water_ = StorageBuffer::from(water);
   outflow_ = StorageBuffer::from(outflow);
   velocity_ = StorageBuffer::from(velocity);
-  sediment_ = StorageBuffer::from(floats_of(initial.sediment, terrain));
+  sediment_ = StorageBuffer::from(floats_of(state.sediment, terrain));
   staying_ = StorageBuffer::from(zeros);
   sent_ = StorageBuffer::from(zero_vectors);
-  regolith_ = StorageBuffer::from(floats_of(initial.regolith, terrain));
+  regolith_ = StorageBuffer::from(floats_of(state.regolith, terrain));
   if (has_regolith(constants_)) {
     regolith_staying_ = StorageBuffer::from(zeros);
     regolith_sent_ = StorageBuffer::from(zero_vectors);
   }
-  source_cells_ = buffer_of(source_cells);
-  source_list_ = buffer_of(grouped_depths);
-
+  if (constants_.thermal_step) thermal_outflows_ = StorageBuffer::from(std::vector<float>(8 * cells, 0.0f));
+  flows_ = PipeFlows{};
+  steps_done_ = 0;
+  ledger_.clear();
   record_ledger(download());
 }
 

@@ -43,6 +43,13 @@ class PipeErosion {
   PipeErosion(const PipeState<double>& initial, const PipeConstants& constants, const HydraulicForcing& forcing = {},
               bool keep_ledger = true);
 
+  // Starts over from `state` with the same constants, forcing and compiled passes, as if constructed
+  // from it: the terrain's floats become the base b0 and the change Δb starts at 0, the ledger
+  // restarts at entry 0 and steps_done() at 0. Refuses what the constructor refuses and a state
+  // whose grid, cell size or mask differs from the constructor's (the rain and the pipes' borders
+  // were derived from those). The driver's shadow steps load ref<float>'s state this way.
+  void upload(const PipeState<double>& state);
+
   // One step (passes_per_step() dispatches); not synchronised: the caller brackets timing with
   // glFinish.
   void step();
@@ -71,6 +78,7 @@ class PipeErosion {
   int width_;
   int height_;
   PipeConstants constants_;
+  HydraulicForcing forcing_;           // for upload()'s refusals
   bool keep_ledger_;
   std::vector<float> rain_depth_;      // Δt·(r + r_map) as uploaded, 0 on no-data cells
   std::vector<std::pair<std::size_t, float>> source_depths_;  // cell, rate·Δt/(l_x·l_y), in the order given

@@ -121,7 +121,11 @@ void main() {
     twice_flow_x = twice_flow_x + diagonal_share.x * diagonal_outflow(out_flux[1], in_flux[1], 0);
     twice_flow_y = twice_flow_y + diagonal_share.y * diagonal_outflow(out_flux[1], in_flux[1], 1);
   }
+#ifdef GT_MUTANT_EROSION_PIPE_GPU_VELOCITY_WITHOUT_HALF
+  precise float flow_x = twice_flow_x;  // issue 11's mutant: ΔW_X without its ½
+#else
   precise float flow_x = 0.5 * twice_flow_x;
+#endif
   precise float flow_y = 0.5 * twice_flow_y;
   precise float mean_depth = ref_max(depth_floor, 0.5 * (depth_before + depth));
   precise float u = flow_x / (length_y * mean_depth);
@@ -140,7 +144,11 @@ void main() {
     moved = -(deposition * (suspended - capacity));
   }
   precise float changed = delta[index] - moved;
+#ifdef GT_MUTANT_EROSION_PIPE_SEDIMENT_GAIN_DOUBLED
+  precise float carried = suspended + 2.0 * moved;  // issue 11's mutant: s gains twice what b loses
+#else
   precise float carried = suspended + moved;
+#endif
 
 #ifdef REGOLITH
   // 5b regolith exchange, after the erosion's terrain change

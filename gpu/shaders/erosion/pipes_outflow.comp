@@ -22,6 +22,9 @@ void main() {
   for (int k = 0; k < pipe_count; ++k) {
     bool outside = exterior(flags, k);
     if (outside && boundary_open == 0u) continue;
+#ifdef GT_MUTANT_EROSION_PIPE_GPU_DROPS_BOTTOM_PIPE
+    if (k == pipe_bottom) continue;  // issue 11's mutant: the B pipe never carries water
+#endif
     precise float head;
     if (outside) {
       head = depth;

@@ -20,7 +20,12 @@ float gathered(ivec2 cell, uint index, uint flags, int carried) {
   for (int k = 0; k < pipe_count; ++k) {
     if (exterior(flags, k)) continue;
     uint slot = pipe_slot(neighbour_index(cell, k), k);
-    received[k / 4][k % 4] = carried == carried_sediment ? sent[slot][opposite(k) % 4] : regolith_sent[slot][opposite(k) % 4];
+#ifdef GT_MUTANT_EROSION_PIPE_GPU_GATHER_WRONG_PIPE
+    int from = k % 4;  // issue 11's mutant: the neighbour's pipe k, not the one towards this cell
+#else
+    int from = opposite(k) % 4;
+#endif
+    received[k / 4][k % 4] = carried == carried_sediment ? sent[slot][from] : regolith_sent[slot][from];
   }
   precise float kept = carried == carried_sediment ? staying[index] : regolith_staying[index];
   precise float total = kept + pipe_total(received);
@@ -86,7 +91,11 @@ void main() {
 #endif
 #else
   vec2 speed = velocity[index];
+#ifdef GT_MUTANT_EROSION_PIPE_GPU_BACKTRACE_DOWNSTREAM
+  precise float displacement_x = speed.x * backtrace_x;  // issue 11's mutant: traced downstream along x
+#else
   precise float displacement_x = -speed.x * backtrace_x;
+#endif
   precise float displacement_y = -speed.y * backtrace_y;
   AxisTaps taps_x = axis_taps(displacement_x);
   AxisTaps taps_y = axis_taps(displacement_y);
@@ -96,6 +105,10 @@ void main() {
 #endif
 #endif
 
+#ifdef GT_MUTANT_EROSION_PIPE_DOUBLE_EVAPORATION
+  precise float evaporated = water[index].z * (2.0 * evaporation_kept - 1.0);  // issue 11's mutant: 2·K_e
+#else
   precise float evaporated = water[index].z * evaporation_kept;
+#endif
   water[index].x = evaporated;
 }

@@ -11,6 +11,10 @@ void main() {
   if (!inside_grid(cell, grid_size)) return;
   uint index = cell_index(cell, grid_size);
   if (!cell_valid(cells[index].flags)) return;  // no-data cells hold d = d_A = d_B = 0
+#ifdef GT_MUTANT_EROSION_PIPE_HALF_RAIN
+  precise float depth = water[index].x + 0.5 * cells[index].rain;  // issue 11's mutant: half the rain
+#else
   precise float depth = water[index].x + cells[index].rain;
+#endif
   water[index].y = depth;
 }
