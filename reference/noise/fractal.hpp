@@ -35,6 +35,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/mutant.hpp"
 #include "core/params/noise_fractal.hpp"
 
 namespace gt::reference {
@@ -57,9 +58,13 @@ Real fbm(const Basis& basis, const FractalTerms<Real>& terms, Real x, Real y, Re
   OctavePoint<Real> point{{x, y, z}};
   Real value = 0;
   Real amplitude = 1;
+  // Mutant noise.fbm.gain_before_sample (issue 11, both twins): each weight updated before its
+  // octave is added, so octave k weighs gain^(k+1) against a normalisation of Σ gain^k.
+  const bool gain_first = mutant_active("noise.fbm.gain_before_sample");
   for (int octave = 0; octave < terms.whole_octaves; ++octave) {
+    if (gain_first) amplitude = amplitude * terms.gain;
     value = value + point.sample(basis) * amplitude;
-    amplitude = amplitude * terms.gain;
+    if (!gain_first) amplitude = amplitude * terms.gain;
     point.advance(terms.lacunarity);
   }
   if (terms.remainder != Real(0)) value = value + terms.remainder * (point.sample(basis) * amplitude);
@@ -81,7 +86,9 @@ Real ridged_multifractal(const Basis& basis, const FractalTerms<Real>& terms, Re
   Real spectral_weight = terms.spectral_ratio;
   for (int octave = 1; octave < terms.whole_octaves; ++octave) {
     point.advance(terms.lacunarity);
-    const Real weight = std::clamp(signal * terms.gain, Real(0), Real(1));
+    // Mutant noise.ridged.unclamped_weight (issue 11, both twins): the weight left unclamped.
+    const Real weight = mutant_active("noise.ridged.unclamped_weight") ? signal * terms.gain
+                                                                       : std::clamp(signal * terms.gain, Real(0), Real(1));
     signal = ridge_signal(basis, point, terms.offset) * weight;
     result = result + signal * spectral_weight;
     spectral_weight = spectral_weight * terms.spectral_ratio;

@@ -51,7 +51,12 @@ int corner_hash(const Permutation& permutation, const Cell<Real>& cell, int cx, 
 
 // Grad's selection: the axes of u and v and their signs.
 int axis_u(int h) { return h < 8 ? 0 : 1; }
-int axis_v(int h) { return h < 4 ? 1 : (h == 12 || h == 14 ? 0 : 2); }
+// Mutant noise.perlin3.grad_select (issue 11, both twins): 13 where 14 belongs, a typo that moves
+// two of Perlin's 16 gradients.
+int axis_v(int h) {
+  const int second_x = mutant_active("noise.perlin3.grad_select") ? 13 : 14;
+  return h < 4 ? 1 : (h == 12 || h == second_x ? 0 : 2);
+}
 bool negate_u(int h) { return (h & 1) != 0; }
 bool negate_v(int h) { return (h & 2) != 0; }
 

@@ -13,14 +13,17 @@
 
 #include <array>
 
+#include "core/mutant.hpp"
 #include "core/noise/permutation.hpp"
 
 namespace gt::reference {
 
-// fade(t) = t³(t(6t − 15) + 10), evaluated as ((t·t)·t)·(t·(t·6 − 15) + 10).
+// fade(t) = t³(t(6t − 15) + 10), evaluated as ((t·t)·t)·(t·(t·6 − 15) + 10). Mutant
+// noise.perlin3.fade_square (issue 11, both twins): t² where t³ belongs (still 0 and 1 at the ends).
 template <class Real>
 Real perlin_fade(Real t) {
-  return t * t * t * (t * (t * Real(6) - Real(15)) + Real(10));
+  const Real cube = mutant_active("noise.perlin3.fade_square") ? t * t : t * t * t;
+  return cube * (t * (t * Real(6) - Real(15)) + Real(10));
 }
 
 // The one interpolation form of both twins: lerp(t, a, b) = a + t·(b − a).

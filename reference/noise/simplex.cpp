@@ -33,6 +33,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "core/mutant.hpp"
+
 namespace gt::reference {
 namespace {
 
@@ -81,13 +83,21 @@ struct Variant<4> {
   static constexpr double scale = 27.0;
 };
 
+// grad3's entry for a hash. Mutant noise.simplex3.grad3_swapped (issue 11, both twins): the
+// table's first two entries exchanged, a transcription slip.
+std::uint32_t grad3_index(std::uint32_t hash) {
+  const std::uint32_t index = hash % 12;
+  if (index < 2 && mutant_active("noise.simplex3.grad3_swapped")) return 1 - index;
+  return index;
+}
+
 template <std::size_t N>
 Lattice<N> corner_gradient(std::uint32_t hash) {
   if constexpr (N == 4) {
     return grad4[hash % 32];
   } else {
     Lattice<N> gradient{};
-    for (std::size_t axis = 0; axis < N; ++axis) gradient[axis] = grad3[hash % 12][axis];
+    for (std::size_t axis = 0; axis < N; ++axis) gradient[axis] = grad3[grad3_index(hash)][axis];
     return gradient;
   }
 }

@@ -27,12 +27,21 @@ struct GtFractalTerms {
 };
 
 float gt_fbm(vec3 p, GtFractalTerms terms) {
+#ifdef GT_MUTANT_NOISE_FBM_GPU_OCTAVE_SHIFT
+  precise vec3 q = p * terms.lacunarity;  // mutant (this twin alone): every octave one lacunarity too high
+#else
   precise vec3 q = p;
+#endif
   precise float value = 0.0;
   precise float amplitude = 1.0;
   for (int octave = 0; octave < terms.whole_octaves; ++octave) {
+#ifdef GT_MUTANT_NOISE_FBM_GAIN_BEFORE_SAMPLE
+    amplitude = amplitude * terms.gain;  // mutant (both twins): weight updated before its octave
+    value = value + FRACTAL_BASIS(q) * amplitude;
+#else
     value = value + FRACTAL_BASIS(q) * amplitude;
     amplitude = amplitude * terms.gain;
+#endif
     q = q * terms.lacunarity;
   }
   if (terms.remainder != 0.0) value = value + terms.remainder * (FRACTAL_BASIS(q) * amplitude);
@@ -54,7 +63,11 @@ float gt_ridged_multifractal(vec3 p, GtFractalTerms terms) {
   precise float spectral_weight = terms.spectral_ratio;
   for (int octave = 1; octave < terms.whole_octaves; ++octave) {
     q = q * terms.lacunarity;
+#ifdef GT_MUTANT_NOISE_RIDGED_UNCLAMPED_WEIGHT
+    precise float weight = signal * terms.gain;  // mutant (both twins): the weight left unclamped
+#else
     precise float weight = clamp(signal * terms.gain, 0.0, 1.0);
+#endif
     signal = gt_ridge_signal(q, terms.offset) * weight;
     result = result + signal * spectral_weight;
     spectral_weight = spectral_weight * terms.spectral_ratio;

@@ -11,9 +11,16 @@
 
 #include "noise/permutation.glsl"
 
-// fade(t) = ((t·t)·t)·(t·(t·6 − 15) + 10)
+// fade(t) = ((t·t)·t)·(t·(t·6 − 15) + 10). Mutants (issue 11): GPU_SMOOTHSTEP_FADE (this twin
+// alone) has Perlin 1985's 3t² − 2t³; FADE_SQUARE (both twins) t² where t³ belongs.
 float gt_perlin_fade(float t) {
+#if defined(GT_MUTANT_NOISE_PERLIN3_GPU_SMOOTHSTEP_FADE)
+  precise float faded = t * t * (3.0 - 2.0 * t);
+#elif defined(GT_MUTANT_NOISE_PERLIN3_FADE_SQUARE)
+  precise float faded = t * t * (t * (t * 6.0 - 15.0) + 10.0);
+#else
   precise float faded = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+#endif
   return faded;
 }
 
@@ -43,7 +50,11 @@ int gt_perlin_corner_hash(ivec3 lattice, ivec3 corner) {
 
 // Grad's selection: the axes of u and v.
 int gt_perlin_axis_u(int h) { return h < 8 ? 0 : 1; }
+#ifdef GT_MUTANT_NOISE_PERLIN3_GRAD_SELECT
+int gt_perlin_axis_v(int h) { return h < 4 ? 1 : ((h == 12 || h == 13) ? 0 : 2); }  // mutant: 13 for 14
+#else
 int gt_perlin_axis_v(int h) { return h < 4 ? 1 : ((h == 12 || h == 14) ? 0 : 2); }
+#endif
 
 float gt_perlin_grad(int h, vec3 offset) {
   float u = offset[gt_perlin_axis_u(h)];

@@ -24,7 +24,11 @@ vec2 gt_perlin_texture_corner_pair(vec3 texel_centre, vec3 local_position, ivec2
   vec2 values;
   for (int cz = 0; cz < 2; ++cz) {
     precise float row = texel_centre.z + float(cz) * GT_PERLIN_TEXEL;
+#ifdef GT_MUTANT_NOISE_PERLIN3_TEXTURE_GPU_DECODE
+    precise vec3 gradient = texture(gt_perlin_texture, vec2(permuted, row)).rgb * 2.0 - 1.0;  // mutant: unorm's usual decode
+#else
     precise vec3 gradient = texture(gt_perlin_texture, vec2(permuted, row)).rgb * 4.0 - 1.0;
+#endif
     precise vec3 offset = local_position - vec3(vec2(corner), float(cz));
     precise float value = gradient.x * offset.x + gradient.y * offset.y + gradient.z * offset.z;
     values[cz] = value;

@@ -150,6 +150,29 @@ float gt_simplex_corner(vec4 g, vec4 d, float kernel_radius_squared) {
   return value;
 }
 
+// Mutant hooks (issue 11; compare/mutants/noise.cpp). GT_MUTANT_NOISE_SIMPLEX3_GRAD3_SWAPPED is
+// also in the reference (both twins); the others are this twin's alone.
+// grad3's entry for a hash; the mutant exchanges the table's first two entries.
+uint gt_simplex_grad3_index(uint hash) {
+  uint index = hash % 12u;
+#ifdef GT_MUTANT_NOISE_SIMPLEX3_GRAD3_SWAPPED
+  if (index < 2u) index = 1u - index;
+#endif
+  return index;
+}
+
+#ifdef GT_MUTANT_NOISE_SIMPLEX2_GPU_KERNEL
+const float GT_SIMPLEX2_KERNEL_RADIUS_SQUARED = 0.6;  // mutant: the 3-D seed kernel in 2-D
+#else
+const float GT_SIMPLEX2_KERNEL_RADIUS_SQUARED = 0.5;
+#endif
+
+#ifdef GT_MUTANT_NOISE_SIMPLEX3_GPU_SKEW
+#define GT_SIMPLEX3_SKEW_FACTOR GT_SIMPLEX_SKEW2  // mutant: the 2-D skew factor in 3-D
+#else
+#define GT_SIMPLEX3_SKEW_FACTOR GT_SIMPLEX_SKEW3
+#endif
+
 // ---- the noises ----
 
 vec3 gt_simplex2_gradient(vec2 p) {
@@ -164,15 +187,15 @@ vec3 gt_simplex2_gradient(vec2 p) {
   for (int corner = 0; corner <= 2; ++corner) {
     ivec2 lattice_step = ivec2(greaterThanEqual(rank, ivec2(2 - corner)));
     precise vec2 corner_offset = (offset0 - vec2(lattice_step)) + vec2(GT_SIMPLEX_CORNER_UNSKEW2[corner]);
-    vec2 g = GT_SIMPLEX_GRAD3[gt_simplex_hash(wrapped + lattice_step) % 12u].xy;
-    total = total + gt_simplex_corner(g, corner_offset, 0.5);
+    vec2 g = GT_SIMPLEX_GRAD3[gt_simplex_grad3_index(gt_simplex_hash(wrapped + lattice_step))].xy;
+    total = total + gt_simplex_corner(g, corner_offset, GT_SIMPLEX2_KERNEL_RADIUS_SQUARED);
   }
   precise vec3 scaled = 70.0 * total;
   return scaled;
 }
 
 vec4 gt_simplex3_gradient(vec3 p, float kernel_radius_squared) {
-  precise float skew = gt_simplex_sum(p) * GT_SIMPLEX_SKEW3;
+  precise float skew = gt_simplex_sum(p) * GT_SIMPLEX3_SKEW_FACTOR;
   precise vec3 skewed = p + vec3(skew);
   ivec3 cell_origin = ivec3(floor(skewed));
   precise float unskew = float((cell_origin.x + cell_origin.y) + cell_origin.z) * GT_SIMPLEX_CORNER_UNSKEW3[1];
@@ -183,7 +206,7 @@ vec4 gt_simplex3_gradient(vec3 p, float kernel_radius_squared) {
   for (int corner = 0; corner <= 3; ++corner) {
     ivec3 lattice_step = ivec3(greaterThanEqual(rank, ivec3(3 - corner)));
     precise vec3 corner_offset = (offset0 - vec3(lattice_step)) + vec3(GT_SIMPLEX_CORNER_UNSKEW3[corner]);
-    vec3 g = GT_SIMPLEX_GRAD3[gt_simplex_hash(wrapped + lattice_step) % 12u];
+    vec3 g = GT_SIMPLEX_GRAD3[gt_simplex_grad3_index(gt_simplex_hash(wrapped + lattice_step))];
     total = total + gt_simplex_corner(g, corner_offset, kernel_radius_squared);
   }
   precise vec4 scaled = 32.0 * total;

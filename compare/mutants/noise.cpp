@@ -1,0 +1,46 @@
+// Mutants of the noise twins; see compare/mutants/mutants.hpp. The bugs live in
+// gpu/shaders/noise/*.glsl (#ifdef GT_MUTANT_NOISE_...) and, for both_twins, also in
+// reference/noise/* (mutant_active("noise....")). Cases are the small ones of
+// datasets/cases/noise.json (at most 160 x 128 samples, one GPU dispatch each).
+#include "compare/mutants/mutants.hpp"
+
+namespace gt {
+
+std::vector<Mutant> noise_mutants() {
+  return {
+      // One twin (the GPU shader): the twins disagree, parity.*.gpu_vs_float fails.
+      {"noise.simplex3.gpu_skew", MutantKind::one_twin,
+       "GLSL 3-D simplex skews with the 2-D factor (sqrt(3) - 1)/2 instead of 1/3",
+       {"noise.simplex3.spec.digest_vectors"}},
+      {"noise.simplex2.gpu_kernel", MutantKind::one_twin,
+       "GLSL 2-D simplex uses seed 004's 3-D kernel radius² 0.6 instead of 0.5",
+       {"noise.simplex2.near_origin"}},
+      {"noise.perlin3.gpu_smoothstep_fade", MutantKind::one_twin,
+       "GLSL improved Perlin fades with Perlin 1985's 3t² - 2t³ instead of 6t⁵ - 15t⁴ + 10t³",
+       {"noise.perlin3.near_origin"}},
+      {"noise.perlin3_texture.gpu_decode", MutantKind::one_twin,
+       "GLSL texture Perlin decodes gradients as rgb·2 - 1 (the usual unorm decode) instead of rgb·4 - 1",
+       {"noise.perlin3_texture.near_origin"}},
+      {"noise.fbm.gpu_octave_shift", MutantKind::one_twin,
+       "GLSL fBm starts at p·lacunarity: every octave one lacunarity too high",
+       {"noise.fbm.perlin3"}},
+      // Both twins: they agree, a spec check against published values or an invariant fails.
+      {"noise.simplex3.grad3_swapped", MutantKind::both_twins,
+       "grad3's first two entries (1,1,0) and (-1,1,0) exchanged in both twins (2-D and 3-D simplex)",
+       {"noise.simplex3.spec.digest_vectors"}},
+      {"noise.perlin3.grad_select", MutantKind::both_twins,
+       "Grad's second axis is x for h = 12 or 13 (typo for 14) in both twins: two of Perlin's gradients move",
+       {"noise.perlin3.near_origin"}},
+      {"noise.perlin3.fade_square", MutantKind::both_twins,
+       "the fade curve has t² where t³ belongs (t²(6t² - 15t + 10)) in both twins",
+       {"noise.perlin3.near_origin"}},
+      {"noise.fbm.gain_before_sample", MutantKind::both_twins,
+       "fBm multiplies the amplitude by the gain before adding its octave in both twins (octave k weighs gain^(k+1))",
+       {"noise.fbm.perlin3"}},
+      {"noise.ridged.unclamped_weight", MutantKind::both_twins,
+       "the ridged multifractal's weight feedback signal·gain is not clamped to [0, 1] in both twins",
+       {"noise.ridged.perlin3"}},
+  };
+}
+
+}  // namespace gt
