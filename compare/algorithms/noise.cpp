@@ -1,7 +1,9 @@
 // The driver's view of the noise functions (issue: noise and terrain synthesis as twins): each
 // function and fractal sum as a generated field on the input's grid, with the error model of
 // float coordinates, and the checks that belong to noise: spec vectors, range, mean, gradient,
-// and the walk away from the origin.
+// the lattice gradients against the published tables (Perlin 2002, Gustavson 2005), fractal sums
+// against Musgrave's formulas written out here, and the walk away from the origin. Mutants that
+// these checks kill (issue 11): compare/mutants/noise.cpp.
 //
 // Error model (absolute, in output units):
 //   coordinates: each float coordinate origin_c + i·step is rounded twice, so it is off by at
@@ -14,6 +16,8 @@
 //   The precision bound (float or GPU vs double) is their sum, strict; beyond it the outcome is
 //   `warn` with the coordinate, as the far-from-origin walk expects. The logic bound (GPU vs
 //   float, same operations, no divisions) is the arithmetic part alone and fails beyond it.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -25,6 +29,7 @@
 #include "compare/checks/threshold.hpp"
 #include "compare/report/plots.hpp"
 #include "core/errors.hpp"
+#include "core/noise/permutation.hpp"
 #include "core/params/noise.hpp"
 #include "gpu/noise/noise_field.hpp"
 #include "reference/noise/noise_field.hpp"
@@ -200,7 +205,7 @@ void add_distribution_checks(const NoiseParams& params, const Grid<double>& fiel
   const auto& sampling = params.sampling;
   const double independent = (sampling.width * sampling.step) * (sampling.height * sampling.step);
   if (independent < 16.0) {
-    result.checks.push_back(skipped_check("spec.mean.cpu", "the grid spans fewer than 16 lattice cells"));
+    result.checks.push_back(not_applicable_check("spec.mean.cpu", "the grid spans fewer than 16 lattice cells"));
     return;
   }
   result.checks.push_back(bounded_check("spec.mean.cpu", std::abs(mean), 4.0 * deviation / std::sqrt(independent),
@@ -216,7 +221,7 @@ void add_gradient_check(const NoiseParams& params, CaseResult& result) {
   const std::array<double, 4> origin = sampling.origin;
   if (!reference::noise_gradient_at(params, origin)) return;
   if (switched_contribution(params) > 0.0) {
-    result.checks.push_back(skipped_check("spec.gradient.cpu",
+    result.checks.push_back(not_applicable_check("spec.gradient.cpu",
                                           "kernel radius² above 0.5 makes the field jump at simplex boundaries "
                                           "(digest 004 §2.2.5): central differences straddle the jumps"));
     return;
@@ -242,6 +247,172 @@ void add_gradient_check(const NoiseParams& params, CaseResult& result) {
   }
   result.checks.push_back(bounded_check("spec.gradient.cpu", worst, bound, std::nullopt,
                                         "analytic gradient vs central differences (h = 1e-4): h²/6·M3 + rounding"));
+}
+
+// The 16 gradients of improved Perlin noise as Perlin 2002 ("Improving noise", §3) lists them: the
+// 12 cube-edge midpoints, padded to 16 with (1,1,0), (0,-1,1), (-1,1,0), (0,-1,-1), indexed by the
+// hash's low 4 bits. Gustavson 2005's grad3 for simplex noise is the first 12, in the same order.
+// Transcribed from the papers for the check below, independently of both twins' tables.
+constexpr std::array<std::array<int, 3>, 16> published_gradients{{{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
+                                                                 {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+                                                                 {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1},
+                                                                 {1, 1, 0}, {0, -1, 1}, {-1, 1, 0}, {0, -1, -1}}};
+
+// Lattice vertices the check visits: integer (skewed, for simplex) coordinates in {-3..4}^n.
+constexpr int lattice_low = -3, lattice_high = 4;
+
+struct LatticeExpectation {
+  std::array<double, 4> point;     // the vertex in noise space
+  std::array<double, 4> expected;  // {value, ∂/∂x, ∂/∂y, ∂/∂z}
+};
+
+// Improved Perlin noise at an integer point: every fade weight is 0 and fade' is 0, so the value is
+// the cell's own corner term g·0 = 0 and the gradient is that corner's g, hashed as Perlin's Java
+// code does: P[P[P[X] + Y] + Z] & 15 with X = x & 255 (P the table doubled, written here & 255).
+LatticeExpectation perlin_vertex(const Permutation& perm, const std::array<int, 3>& vertex) {
+  const auto wrap = [](int value) { return value & 255; };
+  const int hash = perm[wrap(perm[wrap(perm[wrap(vertex[0])] + wrap(vertex[1]))] + wrap(vertex[2]))] & 15;
+  const auto& g = published_gradients[hash];
+  return {{double(vertex[0]), double(vertex[1]), double(vertex[2]), 0.0}, {0.0, double(g[0]), double(g[1]), double(g[2])}};
+}
+
+// Simplex noise at a vertex of its lattice (skewed coordinates i, unskewed x = i - (Σi)·G):
+// every other vertex lies at distance² >= 0.667 (2-D) or 0.75 (3-D) from it, beyond both kernels
+// (0.5, 0.6), so only the vertex's own corner contributes, with d = 0: value 0 and gradient
+// scale·r²⁴·g, g = grad3[hash % 12], hash perm[i + perm[j]] (2-D) or perm[i + perm[j + perm[k]]]
+// (3-D) on the doubled table (Gustavson 2005); scale 70 (2-D) or 32 (3-D); r² 0.5 in 2-D, the
+// case's kernel in 3-D.
+LatticeExpectation simplex_vertex(const Permutation& perm, const std::array<int, 3>& vertex, int dimension,
+                                  double kernel_radius_squared_3d) {
+  const double kernel_radius_squared = dimension == 2 ? 0.5 : kernel_radius_squared_3d;
+  const auto wrap = [](int value) { return value & 255; };
+  const double unskew = (std::sqrt(dimension + 1.0) - 1.0) / std::sqrt(dimension + 1.0) / dimension;  // G
+  const int sum = dimension == 2 ? vertex[0] + vertex[1] : vertex[0] + vertex[1] + vertex[2];
+  const int inner = dimension == 2 ? wrap(vertex[1]) : wrap(wrap(vertex[1]) + perm[wrap(vertex[2])]);
+  const int hash = perm[wrap(wrap(vertex[0]) + perm[inner])] % 12;
+  const double scale = dimension == 2 ? 70.0 : 32.0;
+  const double slope = scale * std::pow(kernel_radius_squared, 4);
+  LatticeExpectation expectation{};
+  for (int axis = 0; axis < dimension; ++axis) {
+    expectation.point[axis] = vertex[axis] - sum * unskew;
+    expectation.expected[axis + 1] = slope * published_gradients[hash][axis];
+  }
+  return expectation;
+}
+
+// spec.lattice_gradient: the value and analytic gradient (double reference) at the lattice
+// vertices in {-3..4}^n against the published gradient tables and hash orders above.
+// Error model: improved Perlin at integer points is exact (weights 0 and 1, corner gradients ±1,
+// a + 0·(b - a) = a): bound 0. Simplex: the vertex x_a = i_a - s·G is rounded, so d = O(4u·|x|)
+// with |x| <= 8 (u = 2^-53), changing the gradient by O(scale·r²³·|d|²) (nothing at first order:
+// -8t³(g·d)d is quadratic in d) and the value by scale·r²⁴·|g|·|d| <= 70·0.0625·1.5·4u·8 ≈ 2e-14;
+// the roundings of the corner arithmetic (about 12 operations on terms <= scale·r²⁴·|g| <= 6.2)
+// add 12u·6.2 ≈ 1e-14. Bound 1e-13, a few times their sum.
+void add_lattice_gradient_check(const NoiseParams& params, CaseResult& result) {
+  if (params.fractal != Fractal::none) return;
+  const bool perlin = params.basis == NoiseBasis::perlin3;
+  if (!perlin && params.basis != NoiseBasis::simplex2 && params.basis != NoiseBasis::simplex3) return;
+  const Permutation perm = seeded_permutation(params.seed);
+  const int dimension = noise_dimension(params.basis);
+  double worst = 0.0;
+  const int z_high = dimension == 2 ? lattice_low : lattice_high;
+  for (int x = lattice_low; x <= lattice_high; ++x) {
+    for (int y = lattice_low; y <= lattice_high; ++y) {
+      for (int z = lattice_low; z <= z_high; ++z) {
+        const std::array<int, 3> vertex = {x, y, dimension == 2 ? 0 : z};
+        const auto expectation = perlin ? perlin_vertex(perm, vertex)
+                                        : simplex_vertex(perm, vertex, dimension, params.kernel_radius_squared);
+        const auto actual = *reference::noise_gradient_at(params, expectation.point);
+        for (int component = 0; component <= dimension; ++component) {
+          worst = std::max(worst, std::abs(actual[component] - expectation.expected[component]));
+        }
+      }
+    }
+  }
+  const double bound = perlin ? 0.0 : 1e-13;
+  result.checks.push_back(bounded_check(
+      "spec.lattice_gradient.cpu", worst, bound, std::nullopt,
+      fmt::format("largest |(value, gradient) - (0, {})| at the {}^{} lattice vertices in [{}, {}]: the published "
+                  "gradient table and hash (Perlin 2002 / Gustavson 2005)",
+                  perlin ? "g" : "scale·r²⁴·g", lattice_high - lattice_low + 1, dimension, lattice_low, lattice_high)));
+}
+
+// Musgrave's fractal sums written out from their published formulas (reference/noise/fractal.hpp
+// states them; this transcription is the check's own): octave k samples the basis b at p·λ^k with
+// weights as closed-form powers, where the twins keep running products.
+double octave_sum(const NoiseParams& params, const std::array<double, 4>& point) {
+  NoiseParams basis_params = params;
+  basis_params.fractal = Fractal::none;
+  const auto& fractal = params.fractal_params;
+  const int whole = static_cast<int>(std::floor(fractal.octaves));
+  const double remainder = fractal.octaves - whole;
+  const auto basis = [&](int octave) {
+    const double frequency = std::pow(fractal.lacunarity, octave);
+    return reference::noise_at(basis_params, {point[0] * frequency, point[1] * frequency, point[2] * frequency, 0.0});
+  };
+  const auto spectral = [&](int octave) { return std::pow(fractal.lacunarity, -fractal.H * octave); };
+  switch (params.fractal) {
+    case Fractal::fbm: {  // Σ_k g^k·b_k / Σ_k g^k, the last octave weighted by the remainder
+      double sum = 0.0, weights = 0.0;
+      for (int octave = 0; octave <= whole; ++octave) {
+        const double share = octave < whole ? 1.0 : remainder;
+        if (share == 0.0) break;
+        sum += share * std::pow(fractal.gain, octave) * basis(octave);
+        weights += share * std::pow(fractal.gain, octave);
+      }
+      return sum / weights;
+    }
+    case Fractal::ridged: {  // s_k = (offset - |b_k|)²·clamp(s_{k-1}·gain, 0, 1), Σ_k s_k·λ^(-Hk)
+      double signal = std::pow(fractal.offset - std::abs(basis(0)), 2);
+      double sum = signal;
+      for (int octave = 1; octave < whole; ++octave) {
+        signal = std::pow(fractal.offset - std::abs(basis(octave)), 2) * std::clamp(signal * fractal.gain, 0.0, 1.0);
+        sum += signal * spectral(octave);
+      }
+      return sum;
+    }
+    case Fractal::hetero_terrain: {  // v = offset + b_0; v += (b_k + offset)·λ^(-Hk)·v
+      double value = fractal.offset + basis(0);
+      for (int octave = 1; octave <= whole; ++octave) {
+        const double share = octave < whole ? 1.0 : remainder;
+        if (share == 0.0) break;
+        value += share * (basis(octave) + fractal.offset) * spectral(octave) * value;
+      }
+      return value;
+    }
+    case Fractal::none: break;
+  }
+  return reference::noise_at(basis_params, point);
+}
+
+// spec.octave_sum: the double reference's fractal sum against octave_sum at up to 400 grid points.
+// Error model: the two differ only by rounding. The octave point p·λ^k is rounded once here and k
+// times by the running product (relative (k + 1)·u, u = 2^-53), weights likewise; octave_sums gives
+// how an error in one octave's basis value grows through the sum (Σ w_k for the values, Σ w_k·λ^k
+// for coordinate errors): bound (n + 2)·(8u·terms·Σw + lipschitz·u·|p|·Σw·λ^k·sqrt(3)), n octaves.
+void add_octave_sum_check(const NoiseParams& params, CaseResult& result) {
+  if (params.fractal == Fractal::none) return;
+  const auto traits = traits_of(params.basis);
+  const auto [weights, weighted_frequencies] = octave_sums(params);
+  constexpr double u = 0x1p-53;
+  const double octaves = std::ceil(params.fractal_params.octaves);
+  const double bound = (octaves + 2.0) * (8.0 * u * traits.arithmetic_terms * weights +
+                                          traits.lipschitz * u * largest_coordinate(params) * weighted_frequencies *
+                                              std::sqrt(3.0));
+  const auto& sampling = params.sampling;
+  const int stride = std::max(1, static_cast<int>(std::sqrt(double(sampling.width) * sampling.height / 400.0)));
+  double worst = 0.0;
+  for (int j = 0; j < sampling.height; j += stride) {
+    for (int i = 0; i < sampling.width; i += stride) {
+      std::array<double, 4> point = sampling.origin;
+      point[0] += i * sampling.step;
+      point[1] += j * sampling.step;
+      worst = std::max(worst, std::abs(reference::noise_at(params, point) - octave_sum(params, point)));
+    }
+  }
+  result.checks.push_back(bounded_check("spec.octave_sum.cpu", worst, bound, std::nullopt,
+                                        "fractal sum vs Musgrave's formula written out with closed-form weights "
+                                        "(rounding of running products vs powers)"));
 }
 
 struct WalkPoint {
@@ -366,6 +537,8 @@ PreparedTwin prepare_noise(NoiseBasis basis, Fractal fractal, const nlohmann::js
   prepared.extra_checks = [params](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     add_distribution_checks(params, reference::noise_field<double>(params, params.sampling.origin), result);
     add_gradient_check(params, result);
+    add_lattice_gradient_check(params, result);
+    add_octave_sum_check(params, result);
     if (!expect.is_object()) return;
     add_point_spec(params, expect, result);
     add_lattice_spec(params, expect, result);
