@@ -34,22 +34,25 @@ void report_stage(const RunOptions& options, const std::string& what) {
   if (options.progress != nullptr) options.progress->stage(what);
 }
 
-// The iterations the shadow steps start from: k·N/8 for k = 0..7, or 0..N-1 when N < 8.
+// The iterations the shadow steps start from: k·N/8 for k = 0..7, 0..N-1 when N < 8, and 0 alone
+// for a run of no iterations (whose shadow step is then the GPU's load and download).
 std::vector<int> shadow_starts(int iterations) {
   std::vector<int> starts;
-  const int count = std::min(iterations, shadow_checkpoints);
+  const int count = std::clamp(iterations, 1, shadow_checkpoints);
   for (int k = 0; k < count; ++k) {
     starts.push_back(static_cast<int>(static_cast<long long>(k) * iterations / count));
   }
   return starts;
 }
 
+// The shadow step's first part (one iteration, none when the run has none) and its whole length.
+int shadow_first(int iterations, int start) { return std::min(1, iterations - start); }
 int shadow_length(int iterations, int start) { return std::min(shadow_iterations, iterations - start); }
 
 // The iterations after which a run's state is kept: the shadow starts, then the end of the run.
 std::vector<int> path_marks(int iterations) {
   std::vector<int> marks = shadow_starts(iterations);
-  marks.push_back(iterations);
+  if (marks.back() != iterations) marks.push_back(iterations);
   return marks;
 }
 
@@ -70,7 +73,7 @@ std::vector<Grid<Real>> step_through(const Stepper<Real>& step, const Grid<Real>
   return states;
 }
 
-// From one checkpoint's state: after one iteration and after shadow_length iterations.
+// From one checkpoint's state: after shadow_first (one) and after shadow_length iterations.
 struct ShadowStep {
   Grid<float> one;
   Grid<float> multi;
@@ -96,10 +99,11 @@ std::vector<ShadowStep> reference_shadow(const FieldTwin::Stepping& stepping, co
   const auto starts = shadow_starts(stepping.iterations);
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const int start = starts[k];
+    const int first = shadow_first(stepping.iterations, start);
     const int length = shadow_length(stepping.iterations, start);
     ShadowStep step;
-    step.one = stepping.reference_float(path[k], start, 1);
-    step.multi = length > 1 ? stepping.reference_float(step.one, start + 1, length - 1) : step.one;
+    step.one = stepping.reference_float(path[k], start, first);
+    step.multi = stepping.reference_float(step.one, start + first, length - first);
     steps.push_back(std::move(step));
   }
   return steps;
@@ -120,13 +124,14 @@ void step_gpu(const FieldTwin::Stepping& stepping, GpuFieldRunner& runner, const
   const auto starts = shadow_starts(stepping.iterations);
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const int start = starts[k];
+    const int first = shadow_first(stepping.iterations, start);
     const int length = shadow_length(stepping.iterations, start);
     ShadowStep step;
     runner.load(float_path[k]);
-    runner.step(start, 1);
+    runner.step(start, first);
     step.one = runner.result();
-    if (length > 1) runner.step(start + 1, length - 1);
-    step.multi = length > 1 ? runner.result() : step.one;
+    runner.step(start + first, length - first);
+    step.multi = runner.result();
     outputs.shadow.push_back(std::move(step));
   }
 }
@@ -256,7 +261,7 @@ void add_shadow_checks(const FieldTwin::Stepping& stepping, const std::vector<Sh
   const auto starts = shadow_starts(stepping.iterations);
   double worst_one = 0.0, worst_multi = 0.0;
   std::size_t differing_one = 0, differing_multi = 0;
-  int longest = 1;
+  int first = 0, longest = 0;
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const auto one = field_difference(expected[k].one, measured[k].one);
     const auto multi = field_difference(expected[k].multi, measured[k].multi);
@@ -264,6 +269,7 @@ void add_shadow_checks(const FieldTwin::Stepping& stepping, const std::vector<Sh
     worst_multi = worse(worst_multi, multi.max_abs / range);
     differing_one += one.differing_bits;
     differing_multi += multi.differing_bits;
+    first = std::max(first, shadow_first(stepping.iterations, starts[k]));
     longest = std::max(longest, shadow_length(stepping.iterations, starts[k]));
   }
   const std::string from = fmt::format("from ref<float>'s state at {} checkpoints (after iterations {})", starts.size(),
@@ -271,11 +277,11 @@ void add_shadow_checks(const FieldTwin::Stepping& stepping, const std::vector<Sh
   const auto bit_exact = [](std::size_t differing) {
     return differing == 0 ? std::string("bit-exact; ") : fmt::format("{} cell-steps differ; ", differing);
   };
-  const auto one_bounds = parity_bounds_same_arithmetic(stepping.additions_per_iteration, magnitude);
+  const auto one_bounds = parity_bounds_same_arithmetic(stepping.additions_per_iteration * first, magnitude);
   result.checks.push_back(bounded_check(
       "parity.shadow.max_abs.gpu_vs_float", worst_one, one_bounds.strict, one_bounds.loose,
-      fmt::format("{}max over checkpoints of |gpu - ref<float>| after one iteration {}; {} ({} additions per cell)",
-                  bit_exact(differing_one), from, one_bounds.model, stepping.additions_per_iteration)));
+      fmt::format("{}max over checkpoints of |gpu - ref<float>| after {} iteration {}; {} ({} additions per cell)",
+                  bit_exact(differing_one), first, from, one_bounds.model, stepping.additions_per_iteration * first)));
   const auto multi_bounds = parity_bounds_same_arithmetic(stepping.additions_per_iteration * longest, magnitude);
   result.checks.push_back(bounded_check(
       "parity.shadow.max_abs_multi.gpu_vs_float", worst_multi, multi_bounds.strict, multi_bounds.loose,
@@ -283,7 +289,9 @@ void add_shadow_checks(const FieldTwin::Stepping& stepping, const std::vector<Sh
                   longest, multi_bounds.model, stepping.additions_per_iteration * longest)));
   result.checks.push_back(informative_check(
       "parity.shadow.cells_differing.gpu_vs_float", static_cast<double>(differing_one),
-      "cells whose bits differ after one iteration, summed over the checkpoints (0 where division rounds correctly)"));
+      fmt::format("cells whose bits differ after {} iteration, summed over the checkpoints (0 where division rounds "
+                  "correctly)",
+                  first)));
 }
 
 // exp of the least-squares slope of ln y over x, over the points with y > 0: the factor by which y
@@ -386,12 +394,7 @@ void add_stepping_parity(const FieldTwin::Stepping& stepping, const Heightmap& i
                          result);
     add_informative_pair("gpu_vs_double", field_difference(runs.cpu, gpu->first), range, stepping.iterations, result);
     add_determinism_check(*gpu, result);
-    if (stepping.iterations > 0) {
-      add_shadow_checks(stepping, runs.shadow, gpu->shadow, range, magnitude, result);
-    } else {
-      skip_checks({"parity.shadow.max_abs.gpu_vs_float", "parity.shadow.max_abs_multi.gpu_vs_float"},
-                  "the run has no iterations to step", result);
-    }
+    add_shadow_checks(stepping, runs.shadow, gpu->shadow, range, magnitude, result);
   } else {
     skip_checks({"parity.max_abs.gpu_vs_float", "parity.rms.gpu_vs_float", "parity.max_abs.gpu_vs_double",
                  "parity.rms.gpu_vs_double", "determinism.gpu", "parity.shadow.max_abs.gpu_vs_float",

@@ -12,7 +12,8 @@
 //   parity.max_abs.{gpu,float}_vs_double, parity.rms.*       (precision bounds)
 // An iterative twin (`stepping`: erosion) is judged by shadow steps: at 8 checkpoints along the run
 // (every iteration of a shorter run) ref<float>'s state is loaded into the GPU, which takes one and
-// then up to 4 iterations, compared cell by cell with ref<float> stepped from the same state:
+// then up to 4 iterations (none for a run of none: load and download alone), compared cell by cell
+// with ref<float> stepped from the same state:
 //   parity.shadow.max_abs.gpu_vs_float         one iteration, max over the checkpoints, relative to
 //                                              the input's height range; bound parity_bounds_same_arithmetic
 //   parity.shadow.max_abs_multi.gpu_vs_float   up to 4 iterations, the same model over their passes
