@@ -66,7 +66,7 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
 std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool gpu_available,
                                          const Environment& environment) {
   std::vector<BenchmarkRow> rows;
-  Progress progress(static_cast<int>(2 * algorithms().size() * options.sizes.size()));
+  Progress progress(static_cast<int>(2 * algorithms().size() * options.sizes.size()), options.quiet);
   for (const auto& algorithm : algorithms()) {
     if (algorithm.benchmark) {
       progress.start_case(static_cast<int>(rows.size()) + 1, "benchmark " + algorithm.name);

@@ -15,6 +15,7 @@ struct BenchmarkOptions {
   std::vector<int> sizes = {256, 512, 1024, 2048};
   int iterations = 10;
   int reps = 3;
+  bool quiet = false;  // no progress lines (--quiet)
 };
 
 std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool gpu_available,

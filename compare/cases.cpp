@@ -27,7 +27,30 @@ std::vector<std::filesystem::path> case_files(const std::filesystem::path& folde
   return files;
 }
 
+// Case names become folder names under --out: lower-case dotted identifiers only, so that no name
+// ("../x", "/abs", "") can write outside the report folder.
+bool is_dotted_identifier(const std::string& name) {
+  if (name.empty() || name.size() > 200 || name.front() == '.' || name.back() == '.') return false;
+  char previous = '.';
+  for (const char c : name) {
+    const bool allowed = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.';
+    if (!allowed || (c == '.' && previous == '.')) return false;
+    previous = c;
+  }
+  return true;
+}
+
 }  // namespace
+
+std::string case_name_part(const std::string& text) {
+  std::string part;
+  for (const char c : text) {
+    const char lower = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+    const bool allowed = (lower >= 'a' && lower <= 'z') || (lower >= '0' && lower <= '9');
+    part += allowed ? lower : '_';
+  }
+  return part.empty() ? "input" : part.substr(0, 100);
+}
 
 CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) {
   if (!entry.is_object()) throw InputError(fmt::format("{}: a case must be a JSON object", origin));
@@ -42,6 +65,11 @@ CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) 
   }
   CaseSpec spec;
   spec.name = entry["name"].get<std::string>();
+  if (!is_dotted_identifier(spec.name)) {
+    throw InputError(fmt::format("{}: case name '{}' must be a dotted identifier of lower-case letters, digits and "
+                                 "'_' (it names the case's folder in the report)",
+                                 origin, spec.name));
+  }
   spec.algorithm = entry["algorithm"].get<std::string>();
   spec.params = entry.value("params", nlohmann::json::object());
   spec.input = entry.value("input", nlohmann::json::object());

@@ -43,6 +43,10 @@ std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std:
 
 CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin);
 
+// `text` (a file name, an algorithm) as one part of a dotted case name: lower case, every other
+// character '_', at most 100 characters, "input" when empty.
+std::string case_name_part(const std::string& text);
+
 // The cases whose names match any of the shell-style patterns (fnmatch), in load order.
 // Throws InputError when a pattern matches nothing, listing how to see the names.
 std::vector<CaseSpec> select_cases(const std::vector<CaseSpec>& cases, const std::vector<std::string>& patterns);

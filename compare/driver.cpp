@@ -14,6 +14,7 @@
 #include "compare/expectations.hpp"
 #include "compare/inputs.hpp"
 #include "compare/mutants/mutants.hpp"
+#include "compare/output_folder.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/report/writers.hpp"
 #include "core/errors.hpp"
@@ -69,7 +70,7 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
       !ad_hoc.input.empty()                      ? std::filesystem::path(ad_hoc.input).stem().string()
       : algorithm.ad_hoc_input != AdHocInput::heightmap ? "params"
                                                         : fmt::format("{}x{}", ad_hoc.width, ad_hoc.height);
-  spec.name = fmt::format("adhoc.{}.{}", ad_hoc.algorithm, input_name);
+  spec.name = fmt::format("adhoc.{}.{}", ad_hoc.algorithm, case_name_part(input_name));
   return spec;
 }
 
@@ -96,6 +97,9 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
       job.prepared = algorithm.prepare(job.resolved, job.input);
     } catch (const InputError& error) {
       throw InputError(fmt::format("case {}: {}", spec.name, error.what()));
+    } catch (const nlohmann::json::exception& error) {
+      // A value of the wrong type in the case ("width": "big"): the reader asked for another kind.
+      throw InputError(fmt::format("case {}: a value has the wrong type: {}", spec.name, error.what()));
     }
     if (spec.origin == ad_hoc_origin) {
       for (const auto& note : job.input.notes) fmt::print(stderr, "groundtruth: {}: {}\n", spec.name, note);
@@ -194,47 +198,6 @@ void print_mutation(const MutationReport& mutation) {
 
 }  // namespace
 
-void check_output_folder(const std::filesystem::path& out) {
-  const auto absolute = std::filesystem::absolute(out).lexically_normal();
-  const auto parent = absolute.has_filename() ? absolute.parent_path() : absolute.parent_path().parent_path();
-  if (!std::filesystem::is_directory(parent)) {
-    throw InputError(fmt::format("output folder {}: its parent {} does not exist; create it first", out.string(),
-                                 parent.string()));
-  }
-  if (!std::filesystem::exists(out)) return;
-  if (!std::filesystem::is_directory(out)) {
-    throw InputError(fmt::format("output {} exists and is not a folder; refusing to overwrite it", out.string()));
-  }
-  if (!std::filesystem::is_empty(out) && !std::filesystem::exists(out / "report.json")) {
-    throw InputError(fmt::format("output folder {} holds files that are not a groundtruth report; refusing to "
-                                 "overwrite them (choose another --out)",
-                                 out.string()));
-  }
-}
-
-void write_folder_atomically(const std::filesystem::path& out,
-                             const std::function<void(const std::filesystem::path&)>& fill) {
-  const auto target = std::filesystem::absolute(out).lexically_normal();
-  const auto base = (target.has_filename() ? target : target.parent_path()).string();
-  const std::filesystem::path staging = fmt::format("{}.tmp-{}", base, getpid());
-  std::filesystem::remove_all(staging);
-  std::filesystem::create_directory(staging);
-  try {
-    fill(staging);
-  } catch (...) {
-    std::filesystem::remove_all(staging);
-    throw;
-  }
-  if (std::filesystem::exists(target)) {
-    const std::filesystem::path previous = fmt::format("{}.old-{}", base, getpid());
-    std::filesystem::rename(target, previous);
-    std::filesystem::rename(staging, target);
-    std::filesystem::remove_all(previous);
-  } else {
-    std::filesystem::rename(staging, target);
-  }
-}
-
 int run_driver(const DriverOptions& options) {
   if (!options.mutant.empty()) set_active_mutant(find_mutant(options.mutant).name);
   const auto specs = options.patterns.empty() && !options.ad_hoc ? std::vector<CaseSpec>{} : selected_specs(options);
@@ -268,7 +231,7 @@ int run_driver(const DriverOptions& options) {
 
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
     run_options.report_dir = folder;
-    Progress progress(static_cast<int>(jobs.size()));
+    Progress progress(static_cast<int>(jobs.size()), options.quiet);
     run_options.progress = &progress;
     for (std::size_t index = 0; index < jobs.size(); ++index) {
       progress.start_case(static_cast<int>(index + 1), jobs[index].spec.name);

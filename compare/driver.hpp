@@ -10,6 +10,7 @@
 
 #include "compare/benchmark.hpp"
 #include "compare/mutation.hpp"
+#include "compare/output_folder.hpp"
 #include "compare/result.hpp"
 #include "gpu/context/context.hpp"
 
@@ -39,6 +40,7 @@ struct DriverOptions {
   std::optional<BenchmarkOptions> benchmark;
   std::string mutant;                    // a registered mutant to activate (compare/mutants/), or empty
   bool require_gpu = false;              // a missing GL context makes every GPU-using case `error`
+  bool quiet = false;                    // no progress lines on stderr
   std::optional<MutationOptions> mutation;  // also run the mutants (report: into OUT/mutants/)
 };
 
@@ -50,14 +52,5 @@ int run_mutants_command(const MutationOptions& options, const std::filesystem::p
 // Runs everything and writes the report; returns the process exit status (0 nothing unexpected
 // failed, 1 something did). Throws InputError for bad usage or input before writing anything.
 int run_driver(const DriverOptions& options);
-
-// Folder handling: throws InputError when `out`'s parent does not exist or `out` exists and is
-// neither empty nor a groundtruth report folder (one holding report.json): never overwrite a
-// user's files.
-void check_output_folder(const std::filesystem::path& out);
-
-// Writes into a fresh sibling folder through `fill`, then swaps it in place of `out`.
-void write_folder_atomically(const std::filesystem::path& out,
-                             const std::function<void(const std::filesystem::path&)>& fill);
 
 }  // namespace gt

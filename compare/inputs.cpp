@@ -18,10 +18,11 @@
 namespace gt {
 namespace {
 
+// Sides beyond 2^20 cells are refused here already; check_grid_fits then weighs the memory.
+constexpr long long largest_generated_side = 1 << 20;
+
 int grid_side(const nlohmann::json& input, const char* key) {
-  const auto side = input.value(key, 128);
-  if (side < 1) throw InputError(fmt::format("input generator: {} = {} must be at least 1", key, side));
-  return side;
+  return static_cast<int>(json_integer(input, key, 128, 1, largest_generated_side, "input generator"));
 }
 
 Heightmap blank_field(const nlohmann::json& input) {
@@ -29,14 +30,13 @@ Heightmap blank_field(const nlohmann::json& input) {
   const int height = grid_side(input, "height");
   check_grid_fits(width, height, 64, "generated input");
   Heightmap field(width, height, 0.0);
-  field.cell_size_x = field.cell_size_y = input.value("cell_size", 1.0);
-  if (!(field.cell_size_x > 0.0)) throw InputError("input generator: cell_size must be positive");
+  field.cell_size_x = field.cell_size_y = json_number(input, "cell_size", 1.0, 1e-9, 1e9, "input generator");
   return field;
 }
 
 void add_noise(Heightmap& field, const nlohmann::json& input) {
-  const double amplitude = input.value("noise", 0.0);
-  const auto seed = input.value("seed", 1u);
+  const double amplitude = json_number(input, "noise", 0.0, 0.0, 1e6, "input generator");
+  const auto seed = static_cast<std::uint32_t>(json_integer(input, "seed", 1, 0, 0xffffffffLL, "input generator"));
   if (amplitude == 0.0) return;
   for (std::size_t i = 0; i < field.size(); ++i) {
     field.values[i] += amplitude * uniform01(random_u32(seed, static_cast<std::uint32_t>(i), 0, 0));
@@ -45,8 +45,8 @@ void add_noise(Heightmap& field, const nlohmann::json& input) {
 
 Heightmap cone(const nlohmann::json& input) {
   Heightmap field = blank_field(input);
-  const double peak = input.value("peak", 100.0);
-  const double radius = input.value("radius", 0.4) * std::min(field.width * field.cell_size_x,
+  const double peak = json_number(input, "peak", 100.0, -1e6, 1e6, "input generator cone");
+  const double radius = json_number(input, "radius", 0.4, 1e-6, 1e3, "input generator cone") * std::min(field.width * field.cell_size_x,
                                                                field.height * field.cell_size_y);
   const double centre_x = 0.5 * field.width * field.cell_size_x;
   const double centre_y = 0.5 * field.height * field.cell_size_y;
@@ -61,7 +61,7 @@ Heightmap cone(const nlohmann::json& input) {
 
 Heightmap step(const nlohmann::json& input) {
   Heightmap field = blank_field(input);
-  const double peak = input.value("peak", 100.0);
+  const double peak = json_number(input, "peak", 100.0, -1e6, 1e6, "input generator step");
   for (int y = 0; y < field.height; ++y) {
     for (int x = 0; x < field.width; ++x) field.at(x, y) = x < field.width / 2 ? 0.0 : peak;
   }
@@ -71,9 +71,8 @@ Heightmap step(const nlohmann::json& input) {
 // A plane rising along +x: base + gradient·x (x in metres from the first column's centre).
 Heightmap slope(const nlohmann::json& input) {
   Heightmap field = blank_field(input);
-  const double base = input.value("base", 0.0);
-  const double gradient = input.value("gradient", 0.05);
-  if (!std::isfinite(base) || !std::isfinite(gradient)) throw InputError("input generator slope: base and gradient must be finite");
+  const double base = json_number(input, "base", 0.0, -1e6, 1e6, "input generator slope");
+  const double gradient = json_number(input, "gradient", 0.05, -1e3, 1e3, "input generator slope");
   for (int y = 0; y < field.height; ++y) {
     for (int x = 0; x < field.width; ++x) field.at(x, y) = base + gradient * x * field.cell_size_x;
   }
@@ -155,8 +154,8 @@ LoadedInput file_input(const nlohmann::json& input, const std::filesystem::path&
   std::filesystem::path path = input["file"].get<std::string>();
   if (path.is_relative()) path = dataset_dir / path;
   HeightmapReadOptions options;
-  options.cell_size = input.value("cell_size", 0.0);
-  options.image_vertical_scale = input.value("vertical_scale", 1.0);
+  options.cell_size = json_number(input, "cell_size", 0.0, 0.0, 1e9, "input file");
+  options.image_vertical_scale = json_number(input, "vertical_scale", 1.0, 1e-9, 1e9, "input file");
   auto file = read_heightmap(path, options);
   LoadedInput loaded;
   loaded.heights = std::move(file.heights);
@@ -168,23 +167,29 @@ LoadedInput file_input(const nlohmann::json& input, const std::filesystem::path&
   return loaded;
 }
 
+// The window [x, y, width, height] read as whole numbers in 64 bits, so that no sum overflows.
 Heightmap cropped(const Heightmap& heights, const nlohmann::json& crop) {
   if (!crop.is_array() || crop.size() != 4) throw InputError("crop must be [x, y, width, height]");
-  const int x0 = crop[0], y0 = crop[1], width = crop[2], height = crop[3];
-  if (x0 < 0 || y0 < 0 || width < 1 || height < 1 || x0 + width > heights.width || y0 + height > heights.height) {
+  const nlohmann::json window = {{"x", crop[0]}, {"y", crop[1]}, {"width", crop[2]}, {"height", crop[3]}};
+  const long long x0 = json_integer(window, "x", 0, 0, heights.width - 1, "crop");
+  const long long y0 = json_integer(window, "y", 0, 0, heights.height - 1, "crop");
+  const long long width = json_integer(window, "width", 1, 1, heights.width, "crop");
+  const long long height = json_integer(window, "height", 1, 1, heights.height, "crop");
+  if (x0 + width > heights.width || y0 + height > heights.height) {
     throw InputError(fmt::format("crop [{}, {}, {}, {}] does not fit the {}x{} input", x0, y0, width, height,
                                  heights.width, heights.height));
   }
   Heightmap out = heights;
-  out.width = width;
-  out.height = height;
-  out.values.assign(static_cast<std::size_t>(width) * height, 0.0);
+  out.width = static_cast<int>(width);
+  out.height = static_cast<int>(height);
+  out.values.assign(static_cast<std::size_t>(width * height), 0.0);
   out.valid.clear();
   if (heights.has_mask()) out.valid.assign(out.values.size(), 1);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
-      out.at(x, y) = heights.at(x0 + x, y0 + y);
-      if (heights.has_mask()) out.valid[out.index(x, y)] = heights.valid[heights.index(x0 + x, y0 + y)];
+      const int source_x = static_cast<int>(x0) + x, source_y = static_cast<int>(y0) + y;
+      out.at(x, y) = heights.at(source_x, source_y);
+      if (heights.has_mask()) out.valid[out.index(x, y)] = heights.valid[heights.index(source_x, source_y)];
     }
   }
   return out;

@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "compare/output_folder.hpp"
+
 extern char** environ;
 
 namespace gt {
@@ -36,8 +38,13 @@ WorkerResult run_worker(const std::vector<std::string>& args, const std::filesys
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);  // its own group: a timeout kills all of it
+  // Its own process group, so that a timeout or an interruption kills all of it; and the default
+  // signal mask, since this process blocks the signals its clean-up thread waits for.
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
   posix_spawnattr_setpgroup(&attributes, 0);
+  sigset_t no_signals;
+  sigemptyset(&no_signals);
+  posix_spawnattr_setsigmask(&attributes, &no_signals);
 
   WorkerResult result;
   const auto started = std::chrono::steady_clock::now();
@@ -46,6 +53,7 @@ WorkerResult run_worker(const std::vector<std::string>& args, const std::filesys
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   if (spawned != 0) return result;
+  set_running_worker(pid);
 
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
   int status = 0;
@@ -58,6 +66,7 @@ WorkerResult run_worker(const std::vector<std::string>& args, const std::filesys
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  set_running_worker(0);
   result.seconds = elapsed();
   result.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return result;

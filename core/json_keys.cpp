@@ -35,4 +35,38 @@ void require_shape(const nlohmann::json& value, const nlohmann::json& shape, con
   }
 }
 
+long long json_integer(const nlohmann::json& object, const std::string& key, long long fallback, long long min,
+                       long long max, const std::string& where) {
+  if (!object.is_object() || !object.contains(key)) return fallback;
+  const auto& value = object[key];
+  const auto refuse = [&](const std::string& why) {
+    return InputError(fmt::format("{}: {} = {} {}; expected a whole number in [{}, {}]", where, key, value.dump(), why,
+                                  min, max));
+  };
+  if (value.is_number_unsigned()) {
+    const auto number = value.get<unsigned long long>();
+    if (number > static_cast<unsigned long long>(max)) throw refuse("is out of range");
+    return static_cast<long long>(number);
+  }
+  if (!value.is_number_integer()) throw refuse(value.is_number() ? "is not whole" : "is not a number");
+  const auto number = value.get<long long>();
+  if (number < min || number > max) throw refuse("is out of range");
+  return number;
+}
+
+double json_number(const nlohmann::json& object, const std::string& key, double fallback, double min, double max,
+                   const std::string& where) {
+  if (!object.is_object() || !object.contains(key)) return fallback;
+  const auto& value = object[key];
+  if (!value.is_number()) {
+    throw InputError(fmt::format("{}: {} = {} is not a number; expected one in [{}, {}]", where, key, value.dump(), min, max));
+  }
+  const double number = value.get<double>();
+  if (!(number >= min && number <= max)) {
+    throw InputError(fmt::format("{}: {} = {} is out of range; expected a number in [{}, {}]", where, key, value.dump(),
+                                 min, max));
+  }
+  return number;
+}
+
 }  // namespace gt

@@ -19,4 +19,15 @@ void require_known_keys(const nlohmann::json& object, const std::vector<std::str
 // array holding one object (every element of the value is such an object).
 void require_shape(const nlohmann::json& value, const nlohmann::json& shape, const std::string& where);
 
+// object[key] as a whole number in [min, max], or `fallback` when the key is absent. Refuses
+// (InputError naming `where` and the key) a value of another type, a fraction, or one outside the
+// range, instead of truncating it: 4294967312 is not read as 16.
+long long json_integer(const nlohmann::json& object, const std::string& key, long long fallback, long long min,
+                       long long max, const std::string& where);
+
+// object[key] as a finite number in [min, max], or `fallback` when absent; refuses other types,
+// NaN and infinities the same way.
+double json_number(const nlohmann::json& object, const std::string& key, double fallback, double min, double max,
+                   const std::string& where);
+
 }  // namespace gt

@@ -976,7 +976,6 @@ TEST(CliRun, ReportFolderIsReplacedWhole) {
   ASSERT_EQ(first.status, 0) << first;
   ASSERT_TRUE(fs::is_regular_file(out / "report.json"));
   EXPECT_NE(read_json(out / "report.json").at("environment").at("gl_platform"), "none");
-  write_text(out / "left-over.txt", "from before\n");  // a report folder with an extra file may be replaced
 
   const RunResult second = run_groundtruth(
       {"run", "erosion.thermal.spec.*", "--backend", "cpu", "--out", out.string()}, work.path());
@@ -984,9 +983,16 @@ TEST(CliRun, ReportFolderIsReplacedWhole) {
   const json report = read_json(out / "report.json");
   ASSERT_TRUE(report.is_object());
   EXPECT_EQ(report.at("environment").at("gl_platform"), "none") << "report.json is not the second run's";
-  EXPECT_FALSE(fs::exists(out / "left-over.txt")) << "the folder was merged into, not replaced";
   EXPECT_EQ(folder_entries(work.path()), std::vector<std::string>{"report"})
       << "staging (report.tmp-*) or previous (report.old-*) folders left beside the report";
+
+  // A file the user put into the report folder since is theirs: the folder is no longer replaced.
+  write_text(out / "my-notes.txt", "from the user\n");
+  const RunResult third = run_groundtruth({"run", "erosion.thermal.spec.*", "--backend", "cpu", "--out", out.string()},
+                                          work.path());
+  EXPECT_EQ(third.status, 2) << third;
+  EXPECT_NE(third.err.find("my-notes.txt was added"), std::string::npos) << third;
+  EXPECT_EQ(read_text(out / "my-notes.txt"), "from the user\n");
 }
 
 // ---- 6. no GPU context -----------------------------------------------------------------------

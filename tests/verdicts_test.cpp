@@ -12,6 +12,7 @@
 #include "tests/support/temporary_folder.hpp"
 
 #include "compare/cases.hpp"
+#include "compare/checks/threshold.hpp"
 #include "compare/expectations.hpp"
 #include "compare/mutants/mutants.hpp"
 #include "compare/result.hpp"
@@ -58,6 +59,13 @@ TEST(Outcomes, SkipsAndInconclusivesDoNotFailTheRunButErrorsDo) {
   EXPECT_FALSE(gt::run_failed(report));
   report.cases[0].error = "GL error";
   EXPECT_TRUE(gt::run_failed(report));
+}
+
+TEST(Outcomes, ABoundWiderThanTheTellableShareIsInconclusive) {
+  // scale 1, a bug of 10 % must still show: a bound of 0.5 cannot tell, one of 0.01 can.
+  EXPECT_EQ(gt::decisive_check("parity.x", 0.0, 0.5, 1.0, 0.1, "m").status, Outcome::inconclusive);
+  EXPECT_EQ(gt::decisive_check("parity.x", 0.6, 0.5, 1.0, 0.1, "m").status, Outcome::fail);
+  EXPECT_EQ(gt::decisive_check("parity.x", 0.0, 0.01, 1.0, 0.1, "m").status, Outcome::pass);
 }
 
 std::vector<gt::CaseSpec> suite_of(std::initializer_list<const char*> names) {

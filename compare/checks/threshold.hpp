@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -18,6 +19,22 @@ inline Check bounded_check(std::string name, double value, double strict, std::o
     check.status = Outcome::pass;
   } else if (loose && value <= *loose) {
     check.status = Outcome::warn;
+  }
+  return check;
+}
+
+// A comparison whose error model may be too wide to mean anything: when the strict bound exceeds
+// `tellable_share` of the field's `scale` (the share below which a real bug still shows, stated by
+// the caller beside the check), a bug of that size would pass too, so the outcome is
+// `inconclusive` rather than a pass; a value beyond the bound still fails.
+inline Check decisive_check(std::string name, double value, double strict, double scale, double tellable_share,
+                            std::string detail) {
+  Check check = bounded_check(std::move(name), value, strict, std::nullopt, std::move(detail));
+  if (check.status == Outcome::pass && strict > tellable_share * scale) {
+    check.status = Outcome::inconclusive;
+    char share[32];
+    std::snprintf(share, sizeof share, "%g", tellable_share);
+    check.detail += std::string(" — inconclusive: the bound exceeds ") + share + " of the field's scale";
   }
   return check;
 }

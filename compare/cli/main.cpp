@@ -12,7 +12,9 @@
 // (check-mesh: 0 watertight and consistently oriented, 1 not, 2 unreadable;
 // diff-image: 0 no pixel fails the neighbourhood-tolerant comparison, 1 some do, 2 bad input;
 // render: 0 written, 2 bad input, a camera inside the mesh or seeing nothing, or no GL context for gpu).
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -41,6 +43,7 @@ struct Shared {
   int cpu_reps = 3;
   int gpu_reps = 5;
   bool require_gpu = false;
+  bool quiet = false;
 };
 
 void add_shared_options(CLI::App& command, Shared& shared, const std::string& default_out) {
@@ -50,6 +53,7 @@ void add_shared_options(CLI::App& command, Shared& shared, const std::string& de
       ->capture_default_str();
   command.add_option("--out", shared.out, "report folder (written atomically; an existing report is replaced)")
       ->capture_default_str();
+  command.add_flag("--quiet", shared.quiet, "no progress lines on stderr");
   command.add_flag("--require-gpu", shared.require_gpu,
                    "a missing GL context or a skipped GPU half makes the case `error` (exit 1) instead of `skip`");
   command.add_option("--cpu-reps", shared.cpu_reps, "timed repetitions of the CPU reference")
@@ -69,23 +73,41 @@ gt::DriverOptions driver_options(const Shared& shared) {
   options.cpu_reps = shared.cpu_reps;
   options.gpu_reps = shared.gpu_reps;
   options.require_gpu = shared.require_gpu;
+  options.quiet = shared.quiet;
   if (options.require_gpu && options.backends == Backends::cpu) {
     throw gt::InputError("--require-gpu and --backend cpu contradict each other: choose one");
   }
   return options;
 }
 
+// One side of "WxH": digits only, at most 65536 (no sign, no overflow: 4294967297 is refused).
+std::optional<int> grid_side(const std::string& digits) {
+  if (digits.empty() || digits.size() > 5 || digits.find_first_not_of("0123456789") != std::string::npos) return {};
+  const int side = std::stoi(digits);
+  if (side < 1 || side > 65536) return {};
+  return side;
+}
+
 // "WxH" -> width and height, each in [1, 65536].
 void parse_grid_size(const std::string& text, gt::AdHocCase& ad_hoc) {
-  int width = 0, height = 0;
-  char separator = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &separator, &height, &rest) != 3 || separator != 'x' ||
-      width < 1 || height < 1 || width > 65536 || height > 65536) {
+  const auto separator = text.find('x');
+  const auto width = separator == std::string::npos ? std::nullopt : grid_side(text.substr(0, separator));
+  const auto height = separator == std::string::npos ? std::nullopt : grid_side(text.substr(separator + 1));
+  if (!width || !height) {
     throw gt::InputError(fmt::format("--size '{}': expected WxH with sides in [1, 65536], e.g. 512x256", text));
   }
-  ad_hoc.width = width;
-  ad_hoc.height = height;
+  ad_hoc.width = *width;
+  ad_hoc.height = *height;
 }
+
+// A number that is finite as well as in range: CLI11's range validators let "nan" through.
+const CLI::Validator finite_number(
+    [](std::string& text) -> std::string {
+      double value = 0.0;
+      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value)) return "'" + text + "' is not a finite number";
+      return {};
+    },
+    "FINITE");
 
 nlohmann::json list_json() {
   nlohmann::json out = {{"algorithms", nlohmann::json::array()}, {"cases", nlohmann::json::array()}};
@@ -142,6 +164,7 @@ void print_mutant_list(const std::vector<gt::Mutant>& selected, bool as_json) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  gt::install_interrupt_cleanup();
   CLI::App app{"groundtruth: CPU references and GPU twins of terrain and cave algorithms, compared"};
   app.require_subcommand(1);
 
@@ -160,7 +183,7 @@ int main(int argc, char** argv) {
   std::string grid_size;
   run->add_option("--size", grid_size, "ad-hoc case of a generator (noise) without --input: the grid, WxH (256x256)");
   run->add_option("--cell-size", ad_hoc.cell_size, "ad-hoc case of a generator: cell size in metres")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_number & CLI::PositiveNumber)
       ->capture_default_str();
   run->add_option("--backend", run_shared.backend, "cpu (references only), gpu, or both")
       ->check(CLI::IsMember({"cpu", "gpu", "both"}))
@@ -224,7 +247,7 @@ int main(int argc, char** argv) {
   diff_image->add_option("--out", diff_options.out,
                          "write the difference heat map here, and <stem>.mask.png beside it");
   diff_image->add_option("--tolerance", diff_options.tolerance, "per-channel tolerance in normalised values (4/255)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_number & CLI::NonNegativeNumber);
 
   gt::RenderOptions render_options;
   auto* render = app.add_subcommand("render", "draw a mesh, or a heightmap as a terrain solid, to a PNG (Phong twins)");
@@ -247,7 +270,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   render->add_option("--distance", render_options.distance,
                      "orbit camera: distance in bounding-box half diagonals (0: the box's sphere fits the view)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_number & CLI::NonNegativeNumber)
       ->capture_default_str();
   render->add_option("--fov", render_options.fov_deg, "vertical field of view, degrees")
       ->check(CLI::Range(1.0, 179.0))
@@ -261,10 +284,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.01, 100.0))
       ->capture_default_str();
   render->add_option("--cell-size", render_options.cell_size, "heightmaps: cell size in metres (0: the file's)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_number & CLI::NonNegativeNumber);
   render->add_option("--image-vertical-scale", render_options.image_vertical_scale,
                      "heightmaps: metres per unit of 8/16-bit images")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_number & CLI::PositiveNumber)
       ->capture_default_str();
 
   try {
@@ -311,13 +334,14 @@ int main(int argc, char** argv) {
     if (report->parsed()) {
       auto options = driver_options(report_shared);
       options.patterns = {"*"};
-      if (!skip_benchmark) options.benchmark = gt::BenchmarkOptions{};
+      if (!skip_benchmark) options.benchmark = gt::BenchmarkOptions{.quiet = report_shared.quiet};
       if (!skip_mutants) {
         options.mutation = gt::MutationOptions{.gl = report_shared.gl, .require_gpu = report_shared.require_gpu};
       }
       return gt::run_driver(options);
     }
     auto options = driver_options(bench_shared);
+    bench_options.quiet = bench_shared.quiet;
     options.benchmark = bench_options;
     return gt::run_driver(options);
   } catch (const gt::InputError& error) {
