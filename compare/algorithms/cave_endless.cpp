@@ -312,7 +312,7 @@ void add_ring_checks(const Path& path, const std::vector<Mesh>& chunks, const Ru
     high_water = std::max(high_water, steps[step].held);
   }
   result.checks.push_back(bounded_check(
-      "ring.window_missing_triangles", double(worst), 0.0, std::numeric_limits<double>::infinity(),
+      "ring.window_missing_triangles", double(worst), 0.0, std::nullopt,
       worst == 0 ? fmt::format("the ring buffer of {} soup vertices kept every triangle of the camera's window",
                                path.max_vertices)
                  : fmt::format("the ring buffer of {} soup vertices had overwritten {} triangles inside the camera's "
@@ -335,11 +335,8 @@ void add_ring_checks(const Path& path, const std::vector<Mesh>& chunks, const Ru
     missing.y.push_back(double(steps[step].window_missing));
   }
   plot.series = {generated, held, missing};
-  std::filesystem::create_directories(options.report_dir / result.name);
-  std::string reason;
-  const auto artifact = plot_series(plot, options.report_dir, result.name + "/ring.png",
-                                    "triangles generated, held by the ring buffer and missing from the window", reason);
-  result.artifacts.push_back(artifact ? *artifact : Artifact{"", "plot", "ring plot unavailable: " + reason});
+  attach_plot(plot, options.report_dir, "ring.png",
+              "triangles generated, held by the ring buffer and missing from the window", result);
 }
 
 // ---- GPU -----------------------------------------------------------------------------------
