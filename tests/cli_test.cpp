@@ -327,8 +327,15 @@ TEST(CliRun, PipeSuiteMeetsTheAcceptanceBounds) {
     transports.insert(transport);
     seed_variant = seed_variant || (params.at("regolith_depth").get<double>() > 0.0 &&
                                     params.at("sediment_diffusion").get<double>() > 0.0);
+    // Inconclusive where the error model of a shadow step is wider than a tenth of the sediment or
+    // the velocity (compare/algorithms/pipes.cpp); the terrain and the water must always be decided.
     const auto status = report_case.at("status").get<std::string>();
-    EXPECT_TRUE(status == "pass" || (status == "warn" && transport == "semi_lagrangian")) << report_case.dump(2);
+    EXPECT_TRUE(status == "pass" || status == "inconclusive") << report_case.dump(2);
+    for (const char* field : {"terrain_change", "water"}) {
+      const json* shadow = find_check(report_case, fmt::format("parity.shadow.{}.gpu_vs_float", field));
+      ASSERT_NE(shadow, nullptr) << field;
+      EXPECT_EQ(shadow->at("status"), "pass") << shadow->dump();
+    }
     expect_check_at_most(report_case, "mass.water_balance.cpu", 1e-12);
     expect_check_at_most(report_case, "mass.water_balance.gpu", 1e-6);
     expect_check_at_most(report_case, "determinism.gpu", 0.0);
@@ -398,7 +405,8 @@ TEST(CliRun, CaveSuiteIsWatertightSeamlessAndCatchesTheHoles) {
     EXPECT_EQ(check_value(path, name), 0.0) << name;
   }
   const json& budget = cases.at("cave.endless.seed_budget");
-  EXPECT_EQ(budget.at("status"), "warn") << "MAX_VERTICES = 200,000 drops window geometry on this path";
+  EXPECT_EQ(budget.at("status"), "fail") << "MAX_VERTICES = 200,000 drops window geometry on this path";
+  EXPECT_FALSE(budget.at("expected_failure").get<std::string>().empty()) << "listed in datasets/expectations.txt";
   EXPECT_GT(check_value(budget, "ring.window_missing_triangles"), 0.0);
 
   for (const char* name : {"mesh.check.bunny00", "mesh.check.elephant", "mesh.check.cow", "mesh.check.elephant_with_holes"}) {

@@ -63,9 +63,10 @@ TEST(Outcomes, SkipsAndInconclusivesDoNotFailTheRunButErrorsDo) {
 
 TEST(Outcomes, ABoundWiderThanTheTellableShareIsInconclusive) {
   // scale 1, a bug of 10 % must still show: a bound of 0.5 cannot tell, one of 0.01 can.
-  EXPECT_EQ(gt::decisive_check("parity.x", 0.0, 0.5, 1.0, 0.1, "m").status, Outcome::inconclusive);
-  EXPECT_EQ(gt::decisive_check("parity.x", 0.6, 0.5, 1.0, 0.1, "m").status, Outcome::fail);
-  EXPECT_EQ(gt::decisive_check("parity.x", 0.0, 0.01, 1.0, 0.1, "m").status, Outcome::pass);
+  EXPECT_EQ(gt::decisive_check("parity.x", 0.0, 0.5, std::nullopt, 1.0, 0.1, "m").status, Outcome::inconclusive);
+  EXPECT_EQ(gt::decisive_check("parity.x", 0.6, 0.5, std::nullopt, 1.0, 0.1, "m").status, Outcome::fail);
+  EXPECT_EQ(gt::decisive_check("parity.x", 0.0, 0.01, std::nullopt, 1.0, 0.1, "m").status, Outcome::pass);
+  EXPECT_EQ(gt::decisive_check("parity.x", 0.0, 0.01, 0.2, 1.0, 0.1, "m").status, Outcome::inconclusive);
 }
 
 std::vector<gt::CaseSpec> suite_of(std::initializer_list<const char*> names) {

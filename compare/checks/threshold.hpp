@@ -23,18 +23,20 @@ inline Check bounded_check(std::string name, double value, double strict, std::o
   return check;
 }
 
-// A comparison whose error model may be too wide to mean anything: when the strict bound exceeds
-// `tellable_share` of the field's `scale` (the share below which a real bug still shows, stated by
-// the caller beside the check), a bug of that size would pass too, so the outcome is
-// `inconclusive` rather than a pass; a value beyond the bound still fails.
-inline Check decisive_check(std::string name, double value, double strict, double scale, double tellable_share,
-                            std::string detail) {
-  Check check = bounded_check(std::move(name), value, strict, std::nullopt, std::move(detail));
-  if (check.status == Outcome::pass && strict > tellable_share * scale) {
+// A comparison whose error model may be too wide to mean anything: when the widest bound it
+// licenses (the loose one if any) exceeds `tellable_share` of the field's `scale` (the share below
+// which a real bug must still show, stated by the caller beside the check), a bug of that size
+// would pass too, so a pass or warn is `inconclusive`; a value beyond every bound still fails.
+inline Check decisive_check(std::string name, double value, double strict, std::optional<double> loose, double scale,
+                            double tellable_share, std::string detail) {
+  Check check = bounded_check(std::move(name), value, strict, loose, std::move(detail));
+  const bool passed = check.status == Outcome::pass || check.status == Outcome::warn;
+  if (passed && loose.value_or(strict) > tellable_share * scale) {
     check.status = Outcome::inconclusive;
-    char share[32];
-    std::snprintf(share, sizeof share, "%g", tellable_share);
-    check.detail += std::string(" — inconclusive: the bound exceeds ") + share + " of the field's scale";
+    char text[160];
+    std::snprintf(text, sizeof text, " — inconclusive: the bound %.3g exceeds %g of the field's scale %.3g",
+                  loose.value_or(strict), tellable_share, scale);
+    check.detail += text;
   }
   return check;
 }
