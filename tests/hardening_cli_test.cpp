@@ -149,9 +149,7 @@ void expect_clean_interruption(int signal_number) {
   const gt::testing::TemporaryFolder work("gt_interrupt");
   const std::string out = (work / "report").string();
   std::vector<std::string> words = {groundtruth, "run", "erosion.pipe.flux.slope500", "--out", out};
-  std::vector<char*> argv;
-  for (auto& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
+  std::vector<char*> argv = gt::testing::argv_of(words);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);

@@ -12,6 +12,7 @@
 #include "gpu/erosion/thermal_jako.hpp"
 #include "reference/erosion/thermal.hpp"
 #include "reference/erosion/thermal_jako.hpp"
+#include "tests/support/masked_terrain.hpp"
 #include "tests/support/printers.hpp"
 #include "tests/support/gl_test.hpp"
 
@@ -20,20 +21,7 @@ namespace {
 using gt::Grid;
 using gt::Neighbourhood;
 
-// 500 m terrain with 40 m of relief on 2 m cells, a masked blob, sides 37 x 23.
-Grid<float> masked_terrain() {
-  Grid<float> field(37, 23);
-  field.cell_size_x = field.cell_size_y = 2.0;
-  field.valid.assign(field.size(), 1);
-  for (int y = 0; y < field.height; ++y) {
-    for (int x = 0; x < field.width; ++x) {
-      const auto bits = gt::random_u32(21, static_cast<std::uint32_t>(field.index(x, y)), 0, 0);
-      field.at(x, y) = 500.0f + 40.0f * gt::uniform01(bits);
-      if ((x - 20) * (x - 20) + (y - 8) * (y - 8) < 10) field.valid[field.index(x, y)] = 0;
-    }
-  }
-  return field;
-}
+Grid<float> masked_terrain() { return gt::testing::masked_terrain(21, 20, 8, 10); }
 
 gt::ThermalConstants constants_for(const Grid<float>& field) {
   gt::ThermalParams params;

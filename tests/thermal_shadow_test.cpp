@@ -24,6 +24,7 @@
 #include "reference/erosion/thermal.hpp"
 #include "reference/erosion/thermal_jako.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/masked_terrain.hpp"
 #include "tests/support/printers.hpp"
 
 namespace {
@@ -31,20 +32,7 @@ namespace {
 using gt::Grid;
 using gt::Neighbourhood;
 
-// 40 m of rough relief over 500 m on 2 m cells, a masked blob, sides 37 x 23 (not multiples of 16).
-Grid<float> masked_terrain() {
-  Grid<float> field(37, 23);
-  field.cell_size_x = field.cell_size_y = 2.0;
-  field.valid.assign(field.size(), 1);
-  for (int y = 0; y < field.height; ++y) {
-    for (int x = 0; x < field.width; ++x) {
-      const auto bits = gt::random_u32(33, static_cast<std::uint32_t>(field.index(x, y)), 0, 0);
-      field.at(x, y) = 500.0f + 40.0f * gt::uniform01(bits);
-      if ((x - 12) * (x - 12) + (y - 14) * (y - 14) < 8) field.valid[field.index(x, y)] = 0;
-    }
-  }
-  return field;
-}
+Grid<float> masked_terrain() { return gt::testing::masked_terrain(33, 12, 14, 8); }
 
 gt::ThermalConstants hydra_constants(const Grid<float>& field) {
   gt::ThermalParams params;

@@ -144,4 +144,16 @@ std::optional<Artifact> plot_series(const SeriesPlot& plot, const std::filesyste
   return Artifact{relative_png, "plot", caption};
 }
 
+void attach_plot(const SeriesPlot& plot, const std::filesystem::path& report_folder, const std::string& file,
+                 const std::string& caption, CaseResult& result) {
+  if (report_folder.empty()) return;
+  std::filesystem::create_directories(report_folder / result.name);
+  std::string reason;
+  if (auto artifact = plot_series(plot, report_folder, result.name + "/" + file, caption, reason)) {
+    result.artifacts.push_back(*artifact);
+  } else {
+    result.notes.push_back(file + " unavailable: " + reason);
+  }
+}
+
 }  // namespace gt

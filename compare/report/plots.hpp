@@ -44,4 +44,10 @@ struct SeriesPlot {
 std::optional<Artifact> plot_series(const SeriesPlot& plot, const std::filesystem::path& report_folder,
                                     const std::string& relative_png, const std::string& caption, std::string& reason);
 
+// A case's plot: draws report_folder/<case name>/<file> (creating the case's folder) and adds it to
+// the case's artifacts, or, when it cannot be drawn, a note "<file> unavailable: <reason>". Nothing
+// without a report folder.
+void attach_plot(const SeriesPlot& plot, const std::filesystem::path& report_folder, const std::string& file,
+                 const std::string& caption, CaseResult& result);
+
 }  // namespace gt

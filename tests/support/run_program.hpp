@@ -57,6 +57,14 @@ inline std::vector<std::string> changed_environment(const EnvChanges& changes) {
   return variables;
 }
 
+// posix_spawn's argument vector: pointers into `words` (which must outlive it), null-terminated.
+inline std::vector<char*> argv_of(std::vector<std::string>& words) {
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  return argv;
+}
+
 // Runs `program` with `args` (argv[1...]) in the folder `cwd` (this process's when empty).
 inline ProgramRun run_program(const std::string& program, const std::vector<std::string>& args,
                               const std::filesystem::path& cwd = {}, const EnvChanges& env = {}) {
@@ -66,9 +74,7 @@ inline ProgramRun run_program(const std::string& program, const std::vector<std:
 
   std::vector<std::string> arguments = {program};
   arguments.insert(arguments.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
+  std::vector<char*> argv = argv_of(arguments);
   std::vector<std::string> variables = changed_environment(env);
   std::vector<char*> envp;
   for (auto& variable : variables) envp.push_back(variable.data());
