@@ -143,10 +143,11 @@ TEST(Outcomes, NamesAndOrder) {
   EXPECT_STREQ(outcome_name(Outcome::pass), "pass");
   EXPECT_STREQ(outcome_name(Outcome::fail), "fail");
   EXPECT_STREQ(outcome_name(Outcome::warn), "warn");
+  EXPECT_STREQ(outcome_name(Outcome::inconclusive), "inconclusive");
   EXPECT_STREQ(outcome_name(Outcome::skip), "skip");
   EXPECT_STREQ(outcome_name(Outcome::error), "error");
-  const std::vector<Outcome> best_to_worst = {Outcome::skip, Outcome::pass, Outcome::warn, Outcome::fail,
-                                              Outcome::error};
+  const std::vector<Outcome> best_to_worst = {Outcome::pass, Outcome::warn, Outcome::inconclusive, Outcome::skip,
+                                              Outcome::fail, Outcome::error};
   for (std::size_t i = 0; i < best_to_worst.size(); ++i) {
     for (std::size_t j = 0; j < best_to_worst.size(); ++j) {
       EXPECT_EQ(worse(best_to_worst[i], best_to_worst[j]), best_to_worst[std::max(i, j)]);
@@ -157,35 +158,42 @@ TEST(Outcomes, NamesAndOrder) {
 TEST(Outcomes, CaseOutcomeFromChecks) {
   CaseResult result;
   EXPECT_EQ(case_outcome(result), Outcome::skip);
-  result.checks = {make_check("a", 0, {}, Outcome::skip), make_check("b", 0, {}, Outcome::skip)};
-  EXPECT_EQ(case_outcome(result), Outcome::skip);
-  result.checks.push_back(make_check("c", 0, {}, Outcome::pass));
+  result.checks = {make_check("c", 0, {}, Outcome::pass)};
   EXPECT_EQ(case_outcome(result), Outcome::pass);
   result.checks.push_back(make_check("d", 0, {}, Outcome::warn));
   EXPECT_EQ(case_outcome(result), Outcome::warn);
+  result.checks.push_back(make_check("a", 0, {}, Outcome::skip));
+  EXPECT_EQ(case_outcome(result), Outcome::skip);  // a skipped half is never a pass
   result.checks.push_back(make_check("e", 0, {}, Outcome::fail));
   EXPECT_EQ(case_outcome(result), Outcome::fail);
   result.error = "could not run";
   EXPECT_EQ(case_outcome(result), Outcome::error);
 }
 
-TEST(Outcomes, RunFailedHonoursExpectations) {
-  auto run_with = [](Outcome status, std::string expectation) {
+TEST(Outcomes, RunFailsOnUnlistedFailuresErrorsAndBrokenExpectations) {
+  auto run_with = [](Outcome status, std::optional<Outcome> expected) {
     Report report;
-    report.cases.resize(2);  // a passing case beside the one under test
+    report.cases.resize(2);  // a case without checks beside the one under test
+    Check check = make_check("mesh.closed.cpu", 1, 0, status);
+    check.expected = expected;
+    report.cases[1].checks = {check};
     report.cases[1].status = status;
-    report.cases[1].expected_failure = std::move(expectation);
     return run_failed(report);
   };
-  EXPECT_FALSE(run_with(Outcome::pass, ""));
-  EXPECT_FALSE(run_with(Outcome::warn, ""));
-  EXPECT_FALSE(run_with(Outcome::skip, ""));
-  EXPECT_TRUE(run_with(Outcome::fail, ""));
-  EXPECT_TRUE(run_with(Outcome::error, ""));
-  EXPECT_FALSE(run_with(Outcome::fail, "known"));
-  EXPECT_TRUE(run_with(Outcome::pass, "known"));  // stale expectation
-  EXPECT_TRUE(run_with(Outcome::warn, "known"));
-  EXPECT_FALSE(run_with(Outcome::skip, "known"));
+  EXPECT_FALSE(run_with(Outcome::pass, std::nullopt));
+  EXPECT_FALSE(run_with(Outcome::warn, std::nullopt));
+  EXPECT_FALSE(run_with(Outcome::skip, std::nullopt));
+  EXPECT_FALSE(run_with(Outcome::inconclusive, std::nullopt));
+  EXPECT_TRUE(run_with(Outcome::fail, std::nullopt));
+  EXPECT_TRUE(run_with(Outcome::error, std::nullopt));
+  EXPECT_FALSE(run_with(Outcome::fail, Outcome::fail));
+  Report stale;
+  stale.expectation_problems = {"a.b.c mesh.closed.cpu: expected fail (expectations.txt line 5), got pass"};
+  EXPECT_TRUE(run_failed(stale));
+  Report errored;
+  errored.cases.resize(1);
+  errored.cases[0].error = "GL error during the case";
+  EXPECT_TRUE(run_failed(errored));
 }
 
 // ---- report formats ----------------------------------------------------------------------------
@@ -250,8 +258,8 @@ TEST_F(ReportFiles, JsonFollowsSchema1) {
   EXPECT_EQ(report["benchmarks"][1]["detail"], "2 compute passes per iteration");
   EXPECT_EQ(report["benchmarks"][0]["detail"], "");
   EXPECT_NE(report["benchmarks"][3]["note"].get<std::string>().find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos);
-  EXPECT_EQ(report["summary"], json({{"pass", 1}, {"fail", 3}, {"warn", 1}, {"skip", 1}, {"error", 1},
-                                     {"failed", true}}));
+  EXPECT_EQ(report["summary"], json({{"pass", 1}, {"fail", 3}, {"warn", 1}, {"inconclusive", 0}, {"skip", 1},
+                                     {"error", 1}, {"failed", true}}));
 }
 
 TEST_F(ReportFiles, JunitCountsAndEscapes) {
@@ -272,14 +280,24 @@ TEST_F(ReportFiles, JunitCountsAndEscapes) {
             std::string::npos);
 }
 
-TEST_F(ReportFiles, JunitFailsAStaleExpectation) {
-  Report report;
-  report.cases = {make_case("a.b.c", "a.b", {make_check("spec.vector", 0, 1, Outcome::pass)})};
-  report.cases[0].expected_failure = "used to fail";
-  write_report_junit(report, folder / "junit.xml");
-  const std::string xml = read_text(folder / "junit.xml");
-  EXPECT_EQ(count_of(xml, "<failure "), 1);
-  EXPECT_NE(xml.find("expected to fail (used to fail) but pass"), std::string::npos);
+TEST_F(ReportFiles, JsonAndHtmlShowTheMutationScore) {
+  Report report = sample_report();
+  MutationReport mutation;
+  mutation.baselines = {{.family = "erosion", .cases = {"erosion.pipe.mutant_probe.flux"}, .clean = true}};
+  mutation.mutants = {{.name = "erosion.pipe.half_rain", .family = "erosion", .kind = "both-twins",
+                       .description = "rain at half rate", .status = "killed",
+                       .killed_by = {"erosion.pipe.mutant_probe.flux: mass.water_added.cpu = 0.049 (bound 1e-14)"}},
+                      {.name = "erosion.pipe.gpu_x", .family = "erosion", .kind = "one-twin", .status = "survived"}};
+  report.mutation = mutation;
+  write_report_files(report, folder);
+  const json written = json::parse(read_text(folder / "report.json"));
+  EXPECT_EQ(written["mutation"]["killed"], 1);
+  EXPECT_EQ(written["mutation"]["registered"], 2);
+  EXPECT_EQ(written["mutation"]["mutants"][1]["status"], "survived");
+  EXPECT_TRUE(written["summary"]["failed"].get<bool>());
+  const std::string html = read_text(folder / "index.html");
+  EXPECT_NE(html.find("1 of 2 killed (50 %)"), std::string::npos);
+  EXPECT_NE(html.find("mass.water_added.cpu = 0.049"), std::string::npos);
 }
 
 TEST_F(ReportFiles, HtmlNamesEveryCaseAndEscapes) {
