@@ -38,7 +38,7 @@ table.environment th { width: 9em; }
 .badge { display: inline-block; min-width: 3em; text-align: center; padding: .05em .6em; border-radius: .8em;
          color: #fff; font-weight: 600; font-size: .9em; }
 .badge.pass { background: #2e7d32; } .badge.fail { background: #c62828; } .badge.warn { background: #f9a825; color: #222; }
-.badge.skip { background: #757575; } .badge.error { background: #6a1b9a; } .badge.zero { opacity: .35; }
+.badge.skip { background: #757575; } .badge.inconclusive { background: #0277bd; } .badge.error { background: #6a1b9a; } .badge.zero { opacity: .35; }
 .summary .badge { font-size: 1.05em; margin-right: .4em; }
 section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
 .note { color: #555; font-style: italic; }
@@ -62,7 +62,7 @@ dl.params dt { color: #555; } dl.params dd { margin: 0; font-variant-numeric: ta
 .metrics { display: grid; grid-template-columns: repeat(auto-fill, minmax(190px, 1fr)); gap: .5em; margin-top: .7em; }
 .metric { background: #f6f6f6; border-left: 4px solid #2e7d32; padding: .3em .6em; }
 .metric.fail { border-color: #c62828; background: #fbeaea; } .metric.warn { border-color: #f9a825; }
-.metric.error { border-color: #6a1b9a; } .metric.skip { border-color: #757575; }
+.metric.error { border-color: #6a1b9a; } .metric.skip { border-color: #757575; } .metric.inconclusive { border-color: #0277bd; }
 .metric .label { font-size: .82em; color: #555; }
 .metric .value { font-size: 1.15em; font-weight: 600; font-variant-numeric: tabular-nums; }
 .metric .bound { font-size: .8em; color: #555; }
