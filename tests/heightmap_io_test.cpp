@@ -108,6 +108,10 @@ TEST_P(FloatRoundTrip, KeepsValuesAndMask) {
   ASSERT_EQ(read.heights.height, written.height);
   EXPECT_EQ(read.heights.values, written.values);
   EXPECT_EQ(read.heights.valid, written.valid);
+  // The masked cells are written as NaN and read back as no-data: a decision the user is told of.
+  const std::size_t masked = written.size() - gt::count_valid(written);
+  ASSERT_GT(masked, 0u);
+  EXPECT_TRUE(has_note_containing(read, fmt::format("{} NaN cells of {} taken as no-data", masked, written.size())));
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, FloatRoundTrip, ::testing::Values(".exr", ".tif", ".tiff"),

@@ -269,9 +269,15 @@ HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) 
   }
   const std::optional<double> no_data = parse_no_data(tags, result.notes);
   result.heights = read_pixels(*input, options.image_vertical_scale, no_data, result.notes, file);
+  const std::size_t masked = result.heights.size() - count_valid(result.heights);
   if (no_data) {
-    result.notes.push_back(fmt::format("GDAL_NODATA {}: {} cells invalid", *no_data,
-                                       result.heights.size() - count_valid(result.heights)));
+    result.notes.push_back(fmt::format("GDAL_NODATA {}: {} cells invalid (NaN cells included), masked: no algorithm "
+                                       "reads or changes them",
+                                       *no_data, masked));
+  } else if (masked > 0) {
+    result.notes.push_back(fmt::format("{} NaN cells of {} taken as no-data (GDAL's convention) and masked: no "
+                                       "algorithm reads or changes them",
+                                       masked, result.heights.size()));
   }
   if (is_tiff && tags.georeferenced()) {
     apply_georeferencing(result, tags);
