@@ -251,6 +251,7 @@ int run_driver(const DriverOptions& options) {
     }
     if (options.mutation) {
       report.mutation = run_mutation(*options.mutation, folder / "mutants", options.dataset_dir);
+      report.mutation->folder = "mutants/";
       std::ofstream(folder / "mutants" / "mutants.json") << mutation_to_json(*report.mutation).dump(2) << '\n';
     }
     write_report_files(report, folder);
@@ -263,19 +264,21 @@ int run_driver(const DriverOptions& options) {
 int run_mutants_command(const MutationOptions& options, const std::filesystem::path& out, bool as_json) {
   select_mutants(options.patterns);  // bad patterns are refused before anything is written
   check_output_folder(out);
-  MutationReport report;
+  Report report;  // no cases: the environment and the mutation, in the usual four files
+  report.environment = base_environment();
+  report.environment.gl_renderer = "each run's own (its report.json under runs/ or baseline/)";
+  report.environment.gl_platform = "worker processes";
   write_folder_atomically(out, [&](const std::filesystem::path& folder) {
-    report = run_mutation(options, folder, GT_DATASET_DIR);
-    std::ofstream(folder / "mutants.json") << mutation_to_json(report).dump(2) << '\n';
-    std::ofstream(folder / "report.json") << nlohmann::json{{"schema", 1}, {"mutation", mutation_to_json(report)}}.dump(2)
-                                          << '\n';
+    report.mutation = run_mutation(options, folder, GT_DATASET_DIR);
+    std::ofstream(folder / "mutants.json") << mutation_to_json(*report.mutation).dump(2) << '\n';
+    write_report_files(report, folder);
   });
   if (as_json) {
-    fmt::print("{}\n", mutation_to_json(report).dump(2));
+    fmt::print("{}\n", mutation_to_json(*report.mutation).dump(2));
   } else {
-    print_mutation(report);
+    print_mutation(*report.mutation);
   }
-  return report.passed() ? 0 : 1;
+  return report.mutation->passed() ? 0 : 1;
 }
 
 }  // namespace gt

@@ -190,7 +190,8 @@ MutationReport run_mutation(const MutationOptions& options, const std::filesyste
 }
 
 nlohmann::json mutation_to_json(const MutationReport& report) {
-  nlohmann::json out = {{"killed", report.killed()},
+  nlohmann::json out = {{"folder", report.folder},
+                        {"killed", report.killed()},
                         {"registered", report.mutants.size()},
                         {"score", report.score()},
                         {"passed", report.passed()},

@@ -8,7 +8,8 @@
 //      fail in the baseline, and is of the kind meant for the mutant (check_kind_kills: parity or
 //      image checks for one-twin mutants, anything but those and determinism for both-twins ones).
 //      A run that errors or times out cannot tell: the mutant's status says so, it is not killed.
-// The mutation score is killed / selected. Every run's report stays under the folder given.
+// The mutation score is killed / selected. Every run's report stays under the folder given; the
+// HTML links each mutant to its run's report (runs/<name>/index.html below the mutation folder).
 #pragma once
 
 #include <filesystem>

@@ -118,6 +118,7 @@ struct MutationBaseline {
 };
 
 struct MutationReport {
+  std::string folder;                 // where the runs are, relative to the report's root ("" or "mutants/")
   std::vector<MutationBaseline> baselines;
   std::vector<MutantOutcome> mutants;
   int killed() const;

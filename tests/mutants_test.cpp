@@ -37,6 +37,7 @@ void expect_every_mutant_killed(const std::string& family) {
   EXPECT_GE(both_twins, 3);
   EXPECT_EQ(run.status, 0) << run;
   EXPECT_TRUE(std::filesystem::is_regular_file(out / "mutants.json"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(out / "index.html"));
 }
 
 TEST(Mutants, ErosionFamilyIsKilled) { expect_every_mutant_killed("erosion"); }

@@ -300,7 +300,7 @@ void append_mutation(std::string& out, const Report& report) {
   if (!report.mutation) return;
   const MutationReport& mutation = *report.mutation;
   out += fmt::format(
-      "<section class=\"mutation\">\n<h2>Mutants</h2>\n<p>Mutation score <span class=\"badge {}\">{} of {} killed "
+      "<section class=\"mutation\" id=\"mutants\">\n<h2>Mutants</h2>\n<p>Mutation score <span class=\"badge {}\">{} of {} killed "
       "({:.0f} %)</span>. Each mutant is a deliberate bug run on its cases in a worker process; a one-twin mutant "
       "must be killed by a parity or image check, a both-twins mutant by any other kind (ledgers, spec vectors, "
       "invariants).</p>\n",
@@ -320,9 +320,9 @@ void append_mutation(std::string& out, const Report& report) {
     } else {
       killed_by = h(mutant.error);
     }
-    out += fmt::format("<tr><td><span class=\"badge {}\">{}</span></td><td><a href=\"mutants/{}/index.html\">{}</a></td>"
+    out += fmt::format("<tr><td><span class=\"badge {}\">{}</span></td><td><a href=\"{}{}/index.html\">{}</a></td>"
                        "<td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{:.1f}</td></tr>\n",
-                       mutant.status == "killed" ? "pass" : "fail", h(mutant.status), h(mutant.run_folder),
+                       mutant.status == "killed" ? "pass" : "fail", h(mutant.status), h(mutation.folder), h(mutant.run_folder),
                        h(mutant.name), h(mutant.kind), h(mutant.description), killed_by, mutant.seconds);
   }
   out += "</table>\n</section>\n";
