@@ -1,14 +1,19 @@
 // groundtruth: the command line of DESIGN.md.
 //   list [--json]                      algorithms (parameters, defaults, ranges, units) and cases
 //   run PATTERN... | --algorithm A --input FILE [--set k=v]... [--backend] [--out] [--gl]
-//   report [--out] [--gl]              the default suite and benchmarks into reports/latest
+//       [--cases FILE_OR_FOLDER] [--mutant NAME] [--require-gpu] [--quiet]
+//   report [--out] [--gl] [--no-benchmark] [--no-mutants] [--require-gpu]
+//                                      the default suite, benchmarks and mutants into reports/latest
 //   bench [--sizes] [--iterations]     only the performance table
+//   mutants [PATTERN...] [--list] [--json] [--out]
+//                                      each registered mutant on its cases: which checks kill it
 //   check-mesh FILE [--json]           the mesh checks on an OFF, OBJ, PLY or STL file
 //   diff-image A B [--json] [--out diff.png] [--tolerance T]
 //                                      image differences, a heat map and a verdict mask
 //   render INPUT --out out.png [--backend cpu|gpu] [--width --height --azimuth --elevation --fov
 //          --distance | --eye --target] [--look]   a mesh or a heightmap (as a terrain solid) to a PNG
-// Exit status: 0 nothing unexpected failed, 1 something did, 2 bad usage or bad input
+// Exit status: 0 nothing unexpected failed, 1 something did (mutants: one survived), 2 bad usage or
+// bad input (README's "Outcomes and exit status")
 // (check-mesh: 0 watertight and consistently oriented, 1 not, 2 unreadable;
 // diff-image: 0 no pixel fails the neighbourhood-tolerant comparison, 1 some do, 2 bad input;
 // render: 0 written, 2 bad input, a camera inside the mesh or seeing nothing, or no GL context for gpu).
