@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/json_keys.hpp"
+#include "core/names.hpp"
 
 namespace gt {
 namespace {
@@ -25,19 +26,6 @@ std::vector<std::filesystem::path> case_files(const std::filesystem::path& folde
   if (error) throw InputError(fmt::format("cannot read the case folder {}: {}", folder.string(), error.message()));
   std::sort(files.begin(), files.end());
   return files;
-}
-
-// Case names become folder names under --out: lower-case dotted identifiers only, so that no name
-// ("../x", "/abs", "") can write outside the report folder.
-bool is_dotted_identifier(const std::string& name) {
-  if (name.empty() || name.size() > 200 || name.front() == '.' || name.back() == '.') return false;
-  char previous = '.';
-  for (const char c : name) {
-    const bool allowed = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.';
-    if (!allowed || (c == '.' && previous == '.')) return false;
-    previous = c;
-  }
-  return true;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/names.hpp"
 
 namespace gt {
 namespace {
@@ -13,18 +14,6 @@ namespace {
 std::string& active_name() {
   static std::string name;
   return name;
-}
-
-bool is_dotted_identifier(const std::string& name) {
-  if (name.empty() || name.front() == '.' || name.back() == '.') return false;
-  char previous = '.';
-  for (const char c : name) {
-    const bool allowed = std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) ||
-                         c == '_' || c == '.';
-    if (!allowed || (c == '.' && previous == '.')) return false;
-    previous = c;
-  }
-  return true;
 }
 
 }  // namespace
