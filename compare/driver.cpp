@@ -74,11 +74,9 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   return spec;
 }
 
-std::vector<CaseSpec> selected_specs(const DriverOptions& options) {
+std::vector<CaseSpec> selected_specs(const DriverOptions& options, const std::vector<CaseSpec>& suite) {
   std::vector<CaseSpec> specs;
-  if (!options.patterns.empty()) {
-    specs = select_cases(load_suite(options.dataset_dir / "cases", options.extra_cases), options.patterns);
-  }
+  if (!options.patterns.empty()) specs = select_cases(suite, options.patterns);
   if (options.ad_hoc) specs.push_back(ad_hoc_spec(*options.ad_hoc));
   if (specs.empty()) throw InputError("nothing to run: name case patterns or an --algorithm with an --input");
   return specs;
@@ -200,10 +198,11 @@ void print_mutation(const MutationReport& mutation) {
 
 int run_driver(const DriverOptions& options) {
   if (!options.mutant.empty()) set_active_mutant(find_mutant(options.mutant).name);
-  const auto specs = options.patterns.empty() && !options.ad_hoc ? std::vector<CaseSpec>{} : selected_specs(options);
+  const auto suite = load_suite(options.dataset_dir / "cases", options.extra_cases);
+  const auto specs =
+      options.patterns.empty() && !options.ad_hoc ? std::vector<CaseSpec>{} : selected_specs(options, suite);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
-  const auto expectations =
-      load_expectations(options.dataset_dir / "expectations.txt", load_suite(options.dataset_dir / "cases", options.extra_cases));
+  const auto expectations = load_expectations(options.dataset_dir / "expectations.txt", suite);
   check_output_folder(options.out);
 
   Report report;
