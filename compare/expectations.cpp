@@ -34,18 +34,18 @@ Expectation parse_entry(const std::string& line, int number, const std::string& 
     throw InputError(fmt::format("{}: expected 'CASE CHECK OUTCOME [device=GLOB] REASON'", where));
   }
   entry.outcome = parse_outcome(outcome, where);
+  std::string word;
+  if (words >> word && word.rfind("device=", 0) == 0) {
+    entry.device_pattern = word.substr(7);
+    if (entry.device_pattern.empty()) throw InputError(fmt::format("{}: device= needs a pattern", where));
+    word.clear();
+  }
   std::string rest;
   std::getline(words >> std::ws, rest);
-  if (rest.rfind("device=", 0) == 0) {
-    const auto end = rest.find_first_of(" \t");
-    entry.device_pattern = rest.substr(7, end == std::string::npos ? std::string::npos : end - 7);
-    rest = end == std::string::npos ? "" : rest.substr(rest.find_first_not_of(" \t", end));
+  entry.reason = word.empty() || rest.empty() ? word + rest : word + " " + rest;
+  if (entry.reason.find_first_not_of(" \t") == std::string::npos) {
+    throw InputError(fmt::format("{}: say why this outcome is expected (a reason after the outcome)", where));
   }
-  if (entry.device_pattern.empty() && line.find("device=") != std::string::npos && rest.rfind("device=", 0) == 0) {
-    throw InputError(fmt::format("{}: device= needs a pattern", where));
-  }
-  if (rest.empty()) throw InputError(fmt::format("{}: say why this outcome is expected (a reason after the outcome)", where));
-  entry.reason = rest;
   return entry;
 }
 

@@ -151,6 +151,10 @@ TEST(Expectations, MalformedEntriesAreBadInput) {
               HasSubstr("not an outcome"));
   EXPECT_THAT(refusal([&] { expectations_from("cave.cubes mesh.closed.cpu fail\n", suite); }), HasSubstr("reason"));
   EXPECT_THAT(refusal([&] { expectations_from("cave.cubes\n", suite); }), HasSubstr("CASE CHECK OUTCOME"));
+  EXPECT_THAT(refusal([&] { expectations_from("cave.cubes mesh.closed.cpu fail device= holes\n", suite); }),
+              HasSubstr("device= needs a pattern"));
+  EXPECT_THAT(refusal([&] { expectations_from("cave.cubes mesh.closed.cpu fail device=llvmpipe*   \n", suite); }),
+              HasSubstr("reason"));
 }
 
 TEST(Expectations, TheBundledListLoadsAgainstTheBundledSuite) {
