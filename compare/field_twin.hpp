@@ -91,6 +91,10 @@ struct RunOptions {
   Progress* progress = nullptr;
 };
 
+// The "expect" keys run_field_twin reads (spec vectors of the field: expected cells, their total, a
+// tolerance); an algorithm's Algorithm::expect_shape starts from it and adds its own.
+nlohmann::json field_spec_shape();
+
 void run_field_twin(const FieldTwin& twin, const Heightmap& input, const nlohmann::json& expect,
                     const RunOptions& options, CaseResult& result);
 

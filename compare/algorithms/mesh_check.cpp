@@ -88,7 +88,9 @@ Algorithm mesh_check_algorithm() {
           .prepare = prepare_mesh_check,
           .iterates = false,
           .has_field_twin = false,
-          .ad_hoc_input = AdHocInput::mesh};
+          .ad_hoc_input = AdHocInput::mesh,
+          .expect_shape = {{"watertight", nullptr}, {"closed", nullptr}, {"genus", nullptr}, {"euler", nullptr},
+                           {"border_edges", nullptr}, {"self_intersections", nullptr}}};
 }
 
 }  // namespace gt

@@ -573,6 +573,15 @@ constexpr NoiseAlgorithm noise_table[] = {
      "Musgrave's heterogeneous terrain as Blender implements it", "seed 001 §3.18"},
 };
 
+// The field's spec vectors plus what add_point_spec ("points"), add_lattice_spec and add_walk read.
+nlohmann::json noise_spec_shape() {
+  nlohmann::json shape = field_spec_shape();
+  shape["points"] = nullptr;
+  shape["lattice_nonnegative"] = {{"size", nullptr}, {"count", nullptr}};
+  shape["walk"] = {{"magnitudes", nullptr}, {"direction", nullptr}};
+  return shape;
+}
+
 const ParamSpecs& specs_of(const NoiseAlgorithm& entry) {
   static std::map<std::string, ParamSpecs> specs;
   auto [position, inserted] = specs.try_emplace(entry.name);
@@ -594,7 +603,8 @@ std::vector<Algorithm> noise_algorithms() {
                     .prepare = [entry](const nlohmann::json& resolved, const LoadedInput& input) {
                       return prepare_noise(entry.basis, entry.fractal, resolved, input.heights);
                     },
-                    .iterates = false});
+                    .iterates = false,
+                    .expect_shape = noise_spec_shape()});
   }
   return list;
 }

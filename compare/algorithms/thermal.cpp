@@ -211,6 +211,13 @@ PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightma
   return prepared;
 }
 
+// The field's spec vectors plus add_talus_spec's eq. 4.10 vector.
+nlohmann::json talus_spec_shape() {
+  nlohmann::json shape = field_spec_shape();
+  shape["talus_eq_4_10"] = {{"angle", nullptr}, {"width", nullptr}, {"vertical_aspect", nullptr}, {"value", nullptr}};
+  return shape;
+}
+
 }  // namespace
 
 Algorithm thermal_algorithm() {
@@ -220,7 +227,8 @@ Algorithm thermal_algorithm() {
           .params = &thermal_param_specs(),
           .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
             return prepare_thermal(resolved, input.heights);
-          }};
+          },
+          .expect_shape = talus_spec_shape()};
 }
 
 Algorithm thermal_jako_algorithm() {
@@ -230,7 +238,8 @@ Algorithm thermal_jako_algorithm() {
           .params = &thermal_jako_param_specs(),
           .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
             return prepare_thermal_jako(resolved, input.heights);
-          }};
+          },
+          .expect_shape = field_spec_shape()};
 }
 
 }  // namespace gt
