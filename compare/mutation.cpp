@@ -151,9 +151,8 @@ std::vector<Mutant> select_mutants(const std::vector<std::string>& patterns) {
       if (!already) selected.push_back(mutant);
     }
     if (!any) {
-      std::string message = fmt::format("no mutant matches '{}'", pattern);
-      if (pattern.find_first_of("*?[") == std::string::npos) find_mutant(pattern);  // names the closest
-      throw InputError(message + "; `groundtruth mutants --list` shows them");
+      if (pattern.find_first_of("*?[") == std::string::npos) find_mutant(pattern);  // throws, naming the closest
+      throw InputError(fmt::format("no mutant matches '{}'; `groundtruth mutants --list` shows them", pattern));
     }
   }
   return selected;

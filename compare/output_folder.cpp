@@ -32,7 +32,7 @@ std::filesystem::path normalised(const std::filesystem::path& out) {
   return absolute.has_filename() ? absolute : absolute.parent_path();
 }
 
-// The entries the marker lists, or nullopt-like empty set with `readable` false.
+// Fills `entries` with what the folder's marker lists; false when there is no readable marker.
 bool read_marker(const std::filesystem::path& folder, std::set<std::string>& entries) {
   std::ifstream stream(folder / marker_name);
   if (!stream) return false;
