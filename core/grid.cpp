@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/memory.hpp"
 
 namespace gt {
 
@@ -20,14 +20,9 @@ void check_grid_fits(long long width, long long height, long long bytes_per_cell
     throw InputError(fmt::format("{}: size {}x{} exceeds the largest supported side of {} cells", what, width,
                                  height, max_side));
   }
-  const long long pages = sysconf(_SC_PHYS_PAGES);
-  const long long page_size = sysconf(_SC_PAGE_SIZE);
-  const double physical = static_cast<double>(pages) * static_cast<double>(page_size);
-  const double needed = static_cast<double>(width) * static_cast<double>(height) * static_cast<double>(bytes_per_cell);
-  if (pages > 0 && needed > 0.5 * physical) {
-    throw InputError(fmt::format("{}: size {}x{} needs {:.1f} GiB, more than half of this machine's {:.1f} GiB",
-                                 what, width, height, needed / (1 << 30), physical / (1 << 30)));
-  }
+  const double bytes = static_cast<double>(width) * static_cast<double>(height) * static_cast<double>(bytes_per_cell);
+  require_memory(bytes, fmt::format("{}x{} cells x {} B a cell", width, height, bytes_per_cell),
+                 fmt::format("{} ({}x{})", what, width, height));
 }
 
 template <class T>

@@ -62,8 +62,9 @@ struct Grid {
 using Heightmap = Grid<double>;
 
 // Throws InputError when a width x height grid of `bytes_per_cell` bytes per cell (all the
-// buffers an algorithm keeps for it, summed) is empty, overflows, or exceeds half of the
-// machine's physical memory. `what` names the grid in the message.
+// buffers the caller keeps for it, summed) is empty, has a side beyond 2^20 cells, or needs more
+// memory than this process may use (core/memory.hpp require_memory, the estimate in the message).
+// `what` names the grid in the message.
 void check_grid_fits(long long width, long long height, long long bytes_per_cell, const std::string& what);
 
 // Throws InputError naming the first NaN or infinite valid cell.

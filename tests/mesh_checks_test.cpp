@@ -414,6 +414,35 @@ TEST_F(MeshFiles, IndicesOutOfRangeAreRefused) {
               HasSubstr("out of range"));
 }
 
+// A binary little-endian PLY of one triangle whose face list claims `corners` indices (3: a valid file).
+std::string binary_triangle_ply(std::uint32_t corners) {
+  std::string text =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
+  const float coordinates[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const std::int32_t indices[3] = {0, 1, 2};
+  text.append(reinterpret_cast<const char*>(coordinates), sizeof coordinates);
+  text.append(reinterpret_cast<const char*>(&corners), sizeof corners);
+  text.append(reinterpret_cast<const char*>(indices), sizeof indices);
+  return text;
+}
+
+TEST_F(MeshFiles, AsciiStlWithATabAfterSolidIsReadAsAscii) {
+  // CGAL's own test takes only a space or a line break after "solid" as ASCII.
+  const MeshFile file = read_mesh(write_text("tab.stl", "solid\tname\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                                                        "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid name\n"));
+  ASSERT_EQ(file.mesh.triangles.size(), 1u);
+  EXPECT_EQ(file.mesh.positions.size(), 3u);
+  EXPECT_EQ(file.mesh.positions[1][0], 1.0);
+}
+
+TEST_F(MeshFiles, BinaryPlyWithAnHonestListIsRead) {
+  // The list check of the PLY bomb below refuses only counts the file cannot hold.
+  const MeshFile file = read_mesh(write_text("triangle.ply", binary_triangle_ply(3)));
+  ASSERT_EQ(file.mesh.triangles.size(), 1u);
+  EXPECT_EQ(file.mesh.triangles[0], (std::array<std::uint32_t, 3>{0, 1, 2}));
+}
+
 TEST_F(MeshFiles, MalformedFilesAreRefusedWithTheirName) {
   const std::vector<std::pair<fs::path, std::string>> cases = {
       {write_text("short.off", "OFF\n8 12 0\n0 0 0\n1 0 0\n"), "short.off: the OFF header declares 8 vertices"},
@@ -431,7 +460,21 @@ TEST_F(MeshFiles, MalformedFilesAreRefusedWithTheirName) {
       {write_text("truncated.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
                                    "property float y\nproperty float z\nend_header\n\x01\x02"),
        "cannot read"},
-      {write_text("garbage.stl", "not an stl file"), "no faces"},
+      {write_text("garbage.stl", "not an stl file"), "neither binary STL"},
+      // Hostile counts and indices (issue 18): refused before anything is sized from them.
+      {write_text("corner_bomb.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n1000000000 0 1 2\n"),
+       "face 0 declares 1000000000 corners but its line holds 3 indices"},
+      {write_text("wrapping_index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 18446744073709551615\n"),
+       "corner 2 is '18446744073709551615', not a vertex index"},
+      {write_text("fraction_index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2.7\n"),
+       "corner 2 is '2.7', not a vertex index"},
+      {write_text("list_bomb.ply", binary_triangle_ply(4000000000u)), "a list claims 4000000000 entries"},
+      {write_text("element_bomb.ply", "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nend_header\n"),
+       "declares 4000000000 instances"},
+      {write_text("ascii_list_bomb.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                         "end_header\n0 0 0\n1 0 0\n0 1 0\n99999999 0 1 2\n"),
+       "list count '99999999'"},
       {write_text("mesh.xyz", "OFF\n"), "unknown mesh extension '.xyz'"},
       {folder / "missing.off", "no such file"},
   };

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <limits>
 #include <new>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 
@@ -19,9 +21,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
+#include <CGAL/IO/STL/STL_reader.h>
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
@@ -41,6 +45,300 @@ struct Soup {
 
 using SoupReader = bool (*)(const std::string& file, Soup& soup);
 
+[[noreturn]] void refuse(const std::string& file, const std::string& reason) {
+  throw InputError(fmt::format("cannot read {}: {}", file, reason));
+}
+
+// ---- OFF ---------------------------------------------------------------------------------------
+// CGAL's read_OFF sizes a face from its first number before reading the rest, so a line "1000000000"
+// allocates 8 GB, and it reads indices as doubles cast to size_t ("2.7" is 2, 2^64-1 wraps to 0).
+// Here CGAL's File_scanner_OFF still reads the header (OFF, COFF, NOFF, 4OFF, nOFF, binary) and
+// the vertices; the faces are read here: an ASCII face line is a corner count, that many
+// indices, then an optional colour; counts and indices must be plain decimal integers, the
+// indices below the vertex count, and no face may claim more corners than the bytes left hold.
+
+std::uintmax_t bytes_left(std::istream& in, std::uintmax_t file_size) {
+  const std::streamoff position = in.tellg();
+  return position < 0 || static_cast<std::uintmax_t>(position) > file_size ? 0 : file_size - position;
+}
+
+// A token of only decimal digits (at most 19, so it fits in 64 bits) as a number; nullopt otherwise.
+std::optional<std::uint64_t> plain_unsigned(const std::string& token) {
+  if (token.empty() || token.size() > 19 || !std::all_of(token.begin(), token.end(), [](unsigned char c) {
+        return std::isdigit(c) != 0;
+      })) {
+    return std::nullopt;
+  }
+  return std::stoull(token);
+}
+
+// The next face line of an ASCII OFF (comments and blank lines skipped), split into tokens.
+std::vector<std::string> next_face_tokens(std::istream& in) {
+  std::string line;
+  while (std::getline(in, line)) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream fields(line);
+    std::vector<std::string> tokens;
+    for (std::string token; fields >> token;) tokens.push_back(token);
+    if (!tokens.empty()) return tokens;
+  }
+  return {};
+}
+
+void read_ascii_off_face(std::istream& in, std::size_t face, std::size_t vertices, const std::string& file,
+                         Polygon& polygon) {
+  const std::vector<std::string> tokens = next_face_tokens(in);
+  if (tokens.empty()) refuse(file, fmt::format("the file ends before face {} (the header declares more)", face));
+  const std::optional<std::uint64_t> corners = plain_unsigned(tokens[0]);
+  if (!corners) refuse(file, fmt::format("face {}: corner count '{}' is not a whole number", face, tokens[0]));
+  if (*corners > tokens.size() - 1) {
+    refuse(file, fmt::format("face {} declares {} corners but its line holds {} indices", face, *corners,
+                             tokens.size() - 1));
+  }
+  polygon.resize(*corners);
+  for (std::size_t corner = 0; corner < *corners; ++corner) {
+    const std::string& token = tokens[corner + 1];
+    const std::optional<std::uint64_t> index = plain_unsigned(token);
+    if (!index || *index >= vertices) {
+      refuse(file, fmt::format("face {}: corner {} is '{}', not a vertex index (0 to {})", face, corner, token,
+                               vertices - 1));
+    }
+    polygon[corner] = *index;
+  }
+}
+
+void read_binary_off_face(CGAL::File_scanner_OFF& scanner, std::size_t face, std::uintmax_t file_size,
+                          const std::string& file, Polygon& polygon) {
+  std::size_t corners = 0;
+  scanner.scan_facet(corners, face);
+  // scan_facet stores the int32 count in a size_t: a negative count arrives huge.
+  if (!scanner.in() || corners > bytes_left(scanner.in(), file_size) / 4) {
+    refuse(file, fmt::format("binary face {} declares {} corners, more than the bytes left hold", face,
+                             static_cast<std::int64_t>(static_cast<std::int32_t>(corners))));
+  }
+  polygon.resize(corners);
+  for (std::size_t corner = 0; corner < corners; ++corner) {
+    scanner.scan_facet_vertex_index(polygon[corner], corner + 1, face);
+    if (!scanner.in()) refuse(file, fmt::format("binary face {}: corner {} is not a vertex index", face, corner));
+  }
+  scanner.skip_to_next_facet(face);
+}
+
+bool read_off_soup(const std::string& file, Soup& soup) {
+  const std::uintmax_t file_size = std::filesystem::file_size(file);
+  std::ifstream in(file, std::ios::binary);
+  CGAL::File_scanner_OFF scanner(in, false);
+  if (!in) refuse(file, "no valid OFF header (OFF keyword, then vertex, face and edge counts)");
+  const std::size_t vertices = scanner.size_of_vertices();
+  const std::size_t faces = scanner.size_of_facets();
+  // Each vertex needs three numbers and each face four, each a character and a separator.
+  if (vertices > file_size / 6 || faces > file_size / 8) {
+    refuse(file, fmt::format("the OFF header declares {} vertices and {} faces, more than its {} bytes can hold",
+                             vertices, faces, file_size));
+  }
+  soup.points.reserve(vertices);
+  for (std::size_t vertex = 0; vertex < vertices; ++vertex) {
+    double x = 0.0, y = 0.0, z = 0.0, w = 1.0;
+    scanner.scan_vertex(x, y, z, w);
+    scanner.skip_to_next_vertex(vertex);
+    if (!in) return false;
+    soup.points.emplace_back(x / w, y / w, z / w);
+  }
+  soup.polygons.resize(faces);
+  for (std::size_t face = 0; face < faces; ++face) {
+    if (scanner.binary()) {
+      read_binary_off_face(scanner, face, file_size, file, soup.polygons[face]);
+    } else {
+      read_ascii_off_face(in, face, vertices, file, soup.polygons[face]);
+    }
+  }
+  return true;
+}
+
+// ---- PLY ---------------------------------------------------------------------------------------
+// CGAL's PLY reader sizes a list from its count before reading it (a binary face claiming 4·10⁹
+// indices allocates 16 GB) and reserves elements from the header's counts. check_ply_sizes walks
+// the header and the data first and refuses counts the file's bytes cannot hold; what it does not
+// judge (malformed values, missing properties) is left to CGAL.
+
+struct PlyProperty {
+  int size = 0;        // bytes of a scalar, or of a list's items
+  int count_size = 0;  // bytes of a list's count; 0 for a scalar
+  bool count_signed = false;
+};
+
+struct PlyElement {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+struct PlyHeader {
+  std::string format;  // ascii, binary_little_endian, binary_big_endian
+  std::vector<PlyElement> elements;
+  std::uintmax_t data_offset = 0;
+};
+
+int ply_type_size(const std::string& type, const std::string& file) {
+  static const std::pair<const char*, int> sizes[] = {
+      {"char", 1},  {"uchar", 1},  {"int8", 1},  {"uint8", 1},  {"short", 2},   {"ushort", 2},   {"int16", 2},
+      {"uint16", 2}, {"int", 4},   {"uint", 4},  {"int32", 4},  {"uint32", 4},  {"float", 4},    {"float32", 4},
+      {"double", 8}, {"float64", 8}};
+  for (const auto& [name, size] : sizes) {
+    if (type == name) return size;
+  }
+  refuse(file, fmt::format("PLY property type '{}' is not a PLY type", type));
+}
+
+PlyHeader read_ply_header(std::istream& in, std::uintmax_t file_size, const std::string& file) {
+  PlyHeader header;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string keyword;
+    fields >> keyword;
+    if (keyword == "end_header") {
+      header.data_offset = static_cast<std::uintmax_t>(in.tellg());
+      return header;
+    }
+    if (keyword == "format") fields >> header.format;
+    if (keyword == "element") {
+      PlyElement element;
+      std::string count;
+      fields >> element.name >> count;
+      const std::optional<std::uint64_t> parsed = plain_unsigned(count);
+      // Every instance takes at least one byte.
+      if (!parsed || *parsed > file_size) {
+        refuse(file, fmt::format("PLY element '{}' declares {} instances, more than its {} bytes can hold",
+                                 element.name, count, file_size));
+      }
+      element.count = *parsed;
+      header.elements.push_back(element);
+    }
+    if (keyword == "property" && !header.elements.empty()) {
+      std::string type, count_type, item_type;
+      fields >> type;
+      PlyProperty property;
+      if (type == "list") {
+        fields >> count_type >> item_type;
+        property.count_size = ply_type_size(count_type, file);
+        property.count_signed = count_type[0] != 'u';
+        property.size = ply_type_size(item_type, file);
+      } else {
+        property.size = ply_type_size(type, file);
+      }
+      header.elements.back().properties.push_back(property);
+    }
+  }
+  return header;  // no end_header: CGAL refuses the file
+}
+
+std::int64_t binary_ply_count(const unsigned char* bytes, const PlyProperty& property, bool big_endian) {
+  std::uint64_t value = 0;
+  for (int i = 0; i < property.count_size; ++i) {
+    const int byte = big_endian ? i : property.count_size - 1 - i;
+    value = (value << 8) | bytes[byte];
+  }
+  const int bits = 8 * property.count_size;
+  if (property.count_signed && bits < 64 && (value >> (bits - 1)) != 0) return static_cast<std::int64_t>(value) - (std::int64_t{1} << bits);
+  return static_cast<std::int64_t>(value);
+}
+
+void check_binary_ply_lists(const std::vector<unsigned char>& data, const PlyHeader& header, const std::string& file) {
+  const bool big_endian = header.format == "binary_big_endian";
+  std::uintmax_t at = 0;
+  for (const PlyElement& element : header.elements) {
+    for (std::uint64_t instance = 0; instance < element.count; ++instance) {
+      for (const PlyProperty& property : element.properties) {
+        if (property.count_size == 0) {
+          at += property.size;
+          continue;
+        }
+        if (at + property.count_size > data.size()) return;  // truncated: CGAL says so
+        const std::int64_t count = binary_ply_count(&data[at], property, big_endian);
+        at += property.count_size;
+        if (count < 0 || static_cast<std::uint64_t>(count) > (data.size() - at) / property.size) {
+          refuse(file, fmt::format("PLY {} {}: a list claims {} entries, more than the {} bytes left hold",
+                                   element.name, instance, count, data.size() - at));
+        }
+        at += static_cast<std::uintmax_t>(count) * property.size;
+      }
+      if (at > data.size()) return;
+    }
+  }
+}
+
+void check_ascii_ply_lists(std::istream& in, std::uintmax_t file_size, const PlyHeader& header,
+                           const std::string& file) {
+  std::string token;
+  for (const PlyElement& element : header.elements) {
+    for (std::uint64_t instance = 0; instance < element.count; ++instance) {
+      for (const PlyProperty& property : element.properties) {
+        if (!(in >> token)) return;  // truncated: CGAL says so
+        if (property.count_size == 0) continue;
+        const std::optional<std::uint64_t> count = plain_unsigned(token);
+        // Each entry takes a character and a separator.
+        if (!count || *count > bytes_left(in, file_size) / 2) {
+          refuse(file, fmt::format("PLY {} {}: list count '{}' is not a count the bytes left can hold",
+                                   element.name, instance, token));
+        }
+        for (std::uint64_t item = 0; item < *count; ++item) {
+          if (!(in >> token)) return;
+        }
+      }
+    }
+  }
+}
+
+void check_ply_sizes(const std::string& file) {
+  const std::uintmax_t file_size = std::filesystem::file_size(file);
+  std::ifstream in(file, std::ios::binary);
+  const PlyHeader header = read_ply_header(in, file_size, file);
+  if (header.format == "ascii") {
+    check_ascii_ply_lists(in, file_size, header, file);
+  } else if (header.data_offset > 0) {
+    std::vector<unsigned char> data(file_size - header.data_offset);
+    in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data.size()));
+    check_binary_ply_lists(data, header, file);
+  }
+}
+
+// ---- STL ---------------------------------------------------------------------------------------
+// CGAL's read_STL takes a file for ASCII only when "solid" is followed by a space or a line break
+// ("solid<TAB>name" is read as binary garbage) and guesses again on failure. Here the size decides:
+// a binary STL is exactly 84 + 50·N bytes for the N triangles its header declares; any other file
+// is ASCII and must start with "solid".
+
+bool read_stl_soup(const std::string& file, Soup& soup) {
+  const std::uintmax_t file_size = std::filesystem::file_size(file);
+  std::ifstream in(file, std::ios::binary);
+  unsigned char header[84] = {};
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  const std::uintmax_t declared = static_cast<std::uintmax_t>(header[80]) | (static_cast<std::uintmax_t>(header[81]) << 8) |
+                                  (static_cast<std::uintmax_t>(header[82]) << 16) |
+                                  (static_cast<std::uintmax_t>(header[83]) << 24);
+  in.clear();
+  in.seekg(0);
+  if (file_size >= 84 && file_size == 84 + 50 * declared) {
+    std::vector<std::array<std::size_t, 3>> triangles;
+    if (!CGAL::IO::internal::parse_binary_STL(in, soup.points, triangles, false)) return false;
+    for (const auto& triangle : triangles) soup.polygons.emplace_back(triangle.begin(), triangle.end());
+    return true;
+  }
+  std::string first_word;
+  in >> first_word;
+  if (first_word != "solid") {
+    refuse(file, fmt::format("neither binary STL (84 + 50·N bytes for the N = {} triangles its header declares, "
+                             "but the file has {} bytes) nor ASCII STL (the first word is not 'solid')",
+                             declared, file_size));
+  }
+  in.seekg(0);
+  std::vector<std::array<std::size_t, 3>> triangles;
+  if (!CGAL::IO::internal::parse_ASCII_STL(in, soup.points, triangles, false)) return false;
+  for (const auto& triangle : triangles) soup.polygons.emplace_back(triangle.begin(), triangle.end());
+  return true;
+}
+
 struct ReadableFormat {
   std::string_view extension;  // lower case, with the dot
   SoupReader read;
@@ -50,10 +348,9 @@ struct ReadableFormat {
 const ReadableFormat readable_formats[] = {
     {".off",
      [](const std::string& file, Soup& soup) {
-       return CGAL::IO::read_OFF(file, soup.points, soup.polygons, CGAL::parameters::verbose(false));
+       return read_off_soup(file, soup);
      },
-     "fewer vertices or faces than the header declares, a vertex line with fewer than three numbers, a "
-     "face line with fewer indices than its corner count, or a vertex index out of range"},
+     "fewer vertices or faces than the header declares, or a vertex line with fewer than three numbers"},
     {".obj",
      [](const std::string& file, Soup& soup) {
        return CGAL::IO::read_OBJ(file, soup.points, soup.polygons, CGAL::parameters::verbose(false));
@@ -61,16 +358,16 @@ const ReadableFormat readable_formats[] = {
      "a line that is not OBJ, a vertex with fewer than three coordinates, or no vertices or no faces"},
     {".ply",
      [](const std::string& file, Soup& soup) {
+       check_ply_sizes(file);
        return CGAL::IO::read_PLY(file, soup.points, soup.polygons, CGAL::parameters::verbose(false));
      },
      "no valid PLY header, faces without a vertex_indices or vertex_index list, or fewer data than the "
      "header declares"},
     {".stl",
      [](const std::string& file, Soup& soup) {
-       return CGAL::IO::read_STL(file, soup.points, soup.polygons, CGAL::parameters::verbose(false));
+       return read_stl_soup(file, soup);
      },
-     "neither ASCII STL (solid ... endsolid) nor binary STL (80-byte header, triangle count, 50 bytes "
-     "per triangle)"},
+     "malformed ASCII STL (solid ... facet ... endsolid)"},
 };
 
 std::string lower_extension(const path& file) {
@@ -89,34 +386,11 @@ const ReadableFormat& readable_format_of(const path& file) {
                                file.string(), extension));
 }
 
-// CGAL's OFF reader sizes its arrays from the header before reading the data; a header claiming
-// more vertices or faces than the file can hold is refused first. Each vertex needs at least three
-// numbers and each face four (a count and three indices), each of at least one character and a
-// separator (binary OFF needs more: 4 bytes a number).
-void check_off_counts(const path& file) {
-  std::ifstream in(file, std::ios::binary);
-  CGAL::File_header_OFF header(false);
-  if (!(in >> header)) {
-    throw InputError(fmt::format("cannot read {}: no valid OFF header (OFF keyword, then vertex, face and edge "
-                                 "counts)",
-                                 file.string()));
-  }
-  const std::uintmax_t size = std::filesystem::file_size(file);
-  const std::uintmax_t vertices = header.size_of_vertices();
-  const std::uintmax_t faces = header.size_of_facets();
-  if (vertices > size || faces > size || 6 * vertices + 8 * faces > size + 1) {
-    throw InputError(fmt::format("cannot read {}: the OFF header declares {} vertices and {} faces, more than "
-                                 "its {} bytes can hold",
-                                 file.string(), header.size_of_vertices(), header.size_of_facets(), size));
-  }
-}
-
 [[noreturn]] void refuse_oversized(const path& file) {
   throw InputError(fmt::format("cannot read {}: it declares more data than fits in memory", file.string()));
 }
 
 Soup read_soup(const path& file, const ReadableFormat& format) {
-  if (format.extension == ".off") check_off_counts(file);
   Soup soup;
   bool read = false;
   try {

@@ -8,14 +8,17 @@
 //   .obj  `v` and `f` lines (texture and normal indices ignored, negative indices relative)
 //   .ply  ASCII and binary, little or big endian; faces as a `vertex_indices` or `vertex_index`
 //         list; other elements and properties ignored
-//   .stl  ASCII or binary. STL stores three corners per triangle and no shared vertices: CGAL's
-//         reader merges corners at identical coordinates into one vertex (a note says so)
+//   .stl  ASCII or binary, decided by the size: binary is exactly 84 + 50·N bytes for the N
+//         triangles of its header; anything else must be ASCII (first word "solid", any blank
+//         after it). STL stores three corners per triangle and no shared vertices: CGAL's reader
+//         merges corners at identical coordinates into one vertex (a note says so)
 // Polygons with more than three corners are triangulated as a fan around their first corner
 // (v0 v1 v2, v0 v2 v3, ...), which keeps their orientation; a note says how many there were.
 // InputError, naming the file, for: an unknown extension, a missing or unreadable file, a file
 // CGAL's reader rejects (no header, counts the data does not match, truncated, not that format),
-// an OFF header whose counts cannot fit in the file's size (checked before anything is allocated),
-// a face with fewer than three corners, a vertex index out of range, a non-finite coordinate, no
+// an OFF or PLY header, an OFF face or a PLY list whose counts cannot fit in the file's size
+// (checked before anything is allocated), an OFF face index that is not a plain decimal integer
+// below the vertex count ("2.7", "18446744073709551615"), a face with fewer than three corners, a vertex index out of range, a non-finite coordinate, no
 // faces at all, or more vertices than 32-bit indices address.
 //
 // write_mesh writes .ply (binary little-endian, float64 coordinates, int32 indices), .obj or .off
