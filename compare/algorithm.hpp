@@ -13,6 +13,7 @@
 #include "compare/inputs.hpp"
 #include "compare/result.hpp"
 #include "core/grid.hpp"
+#include "core/memory.hpp"
 #include "core/params.hpp"
 
 namespace gt {
@@ -54,6 +55,12 @@ struct Algorithm {
   // The keys a case's "expect" may hold (core/json_keys.hpp require_shape): what this algorithm's
   // checks read. Any other key is bad input, so a typo cannot silently drop a check.
   nlohmann::json expect_shape = nlohmann::json::object();
+  // The peak memory a case needs beyond the process's fixed cost (core/memory.hpp), from its
+  // resolved parameters and loaded input. Each algorithm's file states the bytes per cell, voxel,
+  // triangle or pixel it measured (peak RSS of `groundtruth run` on both backends, report
+  // included, at two sizes: the difference over the difference in size) and rounds them up. The
+  // driver checks it before preparing the case.
+  std::function<MemoryEstimate(const nlohmann::json& resolved, const LoadedInput& input)> memory;
 };
 
 const std::vector<Algorithm>& algorithms();

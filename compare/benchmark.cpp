@@ -38,6 +38,7 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
     progress.start_case(static_cast<int>(rows.size()) + 1, fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
     LoadedInput input_grid;
     input_grid.heights = benchmark_input(size);
+    require_memory(algorithm.memory(params, input_grid), fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
     const PreparedTwin prepared = algorithm.prepare(params, input_grid);
     std::vector<double> cpu_times;
     progress.stage("cpu");

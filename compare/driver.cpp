@@ -92,6 +92,7 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
     if (!spec.expect.is_null()) require_shape(spec.expect, algorithm.expect_shape, fmt::format("case {}: expect (what {}'s checks read: Algorithm::expect_shape)", spec.name, spec.algorithm));
     try {
       job.input = load_input(spec.input, spec.crop, dataset_dir);
+      require_memory(algorithm.memory(job.resolved, job.input), spec.algorithm);
       job.prepared = algorithm.prepare(job.resolved, job.input);
     } catch (const InputError& error) {
       throw InputError(fmt::format("case {}: {}", spec.name, error.what()));

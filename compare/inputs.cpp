@@ -235,6 +235,8 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
     loaded.description += fmt::format(", crop {}", crop.dump());
   }
   check_finite(loaded.heights, loaded.description);
+  check_fits_float(loaded.heights, loaded.description);
+  check_cell_size(loaded.heights, loaded.description);
   if (count_valid(loaded.heights) == 0) throw InputError(loaded.description + ": every cell is no-data");
   return loaded;
 }

@@ -38,6 +38,30 @@ void check_finite(const Grid<T>& grid, const std::string& what) {
 }
 
 template <class T>
+void check_cell_size(const Grid<T>& grid, const std::string& what) {
+  const auto sound = [](double size) { return std::isfinite(size) && size >= 1e-9 && size <= 1e9; };
+  if (!sound(grid.cell_size_x) || !sound(grid.cell_size_y)) {
+    throw InputError(fmt::format("{}: cell size {} x {} {} is not a length between 1e-9 and 1e9 (set cell_size)", what,
+                                 grid.cell_size_x, grid.cell_size_y, grid.horizontal_unit));
+  }
+}
+
+template <class T>
+void check_fits_float(const Grid<T>& grid, const std::string& what) {
+  const double largest = std::numeric_limits<float>::max() / 16.0;
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      const double value = static_cast<double>(grid.at(x, y));
+      if (grid.is_valid(x, y) && std::abs(value) > largest) {
+        throw InputError(fmt::format("{}: cell (x={}, y={}) is {:g}, beyond ±{:.3g}: the GPU twins hold heights as "
+                                     "32-bit floats and sum up to 8 differences of them, which must stay finite",
+                                     what, x, y, value, largest));
+      }
+    }
+  }
+}
+
+template <class T>
 std::pair<double, double> valid_range(const Grid<T>& grid) {
   double low = std::numeric_limits<double>::infinity();
   double high = -low;
@@ -59,6 +83,10 @@ std::size_t count_valid(const Grid<T>& grid) {
 
 template void check_finite(const Grid<float>&, const std::string&);
 template void check_finite(const Grid<double>&, const std::string&);
+template void check_cell_size(const Grid<float>&, const std::string&);
+template void check_cell_size(const Grid<double>&, const std::string&);
+template void check_fits_float(const Grid<float>&, const std::string&);
+template void check_fits_float(const Grid<double>&, const std::string&);
 template std::pair<double, double> valid_range(const Grid<float>&);
 template std::pair<double, double> valid_range(const Grid<double>&);
 template std::size_t count_valid(const Grid<float>&);

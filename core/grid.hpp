@@ -71,6 +71,16 @@ void check_grid_fits(long long width, long long height, long long bytes_per_cell
 template <class T>
 void check_finite(const Grid<T>& grid, const std::string& what);
 
+// Throws InputError unless both cell sizes are finite and within [1e-9, 1e9] (the range the
+// inputs' "cell_size" accepts): zero, negative, NaN or infinite spacings make no slope.
+template <class T>
+void check_cell_size(const Grid<T>& grid, const std::string& what);
+
+// Throws InputError naming the first valid cell whose magnitude exceeds FLT_MAX/16: the GPU twins
+// hold heights as 32-bit floats and sum up to 8 differences of them, which must stay finite.
+template <class T>
+void check_fits_float(const Grid<T>& grid, const std::string& what);
+
 // Lowest and highest value over valid cells; low > high (+inf, -inf) when no cell is valid.
 template <class T>
 std::pair<double, double> valid_range(const Grid<T>& grid);

@@ -75,6 +75,18 @@ std::string format_bytes(double bytes) {
   return fmt::format("{:.0f} KiB", std::ceil(bytes / 1024.0));
 }
 
+MemoryEstimate memory_for(double count, const std::string& unit, double bytes_each) {
+  return {count * bytes_each, fmt::format("{:.0f} {} x {:g} B", count, unit, bytes_each)};
+}
+
+MemoryEstimate operator+(const MemoryEstimate& a, const MemoryEstimate& b) {
+  return {a.bytes + b.bytes, a.basis + " + " + b.basis};
+}
+
+void require_memory(const MemoryEstimate& estimate, const std::string& what) {
+  require_memory(estimate.bytes, estimate.basis, what);
+}
+
 void require_memory(double bytes, const std::string& basis, const std::string& what) {
   const Limit limit = tightest_limit();
   if (!(bytes <= limit.bytes)) {

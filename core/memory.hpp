@@ -26,9 +26,20 @@
 
 namespace gt {
 
+// What a case or a file is about to need: bytes, and how they were counted (for messages).
+struct MemoryEstimate {
+  double bytes = 0.0;
+  std::string basis;
+};
+
+// `count` items of `bytes_each`: {count·bytes_each, "COUNT UNIT x BYTES_EACH B"}.
+MemoryEstimate memory_for(double count, const std::string& unit, double bytes_each);
+MemoryEstimate operator+(const MemoryEstimate& a, const MemoryEstimate& b);
+
 double available_memory_bytes();
 void set_memory_limit(double bytes);
 void require_memory(double bytes, const std::string& basis, const std::string& what);
+void require_memory(const MemoryEstimate& estimate, const std::string& what);
 
 // "12.5 MiB", "3.2 GiB": a size for messages.
 std::string format_bytes(double bytes);

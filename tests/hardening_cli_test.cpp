@@ -2,8 +2,10 @@
 // offsets read without overflow, wrong JSON types, case names that would write outside --out,
 // non-finite numbers on the command line, report folders that hold a user's file, special and
 // dangling output paths, interruptions (SIGINT, SIGTERM) and stale staging folders, and progress
-// lines when stderr is not a terminal. Every refusal is exit 2 with a message naming the problem,
-// and leaves nothing behind.
+// lines when stderr is not a terminal; files declaring more than they hold (tests/data/hostile,
+// made by its generate.py), heights and cell sizes no twin can compute with, noise parameters
+// that would overflow the lattice index, and memory estimates checked under an address-space
+// limit. Every refusal is exit 2 with a message naming the problem, and leaves nothing behind.
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -32,6 +34,30 @@ using nlohmann::json;
 using ::testing::HasSubstr;
 
 const std::string groundtruth = GT_BINARY_DIR "/groundtruth";
+const fs::path hostile_data = fs::path(GT_TEST_DATA_DIR) / "hostile";
+
+// AddressSanitizer reserves terabytes of address space: an address-space limit cannot be tested
+// under it, nor can peak memory be compared with the estimates.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool under_address_sanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool under_address_sanitizer = true;
+#else
+constexpr bool under_address_sanitizer = false;
+#endif
+#else
+constexpr bool under_address_sanitizer = false;
+#endif
+
+// groundtruth `args` under `ulimit -v` of `kibibytes` (through /bin/sh, which sets it and execs).
+gt::testing::ProgramRun run_with_address_space_limit(long kibibytes, const std::vector<std::string>& args,
+                                                     const fs::path& cwd) {
+  std::vector<std::string> shell_args = {"-c", "ulimit -v " + std::to_string(kibibytes) + " && exec \"$0\" \"$@\"",
+                                         groundtruth};
+  shell_args.insert(shell_args.end(), args.begin(), args.end());
+  return gt::testing::run_program("/bin/sh", shell_args, cwd);
+}
 
 std::vector<std::string> entries_of(const fs::path& folder) {
   std::vector<std::string> names;
@@ -88,6 +114,75 @@ TEST_F(Hostile, WrongTypesAndTruncatingSizesAreRefused) {
   json fraction = thermal_case("mine.fraction");
   fraction["input"]["height"] = 2.5;
   expect_case_refused(fraction, "height = 2.5 is not whole");
+}
+
+TEST_F(Hostile, FilesDeclaringMoreThanTheyHoldAreRefused) {
+  json tiff = thermal_case("mine.tiff");
+  tiff["input"] = {{"file", (hostile_data / "declares_37000.tif").string()}};
+  expect_case_refused(tiff, "TIFF strip 0 of 37000 (148000 bytes at offset 8) is empty or runs past the end of the "
+                            "150-byte file");
+}
+
+TEST_F(Hostile, HeightsBeyondFloatAndCellSizesWithoutLengthAreRefused) {
+  const gt::testing::TemporaryFolder data("gt_hostile_data");
+  std::ofstream(data / "huge.json") << json{{"width", 2}, {"height", 2}, {"values", {1e300, 0, 0, 0}}}.dump();
+  json huge = thermal_case("mine.huge");
+  huge["input"] = {{"file", (data / "huge.json").string()}};
+  expect_case_refused(huge, "cell (x=0, y=0) is 1e+300, beyond ±2.13e+37");
+  json flat = thermal_case("mine.flat");
+  flat["input"] = {{"file", (hostile_data / "zero_cell_size.tif").string()}};
+  expect_case_refused(flat, "cell size 0 x 0 deg is not a length");
+}
+
+TEST_F(Hostile, NoiseWhoseLatticeIndexWouldOverflowIsRefused) {
+  // The finest of 32 octaves of lacunarity 16 from an origin of 1e9: 1e9·16^31.
+  const json entry = {{"name", "mine.noise"},
+                      {"algorithm", "noise.fbm"},
+                      {"input", {{"generator", "flat"}, {"width", 8}, {"height", 8}}},
+                      {"params", {{"origin_x", 1e9}, {"octaves", 32}, {"lacunarity", 16}}}};
+  expect_case_refused(entry, "would overflow 32 bits");
+}
+
+TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
+  if (under_address_sanitizer) GTEST_SKIP() << "AddressSanitizer's shadow memory ignores ulimit -v";
+  constexpr long four_gibibytes = 4L << 20;  // in KiB
+  // A real 8000² PNG: reading it fits (about 1.2 GB), pipe erosion on it does not.
+  const auto pipe = run_with_address_space_limit(
+      four_gibibytes,
+      {"run", "--algorithm", "erosion.pipe", "--input", (hostile_data / "flat_8000.png").string(), "--out",
+       (work_ / "out").string()},
+      work_.path());
+  EXPECT_EQ(pipe.status, 2) << pipe;
+  EXPECT_THAT(pipe.err, HasSubstr("erosion.pipe needs about 208.6 GiB (64000000 cells x 1100 B")) << pipe;
+  EXPECT_THAT(pipe.err, HasSubstr("ulimit -v")) << pipe;
+  // A 66-byte PNG declaring 30000² 16-bit pixels: diff-image weighs both images before reading.
+  const std::string declared = (hostile_data / "declares_30000.png").string();
+  const auto diff = run_with_address_space_limit(four_gibibytes, {"diff-image", declared, declared}, work_.path());
+  EXPECT_EQ(diff.status, 2) << diff;
+  EXPECT_THAT(diff.err, HasSubstr("(30000x30000) needs about")) << diff;
+  // Checkpoints: 1000 states of a 512² pipe run are counted before the run starts.
+  const auto checkpoints = run_with_address_space_limit(
+      four_gibibytes,
+      {"run", "--algorithm", "erosion.pipe", "--size", "512x512", "--set", "steps=1000", "--set", "checkpoints=1000",
+       "--out", (work_ / "out").string()},
+      work_.path());
+  EXPECT_EQ(checkpoints.status, 2) << checkpoints;
+  EXPECT_THAT(checkpoints.err, HasSubstr("262144000 cell-checkpoints x 150 B")) << checkpoints;
+  EXPECT_TRUE(fs::is_empty(work_.path()));
+}
+
+TEST_F(Hostile, MemoryLimitOptionCapsEveryEstimate) {
+  json entry = thermal_case("mine.capped");
+  entry["input"] = {{"generator", "cone"}, {"width", 1024}, {"height", 1024}};
+  std::ofstream(work_ / "mine.json") << json::array({entry}).dump();
+  const auto run = gt::testing::run_program(groundtruth,
+                                            {"--memory-limit", "64", "run", "mine.capped", "--cases",
+                                             (work_ / "mine.json").string(), "--out", (work_ / "out").string()},
+                                            work_.path());
+  EXPECT_EQ(run.status, 2) << run;
+  EXPECT_THAT(run.err, HasSubstr("erosion.thermal needs about 450.0 MiB (1048576 cells x 450 B)")) << run;
+  EXPECT_THAT(run.err, HasSubstr("more than the 64.0 MiB this process may use (--memory-limit)")) << run;
+  EXPECT_EQ(entries_of(work_.path()), std::vector<std::string>{"mine.json"});
 }
 
 TEST_F(Hostile, CommandLineNumbersMustBeFiniteAndFit) {

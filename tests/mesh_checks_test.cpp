@@ -479,7 +479,8 @@ TEST_F(MeshFiles, MalformedFilesAreRefusedWithTheirName) {
       {folder / "missing.off", "no such file"},
   };
   for (const auto& [file, expected] : cases) {
-    const std::string message = refusal([&] { read_mesh(file); });
+    const fs::path& path = file;  // clang 14 cannot capture a structured binding
+    const std::string message = refusal([&] { read_mesh(path); });
     EXPECT_THAT(message, HasSubstr(file.filename().string())) << file;
     EXPECT_THAT(message, HasSubstr(expected)) << file;
   }

@@ -90,7 +90,12 @@ Algorithm mesh_check_algorithm() {
           .has_field_twin = false,
           .ad_hoc_input = AdHocInput::mesh,
           .expect_shape = {{"watertight", nullptr}, {"closed", nullptr}, {"genus", nullptr}, {"euler", nullptr},
-                           {"border_edges", nullptr}, {"self_intersections", nullptr}}};
+                           {"border_edges", nullptr}, {"self_intersections", nullptr}},
+          // Measured 650 B a triangle (bunny00, 75408 triangles, vs cow, 5804): CGAL's and
+          // OpenMesh's copies and the self-intersection tree.
+          .memory = [](const nlohmann::json&, const LoadedInput& input) {
+            return memory_for(input.mesh ? static_cast<double>(input.mesh->triangles.size()) : 0.0, "triangles", 1000);
+          }};
 }
 
 }  // namespace gt

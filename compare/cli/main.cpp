@@ -12,6 +12,7 @@
 //                                      image differences, a heat map and a verdict mask
 //   render INPUT --out out.png [--backend cpu|gpu] [--width --height --azimuth --elevation --fov
 //          --distance | --eye --target] [--look]   a mesh or a heightmap (as a terrain solid) to a PNG
+// Every command takes --memory-limit MIB (core/memory.hpp).
 // Exit status: 0 nothing unexpected failed, 1 something did (mutants: one survived), 2 bad usage or
 // bad input (README's "Outcomes and exit status")
 // (check-mesh: 0 watertight and consistently oriented, 1 not, 2 unreadable;
@@ -28,6 +29,7 @@
 
 #include "compare/algorithm.hpp"
 #include "compare/cases.hpp"
+#include "core/memory.hpp"
 #include "compare/cli/check_mesh.hpp"
 #include "compare/cli/diff_image.hpp"
 #include "compare/cli/render.hpp"
@@ -172,6 +174,13 @@ int main(int argc, char** argv) {
   gt::install_interrupt_cleanup();
   CLI::App app{"groundtruth: CPU references and GPU twins of terrain and cave algorithms, compared"};
   app.require_subcommand(1);
+  // Before or after the subcommand (fallthrough): a cap below what the machine and ulimit -v allow.
+  double memory_limit_mib = 0.0;
+  app.add_option("--memory-limit", memory_limit_mib,
+                 "refuse any input or case whose memory estimate exceeds this many MiB (the machine's available "
+                 "memory and ulimit -v are always respected)")
+      ->check(CLI::Range(1.0, 1e9));
+  app.fallthrough();
 
   bool list_as_json = false;
   auto* list = app.add_subcommand("list", "algorithms with their parameters, and the cases");
@@ -301,6 +310,7 @@ int main(int argc, char** argv) {
     const int status = app.exit(error);
     return status == 0 ? 0 : exit_bad_input;
   }
+  gt::set_memory_limit(memory_limit_mib * 1024.0 * 1024.0);
 
   try {
     if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);

@@ -95,6 +95,42 @@ std::vector<T> tiff_array_tag(TIFF* tiff, std::uint32_t tag, TIFFDataType type, 
   return {data, data + count};
 }
 
+// A TIFF names where its pixel data lie (strip or tile offsets and byte counts); OpenImageIO reads
+// whatever the header declares and prints an error per missing strip (4 MB of stderr for a 200-byte
+// file declaring 37000² pixels). Refused here: a strip or tile that is empty or runs past the end of
+// the file, and uncompressed data shorter than the pixels it must hold.
+void check_tiff_data_in_file(TIFF* tiff, const path& file) {
+  const std::uintmax_t file_size = std::filesystem::file_size(file);
+  const bool tiled = TIFFIsTiled(tiff) != 0;
+  const std::uint32_t chunks = tiled ? TIFFNumberOfTiles(tiff) : TIFFNumberOfStrips(tiff);
+  std::uint64_t* offsets = nullptr;
+  std::uint64_t* byte_counts = nullptr;
+  if (!TIFFGetField(tiff, tiled ? TIFFTAG_TILEOFFSETS : TIFFTAG_STRIPOFFSETS, &offsets) ||
+      !TIFFGetField(tiff, tiled ? TIFFTAG_TILEBYTECOUNTS : TIFFTAG_STRIPBYTECOUNTS, &byte_counts) || offsets == nullptr ||
+      byte_counts == nullptr) {
+    throw InputError(fmt::format("{}: the TIFF names no {} offsets or byte counts", file.string(), tiled ? "tile" : "strip"));
+  }
+  std::uint64_t stored = 0;
+  for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
+    if (byte_counts[chunk] == 0 || offsets[chunk] > file_size || byte_counts[chunk] > file_size - offsets[chunk]) {
+      throw InputError(fmt::format("{}: TIFF {} {} of {} ({} bytes at offset {}) is empty or runs past the end of "
+                                   "the {}-byte file: the header declares more data than the file holds",
+                                   file.string(), tiled ? "tile" : "strip", chunk, chunks, byte_counts[chunk],
+                                   offsets[chunk], file_size));
+    }
+    stored += byte_counts[chunk];
+  }
+  std::uint16_t compression = COMPRESSION_NONE;
+  TIFFGetFieldDefaulted(tiff, TIFFTAG_COMPRESSION, &compression);
+  const double pixel_bytes = tiled ? static_cast<double>(TIFFTileSize64(tiff)) * chunks
+                                   : static_cast<double>(TIFFStripSize64(tiff)) * chunks;
+  if (compression == COMPRESSION_NONE && static_cast<double>(stored) < pixel_bytes) {
+    throw InputError(fmt::format("{}: uncompressed TIFF stores {} bytes of pixels, fewer than the {:.0f} its size "
+                                 "declares",
+                                 file.string(), stored, pixel_bytes));
+  }
+}
+
 GeoTiffTags read_geotiff_tags(const path& file) {
   std::string errors;
   TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
@@ -104,6 +140,7 @@ GeoTiffTags read_geotiff_tags(const path& file) {
   TIFFOpenOptionsFree(options);
   if (!tiff) throw InputError(fmt::format("cannot open {} as TIFF: {}", file.string(), errors));
 
+  check_tiff_data_in_file(tiff.get(), file);
   GeoTiffTags tags;
   tags.pixel_scale = tiff_array_tag<double>(tiff.get(), model_pixel_scale_tag, TIFF_DOUBLE, file);
   tags.tiepoint = tiff_array_tag<double>(tiff.get(), model_tiepoint_tag, TIFF_DOUBLE, file);
@@ -257,11 +294,14 @@ HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) 
   const auto input = OIIO::ImageInput::open(file.string(), &config);
   if (!input) throw InputError(fmt::format("cannot open {}: {}", file.string(), OIIO::geterror()));
   const OIIO::ImageSpec& spec = input->spec();
-  check_grid_fits(spec.width, spec.height, 8, file.string());
 
   HeightmapFile result;
   const bool is_tiff = std::string(input->format_name()) == "tiff";
   const GeoTiffTags tags = is_tiff ? read_geotiff_tags(file) : GeoTiffTags{};
+  // While reading: OpenImageIO's decoded image (PNG keeps it whole; every channel in its stored
+  // type), channel 0 converted (at most 8 bytes), the heights (8) and the no-data mask (1).
+  check_grid_fits(spec.width, spec.height, 17 + static_cast<long long>(spec.nchannels) * spec.format.size(),
+                  file.string());
   result.format = format_label(input->format_name(), tags);
   if (spec.nchannels > 1) {
     result.notes.push_back(fmt::format("{} channels: channel 0 ({}) used as height", spec.nchannels,

@@ -110,6 +110,30 @@ ParamSpecs fractal_param_specs(Fractal fractal) {
   return specs;
 }
 
+namespace {
+
+// Both twins find a sample's lattice cell as int(floor(q)), the simplex bases after adding a skew of
+// at most 1.24·max|q| (4-D: F4·Σq, F4 = (√5 − 1)/4); beyond 2^31 that overflows a 32-bit int in C++
+// and is undefined in GLSL. The finest octave samples the largest coordinates, p·lacunarity^(n−1)
+// for n = ceil(octaves) octaves (a fraction adds part of one more), so |q| ≤ 2^29 leaves a factor
+// of 4 for the skew and the neighbouring lattice points.
+void check_lattice_range(const NoiseParams& params) {
+  const double lacunarity = params.fractal_params.lacunarity;
+  const double finest_power = params.fractal == Fractal::none ? 0.0 : std::ceil(params.fractal_params.octaves) - 1.0;
+  const double growth = lacunarity > 1.0 ? std::pow(lacunarity, finest_power) : 1.0;
+  const double largest = largest_coordinate(params) * growth;
+  constexpr double bound = 536870912.0;  // 2^29
+  if (!(largest <= bound)) {
+    throw InputError(fmt::format("noise coordinates reach {:.3g} (largest |origin + extent| {:.3g} x lacunarity^{} = "
+                                 "{:.3g} at the finest octave), beyond 2^29: the lattice index int(floor(q)) would "
+                                 "overflow 32 bits (undefined in C++ and in GLSL); lower the origin, step, octaves "
+                                 "or lacunarity",
+                                 largest, largest_coordinate(params), finest_power, growth));
+  }
+}
+
+}  // namespace
+
 NoiseParams noise_params_from_json(NoiseBasis basis, Fractal fractal, const nlohmann::json& resolved, int width,
                                    int height) {
   NoiseParams params;
@@ -139,6 +163,7 @@ NoiseParams noise_params_from_json(NoiseBasis basis, Fractal fractal, const nloh
                                  "periodic with the same shift",
                                  lacunarity));
   }
+  check_lattice_range(params);
   return params;
 }
 

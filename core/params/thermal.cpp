@@ -77,6 +77,7 @@ double talus_threshold_eq_4_10(double angle_deg, int width, double vertical_aspe
 }
 
 ThermalConstants thermal_constants(const ThermalParams& params, const Heightmap& original) {
+  check_cell_size(original, "thermal erosion");
   ThermalConstants constants;
   constants.request_factor = params.strength * 0.5;
   if (params.normalised) {
@@ -98,6 +99,7 @@ ThermalConstants thermal_constants(const ThermalParams& params, const Heightmap&
 }
 
 ThermalConstants thermal_jako_constants(const ThermalJakoParams& params, const Heightmap& heights) {
+  check_cell_size(heights, "thermal erosion (Jákó)");
   ThermalConstants constants;
   constants.talus_slope = std::tan(std::numbers::pi / 180.0 * params.talus_angle_deg);
   constants.length_x = heights.cell_size_x;
