@@ -7,6 +7,8 @@ export DEBIAN_FRONTEND=noninteractive
 packages=(
   # toolchain
   build-essential cmake ninja-build pkg-config git ca-certificates
+  # sanitizer build and libFuzzer targets (preset debug-asan)
+  clang libclang-rt-14-dev
   # core libraries
   libopenimageio-dev openimageio-tools libcgal-dev libopenmesh-dev libglm-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libzip-dev libtiff-dev

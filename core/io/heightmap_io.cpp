@@ -122,8 +122,15 @@ void check_tiff_data_in_file(TIFF* tiff, const path& file) {
   }
   std::uint16_t compression = COMPRESSION_NONE;
   TIFFGetFieldDefaulted(tiff, TIFFTAG_COMPRESSION, &compression);
+  // Tiles are stored whole, edge tiles included; strips hold the image's rows, the last one short.
+  std::uint32_t rows = 0;
+  std::uint16_t planar = PLANARCONFIG_CONTIG, samples = 1;
+  TIFFGetField(tiff, TIFFTAG_IMAGELENGTH, &rows);
+  TIFFGetFieldDefaulted(tiff, TIFFTAG_PLANARCONFIG, &planar);
+  TIFFGetFieldDefaulted(tiff, TIFFTAG_SAMPLESPERPIXEL, &samples);
+  const double planes = planar == PLANARCONFIG_SEPARATE ? samples : 1.0;
   const double pixel_bytes = tiled ? static_cast<double>(TIFFTileSize64(tiff)) * chunks
-                                   : static_cast<double>(TIFFStripSize64(tiff)) * chunks;
+                                   : static_cast<double>(TIFFVStripSize64(tiff, rows)) * planes;
   if (compression == COMPRESSION_NONE && static_cast<double>(stored) < pixel_bytes) {
     throw InputError(fmt::format("{}: uncompressed TIFF stores {} bytes of pixels, fewer than the {:.0f} its size "
                                  "declares",
