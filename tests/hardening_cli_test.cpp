@@ -134,13 +134,18 @@ TEST_F(Hostile, HeightsBeyondFloatAndCellSizesWithoutLengthAreRefused) {
   expect_case_refused(flat, "cell size 0 x 0 deg is not a length");
 }
 
-TEST_F(Hostile, NoiseWhoseLatticeIndexWouldOverflowIsRefused) {
+TEST_F(Hostile, NoiseWhoseLatticeIndicesWouldOverflowIsRefused) {
   // The finest of 32 octaves of lacunarity 16 from an origin of 1e9: 1e9·16^31.
   const json entry = {{"name", "mine.noise"},
                       {"algorithm", "noise.fbm"},
                       {"input", {{"generator", "flat"}, {"width", 8}, {"height", 8}}},
                       {"params", {{"origin_x", 1e9}, {"octaves", 32}, {"lacunarity", 16}}}};
   expect_case_refused(entry, "would overflow 32 bits");
+  // The cave's density at origin 500000 with 0.001 world units per noise unit: 5·10⁸ noise units.
+  const json cave = {{"name", "mine.cave"},
+                     {"algorithm", "cave.marching_tetrahedra"},
+                     {"params", {{"origin_x", 500000}, {"scale", 0.001}, {"size_x", 4}, {"size_y", 4}, {"size_z", 4}}}};
+  expect_case_refused(cave, "where the twins' lattice indices overflow 32 bits");
 }
 
 TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {

@@ -265,7 +265,7 @@ TEST(MeshChecks, AnOpenChunkMayHaveBorderEdges) {
 TEST(MeshChecks, ClosedCheckCountsBorderEdges) {
   Mesh cube = unit_cube();
   cube.triangles.pop_back();
-  const Check& closed = find_check(mesh_checks(check_mesh(cube), "cpu", true), "mesh.closed.cpu");
+  const Check closed = find_check(mesh_checks(check_mesh(cube), "cpu", true), "mesh.closed.cpu");
   EXPECT_EQ(closed.value, 3.0);
   EXPECT_EQ(closed.status, Outcome::fail);
 }

@@ -124,18 +124,67 @@ void read_binary_off_face(CGAL::File_scanner_OFF& scanner, std::size_t face, std
   scanner.skip_to_next_facet(face);
 }
 
+// The next token of an OFF header, '#' comments skipped; empty at the end.
+std::string next_header_token(std::istream& in) {
+  std::string token;
+  while (in >> token) {
+    if (token[0] != '#') return token;
+    in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return {};
+}
+
+std::int64_t big_endian_int32(std::istream& in) {
+  unsigned char bytes[4] = {};
+  in.read(reinterpret_cast<char*>(bytes), 4);
+  return static_cast<std::int32_t>((std::uint32_t{bytes[0]} << 24) | (std::uint32_t{bytes[1]} << 16) |
+                                   (std::uint32_t{bytes[2]} << 8) | std::uint32_t{bytes[3]});
+}
+
+// The vertex and face counts are judged before CGAL's header reader sees them: it estimates the
+// halfedges as int((V + F + 10)·2.1), undefined behaviour beyond INT_MAX (found by fuzzing). Each
+// vertex needs three numbers and each face four, each a character and a separator (binary: 4
+// bytes a number), so V ≤ size/6 and F ≤ size/8; counts that do not parse are left to CGAL.
+void check_off_header_counts(const std::string& file, std::uintmax_t file_size) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string keyword = next_header_token(in);
+  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return;
+  const bool dimensional = keyword.find('n') != std::string::npos;
+  std::int64_t vertices = -1, faces = -1;
+  const std::streampos after_keyword = in.tellg();
+  if (next_header_token(in) == "BINARY") {
+    in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    if (dimensional) big_endian_int32(in);
+    vertices = big_endian_int32(in);
+    faces = big_endian_int32(in);
+  } else {
+    in.clear();
+    in.seekg(after_keyword);
+    if (dimensional) next_header_token(in);
+    const auto count = [&in] {
+      const std::optional<std::uint64_t> parsed = plain_unsigned(next_header_token(in));
+      return parsed ? static_cast<std::int64_t>(std::min<std::uint64_t>(*parsed, INT64_MAX)) : std::int64_t{-1};
+    };
+    vertices = count();
+    faces = count();
+  }
+  if (vertices < 0 || faces < 0) return;
+  const std::uintmax_t largest = std::min<std::uintmax_t>(file_size, 400'000'000);  // (V + F)·2.1 < 2^31
+  if (static_cast<std::uintmax_t>(vertices) > largest / 6 || static_cast<std::uintmax_t>(faces) > largest / 8) {
+    refuse(file, fmt::format("the OFF header declares {} vertices and {} faces, more than its {} bytes can hold "
+                             "(or than CGAL's OFF reader can count)",
+                             vertices, faces, file_size));
+  }
+}
+
 bool read_off_soup(const std::string& file, Soup& soup) {
   const std::uintmax_t file_size = std::filesystem::file_size(file);
+  check_off_header_counts(file, file_size);
   std::ifstream in(file, std::ios::binary);
   CGAL::File_scanner_OFF scanner(in, false);
   if (!in) refuse(file, "no valid OFF header (OFF keyword, then vertex, face and edge counts)");
   const std::size_t vertices = scanner.size_of_vertices();
   const std::size_t faces = scanner.size_of_facets();
-  // Each vertex needs three numbers and each face four, each a character and a separator.
-  if (vertices > file_size / 6 || faces > file_size / 8) {
-    refuse(file, fmt::format("the OFF header declares {} vertices and {} faces, more than its {} bytes can hold",
-                             vertices, faces, file_size));
-  }
   soup.points.reserve(vertices);
   for (std::size_t vertex = 0; vertex < vertices; ++vertex) {
     double x = 0.0, y = 0.0, z = 0.0, w = 1.0;
@@ -158,8 +207,9 @@ bool read_off_soup(const std::string& file, Soup& soup) {
 // ---- PLY ---------------------------------------------------------------------------------------
 // CGAL's PLY reader sizes a list from its count before reading it (a binary face claiming 4·10⁹
 // indices allocates 16 GB) and reserves elements from the header's counts. check_ply_sizes walks
-// the header and the data first and refuses counts the file's bytes cannot hold; what it does not
-// judge (malformed values, missing properties) is left to CGAL.
+// the header and the data first and refuses counts the file's bytes cannot hold, and a property
+// before any element (CGAL would add it to an element that does not exist); what it does not judge
+// (malformed values, missing properties) is left to CGAL.
 
 struct PlyProperty {
   int size = 0;        // bytes of a scalar, or of a list's items
@@ -215,7 +265,11 @@ PlyHeader read_ply_header(std::istream& in, std::uintmax_t file_size, const std:
       element.count = *parsed;
       header.elements.push_back(element);
     }
-    if (keyword == "property" && !header.elements.empty()) {
+    // CGAL's reader adds a property to its last element without asking whether there is one.
+    if (keyword == "property" && header.elements.empty()) {
+      refuse(file, "a PLY property comes before any element (found by fuzzing: CGAL reads past its element list)");
+    }
+    if (keyword == "property") {
       std::string type, count_type, item_type;
       fields >> type;
       PlyProperty property;

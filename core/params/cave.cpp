@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/params/noise.hpp"
 
 namespace gt {
 namespace {
@@ -58,6 +59,27 @@ const ParamSpecs& cave_param_specs() {
   return specs;
 }
 
+namespace {
+
+// The density samples simplex3 at p / scale: every sample of the block, its pad and up to 2000
+// slabs of an endless path beyond it must stay within the noise's largest lattice coordinate.
+void check_noise_coordinates(const CaveParams& params) {
+  constexpr double largest_path = 2002.0;  // slabs (at most 2000) and the pad
+  double largest = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    largest = std::max(largest, (std::abs(static_cast<double>(params.origin[axis])) + params.size[axis] + largest_path) /
+                                    params.scale);
+  }
+  if (largest > largest_lattice_coordinate) {
+    throw InputError(fmt::format("the cave's density samples simplex noise up to {:.3g} noise units (origin and size "
+                                 "over scale {}), beyond {:.3g}, where the twins' lattice indices overflow 32 bits; "
+                                 "raise the scale or move the origin",
+                                 largest, params.scale, largest_lattice_coordinate));
+  }
+}
+
+}  // namespace
+
 CaveParams cave_params_from_json(const nlohmann::json& resolved) {
   CaveParams params;
   params.scale = resolved.at("scale").get<double>();
@@ -69,6 +91,7 @@ CaveParams cave_params_from_json(const nlohmann::json& resolved) {
     params.origin[axis] = resolved.at(origin_names[axis]).get<int>();
     params.size[axis] = resolved.at(size_names[axis]).get<int>();
   }
+  check_noise_coordinates(params);
   return params;
 }
 

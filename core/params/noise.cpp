@@ -112,21 +112,20 @@ ParamSpecs fractal_param_specs(Fractal fractal) {
 
 namespace {
 
-// Both twins find a sample's lattice cell as int(floor(q)), the simplex bases after adding a skew of
-// at most 1.24·max|q| (4-D: F4·Σq, F4 = (√5 − 1)/4); beyond 2^31 that overflows a 32-bit int in C++
-// and is undefined in GLSL. The finest octave samples the largest coordinates, p·lacunarity^(n−1)
-// for n = ceil(octaves) octaves (a fraction adds part of one more), so |q| ≤ 2^29 leaves a factor
-// of 4 for the skew and the neighbouring lattice points.
+// Both twins find a sample's lattice cell as int(floor(q + skew)), the skew being F·Σq (at most
+// 4·0.309·max|q| in 4-D, F4 = (√5 − 1)/4): beyond 2^31 that conversion is undefined in C++ and in
+// GLSL. The simplex bases then sum the N cell indices in a GLSL int, which wraps: N·(1 + N·F)·max|q|
+// ≤ 8.95·max|q| must stay below 2^31, so max|q| ≤ 2^27. The finest octave samples the largest
+// coordinates, p·lacunarity^(n−1) for n = ceil(octaves) octaves (a fraction adds part of one more).
 void check_lattice_range(const NoiseParams& params) {
   const double lacunarity = params.fractal_params.lacunarity;
   const double finest_power = params.fractal == Fractal::none ? 0.0 : std::ceil(params.fractal_params.octaves) - 1.0;
   const double growth = lacunarity > 1.0 ? std::pow(lacunarity, finest_power) : 1.0;
   const double largest = largest_coordinate(params) * growth;
-  constexpr double bound = 536870912.0;  // 2^29
-  if (!(largest <= bound)) {
+  if (!(largest <= largest_lattice_coordinate)) {
     throw InputError(fmt::format("noise coordinates reach {:.3g} (largest |origin + extent| {:.3g} x lacunarity^{} = "
-                                 "{:.3g} at the finest octave), beyond 2^29: the lattice index int(floor(q)) would "
-                                 "overflow 32 bits (undefined in C++ and in GLSL); lower the origin, step, octaves "
+                                 "{:.3g} at the finest octave), beyond 2^27: the lattice indices int(floor(q)) and their "
+                                 "sum would overflow 32 bits (undefined in C++ and in GLSL); lower the origin, step, octaves "
                                  "or lacunarity",
                                  largest, largest_coordinate(params), finest_power, growth));
   }

@@ -64,4 +64,9 @@ std::array<double, 4> reduced_origin(const NoiseParams& params);
 // Largest |coordinate| any sample of the grid reaches, in noise units.
 double largest_coordinate(const NoiseParams& params);
 
+// The largest |noise coordinate| either twin may be given: 2^27. Beyond it the lattice index
+// int(floor(q + skew)) or the simplex sum of N such indices (a GLSL int, which wraps) overflows
+// 32 bits (see check_lattice_range in noise.cpp).
+constexpr double largest_lattice_coordinate = 134217728.0;
+
 }  // namespace gt

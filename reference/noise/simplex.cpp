@@ -120,7 +120,9 @@ Cell<Real, N> locate_cell(const Vector<Real, N>& point) {
   const SimplexLattice& lattice = Variant<N>::lattice;
   const Real skew = left_to_right_sum(point) * static_cast<Real>(lattice.skew);
   Cell<Real, N> cell{};
-  int origin_sum = 0;
+  // 64 bits: the sum of N indices of up to 2^31 each (GLSL's int sum wraps; params keep the twins
+  // below that, core/params/noise.cpp check_lattice_range, but the reference takes any point).
+  std::int64_t origin_sum = 0;
   for (std::size_t axis = 0; axis < N; ++axis) {
     cell.origin[axis] = static_cast<int>(std::floor(point[axis] + skew));
     origin_sum += cell.origin[axis];
