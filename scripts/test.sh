@@ -9,4 +9,4 @@ ctest --preset release -j 2
 cmake --preset debug-asan
 cmake --build --preset debug-asan
 ctest --preset debug-asan -j 2
-bash scripts/fuzz.sh 15
+bash scripts/fuzz.sh

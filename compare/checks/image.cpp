@@ -22,6 +22,7 @@
 #include <fmt/ranges.h>
 
 #include "core/errors.hpp"
+#include "core/io/heightmap_io.hpp"
 #include "core/grid.hpp"
 
 namespace gt {
@@ -190,6 +191,7 @@ OIIO::ImageBuf read_image(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file, error)) {
     throw InputError(fmt::format("cannot read {}: no such file", file.string()));
   }
+  check_exr_attribute_sizes(file);
   const auto input = OIIO::ImageInput::open(file.string());
   if (!input) throw InputError(fmt::format("cannot read {}: {}", file.string(), OIIO::geterror()));
   OIIO::ImageSpec spec = input->spec();

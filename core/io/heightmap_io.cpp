@@ -228,6 +228,37 @@ void apply_georeferencing(HeightmapFile& file, const GeoTiffTags& tags) {
                            : "projected CRS: pixel scale taken as metres");
 }
 
+}  // namespace
+
+// ---- EXR header (before OpenEXR) ---------------------------------------------------------------
+// OpenEXR 3.1 allocates each header attribute at the size the file declares before reading it (a
+// 600-byte file asked for 1.9 GB: found by fuzzing). The header is a list of attributes, each a
+// name and a type (null-terminated) and an int32 size, ended by an empty name; every size must
+// fit in the bytes that follow.
+void check_exr_attribute_sizes(const path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char magic[4] = {};
+  in.read(reinterpret_cast<char*>(magic), 4);
+  if (!in || magic[0] != 0x76 || magic[1] != 0x2f || magic[2] != 0x31 || magic[3] != 0x01) return;  // not EXR
+  const std::uintmax_t file_size = std::filesystem::file_size(file);
+  in.seekg(8);  // magic and version
+  std::string name, type;
+  while (std::getline(in, name, '\0') && !name.empty() && std::getline(in, type, '\0')) {
+    unsigned char size_bytes[4] = {};
+    in.read(reinterpret_cast<char*>(size_bytes), 4);
+    const std::uint32_t size = std::uint32_t{size_bytes[0]} | (std::uint32_t{size_bytes[1]} << 8) |
+                               (std::uint32_t{size_bytes[2]} << 16) | (std::uint32_t{size_bytes[3]} << 24);
+    const std::streamoff position = in.tellg();
+    if (!in || position < 0 || size > file_size - static_cast<std::uintmax_t>(position)) {
+      throw InputError(fmt::format("{}: EXR header attribute '{}' declares {} bytes, more than the file holds",
+                                   file.string(), name.substr(0, 64), size));
+    }
+    in.seekg(size, std::ios::cur);
+  }
+}
+
+namespace {
+
 // ---- pixels (OpenImageIO) ----------------------------------------------------------------------
 
 template <class T>
@@ -296,6 +327,7 @@ std::string format_label(const std::string& oiio_format, const GeoTiffTags& tags
 }
 
 HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) {
+  check_exr_attribute_sizes(file);
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);  // channel 0 as stored, not multiplied by alpha
   const auto input = OIIO::ImageInput::open(file.string(), &config);

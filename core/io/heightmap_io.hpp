@@ -50,4 +50,9 @@ HeightmapFile read_heightmap(const std::filesystem::path& path, const HeightmapR
 
 void write_heightmap(const Heightmap& heights, const std::filesystem::path& path);
 
+// Throws InputError when an OpenEXR file's header declares an attribute larger than the bytes that
+// follow it (OpenEXR would allocate that size first); other files pass. For every reader that hands
+// a file to OpenImageIO (read_heightmap does; diff-image too).
+void check_exr_attribute_sizes(const std::filesystem::path& file);
+
 }  // namespace gt

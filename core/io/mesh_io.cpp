@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <new>
@@ -20,6 +21,7 @@
 #include <unistd.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/IO/OBJ.h>
@@ -141,48 +143,66 @@ std::int64_t big_endian_int32(std::istream& in) {
                                    (std::uint32_t{bytes[2]} << 8) | std::uint32_t{bytes[3]});
 }
 
-// The vertex and face counts are judged before CGAL's header reader sees them: it estimates the
-// halfedges as int((V + F + 10)·2.1), undefined behaviour beyond INT_MAX (found by fuzzing). Each
-// vertex needs three numbers and each face four, each a character and a separator (binary: 4
-// bytes a number), so V ≤ size/6 and F ≤ size/8; counts that do not parse are left to CGAL.
-void check_off_header_counts(const std::string& file, std::uintmax_t file_size) {
-  std::ifstream in(file, std::ios::binary);
-  const std::string keyword = next_header_token(in);
-  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return;
-  const bool dimensional = keyword.find('n') != std::string::npos;
-  std::int64_t vertices = -1, faces = -1;
+// The header is read here and handed to CGAL's File_scanner_OFF: CGAL's own header reader estimates
+// the halfedges as int((V + F + 10)·2.1), undefined behaviour beyond INT_MAX (found by fuzzing,
+// also with keywords it scans differently from any word split). Grammar: one word
+// [ST][C][N][4][n]OFF, optionally the word BINARY, then [dimension] V F E as decimal words or as
+// big-endian int32. Each vertex needs three numbers and each face four, each a character and a
+// separator (binary: 4 bytes a number): V ≤ size/6 and F ≤ size/8, and the counts stay below
+// 400 MB's worth so that CGAL's arithmetic on them fits an int.
+CGAL::File_header_OFF read_off_header(std::istream& in, std::uintmax_t file_size, const std::string& file) {
+  const auto bad_header = [&file] {
+    refuse(file, "no valid OFF header (OFF keyword, then vertex, face and edge counts)");
+  };
+  std::string keyword = next_header_token(in);
+  CGAL::File_header_OFF header(false);
+  const auto take_prefix = [&keyword](const char* prefix) {
+    const bool present = keyword.rfind(prefix, 0) == 0;
+    if (present) keyword.erase(0, std::strlen(prefix));
+    return present;
+  };
+  header.set_textures(take_prefix("ST"));
+  header.set_colors(take_prefix("C"));
+  header.set_normals(take_prefix("N"));
+  header.set_homogeneous(take_prefix("4"));
+  header.set_dimensional(take_prefix("n"));
+  if (keyword != "OFF") bad_header();
   const std::streampos after_keyword = in.tellg();
-  if (next_header_token(in) == "BINARY") {
+  header.set_binary(next_header_token(in) == "BINARY");
+  std::vector<std::int64_t> counts;
+  const std::size_t wanted = header.n_dimensional() ? 4 : 3;
+  if (header.binary()) {
     in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
-    if (dimensional) big_endian_int32(in);
-    vertices = big_endian_int32(in);
-    faces = big_endian_int32(in);
+    while (in && counts.size() < wanted) counts.push_back(big_endian_int32(in));
   } else {
     in.clear();
     in.seekg(after_keyword);
-    if (dimensional) next_header_token(in);
-    const auto count = [&in] {
-      const std::optional<std::uint64_t> parsed = plain_unsigned(next_header_token(in));
-      return parsed ? static_cast<std::int64_t>(std::min<std::uint64_t>(*parsed, INT64_MAX)) : std::int64_t{-1};
-    };
-    vertices = count();
-    faces = count();
+    while (counts.size() < wanted) {
+      const std::optional<std::uint64_t> count = plain_unsigned(next_header_token(in));
+      if (!count) bad_header();
+      counts.push_back(static_cast<std::int64_t>(std::min<std::uint64_t>(*count, INT32_MAX)));
+    }
   }
-  if (vertices < 0 || faces < 0) return;
-  const std::uintmax_t largest = std::min<std::uintmax_t>(file_size, 400'000'000);  // (V + F)·2.1 < 2^31
+  if (!in || std::any_of(counts.begin(), counts.end(), [](std::int64_t count) { return count < 0; })) bad_header();
+  if (header.n_dimensional() && counts[0] != 3) refuse(file, fmt::format("an nOFF of dimension {}: only 3-D meshes", counts[0]));
+  const std::int64_t vertices = counts[wanted - 3];
+  const std::int64_t faces = counts[wanted - 2];
+  const std::uintmax_t largest = std::min<std::uintmax_t>(file_size, 400'000'000);
   if (static_cast<std::uintmax_t>(vertices) > largest / 6 || static_cast<std::uintmax_t>(faces) > largest / 8) {
     refuse(file, fmt::format("the OFF header declares {} vertices and {} faces, more than its {} bytes can hold "
                              "(or than CGAL's OFF reader can count)",
                              vertices, faces, file_size));
   }
+  header.set_vertices(static_cast<std::size_t>(vertices));
+  header.set_facets(static_cast<std::size_t>(faces));
+  header.set_index_offset(0);
+  return header;
 }
 
 bool read_off_soup(const std::string& file, Soup& soup) {
   const std::uintmax_t file_size = std::filesystem::file_size(file);
-  check_off_header_counts(file, file_size);
   std::ifstream in(file, std::ios::binary);
-  CGAL::File_scanner_OFF scanner(in, false);
-  if (!in) refuse(file, "no valid OFF header (OFF keyword, then vertex, face and edge counts)");
+  CGAL::File_scanner_OFF scanner(in, read_off_header(in, file_size, file));
   const std::size_t vertices = scanner.size_of_vertices();
   const std::size_t faces = scanner.size_of_facets();
   soup.points.reserve(vertices);
@@ -212,6 +232,8 @@ bool read_off_soup(const std::string& file, Soup& soup) {
 // (malformed values, missing properties) is left to CGAL.
 
 struct PlyProperty {
+  std::string name;
+  std::string type;    // a scalar's type, or a list's item type
   int size = 0;        // bytes of a scalar, or of a list's items
   int count_size = 0;  // bytes of a list's count; 0 for a scalar
   bool count_signed = false;
@@ -238,6 +260,18 @@ int ply_type_size(const std::string& type, const std::string& file) {
     if (type == name) return size;
   }
   refuse(file, fmt::format("PLY property type '{}' is not a PLY type", type));
+}
+
+// CGAL reads a vertex's x, y and z only as float or double: other types make release builds read
+// through a null pointer (found by fuzzing; CGAL asserts it in debug builds only).
+void check_ply_coordinate_type(const PlyElement& element, const PlyProperty& property, const std::string& file) {
+  const bool coordinate = element.name == "vertex" && (property.name == "x" || property.name == "y" || property.name == "z");
+  const bool floating = property.count_size == 0 && (property.type == "float" || property.type == "float32" ||
+                                                     property.type == "double" || property.type == "float64");
+  if (coordinate && !floating) {
+    refuse(file, fmt::format("PLY vertex coordinate '{}' is stored as {}{}: CGAL's reader takes float or double only",
+                             property.name, property.count_size ? "a list of " : "", property.type));
+  }
 }
 
 PlyHeader read_ply_header(std::istream& in, std::uintmax_t file_size, const std::string& file) {
@@ -274,13 +308,17 @@ PlyHeader read_ply_header(std::istream& in, std::uintmax_t file_size, const std:
       fields >> type;
       PlyProperty property;
       if (type == "list") {
-        fields >> count_type >> item_type;
+        fields >> count_type >> item_type >> property.name;
         property.count_size = ply_type_size(count_type, file);
         property.count_signed = count_type[0] != 'u';
         property.size = ply_type_size(item_type, file);
+        property.type = item_type;
       } else {
+        fields >> property.name;
         property.size = ply_type_size(type, file);
+        property.type = type;
       }
+      check_ply_coordinate_type(header.elements.back(), property, file);
       header.elements.back().properties.push_back(property);
     }
   }
@@ -453,6 +491,11 @@ Soup read_soup(const path& file, const ReadableFormat& format) {
     refuse_oversized(file);
   } catch (const std::length_error&) {
     refuse_oversized(file);
+  } catch (const CGAL::Failure_exception& failure) {
+    // CGAL's readers assert what they assume of the file (a PLY coordinate stored as float, say:
+    // found by fuzzing); on a user's file that is bad input, not a bug of ours.
+    throw InputError(fmt::format("cannot read {}: CGAL's {} reader stopped at an assumption the file breaks: {}",
+                                 file.string(), format.extension.substr(1), failure.expression()));
   }
   if (!read) {
     throw InputError(fmt::format("cannot read {}: CGAL's {} reader refused it ({})", file.string(),
