@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_program.hpp"
+#include "tests/support/sanitizers.hpp"
 #include "tests/support/temporary_folder.hpp"
 
 namespace {
@@ -35,20 +36,6 @@ using ::testing::HasSubstr;
 
 const std::string groundtruth = GT_BINARY_DIR "/groundtruth";
 const fs::path hostile_data = fs::path(GT_TEST_DATA_DIR) / "hostile";
-
-// AddressSanitizer reserves terabytes of address space: an address-space limit cannot be tested
-// under it, nor can peak memory be compared with the estimates.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool under_address_sanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool under_address_sanitizer = true;
-#else
-constexpr bool under_address_sanitizer = false;
-#endif
-#else
-constexpr bool under_address_sanitizer = false;
-#endif
 
 // groundtruth `args` under `ulimit -v` of `kibibytes` (through /bin/sh, which sets it and execs).
 gt::testing::ProgramRun run_with_address_space_limit(long kibibytes, const std::vector<std::string>& args,
@@ -149,7 +136,7 @@ TEST_F(Hostile, NoiseWhoseLatticeIndicesWouldOverflowIsRefused) {
 }
 
 TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
-  if (under_address_sanitizer) GTEST_SKIP() << "AddressSanitizer's shadow memory ignores ulimit -v";
+  if (gt::testing::under_address_sanitizer) GTEST_SKIP() << "AddressSanitizer's shadow memory ignores ulimit -v";
   constexpr long four_gibibytes = 4L << 20;  // in KiB
   // A real 8000² PNG: reading it fits (about 1.2 GB), pipe erosion on it does not.
   const auto pipe = run_with_address_space_limit(

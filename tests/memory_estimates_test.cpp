@@ -14,6 +14,7 @@
 #include "compare/inputs.hpp"
 #include "core/params.hpp"
 #include "tests/support/run_program.hpp"
+#include "tests/support/sanitizers.hpp"
 #include "tests/support/temporary_folder.hpp"
 
 namespace {
@@ -70,11 +71,9 @@ struct MeasuredRun {
 class PeakMemory : public ::testing::TestWithParam<MeasuredRun> {};
 
 TEST_P(PeakMemory, StaysWithinTheEstimatePlusTheFixedCost) {
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  GTEST_SKIP() << "AddressSanitizer's shadow memory and quarantine inflate the resident size";
-#endif
-#endif
+  if (gt::testing::under_address_sanitizer) {
+    GTEST_SKIP() << "AddressSanitizer's shadow memory and quarantine inflate the resident size";
+  }
   const MeasuredRun& measured = GetParam();
   const gt::Algorithm& algorithm = gt::find_algorithm(measured.algorithm);
   const json cone = cone_of_side(measured.side);

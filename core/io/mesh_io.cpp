@@ -411,22 +411,20 @@ bool read_stl_soup(const std::string& file, Soup& soup) {
                                   (static_cast<std::uintmax_t>(header[83]) << 24);
   in.clear();
   in.seekg(0);
-  if (file_size >= 84 && file_size == 84 + 50 * declared) {
-    std::vector<std::array<std::size_t, 3>> triangles;
-    if (!CGAL::IO::internal::parse_binary_STL(in, soup.points, triangles, false)) return false;
-    for (const auto& triangle : triangles) soup.polygons.emplace_back(triangle.begin(), triangle.end());
-    return true;
-  }
-  std::string first_word;
-  in >> first_word;
-  if (first_word != "solid") {
-    refuse(file, fmt::format("neither binary STL (84 + 50·N bytes for the N = {} triangles its header declares, "
-                             "but the file has {} bytes) nor ASCII STL (the first word is not 'solid')",
-                             declared, file_size));
-  }
-  in.seekg(0);
   std::vector<std::array<std::size_t, 3>> triangles;
-  if (!CGAL::IO::internal::parse_ASCII_STL(in, soup.points, triangles, false)) return false;
+  if (file_size >= 84 && file_size == 84 + 50 * declared) {
+    if (!CGAL::IO::internal::parse_binary_STL(in, soup.points, triangles, false)) return false;
+  } else {
+    std::string first_word;
+    in >> first_word;
+    if (first_word != "solid") {
+      refuse(file, fmt::format("neither binary STL (84 + 50·N bytes for the N = {} triangles its header declares, "
+                               "but the file has {} bytes) nor ASCII STL (the first word is not 'solid')",
+                               declared, file_size));
+    }
+    in.seekg(0);
+    if (!CGAL::IO::internal::parse_ASCII_STL(in, soup.points, triangles, false)) return false;
+  }
   for (const auto& triangle : triangles) soup.polygons.emplace_back(triangle.begin(), triangle.end());
   return true;
 }
