@@ -10,6 +10,7 @@
 
 #include "compare/algorithm.hpp"
 #include "compare/benchmark.hpp"
+#include "compare/case_descriptors.hpp"
 #include "compare/cases.hpp"
 #include "compare/expectations.hpp"
 #include "compare/inputs.hpp"
@@ -89,7 +90,10 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
     job.spec = spec;
     const Algorithm& algorithm = find_algorithm(spec.algorithm);
     job.resolved = resolve_params(spec.name, *algorithm.params, spec.params);
-    if (!spec.expect.is_null()) require_shape(spec.expect, algorithm.expect_shape, fmt::format("case {}: expect (what {}'s checks read: Algorithm::expect_shape)", spec.name, spec.algorithm));
+    if (!spec.expect.is_null()) {
+      require_shape(spec.expect, algorithm.expect_shape, fmt::format("case {}: expect (what {}'s checks read: Algorithm::expect_shape)", spec.name, spec.algorithm));
+      check_descriptor_expect(spec.expect, fmt::format("case {}: expect", spec.name));
+    }
     try {
       job.input = load_input(spec.input, spec.crop, dataset_dir);
       require_memory(algorithm.memory(job.resolved, job.input), spec.algorithm);
@@ -209,6 +213,7 @@ int run_driver(const DriverOptions& options) {
   Report report;
   report.environment = base_environment();
   RunOptions run_options;
+  run_options.dataset_dir = options.dataset_dir;
   run_options.cpu_reps = options.backends == Backends::gpu ? 0 : options.cpu_reps;
   run_options.gpu_reps = options.gpu_reps;
   std::unique_ptr<GlContext> context;

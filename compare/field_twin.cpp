@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "compare/case_descriptors.hpp"
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
@@ -350,7 +351,7 @@ void add_divergence(const FieldTwin::Stepping& stepping, const ReferenceRuns& ru
   };
   add_series("ref<float>", "float", runs.float_path, true);
   if (gpu) add_series("GPU", "gpu", gpu->path, false);
-  attach_plot(plot, options.report_dir, "parity.png",
+  attach_plot({plot}, options.report_dir, "parity.png",
               "distance from ref<double> at the checkpoints: GPU (solid), ref<float> (dashed)", result);
 }
 
@@ -503,7 +504,11 @@ void write_artifacts(const FieldTwin& twin, const Heightmap& input, const Grid<d
 
 }  // namespace
 
-nlohmann::json field_spec_shape() { return {{"cells", nullptr}, {"total", nullptr}, {"tolerance", nullptr}}; }
+nlohmann::json field_spec_shape() {
+  nlohmann::json shape = descriptor_expect_shape();
+  shape.update({{"cells", nullptr}, {"total", nullptr}, {"tolerance", nullptr}});
+  return shape;
+}
 
 void run_field_twin(const FieldTwin& twin, const Heightmap& input, const nlohmann::json& expect,
                     const RunOptions& options, CaseResult& result) {
@@ -535,6 +540,14 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& input, const nlohman
     if (gpu) add_spec_checks(expect, gpu->first, "gpu", result);
   }
   write_artifacts(twin, input, runs.cpu, runs.cpu_float, gpu, options, result);
+  if (case_describes_terrain(result)) {
+    report_stage(options, "terrain descriptors");
+    const Grid<double> cpu_float = runs.cpu_float.cast<double>();
+    const std::optional<Grid<double>> gpu_heights =
+        gpu ? std::optional<Grid<double>>(gpu->first.cast<double>()) : std::nullopt;
+    add_case_descriptors({twin.generated ? nullptr : &input, &runs.cpu, &cpu_float, gpu_heights ? &*gpu_heights : nullptr},
+                         expect, options, result);
+  }
 }
 
 }  // namespace gt

@@ -88,6 +88,7 @@ struct RunOptions {
   bool gpu_available = false;
   std::string gpu_unavailable_reason;
   std::filesystem::path report_dir;  // artifacts go to report_dir / case name /
+  std::filesystem::path dataset_dir; // datasets/: the real DEM that case descriptors are shown beside
   Progress* progress = nullptr;
 };
 

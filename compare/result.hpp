@@ -64,6 +64,9 @@ struct CaseResult {
   std::vector<Check> checks;
   Timings timings;
   std::vector<Artifact> artifacts;
+  // Terrain descriptors of the input, each twin's result and a real DEM (compare/case_descriptors.hpp),
+  // null for cases that are not terrains.
+  nlohmann::json descriptors;
   std::string error;          // set when status == error
 };
 

@@ -12,6 +12,10 @@ packages=(
   # core libraries
   libopenimageio-dev openimageio-tools libcgal-dev libopenmesh-dev libglm-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libzip-dev libtiff-dev
+  # power spectra of terrain descriptors (compare/descriptors/power_spectrum.cpp)
+  libfftw3-dev
+  # tests comparing descriptors with GDAL's (gdaldem slope)
+  gdal-bin
   # headless OpenGL: EGL (device + surfaceless), OSMesa, llvmpipe; glad generates the loader
   libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6-dev mesa-utils
   python3 python3-glad

@@ -145,7 +145,7 @@ TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
        (work_ / "out").string()},
       work_.path());
   EXPECT_EQ(pipe.status, 2) << pipe;
-  EXPECT_THAT(pipe.err, HasSubstr("erosion.pipe needs about 208.6 GiB (64000000 cells x 1100 B")) << pipe;
+  EXPECT_THAT(pipe.err, HasSubstr("erosion.pipe needs about 216.4 GiB (64000000 cells x 1230 B")) << pipe;
   EXPECT_THAT(pipe.err, HasSubstr("ulimit -v")) << pipe;
   // A 66-byte PNG declaring 30000² 16-bit pixels: diff-image weighs both images before reading.
   const std::string declared = (hostile_data / "declares_30000.png").string();
@@ -172,7 +172,7 @@ TEST_F(Hostile, MemoryLimitOptionCapsEveryEstimate) {
                                              (work_ / "mine.json").string(), "--out", (work_ / "out").string()},
                                             work_.path());
   EXPECT_EQ(run.status, 2) << run;
-  EXPECT_THAT(run.err, HasSubstr("erosion.thermal needs about 450.0 MiB (1048576 cells x 450 B)")) << run;
+  EXPECT_THAT(run.err, HasSubstr("erosion.thermal needs about 580.0 MiB (1048576 cells x 580 B)")) << run;
   EXPECT_THAT(run.err, HasSubstr("more than the 64.0 MiB this process may use (--memory-limit)")) << run;
   EXPECT_EQ(entries_of(work_.path()), std::vector<std::string>{"mine.json"});
 }

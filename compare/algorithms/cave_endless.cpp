@@ -335,7 +335,7 @@ void add_ring_checks(const Path& path, const std::vector<Mesh>& chunks, const Ru
     missing.y.push_back(double(steps[step].window_missing));
   }
   plot.series = {generated, held, missing};
-  attach_plot(plot, options.report_dir, "ring.png",
+  attach_plot({plot}, options.report_dir, "ring.png",
               "triangles generated, held by the ring buffer and missing from the window", result);
 }
 

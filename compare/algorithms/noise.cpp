@@ -25,6 +25,7 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/case_descriptors.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/report/plots.hpp"
@@ -511,7 +512,7 @@ void add_walk(const NoiseParams& params, const nlohmann::json& expect, const Run
   if (options.gpu_available) plot.series.push_back(series(reduced, &WalkPoint::gpu_error, "GPU, origin reduced", false));
   plot.series.push_back(series(plain, &WalkPoint::bound, "error model", true));
   plot.series.push_back(series(reduced, &WalkPoint::bound, "error model, origin reduced", true));
-  attach_plot(plot, options.report_dir, "walk.png", "largest error vs double along the walk away from the origin",
+  attach_plot({plot}, options.report_dir, "walk.png", "largest error vs double along the walk away from the origin",
               result);
 }
 
@@ -607,7 +608,9 @@ std::vector<Algorithm> noise_algorithms() {
                     .expect_shape = noise_spec_shape(),
                     // Measured 112 B a sample (noise.fbm, 1024² vs 256², both backends).
                     .memory = [](const nlohmann::json&, const LoadedInput& input) {
-                      return memory_for(static_cast<double>(input.heights.size()), "samples", 150);
+                      // terrain.* cases also describe their terrain (compare/case_descriptors.hpp)
+                      return memory_for(static_cast<double>(input.heights.size()), "samples",
+                                        150 + descriptor_bytes_per_cell);
                     }});
   }
   return list;

@@ -74,6 +74,7 @@
 
 #include "compare/algorithm.hpp"
 #include "compare/benchmark.hpp"
+#include "compare/case_descriptors.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/pipe_error_model.hpp"
 #include "compare/checks/threshold.hpp"
@@ -254,6 +255,7 @@ BackendRun run_reference_float(const PipeScenario& scenario, const std::vector<i
   };
   step_through(erosion, scenario.params.steps, at, scenario.initial.terrain, state_of, run.checkpoints);
   run.ledger = erosion.ledger();
+  run.final_state = cast_pipe_state<double>(erosion.state());
   return run;
 }
 
@@ -607,7 +609,7 @@ void add_parity_vs_double(const BackendRun& truth, const BackendRun& float_run, 
     plot.series.push_back(std::move(gpu_series));
     plot.series.push_back(std::move(float_series));
   }
-  attach_plot(plot, options.report_dir, "parity.png",
+  attach_plot({plot}, options.report_dir, "parity.png",
               "distance from ref<double> at the checkpoints: GPU (solid), ref<float> (dashed)", result);
 }
 
@@ -661,9 +663,9 @@ void plot_ledgers(const BackendRun& truth, const std::vector<std::pair<std::stri
   }
   volume_plot.series = {ledger_series("water held W_t", steps, water), ledger_series("rain and sources in", steps, inflow),
                         ledger_series("evaporated", steps, evaporated), ledger_series("out through borders", steps, out)};
-  attach_plot(error_plot, options.report_dir, "ledger_error.png",
+  attach_plot({error_plot}, options.report_dir, "ledger_error.png",
               "water balance (solid) and material drift (dashed), relative", result);
-  attach_plot(volume_plot, options.report_dir, "ledger_volumes.png", "water held and what came in and went out, m³",
+  attach_plot({volume_plot}, options.report_dir, "ledger_volumes.png", "water held and what came in and went out, m³",
               result);
 }
 
@@ -710,7 +712,8 @@ void write_pictures(const PipeScenario& scenario, const BackendRun& truth, const
   add("gpu_vs_cpu.png", fmt::format("terrain, GPU - ref<double>: max {:.3g} m", gpu_vs_cpu.max_abs));
 }
 
-void run_pipe_case(const PipeScenario& scenario, const RunOptions& options, CaseResult& result) {
+void run_pipe_case(const PipeScenario& scenario, const nlohmann::json& expect, const RunOptions& options,
+                   CaseResult& result) {
   const auto& terrain = scenario.initial.terrain;
   result.width = terrain.width;
   result.height = terrain.height;
@@ -749,13 +752,17 @@ void run_pipe_case(const PipeScenario& scenario, const RunOptions& options, Case
   }
   plot_ledgers(truth, errors, options, result);
   write_pictures(scenario, truth, gpu_run ? &*gpu_run : nullptr, options, result);
+  if (options.progress) options.progress->stage("terrain descriptors");
+  add_case_descriptors({&terrain, &truth.final_state.terrain, &float_run.final_state.terrain,
+                        gpu_run ? &gpu_run->final_state.terrain : nullptr},
+                       expect, options, result);
 }
 
 PreparedTwin prepare_pipe(const nlohmann::json& resolved, const LoadedInput& input) {
   PreparedTwin prepared;
-  prepared.run = [scenario = make_scenario(resolved, input.heights)](const nlohmann::json&, const RunOptions& options,
-                                                                     CaseResult& result) {
-    run_pipe_case(scenario, options, result);
+  prepared.run = [scenario = make_scenario(resolved, input.heights)](const nlohmann::json& expect,
+                                                                     const RunOptions& options, CaseResult& result) {
+    run_pipe_case(scenario, expect, options, result);
   };
   return prepared;
 }
@@ -831,11 +838,12 @@ Algorithm pipe_algorithm() {
           .iterates = false,
           .has_field_twin = false,
           .benchmark = benchmark_pipes,
+          .expect_shape = descriptor_expect_shape(),
           // Measured on 1024² (both backends, report included): 959 B a cell with 1 checkpoint, and
           // 133 B a cell for each further one (the states kept for shadow steps and ref<double>).
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const double cells = static_cast<double>(input.heights.size());
-            return memory_for(cells, "cells", 1100) +
+            return memory_for(cells, "cells", 1100 + descriptor_bytes_per_cell) +
                    memory_for(cells * resolved.at("checkpoints").get<double>(), "cell-checkpoints", 150);
           }};
 }

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/case_descriptors.hpp"
 #include "compare/checks/threshold.hpp"
 #include "core/errors.hpp"
 #include "core/params/thermal.hpp"
@@ -231,7 +232,7 @@ Algorithm thermal_algorithm() {
           .expect_shape = talus_spec_shape(),
           // Measured 395 B a cell (1024² vs 256², 64 iterations, both backends, 8 shadow checkpoints).
           .memory = [](const nlohmann::json&, const LoadedInput& input) {
-            return memory_for(static_cast<double>(input.heights.size()), "cells", 450);
+            return memory_for(static_cast<double>(input.heights.size()), "cells", 450 + descriptor_bytes_per_cell);
           }};
 }
 
@@ -246,7 +247,7 @@ Algorithm thermal_jako_algorithm() {
           .expect_shape = field_spec_shape(),
           // Measured 438 B a cell (1024² vs 256², 64 iterations, both backends, 8 shadow checkpoints).
           .memory = [](const nlohmann::json&, const LoadedInput& input) {
-            return memory_for(static_cast<double>(input.heights.size()), "cells", 500);
+            return memory_for(static_cast<double>(input.heights.size()), "cells", 500 + descriptor_bytes_per_cell);
           }};
 }
 

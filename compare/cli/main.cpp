@@ -10,6 +10,8 @@
 //   check-mesh FILE [--json]           the mesh checks on an OFF, OBJ, PLY or STL file
 //   diff-image A B [--json] [--out diff.png] [--tolerance T]
 //                                      image differences, a heat map and a verdict mask
+//   stats DEM [--json] [--out DIR] [--cell-size] [--stream-threshold]
+//                                      terrain descriptors: hypsometry, slope, curvature, drainage, spectrum
 //   render INPUT --out out.png [--backend cpu|gpu] [--width --height --azimuth --elevation --fov
 //          --distance | --eye --target] [--look]   a mesh or a heightmap (as a terrain solid) to a PNG
 // Every command takes --memory-limit MIB (core/memory.hpp).
@@ -17,6 +19,7 @@
 // bad input (README's "Outcomes and exit status")
 // (check-mesh: 0 watertight and consistently oriented, 1 not, 2 unreadable;
 // diff-image: 0 no pixel fails the neighbourhood-tolerant comparison, 1 some do, 2 bad input;
+// stats: 0 something measured, 2 unreadable or nothing measurable;
 // render: 0 written, 2 bad input, a camera inside the mesh or seeing nothing, or no GL context for gpu).
 #include <cmath>
 #include <cstdio>
@@ -33,6 +36,7 @@
 #include "compare/cli/check_mesh.hpp"
 #include "compare/cli/diff_image.hpp"
 #include "compare/cli/render.hpp"
+#include "compare/cli/stats.hpp"
 #include "compare/driver.hpp"
 #include "compare/mutants/mutants.hpp"
 #include "core/errors.hpp"
@@ -304,6 +308,24 @@ int main(int argc, char** argv) {
       ->check(finite_number & CLI::PositiveNumber)
       ->capture_default_str();
 
+  std::filesystem::path stats_file;
+  gt::StatsOptions stats_options;
+  auto* stats = app.add_subcommand("stats", "does it look like Earth? terrain descriptors of a DEM (hypsometry, "
+                                            "slope, curvature, drainage, power spectrum)");
+  stats->add_option("dem", stats_file, "heightmap (PNG, TIFF, GeoTIFF, EXR, volcano JSON, npz)")->required();
+  stats->add_flag("--json", stats_options.as_json, "machine-readable");
+  stats->add_option("--out", stats_options.out, "also write stats.json and descriptors.png into this folder");
+  stats->add_option("--cell-size", stats_options.cell_size, "cell size in metres (0: the file's)")
+      ->check(finite_number & CLI::NonNegativeNumber);
+  stats->add_option("--image-vertical-scale", stats_options.image_vertical_scale,
+                    "metres per unit of 8/16-bit images")
+      ->check(finite_number & CLI::PositiveNumber)
+      ->capture_default_str();
+  stats->add_option("--stream-threshold", stats_options.stream_threshold_cells,
+                    "contributing area, in cells, where a stream starts")
+      ->check(CLI::Range(2.0, 1e9))
+      ->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -316,6 +338,7 @@ int main(int argc, char** argv) {
     if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);
     if (diff_image->parsed()) return gt::diff_image_command(diff_options);
     if (render->parsed()) return gt::render_command(render_options);
+    if (stats->parsed()) return gt::stats_command(stats_file, stats_options);
     if (mutants->parsed()) {
       if (list_mutants) {
         print_mutant_list(gt::select_mutants(mutation_options.patterns), mutants_as_json);

@@ -5,6 +5,7 @@ Usage: plot_series.py PLOT.json OUT.png
 
 PLOT.json: {"title", "x_label", "y_label", "log_x", "log_y",
             "series": [{"label", "x": [...], "y": [...], "dashed": bool, "group": str}]}
+           or {"panels": [PLOT, ...]}: the plots side by side in one figure.
 Series with the same non-empty group share a colour (a measurement beside its twin or its bound);
 the others get one each. Points carry markers only where there are few of them (up to 40).
 Non-finite or (on a log axis) non-positive points are left out. Exits 3 with a one-line reason
@@ -21,6 +22,26 @@ def usable(x, y, log_x, log_y):
     return (not log_x or x > 0) and (not log_y or y > 0)
 
 
+def draw_panel(plot, axes, plt):
+    palette = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colours = {}
+    for series in plot["series"]:
+        key = series.get("group") or series["label"]
+        colours.setdefault(key, palette[len(colours) % len(palette)])
+        points = [(x, y) for x, y in zip(series["x"], series["y"])
+                  if usable(x, y, plot["log_x"], plot["log_y"])]
+        if not points:
+            continue
+        xs, ys = zip(*points)
+        line = "--" if series.get("dashed") else "-"
+        marker = "o" if len(points) <= 40 and not series.get("dashed") else ""
+        axes.plot(xs, ys, line + marker, color=colours[key], label=series["label"], markersize=4)
+    axes.set(xlabel=plot["x_label"], ylabel=plot["y_label"], title=plot["title"],
+             xscale="log" if plot["log_x"] else "linear", yscale="log" if plot["log_y"] else "linear")
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend(fontsize="small")
+
+
 def main(argv):
     if len(argv) != 3:
         print("usage: plot_series.py PLOT.json OUT.png")
@@ -35,24 +56,11 @@ def main(argv):
     try:
         with open(argv[1], encoding="utf-8") as f:
             plot = json.load(f)
-        figure, axes = plt.subplots(figsize=(8, 4.5), dpi=100)
-        palette = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-        colours = {}
-        for series in plot["series"]:
-            key = series.get("group") or series["label"]
-            colours.setdefault(key, palette[len(colours) % len(palette)])
-            points = [(x, y) for x, y in zip(series["x"], series["y"])
-                      if usable(x, y, plot["log_x"], plot["log_y"])]
-            if not points:
-                continue
-            xs, ys = zip(*points)
-            line = "--" if series.get("dashed") else "-"
-            marker = "o" if len(points) <= 40 and not series.get("dashed") else ""
-            axes.plot(xs, ys, line + marker, color=colours[key], label=series["label"], markersize=4)
-        axes.set(xlabel=plot["x_label"], ylabel=plot["y_label"], title=plot["title"],
-                 xscale="log" if plot["log_x"] else "linear", yscale="log" if plot["log_y"] else "linear")
-        axes.grid(True, which="both", alpha=0.3)
-        axes.legend(fontsize="small")
+        panels = plot["panels"] if "panels" in plot else [plot]
+        figure, all_axes = plt.subplots(1, len(panels), figsize=(8 if len(panels) == 1 else 4.6 * len(panels), 4.5),
+                                        dpi=100, squeeze=False)
+        for panel, axes in zip(panels, all_axes[0]):
+            draw_panel(panel, axes, plt)
         figure.tight_layout()
         figure.savefig(argv[2])
     except (OSError, KeyError, TypeError, ValueError) as error:

@@ -128,8 +128,9 @@ std::optional<Artifact> plot_benchmarks(const std::vector<BenchmarkRow>& rows, c
   return Artifact{plot_file, "plot", caption(rows)};
 }
 
-std::optional<Artifact> plot_series(const SeriesPlot& plot, const std::filesystem::path& report_folder,
-                                    const std::string& relative_png, const std::string& caption, std::string& reason) {
+namespace {
+
+nlohmann::json panel_json(const SeriesPlot& plot) {
   nlohmann::json document = {{"title", plot.title},   {"x_label", plot.x_label}, {"y_label", plot.y_label},
                              {"log_x", plot.log_x},   {"log_y", plot.log_y},     {"series", nlohmann::json::array()}};
   for (const Series& series : plot.series) {
@@ -139,17 +140,26 @@ std::optional<Artifact> plot_series(const SeriesPlot& plot, const std::filesyste
                                   {"dashed", series.dashed},
                                   {"group", series.group}});
   }
+  return document;
+}
+
+}  // namespace
+
+std::optional<Artifact> plot_series(const std::vector<SeriesPlot>& panels, const std::filesystem::path& report_folder,
+                                    const std::string& relative_png, const std::string& caption, std::string& reason) {
+  nlohmann::json document = {{"panels", nlohmann::json::array()}};
+  for (const SeriesPlot& panel : panels) document["panels"].push_back(panel_json(panel));
   reason = draw(series_script, document, report_folder / relative_png);
   if (!reason.empty()) return std::nullopt;
   return Artifact{relative_png, "plot", caption};
 }
 
-void attach_plot(const SeriesPlot& plot, const std::filesystem::path& report_folder, const std::string& file,
+void attach_plot(const std::vector<SeriesPlot>& panels, const std::filesystem::path& report_folder, const std::string& file,
                  const std::string& caption, CaseResult& result) {
   if (report_folder.empty()) return;
   std::filesystem::create_directories(report_folder / result.name);
   std::string reason;
-  if (auto artifact = plot_series(plot, report_folder, result.name + "/" + file, caption, reason)) {
+  if (auto artifact = plot_series(panels, report_folder, result.name + "/" + file, caption, reason)) {
     result.artifacts.push_back(*artifact);
   } else {
     result.notes.push_back(file + " unavailable: " + reason);

@@ -39,15 +39,16 @@ struct SeriesPlot {
   std::vector<Series> series;
 };
 
-// Writes report_folder/relative_png (its folder must exist) and returns it as a "plot" artifact
-// with `caption`; std::nullopt and `reason` as plot_benchmarks.
-std::optional<Artifact> plot_series(const SeriesPlot& plot, const std::filesystem::path& report_folder,
+// Writes report_folder/relative_png (its folder must exist): the panels side by side in one
+// figure (one panel: a plot of its own), and returns it as a "plot" artifact with `caption`;
+// std::nullopt and `reason` as plot_benchmarks.
+std::optional<Artifact> plot_series(const std::vector<SeriesPlot>& panels, const std::filesystem::path& report_folder,
                                     const std::string& relative_png, const std::string& caption, std::string& reason);
 
 // A case's plot: draws report_folder/<case name>/<file> (creating the case's folder) and adds it to
 // the case's artifacts, or, when it cannot be drawn, a note "<file> unavailable: <reason>". Nothing
 // without a report folder.
-void attach_plot(const SeriesPlot& plot, const std::filesystem::path& report_folder, const std::string& file,
-                 const std::string& caption, CaseResult& result);
+void attach_plot(const std::vector<SeriesPlot>& panels, const std::filesystem::path& report_folder,
+                 const std::string& file, const std::string& caption, CaseResult& result);
 
 }  // namespace gt

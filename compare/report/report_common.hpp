@@ -97,6 +97,42 @@ struct MetricText {
 };
 MetricText metric_text(const Check& check);
 
+// A case's terrain descriptors (CaseResult::descriptors) as a table: a column per terrain (before,
+// after on each backend, the real DEM), a row per scalar descriptor in the order first met.
+struct DescriptorTable {
+  struct Row {
+    std::string label;
+    std::string unit;
+    std::vector<std::optional<double>> values;  // one per column
+  };
+  std::vector<std::string> columns;
+  std::vector<Row> rows;
+};
+std::optional<DescriptorTable> descriptor_table(const CaseResult& result);
+
+// The fidelity table across algorithms: for each case whose "expect" asked for fidelity, each
+// target descriptor (compare/case_descriptors.hpp fidelity_targets(), plus HI and the median slope)
+// before and after (ref<double>) and how far it moved toward the real DEM's value:
+// moved = (|before - real| - |after - real|) / |before - real| (1: reached it, 0: no closer,
+// negative: further away; absent when before already equals real).
+struct FidelityTable {
+  struct Cell {
+    double before = 0.0;
+    double after = 0.0;
+    std::optional<double> moved;
+  };
+  struct Row {
+    std::string case_name;
+    std::string algorithm;
+    std::vector<std::optional<Cell>> cells;  // one per descriptor
+  };
+  std::string real_name;
+  std::vector<std::string> descriptors;        // ScalarDescriptor names
+  std::vector<std::optional<double>> real;     // the real DEM's value of each
+  std::vector<Row> rows;
+};
+std::optional<FidelityTable> fidelity_table(const Report& report);
+
 // Escapes & < > " ' for HTML and XML text and attributes; control characters that XML 1.0
 // forbids become U+FFFD.
 std::string escape_markup(std::string_view text);

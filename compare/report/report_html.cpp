@@ -89,11 +89,13 @@ std::string badge(Outcome outcome) {
   return fmt::format("<span class=\"badge {0}\">{0}</span>", outcome_name(outcome));
 }
 
-std::string anchor(const CaseResult& result) {
+std::string anchor_of(const std::string& case_name) {
   std::string id = "case-";
-  for (char c : result.name) id += unreserved(c) ? c : '_';
+  for (char c : case_name) id += unreserved(c) ? c : '_';
   return id;
 }
+
+std::string anchor(const CaseResult& result) { return anchor_of(result.name); }
 
 void append_header(std::string& out, const Report& report) {
   const Environment& environment = report.environment;
@@ -227,6 +229,49 @@ void append_checks(std::string& out, const CaseResult& result) {
   out += "</table>\n";
 }
 
+std::string optional_value(const std::optional<double>& value) { return value ? format_value(*value) : "—"; }
+
+// The case's terrain descriptors: before, after and the real DEM side by side.
+void append_descriptors(std::string& out, const CaseResult& result) {
+  const auto table = descriptor_table(result);
+  if (!table) return;
+  out += "<table class=\"descriptors\">\n<tr><th>terrain descriptor</th><th>unit</th>";
+  for (const auto& column : table->columns) out += fmt::format("<th>{}</th>", h(column));
+  out += "</tr>\n";
+  for (const auto& row : table->rows) {
+    out += fmt::format("<tr><td>{}</td><td>{}</td>", h(row.label), h(row.unit));
+    for (const auto& value : row.values) out += fmt::format("<td class=\"num\">{}</td>", optional_value(value));
+    out += "</tr>\n";
+  }
+  out += "</table>\n";
+}
+
+// How far each erosion algorithm moved a generated terrain's descriptors toward a real DEM's.
+void append_fidelity(std::string& out, const Report& report) {
+  const auto table = fidelity_table(report);
+  if (!table) return;
+  out += "<section class=\"fidelity\">\n<h2>Fidelity: does it look like Earth?</h2>\n"
+         "<p>Each cell: the descriptor before → after (CPU reference, double), and how far it moved toward "
+         + h(table->real_name) + "'s value (100 %: reached it, 0 %: no closer, negative: further away).</p>\n"
+         "<table>\n<tr><th>case</th><th>algorithm</th>";
+  for (const auto& name : table->descriptors) out += fmt::format("<th>{}</th>", h(name));
+  out += fmt::format("</tr>\n<tr><td>{}</td><td></td>", h(table->real_name));
+  for (const auto& value : table->real) out += fmt::format("<td class=\"num\">{}</td>", optional_value(value));
+  out += "</tr>\n";
+  for (const auto& row : table->rows) {
+    out += fmt::format("<tr><td><a href=\"#{}\">{}</a></td><td>{}</td>", anchor_of(row.case_name), h(row.case_name),
+                       h(row.algorithm));
+    for (const auto& cell : row.cells) {
+      out += cell ? fmt::format("<td class=\"num\">{} → {} ({})</td>", format_value(cell->before),
+                                format_value(cell->after),
+                                cell->moved ? fmt::format("{:.0f} %", 100.0 * *cell->moved) : "—")
+                  : std::string("<td>—</td>");
+    }
+    out += "</tr>\n";
+  }
+  out += "</table>\n</section>\n";
+}
+
 void append_timings(std::string& out, const Timings& timings) {
   out += fmt::format("<p>Timings (median of one run): CPU reference {} ms over {} reps · GPU {} ms over {} reps</p>\n",
                      format_ms(timings.cpu_ms), timings.cpu_reps, format_ms(timings.gpu_ms), timings.gpu_reps);
@@ -253,6 +298,7 @@ void append_case_section(std::string& out, const CaseResult& result) {
   }
   append_params(out, result.params);
   append_artifacts(out, result, shown);
+  append_descriptors(out, result);
   append_checks(out, result);
   append_timings(out, result.timings);
   out += "</section>\n";
@@ -340,6 +386,7 @@ void write_report_html(const Report& report, const std::filesystem::path& file) 
   append_expectation_problems(out, report);
   append_case_table(out, report);
   append_mutation(out, report);
+  append_fidelity(out, report);
   for (const CaseResult& result : report.cases) append_case_section(out, result);
   append_performance(out, report);
   out += "</body>\n</html>\n";

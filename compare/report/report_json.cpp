@@ -61,6 +61,7 @@ json case_to_json(const CaseResult& result) {
   out["timings"] = timings_to_json(result.timings);
   out["artifacts"] = json::array();
   for (const Artifact& artifact : result.artifacts) out["artifacts"].push_back(artifact.path);
+  if (!result.descriptors.is_null()) out["descriptors"] = result.descriptors;
   if (!result.error.empty()) out["error"] = result.error;
   return out;
 }
