@@ -310,6 +310,19 @@ double check_value(const json& report_case, const std::string& name) {
 // transport's material drift within 1e-6 on the GPU, among them over 500 steps of a 256² grid on a
 // 500 m base (where ref<float>'s plain float storage drifts by more: the float trap); only
 // semi-Lagrangian cases may warn, and only for their material drift.
+// The worst outcome of a case's checks other than fidelity.*, which warn when a terrain is unlike
+// Earth's (compare/case_descriptors.hpp): a statement about the algorithm, not about the twins.
+std::string status_of_twin_checks(const json& report_case) {
+  const std::vector<std::string> order = {"pass", "warn", "inconclusive", "skip", "fail", "error"};
+  std::size_t worst = 0;
+  for (const auto& check : report_case.at("checks")) {
+    if (check.at("name").get<std::string>().starts_with("fidelity.")) continue;
+    const auto rank = std::find(order.begin(), order.end(), check.at("status").get<std::string>()) - order.begin();
+    worst = std::max(worst, static_cast<std::size_t>(rank));
+  }
+  return order.at(worst);
+}
+
 TEST(CliRun, PipeSuiteMeetsTheAcceptanceBounds) {
   const TempDir work;
   const fs::path out = work / "report";
@@ -329,7 +342,7 @@ TEST(CliRun, PipeSuiteMeetsTheAcceptanceBounds) {
                                     params.at("sediment_diffusion").get<double>() > 0.0);
     // Inconclusive where the error model of a shadow step is wider than a tenth of the sediment or
     // the velocity (compare/algorithms/pipes.cpp); the terrain and the water must always be decided.
-    const auto status = report_case.at("status").get<std::string>();
+    const auto status = status_of_twin_checks(report_case);
     EXPECT_TRUE(status == "pass" || status == "inconclusive") << report_case.dump(2);
     for (const char* field : {"terrain_change", "water"}) {
       const json* shadow = find_check(report_case, fmt::format("parity.shadow.{}.gpu_vs_float", field));
