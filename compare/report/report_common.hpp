@@ -111,7 +111,7 @@ struct DescriptorTable {
 std::optional<DescriptorTable> descriptor_table(const CaseResult& result);
 
 // The fidelity table across algorithms: for each case whose "expect" asked for fidelity, each
-// target descriptor (compare/case_descriptors.hpp fidelity_targets(), plus HI and the median slope)
+// target descriptor (compare/case_descriptors.hpp fidelity_targets(), plus HI: the scale-free ones)
 // before and after (ref<double>) and how far it moved toward the real DEM's value:
 // moved = (|before - real| - |after - real|) / |before - real| (1: reached it, 0: no closer,
 // negative: further away; absent when before already equals real).
