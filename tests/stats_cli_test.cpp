@@ -23,8 +23,8 @@ gt::testing::ProgramRun run(const std::vector<std::string>& args, const fs::path
   return gt::testing::run_program(groundtruth, args, cwd);
 }
 
-// Every bundled DEM: a table with the hypsometric integral, the Strahler streams and β, nothing
-// written without --out. HI of any terrain lies in [0, 1]; slopes in [0, 90).
+// Every bundled DEM: a table with the hypsometric integral, the Strahler streams and β (or why
+// not), nothing written without --out. HI of any terrain lies in [0, 1]; slopes in [0, 90).
 TEST(StatsCommand, MeasuresEveryBundledDem) {
   const gt::testing::TemporaryFolder work("gt_stats");
   for (const char* file : {"volcano.json", "jacksboro_fault_dem.npz", "topobathy.npz", "elev.tif"}) {
@@ -32,7 +32,10 @@ TEST(StatsCommand, MeasuresEveryBundledDem) {
     ASSERT_EQ(table.status, 0) << table;
     EXPECT_THAT(table.out, HasSubstr("hypsometric integral HI")) << file;
     EXPECT_THAT(table.out, HasSubstr("Strahler streams per order")) << file;
-    EXPECT_THAT(table.out, HasSubstr("power-spectrum slope")) << file;
+    // β needs a band of two octaves: a shorter side of 128 cells (Jacksboro's 344 rows, not the others').
+    EXPECT_THAT(table.out, HasSubstr(file == std::string("jacksboro_fault_dem.npz") ? "power-spectrum slope"
+                                                                                   : "spectral slope not measured"))
+        << file;
     const auto as_json = run({"stats", "--json", (real_data / file).string()}, work.path());
     ASSERT_EQ(as_json.status, 0) << as_json;
     const auto document = json::parse(as_json.out);

@@ -78,6 +78,11 @@ void measure_drainage(const Heightmap& dem, const DescriptorOptions& options, Te
   out.drainage = drainage;
 }
 
+// Two octaves at least between the band's edges (default_spectral_band: from 4 cycles per side to
+// wavelengths of 8 cells, a factor of side/32). Over less, β is the scatter of a handful of bins:
+// a 45-row window of ETOPO 20' gave β = 9 from three bins.
+constexpr double minimum_band_ratio = 4.0;
+
 void measure_spectrum(const Heightmap& dem, TerrainDescriptors& out) {
   out.spectrum = radial_power_spectrum(dem);
   if (out.spectrum->masked_cells > 0) {
@@ -85,6 +90,13 @@ void measure_spectrum(const Heightmap& dem, TerrainDescriptors& out) {
                                     out.spectrum->masked_cells));
   }
   const auto [low, high] = default_spectral_band(dem);
+  if (high < minimum_band_ratio * low) {
+    out.notes.push_back(fmt::format(
+        "spectral slope not measured: its band [{:.3g}, {:.3g}] cycles/m spans less than a factor {} (the shorter "
+        "side needs 128 cells or more); a slope over fewer octaves is the scatter of a few bins",
+        low, high, minimum_band_ratio));
+    return;
+  }
   out.spectral_slope = spectral_slope(*out.spectrum, low, high);
   if (!out.spectral_slope) {
     out.notes.push_back(fmt::format("spectral slope not measured: fewer than two frequency bins between {:.3g} and "

@@ -12,7 +12,9 @@
 //   drainage           after Priority-Flood+ε filling: D8 streams above `stream_threshold_cells`
 //                      cells of area, Strahler orders, Horton's R_B and R_L, drainage density, Hack's
 //                      exponent, the drainage-area exceedance exponent from D8 and from D∞
-//   spectrum, spectral_slope   radially averaged power spectrum and its slope β (power_spectrum.hpp)
+//   spectrum, spectral_slope   radially averaged power spectrum (power_spectrum.hpp) and its slope β
+//                      over default_spectral_band(), measured when that band spans two octaves
+//                      (a shorter side of 128 cells or more)
 // scalar_descriptors() flattens the result into named numbers with units and, for the comparison of
 // two twins' results, the resolution at which each is quoted (see there).
 #pragma once
