@@ -71,14 +71,18 @@ void set_staging(const std::filesystem::path& staging) {
   active_staging = staging;
 }
 
+// The main thread goes on running while this thread cleans up, and may re-create the staging folder
+// (a case's create_directories) while remove_all empties it: remove until it stays gone, then exit
+// at once (the message is printed first so that nothing comes between the last check and _exit).
 [[noreturn]] void clean_up_and_exit(int signal_number) {
   if (const pid_t worker = running_worker.load(); worker > 0) kill(-worker, SIGKILL);
-  {
-    const std::lock_guard lock(staging_mutex);
-    std::error_code ignored;
-    if (!active_staging.empty()) std::filesystem::remove_all(active_staging, ignored);
-  }
   fmt::print(stderr, "groundtruth: interrupted by signal {}; nothing was left in the output folder\n", signal_number);
+  const std::lock_guard lock(staging_mutex);
+  std::error_code ignored;
+  for (int attempt = 0; attempt < 1000 && !active_staging.empty() && std::filesystem::exists(active_staging, ignored);
+       ++attempt) {
+    std::filesystem::remove_all(active_staging, ignored);
+  }
   _exit(128 + signal_number);
 }
 
@@ -139,13 +143,16 @@ void write_folder_atomically(const std::filesystem::path& out,
                              const std::function<void(const std::filesystem::path&)>& fill) {
   const auto target = normalised(out);
   const std::filesystem::path staging = fmt::format("{}.tmp-{}", target.string(), getpid());
+  // Known to the interruption's clean-up before it exists: a signal between creating the folder and
+  // registering it left the folder behind (seen once under the sanitizer build's load).
+  set_staging(staging);
   try {
     remove_stale_staging(target);
     std::filesystem::create_directory(staging);
   } catch (const std::filesystem::filesystem_error& error) {
+    set_staging({});
     throw InputError(fmt::format("output folder {}: {}", out.string(), error.code().message()));
   }
-  set_staging(staging);
   try {
     fill(staging);
     write_marker(staging);
