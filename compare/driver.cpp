@@ -1,6 +1,7 @@
 // The comparison driver; see driver.hpp.
 #include "compare/driver.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -10,6 +11,7 @@
 
 #include "compare/algorithm.hpp"
 #include "compare/benchmark.hpp"
+#include "compare/calibration.hpp"
 #include "compare/case_descriptors.hpp"
 #include "compare/cases.hpp"
 #include "compare/expectations.hpp"
@@ -17,6 +19,7 @@
 #include "compare/mutants/mutants.hpp"
 #include "compare/output_folder.hpp"
 #include "compare/report/plots.hpp"
+#include "compare/report_diff.hpp"
 #include "compare/report/writers.hpp"
 #include "core/errors.hpp"
 #include "core/json_keys.hpp"
@@ -128,6 +131,7 @@ Environment base_environment() {
   environment.build_type = GT_BUILD_TYPE;
   environment.git = GT_GIT_DESCRIBE;
   environment.mutant = active_mutant();
+  environment.calibration_ms = calibration_ms();
   return environment;
 }
 
@@ -199,6 +203,21 @@ void print_mutation(const MutationReport& mutation) {
              100.0 * mutation.score(), mutation.passed() ? "" : "; not every mutant was killed by its kind of check, or a baseline failed");
 }
 
+// The baseline's report.json, read and checked before anything runs: bad input exits 2 at once.
+std::optional<nlohmann::json> read_baseline(const std::filesystem::path& file, const std::vector<CaseSpec>& specs) {
+  if (file.empty()) return std::nullopt;
+  nlohmann::json baseline = read_report_json(file);
+  const bool shares_a_case = std::any_of(specs.begin(), specs.end(), [&](const CaseSpec& spec) {
+    return std::any_of(baseline["cases"].begin(), baseline["cases"].end(),
+                       [&](const nlohmann::json& entry) { return entry.value("name", "") == spec.name; });
+  });
+  if (!shares_a_case) {
+    throw InputError(fmt::format("--baseline {}: none of its cases is among those selected (a baseline from another "
+                                 "suite or algorithm set)", file.string()));
+  }
+  return baseline;
+}
+
 }  // namespace
 
 int run_driver(const DriverOptions& options) {
@@ -208,6 +227,7 @@ int run_driver(const DriverOptions& options) {
       options.patterns.empty() && !options.ad_hoc ? std::vector<CaseSpec>{} : selected_specs(options, suite);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
   const auto expectations = load_expectations(options.dataset_dir / "expectations.txt", suite);
+  const auto baseline = read_baseline(options.baseline, specs);
   check_output_folder(options.out);
 
   Report report;
@@ -259,9 +279,14 @@ int run_driver(const DriverOptions& options) {
       report.mutation->folder = "mutants/";
       std::ofstream(folder / "mutants" / "mutants.json") << mutation_to_json(*report.mutation).dump(2) << '\n';
     }
+    if (baseline) {
+      report.baseline_file = options.baseline.string();
+      report.baseline_diff = diff_reports(*baseline, report_to_json(report));
+    }
     write_report_files(report, folder);
   });
   print_summary(report, options.out);
+  if (report.baseline_diff) fmt::print("against {}: {}", report.baseline_file, describe(*report.baseline_diff));
   if (report.mutation) print_mutation(*report.mutation);
   return run_failed(report) || (report.mutation && !report.mutation->passed()) ? 1 : 0;
 }

@@ -41,6 +41,7 @@ struct DriverOptions {
   std::string mutant;                    // a registered mutant to activate (compare/mutants/), or empty
   bool require_gpu = false;              // a missing GL context makes every GPU-using case `error`
   bool quiet = false;                    // no progress lines on stderr
+  std::filesystem::path baseline;        // a previous report.json to diff against (compare/report_diff.hpp)
   std::optional<MutationOptions> mutation;  // also run the mutants (report: into OUT/mutants/)
 };
 

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/report_diff.hpp"
+
 namespace gt {
 
 // dEQP-style outcome vocabulary of DESIGN.md:
@@ -79,6 +81,7 @@ struct Environment {
   std::string build_type;
   std::string git;
   std::string mutant;         // the deliberate bug this run was made with (compare/mutants/), or empty
+  std::optional<double> calibration_ms;  // compare/calibration.hpp: timings are compared as ratios to it
 };
 
 struct BenchmarkRow {
@@ -137,6 +140,8 @@ struct Report {
   // Broken rules of datasets/expectations.txt (compare/expectations.hpp): each fails the run.
   std::vector<std::string> expectation_problems;
   std::optional<MutationReport> mutation;  // when the run included the mutants (groundtruth report)
+  std::string baseline_file;               // --baseline, and what changed against it
+  std::optional<ReportDiff> baseline_diff;
 };
 
 // Outcome of a whole case from its checks (and the expectation list).

@@ -10,6 +10,7 @@
 //   check-mesh FILE [--json]           the mesh checks on an OFF, OBJ, PLY or STL file
 //   diff-image A B [--json] [--out diff.png] [--tolerance T]
 //                                      image differences, a heat map and a verdict mask
+//   diff-reports BASE NEW [--json]     what changed between two report.json files (exit 1: a regression)
 //   stats DEM [--json] [--out DIR] [--cell-size] [--stream-threshold]
 //                                      terrain descriptors: hypsometry, slope, curvature, drainage, spectrum
 //   render INPUT --out out.png [--backend cpu|gpu] [--width --height --azimuth --elevation --fov
@@ -39,6 +40,7 @@
 #include "compare/cli/stats.hpp"
 #include "compare/driver.hpp"
 #include "compare/mutants/mutants.hpp"
+#include "compare/report_diff.hpp"
 #include "core/errors.hpp"
 
 namespace {
@@ -55,6 +57,7 @@ struct Shared {
   int gpu_reps = 5;
   bool require_gpu = false;
   bool quiet = false;
+  std::string baseline;
 };
 
 void add_shared_options(CLI::App& command, Shared& shared, const std::string& default_out) {
@@ -65,6 +68,8 @@ void add_shared_options(CLI::App& command, Shared& shared, const std::string& de
   command.add_option("--out", shared.out, "report folder (written atomically; an existing report is replaced)")
       ->capture_default_str();
   command.add_flag("--quiet", shared.quiet, "no progress lines on stderr");
+  command.add_option("--baseline", shared.baseline,
+                     "a previous report.json: what changed (diff-reports) is printed at the end and heads index.html");
   command.add_flag("--require-gpu", shared.require_gpu,
                    "a missing GL context or a skipped GPU half makes the case `error` (exit 1) instead of `skip`");
   command.add_option("--cpu-reps", shared.cpu_reps, "timed repetitions of the CPU reference")
@@ -80,6 +85,7 @@ gt::DriverOptions driver_options(const Shared& shared) {
   options.gl = gt::parse_gl_backend(shared.gl);
   options.backends = shared.backend == "cpu" ? Backends::cpu : shared.backend == "gpu" ? Backends::gpu : Backends::both;
   options.out = shared.out;
+  options.baseline = shared.baseline;
   options.dataset_dir = GT_DATASET_DIR;
   options.cpu_reps = shared.cpu_reps;
   options.gpu_reps = shared.gpu_reps;
@@ -308,6 +314,14 @@ int main(int argc, char** argv) {
       ->check(finite_number & CLI::PositiveNumber)
       ->capture_default_str();
 
+  std::filesystem::path base_report, next_report;
+  bool diff_as_json = false;
+  auto* diff_reports = app.add_subcommand("diff-reports", "what changed between two runs? check by check, timings "
+                                                          "as ratios to each run's calibration kernel");
+  diff_reports->add_option("base", base_report, "the baseline's report.json")->required();
+  diff_reports->add_option("new", next_report, "the new run's report.json")->required();
+  diff_reports->add_flag("--json", diff_as_json, "machine-readable");
+
   std::filesystem::path stats_file;
   gt::StatsOptions stats_options;
   auto* stats = app.add_subcommand("stats", "does it look like Earth? terrain descriptors of a DEM (hypsometry, "
@@ -339,6 +353,11 @@ int main(int argc, char** argv) {
     if (diff_image->parsed()) return gt::diff_image_command(diff_options);
     if (render->parsed()) return gt::render_command(render_options);
     if (stats->parsed()) return gt::stats_command(stats_file, stats_options);
+    if (diff_reports->parsed()) {
+      const auto diff = gt::diff_reports(gt::read_report_json(base_report), gt::read_report_json(next_report));
+      fmt::print("{}", diff_as_json ? gt::to_json(diff).dump(2) + "\n" : gt::describe(diff));
+      return diff.regressions.empty() ? 0 : 1;
+    }
     if (mutants->parsed()) {
       if (list_mutants) {
         print_mutant_list(gt::select_mutants(mutation_options.patterns), mutants_as_json);

@@ -272,6 +272,14 @@ void append_fidelity(std::string& out, const Report& report) {
   out += "</table>\n</section>\n";
 }
 
+// What changed against --baseline, at the top: the diff-reports summary.
+void append_baseline(std::string& out, const Report& report) {
+  if (!report.baseline_diff) return;
+  out += fmt::format("<section class=\"baseline\">\n<h2>Against the baseline: {} regression{}</h2>\n<p>{}</p>\n<pre>{}</pre>\n</section>\n",
+                     report.baseline_diff->regressions.size(), report.baseline_diff->regressions.size() == 1 ? "" : "s",
+                     h(report.baseline_file), h(describe(*report.baseline_diff)));
+}
+
 void append_timings(std::string& out, const Timings& timings) {
   out += fmt::format("<p>Timings (median of one run): CPU reference {} ms over {} reps · GPU {} ms over {} reps</p>\n",
                      format_ms(timings.cpu_ms), timings.cpu_reps, format_ms(timings.gpu_ms), timings.gpu_reps);
@@ -383,6 +391,7 @@ void write_report_html(const Report& report, const std::filesystem::path& file) 
       style);
   append_header(out, report);
   append_summary(out, report);
+  append_baseline(out, report);
   append_expectation_problems(out, report);
   append_case_table(out, report);
   append_mutation(out, report);

@@ -20,10 +20,12 @@ using report_detail::all_outcomes;
 json number_or_null(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
 json environment_to_json(const Environment& environment) {
-  return {{"gl_renderer", environment.gl_renderer}, {"gl_version", environment.gl_version},
-          {"gl_platform", environment.gl_platform}, {"cpu", environment.cpu},
-          {"compiler", environment.compiler},       {"build_type", environment.build_type},
-          {"git", environment.git},                 {"mutant", environment.mutant}};
+  json out = {{"gl_renderer", environment.gl_renderer}, {"gl_version", environment.gl_version},
+              {"gl_platform", environment.gl_platform}, {"cpu", environment.cpu},
+              {"compiler", environment.compiler},       {"build_type", environment.build_type},
+              {"git", environment.git},                 {"mutant", environment.mutant}};
+  if (environment.calibration_ms) out["calibration_ms"] = number_or_null(*environment.calibration_ms);
+  return out;
 }
 
 json check_to_json(const Check& check) {
@@ -109,6 +111,7 @@ json report_to_json(const Report& report) {
   out["summary"] = summary_to_json(report);
   out["expectation_problems"] = report.expectation_problems;
   if (report.mutation) out["mutation"] = mutation_to_json(*report.mutation);
+  if (report.baseline_diff) out["baseline"] = {{"file", report.baseline_file}, {"diff", to_json(*report.baseline_diff)}};
   return out;
 }
 
