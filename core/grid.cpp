@@ -81,6 +81,16 @@ std::size_t count_valid(const Grid<T>& grid) {
   return n;
 }
 
+template <class T>
+std::vector<double> valid_values(const Grid<T>& grid) {
+  std::vector<double> values;
+  values.reserve(count_valid(grid));
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (grid.is_valid(i)) values.push_back(static_cast<double>(grid.values[i]));
+  }
+  return values;
+}
+
 template void check_finite(const Grid<float>&, const std::string&);
 template void check_finite(const Grid<double>&, const std::string&);
 template void check_cell_size(const Grid<float>&, const std::string&);
@@ -91,5 +101,7 @@ template std::pair<double, double> valid_range(const Grid<float>&);
 template std::pair<double, double> valid_range(const Grid<double>&);
 template std::size_t count_valid(const Grid<float>&);
 template std::size_t count_valid(const Grid<double>&);
+template std::vector<double> valid_values(const Grid<float>&);
+template std::vector<double> valid_values(const Grid<double>&);
 
 }  // namespace gt

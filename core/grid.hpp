@@ -89,4 +89,8 @@ std::pair<double, double> valid_range(const Grid<T>& grid);
 template <class T>
 std::size_t count_valid(const Grid<T>& grid);
 
+// The values of the valid cells, in storage order, as double.
+template <class T>
+std::vector<double> valid_values(const Grid<T>& grid);
+
 }  // namespace gt

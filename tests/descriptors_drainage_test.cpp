@@ -505,7 +505,7 @@ TEST(Drainage, ExceedanceOfATiltedPlaneFollowsItsClosedForm) {
   const gt::D8Flow flow = gt::d8_flow(plane);
   const double cell_area = plane.cell_size_x * plane.cell_size_y;
   const double min_area = 1.5 * cell_area, max_area = 10.5 * cell_area;
-  const auto fit = gt::exceedance_fit(flow, min_area, max_area);
+  const auto fit = gt::exceedance_fit(flow.area_m2, min_area, max_area);
   ASSERT_TRUE(fit.has_value());
 
   const int count = std::max(2, static_cast<int>(std::lround(10.0 * std::log10(max_area / min_area))) + 1);
@@ -547,7 +547,7 @@ TEST(Drainage, RefusesUnusableInput) {
   const gt::D8Flow flow = gt::d8_from_receivers(row, {1, 2, -1});
   EXPECT_THROW(gt::stream_network(flow, row, 0.0), gt::InputError);
   EXPECT_THROW(gt::stream_network(flow, make_grid(4, 1, 1.0, 1.0, 0.0), 1.0), gt::InputError);
-  EXPECT_THROW(gt::exceedance_fit(flow, 2.0, 1.0), gt::InputError);
+  EXPECT_THROW(gt::exceedance_fit(flow.area_m2, 2.0, 1.0), gt::InputError);
   EXPECT_THROW(gt::hack_fit(flow, -1.0), gt::InputError);
 }
 

@@ -80,8 +80,4 @@ std::optional<LineFit> exceedance_fit(const std::vector<double>& area_m2, double
   return fit_line(log_a, log_p);
 }
 
-std::optional<LineFit> exceedance_fit(const D8Flow& flow, double min_area_m2, double max_area_m2) {
-  return exceedance_fit(flow.area_m2, min_area_m2, max_area_m2);
-}
-
 }  // namespace gt

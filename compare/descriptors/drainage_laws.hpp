@@ -12,7 +12,6 @@
 //   Throws InputError when min_area_m2 is negative or not finite.
 //
 // exceedance_fit(area_m2, min_area_m2, max_area_m2) -> LineFit of ln P(A ≥ a) against ln a
-// exceedance_fit(flow, min_area_m2, max_area_m2): the same on flow.area_m2.
 //   area_m2    contributing area per cell (D8Flow::area_m2 or DinfFlow::area_m2), 0 for no-data.
 //   P(A ≥ a) is the fraction of the valid cells (area_m2 > 0) whose area is at least a, sampled
 //   at a_i = min·(max/min)^(i/(n−1)), i = 0..n−1, n = max(2, round(10·log10(max/min)) + 1):
@@ -37,7 +36,5 @@ namespace gt {
 std::optional<LineFit> hack_fit(const D8Flow& flow, double min_area_m2);
 
 std::optional<LineFit> exceedance_fit(const std::vector<double>& area_m2, double min_area_m2, double max_area_m2);
-
-std::optional<LineFit> exceedance_fit(const D8Flow& flow, double min_area_m2, double max_area_m2);
 
 }  // namespace gt

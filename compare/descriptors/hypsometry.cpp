@@ -13,22 +13,9 @@
 
 namespace gt {
 
-namespace {
-
-std::vector<double> valid_heights(const Heightmap& dem) {
-  std::vector<double> heights;
-  heights.reserve(dem.size());
-  for (std::size_t i = 0; i < dem.size(); ++i) {
-    if (dem.is_valid(i)) heights.push_back(dem.values[i]);
-  }
-  return heights;
-}
-
-}  // namespace
-
 Hypsometry hypsometry(const Heightmap& dem, int points) {
   if (points < 2) throw InputError("hypsometry needs at least two levels");
-  auto heights = valid_heights(dem);
+  auto heights = valid_values(dem);
   if (heights.empty()) throw InputError("hypsometry: no valid cell");
   std::sort(heights.begin(), heights.end());
   Hypsometry out;

@@ -19,14 +19,6 @@ namespace gt {
 
 namespace {
 
-std::vector<double> valid_values(const Grid<double>& grid) {
-  std::vector<double> values;
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    if (grid.is_valid(i)) values.push_back(grid.values[i]);
-  }
-  return values;
-}
-
 // Runs one part; an InputError (too small, flat, no cell) becomes a note naming the part.
 template <class Measure>
 void measure_part(const std::string& part, TerrainDescriptors& out, Measure&& measure) {

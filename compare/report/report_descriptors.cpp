@@ -16,9 +16,10 @@ using json = nlohmann::json;
 constexpr std::pair<const char*, const char*> terrain_columns[] = {
     {"before", "before"}, {"cpu", "after, CPU"}, {"gpu", "after, GPU"}};
 
-std::optional<double> scalar_value(const json& descriptors, const std::string& name) {
-  for (const auto& scalar : descriptors.at("scalars")) {
-    if (scalar.at("name") == name && scalar.at("value").is_number()) return scalar.at("value").get<double>();
+// The value of the scalar whose `key` ("name" or "label") is `wanted`, in a terrain's descriptors.
+std::optional<double> scalar_value(const json& terrain, const char* key, const std::string& wanted) {
+  for (const auto& scalar : terrain.at("scalars")) {
+    if (scalar.at(key) == wanted && scalar.at("value").is_number()) return scalar.at("value").get<double>();
   }
   return std::nullopt;
 }
@@ -44,13 +45,6 @@ void add_rows_of(const json& terrain, DescriptorTable& table) {
   }
 }
 
-std::optional<double> value_by_label(const json& terrain, const std::string& label) {
-  for (const auto& scalar : terrain.at("scalars")) {
-    if (scalar.at("label") == label && scalar.at("value").is_number()) return scalar.at("value").get<double>();
-  }
-  return std::nullopt;
-}
-
 }  // namespace
 
 std::optional<DescriptorTable> descriptor_table(const CaseResult& result) {
@@ -62,7 +56,7 @@ std::optional<DescriptorTable> descriptor_table(const CaseResult& result) {
     add_rows_of(*terrain, table);
   }
   for (auto& row : table.rows) {
-    for (const auto& column : columns) row.values.push_back(value_by_label(*column.second, row.label));
+    for (const auto& column : columns) row.values.push_back(scalar_value(*column.second, "label", row.label));
   }
   return table;
 }
@@ -84,8 +78,9 @@ std::optional<FidelityTable> fidelity_table(const Report& report) {
     table.real.clear();
     FidelityTable::Row row{result.name, result.algorithm, {}};
     for (const auto& name : names) {
-      const auto before = scalar_value(terrains["before"], name), after = scalar_value(terrains["cpu"], name);
-      const auto target = scalar_value(real, name);
+      const auto before = scalar_value(terrains["before"], "name", name);
+      const auto after = scalar_value(terrains["cpu"], "name", name);
+      const auto target = scalar_value(real, "name", name);
       table.real.push_back(target);
       if (!before || !after) {
         row.cells.push_back(std::nullopt);
