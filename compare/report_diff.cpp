@@ -136,23 +136,9 @@ json changes_json(const std::vector<ReportDiff::Change>& changes) {
   return out;
 }
 
-}  // namespace
 
-json read_report_json(const std::filesystem::path& file) {
-  std::ifstream stream(file);
-  if (!stream) throw InputError(fmt::format("cannot open {}", file.string()));
-  try {
-    json report = json::parse(stream);
-    check_report(report, file.string());
-    return report;
-  } catch (const json::exception& error) {
-    throw InputError(fmt::format("{} is not valid JSON: {}", file.string(), error.what()));
-  }
-}
-
-ReportDiff diff_reports(const json& base, const json& next) {
-  check_report(base, "BASE");
-  check_report(next, "NEW");
+// diff_reports once both files are known to be reports; json::exception where an entry is malformed.
+ReportDiff diff_checked_reports(const json& base, const json& next) {
   ReportDiff diff;
   const auto base_cases = by_name(base["cases"]), next_cases = by_name(next["cases"]);
   const auto base_unit = base.contains("environment") ? number(base["environment"], "calibration_ms") : std::nullopt;
@@ -173,6 +159,31 @@ ReportDiff diff_reports(const json& base, const json& next) {
     throw InputError("the two reports share no case: a baseline from another suite or algorithm set");
   }
   return diff;
+}
+
+}  // namespace
+
+json read_report_json(const std::filesystem::path& file) {
+  std::ifstream stream(file);
+  if (!stream) throw InputError(fmt::format("cannot open {}", file.string()));
+  try {
+    json report = json::parse(stream);
+    check_report(report, file.string());
+    return report;
+  } catch (const json::exception& error) {
+    throw InputError(fmt::format("{} is not valid JSON: {}", file.string(), error.what()));
+  }
+}
+
+ReportDiff diff_reports(const json& base, const json& next) {
+  check_report(base, "BASE");
+  check_report(next, "NEW");
+  try {
+    return diff_checked_reports(base, next);
+  } catch (const json::exception& error) {
+    throw InputError(fmt::format("a report's cases are malformed (a name, status or check of the wrong type or "
+                                 "missing): {}", error.what()));
+  }
 }
 
 json to_json(const ReportDiff& diff) {

@@ -16,7 +16,8 @@
 //                     more than a factor 1.25: medians of a few repetitions on a quiet machine
 //                     scatter by about 10 %, twice that is noise; a real change of the code is more.
 //                     Absent when either report has no calibration.
-// Throws InputError when a file is unreadable, not a groundtruth report, of another schema, or
+// Throws InputError when a file is unreadable, not a groundtruth report, of another schema, has
+// malformed cases or checks (a name or status of the wrong type), or
 // when the two share no case (a baseline from another algorithm set).
 #pragma once
 

@@ -89,6 +89,10 @@ TEST(ReportDiff, RefusesOtherSchemasAndUnrelatedReports) {
   EXPECT_THROW(gt::diff_reports(report(1.0, {a_case("a", "pass", {})}), report(1.0, {a_case("b", "pass", {})})),
                gt::InputError);
   EXPECT_THROW(gt::diff_reports(json::object(), report(1.0, {})), gt::InputError);
+  json malformed = report(1.0, {a_case("c", "pass", {})});
+  malformed["cases"][0]["checks"] = {{{"name", 7}, {"status", "pass"}}};
+  EXPECT_THROW(gt::diff_reports(report(1.0, {a_case("c", "pass", {check("x", 1.0, "pass")})}), malformed),
+               gt::InputError);
 }
 
 // A seeded regression: the same case with a registered one-twin mutant shows as a regression and
