@@ -164,6 +164,7 @@ LoadedInput file_input(const nlohmann::json& input, const std::filesystem::path&
   loaded.description = fmt::format("{} ({}), {}x{}, cell {:.4g}x{:.4g} {}", path.filename().string(), file.format,
                                    heights.width, heights.height, heights.cell_size_x, heights.cell_size_y,
                                    heights.horizontal_unit);
+  loaded.source = path;
   return loaded;
 }
 
@@ -212,6 +213,7 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
                                      file.mesh.positions.size(), file.mesh.triangles.size());
     loaded.notes = std::move(file.notes);
     loaded.mesh = std::move(file.mesh);
+    loaded.source = path;
     return loaded;
   }
   if (input.contains("volume") && input["volume"].is_string()) {
@@ -221,6 +223,7 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
     loaded.volume = read_volume(path);
     loaded.description = fmt::format("{} ({}x{}x{} samples)", path.filename().string(), loaded.volume->nx,
                                      loaded.volume->ny, loaded.volume->nz);
+    loaded.source = path;
     return loaded;
   }
   if (input.contains("file") && input["file"].is_string()) {

@@ -40,6 +40,7 @@ struct LoadedInput {
   std::vector<std::string> notes;   // what the reader decided
   std::optional<Mesh> mesh;         // for {"mesh": path}
   std::optional<Volume<double>> volume;  // for {"volume": path}
+  std::filesystem::path source;     // the file read, empty for generated fields (provenance digests it)
 };
 
 LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop,

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include "core/mutant.hpp"
+#include "core/sha256.hpp"
 
 namespace gt {
 namespace {
@@ -135,7 +137,17 @@ std::string describe(const std::string& name, const std::vector<std::string>& de
   return fmt::format("{} (defines {})", name, fmt::join(defines, ", "));
 }
 
+std::mutex digests_mutex;
+std::map<std::string, std::string> digests;  // guarded by digests_mutex
+
+void record_digest(const std::string& description, const std::string& source) {
+  const std::string digest = sha256_hex(source);
+  const std::lock_guard lock(digests_mutex);
+  digests[description] = digest;
+}
+
 GLuint compile_shader(GLenum stage, const ExpandedShader& shader, const std::string& description) {
+  record_digest(description, shader.source);
   const GLuint id = glCreateShader(stage);
   const char* source = shader.source.c_str();
   glShaderSource(id, 1, &source, nullptr);
@@ -209,6 +221,11 @@ GLuint build_program(const std::vector<StageSource>& stages) {
 int group_count(int size, int local_size) { return (size + local_size - 1) / local_size; }
 
 }  // namespace
+
+std::map<std::string, std::string> compiled_shader_digests() {
+  const std::lock_guard lock(digests_mutex);
+  return digests;
+}
 
 std::filesystem::path shader_root() {
   const char* override_dir = std::getenv("GROUNDTRUTH_SHADER_DIR");

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,11 @@
 namespace gt {
 
 std::filesystem::path shader_root();
+
+// Every shader stage this process compiled so far: its description (display path, and defines when
+// it has any) -> the SHA-256 of the source the driver was given, after #include expansion and
+// define insertion (a report's provenance: which shader code really ran).
+std::map<std::string, std::string> compiled_shader_digests();
 
 // A shader after #include expansion and define insertion.
 struct ExpandedShader {

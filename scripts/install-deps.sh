@@ -16,6 +16,8 @@ packages=(
   libfftw3-dev
   # tests comparing descriptors with GDAL's (gdaldem slope)
   gdal-bin
+  # SHA-256 of shaders and data sets in every report's provenance (libcrypto)
+  libssl-dev
   # headless OpenGL: EGL (device + surfaceless), OSMesa, llvmpipe; glad generates the loader
   libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6-dev mesa-utils
   python3 python3-glad
