@@ -4,7 +4,8 @@
 Usage: plot_series.py PLOT.json OUT.png
 
 PLOT.json: {"title", "x_label", "y_label", "log_x", "log_y",
-            "series": [{"label", "x": [...], "y": [...], "dashed": bool, "group": str}]}
+            "series": [{"label", "x": [...], "y": [...], "dashed": bool, "group": str}],
+            "x_ticks": [[x, "label"], ...] (optional: labelled ticks, e.g. revisions)}
            or {"panels": [PLOT, ...]}: the plots side by side in one figure.
 Series with the same non-empty group share a colour (a measurement beside its twin or its bound);
 the others get one each. Points carry markers only where there are few of them (up to 40).
@@ -38,6 +39,9 @@ def draw_panel(plot, axes, plt):
         axes.plot(xs, ys, line + marker, color=colours[key], label=series["label"], markersize=4)
     axes.set(xlabel=plot["x_label"], ylabel=plot["y_label"], title=plot["title"],
              xscale="log" if plot["log_x"] else "linear", yscale="log" if plot["log_y"] else "linear")
+    if plot.get("x_ticks"):
+        axes.set_xticks([tick[0] for tick in plot["x_ticks"]])
+        axes.set_xticklabels([tick[1] for tick in plot["x_ticks"]], rotation=30, ha="right", fontsize="x-small")
     axes.grid(True, which="both", alpha=0.3)
     axes.legend(fontsize="small")
 

@@ -140,6 +140,7 @@ nlohmann::json panel_json(const SeriesPlot& plot) {
                                   {"dashed", series.dashed},
                                   {"group", series.group}});
   }
+  if (!plot.x_ticks.empty()) document["x_ticks"] = plot.x_ticks;
   return document;
 }
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compare/result.hpp"
@@ -37,6 +38,7 @@ struct SeriesPlot {
   bool log_x = false;
   bool log_y = false;
   std::vector<Series> series;
+  std::vector<std::pair<double, std::string>> x_ticks;  // labelled ticks (revisions); empty: matplotlib's own
 };
 
 // Writes report_folder/relative_png (its folder must exist): the panels side by side in one
