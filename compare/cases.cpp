@@ -69,10 +69,25 @@ CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) 
 
 std::vector<CaseSpec> load_cases(const std::filesystem::path& folder) { return load_suite(folder, {}); }
 
+namespace {
+
+// A user's case file (--cases) names its inputs relative to itself, so that a suite kept beside
+// the user's code runs from any working directory; absolute paths stay as they are.
+void anchor_inputs_at(CaseSpec& spec, const std::filesystem::path& case_folder) {
+  for (const char* key : {"file", "mesh", "volume"}) {
+    if (!spec.input.is_object() || !spec.input.contains(key) || !spec.input[key].is_string()) continue;
+    const std::filesystem::path path = spec.input[key].get<std::string>();
+    if (path.is_relative()) spec.input[key] = (case_folder / path).lexically_normal().string();
+  }
+}
+
+}  // namespace
+
 std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std::vector<std::filesystem::path>& extra) {
   std::vector<CaseSpec> cases;
   std::set<std::string> names;
   auto files = case_files(folder);
+  const std::size_t bundled_files = files.size();
   for (const auto& path : extra) {
     if (std::filesystem::is_directory(path)) {
       for (const auto& file : case_files(path)) files.push_back(file);
@@ -82,7 +97,8 @@ std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std:
       throw InputError(fmt::format("--cases {}: no such case file or folder", path.string()));
     }
   }
-  for (const auto& file : files) {
+  for (std::size_t index = 0; index < files.size(); ++index) {
+    const auto& file = files[index];
     std::ifstream stream(file);
     nlohmann::json document;
     try {
@@ -93,6 +109,7 @@ std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std:
     if (!document.is_array()) throw InputError(fmt::format("{}: expected an array of cases", file.string()));
     for (const auto& entry : document) {
       auto spec = case_from_json(entry, file.filename().string());
+      if (index >= bundled_files) anchor_inputs_at(spec, std::filesystem::absolute(file).parent_path());
       if (!names.insert(spec.name).second) {
         throw InputError(fmt::format("{}: case name '{}' is used twice", file.string(), spec.name));
       }

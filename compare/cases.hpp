@@ -38,7 +38,9 @@ struct CaseSpec {
 std::vector<CaseSpec> load_cases(const std::filesystem::path& folder);
 
 // The bundled cases of `folder` plus those of each extra path (a case file or a folder of them,
-// `groundtruth run --cases`); a name used twice is refused.
+// `groundtruth run --cases`); a name used twice is refused. An extra case's relative input paths
+// ("file", "mesh", "volume") resolve against its case file's folder, the bundled ones' against
+// datasets/.
 std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std::vector<std::filesystem::path>& extra);
 
 CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin);

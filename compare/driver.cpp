@@ -2,9 +2,11 @@
 #include "compare/driver.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -16,6 +18,10 @@
 #include "compare/cases.hpp"
 #include "compare/expectations.hpp"
 #include "compare/inputs.hpp"
+#include "compare/isolated_cases.hpp"
+#include "compare/progress.hpp"
+#include "compare/provenance.hpp"
+#include "compare/shards.hpp"
 #include "compare/mutants/mutants.hpp"
 #include "compare/output_folder.hpp"
 #include "compare/report/plots.hpp"
@@ -142,6 +148,7 @@ bool skipped_for_want_of_gpu(const CaseResult& result, const RunOptions& options
 }
 
 CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context, bool require_gpu) {
+  const auto started = std::chrono::steady_clock::now();
   CaseResult result;
   result.name = job.spec.name;
   result.algorithm = job.spec.algorithm;
@@ -172,6 +179,7 @@ CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context
     result.error = fmt::format("--require-gpu: the GPU half did not run ({})", options.gpu_unavailable_reason);
   }
   result.status = case_outcome(result);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
 
@@ -179,14 +187,18 @@ void print_summary(const Report& report, const std::filesystem::path& out) {
   std::map<Outcome, int> counts;
   for (const auto& result : report.cases) {
     ++counts[result.status];
-    fmt::print("{:12} {}{}\n", outcome_name(result.status), result.name,
-               result.expected_failure.empty() ? "" : " (expected failure)");
+    const std::string remark = !result.expected_failure.empty() ? " (expected failure)"
+                               : result.status != Outcome::flaky ? ""
+                               : result.known_flake.empty()      ? " (a new flake: fix it or add it to a flake list)"
+                                                                 : " (known flake: " + result.known_flake + ")";
+    fmt::print("{:12} {}{}\n", outcome_name(result.status), result.name, remark);
     if (!result.error.empty()) fmt::print("             {}\n", result.error);
   }
   for (const auto& problem : report.expectation_problems) fmt::print("expectation  {}\n", problem);
-  fmt::print("groundtruth: {} cases: {} pass, {} warn, {} inconclusive, {} skip, {} fail, {} error; report in {}\n",
+  fmt::print("groundtruth: {} cases: {} pass, {} warn, {} inconclusive, {} skip, {} flaky, {} fail, {} error; report in {}\n",
              report.cases.size(), counts[Outcome::pass], counts[Outcome::warn], counts[Outcome::inconclusive],
-             counts[Outcome::skip], counts[Outcome::fail], counts[Outcome::error], (out / "index.html").string());
+             counts[Outcome::skip], counts[Outcome::flaky], counts[Outcome::fail], counts[Outcome::error],
+             (out / "index.html").string());
 }
 
 void print_mutation(const MutationReport& mutation) {
@@ -217,55 +229,238 @@ std::optional<nlohmann::json> read_baseline(const std::filesystem::path& file, c
   return baseline;
 }
 
+// --shard: keeps this shard's part of the selection and records the whole selection.
+std::vector<CaseSpec> shard_specs(const std::vector<CaseSpec>& specs, const DriverOptions& options,
+                                  const std::optional<nlohmann::json>& baseline, Report& report) {
+  if (options.shard.empty()) return specs;
+  const ShardSpec shard = parse_shard(options.shard);
+  ShardInfo info{shard.index, shard.count, {}, baseline ? options.baseline.string() : ""};
+  for (const auto& spec : specs) info.selection.push_back(spec.name);
+  const auto assigned = assign_shards(info.selection, shard.count, baseline.value_or(nlohmann::json()));
+  std::vector<CaseSpec> mine;
+  for (std::size_t index = 0; index < specs.size(); ++index) {
+    if (assigned[index] == shard.index) mine.push_back(specs[index]);
+  }
+  if (!options.quiet) {
+    fmt::print(stderr, "groundtruth: shard {}/{}: {} of the {} selected cases{}\n", shard.index, shard.count,
+               mine.size(), specs.size(), baseline ? ", balanced by the baseline's case times" : "");
+  }
+  report.shard = std::move(info);
+  return mine;
+}
+
+std::vector<Expectation> all_expectations(const DriverOptions& options, const std::vector<CaseSpec>& suite) {
+  auto expectations = load_expectations(options.dataset_dir / "expectations.txt", suite);
+  for (const auto& file : options.expectation_files) {
+    auto more = load_expectations(file, suite, ExpectationFile::required);
+    expectations.insert(expectations.end(), more.begin(), more.end());
+  }
+  for (const auto& file : options.flake_files) {
+    auto more = load_expectations(file, suite, ExpectationFile::flakes_only);
+    expectations.insert(expectations.end(), more.begin(), more.end());
+  }
+  return expectations;
+}
+
+const char* backends_name(Backends backends) {
+  return backends == Backends::cpu ? "cpu" : backends == Backends::gpu ? "gpu" : "both";
+}
+
+// What every worker of this run is told: the same backends, context, repetitions, cases and mutant.
+std::vector<std::string> worker_common_args(const DriverOptions& options) {
+  std::vector<std::string> args = {"--gl",       options.gl == GlBackend::osmesa ? "osmesa" : "egl",
+                                   "--backend",  backends_name(options.backends),
+                                   "--cpu-reps", std::to_string(options.cpu_reps),
+                                   "--gpu-reps", std::to_string(options.gpu_reps)};
+  for (const auto& file : options.extra_cases) args.insert(args.end(), {"--cases", std::filesystem::absolute(file).string()});
+  if (!options.mutant.empty()) args.insert(args.end(), {"--mutant", options.mutant});
+  if (options.require_gpu) args.push_back("--require-gpu");
+  if (options.memory_limit_mib > 0.0) args.insert(args.end(), {"--memory-limit", fmt::format("{}", options.memory_limit_mib)});
+  return args;
+}
+
+// The worker arguments that select this job alone: its exact name, or the ad-hoc case's options.
+std::vector<std::string> job_selection(const Job& job, const DriverOptions& options) {
+  if (job.spec.origin != ad_hoc_origin) return {exact_pattern(job.spec.name)};
+  const AdHocCase& ad_hoc = *options.ad_hoc;
+  std::vector<std::string> args = {"--algorithm", ad_hoc.algorithm, "--size",
+                                   fmt::format("{}x{}", ad_hoc.width, ad_hoc.height), "--cell-size",
+                                   fmt::format("{}", ad_hoc.cell_size)};
+  if (!ad_hoc.input.empty()) args.insert(args.end(), {"--input", std::filesystem::absolute(ad_hoc.input).string()});
+  for (const auto& assignment : ad_hoc.assignments) args.insert(args.end(), {"--set", assignment});
+  return args;
+}
+
+CaseResult::Attempt attempt_of(const CaseResult& result) {
+  CaseResult::Attempt attempt{result.status, result.error, {}};
+  for (const Check& check : result.checks) {
+    if (check.status != Outcome::fail && check.status != Outcome::error) continue;
+    attempt.failing_checks.push_back(fmt::format("{} = {:.6g}{}", check.name, check.value,
+                                                 check.threshold ? fmt::format(" (bound {:.6g})", *check.threshold) : ""));
+  }
+  return attempt;
+}
+
+// Runs a list of jobs in this process or in workers, and returns their results in order.
+class CaseRunner {
+ public:
+  CaseRunner(const DriverOptions& options, const std::filesystem::path& folder, Report& report)
+      : options_(options), folder_(folder), report_(report) {
+    run_options_.dataset_dir = options.dataset_dir;
+    run_options_.cpu_reps = options.backends == Backends::gpu ? 0 : options.cpu_reps;
+    run_options_.gpu_reps = options.gpu_reps;
+    run_options_.report_dir = folder;
+    if (isolated()) {
+      isolation_.parallel = options.parallel;
+      isolation_.timeout_seconds = options.case_timeout.value_or(default_case_timeout_seconds);
+      isolation_.common_args = worker_common_args(options);
+    } else {
+      open_context();
+    }
+  }
+
+  bool isolated() const { return !options_.worker && (options_.parallel > 1 || options_.case_timeout); }
+
+  std::vector<CaseResult> run(const std::vector<const Job*>& jobs) {
+    Progress progress(static_cast<int>(jobs.size()), options_.quiet);
+    std::vector<CaseResult> results;
+    if (isolated()) {
+      std::vector<IsolatedCase> cases;
+      for (const Job* job : jobs) {
+        CaseResult known;
+        known.name = job->spec.name;
+        known.algorithm = job->spec.algorithm;
+        known.input = job->input.description;
+        known.width = job->input.heights.width;
+        known.height = job->input.heights.height;
+        known.params = job->resolved;
+        cases.push_back({job_selection(*job, options_), known});
+      }
+      results = run_isolated(cases, isolation_, folder_, report_.environment, progress);
+    } else {
+      run_options_.progress = &progress;
+      for (std::size_t index = 0; index < jobs.size(); ++index) {
+        progress.start_case(static_cast<int>(index + 1), jobs[index]->spec.name);
+        results.push_back(run_job(*jobs[index], run_options_, context_.get(), options_.require_gpu));
+      }
+      run_options_.progress = nullptr;
+    }
+    progress.finish();
+    return results;
+  }
+
+  // The context benchmarks need (opened now in a run whose cases ran in workers).
+  bool gpu_available() {
+    if (!context_opened_) open_context();
+    return run_options_.gpu_available;
+  }
+
+ private:
+  // A run without --case-timeout that runs its cases in workers still ends one that hangs.
+  static constexpr double default_case_timeout_seconds = 3600.0;
+
+  void open_context() {
+    context_opened_ = true;
+    Environment& environment = report_.environment;
+    if (options_.backends == Backends::cpu) {
+      run_options_.gpu_unavailable_reason = "GPU backend not requested (--backend cpu)";
+    } else {
+      try {
+        context_ = GlContext::create(options_.gl);
+        run_options_.gpu_available = true;
+      } catch (const GpuUnavailable& error) {
+        run_options_.gpu_unavailable_reason = fmt::format("no GL context: {}", error.what());
+        fmt::print(stderr, "groundtruth: {}; {}\n", error.what(),
+                   options_.require_gpu ? "--require-gpu: every case with a GPU half ends as error"
+                                        : "GPU checks are skipped (never counted as passed), the CPU side still runs");
+      }
+    }
+    if (!environment.gl_platform.empty()) return;  // the workers' context describes the cases
+    environment.gl_renderer = context_ ? context_->info().renderer : "none: " + run_options_.gpu_unavailable_reason;
+    environment.gl_version = context_ ? context_->info().version : "";
+    environment.gl_platform = context_ ? context_->info().platform : "none";
+  }
+
+  const DriverOptions& options_;
+  std::filesystem::path folder_;
+  Report& report_;
+  RunOptions run_options_;
+  IsolationOptions isolation_;
+  std::unique_ptr<GlContext> context_;
+  bool context_opened_ = false;
+};
+
+// --retries (and the flake list): a case that failed unexpectedly is run again; one that then
+// passes becomes `flaky` with its failed attempts listed, one that never does stays failed.
+void retry_failures(const std::vector<Job>& jobs, const DriverOptions& options,
+                    const std::vector<Expectation>& expectations, CaseRunner& runner, Report& report) {
+  const auto budget = [&](std::size_t index) {
+    return std::max(options.retries, named_as_flaky(expectations, jobs[index].spec.name) ? 1 : 0);
+  };
+  for (int attempt = 1;; ++attempt) {
+    std::vector<std::size_t> again;
+    std::vector<const Job*> rerun;
+    for (std::size_t index = 0; index < jobs.size(); ++index) {
+      const CaseResult& result = report.cases[index];
+      if (attempt > budget(index) || (result.status != Outcome::fail && result.status != Outcome::error) ||
+          !failed_unexpectedly(result)) {
+        continue;
+      }
+      if (!options.quiet) {
+        fmt::print(stderr, "groundtruth: {} is {}; running it again (attempt {})\n", result.name,
+                   outcome_name(result.status), attempt + 1);
+      }
+      again.push_back(index);
+      rerun.push_back(&jobs[index]);
+    }
+    if (again.empty()) return;
+    auto results = runner.run(rerun);
+    for (std::size_t k = 0; k < again.size(); ++k) {
+      CaseResult& previous = report.cases[again[k]];
+      results[k].earlier_attempts = previous.earlier_attempts;
+      results[k].earlier_attempts.push_back(attempt_of(previous));
+      results[k].status = case_outcome(results[k]);
+      previous = std::move(results[k]);
+    }
+    report.expectation_problems = apply_expectations(expectations, report);
+  }
+}
+
+std::vector<std::filesystem::path> data_files(const std::vector<Job>& jobs) {
+  std::set<std::filesystem::path> files;
+  for (const auto& job : jobs) {
+    if (!job.input.source.empty()) files.insert(job.input.source);
+  }
+  return {files.begin(), files.end()};
+}
+
 }  // namespace
 
 int run_driver(const DriverOptions& options) {
   if (!options.mutant.empty()) set_active_mutant(find_mutant(options.mutant).name);
   const auto suite = load_suite(options.dataset_dir / "cases", options.extra_cases);
-  const auto specs =
+  const auto selection =
       options.patterns.empty() && !options.ad_hoc ? std::vector<CaseSpec>{} : selected_specs(options, suite);
+  const auto baseline = read_baseline(options.baseline, selection);
+  Report report;
+  const auto specs = shard_specs(selection, options, baseline, report);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
-  const auto expectations = load_expectations(options.dataset_dir / "expectations.txt", suite);
-  const auto baseline = read_baseline(options.baseline, specs);
+  const auto expectations = all_expectations(options, suite);
   check_output_folder(options.out);
 
-  Report report;
   report.environment = base_environment();
-  report.environment.calibration_ms = calibration_ms();  // only runs that time cases need it
-  RunOptions run_options;
-  run_options.dataset_dir = options.dataset_dir;
-  run_options.cpu_reps = options.backends == Backends::gpu ? 0 : options.cpu_reps;
-  run_options.gpu_reps = options.gpu_reps;
-  std::unique_ptr<GlContext> context;
-  if (options.backends == Backends::cpu) {
-    run_options.gpu_unavailable_reason = "GPU backend not requested (--backend cpu)";
-  } else {
-    try {
-      context = GlContext::create(options.gl);
-      run_options.gpu_available = true;
-    } catch (const GpuUnavailable& error) {
-      run_options.gpu_unavailable_reason = fmt::format("no GL context: {}", error.what());
-      fmt::print(stderr, "groundtruth: {}; {}\n", error.what(),
-                 options.require_gpu ? "--require-gpu: every case with a GPU half ends as error"
-                                     : "GPU checks are skipped (never counted as passed), the CPU side still runs");
-    }
-  }
-  report.environment.gl_renderer = context ? context->info().renderer : "none: " + run_options.gpu_unavailable_reason;
-  report.environment.gl_version = context ? context->info().version : "";
-  report.environment.gl_platform = context ? context->info().platform : "none";
+  add_run_provenance(report.environment, options.command_line);
+  if (!options.worker) report.environment.calibration_ms = calibration_ms();  // only runs that time cases need it
 
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
-    run_options.report_dir = folder;
-    Progress progress(static_cast<int>(jobs.size()), options.quiet);
-    run_options.progress = &progress;
-    for (std::size_t index = 0; index < jobs.size(); ++index) {
-      progress.start_case(static_cast<int>(index + 1), jobs[index].spec.name);
-      report.cases.push_back(run_job(jobs[index], run_options, context.get(), options.require_gpu));
-    }
+    CaseRunner runner(options, folder, report);
+    std::vector<const Job*> all;
+    for (const auto& job : jobs) all.push_back(&job);
+    report.cases = runner.run(all);
     report.expectation_problems = apply_expectations(expectations, report);
-    progress.finish();
+    retry_failures(jobs, options, expectations, runner, report);
     if (options.benchmark) {
-      report.benchmarks = run_benchmarks(*options.benchmark, run_options.gpu_available, report.environment);
+      report.benchmarks = run_benchmarks(*options.benchmark, runner.gpu_available(), report.environment);
       std::string reason;
       if (auto plot = plot_benchmarks(report.benchmarks, folder, reason)) {
         report.plots.push_back(*plot);
@@ -274,6 +469,8 @@ int run_driver(const DriverOptions& options) {
         fmt::print(stderr, "groundtruth: plot unavailable: {}\n", reason);
       }
     }
+    if (report.environment.gl_platform.empty()) runner.gpu_available();  // every worker failed: describe ours
+    add_digests(report.environment, data_files(jobs));
     if (options.mutation) {
       report.mutation = run_mutation(*options.mutation, folder / "mutants", options.dataset_dir);
       report.mutation->folder = "mutants/";
@@ -285,6 +482,7 @@ int run_driver(const DriverOptions& options) {
     }
     write_report_files(report, folder);
   });
+  if (options.worker) return run_failed(report) ? 1 : 0;
   print_summary(report, options.out);
   if (report.baseline_diff) fmt::print("against {}: {}", report.baseline_file, describe(*report.baseline_diff));
   if (report.mutation) print_mutation(*report.mutation);

@@ -43,6 +43,15 @@ struct DriverOptions {
   bool quiet = false;                    // no progress lines on stderr
   std::filesystem::path baseline;        // a previous report.json to diff against (compare/report_diff.hpp)
   std::optional<MutationOptions> mutation;  // also run the mutants (report: into OUT/mutants/)
+  std::vector<std::filesystem::path> expectation_files;  // --expectations: the user's known outcomes
+  std::vector<std::filesystem::path> flake_files;        // --flakes: flake lists (entries `flaky`)
+  int parallel = 1;                      // -j: cases in this many worker processes at once
+  std::optional<double> case_timeout;    // --case-timeout seconds (runs the cases in workers)
+  int retries = 0;                       // --retries: a failing case is run again up to this often
+  std::string shard;                     // --shard K/N or auto (compare/shards.hpp), or empty
+  std::string command_line;              // for the report's provenance
+  double memory_limit_mib = 0.0;         // --memory-limit, passed on to workers (0: none)
+  bool worker = false;                   // a worker process of a parent run (compare/isolated_cases.hpp)
 };
 
 // `groundtruth mutants`: runs the mutation into `out` (atomically, like a report), writes

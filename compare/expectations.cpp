@@ -18,16 +18,18 @@ bool matches(const std::string& pattern, const std::string& text) {
 }
 
 Outcome parse_outcome(const std::string& word, const std::string& where) {
-  for (Outcome outcome : {Outcome::pass, Outcome::warn, Outcome::inconclusive, Outcome::fail, Outcome::skip,
-                          Outcome::error}) {
-    if (word == outcome_name(outcome)) return outcome;
+  const auto outcome = outcome_from_name(word);
+  if (!outcome) {
+    throw InputError(fmt::format("{}: '{}' is not an outcome (pass, warn, inconclusive, fail, skip, error, flaky)",
+                                 where, word));
   }
-  throw InputError(fmt::format("{}: '{}' is not an outcome (pass, warn, inconclusive, fail, skip, error)", where, word));
+  return *outcome;
 }
 
 Expectation parse_entry(const std::string& line, int number, const std::string& where) {
   std::istringstream words(line);
   Expectation entry;
+  entry.file = where;
   entry.line = number;
   std::string outcome;
   if (!(words >> entry.case_pattern >> entry.check_pattern >> outcome)) {
@@ -60,10 +62,14 @@ bool applies_to(const Expectation& entry, const CaseResult& result, const Enviro
 
 }  // namespace
 
-std::vector<Expectation> load_expectations(const std::filesystem::path& file, const std::vector<CaseSpec>& suite) {
+std::vector<Expectation> load_expectations(const std::filesystem::path& file, const std::vector<CaseSpec>& suite,
+                                           ExpectationFile kind) {
   std::vector<Expectation> entries;
   std::ifstream stream(file);
-  if (!stream) return entries;  // no file: nothing is expected to fail
+  if (!stream) {
+    if (kind == ExpectationFile::optional) return entries;  // no bundled file: nothing is expected to fail
+    throw InputError(fmt::format("{}: cannot be read", file.string()));
+  }
   std::string line;
   for (int number = 1; std::getline(stream, line); ++number) {
     const auto first = line.find_first_not_of(" \t");
@@ -74,14 +80,52 @@ std::vector<Expectation> load_expectations(const std::filesystem::path& file, co
       throw InputError(fmt::format("{}: '{}' matches no case of the suite; remove or correct the entry", where,
                                    entry.case_pattern));
     }
+    if (kind == ExpectationFile::flakes_only && entry.outcome != Outcome::flaky) {
+      throw InputError(fmt::format("{}: a flake list holds only `flaky` entries (this one says {})", where,
+                                   outcome_name(entry.outcome)));
+    }
     entries.push_back(std::move(entry));
   }
   return entries;
 }
 
+std::string known_flake_reason(const std::vector<Expectation>& expectations, const CaseResult& result) {
+  if (result.status != Outcome::flaky) return {};
+  std::vector<std::string> reasons;
+  const auto reason_for = [&](const std::string& check_name) -> const Expectation* {
+    for (const Expectation& entry : expectations) {
+      if (entry.outcome == Outcome::flaky && matches(entry.case_pattern, result.name) &&
+          matches(entry.check_pattern, check_name)) {
+        return &entry;
+      }
+    }
+    return nullptr;
+  };
+  for (const auto& attempt : result.earlier_attempts) {
+    std::vector<std::string> names;
+    for (const auto& check : attempt.failing_checks) names.push_back(check.substr(0, check.find(' ')));
+    if (!attempt.error.empty()) names.push_back("error");
+    for (const auto& name : names) {
+      const Expectation* entry = reason_for(name);
+      if (entry == nullptr) return {};
+      if (std::find(reasons.begin(), reasons.end(), entry->reason) == reasons.end()) reasons.push_back(entry->reason);
+    }
+  }
+  std::string joined;
+  for (const auto& reason : reasons) joined += (joined.empty() ? "" : "; ") + reason;
+  return joined;
+}
+
+bool named_as_flaky(const std::vector<Expectation>& expectations, const std::string& case_name) {
+  return std::any_of(expectations.begin(), expectations.end(), [&](const Expectation& entry) {
+    return entry.outcome == Outcome::flaky && matches(entry.case_pattern, case_name);
+  });
+}
+
 std::vector<std::string> apply_expectations(const std::vector<Expectation>& expectations, Report& report) {
   std::vector<std::string> problems;
   for (const Expectation& entry : expectations) {
+    if (entry.outcome == Outcome::flaky) continue;  // the flake list: see known_flake_reason
     for (CaseResult& result : report.cases) {
       if (!applies_to(entry, result, report.environment)) continue;
       int matched = 0;
@@ -91,14 +135,13 @@ std::vector<std::string> apply_expectations(const std::vector<Expectation>& expe
         check.expected = entry.outcome;
         check.expectation = entry.reason;
         if (check.status != entry.outcome) {
-          problems.push_back(fmt::format("{} {}: expected {} (expectations.txt line {}), got {}", result.name,
-                                         check.name, outcome_name(entry.outcome), entry.line,
-                                         outcome_name(check.status)));
+          problems.push_back(fmt::format("{} {}: expected {} ({}), got {}", result.name, check.name,
+                                         outcome_name(entry.outcome), entry.file, outcome_name(check.status)));
         }
       }
       if (matched == 0) {
-        problems.push_back(fmt::format("{}: expectations.txt line {} names check '{}', which this case {}", result.name,
-                                       entry.line, entry.check_pattern,
+        problems.push_back(fmt::format("{}: {} names check '{}', which this case {}", result.name, entry.file,
+                                       entry.check_pattern,
                                        result.error.empty() ? "does not have" : "did not reach: " + result.error));
       }
     }
@@ -120,6 +163,7 @@ std::vector<std::string> apply_expectations(const std::vector<Expectation>& expe
     if (!unexpected && !reasons.empty()) {
       for (const auto& reason : reasons) result.expected_failure += (result.expected_failure.empty() ? "" : "; ") + reason;
     }
+    result.known_flake = known_flake_reason(expectations, result);
   }
   return problems;
 }

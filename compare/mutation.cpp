@@ -81,18 +81,21 @@ std::vector<std::string> worker_args(const std::vector<std::string>& cases, cons
 
 void print_line(const std::string& line) { fmt::print(stderr, "groundtruth mutants: {}\n", line); }
 
-MutationBaseline run_baseline(const std::string& family, const std::vector<std::string>& cases,
-                              const MutationOptions& options, const std::filesystem::path& folder, Failures& failures) {
+WorkerTask baseline_task(const std::string& family, const std::vector<std::string>& cases,
+                         const MutationOptions& options, const std::filesystem::path& folder) {
+  return {worker_args(cases, folder / "baseline" / family, options, ""), folder / "baseline" / (family + ".log"),
+          llvmpipe_share(options.parallel)};
+}
+
+MutationBaseline baseline_outcome(const std::string& family, const std::vector<std::string>& cases,
+                                  const MutationOptions& options, const std::filesystem::path& folder,
+                                  const WorkerResult& worker, Failures& failures) {
   MutationBaseline baseline;
   baseline.family = family;
   baseline.cases = cases;
   baseline.run_folder = "baseline/" + family;
-  const auto out = folder / baseline.run_folder;
-  print_line(fmt::format("baseline of {} ({} cases)", family, cases.size()));
-  const WorkerResult worker = run_worker(worker_args(cases, out, options, ""), folder / "baseline" / (family + ".log"),
-                                         options.timeout_seconds);
   baseline.seconds = worker.seconds;
-  const WorkerReport report = read_worker_report(out);
+  const WorkerReport report = read_worker_report(folder / baseline.run_folder);
   failures = report.failures;
   if (worker.timed_out) baseline.problems.push_back(fmt::format("timed out after {:.0f} s", options.timeout_seconds));
   if (!report.readable) baseline.problems.push_back(fmt::format("no readable report (exit status {})", worker.status));
@@ -105,16 +108,20 @@ MutationBaseline run_baseline(const std::string& family, const std::vector<std::
   return baseline;
 }
 
-MutantOutcome run_one(const Mutant& mutant, const std::vector<std::string>& cases, const Failures& baseline,
-                      const MutationOptions& options, const std::filesystem::path& folder) {
+WorkerTask mutant_task(const Mutant& mutant, const std::vector<std::string>& cases, const MutationOptions& options,
+                       const std::filesystem::path& folder) {
+  return {worker_args(cases, folder / "runs" / mutant.name, options, mutant.name), folder / "runs" / (mutant.name + ".log"),
+          llvmpipe_share(options.parallel)};
+}
+
+MutantOutcome mutant_outcome(const Mutant& mutant, const std::vector<std::string>& cases, const Failures& baseline,
+                             const MutationOptions& options, const std::filesystem::path& folder,
+                             const WorkerResult& worker) {
   MutantOutcome outcome{.name = mutant.name, .family = mutant_family(mutant), .kind = mutant_kind_name(mutant.kind),
                         .description = mutant.description, .cases = cases};
   outcome.run_folder = "runs/" + mutant.name;
-  const auto out = folder / outcome.run_folder;
-  const WorkerResult worker = run_worker(worker_args(cases, out, options, mutant.name),
-                                         folder / "runs" / (mutant.name + ".log"), options.timeout_seconds);
   outcome.seconds = worker.seconds;
-  const WorkerReport report = read_worker_report(out);
+  const WorkerReport report = read_worker_report(folder / outcome.run_folder);
   for (const auto& [key, check] : report.failures) {
     if (baseline.contains(key)) continue;
     const auto check_name = key.substr(key.find(": ") + 2);
@@ -175,16 +182,38 @@ MutationReport run_mutation(const MutationOptions& options, const std::filesyste
   std::filesystem::create_directories(folder / "baseline");
   MutationReport report;
   std::map<std::string, Failures> baseline_failures;
+  std::vector<std::string> families;
+  std::vector<WorkerTask> tasks;
   for (const auto& [family, cases] : family_cases) {
-    report.baselines.push_back(run_baseline(family, cases, options, folder, baseline_failures[family]));
+    families.push_back(family);
+    tasks.push_back(baseline_task(family, cases, options, folder));
   }
+  report.baselines.resize(families.size());
+  run_workers(
+      tasks, options.parallel, options.timeout_seconds,
+      [&](std::size_t index) {
+        print_line(fmt::format("baseline of {} ({} cases)", families[index], family_cases[families[index]].size()));
+      },
+      [&](std::size_t index, const WorkerResult& worker) {
+        const auto& family = families[index];
+        report.baselines[index] =
+            baseline_outcome(family, family_cases[family], options, folder, worker, baseline_failures[family]);
+      });
+  tasks.clear();
   for (std::size_t index = 0; index < selected.size(); ++index) {
-    const Mutant& mutant = selected[index];
-    auto outcome = run_one(mutant, cases_of[index], baseline_failures[mutant_family(mutant)], options, folder);
-    print_line(fmt::format("[{}/{}] {:9} {} ({:.1f} s)", index + 1, selected.size(), outcome.status, mutant.name,
-                           outcome.seconds));
-    report.mutants.push_back(std::move(outcome));
+    tasks.push_back(mutant_task(selected[index], cases_of[index], options, folder));
   }
+  report.mutants.resize(selected.size());
+  int finished = 0;
+  run_workers(
+      tasks, options.parallel, options.timeout_seconds, [](std::size_t) {},
+      [&](std::size_t index, const WorkerResult& worker) {
+        const Mutant& mutant = selected[index];
+        report.mutants[index] =
+            mutant_outcome(mutant, cases_of[index], baseline_failures[mutant_family(mutant)], options, folder, worker);
+        print_line(fmt::format("[{}/{}] {:9} {} ({:.1f} s)", ++finished, selected.size(), report.mutants[index].status,
+                               mutant.name, worker.seconds));
+      });
   return report;
 }
 

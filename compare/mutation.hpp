@@ -28,6 +28,7 @@ struct MutationOptions {
   std::string gl = "egl";
   bool require_gpu = false;            // passed to every worker run
   double timeout_seconds = 600.0;      // per worker run
+  int parallel = 1;                    // worker runs at once (-j)
 };
 
 // The selected mutants; throws InputError when a pattern matches none.

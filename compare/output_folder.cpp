@@ -5,7 +5,6 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <fstream>
 #include <mutex>
@@ -25,7 +24,8 @@ constexpr const char* marker_name = ".groundtruth-report";
 
 std::mutex staging_mutex;
 std::filesystem::path active_staging;  // guarded by staging_mutex
-std::atomic<pid_t> running_worker{0};
+std::mutex workers_mutex;
+std::set<pid_t> running_workers;  // guarded by workers_mutex
 
 std::filesystem::path normalised(const std::filesystem::path& out) {
   const auto absolute = std::filesystem::absolute(out).lexically_normal();
@@ -75,7 +75,10 @@ void set_staging(const std::filesystem::path& staging) {
 // (a case's create_directories) while remove_all empties it: remove until it stays gone, then exit
 // at once (the message is printed first so that nothing comes between the last check and _exit).
 [[noreturn]] void clean_up_and_exit(int signal_number) {
-  if (const pid_t worker = running_worker.load(); worker > 0) kill(-worker, SIGKILL);
+  {
+    const std::lock_guard lock(workers_mutex);
+    for (const pid_t worker : running_workers) kill(-worker, SIGKILL);
+  }
   fmt::print(stderr, "groundtruth: interrupted by signal {}; nothing was left in the output folder\n", signal_number);
   const std::lock_guard lock(staging_mutex);
   std::error_code ignored;
@@ -88,7 +91,15 @@ void set_staging(const std::filesystem::path& staging) {
 
 }  // namespace
 
-void set_running_worker(pid_t pid) { running_worker.store(pid); }
+void add_running_worker(pid_t pid) {
+  const std::lock_guard lock(workers_mutex);
+  running_workers.insert(pid);
+}
+
+void remove_running_worker(pid_t pid) {
+  const std::lock_guard lock(workers_mutex);
+  running_workers.erase(pid);
+}
 
 void install_interrupt_cleanup() {
   sigset_t signals;

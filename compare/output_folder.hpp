@@ -3,7 +3,7 @@
 // interruption.
 //
 // - The staging folder is "<out>.tmp-<pid>". A run interrupted by SIGINT, SIGTERM or SIGHUP
-//   removes its staging folder and ends the worker process it was waiting for, then exits with
+//   removes its staging folder and ends the worker processes it was waiting for, then exits with
 //   128 + the signal (a thread waits for the signals, so the clean-up runs outside a signal
 //   handler). A run killed outright (SIGKILL, the memory killer) cannot clean up: the next run
 //   into the same parent folder removes "<out>.tmp-<pid>" folders whose process is gone.
@@ -32,7 +32,8 @@ void write_folder_atomically(const std::filesystem::path& out,
 // thing in main, before any other thread starts).
 void install_interrupt_cleanup();
 
-// The worker process an interruption must also end (0: none); compare/worker.cpp sets it.
-void set_running_worker(pid_t pid);
+// The worker processes an interruption must also end; compare/worker.cpp adds and removes them.
+void add_running_worker(pid_t pid);
+void remove_running_worker(pid_t pid);
 
 }  // namespace gt

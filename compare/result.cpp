@@ -2,22 +2,25 @@
 // checks, and whether a run failed once the expectation list is taken into account.
 #include "compare/result.hpp"
 
+#include <algorithm>
+
 namespace gt {
 
 namespace {
 
-// Higher is worse: pass < warn < inconclusive < skip < fail < error. A skipped check outranks
-// the passes and warnings around it, so a case whose GPU half did not run is never `pass`.
+// Higher is worse: pass < warn < inconclusive < skip < flaky < fail < error. A skipped check
+// outranks the passes and warnings around it, so a case whose GPU half did not run is never `pass`.
 int severity(Outcome outcome) {
   switch (outcome) {
     case Outcome::pass: return 0;
     case Outcome::warn: return 1;
     case Outcome::inconclusive: return 2;
     case Outcome::skip: return 3;
-    case Outcome::fail: return 4;
-    case Outcome::error: return 5;
+    case Outcome::flaky: return 4;
+    case Outcome::fail: return 5;
+    case Outcome::error: return 6;
   }
-  return 5;
+  return 6;
 }
 
 bool is_failure(Outcome outcome) { return outcome == Outcome::fail || outcome == Outcome::error; }
@@ -32,29 +35,38 @@ const char* outcome_name(Outcome outcome) {
     case Outcome::inconclusive: return "inconclusive";
     case Outcome::skip: return "skip";
     case Outcome::error: return "error";
+    case Outcome::flaky: return "flaky";
   }
   return "error";
+}
+
+std::optional<Outcome> outcome_from_name(const std::string& name) {
+  for (Outcome outcome : {Outcome::pass, Outcome::warn, Outcome::inconclusive, Outcome::skip, Outcome::flaky,
+                          Outcome::fail, Outcome::error}) {
+    if (name == outcome_name(outcome)) return outcome;
+  }
+  return std::nullopt;
 }
 
 Outcome worse(Outcome a, Outcome b) { return severity(a) >= severity(b) ? a : b; }
 
 Outcome case_outcome(const CaseResult& result) {
   if (!result.error.empty()) return Outcome::error;
-  if (result.checks.empty()) return Outcome::skip;
-  Outcome outcome = Outcome::pass;
+  Outcome outcome = result.checks.empty() ? Outcome::skip : Outcome::pass;
   for (const Check& check : result.checks) outcome = worse(outcome, check.status);
-  return outcome;
+  return !result.earlier_attempts.empty() && !is_failure(outcome) ? worse(outcome, Outcome::flaky) : outcome;
+}
+
+bool failed_unexpectedly(const CaseResult& result) {
+  if (!result.error.empty()) return true;
+  if (result.status == Outcome::flaky && result.known_flake.empty()) return true;
+  return std::any_of(result.checks.begin(), result.checks.end(),
+                     [](const Check& check) { return is_failure(check.status) && check.expected != check.status; });
 }
 
 bool run_failed(const Report& report) {
-  if (!report.expectation_problems.empty()) return true;
-  for (const CaseResult& result : report.cases) {
-    if (!result.error.empty()) return true;
-    for (const Check& check : result.checks) {
-      if (is_failure(check.status) && check.expected != check.status) return true;
-    }
-  }
-  return false;
+  return !report.expectation_problems.empty() ||
+         std::any_of(report.cases.begin(), report.cases.end(), failed_unexpectedly);
 }
 
 int MutationReport::killed() const {

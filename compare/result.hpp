@@ -3,6 +3,7 @@
 // report.md, junit.xml and index.html.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,13 +21,18 @@ namespace gt {
 //                 comparison could still tell a bug from rounding: nothing is known either way;
 //   fail          beyond every bound;
 //   skip          not run here, with the reason (a GPU half without a GL context): never a pass;
-//   error         could not run (an exception, a GL error, --require-gpu without a context).
-enum class Outcome { pass, fail, warn, inconclusive, skip, error };
+//   error         could not run (an exception, a GL error, --require-gpu without a context, a
+//                 worker process that crashed or ran past --case-timeout);
+//   flaky         (cases only) failed, then passed when run again (--retries): never a pass.
+enum class Outcome { pass, fail, warn, inconclusive, skip, error, flaky };
 
 const char* outcome_name(Outcome outcome);
 
-// The worse of two outcomes: error > fail > skip > inconclusive > warn > pass. A case with any
-// skipped check is at best skip (its GPU half did not run: not a pass); any failure makes it fail.
+// The outcome named `name` ("pass", ..., "flaky"), or std::nullopt.
+std::optional<Outcome> outcome_from_name(const std::string& name);
+
+// The worse of two outcomes: error > fail > flaky > skip > inconclusive > warn > pass. A case with
+// any skipped check is at best skip (its GPU half did not run: not a pass); any failure makes it fail.
 Outcome worse(Outcome a, Outcome b);
 
 struct Check {
@@ -70,6 +76,15 @@ struct CaseResult {
   // null for cases that are not terrains.
   nlohmann::json descriptors;
   std::string error;          // set when status == error
+  double seconds = 0.0;       // wall time of the whole case (twins, checks, pictures); balances shards
+  // When the case was run again (--retries): the attempts before the last, whose results these are.
+  struct Attempt {
+    Outcome status = Outcome::fail;
+    std::string error;
+    std::vector<std::string> failing_checks;  // "check = value (bound)"
+  };
+  std::vector<Attempt> earlier_attempts;
+  std::string known_flake;    // a flaky case's reason from the flake list (an expectation `flaky`)
 };
 
 struct Environment {
@@ -79,9 +94,18 @@ struct Environment {
   std::string cpu;
   std::string compiler;
   std::string build_type;
-  std::string git;
+  std::string git;            // `git describe --always --dirty` of the source tree at run time
   std::string mutant;         // the deliberate bug this run was made with (compare/mutants/), or empty
   std::optional<double> calibration_ms;  // compare/calibration.hpp: timings are compared as ratios to it
+  // Provenance (compare/provenance.hpp): what exactly ran, so that two reports can be told apart.
+  std::string run_started;       // UTC, ISO 8601, e.g. "2026-12-02T04:13:46Z"
+  std::string command_line;      // the words of the command, shell-quoted where needed
+  std::string git_revision;      // the source tree's commit at run time (shaders are read from it), or why unknown
+  bool git_dirty = false;        // the source tree had uncommitted changes to tracked files
+  std::string git_at_configure;  // `git describe` when the build was configured: what the binary was built from
+  std::string build_flags;       // the C++ compiler flags of this build type
+  std::map<std::string, std::string> shaders;  // shader stage compiled (path, defines) -> SHA-256 of its expanded source
+  std::map<std::string, std::string> data;     // data file read -> SHA-256
 };
 
 struct BenchmarkRow {
@@ -132,6 +156,15 @@ struct MutationReport {
   bool passed() const;                // every mutant killed and every baseline clean
 };
 
+// A shard of a run (--shard K/N, compare/shards.hpp): every shard records the whole selection, so
+// that `groundtruth merge` can tell a missing or overlapping shard from a complete set.
+struct ShardInfo {
+  int index = 1;                       // K, 1-based
+  int count = 1;                       // N
+  std::vector<std::string> selection;  // every case name selected before sharding, in run order
+  std::string balanced_by;             // the baseline whose case times balanced the shards, or empty
+};
+
 struct Report {
   Environment environment;
   std::vector<CaseResult> cases;
@@ -142,13 +175,18 @@ struct Report {
   std::optional<MutationReport> mutation;  // when the run included the mutants (groundtruth report)
   std::string baseline_file;               // --baseline, and what changed against it
   std::optional<ReportDiff> baseline_diff;
+  std::optional<ShardInfo> shard;          // --shard K/N: which part of the selection this report holds
 };
 
 // Outcome of a whole case from its checks (and the expectation list).
 Outcome case_outcome(const CaseResult& result);
 
-// Whether the run as a whole failed: a case errored, a check failed that the expectation list
-// does not name with that outcome, or a rule of the expectation list was broken.
+// Whether a case failed in a way nobody expected: it errored, a check failed that the expectation
+// list does not name with that outcome, or it was flaky and is not on the flake list.
+bool failed_unexpectedly(const CaseResult& result);
+
+// Whether the run as a whole failed: a case failed unexpectedly, or a rule of the expectation
+// list was broken.
 bool run_failed(const Report& report);
 
 }  // namespace gt

@@ -259,7 +259,7 @@ TEST_F(ReportFiles, JsonFollowsSchema1) {
   EXPECT_EQ(report["benchmarks"][0]["detail"], "");
   EXPECT_NE(report["benchmarks"][3]["note"].get<std::string>().find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos);
   EXPECT_EQ(report["summary"], json({{"pass", 1}, {"fail", 3}, {"warn", 1}, {"inconclusive", 0}, {"skip", 1},
-                                     {"error", 1}, {"failed", true}}));
+                                     {"flaky", 0}, {"error", 1}, {"failed", true}}));
 }
 
 TEST_F(ReportFiles, JunitCountsAndEscapes) {

@@ -11,6 +11,10 @@
 //   diff-image A B [--json] [--out diff.png] [--tolerance T]
 //                                      image differences, a heat map and a verdict mask
 //   diff-reports BASE NEW [--json]     what changed between two report.json files (exit 1: a regression)
+//   merge SHARD_DIR... --out DIR       one report from the folders of a sharded run (--shard K/N)
+//   history REPORT... --out DIR        checks and timings over a series of reports, as plots
+// run/report/bench also take -j N, --case-timeout S, --retries N, --expectations FILE, --flakes FILE,
+// --shard K/N|auto and --baseline FILE.
 //   stats DEM [--json] [--out DIR] [--cell-size] [--stream-threshold]
 //                                      terrain descriptors: hypsometry, slope, curvature, drainage, spectrum
 //   render INPUT --out out.png [--backend cpu|gpu] [--width --height --azimuth --elevation --fov
@@ -40,7 +44,10 @@
 #include "compare/cli/stats.hpp"
 #include "compare/driver.hpp"
 #include "compare/mutants/mutants.hpp"
+#include "compare/provenance.hpp"
 #include "compare/report_diff.hpp"
+#include "compare/report_history.hpp"
+#include "compare/shards.hpp"
 #include "core/errors.hpp"
 
 namespace {
@@ -48,6 +55,15 @@ namespace {
 using gt::Backends;
 
 constexpr int exit_bad_input = 2;
+
+// A number that is finite as well as in range: CLI11's range validators let "nan" through.
+const CLI::Validator finite_number(
+    [](std::string& text) -> std::string {
+      double value = 0.0;
+      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value)) return "'" + text + "' is not a finite number";
+      return {};
+    },
+    "FINITE");
 
 struct Shared {
   std::string gl = "egl";
@@ -58,6 +74,13 @@ struct Shared {
   bool require_gpu = false;
   bool quiet = false;
   std::string baseline;
+  int parallel = 1;
+  double case_timeout = 0.0;
+  int retries = 0;
+  std::vector<std::string> expectations;
+  std::vector<std::string> flakes;
+  std::string shard;
+  bool worker = false;
 };
 
 void add_shared_options(CLI::App& command, Shared& shared, const std::string& default_out) {
@@ -72,6 +95,25 @@ void add_shared_options(CLI::App& command, Shared& shared, const std::string& de
                      "a previous report.json: what changed (diff-reports) is printed at the end and heads index.html");
   command.add_flag("--require-gpu", shared.require_gpu,
                    "a missing GL context or a skipped GPU half makes the case `error` (exit 1) instead of `skip`");
+  command.add_option("-j,--jobs", shared.parallel,
+                     "run the cases in this many worker processes at once (each its own GL context; a crash or hang "
+                     "ends only its case)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  command.add_option("--case-timeout", shared.case_timeout,
+                     "seconds a case may take before its worker is killed and it ends as error (runs cases in workers; "
+                     "with -j alone the limit is 3600)")
+      ->check(finite_number & CLI::Range(1.0, 604800.0));
+  command.add_option("--retries", shared.retries, "run a failing case again up to this often; one that then passes is flaky")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+  command.add_option("--expectations", shared.expectations,
+                     "known outcomes of your own cases (the format of datasets/expectations.txt; repeatable)");
+  command.add_option("--flakes", shared.flakes, "a flake list: expectation lines whose outcome is `flaky` (repeatable)");
+  command.add_option("--shard", shared.shard,
+                     "run the K-th of N parts of the cases, K/N (1-based), or auto from SLURM_ARRAY_TASK_ID, "
+                     "CI_NODE_INDEX or JOB_COMPLETION_INDEX; join the parts with `groundtruth merge`");
+  command.add_flag("--worker", shared.worker, "(internal) a worker process of a parent run")->group("");
   command.add_option("--cpu-reps", shared.cpu_reps, "timed repetitions of the CPU reference")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
@@ -80,7 +122,7 @@ void add_shared_options(CLI::App& command, Shared& shared, const std::string& de
       ->capture_default_str();
 }
 
-gt::DriverOptions driver_options(const Shared& shared) {
+gt::DriverOptions driver_options(const Shared& shared, const std::string& command_line, double memory_limit_mib) {
   gt::DriverOptions options;
   options.gl = gt::parse_gl_backend(shared.gl);
   options.backends = shared.backend == "cpu" ? Backends::cpu : shared.backend == "gpu" ? Backends::gpu : Backends::both;
@@ -91,6 +133,15 @@ gt::DriverOptions driver_options(const Shared& shared) {
   options.gpu_reps = shared.gpu_reps;
   options.require_gpu = shared.require_gpu;
   options.quiet = shared.quiet;
+  options.parallel = shared.parallel;
+  if (shared.case_timeout > 0.0) options.case_timeout = shared.case_timeout;
+  options.retries = shared.retries;
+  options.expectation_files.assign(shared.expectations.begin(), shared.expectations.end());
+  options.flake_files.assign(shared.flakes.begin(), shared.flakes.end());
+  options.shard = shared.shard;
+  options.worker = shared.worker;
+  options.command_line = command_line;
+  options.memory_limit_mib = memory_limit_mib;
   if (options.require_gpu && options.backends == Backends::cpu) {
     throw gt::InputError("--require-gpu and --backend cpu contradict each other: choose one");
   }
@@ -117,14 +168,6 @@ void parse_grid_size(const std::string& text, gt::AdHocCase& ad_hoc) {
   ad_hoc.height = *height;
 }
 
-// A number that is finite as well as in range: CLI11's range validators let "nan" through.
-const CLI::Validator finite_number(
-    [](std::string& text) -> std::string {
-      double value = 0.0;
-      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value)) return "'" + text + "' is not a finite number";
-      return {};
-    },
-    "FINITE");
 
 nlohmann::json list_json() {
   nlohmann::json out = {{"algorithms", nlohmann::json::array()}, {"cases", nlohmann::json::array()}};
@@ -253,6 +296,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"egl", "osmesa"}))
       ->capture_default_str();
   mutants->add_flag("--require-gpu", mutation_options.require_gpu, "a run without a GL context is an error");
+  mutants->add_option("-j,--jobs", mutation_options.parallel, "worker runs at once")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
   mutants->add_option("--timeout", mutant_timeout, "seconds a mutant's run may take")
       ->check(CLI::Range(1.0, 86400.0))
       ->capture_default_str();
@@ -322,6 +368,19 @@ int main(int argc, char** argv) {
   diff_reports->add_option("new", next_report, "the new run's report.json")->required();
   diff_reports->add_flag("--json", diff_as_json, "machine-readable");
 
+  gt::MergeOptions merge_options;
+  auto* merge = app.add_subcommand("merge", "join the report folders of a sharded run (--shard K/N) into one report");
+  merge->add_option("shards", merge_options.shards, "the shards' report folders, every one of them")->required();
+  merge->add_option("--out", merge_options.out, "the merged report folder")->required();
+  merge->add_flag("--quiet", merge_options.quiet, "no summary line");
+
+  gt::HistoryOptions history_options;
+  auto* history = app.add_subcommand("history", "each case's checks and timings over a series of reports, as an HTML "
+                                                "page: where did a drift start?");
+  history->add_option("reports", history_options.inputs, "report.json files, report folders, or a folder of them")
+      ->required();
+  history->add_option("--out", history_options.out, "the history page's folder")->required();
+
   std::filesystem::path stats_file;
   gt::StatsOptions stats_options;
   auto* stats = app.add_subcommand("stats", "does it look like Earth? terrain descriptors of a DEM (hypsometry, "
@@ -347,12 +406,15 @@ int main(int argc, char** argv) {
     return status == 0 ? 0 : exit_bad_input;
   }
   gt::set_memory_limit(memory_limit_mib * 1024.0 * 1024.0);
+  const std::string command_line = gt::command_line_of(argc, argv);
 
   try {
     if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);
     if (diff_image->parsed()) return gt::diff_image_command(diff_options);
     if (render->parsed()) return gt::render_command(render_options);
     if (stats->parsed()) return gt::stats_command(stats_file, stats_options);
+    if (merge->parsed()) return gt::merge_shards(merge_options, command_line);
+    if (history->parsed()) return gt::history_command(history_options);
     if (diff_reports->parsed()) {
       const auto diff = gt::diff_reports(gt::read_report_json(base_report), gt::read_report_json(next_report));
       fmt::print("{}", diff_as_json ? gt::to_json(diff).dump(2) + "\n" : gt::describe(diff));
@@ -371,7 +433,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (run->parsed()) {
-      auto options = driver_options(run_shared);
+      auto options = driver_options(run_shared, command_line, memory_limit_mib);
       options.patterns = patterns;
       options.mutant = mutant;
       options.extra_cases.assign(extra_cases.begin(), extra_cases.end());
@@ -389,15 +451,21 @@ int main(int argc, char** argv) {
       return gt::run_driver(options);
     }
     if (report->parsed()) {
-      auto options = driver_options(report_shared);
+      auto options = driver_options(report_shared, command_line, memory_limit_mib);
       options.patterns = {"*"};
+      if (!options.shard.empty() && !(skip_benchmark && skip_mutants)) {
+        fmt::print(stderr, "groundtruth: a shard holds cases only; run the benchmarks (`groundtruth bench`) and the "
+                           "mutants (`groundtruth mutants`) once, unsharded\n");
+        skip_benchmark = skip_mutants = true;
+      }
       if (!skip_benchmark) options.benchmark = gt::BenchmarkOptions{.quiet = report_shared.quiet};
       if (!skip_mutants) {
-        options.mutation = gt::MutationOptions{.gl = report_shared.gl, .require_gpu = report_shared.require_gpu};
+        options.mutation = gt::MutationOptions{
+            .gl = report_shared.gl, .require_gpu = report_shared.require_gpu, .parallel = report_shared.parallel};
       }
       return gt::run_driver(options);
     }
-    auto options = driver_options(bench_shared);
+    auto options = driver_options(bench_shared, command_line, memory_limit_mib);
     bench_options.quiet = bench_shared.quiet;
     options.benchmark = bench_options;
     return gt::run_driver(options);

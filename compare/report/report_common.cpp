@@ -38,15 +38,36 @@ int OutcomeCounts::total() const {
   return sum;
 }
 
-std::array<LabelledField, 8> environment_fields(const Environment& environment) {
+std::array<LabelledField, 13> environment_fields(const Environment& environment) {
   return {{{"GL renderer", &environment.gl_renderer},
            {"GL version", &environment.gl_version},
            {"GL platform", &environment.gl_platform},
            {"CPU", &environment.cpu},
            {"compiler", &environment.compiler},
            {"build type", &environment.build_type},
+           {"build flags", &environment.build_flags},
            {"git", &environment.git},
+           {"git revision", &environment.git_revision},
+           {"configured from", &environment.git_at_configure},
+           {"run started", &environment.run_started},
+           {"command line", &environment.command_line},
            {"mutant", &environment.mutant}}};
+}
+
+std::vector<std::string> attempt_lines(const CaseResult& result) {
+  std::vector<std::string> lines;
+  for (std::size_t index = 0; index < result.earlier_attempts.size(); ++index) {
+    const auto& attempt = result.earlier_attempts[index];
+    std::string line = fmt::format("attempt {}: {}", index + 1, outcome_name(attempt.status));
+    if (!attempt.error.empty()) line += ": " + attempt.error;
+    for (const auto& check : attempt.failing_checks) line += "; " + check;
+    lines.push_back(line);
+  }
+  if (result.status == Outcome::flaky) {
+    lines.push_back(result.known_flake.empty() ? "a new flake: not on the flake list (fix it, or list it with a reason)"
+                                               : "known flake: " + result.known_flake);
+  }
+  return lines;
 }
 
 OutcomeCounts count_case_outcomes(const Report& report) {

@@ -23,11 +23,16 @@ struct LabelledField {
   const char* label;
   const std::string* value;
 };
-std::array<LabelledField, 8> environment_fields(const Environment& environment);
+std::array<LabelledField, 13> environment_fields(const Environment& environment);
+
+// A retried case's earlier attempts, one line each: "attempt 1: fail: check = value (bound)", and
+// for a flaky case what it was ("known flake: REASON" or that it is a new flake).
+std::vector<std::string> attempt_lines(const CaseResult& result);
 
 // Every outcome in the order the writers list them.
-inline constexpr std::array<Outcome, 6> all_outcomes = {Outcome::pass, Outcome::warn, Outcome::inconclusive,
-                                                        Outcome::skip, Outcome::fail, Outcome::error};
+inline constexpr std::array<Outcome, 7> all_outcomes = {Outcome::pass, Outcome::warn,  Outcome::inconclusive,
+                                                        Outcome::skip, Outcome::flaky, Outcome::fail,
+                                                        Outcome::error};
 
 struct OutcomeCounts {
   std::array<int, all_outcomes.size()> by_outcome{};  // indexed like all_outcomes

@@ -12,6 +12,7 @@
 // timings; then the Performance section with the benchmark table and the report-level plots.
 // Every piece of text goes through escape_markup.
 #include <algorithm>
+#include <map>
 #include <vector>
 
 #include <fmt/format.h>
@@ -38,7 +39,8 @@ table.environment th { width: 9em; }
 .badge { display: inline-block; min-width: 3em; text-align: center; padding: .05em .6em; border-radius: .8em;
          color: #fff; font-weight: 600; font-size: .9em; }
 .badge.pass { background: #2e7d32; } .badge.fail { background: #c62828; } .badge.warn { background: #f9a825; color: #222; }
-.badge.skip { background: #757575; } .badge.inconclusive { background: #0277bd; } .badge.error { background: #6a1b9a; } .badge.zero { opacity: .35; }
+.badge.skip { background: #757575; } .badge.inconclusive { background: #0277bd; } .badge.error { background: #6a1b9a; }
+.badge.flaky { background: #ef6c00; } .badge.zero { opacity: .35; }
 .summary .badge { font-size: 1.05em; margin-right: .4em; }
 section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
 .note { color: #555; font-style: italic; }
@@ -62,7 +64,7 @@ dl.params dt { color: #555; } dl.params dd { margin: 0; font-variant-numeric: ta
 .metrics { display: grid; grid-template-columns: repeat(auto-fill, minmax(190px, 1fr)); gap: .5em; margin-top: .7em; }
 .metric { background: #f6f6f6; border-left: 4px solid #2e7d32; padding: .3em .6em; }
 .metric.fail { border-color: #c62828; background: #fbeaea; } .metric.warn { border-color: #f9a825; }
-.metric.error { border-color: #6a1b9a; } .metric.skip { border-color: #757575; } .metric.inconclusive { border-color: #0277bd; }
+.metric.error { border-color: #6a1b9a; } .metric.skip { border-color: #757575; } .metric.inconclusive { border-color: #0277bd; } .metric.flaky { border-color: #ef6c00; }
 .metric .label { font-size: .82em; color: #555; }
 .metric .value { font-size: 1.15em; font-weight: 600; font-variant-numeric: tabular-nums; }
 .metric .bound { font-size: .8em; color: #555; }
@@ -97,6 +99,13 @@ std::string anchor_of(const std::string& case_name) {
 
 std::string anchor(const CaseResult& result) { return anchor_of(result.name); }
 
+void append_digests(std::string& out, const std::string& title, const std::map<std::string, std::string>& digests) {
+  if (digests.empty()) return;
+  out += fmt::format("<details><summary>{} {}</summary>\n<table class=\"digests\">\n", digests.size(), h(title));
+  for (const auto& [name, digest] : digests) out += fmt::format("<tr><td>{}</td><td><code>{}</code></td></tr>\n", h(name), digest);
+  out += "</table>\n</details>\n";
+}
+
 void append_header(std::string& out, const Report& report) {
   const Environment& environment = report.environment;
   out += fmt::format("<header>\n<h1>groundtruth report</h1>\n<div class=\"renderer\">GL renderer: {}</div>\n",
@@ -105,7 +114,10 @@ void append_header(std::string& out, const Report& report) {
   for (const auto& [label, value] : environment_fields(environment)) {
     out += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", label, h(*value));
   }
-  out += "</table>\n<p>Also as <a href=\"report.json\">report.json</a>, <a href=\"report.md\">report.md</a>, "
+  out += "</table>\n";
+  append_digests(out, "shader stages compiled (SHA-256 after #include expansion)", environment.shaders);
+  append_digests(out, "data files read (SHA-256)", environment.data);
+  out += "<p>Also as <a href=\"report.json\">report.json</a>, <a href=\"report.md\">report.md</a>, "
          "<a href=\"junit.xml\">junit.xml</a>.</p>\n</header>\n";
 }
 
@@ -299,6 +311,7 @@ void append_case_section(std::string& out, const CaseResult& result) {
     out += fmt::format("<p class=\"note\">Expected failure: {}</p>\n", h(result.expected_failure));
   }
   if (!result.error.empty()) out += fmt::format("<pre class=\"error\">{}</pre>\n", h(result.error));
+  for (const auto& line : attempt_lines(result)) out += fmt::format("<p class=\"note\">{}</p>\n", h(line));
   std::vector<const Artifact*> shown;
   if (const auto comparison = image_comparison(result)) {
     append_comparison(out, *comparison);

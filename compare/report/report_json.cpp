@@ -1,7 +1,8 @@
 // report.json, schema 1 of DESIGN.md.
 //
-// Optional fields (threshold, loose_threshold, detail, cpu_ms, gpu_ms, expected_failure, error)
-// are left out when absent or empty. Non-finite numbers become null so the file stays valid
+// Optional fields (threshold, loose_threshold, detail, cpu_ms, gpu_ms, expected_failure, error,
+// earlier_attempts, known_flake, shard) are left out when absent or empty. compare/report/
+// report_read.hpp reads the file back into a Report (workers, merge). Non-finite numbers become null so the file stays valid
 // JSON; a check keeps its status, and its value's spelling ("nan", "inf", "-inf") is added as
 // "value_text". Strings that are not valid UTF-8 are written with U+FFFD replacements.
 #include <cmath>
@@ -25,6 +26,14 @@ json environment_to_json(const Environment& environment) {
               {"compiler", environment.compiler},       {"build_type", environment.build_type},
               {"git", environment.git},                 {"mutant", environment.mutant}};
   if (environment.calibration_ms) out["calibration_ms"] = number_or_null(*environment.calibration_ms);
+  out["run_started"] = environment.run_started;
+  out["command_line"] = environment.command_line;
+  out["git_revision"] = environment.git_revision;
+  out["git_dirty"] = environment.git_dirty;
+  out["git_at_configure"] = environment.git_at_configure;
+  out["build_flags"] = environment.build_flags;
+  out["shaders"] = environment.shaders;
+  out["data"] = environment.data;
   return out;
 }
 
@@ -51,6 +60,15 @@ json timings_to_json(const Timings& timings) {
   return out;
 }
 
+json attempts_to_json(const std::vector<CaseResult::Attempt>& attempts) {
+  json out = json::array();
+  for (const auto& attempt : attempts) {
+    out.push_back({{"status", outcome_name(attempt.status)}, {"error", attempt.error},
+                   {"failing_checks", attempt.failing_checks}});
+  }
+  return out;
+}
+
 json case_to_json(const CaseResult& result) {
   json out = {{"name", result.name},     {"algorithm", result.algorithm}, {"input", result.input},
               {"width", result.width},   {"height", result.height},
@@ -62,9 +80,16 @@ json case_to_json(const CaseResult& result) {
   for (const Check& check : result.checks) out["checks"].push_back(check_to_json(check));
   out["timings"] = timings_to_json(result.timings);
   out["artifacts"] = json::array();
-  for (const Artifact& artifact : result.artifacts) out["artifacts"].push_back(artifact.path);
+  out["artifact_details"] = json::array();
+  for (const Artifact& artifact : result.artifacts) {
+    out["artifacts"].push_back(artifact.path);
+    out["artifact_details"].push_back({{"kind", artifact.kind}, {"caption", artifact.caption}});
+  }
   if (!result.descriptors.is_null()) out["descriptors"] = result.descriptors;
   if (!result.error.empty()) out["error"] = result.error;
+  out["seconds"] = number_or_null(result.seconds);
+  if (!result.earlier_attempts.empty()) out["earlier_attempts"] = attempts_to_json(result.earlier_attempts);
+  if (!result.known_flake.empty()) out["known_flake"] = result.known_flake;
   return out;
 }
 
@@ -112,6 +137,10 @@ json report_to_json(const Report& report) {
   out["expectation_problems"] = report.expectation_problems;
   if (report.mutation) out["mutation"] = mutation_to_json(*report.mutation);
   if (report.baseline_diff) out["baseline"] = {{"file", report.baseline_file}, {"diff", to_json(*report.baseline_diff)}};
+  if (report.shard) {
+    out["shard"] = {{"index", report.shard->index}, {"count", report.shard->count},
+                    {"selection", report.shard->selection}, {"balanced_by", report.shard->balanced_by}};
+  }
   return out;
 }
 

@@ -24,13 +24,15 @@ using namespace report_detail;
 
 enum class Verdict { pass, failure, error, skipped };
 
-// A case whose failing checks datasets/expectations.txt all names passes as a known failure; a
-// case that could not run is an error; one that skipped a check or could not tell is skipped.
+// A case whose failing checks datasets/expectations.txt all names passes as a known failure, and
+// so does a flaky case on the flake list (a new flake is a failure); a case that could not run is
+// an error; one that skipped a check or could not tell is skipped.
 Verdict verdict(const CaseResult& result) {
   switch (result.status) {
     case Outcome::pass:
     case Outcome::warn: return Verdict::pass;
     case Outcome::fail: return result.expected_failure.empty() ? Verdict::failure : Verdict::pass;
+    case Outcome::flaky: return result.known_flake.empty() ? Verdict::failure : Verdict::pass;
     case Outcome::error: return Verdict::error;
     case Outcome::inconclusive:
     case Outcome::skip: return Verdict::skipped;
@@ -65,6 +67,9 @@ std::string skip_reason(const CaseResult& result) {
 }
 
 std::string failure_message(const CaseResult& result) {
+  if (result.status == Outcome::flaky) {
+    return fmt::format("flaky: failed, then passed on attempt {} (not on the flake list)", result.earlier_attempts.size() + 1);
+  }
   const int failed = count_check_outcomes(result)[Outcome::fail];
   return fmt::format("{} of {} checks failed", failed, result.checks.size());
 }
@@ -81,6 +86,7 @@ std::string system_out(const CaseResult& result) {
   if (!result.expected_failure.empty()) {
     text += fmt::format("expected failure ({}): {}\n", outcome_name(result.status), result.expected_failure);
   }
+  for (const auto& line : attempt_lines(result)) text += line + "\n";
   text += check_lines(result, [](Outcome status) { return status == Outcome::warn; });
   return text;
 }

@@ -60,6 +60,7 @@ void append_case_table(std::string& out, const Report& report) {
 
 bool has_details(const CaseResult& result) {
   if (!result.error.empty() || !result.expected_failure.empty() || !result.notes.empty()) return true;
+  if (!result.earlier_attempts.empty()) return true;
   for (const Check& check : result.checks) {
     if (check.status != Outcome::pass) return true;
   }
@@ -70,6 +71,8 @@ void append_case_details(std::string& out, const CaseResult& result) {
   out += fmt::format("### {} — {}\n\n", result.name, outcome_name(result.status));
   if (!result.expected_failure.empty()) out += fmt::format("Expected failure: {}\n\n", cell(result.expected_failure));
   if (!result.error.empty()) out += fmt::format("Error: {}\n\n", cell(result.error));
+  for (const auto& line : attempt_lines(result)) out += fmt::format("- {}\n", cell(line));
+  if (!result.earlier_attempts.empty()) out += '\n';
   for (const auto& note : result.notes) out += fmt::format("- input: {}\n", cell(note));
   if (!result.notes.empty()) out += '\n';
   bool header_written = false;
