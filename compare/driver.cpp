@@ -445,7 +445,8 @@ int run_driver(const DriverOptions& options) {
   Report report;
   const auto specs = shard_specs(selection, options, baseline, report);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
-  const auto expectations = all_expectations(options, suite);
+  // A worker's parent applies the expectations and makes the retries.
+  const auto expectations = options.worker ? std::vector<Expectation>{} : all_expectations(options, suite);
   check_output_folder(options.out);
 
   report.environment = base_environment();
