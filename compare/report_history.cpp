@@ -97,8 +97,9 @@ HistoryRevision revision_of(const Environment& environment, const std::filesyste
   revision.time_from_file = environment.run_started.empty();
   revision.time = revision.time_from_file ? modification_time(file) : parse_utc(environment.run_started, file);
   const bool git_known = !environment.git.empty() && !environment.git.starts_with("unknown");
-  revision.label = fmt::format("{} {:%Y-%m-%d %H:%M}", git_known ? environment.git : "unknown",
-                               fmt::gmtime(std::chrono::system_clock::to_time_t(revision.time)));
+  revision.label = fmt::format("{} {:%Y-%m-%d %H:%M}{}", git_known ? environment.git : "unknown",
+                               fmt::gmtime(std::chrono::system_clock::to_time_t(revision.time)),
+                               environment.mutant.empty() ? "" : " mutant " + environment.mutant);
   return revision;
 }
 
@@ -360,16 +361,20 @@ struct SummaryRow {
   const HistoryDrift* drift;
 };
 
-std::vector<SummaryRow> summary_rows(const History& history) {
+// The drifted series of one kind (outcomes and values, or timings), earliest first.
+std::vector<SummaryRow> summary_rows(const History& history, bool timings) {
   std::vector<SummaryRow> rows;
   for (std::size_t index = 0; index < history.cases.size(); ++index) {
     const CaseHistory& series = history.cases[index];
+    if (timings) {
+      for (const TimingHistory& timing : series.timings) {
+        if (timing.drift) rows.push_back({index, "timings." + timing.key, &*timing.drift});
+      }
+      continue;
+    }
     if (series.status_drift) rows.push_back({index, "case status", &*series.status_drift});
     for (const CheckHistory& check : series.checks) {
       if (check.drift) rows.push_back({index, check.name, &*check.drift});
-    }
-    for (const TimingHistory& timing : series.timings) {
-      if (timing.drift) rows.push_back({index, "timings." + timing.key, &*timing.drift});
     }
   }
   std::stable_sort(rows.begin(), rows.end(), [](const SummaryRow& a, const SummaryRow& b) {
@@ -378,13 +383,7 @@ std::vector<SummaryRow> summary_rows(const History& history) {
   return rows;
 }
 
-void append_summary(std::string& out, const History& history) {
-  out += "<h2>First drifts</h2>\n";
-  const auto rows = summary_rows(history);
-  if (rows.empty()) {
-    out += "<p>No drift: every series stays within its tolerance from revision to revision.</p>\n";
-    return;
-  }
+void append_drift_table(std::string& out, const History& history, const std::vector<SummaryRow>& rows) {
   out += "<table>\n<tr><th>case</th><th>series</th><th>first drift</th><th>from</th><th>to</th></tr>\n";
   for (const SummaryRow& row : rows) {
     out += fmt::format("<tr><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
@@ -393,6 +392,24 @@ void append_summary(std::string& out, const History& history) {
                        escape_markup(row.drift->from), escape_markup(row.drift->to));
   }
   out += "</table>\n";
+}
+
+// Outcomes and values first: timings on a shared machine move more often, and would bury them.
+void append_summary(std::string& out, const History& history) {
+  out += "<h2>First drifts of outcomes and values</h2>\n";
+  const auto checks = summary_rows(history, false);
+  if (checks.empty()) {
+    out += "<p>No drift: every outcome and value stays within its tolerance from revision to revision.</p>\n";
+  } else {
+    append_drift_table(out, history, checks);
+  }
+  out += "<h2>First drifts of timings</h2>\n";
+  const auto timings = summary_rows(history, true);
+  if (timings.empty()) {
+    out += "<p>No timing moved beyond the noise factor from revision to revision.</p>\n";
+  } else {
+    append_drift_table(out, history, timings);
+  }
 }
 
 // An outcome coloured by its kind, with `value` (when given) shown on hovering.
