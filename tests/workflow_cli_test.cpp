@@ -71,7 +71,8 @@ TEST(Workflow, ParallelAndShardedRunsGiveTheSerialChecks) {
   const auto parallel = run(with(with({"run"}, quick_cases), {"--out", "parallel", "-j", "2", "--quiet"}), work.path());
   ASSERT_EQ(parallel.status, 0) << parallel;
   expect_same_checks(report_of(work / "serial"), report_of(work / "parallel"), "-j 2 against -j 1");
-  for (const auto& entry : report_of(work / "parallel")["cases"]) {
+  const json parallel_report = report_of(work / "parallel");
+  for (const auto& entry : parallel_report["cases"]) {
     for (const auto& artifact : entry["artifacts"]) {
       EXPECT_TRUE(fs::exists(work / "parallel" / artifact.get<std::string>())) << artifact;
     }
