@@ -130,13 +130,13 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
-Environment base_environment() {
+// The machine, the build and the run's provenance (compare/provenance.hpp).
+Environment base_environment(const std::string& command_line) {
   Environment environment;
   environment.cpu = fmt::format("{} ({} logical cores)", cpu_model(), sysconf(_SC_NPROCESSORS_ONLN));
   environment.compiler = fmt::format("GCC {}", __VERSION__);
-  environment.build_type = GT_BUILD_TYPE;
-  environment.git = GT_GIT_DESCRIBE;
   environment.mutant = active_mutant();
+  add_run_provenance(environment, command_line);
   return environment;
 }
 
@@ -147,8 +147,8 @@ bool skipped_for_want_of_gpu(const CaseResult& result, const RunOptions& options
   });
 }
 
-CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context, bool require_gpu) {
-  const auto started = std::chrono::steady_clock::now();
+// What a case's result says before it runs: its name, algorithm, input and parameters.
+CaseResult case_header(const Job& job) {
   CaseResult result;
   result.name = job.spec.name;
   result.algorithm = job.spec.algorithm;
@@ -157,6 +157,12 @@ CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context
   result.width = job.input.heights.width;
   result.height = job.input.heights.height;
   result.params = job.resolved;
+  return result;
+}
+
+CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context, bool require_gpu) {
+  const auto started = std::chrono::steady_clock::now();
+  CaseResult result = case_header(job);
   try {
     const PreparedTwin& prepared = job.prepared;
     if (prepared.run) {
@@ -326,16 +332,7 @@ class CaseRunner {
     std::vector<CaseResult> results;
     if (isolated()) {
       std::vector<IsolatedCase> cases;
-      for (const Job* job : jobs) {
-        CaseResult known;
-        known.name = job->spec.name;
-        known.algorithm = job->spec.algorithm;
-        known.input = job->input.description;
-        known.width = job->input.heights.width;
-        known.height = job->input.heights.height;
-        known.params = job->resolved;
-        cases.push_back({job_selection(*job, options_), known});
-      }
+      for (const Job* job : jobs) cases.push_back({job_selection(*job, options_), case_header(*job)});
       results = run_isolated(cases, isolation_, folder_, report_.environment, progress);
     } else {
       run_options_.progress = &progress;
@@ -449,8 +446,7 @@ int run_driver(const DriverOptions& options) {
   const auto expectations = options.worker ? std::vector<Expectation>{} : all_expectations(options, suite);
   check_output_folder(options.out);
 
-  report.environment = base_environment();
-  add_run_provenance(report.environment, options.command_line);
+  report.environment = base_environment(options.command_line);
   if (!options.worker) report.environment.calibration_ms = calibration_ms();  // only runs that time cases need it
 
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
@@ -490,11 +486,12 @@ int run_driver(const DriverOptions& options) {
   return run_failed(report) || (report.mutation && !report.mutation->passed()) ? 1 : 0;
 }
 
-int run_mutants_command(const MutationOptions& options, const std::filesystem::path& out, bool as_json) {
+int run_mutants_command(const MutationOptions& options, const std::filesystem::path& out, bool as_json,
+                        const std::string& command_line) {
   select_mutants(options.patterns);  // bad patterns are refused before anything is written
   check_output_folder(out);
   Report report;  // no cases: the environment and the mutation, in the usual four files
-  report.environment = base_environment();
+  report.environment = base_environment(command_line);
   report.environment.gl_renderer = "each run's own (its report.json under runs/ or baseline/)";
   report.environment.gl_platform = "worker processes";
   write_folder_atomically(out, [&](const std::filesystem::path& folder) {

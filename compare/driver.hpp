@@ -57,7 +57,8 @@ struct DriverOptions {
 // `groundtruth mutants`: runs the mutation into `out` (atomically, like a report), writes
 // mutants.json there and prints the table (or the JSON); returns 0 when every mutant was killed
 // and every baseline was clean, else 1.
-int run_mutants_command(const MutationOptions& options, const std::filesystem::path& out, bool as_json);
+int run_mutants_command(const MutationOptions& options, const std::filesystem::path& out, bool as_json,
+                        const std::string& command_line);
 
 // Runs everything and writes the report; returns the process exit status (0 nothing unexpected
 // failed, 1 something did). Throws InputError for bad usage or input before writing anything.

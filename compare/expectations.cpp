@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/errors.hpp"
 
@@ -111,9 +112,7 @@ std::string known_flake_reason(const std::vector<Expectation>& expectations, con
       if (std::find(reasons.begin(), reasons.end(), entry->reason) == reasons.end()) reasons.push_back(entry->reason);
     }
   }
-  std::string joined;
-  for (const auto& reason : reasons) joined += (joined.empty() ? "" : "; ") + reason;
-  return joined;
+  return fmt::format("{}", fmt::join(reasons, "; "));
 }
 
 bool named_as_flaky(const std::vector<Expectation>& expectations, const std::string& case_name) {
@@ -159,10 +158,7 @@ std::vector<std::string> apply_expectations(const std::vector<Expectation>& expe
         unexpected = true;
       }
     }
-    result.expected_failure.clear();
-    if (!unexpected && !reasons.empty()) {
-      for (const auto& reason : reasons) result.expected_failure += (result.expected_failure.empty() ? "" : "; ") + reason;
-    }
+    result.expected_failure = unexpected ? "" : fmt::format("{}", fmt::join(reasons, "; "));
     result.known_flake = known_flake_reason(expectations, result);
   }
   return problems;

@@ -1,10 +1,6 @@
 // Cases in worker processes; see compare/isolated_cases.hpp.
 #include "compare/isolated_cases.hpp"
 
-#include <unistd.h>
-
-#include <algorithm>
-#include <cstdlib>
 #include <fstream>
 
 #include <fmt/format.h>

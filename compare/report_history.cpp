@@ -396,19 +396,16 @@ void append_drift_table(std::string& out, const History& history, const std::vec
 
 // Outcomes and values first: timings on a shared machine move more often, and would bury them.
 void append_summary(std::string& out, const History& history) {
-  out += "<h2>First drifts of outcomes and values</h2>\n";
-  const auto checks = summary_rows(history, false);
-  if (checks.empty()) {
-    out += "<p>No drift: every outcome and value stays within its tolerance from revision to revision.</p>\n";
-  } else {
-    append_drift_table(out, history, checks);
-  }
-  out += "<h2>First drifts of timings</h2>\n";
-  const auto timings = summary_rows(history, true);
-  if (timings.empty()) {
-    out += "<p>No timing moved beyond the noise factor from revision to revision.</p>\n";
-  } else {
-    append_drift_table(out, history, timings);
+  for (const bool timings : {false, true}) {
+    out += timings ? "<h2>First drifts of timings</h2>\n" : "<h2>First drifts of outcomes and values</h2>\n";
+    const auto rows = summary_rows(history, timings);
+    if (!rows.empty()) {
+      append_drift_table(out, history, rows);
+    } else if (timings) {
+      out += "<p>No timing moved beyond the noise factor from revision to revision.</p>\n";
+    } else {
+      out += "<p>No drift: every outcome and value stays within its tolerance from revision to revision.</p>\n";
+    }
   }
 }
 

@@ -267,29 +267,24 @@ munge_works() { munge -n | unmunge; }
 wait_for "$timeout" munged "$munge_pidfile" "munge -n | unmunge" munge_works
 
 # --- slurmctld, then slurmd
-if pid=$(pid_of slurmctld "$slurmctld_pidfile"); then
-  say "slurmctld already running (pid $pid)"
-else
-  slurmctld || {
+# start_slurm_daemon NAME PIDFILE: starts the daemon unless it runs, and records that we started it.
+start_slurm_daemon() {
+  local name=$1 pidfile=$2 pid
+  if pid=$(pid_of "$name" "$pidfile"); then
+    say "$name already running (pid $pid)"
+    return
+  fi
+  "$name" || {
     show_logs
-    die "slurmctld did not start"
+    die "$name did not start"
   }
-  touch "$state_dir/slurmctld"
-  say "started slurmctld"
-fi
+  touch "$state_dir/$name"
+  say "started $name"
+}
+start_slurm_daemon slurmctld "$slurmctld_pidfile"
 controller_up() { scontrol ping | grep -q 'is UP'; }
 wait_for "$timeout" slurmctld "$slurmctld_pidfile" "scontrol ping" controller_up
-
-if pid=$(pid_of slurmd "$slurmd_pidfile"); then
-  say "slurmd already running (pid $pid)"
-else
-  slurmd || {
-    show_logs
-    die "slurmd did not start"
-  }
-  touch "$state_dir/slurmd"
-  say "started slurmd"
-fi
+start_slurm_daemon slurmd "$slurmd_pidfile"
 
 # --- the node
 waited=0

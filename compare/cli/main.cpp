@@ -426,7 +426,7 @@ int main(int argc, char** argv) {
         return 0;
       }
       mutation_options.timeout_seconds = mutant_timeout;
-      return gt::run_mutants_command(mutation_options, mutants_out, mutants_as_json);
+      return gt::run_mutants_command(mutation_options, mutants_out, mutants_as_json, command_line);
     }
     if (list->parsed()) {
       print_list(list_as_json);
