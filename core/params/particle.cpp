@@ -1,0 +1,104 @@
+#include "core/params/particle.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+
+const char* droplet_ordering_name(DropletOrdering ordering) {
+  switch (ordering) {
+    case DropletOrdering::race: return "race";
+    case DropletOrdering::disjoint: return "disjoint";
+    case DropletOrdering::batch: return "batch";
+  }
+  return "?";
+}
+
+int droplet_reach(int lifetime) { return lifetime + 2; }
+
+double batch_quantum(double max_abs_height) {
+  const double magnitude = std::max(1.0, max_abs_height);
+  return std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(magnitude))) - 24);
+}
+
+// Ranges: the upstream UI ranges of §4.4.1 (add-on 1a1a8c9) where it has them, widened where the
+// thesis allows more; "must be positive" (§4.4.1) is a lower bound of 1e-6.
+const ParamSpecs& particle_param_specs() {
+  static const ParamSpecs specs = {
+      {"iterations", ParamKind::integer, 10, 0, 1000, {}, "count",
+       "outer iterations of Algorithm 7 (part_iter_num): each releases one droplet per texel in spacing² passes"},
+      {"lifetime", ParamKind::integer, 50, 1, 500, {}, "steps", "steps of one droplet (part_lifetime)"},
+      {"spacing", ParamKind::integer, 4, 1, 1024, {}, "texel",
+       "subdiv: one droplet per spacing x spacing block and pass; disjoint needs spacing > 2·(lifetime + 2)"},
+      {"acceleration", ParamKind::real, 0.5, 0.01, 4.0, {}, "1", "a of Algorithm 4 (part_acceleration)"},
+      {"erosion_strength", ParamKind::real, 0.25, 1e-6, 2.0, {}, "1",
+       "bite (part_fineness); the thesis warns that 0.5 and more oscillates"},
+      {"deposition_strength", ParamKind::real, 0.25, 1e-6, 1.0, {}, "1",
+       "release (part_deposition x 0.5); the thesis warns that 0.5 and more oscillates"},
+      {"max_velocity", ParamKind::real, 2.0, 1e-3, 100.0, {}, "texel/step", "v_max: the speed is clamped to it"},
+      {"drag", ParamKind::real, 0.2, 0.0, 0.99, {}, "1",
+       "share of the velocity lost per step (part_drag); the kernel multiplies by 1 - drag"},
+      {"capacity_factor", ParamKind::real, 0.01, 1e-6, 1.0, {}, "height/(texel/step)",
+       "f_c: capacity = f_c·|v| (part_capacity x 1e-2)"},
+      {"max_jump", ParamKind::real, 0.1, 1e-6, 1e6, {}, "height",
+       "drop_max: no acceleration towards a neighbour more than this lower (part_maxjump)"},
+      {"interpolate", ParamKind::boolean, true, 0, 0, {}, "",
+       "erosion spread bilinearly over the 4 nearest texel centres (Algorithm 6); off: at the droplet's texel"},
+      {"ordering", ParamKind::choice, "batch", 0, 0, {"race", "disjoint", "batch"}, "",
+       "droplets of one pass: race (Hydra's dispatch; compared statistically), disjoint (spacing keeps them "
+       "apart; exact), batch (frozen heights and a fixed-point delta; bit-exact at any spacing)"},
+      {"normalised", ParamKind::boolean, true, 0, 0, {}, "",
+       "seed 000's heights (h - min)/(max - min) in [0, 1], in which drop_max and f_c are given; off: the "
+       "input's heights as they are"},
+  };
+  return specs;
+}
+
+ParticleConstants particle_constants(const nlohmann::json& resolved, const Heightmap& heights) {
+  ParticleConstants constants;
+  constants.iterations = resolved.at("iterations").get<int>();
+  constants.lifetime = resolved.at("lifetime").get<int>();
+  constants.spacing = resolved.at("spacing").get<int>();
+  constants.acceleration = resolved.at("acceleration").get<double>();
+  constants.bite = resolved.at("erosion_strength").get<double>();
+  constants.release = resolved.at("deposition_strength").get<double>();
+  constants.max_velocity = resolved.at("max_velocity").get<double>();
+  constants.drag = 1.0 - resolved.at("drag").get<double>();
+  constants.capacity_factor = resolved.at("capacity_factor").get<double>();
+  constants.max_jump = resolved.at("max_jump").get<double>();
+  constants.interpolate = resolved.at("interpolate").get<bool>();
+  const auto ordering = resolved.at("ordering").get<std::string>();
+  for (auto candidate : {DropletOrdering::race, DropletOrdering::disjoint, DropletOrdering::batch}) {
+    if (ordering == droplet_ordering_name(candidate)) constants.ordering = candidate;
+  }
+  if (constants.ordering == DropletOrdering::disjoint && constants.spacing <= 2 * droplet_reach(constants.lifetime)) {
+    throw InputError(fmt::format(
+        "erosion.particle: ordering `disjoint` needs spacing > 2·(lifetime + 2) = {} so that no two droplets of a "
+        "pass meet; spacing is {} (use `race` or `batch`, or a spacing of at least {})",
+        2 * droplet_reach(constants.lifetime), constants.spacing, 2 * droplet_reach(constants.lifetime) + 1));
+  }
+  const auto [low, high] = valid_range(heights);
+  constants.quantum = batch_quantum(low > high ? 0.0 : std::max(std::abs(low), std::abs(high)));
+  return constants;
+}
+
+std::vector<std::string> particle_warnings(const ParticleConstants& constants) {
+  std::vector<std::string> warnings;
+  if (constants.bite >= 0.5) {
+    warnings.push_back(fmt::format("erosion_strength {} is 0.5 or more: the thesis (§4.4.1) warns that the "
+                                   "erosion then oscillates; run as asked",
+                                   constants.bite));
+  }
+  if (constants.release >= 0.5) {
+    warnings.push_back(fmt::format("deposition_strength {} is 0.5 or more: the thesis (§4.4.1) warns that the "
+                                   "deposition then oscillates; run as asked",
+                                   constants.release));
+  }
+  return warnings;
+}
+
+}  // namespace gt
