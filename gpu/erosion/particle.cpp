@@ -1,0 +1,202 @@
+// Host side of seed 000's particle erosion on the GPU (digest 000 §4.4, Appendix A, Algorithms
+// 4-7): buffers, the std140 parameter block and Algorithm 7's dispatch loop. The kernel, its
+// decisions (truncation toward zero in erode4 as upstream, off-grid and masked texels read 0 and
+// ignore writes, the batch fixed-point rule) and its mutants are described in
+// gpu/shaders/erosion/particle_droplets.comp; the CPU reference is reference/erosion/particle.cpp.
+//
+// Per outer iteration, for oy, ox in [0, S)²: one dispatch of particle_droplets.comp over the
+// ceil(W/S) x ceil(H/S) droplets with pass_offset = (ox, oy) (glProgramUniform2i), then a storage
+// barrier. Race and disjoint: the droplets work in place on `heights`. Batch (compiled with
+// PARTICLE_BATCH): the droplets read `heights` and atomically add integer quanta into `delta`;
+// particle_apply.comp then adds delta·quantum to each valid cell and clears delta, followed by
+// another barrier. Constants are rounded to float once here (quantum and 1/quantum are powers of
+// two, so both are exact). Mutants (compare/mutants/particle.cpp) live in the shader only.
+#include "gpu/erosion/particle.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gt::gpu {
+namespace {
+
+// Mirror of `ParticleBlock` in gpu/shaders/erosion/particle_block.glsl (std140).
+struct ParticleBlock {
+  std::int32_t grid_size[2];
+  std::int32_t droplet_grid[2];
+  std::int32_t droplet_spacing;
+  std::int32_t lifetime;
+  std::uint32_t interpolated_erosion;
+  float acceleration;
+  float bite;
+  float release;
+  float max_velocity;
+  float drag;
+  float capacity_factor;
+  float max_jump;
+  float quantum;
+  float inverse_quantum;
+};
+static_assert(offsetof(ParticleBlock, grid_size) == 0);
+static_assert(offsetof(ParticleBlock, droplet_grid) == 8);
+static_assert(offsetof(ParticleBlock, droplet_spacing) == 16);
+static_assert(offsetof(ParticleBlock, lifetime) == 20);
+static_assert(offsetof(ParticleBlock, interpolated_erosion) == 24);
+static_assert(offsetof(ParticleBlock, acceleration) == 28);
+static_assert(offsetof(ParticleBlock, bite) == 32);
+static_assert(offsetof(ParticleBlock, release) == 36);
+static_assert(offsetof(ParticleBlock, max_velocity) == 40);
+static_assert(offsetof(ParticleBlock, drag) == 44);
+static_assert(offsetof(ParticleBlock, capacity_factor) == 48);
+static_assert(offsetof(ParticleBlock, max_jump) == 52);
+static_assert(offsetof(ParticleBlock, quantum) == 56);
+static_assert(offsetof(ParticleBlock, inverse_quantum) == 60);
+static_assert(sizeof(ParticleBlock) == 64);
+
+constexpr int local_size = 8;  // local_size_x/y of particle_block.glsl
+enum Binding : GLuint { block_binding = 0, heights_binding = 1, valid_binding = 2, delta_binding = 3 };
+
+bool is_batch(const ParticleConstants& constants) { return constants.ordering == DropletOrdering::batch; }
+
+// The spacing S, refused below 1 (a pass would have no droplet grid).
+int checked_spacing(const ParticleConstants& constants) {
+  if (constants.spacing < 1) throw std::invalid_argument("ParticleErosion: spacing must be at least 1");
+  return constants.spacing;
+}
+
+// ceil(size / spacing): droplets of one pass along an axis of `size` texels (the FBO size, eq. 4.7).
+int droplet_count(int size, int spacing) { return (size + spacing - 1) / spacing; }
+
+std::vector<std::string> ordering_defines(const ParticleConstants& constants) {
+  if (is_batch(constants)) return {"PARTICLE_BATCH"};
+  return {};
+}
+
+std::optional<ComputeProgram> apply_program(const ParticleConstants& constants) {
+  if (!is_batch(constants)) return std::nullopt;
+  return ComputeProgram::load("erosion/particle_apply.comp", ordering_defines(constants));
+}
+
+GLint offset_location(const ComputeProgram& droplets) {
+  const GLint location = droplets.uniform("pass_offset");
+  if (location < 0) throw std::runtime_error("particle_droplets.comp: no active uniform `pass_offset`");
+  return location;
+}
+
+// Each constant rounded to float once from double, as the reference does.
+ParticleBlock make_block(const ParticleConstants& constants, int width, int height) {
+  const int spacing = checked_spacing(constants);
+  ParticleBlock block{};
+  block.grid_size[0] = width;
+  block.grid_size[1] = height;
+  block.droplet_grid[0] = droplet_count(width, spacing);
+  block.droplet_grid[1] = droplet_count(height, spacing);
+  block.droplet_spacing = spacing;
+  block.lifetime = constants.lifetime;
+  block.interpolated_erosion = constants.interpolate ? 1u : 0u;
+  block.acceleration = static_cast<float>(constants.acceleration);
+  block.bite = static_cast<float>(constants.bite);
+  block.release = static_cast<float>(constants.release);
+  block.max_velocity = static_cast<float>(constants.max_velocity);
+  block.drag = static_cast<float>(constants.drag);
+  block.capacity_factor = static_cast<float>(constants.capacity_factor);
+  block.max_jump = static_cast<float>(constants.max_jump);
+  if (is_batch(constants)) {
+    if (!(constants.quantum > 0.0)) throw std::invalid_argument("ParticleErosion: batch ordering needs a quantum > 0");
+    block.quantum = static_cast<float>(constants.quantum);
+    block.inverse_quantum = static_cast<float>(1.0 / constants.quantum);
+  }
+  return block;
+}
+
+std::size_t cell_count(int width, int height) { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
+
+// One int per cell for the batch delta; a 16-byte placeholder (never bound) otherwise.
+std::size_t delta_bytes(const ParticleConstants& constants, int width, int height) {
+  return is_batch(constants) ? cell_count(width, height) * sizeof(std::int32_t) : 16;
+}
+
+// Width and height of the field to load, no values (the heights live in the storage buffer).
+Grid<float> empty_layout(int width, int height) {
+  Grid<float> layout;
+  layout.width = width;
+  layout.height = height;
+  return layout;
+}
+
+void check_loadable(const Grid<float>& heights, int width, int height) {
+  if (heights.width != width || heights.height != height || heights.values.size() != cell_count(width, height)) {
+    throw std::invalid_argument("ParticleErosion::load: grid size differs from the constructor's");
+  }
+  if (heights.has_mask() && heights.valid.size() != heights.values.size()) {
+    throw std::invalid_argument("ParticleErosion::load: mask size differs from the grid's");
+  }
+}
+
+}  // namespace
+
+ParticleErosion::ParticleErosion(int width, int height, const ParticleConstants& constants)
+    : iterations_(constants.iterations),
+      spacing_(checked_spacing(constants)),
+      droplets_x_(droplet_count(width, spacing_)),
+      droplets_y_(droplet_count(height, spacing_)),
+      layout_(empty_layout(width, height)),
+      droplets_program_(ComputeProgram::load("erosion/particle_droplets.comp", ordering_defines(constants))),
+      apply_program_(apply_program(constants)),
+      offset_location_(offset_location(droplets_program_)),
+      block_(UniformBuffer::from(make_block(constants, width, height))),
+      heights_(cell_count(width, height) * sizeof(float)),
+      valid_(cell_count(width, height) * sizeof(GLuint)),
+      delta_(delta_bytes(constants, width, height)) {}
+
+void ParticleErosion::load(const Grid<float>& heights) {
+  check_loadable(heights, layout_.width, layout_.height);
+  layout_ = heights;
+  layout_.values.clear();
+  heights_.upload(heights.values.data(), heights.values.size() * sizeof(float));
+  std::vector<GLuint> valid(heights.size(), 1u);
+  if (heights.has_mask()) valid.assign(heights.valid.begin(), heights.valid.end());
+  valid_.upload(valid.data(), valid.size() * sizeof(GLuint));
+  if (batch()) {
+    const std::vector<std::int32_t> zeros(heights.size(), 0);
+    delta_.upload(zeros.data(), zeros.size() * sizeof(std::int32_t));
+  }
+}
+
+void ParticleErosion::run() { step(iterations_); }
+
+void ParticleErosion::step(int count) {
+  bind();
+  for (int iteration = 0; iteration < count; ++iteration) {
+    for (int offset_y = 0; offset_y < spacing_; ++offset_y) {
+      for (int offset_x = 0; offset_x < spacing_; ++offset_x) run_pass(offset_x, offset_y);
+    }
+  }
+}
+
+Grid<float> ParticleErosion::result() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  Grid<float> heights = layout_;
+  heights.values = heights_.download<float>(cell_count(layout_.width, layout_.height));
+  return heights;
+}
+
+void ParticleErosion::bind() const {
+  block_.bind(block_binding);
+  heights_.bind(heights_binding);
+  valid_.bind(valid_binding);
+  if (batch()) delta_.bind(delta_binding);
+}
+
+void ParticleErosion::run_pass(int offset_x, int offset_y) const {
+  glProgramUniform2i(droplets_program_.id(), offset_location_, offset_x, offset_y);
+  droplets_program_.dispatch(droplets_x_, droplets_y_, local_size, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (!apply_program_) return;
+  apply_program_->dispatch(layout_.width, layout_.height, local_size, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+}  // namespace gt::gpu

@@ -1,0 +1,78 @@
+// Buffers, parameters and texel access of seed 000's particle (droplet) erosion (digest 000 §4.4,
+// Appendix A): particle_droplets.comp and particle_apply.comp. The uniform block is mirrored by
+// ParticleBlock in gpu/erosion/particle.cpp, whose static_asserts check the std140 offsets.
+//
+// Texel access emulates Hydra's r32f image: load() of a cell off the grid or masked (valid == 0)
+// returns 0, store() there is ignored (GLSL's out-of-bounds imageLoad/imageStore; masked cells
+// behave like cells outside). Heights are in the caller's units, positions in texels.
+//
+// Orderings (core/params/particle.hpp): without PARTICLE_BATCH (race, disjoint) the droplets read
+// and write `heights` in place, racing on purpose (no atomics, no barriers inside a pass). With
+// PARTICLE_BATCH (batch) the droplets only read `heights` and add what they move, as integer
+// counts of `quantum`, into `delta` with atomicAdd; particle_apply.comp adds delta·quantum to the
+// heights when the pass ends and clears it.
+#ifndef PARTICLE_BLOCK_GLSL
+#define PARTICLE_BLOCK_GLSL
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std140, binding = 0) uniform ParticleBlock {
+  ivec2 grid_size;             // width, height (texels)
+  ivec2 droplet_grid;          // ceil(width / spacing), ceil(height / spacing): droplets per pass
+  int droplet_spacing;         // S (subdiv): one droplet per S x S block and pass
+  int lifetime;                // steps of one droplet
+  uint interpolated_erosion;   // 1: erosion spread bilinearly over 4 texels (Algorithm 6)
+  float acceleration;          // a
+  float bite;                  // erosion strength
+  float release;               // deposition strength
+  float max_velocity;          // v_max, texels per step
+  float drag;                  // velocity multiplier (1 - UI drag)
+  float capacity_factor;       // f_c
+  float max_jump;              // drop_max
+  float quantum;               // batch: height of one fixed-point unit (a power of two); else 0
+  float inverse_quantum;       // batch: 1 / quantum (a power of two); else 0
+};
+
+layout(std430, binding = 1) buffer Heights { float heights[]; };
+layout(std430, binding = 2) readonly buffer Valid { uint valid[]; };  // 1 = valid, 0 = no data
+#ifdef PARTICLE_BATCH
+layout(std430, binding = 3) buffer Delta { int delta[]; };  // quanta added to each cell this pass
+#endif
+
+// std::max(a, b) = a < b ? b : a and std::min(a, b) = b < a ? b : a, signed zeros and NaN as the
+// float reference evaluates them (GLSL's max/min leave those cases open).
+float ref_max(float a, float b) { return a < b ? b : a; }
+float ref_min(float a, float b) { return b < a ? b : a; }
+
+// Whether a droplet may read and write `cell`: inside the grid and valid.
+bool open_cell(ivec2 cell) {
+  if (!inside_grid(cell, grid_size)) return false;
+  return valid[cell_index(cell, grid_size)] != 0u;
+}
+
+// load(): the height of an open cell, 0 elsewhere.
+float load_height(ivec2 cell) {
+  if (!open_cell(cell)) return 0.0;
+  return heights[cell_index(cell, grid_size)];
+}
+
+#ifdef PARTICLE_BATCH
+// `amount` as a count of quanta: (amount · inverse_quantum) rounded to nearest, ties to even. The
+// product is exact (a power of two) unless it overflows.
+int quanta(float amount) {
+  precise float scaled = amount * inverse_quantum;
+  return int(roundEven(scaled));
+}
+
+// Adds `count` quanta to the cell's delta; ignored off the grid and on masked cells, as store().
+void add_quanta(ivec2 cell, int count) {
+  if (open_cell(cell)) atomicAdd(delta[cell_index(cell, grid_size)], count);
+}
+#else
+// store(): writes an open cell, ignored elsewhere.
+void store_height(ivec2 cell, float height) {
+  if (open_cell(cell)) heights[cell_index(cell, grid_size)] = height;
+}
+#endif
+
+#endif
