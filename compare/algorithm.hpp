@@ -72,6 +72,7 @@ const Algorithm& find_algorithm(const std::string& name);
 Algorithm thermal_algorithm();
 Algorithm thermal_jako_algorithm();
 Algorithm pipe_algorithm();
+Algorithm particle_algorithm();
 std::vector<Algorithm> noise_algorithms();
 std::vector<Algorithm> cave_algorithms();
 Algorithm cave_endless_algorithm();
