@@ -75,7 +75,7 @@ double sum_of(const Grid<Real>& field) {
 }
 
 template <class Real>
-double ledger_residual(const Grid<Real>& before, const gt::reference::ParticleRun<Real>& run) {
+double ledger_residual(const Grid<Real>& before, const gt::reference::DropletRun<Real>& run) {
   const auto& l = run.ledger;
   return sum_of(run.heights) + l.sediment_at_end + l.sediment_left + l.deposited_outside - sum_of(before) -
          l.eroded_outside - l.clamp_created - l.apply_rounding;

@@ -9,21 +9,7 @@
 
 namespace gt {
 
-const char* droplet_ordering_name(DropletOrdering ordering) {
-  switch (ordering) {
-    case DropletOrdering::race: return "race";
-    case DropletOrdering::disjoint: return "disjoint";
-    case DropletOrdering::batch: return "batch";
-  }
-  return "?";
-}
-
 int droplet_reach(int lifetime) { return lifetime + 2; }
-
-double batch_quantum(double max_abs_height) {
-  const double magnitude = std::max(1.0, max_abs_height);
-  return std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(magnitude))) - 24);
-}
 
 // Ranges: the upstream UI ranges of §4.4.1 (add-on 1a1a8c9) where it has them, widened where the
 // thesis allows more; "must be positive" (§4.4.1) is a lower bound of 1e-6.
@@ -71,10 +57,7 @@ ParticleConstants particle_constants(const nlohmann::json& resolved, const Heigh
   constants.capacity_factor = resolved.at("capacity_factor").get<double>();
   constants.max_jump = resolved.at("max_jump").get<double>();
   constants.interpolate = resolved.at("interpolate").get<bool>();
-  const auto ordering = resolved.at("ordering").get<std::string>();
-  for (auto candidate : {DropletOrdering::race, DropletOrdering::disjoint, DropletOrdering::batch}) {
-    if (ordering == droplet_ordering_name(candidate)) constants.ordering = candidate;
-  }
+  constants.ordering = droplet_ordering_from_name(resolved.at("ordering").get<std::string>());
   if (constants.ordering == DropletOrdering::disjoint && constants.spacing <= 2 * droplet_reach(constants.lifetime)) {
     throw InputError(fmt::format(
         "erosion.particle: ordering `disjoint` needs spacing > 2·(lifetime + 2) = {} so that no two droplets of a "

@@ -8,17 +8,7 @@
 // default ((h - min)/(max - min) over valid cells), or the input's own heights taken as texel units
 // when `normalised` is off (then drop_max, capacity and the amounts are in those units).
 //
-// Ordering of the droplets of one pass (one draw of Algorithm 7: one droplet per spacing² block):
-//   race      every droplet at once on one height buffer, as Hydra dispatches them (the GPU races:
-//             droplets overwrite each other); the references run the droplets one after the other
-//             in row-major order, the defined truth, and the GPU is compared statistically.
-//   disjoint  the same dispatch with spacing > 2·(lifetime + 2), so no two droplets of a pass read
-//             or write a common texel (a droplet moves at most one texel per step and touches texels
-//             up to two beyond its path): the GPU equals the sequential reference within rounding.
-//   batch     every droplet of a pass reads the heights as they were at the pass's start and adds
-//             what it erodes and deposits, as fixed-point integers of `quantum`, into a delta that
-//             is applied when the pass ends: order-independent, so the GPU equals ref<float> bit for
-//             bit at any spacing. The droplet carries its sediment as an integer count of quanta.
+// Orderings of the droplets of a pass and the batch quantum: core/params/droplets.hpp.
 #pragma once
 
 #include <string>
@@ -26,13 +16,9 @@
 
 #include "core/grid.hpp"
 #include "core/params.hpp"
+#include "core/params/droplets.hpp"
 
 namespace gt {
-
-enum class DropletOrdering { race, disjoint, batch };
-
-// "race", "disjoint", "batch": the names of the `ordering` parameter.
-const char* droplet_ordering_name(DropletOrdering ordering);
 
 // The kernel's constants (Appendix A's uniforms), already mapped from the UI values of §4.4.1.
 // Each twin rounds them to its own Real once (the GPU receives the float values).
@@ -55,11 +41,6 @@ struct ParticleConstants {
 // The texels one droplet can touch beyond its start: lifetime unit steps, one more for the
 // neighbour reads and one for the bilinear corners. Spacing must exceed twice this for `disjoint`.
 int droplet_reach(int lifetime);
-
-// The fixed-point unit for heights whose magnitude is at most `max_abs_height`: 2^-24 times the
-// smallest power of two >= max(1, max_abs_height), about one float ulp at the top of the range, so
-// an int32 delta holds ±128 times the heights' magnitude per pass.
-double batch_quantum(double max_abs_height);
 
 const ParamSpecs& particle_param_specs();
 

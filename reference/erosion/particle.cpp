@@ -67,7 +67,7 @@ struct Texel {
 template <class Real>
 class PassTerrain {
  public:
-  PassTerrain(ParticleRun<Real>& run, const Kernel<Real>& kernel, bool batch)
+  PassTerrain(DropletRun<Real>& run, const Kernel<Real>& kernel, bool batch)
       : run_(run), kernel_(kernel), batch_(batch) {
     if (batch_) delta_.assign(run.heights.size(), 0);
   }
@@ -118,7 +118,7 @@ class PassTerrain {
   }
 
  private:
-  ParticleRun<Real>& run_;
+  DropletRun<Real>& run_;
   const Kernel<Real>& kernel_;
   bool batch_;
   std::vector<long long> delta_;
@@ -315,7 +315,7 @@ void express_quanta(DropletLedger& ledger, double quantum) {
 
 // One draw of Algorithm 7: a droplet per block of the ceil(W/S) x ceil(H/S) grid, row-major.
 template <class Real>
-void run_pass(ParticleRun<Real>& run, const Kernel<Real>& k, int spacing, Texel offset, bool batch) {
+void run_pass(DropletRun<Real>& run, const Kernel<Real>& k, int spacing, Texel offset, bool batch) {
   PassTerrain<Real> terrain(run, k, batch);
   const int blocks_x = (run.heights.width + spacing - 1) / spacing;
   const int blocks_y = (run.heights.height + spacing - 1) / spacing;
@@ -331,10 +331,10 @@ void run_pass(ParticleRun<Real>& run, const Kernel<Real>& k, int spacing, Texel 
 }  // namespace
 
 template <class Real>
-ParticleRun<Real> particle_erosion(const Grid<Real>& heights, const ParticleConstants& constants, int iterations,
+DropletRun<Real> particle_erosion(const Grid<Real>& heights, const ParticleConstants& constants, int iterations,
                                    DropletOrdering ordering) {
   const Kernel<Real> kernel(constants);
-  ParticleRun<Real> run{heights, heights.template cast<double>(), heights.template cast<double>(), {}};
+  DropletRun<Real> run{heights, heights.template cast<double>(), heights.template cast<double>(), {}};
   std::fill(run.eroded_at_droplet.values.begin(), run.eroded_at_droplet.values.end(), 0.0);
   std::fill(run.deposited_at_droplet.values.begin(), run.deposited_at_droplet.values.end(), 0.0);
   const bool batch = ordering == DropletOrdering::batch;
@@ -350,7 +350,7 @@ ParticleRun<Real> particle_erosion(const Grid<Real>& heights, const ParticleCons
 template <class Real>
 DropletPath<Real> run_one_droplet(Grid<Real>& heights, const ParticleConstants& constants, int base_x, int base_y) {
   const Kernel<Real> kernel(constants);
-  ParticleRun<Real> run{heights, heights.template cast<double>(), heights.template cast<double>(), {}};
+  DropletRun<Real> run{heights, heights.template cast<double>(), heights.template cast<double>(), {}};
   PassTerrain<Real> terrain(run, kernel, false);
   DropletPath<Real> path;
   Droplet<Real> drop = start_droplet<Real>(base_x, base_y);
@@ -361,8 +361,8 @@ DropletPath<Real> run_one_droplet(Grid<Real>& heights, const ParticleConstants& 
   return path;
 }
 
-template ParticleRun<double> particle_erosion(const Grid<double>&, const ParticleConstants&, int, DropletOrdering);
-template ParticleRun<float> particle_erosion(const Grid<float>&, const ParticleConstants&, int, DropletOrdering);
+template DropletRun<double> particle_erosion(const Grid<double>&, const ParticleConstants&, int, DropletOrdering);
+template DropletRun<float> particle_erosion(const Grid<float>&, const ParticleConstants&, int, DropletOrdering);
 template DropletPath<double> run_one_droplet(Grid<double>&, const ParticleConstants&, int, int);
 template DropletPath<float> run_one_droplet(Grid<float>&, const ParticleConstants&, int, int);
 

@@ -1,0 +1,44 @@
+// What a droplet eroder's reference returns (reference/erosion/particle.hpp for Hydra's kernel,
+// reference/erosion/beyer.hpp for Beyer's): the heights, the side maps and the droplet ledger.
+//
+// The ledger (double, summed over every pass) names every place where material enters or leaves
+// the terrain, so that
+//   Σ heights after + sediment_at_end + sediment_left + deposited_outside
+//     = Σ heights before + eroded_outside + clamp_created + apply_rounding      (up to rounding)
+// and in batch ordering the same identity holds exactly in quanta (the *_quanta fields).
+#pragma once
+
+#include "core/grid.hpp"
+
+namespace gt::reference {
+
+struct DropletLedger {
+  double eroded = 0.0;             // taken from terrain cells (inside the grid, valid)
+  double deposited = 0.0;          // given to terrain cells
+  double eroded_outside = 0.0;     // picked up at texels outside the grid or masked: created from nothing
+  double deposited_outside = 0.0;  // dropped at texels outside the grid or masked: lost
+  double clamp_created = 0.0;      // Hydra without interpolation, h stored as max(h - add, 0): add - removed
+  double sediment_at_end = 0.0;    // carried by droplets whose lifetime ran out: lost with them
+  double sediment_left = 0.0;      // carried by droplets that left across x <= 0 or y <= 0
+  double apply_rounding = 0.0;     // batch: what rounding the heights + delta to Real added
+  long long droplets = 0;
+  long long droplets_left = 0;     // of them, ended by the position check
+  long long steps = 0;             // droplet steps taken (a droplet's steps up to its end)
+  // Batch ordering, in quanta: exact integers.
+  long long eroded_quanta = 0, deposited_quanta = 0, eroded_outside_quanta = 0, deposited_outside_quanta = 0,
+            clamp_created_quanta = 0, sediment_end_quanta = 0;
+  long long applied_quanta = 0;  // Σ of the deltas applied to terrain cells: the terrain's change in quanta
+  long long largest_cell_delta_quanta = 0;  // the largest |delta| of one cell in one pass (int32 on the GPU)
+};
+
+template <class Real>
+struct DropletRun {
+  Grid<Real> heights;
+  // The side maps, before any contrast: what each droplet eroded in all and deposited, at the texel
+  // it stood on (Hydra's depth and sediment maps, as its kernel writes them).
+  Grid<double> eroded_at_droplet;
+  Grid<double> deposited_at_droplet;
+  DropletLedger ledger;
+};
+
+}  // namespace gt::reference
