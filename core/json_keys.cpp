@@ -69,4 +69,11 @@ double json_number(const nlohmann::json& object, const std::string& key, double 
   return number;
 }
 
+bool json_bool(const nlohmann::json& object, const std::string& key, bool fallback, const std::string& where) {
+  if (!object.is_object() || !object.contains(key)) return fallback;
+  const auto& value = object[key];
+  if (!value.is_boolean()) throw InputError(fmt::format("{}: {} = {} is not true or false", where, key, value.dump()));
+  return value.get<bool>();
+}
+
 }  // namespace gt

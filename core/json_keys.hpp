@@ -30,4 +30,7 @@ long long json_integer(const nlohmann::json& object, const std::string& key, lon
 double json_number(const nlohmann::json& object, const std::string& key, double fallback, double min, double max,
                    const std::string& where);
 
+// object[key] as true/false; `fallback` when absent; InputError (naming `where`) when not a boolean.
+bool json_bool(const nlohmann::json& object, const std::string& key, bool fallback, const std::string& where);
+
 }  // namespace gt

@@ -150,6 +150,31 @@ TEST(HeightmapIo, Png8BitIsNormalisedThenScaled) {
   EXPECT_TRUE(has_note_containing(read, "8-bit"));
 }
 
+// Seed 000's Algorithm 2 against the digest's test values (§4.2): 0.04045 -> 0.0031308 (the end
+// of the linear segment), 0.5 -> 0.2140411, 1 -> 1; the values are quoted to 7 decimals.
+TEST(HeightmapIo, SrgbCurveMeetsTheSeedsValues) {
+  EXPECT_NEAR(gt::srgb_to_linear(0.04045), 0.0031308, 5e-8);
+  EXPECT_NEAR(gt::srgb_to_linear(0.5), 0.2140411, 5e-8);
+  EXPECT_DOUBLE_EQ(gt::srgb_to_linear(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(gt::srgb_to_linear(0.0), 0.0);
+}
+
+// An 8-bit image read as Hydra does with a non-float image: value/255 decoded from sRGB, then scaled.
+TEST(HeightmapIo, Png8BitSrgbIsDecodedBeforeScaling) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "gray8.png";
+  write_test_image<std::uint8_t>(file, 3, 1, 1, {0, 51, 255});
+  HeightmapReadOptions options;
+  options.image_vertical_scale = 10.0;
+  options.srgb = true;
+  const HeightmapFile read = read_heightmap(file, options);
+  EXPECT_DOUBLE_EQ(read.heights.values[0], 0.0);
+  EXPECT_NEAR(read.heights.values[1], 10.0 * gt::srgb_to_linear(0.2), 1e-12);
+  EXPECT_NEAR(read.heights.values[1], 0.3310, 1e-4) << "0.2 decodes to 0.0331";
+  EXPECT_DOUBLE_EQ(read.heights.values[2], 10.0);
+  EXPECT_TRUE(has_note_containing(read, "sRGB-decoded"));
+}
+
 TEST(HeightmapIo, Png16BitIsNormalisedThenScaled) {
   const TemporaryFolder folder;
   const fs::path file = folder.path() / "gray16.png";

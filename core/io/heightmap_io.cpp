@@ -290,17 +290,32 @@ Heightmap read_channel0(OIIO::ImageInput& input, OIIO::TypeDesc type, double sca
   return heights;
 }
 
-Heightmap read_pixels(OIIO::ImageInput& input, double vertical_scale, const std::optional<double>& no_data,
-                      std::vector<std::string>& notes, const path& file) {
+// An 8/16-bit image's channel 0 as [0, 1] values (value / largest), sRGB-decoded when asked, times
+// the vertical scale.
+template <class T>
+Heightmap read_unsigned_image(OIIO::ImageInput& input, const HeightmapReadOptions& options,
+                              const std::optional<double>& no_data, std::vector<std::string>& notes, const path& file) {
+  const double largest = static_cast<double>(std::numeric_limits<T>::max());
+  notes.push_back(fmt::format("{}-bit image: value / {}{} x image_vertical_scale ({})", 8 * sizeof(T), largest,
+                              options.srgb ? ", sRGB-decoded (seed 000 Algorithm 2)," : "",
+                              options.image_vertical_scale));
+  if (!options.srgb) {
+    return read_channel0<T>(input, input.spec().format, options.image_vertical_scale / largest, no_data, file);
+  }
+  Heightmap heights = read_channel0<T>(input, input.spec().format, 1.0 / largest, no_data, file);
+  for (double& value : heights.values) value = srgb_to_linear(value) * options.image_vertical_scale;
+  return heights;
+}
+
+Heightmap read_pixels(OIIO::ImageInput& input, const HeightmapReadOptions& options,
+                      const std::optional<double>& no_data, std::vector<std::string>& notes, const path& file) {
   using OIIO::TypeDesc;
   const TypeDesc stored = input.spec().format;
   switch (stored.basetype) {
     case TypeDesc::UINT8:
-      notes.push_back(fmt::format("8-bit image: value / 255 x image_vertical_scale ({})", vertical_scale));
-      return read_channel0<std::uint8_t>(input, stored, vertical_scale / 255.0, no_data, file);
+      return read_unsigned_image<std::uint8_t>(input, options, no_data, notes, file);
     case TypeDesc::UINT16:
-      notes.push_back(fmt::format("16-bit image: value / 65535 x image_vertical_scale ({})", vertical_scale));
-      return read_channel0<std::uint16_t>(input, stored, vertical_scale / 65535.0, no_data, file);
+      return read_unsigned_image<std::uint16_t>(input, options, no_data, notes, file);
     case TypeDesc::INT8:
       return read_channel0<std::int8_t>(input, stored, 1.0, no_data, file);
     case TypeDesc::INT16:
@@ -347,7 +362,7 @@ HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) 
                                        spec.channel_name(0)));
   }
   const std::optional<double> no_data = parse_no_data(tags, result.notes);
-  result.heights = read_pixels(*input, options.image_vertical_scale, no_data, result.notes, file);
+  result.heights = read_pixels(*input, options, no_data, result.notes, file);
   const std::size_t masked = result.heights.size() - count_valid(result.heights);
   if (no_data) {
     result.notes.push_back(fmt::format("GDAL_NODATA {}: {} cells invalid (NaN cells included), masked: no algorithm "
@@ -425,6 +440,8 @@ void check_writable_shape(const Heightmap& heights, const path& target) {
 }
 
 }  // namespace
+
+double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
 HeightmapFile read_heightmap(const path& file, const HeightmapReadOptions& options) {
   if (file.empty()) throw InputError("cannot open heightmap: empty path");

@@ -44,7 +44,14 @@ struct HeightmapFile {
 struct HeightmapReadOptions {
   double image_vertical_scale = 1.0;  // multiplies [0,1] heights read from 8/16-bit images
   double cell_size = 0.0;             // overrides the file's cell size when > 0
+  // 8/16-bit images: the [0,1] value is sRGB-encoded and linearised (seed 000 §4.3.1, Algorithm 2)
+  // before the vertical scale, as Hydra makes a heightmap of a non-float image's red channel.
+  bool srgb = false;
 };
+
+// Seed 000's Algorithm 2, the sRGB decoding curve of one channel value c in [0, 1]:
+// c/12.92 up to 0.04045, ((c + 0.055)/1.055)^2.4 above.
+double srgb_to_linear(double c);
 
 HeightmapFile read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options = {});
 
