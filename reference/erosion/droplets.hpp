@@ -8,6 +8,15 @@
 // and in batch ordering the same identity holds exactly in quanta (the *_quanta fields).
 #pragma once
 
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
 #include "core/grid.hpp"
 
 namespace gt::reference {
@@ -39,6 +48,45 @@ struct DropletRun {
   Grid<double> eroded_at_droplet;
   Grid<double> deposited_at_droplet;
   DropletLedger ledger;
+};
+
+// The batch ordering's change of each cell during one pass, in quanta, and its application when the
+// pass ends as the shaders' *_apply.comp do: height + Real(delta)·quantum, rounded once to Real.
+// The GPU counts in int32: a delta beyond it is refused (runtime_error naming `algorithm`).
+template <class Real>
+class BatchDelta {
+ public:
+  BatchDelta(std::size_t cells, Real quantum, std::string algorithm)
+      : delta_(cells, 0), quantum_(quantum), algorithm_(std::move(algorithm)) {}
+
+  void add(std::size_t cell, long long count) { delta_[cell] += count; }
+
+  void apply(Grid<Real>& heights, DropletLedger& ledger) {
+    for (std::size_t i = 0; i < delta_.size(); ++i) {
+      const long long delta = delta_[i];
+      if (delta == 0) continue;
+      delta_[i] = 0;
+      ledger.applied_quanta += delta;
+      ledger.largest_cell_delta_quanta = std::max(ledger.largest_cell_delta_quanta, std::llabs(delta));
+      if (std::llabs(delta) > std::numeric_limits<std::int32_t>::max()) {
+        throw std::runtime_error(fmt::format(
+            "{}: a batch delta of {} quanta in one cell overflows the GPU's 32-bit counter: the droplets of a pass, "
+            "blind to each other, piled that much into one cell; use a larger spacing, fewer droplets or the race "
+            "ordering",
+            algorithm_, delta));
+      }
+      const Real before = heights.values[i];
+      const Real after = before + static_cast<Real>(delta) * quantum_;
+      ledger.apply_rounding += (static_cast<double>(after) - static_cast<double>(before)) -
+                               static_cast<double>(delta) * static_cast<double>(quantum_);
+      heights.values[i] = after;
+    }
+  }
+
+ private:
+  std::vector<long long> delta_;
+  Real quantum_;
+  std::string algorithm_;
 };
 
 }  // namespace gt::reference

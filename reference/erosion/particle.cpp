@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -68,26 +69,26 @@ template <class Real>
 class PassTerrain {
  public:
   PassTerrain(DropletRun<Real>& run, const Kernel<Real>& kernel, bool batch)
-      : run_(run), kernel_(kernel), batch_(batch) {
-    if (batch_) delta_.assign(run.heights.size(), 0);
+      : run_(run), kernel_(kernel) {
+    if (batch) delta_.emplace(run.heights.size(), kernel.quantum, "erosion.particle");
   }
 
   bool holds(Texel t) const { return run_.heights.inside(t.x, t.y) && run_.heights.is_valid(t.x, t.y); }
   Real load(Texel t) const { return holds(t) ? run_.heights.at(t.x, t.y) : Real(0); }
-  bool batch() const { return batch_; }
+  bool batch() const { return delta_.has_value(); }
   DropletLedger& ledger() { return run_.ledger; }
 
   long long quanta(Real amount) const {
     return static_cast<long long>(std::nearbyint(amount * kernel_.inverse_quantum));
   }
 
-  // Sequential: the texel's height becomes `value`, which removed `removed` (negative: added).
+  // Sequential: the texel's height becomes `value`.
   void store(Texel t, Real value) {
     if (holds(t)) run_.heights.at(t.x, t.y) = value;
   }
   // Batch: `count` quanta more (negative: fewer) at the texel when the pass ends.
   void add_quanta(Texel t, long long count) {
-    if (holds(t)) delta_[run_.heights.index(t.x, t.y)] += count;
+    if (holds(t)) delta_->add(run_.heights.index(t.x, t.y), count);
   }
 
   void mark_side_maps(Texel at, double eroded, double deposited) {
@@ -98,30 +99,14 @@ class PassTerrain {
 
   // Batch: heights + delta·quantum rounded to Real, as particle_apply.comp does.
   void apply() {
-    if (!batch_) return;
-    auto& ledger = run_.ledger;
-    for (std::size_t i = 0; i < delta_.size(); ++i) {
-      if (delta_[i] == 0) continue;
-      ledger.applied_quanta += delta_[i];
-      ledger.largest_cell_delta_quanta = std::max(ledger.largest_cell_delta_quanta, std::abs(delta_[i]));
-      if (std::abs(delta_[i]) > std::numeric_limits<std::int32_t>::max()) {
-        throw std::runtime_error(fmt::format(
-            "erosion.particle: batch delta of {} quanta in one cell overflows the GPU's 32-bit counter", delta_[i]));
-      }
-      const Real before = run_.heights.values[i];
-      const Real change = static_cast<Real>(delta_[i]) * kernel_.quantum;
-      const Real after = before + change;
-      ledger.apply_rounding += (static_cast<double>(after) - static_cast<double>(before)) -
-                               static_cast<double>(delta_[i]) * static_cast<double>(kernel_.quantum);
-      run_.heights.values[i] = after;
-    }
+    if (delta_) delta_->apply(run_.heights, run_.ledger);
   }
+
 
  private:
   DropletRun<Real>& run_;
   const Kernel<Real>& kernel_;
-  bool batch_;
-  std::vector<long long> delta_;
+  std::optional<BatchDelta<Real>> delta_;  // batch ordering only
 };
 
 template <class Real>
