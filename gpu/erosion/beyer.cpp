@@ -1,0 +1,224 @@
+// Host side of Beyer's particle erosion on the GPU (seed 000 §2.7, digest 000 §3.7): buffers, the
+// std140 parameter block and Algorithm 7's dispatch loop. The kernel, its decisions (samples at
+// integer points, off-map droplets end, the 8-direction random fallback, the speed sign, the brush
+// at the old position renormalised over the open samples, the batch fixed-point rule) and its
+// mutants are described in gpu/shaders/erosion/beyer_droplets.comp; the CPU reference is
+// reference/erosion/beyer.cpp.
+//
+// Per outer iteration, for oy, ox in [0, S)²: one dispatch of beyer_droplets.comp over the
+// ceil(W/S) x ceil(H/S) droplets with pass_offset = (ox, oy) and pass_number = iteration·S² +
+// oy·S + ox (uint32, wrapping; the droplets' RNG counter), then a storage barrier. Race and
+// disjoint: the droplets work in place on `heights`. Batch (compiled with BEYER_BATCH): the
+// droplets read `heights` and atomically add integer quanta into `delta`; beyer_apply.comp then
+// adds delta·quantum to each valid cell and clears delta, followed by another barrier. Constants
+// are rounded to float once here (quantum and 1/quantum are powers of two, so both are exact);
+// 1 - inertia and 1 - evaporation are computed in the shader, as the reference computes them in
+// Real. Mutants (compare/mutants/beyer.cpp) live in the shader only.
+#include "gpu/erosion/beyer.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gt::gpu {
+namespace {
+
+// Mirror of `BeyerBlock` in gpu/shaders/erosion/beyer_block.glsl (std140).
+struct BeyerBlock {
+  std::int32_t grid_size[2];
+  std::int32_t droplet_grid[2];
+  std::int32_t droplet_spacing;
+  std::int32_t lifetime;
+  std::uint32_t seed;
+  std::uint32_t printed_speed;
+  float inertia;
+  float capacity_factor;
+  float min_slope;
+  float deposition;
+  float erosion;
+  float gravity;
+  float evaporation;
+  float radius;
+  float initial_speed;
+  float initial_water;
+  float quantum;
+  float inverse_quantum;
+};
+static_assert(offsetof(BeyerBlock, grid_size) == 0);
+static_assert(offsetof(BeyerBlock, droplet_grid) == 8);
+static_assert(offsetof(BeyerBlock, droplet_spacing) == 16);
+static_assert(offsetof(BeyerBlock, lifetime) == 20);
+static_assert(offsetof(BeyerBlock, seed) == 24);
+static_assert(offsetof(BeyerBlock, printed_speed) == 28);
+static_assert(offsetof(BeyerBlock, inertia) == 32);
+static_assert(offsetof(BeyerBlock, capacity_factor) == 36);
+static_assert(offsetof(BeyerBlock, min_slope) == 40);
+static_assert(offsetof(BeyerBlock, deposition) == 44);
+static_assert(offsetof(BeyerBlock, erosion) == 48);
+static_assert(offsetof(BeyerBlock, gravity) == 52);
+static_assert(offsetof(BeyerBlock, evaporation) == 56);
+static_assert(offsetof(BeyerBlock, radius) == 60);
+static_assert(offsetof(BeyerBlock, initial_speed) == 64);
+static_assert(offsetof(BeyerBlock, initial_water) == 68);
+static_assert(offsetof(BeyerBlock, quantum) == 72);
+static_assert(offsetof(BeyerBlock, inverse_quantum) == 76);
+static_assert(sizeof(BeyerBlock) == 80);
+
+constexpr int local_size = 8;  // local_size_x/y of beyer_block.glsl
+enum Binding : GLuint { block_binding = 0, heights_binding = 1, valid_binding = 2, delta_binding = 3 };
+
+bool is_batch(const BeyerConstants& constants) { return constants.ordering == DropletOrdering::batch; }
+
+// The spacing S, refused below 1 (a pass would have no droplet grid).
+int checked_spacing(const BeyerConstants& constants) {
+  if (constants.spacing < 1) throw std::invalid_argument("BeyerErosion: spacing must be at least 1");
+  return constants.spacing;
+}
+
+// ceil(size / spacing): droplets of one pass along an axis of `size` samples.
+int droplet_count(int size, int spacing) { return (size + spacing - 1) / spacing; }
+
+std::vector<std::string> ordering_defines(const BeyerConstants& constants) {
+  if (is_batch(constants)) return {"BEYER_BATCH"};
+  return {};
+}
+
+std::optional<ComputeProgram> apply_program(const BeyerConstants& constants) {
+  if (!is_batch(constants)) return std::nullopt;
+  return ComputeProgram::load("erosion/beyer_apply.comp", ordering_defines(constants));
+}
+
+GLint uniform_location(const ComputeProgram& droplets, const char* name) {
+  const GLint location = droplets.uniform(name);
+  if (location < 0) throw std::runtime_error(std::string("beyer_droplets.comp: no active uniform `") + name + "`");
+  return location;
+}
+
+// Each constant rounded to float once from double, as the reference does.
+BeyerBlock make_block(const BeyerConstants& constants, int width, int height) {
+  const int spacing = checked_spacing(constants);
+  BeyerBlock block{};
+  block.grid_size[0] = width;
+  block.grid_size[1] = height;
+  block.droplet_grid[0] = droplet_count(width, spacing);
+  block.droplet_grid[1] = droplet_count(height, spacing);
+  block.droplet_spacing = spacing;
+  block.lifetime = constants.lifetime;
+  block.seed = constants.seed;
+  block.printed_speed = constants.speed_rule == BeyerSpeedRule::printed ? 1u : 0u;
+  block.inertia = static_cast<float>(constants.inertia);
+  block.capacity_factor = static_cast<float>(constants.capacity_factor);
+  block.min_slope = static_cast<float>(constants.min_slope);
+  block.deposition = static_cast<float>(constants.deposition);
+  block.erosion = static_cast<float>(constants.erosion);
+  block.gravity = static_cast<float>(constants.gravity);
+  block.evaporation = static_cast<float>(constants.evaporation);
+  block.radius = static_cast<float>(constants.radius);
+  block.initial_speed = static_cast<float>(constants.initial_speed);
+  block.initial_water = static_cast<float>(constants.initial_water);
+  if (is_batch(constants)) {
+    if (!(constants.quantum > 0.0)) throw std::invalid_argument("BeyerErosion: batch ordering needs a quantum > 0");
+    block.quantum = static_cast<float>(constants.quantum);
+    block.inverse_quantum = static_cast<float>(1.0 / constants.quantum);
+  }
+  return block;
+}
+
+std::size_t cell_count(int width, int height) { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
+
+// One int per cell for the batch delta; a 16-byte placeholder (never bound) otherwise.
+std::size_t delta_bytes(const BeyerConstants& constants, int width, int height) {
+  return is_batch(constants) ? cell_count(width, height) * sizeof(std::int32_t) : 16;
+}
+
+// Width and height of the field to load, no values (the heights live in the storage buffer).
+Grid<float> empty_layout(int width, int height) {
+  Grid<float> layout;
+  layout.width = width;
+  layout.height = height;
+  return layout;
+}
+
+void check_loadable(const Grid<float>& heights, int width, int height) {
+  if (heights.width != width || heights.height != height || heights.values.size() != cell_count(width, height)) {
+    throw std::invalid_argument("BeyerErosion::load: grid size differs from the constructor's");
+  }
+  if (heights.has_mask() && heights.valid.size() != heights.values.size()) {
+    throw std::invalid_argument("BeyerErosion::load: mask size differs from the grid's");
+  }
+}
+
+}  // namespace
+
+BeyerErosion::BeyerErosion(int width, int height, const BeyerConstants& constants)
+    : iterations_(constants.iterations),
+      spacing_(checked_spacing(constants)),
+      droplets_x_(droplet_count(width, spacing_)),
+      droplets_y_(droplet_count(height, spacing_)),
+      layout_(empty_layout(width, height)),
+      droplets_program_(ComputeProgram::load("erosion/beyer_droplets.comp", ordering_defines(constants))),
+      apply_program_(apply_program(constants)),
+      offset_location_(uniform_location(droplets_program_, "pass_offset")),
+      pass_number_location_(uniform_location(droplets_program_, "pass_number")),
+      block_(UniformBuffer::from(make_block(constants, width, height))),
+      heights_(cell_count(width, height) * sizeof(float)),
+      valid_(cell_count(width, height) * sizeof(GLuint)),
+      delta_(delta_bytes(constants, width, height)) {}
+
+void BeyerErosion::load(const Grid<float>& heights) {
+  check_loadable(heights, layout_.width, layout_.height);
+  layout_ = heights;
+  layout_.values.clear();
+  heights_.upload(heights.values.data(), heights.values.size() * sizeof(float));
+  std::vector<GLuint> valid(heights.size(), 1u);
+  if (heights.has_mask()) valid.assign(heights.valid.begin(), heights.valid.end());
+  valid_.upload(valid.data(), valid.size() * sizeof(GLuint));
+  if (batch()) {
+    const std::vector<std::int32_t> zeros(heights.size(), 0);
+    delta_.upload(zeros.data(), zeros.size() * sizeof(std::int32_t));
+  }
+  iterations_done_ = 0;
+}
+
+void BeyerErosion::run() { step(iterations_); }
+
+void BeyerErosion::step(int count) {
+  bind();
+  const auto passes = static_cast<std::uint32_t>(spacing_) * static_cast<std::uint32_t>(spacing_);
+  for (int iteration = 0; iteration < count; ++iteration, ++iterations_done_) {
+    for (int offset_y = 0; offset_y < spacing_; ++offset_y) {
+      for (int offset_x = 0; offset_x < spacing_; ++offset_x) {
+        const std::uint32_t pass = static_cast<std::uint32_t>(offset_y * spacing_ + offset_x);
+        run_pass(offset_x, offset_y, iterations_done_ * passes + pass);
+      }
+    }
+  }
+}
+
+Grid<float> BeyerErosion::result() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  Grid<float> heights = layout_;
+  heights.values = heights_.download<float>(cell_count(layout_.width, layout_.height));
+  return heights;
+}
+
+void BeyerErosion::bind() const {
+  block_.bind(block_binding);
+  heights_.bind(heights_binding);
+  valid_.bind(valid_binding);
+  if (batch()) delta_.bind(delta_binding);
+}
+
+void BeyerErosion::run_pass(int offset_x, int offset_y, std::uint32_t pass_number) const {
+  glProgramUniform2i(droplets_program_.id(), offset_location_, offset_x, offset_y);
+  glProgramUniform1ui(droplets_program_.id(), pass_number_location_, pass_number);
+  droplets_program_.dispatch(droplets_x_, droplets_y_, local_size, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (!apply_program_) return;
+  apply_program_->dispatch(layout_.width, layout_.height, local_size, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+}  // namespace gt::gpu
