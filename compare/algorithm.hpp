@@ -73,6 +73,7 @@ Algorithm thermal_algorithm();
 Algorithm thermal_jako_algorithm();
 Algorithm pipe_algorithm();
 Algorithm particle_algorithm();
+Algorithm beyer_algorithm();
 std::vector<Algorithm> noise_algorithms();
 std::vector<Algorithm> cave_algorithms();
 Algorithm cave_endless_algorithm();

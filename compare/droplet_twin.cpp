@@ -457,9 +457,9 @@ void run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, con
   write_pictures(twin, truth, gpu_heights, float_run.run.heights, options, result);
   if (options.progress) options.progress->stage("terrain descriptors");
   const Grid<double> float_as_double = float_run.run.heights.cast<double>();
-  // Racing droplets are another algorithm than the sequential truth, judged by the race.* figures:
-  // their terrain is not held to the twins' descriptor parity.
-  const bool gpu_is_twin = gpu_heights && twin.setup.ordering != DropletOrdering::race;
+  // Racing and batch droplets are other algorithms than the sequential truth (judged by the race.*
+  // and batch.* figures): only disjoint droplets' terrain is held to the descriptors' parity.
+  const bool gpu_is_twin = gpu_heights && twin.setup.ordering == DropletOrdering::disjoint;
   const std::optional<Grid<double>> gpu_as_double =
       gpu_is_twin ? std::optional<Grid<double>>(gpu_heights->cast<double>()) : std::nullopt;
   add_case_descriptors({&twin.input, &truth.heights, &float_as_double, gpu_as_double ? &*gpu_as_double : nullptr},

@@ -323,6 +323,43 @@ std::string status_of_twin_checks(const json& report_case) {
   return order.at(worst);
 }
 
+// The droplet eroders (issue 12): every case passes; batch ordering is bit-exact against ref<float>
+// and closes its ledger exactly in quanta; race ordering reports its distance from the sequential
+// truth at every spacing rather than hiding it; the double ledger closes everywhere.
+TEST(CliRun, DropletSuitesMeetTheAcceptanceBounds) {
+  const TempDir work;
+  const fs::path out = work / "report";
+  const RunResult run = run_groundtruth(
+      {"run", "erosion.particle.*", "erosion.beyer.*", "--require-gpu", "--out", out.string()}, work.path());
+  ASSERT_EQ(run.status, 0) << run;
+  const json report = read_json(out / "report.json");
+  std::map<std::string, int> cases_of;
+  for (const auto& report_case : report.at("cases")) {
+    SCOPED_TRACE(report_case.at("name").get<std::string>());
+    ++cases_of[report_case.at("algorithm").get<std::string>()];
+    EXPECT_EQ(report_case.at("status"), "pass");
+    const json* closure = find_check(report_case, "ledger.closure.cpu");
+    ASSERT_NE(closure, nullptr);
+    EXPECT_LE(closure->at("value").get<double>(), 1e-12);
+    const auto ordering = report_case.at("params").at("ordering").get<std::string>();
+    if (ordering == "batch") {
+      for (const char* name : {"parity.cells_differing.gpu_vs_float", "ledger.quanta.cpu_float", "determinism.gpu"}) {
+        const json* check = find_check(report_case, name);
+        ASSERT_NE(check, nullptr) << name;
+        EXPECT_EQ(check->at("value").get<double>(), 0.0) << name;
+      }
+    } else if (ordering == "race") {
+      for (const int spacing : {16, 8, 4, 2, 1}) {
+        const json* distance = find_check(report_case, fmt::format("race.relative_rms.spacing_{}.gpu_vs_float", spacing));
+        ASSERT_NE(distance, nullptr) << spacing;
+        EXPECT_GT(distance->at("value").get<double>(), 0.0) << "racing droplets differ from the sequential truth";
+      }
+    }
+  }
+  EXPECT_GE(cases_of["erosion.particle"], 10);
+  EXPECT_GE(cases_of["erosion.beyer"], 10);
+}
+
 TEST(CliRun, PipeSuiteMeetsTheAcceptanceBounds) {
   const TempDir work;
   const fs::path out = work / "report";

@@ -1,0 +1,36 @@
+// Mutants of Beyer's droplet erosion twins (erosion.beyer); see compare/mutants/mutants.hpp. They
+// run on datasets/cases/erosion.beyer.json's probe (a noisy 48x48 cone, batch droplets, 3
+// iterations).
+//
+// one_twin: bugs in beyer_droplets.comp only, killed by the batch ordering's bit-for-bit parity
+// (parity.shadow.cells_differing and parity.cells_differing: the GPU against ref<float>, bound 0).
+//
+// both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by the droplet ledger
+// (ledger.*: material neither created nor lost where the model does not say so).
+#include "compare/mutants/mutants.hpp"
+
+namespace gt {
+
+std::vector<Mutant> beyer_mutants() {
+  const std::vector<std::string> probe = {"erosion.beyer.mutant_probe.batch"};
+  return {
+      {"erosion.beyer.gradient_swapped_corners", MutantKind::one_twin,
+       "beyer_droplets.comp takes eq. 2.35's y component from the corner pairs swapped: (h11 - h10)(1-u) + "
+       "(h01 - h00)u",
+       probe},
+      {"erosion.beyer.brush_unnormalised", MutantKind::one_twin,
+       "beyer_droplets.comp erodes amount·w at each brush sample, not amount·w/Σw (eq. 2.42's normalisation lost)",
+       probe},
+      {"erosion.beyer.deposit_at_new_position", MutantKind::one_twin,
+       "beyer_droplets.comp deposits on the samples around the droplet's new position instead of its old one", probe},
+      {"erosion.beyer.sediment_not_taken_on_erosion", MutantKind::both_twins,
+       "both twins erode with the brush without adding what it takes to the droplet's sediment: material destroyed",
+       probe},
+      {"erosion.beyer.uphill_deposit_unbounded", MutantKind::both_twins,
+       "both twins deposit the whole climb Δh uphill, not min(Δh, sediment), and clamp the sediment at 0: material "
+       "created",
+       probe},
+  };
+}
+
+}  // namespace gt
