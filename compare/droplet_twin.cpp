@@ -14,6 +14,7 @@
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
+#include "core/params/thermal.hpp"
 #include "core/sum.hpp"
 #include "gpu/timing.hpp"
 
@@ -456,14 +457,37 @@ void run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, con
   }
   write_pictures(twin, truth, gpu_heights, float_run.run.heights, options, result);
   if (options.progress) options.progress->stage("terrain descriptors");
-  const Grid<double> float_as_double = float_run.run.heights.cast<double>();
+  const auto own_units = [&](Grid<double> heights) {
+    for (double& height : heights.values) height = height * twin.height_scale + twin.height_offset;
+    if (!twin.height_unit.empty()) heights.vertical_unit = twin.height_unit;
+    return heights;
+  };
+  const Grid<double> input = own_units(twin.input);
+  const Grid<double> truth_heights = own_units(truth.heights);
+  const Grid<double> float_as_double = own_units(float_run.run.heights.cast<double>());
   // Racing and batch droplets are other algorithms than the sequential truth (judged by the race.*
   // and batch.* figures): only disjoint droplets' terrain is held to the descriptors' parity.
   const bool gpu_is_twin = gpu_heights && twin.setup.ordering == DropletOrdering::disjoint;
   const std::optional<Grid<double>> gpu_as_double =
-      gpu_is_twin ? std::optional<Grid<double>>(gpu_heights->cast<double>()) : std::nullopt;
-  add_case_descriptors({&twin.input, &truth.heights, &float_as_double, gpu_as_double ? &*gpu_as_double : nullptr},
+      gpu_is_twin ? std::optional<Grid<double>>(own_units(gpu_heights->cast<double>())) : std::nullopt;
+  add_case_descriptors({&input, &truth_heights, &float_as_double, gpu_as_double ? &*gpu_as_double : nullptr},
                        expect, options, result);
+}
+
+void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise) {
+  if (!normalise) {
+    twin.input = given;
+    return;
+  }
+  twin.input = normalise_heights(given);
+  const auto [low, high] = valid_range(given);
+  twin.height_scale = high > low ? high - low : 1.0;
+  twin.height_offset = low > high ? 0.0 : low;
+  twin.height_unit = given.vertical_unit;
+  twin.notes.push_back(fmt::format(
+      "heights normalised to [0, 1] as seed 000 does ((h - {:.6g})/{:.6g}); the kernel works in texels, so the cell "
+      "size does not enter; the terrain descriptors are measured in the input's own heights",
+      twin.height_offset, twin.height_scale));
 }
 
 std::vector<BenchmarkRow> droplet_benchmark_rows(const DropletTwin& twin, int reps, bool gpu_available,

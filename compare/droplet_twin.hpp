@@ -62,7 +62,16 @@ struct DropletTwin {
   // outer iterations.
   std::function<GpuFieldRunner(DropletSetup setup)> make_gpu;
   std::vector<std::string> notes;  // decisions taken for the user, said in the output
+  // The input's own heights from the twins' (h_own = h·height_scale + height_offset): the terrain
+  // descriptors are measured in the input's units, not in the normalised [0, 1] the kernel sees.
+  double height_scale = 1.0;
+  double height_offset = 0.0;
+  std::string height_unit;  // the input's vertical unit, when normalised
 };
+
+// The twins' input with normalised heights when `normalise` (seed 000's (h - min)/(max - min)),
+// and the scale and offset that undo it for the descriptors, with a note saying so.
+void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise);
 
 void run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, const RunOptions& options,
                       CaseResult& result);

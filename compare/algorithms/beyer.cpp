@@ -75,12 +75,7 @@ DropletTwin make_twin(const nlohmann::json& resolved, const Heightmap& given) {
   const Heightmap input = normalised ? normalise_heights(given) : given;
   const BeyerConstants c = beyer_constants(resolved, input);
   DropletTwin twin = beyer_twin(input, c);
-  if (normalised) {
-    const auto [low, high] = valid_range(given);
-    twin.notes.push_back(fmt::format("heights normalised to [0, 1] ((h - {:.6g})/{:.6g}); the kernel works in "
-                                     "texels, so the cell size does not enter",
-                                     low, high - low));
-  }
+  set_droplet_input(twin, given, normalised);
   if (given.has_mask()) {
     twin.notes.push_back("a droplet whose cell touches a no-data sample has left the map: it ends and its sediment "
                          "leaves with it; the brush skips no-data samples");

@@ -75,14 +75,8 @@ ParticleScenario make_scenario(const nlohmann::json& resolved, const Heightmap& 
   ParticleScenario scenario{{}, particle_constants(resolved, input)};
   const auto& c = scenario.constants;
   scenario.twin = particle_twin(input, c);
+  set_droplet_input(scenario.twin, given, normalised);
   auto& notes = scenario.twin.notes;
-  if (normalised) {
-    const auto [low, high] = valid_range(given);
-    notes.push_back(fmt::format(
-        "heights normalised to [0, 1] as seed 000 does ((h - {:.6g})/{:.6g}); the kernel works in texels, so the "
-        "cell size does not enter",
-        low, high - low));
-  }
   if (given.has_mask()) {
     notes.push_back("no-data cells behave as outside the grid: they read 0 and writes to them are lost (Hydra's "
                     "empty regions); the ledger counts what crosses them");
