@@ -34,6 +34,12 @@ const ParamSpecs& particle_param_specs() {
        "drop_max: no acceleration towards a neighbour more than this lower (part_maxjump)"},
       {"interpolate", ParamKind::boolean, true, 0, 0, {}, "",
        "erosion spread bilinearly over the 4 nearest texel centres (Algorithm 6); off: at the droplet's texel"},
+      {"colour_mixing", ParamKind::real, 0.2, 0.0, 1.0, {}, "1",
+       "f_col (color_mixing): on erosion a droplet's colour becomes f_col·texel + (1 - f_col)·colour (eq. 4.9); "
+       "used only when a colour map is transported"},
+      {"interpolate_colour", ParamKind::boolean, true, 0, 0, {}, "",
+       "colour deposited over the 4 nearest texel centres with weights f_col·w (Algorithm 8); off: at the "
+       "droplet's texel with weight f_col; used only when a colour map is transported"},
       {"ordering", ParamKind::choice, "batch", 0, 0, {"race", "disjoint", "batch"}, "",
        "droplets of one pass: race (Hydra's dispatch; compared statistically), disjoint (spacing keeps them "
        "apart; exact), batch (frozen heights and a fixed-point delta; bit-exact at any spacing)"},
@@ -57,6 +63,8 @@ ParticleConstants particle_constants(const nlohmann::json& resolved, const Heigh
   constants.capacity_factor = resolved.at("capacity_factor").get<double>();
   constants.max_jump = resolved.at("max_jump").get<double>();
   constants.interpolate = resolved.at("interpolate").get<bool>();
+  constants.colour_mixing = resolved.at("colour_mixing").get<double>();
+  constants.interpolate_colour = resolved.at("interpolate_colour").get<bool>();
   constants.ordering = droplet_ordering_from_name(resolved.at("ordering").get<std::string>());
   if (constants.ordering == DropletOrdering::disjoint && constants.spacing <= 2 * droplet_reach(constants.lifetime)) {
     throw InputError(fmt::format(

@@ -9,6 +9,9 @@
 // when `normalised` is off (then drop_max, capacity and the amounts are in those units).
 //
 // Orderings of the droplets of a pass and the batch quantum: core/params/droplets.hpp.
+//
+// Colour transport (§4.5) is optional per run: the reference and the GPU twin transport a colour map
+// only when given one; colour_mixing and interpolate_colour act on nothing otherwise.
 #pragma once
 
 #include <string>
@@ -34,6 +37,9 @@ struct ParticleConstants {
   double capacity_factor = 0.01;  // f_c (part_capacity x 1e-2)
   double max_jump = 0.1;       // drop_max (part_maxjump)
   bool interpolate = true;     // bilinear erosion over the 4 nearest texel centres (Algorithm 6)
+  // Colour transport (§4.5, Algorithm 8, eq. 4.9), used only when a run is given a colour map.
+  double colour_mixing = 0.2;     // f_col (color_mixing): share of the texel's colour a droplet picks up
+  bool interpolate_colour = true;  // colour deposited over the 4 nearest texel centres (colorize4)
   DropletOrdering ordering = DropletOrdering::race;
   double quantum = 0.0;        // batch: the height of one fixed-point unit (a power of two)
 };

@@ -10,9 +10,21 @@
 // downloads. Orderings as core/params/particle.hpp: race and disjoint run the droplets of a pass in
 // place on one height buffer; batch freezes the heights during a pass and applies the droplets'
 // fixed-point delta when it ends. Positions in texels, heights in the caller's units.
+//
+// Side maps: eroded_at_droplet() / deposited_at_droplet() download what the droplets eroded and
+// deposited at the texel they stood on, summed over the run since the last load() (no contrast):
+// float sums (race, disjoint) or int32 counts of quanta returned as float(count)·quantum (batch).
+// Colour (§4.5): constructed with transport_colour = true, the kernel is compiled with
+// PARTICLE_COLOUR and transports the colour map given by load_colour() (after each load(); run()
+// and step() refuse to run without it); colour_result() downloads it. Constructed without it the
+// kernel holds no colour code and load_colour() / colour_result() are refused. Batch: colour frozen
+// during a pass, the deposits' weighted mean applied at its end (gpu/shaders/erosion/
+// particle_apply.comp). Buffer bindings: 0 parameter block, 1 heights, 2 valid, 3 batch delta,
+// 4 eroded_at_droplet, 5 deposited_at_droplet, 6 colour (vec4), 7 batch colour sums (5 int per cell).
 // Needs a current GlContext.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "core/grid.hpp"
@@ -22,17 +34,26 @@
 
 namespace gt::gpu {
 
+// RGBA per texel, linear: the same type as reference::ColourMap<float> (reference/erosion/droplets.hpp).
+template <class Real>
+using ColourMap = Grid<std::array<Real, 4>>;
+
 class ParticleErosion {
  public:
-  ParticleErosion(int width, int height, const ParticleConstants& constants);
-  void load(const Grid<float>& heights);  // heights and mask (Grid::valid, empty = all valid)
+  ParticleErosion(int width, int height, const ParticleConstants& constants, bool transport_colour = false);
+  void load(const Grid<float>& heights);  // heights and mask (Grid::valid, empty = all valid); zeroes the side maps
+  void load_colour(const ColourMap<float>& colour);  // after load(); needs transport_colour
   void run();                              // constants.iterations outer iterations
   void step(int count);                    // `count` outer iterations from the current state
   Grid<float> result() const;              // download, geometry/units/mask of the last load
+  ColourMap<float> colour_result() const;  // the transported colour, geometry/units/mask of the last load
+  Grid<float> eroded_at_droplet() const;    // side map: eroded by the droplets standing on each texel
+  Grid<float> deposited_at_droplet() const;  // side map: deposited by the droplets standing on each texel
 
  private:
   bool batch() const { return apply_program_.has_value(); }
   void bind() const;
+  Grid<float> side_map(const StorageBuffer& buffer) const;
   // One draw of Algorithm 7: every droplet of the pass with offset (offset_x, offset_y), then (batch)
   // the delta applied.
   void run_pass(int offset_x, int offset_y) const;
@@ -49,6 +70,13 @@ class ParticleErosion {
   StorageBuffer heights_;
   StorageBuffer valid_;
   StorageBuffer delta_;  // batch: one int per cell; otherwise 16 unused bytes
+  StorageBuffer eroded_;     // side map: one float (batch: int quanta) per cell
+  StorageBuffer deposited_;  // side map: one float (batch: int quanta) per cell
+  StorageBuffer colour_;       // transport_colour: one vec4 per cell; otherwise 16 unused bytes
+  StorageBuffer colour_sums_;  // transport_colour and batch: 5 int per cell; otherwise 16 unused bytes
+  float quantum_;              // batch: the quantum as the shader has it
+  bool transport_colour_;
+  bool colour_loaded_ = false;  // load_colour() since the last load()
 };
 
 }  // namespace gt::gpu

@@ -1,5 +1,6 @@
 // What a droplet eroder's reference returns (reference/erosion/particle.hpp for Hydra's kernel,
-// reference/erosion/beyer.hpp for Beyer's): the heights, the side maps and the droplet ledger.
+// reference/erosion/beyer.hpp for Beyer's): the heights, the side maps, the droplet ledger and (Hydra,
+// when asked) the transported colour map.
 //
 // The ledger (double, summed over every pass) names every place where material enters or leaves
 // the terrain, so that
@@ -8,6 +9,8 @@
 // and in batch ordering the same identity holds exactly in quanta (the *_quanta fields).
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
@@ -20,6 +23,12 @@
 #include "core/grid.hpp"
 
 namespace gt::reference {
+
+// A colour map (Hydra's rgba32f colour texture, §4.4.1, §4.5): RGBA per texel, linear, any values.
+// A droplet eroder that transports it reads masked and off-grid texels as (0, 0, 0, 0) and loses
+// writes there, as it does heights (the heights' mask decides; the colour map's own is not read).
+template <class Real>
+using ColourMap = Grid<std::array<Real, 4>>;
 
 struct DropletLedger {
   double eroded = 0.0;             // taken from terrain cells (inside the grid, valid)
@@ -44,10 +53,12 @@ template <class Real>
 struct DropletRun {
   Grid<Real> heights;
   // The side maps, before any contrast: what each droplet eroded in all and deposited, at the texel
-  // it stood on (Hydra's depth and sediment maps, as its kernel writes them).
+  // it stood on (Hydra's depth and sediment maps, as its kernel writes them). Hydra's reference sums
+  // them in Real, as the GPU does, and stores the sums here as double (exactly the Real values).
   Grid<double> eroded_at_droplet;
   Grid<double> deposited_at_droplet;
   DropletLedger ledger;
+  ColourMap<Real> colour;  // the transported colour map; empty when the run transported none
 };
 
 // The batch ordering's change of each cell during one pass, in quanta, and its application when the
@@ -86,6 +97,73 @@ class BatchDelta {
  private:
   std::vector<long long> delta_;
   Real quantum_;
+  std::string algorithm_;
+};
+
+// The batch ordering's colour deposits of one pass (Hydra's colour transport, reference/erosion/
+// particle.cpp), order-independent as the GPU's atomics need: each cell collects Σ factor_k and
+// Σ factor_k·colour_k per channel, each term rounded to a count of `unit` = 2^-20
+// (nearbyint(x·2^20), ties to even as GLSL's roundEven), and apply() replaces the cell's colour by
+// the weighted mean of its start colour (weight 1) and the deposits:
+//   C = (C + Real(Σ factor·colour)·unit) / (1 + Real(Σ factor)·unit)        per channel,
+// as particle_apply.comp does, then clears the sums. Cells without deposits are left alone. The GPU
+// counts in int32: a term or a sum beyond it is refused (runtime_error naming `algorithm`).
+template <class Real>
+class ColourDelta {
+ public:
+  static constexpr double unit = 1.0 / 1048576.0;  // 2^-20
+  static constexpr double units_per_one = 1048576.0;
+
+  ColourDelta(std::size_t cells, std::string algorithm) : sums_(cells), algorithm_(std::move(algorithm)) {}
+
+  // A deposit of `colour` with weight `factor` (f_col·w) into `cell`; the quanta of factor and of
+  // each factor·colour[ch], the products rounded to Real first.
+  void add(std::size_t cell, Real factor, const std::array<Real, 4>& colour) {
+    auto& sums = sums_[cell];
+    sums[0] += count(factor);
+    for (int ch = 0; ch < 4; ++ch) {
+      const Real weighted = factor * colour[ch];
+      sums[1 + ch] += count(weighted);
+    }
+  }
+
+  void apply(ColourMap<Real>& colour) {
+    const Real to_real = static_cast<Real>(unit);
+    for (std::size_t i = 0; i < sums_.size(); ++i) {
+      auto& sums = sums_[i];
+      if (sums == std::array<long long, 5>{}) continue;
+      for (const long long sum : sums) check(sum, "sum in one cell");
+      const Real denominator = Real(1) + static_cast<Real>(sums[0]) * to_real;
+      for (int ch = 0; ch < 4; ++ch) {
+        const Real numerator = colour.values[i][ch] + static_cast<Real>(sums[1 + ch]) * to_real;
+        colour.values[i][ch] = numerator / denominator;
+      }
+      sums = {};
+    }
+  }
+
+ private:
+  long long count(Real amount) const {
+    const Real scaled = amount * static_cast<Real>(units_per_one);  // exact: a power of two
+    if (!(std::abs(scaled) <= static_cast<Real>(std::numeric_limits<std::int32_t>::max()))) refuse("term");
+    const long long result = static_cast<long long>(std::nearbyint(scaled));
+    check(result, "term");
+    return result;
+  }
+
+  void check(long long value, const char* what) const {
+    if (std::llabs(value) > std::numeric_limits<std::int32_t>::max()) refuse(what);
+  }
+
+  [[noreturn]] void refuse(const char* what) const {
+    throw std::runtime_error(fmt::format(
+        "{}: a batch colour {} beyond the GPU's 32-bit counter (units of 2^-20): the colours or the droplets "
+        "depositing into one cell in one pass are too many or too large; scale the colours down, or use a larger "
+        "spacing or the race ordering",
+        algorithm_, what));
+  }
+
+  std::vector<std::array<long long, 5>> sums_;
   std::string algorithm_;
 };
 

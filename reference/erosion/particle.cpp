@@ -15,12 +15,33 @@
 //   - the loop ends when a coordinate of the position is <= 0; nothing checks the far edges:
 //     reads outside give 0 and writes there are lost (GLSL images), emulated here, masked cells
 //     alike.
+//   - colour transport (§4.5, Algorithm 8, eq. 4.9, Appendix A's useColor branches), when a colour
+//     map is given: a droplet starts with the colour of its start texel; on erosion (inside
+//     h > min_h, after the erosion) col = f_col·C(ipos) + (1 - f_col)·col; on deposition (after the
+//     height) colorize4 at the 4 texel centres of erode4 (the same truncated corner and weight
+//     products) with factor f_col·w: C = C·(1 - factor) + col·factor, no height condition; without
+//     interpolate_colour C(ipos) = C(ipos)·(1 - f_col) + f_col·col. (1 - f_col) and (1 - factor)
+//     are rounded once, the operations in this order in both twins.
 // Decisions of this project (issue 12): the droplets of one pass run in row-major order of their
 // blocks (the truth), or in batch ordering against the pass's frozen heights with integer quanta
 // (core/params/particle.hpp). Units: texels and steps; heights in the units of the constants.
+// Batch ordering and colour: the colour is frozen during the pass like the heights (pick-ups read
+// the pass's start colour), and a blend being order-dependent, each cell's colour at the pass's end
+// is the weighted mean of its start colour (weight 1) and the colours deposited there (weights
+// f_col·w_k, or f_col at ipos without interpolation), summed as fixed-point integers of 2^-20
+// (ColourDelta in reference/erosion/droplets.hpp): every channel stays within the range of the
+// colours involved while the weights are in [0, 1] (up to those quanta). Near x = 0 or y = 0 the
+// truncated corner gives weights outside [0, 1] (as erode4's), and the colour may leave that range
+// there, in every ordering, as upstream.
+// Side maps: what each droplet eroded (erode()'s return: add·Σw, or add) and deposited, at its texel
+// ipos when open, summed in Real in droplet order (map = map + amount, the GPU's read-modify-write)
+// or, in batch, as counts of the quanta the heights moved (the corners' quanta summed; the deposit's),
+// converted when the run ends as Real(count)·quantum. No contrast (Hydra's cE, cD) is applied.
 #include "reference/erosion/particle.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -46,11 +67,17 @@ struct Kernel {
         max_jump(static_cast<Real>(c.max_jump)),
         quantum(static_cast<Real>(c.quantum)),
         inverse_quantum(static_cast<Real>(1.0 / c.quantum)),
+        colour_mixing(static_cast<Real>(c.colour_mixing)),
+        colour_kept(Real(1) - colour_mixing),
         lifetime(c.lifetime),
-        interpolate(c.interpolate) {}
+        interpolate(c.interpolate),
+        interpolate_colour(c.interpolate_colour) {}
   Real acceleration, bite, release, max_velocity, drag, capacity_factor, max_jump, quantum, inverse_quantum;
+  Real colour_mixing;  // f_col
+  Real colour_kept;    // 1 - f_col, rounded once
   int lifetime;
   bool interpolate;
+  bool interpolate_colour;
   // The deliberate bugs of compare/mutants/particle.cpp that live in both twins.
   bool rescaled_velocity = mutant_active("erosion.particle.rescaled_velocity");
   bool kept_sediment_on_deposit = mutant_active("erosion.particle.kept_sediment_on_deposit");
@@ -62,20 +89,48 @@ struct Texel {
   int y;
 };
 
-// The heights the droplets of one pass see and change, with what they did to them. Sequential:
-// reads and writes go to the heights. Batch: reads see the heights as the pass found them and
-// changes collect as quanta in `delta` until apply().
+template <class Real>
+using Colour = std::array<Real, 4>;  // RGBA
+
+// The side maps while a run goes: sequential, Real sums in droplet order; batch, counts of quanta.
+template <class Real>
+struct SideSums {
+  SideSums(std::size_t cells, bool batch) {
+    if (batch) {
+      eroded_quanta.assign(cells, 0);
+      deposited_quanta.assign(cells, 0);
+    } else {
+      eroded.assign(cells, Real(0));
+      deposited.assign(cells, Real(0));
+    }
+  }
+  std::vector<Real> eroded, deposited;
+  std::vector<long long> eroded_quanta, deposited_quanta;
+};
+
+// What erode() moved: the amount (sequential) or its quanta (batch) the droplet picked up.
+template <class Real>
+struct Moved {
+  Real amount = 0;
+  long long quanta = 0;
+};
+
+// The heights (and colour, when transported) the droplets of one pass see and change, with what
+// they did to them. Sequential: reads and writes go to the run's maps. Batch: reads see the maps as
+// the pass found them and changes collect in `delta` (and `colour_delta`) until apply().
 template <class Real>
 class PassTerrain {
  public:
-  PassTerrain(DropletRun<Real>& run, const Kernel<Real>& kernel, bool batch)
-      : run_(run), kernel_(kernel) {
+  PassTerrain(DropletRun<Real>& run, const Kernel<Real>& kernel, bool batch, SideSums<Real>& sides)
+      : run_(run), kernel_(kernel), sides_(sides), colour_(run.colour.values.empty() ? nullptr : &run.colour) {
     if (batch) delta_.emplace(run.heights.size(), kernel.quantum, "erosion.particle");
+    if (batch && colour_ != nullptr) colour_delta_.emplace(run.heights.size(), "erosion.particle");
   }
 
   bool holds(Texel t) const { return run_.heights.inside(t.x, t.y) && run_.heights.is_valid(t.x, t.y); }
   Real load(Texel t) const { return holds(t) ? run_.heights.at(t.x, t.y) : Real(0); }
   bool batch() const { return delta_.has_value(); }
+  bool colours() const { return colour_ != nullptr; }
   DropletLedger& ledger() { return run_.ledger; }
 
   long long quanta(Real amount) const {
@@ -91,22 +146,50 @@ class PassTerrain {
     if (holds(t)) delta_->add(run_.heights.index(t.x, t.y), count);
   }
 
-  void mark_side_maps(Texel at, double eroded, double deposited) {
-    if (!holds(at)) return;
-    run_.eroded_at_droplet.at(at.x, at.y) += eroded;
-    run_.deposited_at_droplet.at(at.x, at.y) += deposited;
+  // The texel's colour; (0, 0, 0, 0) off the grid and on masked texels.
+  Colour<Real> load_colour(Texel t) const { return holds(t) ? colour_->at(t.x, t.y) : Colour<Real>{}; }
+  // Sequential: the texel's colour becomes `value`.
+  void store_colour(Texel t, const Colour<Real>& value) {
+    if (holds(t)) colour_->at(t.x, t.y) = value;
+  }
+  // Batch: `colour` deposited with weight `factor` at the texel when the pass ends.
+  void add_colour(Texel t, Real factor, const Colour<Real>& colour) {
+    if (holds(t)) colour_delta_->add(run_.heights.index(t.x, t.y), factor, colour);
   }
 
-  // Batch: heights + delta·quantum rounded to Real, as particle_apply.comp does.
+  void mark_eroded(Texel at, const Moved<Real>& eroded) {
+    if (!holds(at)) return;
+    const std::size_t i = run_.heights.index(at.x, at.y);
+    if (batch()) {
+      sides_.eroded_quanta[i] += eroded.quanta;
+    } else {
+      sides_.eroded[i] = sides_.eroded[i] + eroded.amount;
+    }
+  }
+  void mark_deposited(Texel at, Real amount, long long quanta) {
+    if (!holds(at)) return;
+    const std::size_t i = run_.heights.index(at.x, at.y);
+    if (batch()) {
+      sides_.deposited_quanta[i] += quanta;
+    } else {
+      sides_.deposited[i] = sides_.deposited[i] + amount;
+    }
+  }
+
+  // Batch: heights + delta·quantum rounded to Real, then the colours' weighted means, as
+  // particle_apply.comp does.
   void apply() {
     if (delta_) delta_->apply(run_.heights, run_.ledger);
+    if (colour_delta_) colour_delta_->apply(*colour_);
   }
-
 
  private:
   DropletRun<Real>& run_;
   const Kernel<Real>& kernel_;
-  std::optional<BatchDelta<Real>> delta_;  // batch ordering only
+  SideSums<Real>& sides_;
+  ColourMap<Real>* colour_;                         // null when no colour is transported
+  std::optional<BatchDelta<Real>> delta_;           // batch ordering only
+  std::optional<ColourDelta<Real>> colour_delta_;   // batch ordering with colour only
 };
 
 template <class Real>
@@ -116,6 +199,7 @@ struct Droplet {
   Real vel_x = 0, vel_y = 0;
   Real sediment = 0;            // sequential
   long long sediment_quanta = 0;  // batch
+  Colour<Real> colour{};        // col, when colour is transported
 };
 
 template <class Real>
@@ -147,47 +231,64 @@ Real accelerate_axis(Real velocity, Real height, Real ahead, Real behind, const 
   return velocity;
 }
 
-// Algorithm 6 as upstream's erode4: the amount removed at each corner higher than the
-// neighbourhood minimum; returns the weight of the corners eroded (sequential ordering).
+// The 4 texel centres around the droplet, erode4's and colorize4's: the corner cell
+// ivec2(pos - 0.5) by truncation (as upstream), then +x, +y, +xy, with the bilinear weights
+// (1-fx)(1-fy), fx(1-fy), (1-fx)fy, fx·fy.
 template <class Real>
-Real erode_corners(PassTerrain<Real>& terrain, Droplet<Real>& drop, Real amount, Real lowest) {
+struct Corners {
+  Texel cells[4];
+  Real weights[4];
+};
+
+template <class Real>
+Corners<Real> corners_around(const Droplet<Real>& drop) {
   const Real corner_x = drop.pos_x - Real(0.5), corner_y = drop.pos_y - Real(0.5);
   const Texel corner{static_cast<int>(corner_x), static_cast<int>(corner_y)};  // truncation, as ivec2()
   const Real fx = corner_x - static_cast<Real>(corner.x), fy = corner_y - static_cast<Real>(corner.y);
   const Real gx = Real(1) - fx, gy = Real(1) - fy;
-  const Texel cells[4] = {corner, {corner.x + 1, corner.y}, {corner.x, corner.y + 1}, {corner.x + 1, corner.y + 1}};
-  const Real weights[4] = {gx * gy, fx * gy, gx * fy, fx * fy};
+  return {{corner, {corner.x + 1, corner.y}, {corner.x, corner.y + 1}, {corner.x + 1, corner.y + 1}},
+          {gx * gy, fx * gy, gx * fy, fx * fy}};
+}
+
+// Algorithm 6 as upstream's erode4: the amount removed at each corner higher than the
+// neighbourhood minimum; returns the weight of the corners eroded and (batch) their quanta.
+template <class Real>
+std::pair<Real, long long> erode_corners(PassTerrain<Real>& terrain, Droplet<Real>& drop, Real amount, Real lowest) {
+  const Corners<Real> corners = corners_around(drop);
   Real eroded_weight = 0;
+  long long eroded_quanta = 0;
   DropletLedger& ledger = terrain.ledger();
   for (int k = 0; k < 4; ++k) {
-    const Real height = terrain.load(cells[k]);
+    const Texel cell = corners.cells[k];
+    const Real height = terrain.load(cell);
     if (!(height > lowest)) continue;
-    const Real taken = amount * weights[k];
+    const Real taken = amount * corners.weights[k];
     if (terrain.batch()) {
       const long long quanta = terrain.quanta(taken);
-      terrain.add_quanta(cells[k], -quanta);
+      terrain.add_quanta(cell, -quanta);
       drop.sediment_quanta += quanta;
-      (terrain.holds(cells[k]) ? ledger.eroded_quanta : ledger.eroded_outside_quanta) += quanta;
+      eroded_quanta += quanta;
+      (terrain.holds(cell) ? ledger.eroded_quanta : ledger.eroded_outside_quanta) += quanta;
     } else {
-      terrain.store(cells[k], height - taken);
-      (terrain.holds(cells[k]) ? ledger.eroded : ledger.eroded_outside) += static_cast<double>(taken);
+      terrain.store(cell, height - taken);
+      (terrain.holds(cell) ? ledger.eroded : ledger.eroded_outside) += static_cast<double>(taken);
     }
-    eroded_weight = eroded_weight + weights[k];
+    eroded_weight = eroded_weight + corners.weights[k];
   }
-  return eroded_weight;
+  return {eroded_weight, eroded_quanta};
 }
 
 // The erosion branch: `add` bounded by the neighbourhood minimum, spread or at the texel. Returns
-// what the droplet picked up (for the side map).
+// what the droplet picked up (for the side map): the amount, or in batch its quanta.
 template <class Real>
-Real erode(PassTerrain<Real>& terrain, Droplet<Real>& drop, Real height, Real add, Real lowest,
-           const Kernel<Real>& k) {
+Moved<Real> erode(PassTerrain<Real>& terrain, Droplet<Real>& drop, Real height, Real add, Real lowest,
+                  const Kernel<Real>& k) {
   DropletLedger& ledger = terrain.ledger();
   if (k.interpolate) {
-    const Real weight = erode_corners(terrain, drop, add, lowest);
+    const auto [weight, quanta] = erode_corners(terrain, drop, add, lowest);
     const Real picked = add * weight;
     if (!terrain.batch()) drop.sediment = drop.sediment + picked;
-    return picked;
+    return {picked, quanta};
   }
   const Real removed = height - std::max(height - add, Real(0));
   if (terrain.batch()) {
@@ -196,29 +297,69 @@ Real erode(PassTerrain<Real>& terrain, Droplet<Real>& drop, Real height, Real ad
     drop.sediment_quanta += added_quanta;
     (terrain.holds(drop.texel) ? ledger.eroded_quanta : ledger.eroded_outside_quanta) += removed_quanta;
     ledger.clamp_created_quanta += added_quanta - removed_quanta;
-  } else {
-    terrain.store(drop.texel, std::max(height - add, Real(0)));
-    drop.sediment = drop.sediment + add;
-    (terrain.holds(drop.texel) ? ledger.eroded : ledger.eroded_outside) += static_cast<double>(removed);
-    ledger.clamp_created += static_cast<double>(add) - static_cast<double>(removed);
+    return {add, added_quanta};
   }
-  return add;
+  terrain.store(drop.texel, std::max(height - add, Real(0)));
+  drop.sediment = drop.sediment + add;
+  (terrain.holds(drop.texel) ? ledger.eroded : ledger.eroded_outside) += static_cast<double>(removed);
+  ledger.clamp_created += static_cast<double>(add) - static_cast<double>(removed);
+  return {add, 0};
 }
 
-// The deposition branch, at the droplet's texel only.
+// The deposition branch, at the droplet's texel only. Returns (batch) the quanta deposited.
 template <class Real>
-void deposit(PassTerrain<Real>& terrain, Droplet<Real>& drop, Real height, Real add, const Kernel<Real>& k) {
+long long deposit(PassTerrain<Real>& terrain, Droplet<Real>& drop, Real height, Real add, const Kernel<Real>& k) {
   DropletLedger& ledger = terrain.ledger();
   if (terrain.batch()) {
     const long long quanta = terrain.quanta(add);
     terrain.add_quanta(drop.texel, quanta);
     if (!k.kept_sediment_on_deposit) drop.sediment_quanta -= quanta;
     (terrain.holds(drop.texel) ? ledger.deposited_quanta : ledger.deposited_outside_quanta) += quanta;
-  } else {
-    terrain.store(drop.texel, height + add);
-    if (!k.kept_sediment_on_deposit) drop.sediment = drop.sediment - add;
-    (terrain.holds(drop.texel) ? ledger.deposited : ledger.deposited_outside) += static_cast<double>(add);
+    return quanta;
   }
+  terrain.store(drop.texel, height + add);
+  if (!k.kept_sediment_on_deposit) drop.sediment = drop.sediment - add;
+  (terrain.holds(drop.texel) ? ledger.deposited : ledger.deposited_outside) += static_cast<double>(add);
+  return 0;
+}
+
+// Eq. 4.9 on erosion: col = f_col·C(ipos) + (1 - f_col)·col (batch: the pass's start colour).
+template <class Real>
+void pick_up_colour(const PassTerrain<Real>& terrain, Droplet<Real>& drop, const Kernel<Real>& k) {
+  const Colour<Real> texel = terrain.load_colour(drop.texel);
+  for (int ch = 0; ch < 4; ++ch) drop.colour[ch] = k.colour_mixing * texel[ch] + k.colour_kept * drop.colour[ch];
+}
+
+// `factor` of the droplet's colour blended into the texel: C·(1 - factor) + col·factor (sequential),
+// or the weighted deposit of the batch ordering.
+template <class Real>
+void blend_colour(PassTerrain<Real>& terrain, const Droplet<Real>& drop, Texel cell, Real factor) {
+  if (terrain.batch()) {
+    terrain.add_colour(cell, factor, drop.colour);
+    return;
+  }
+  const Real rest = Real(1) - factor;
+  Colour<Real> colour = terrain.load_colour(cell);
+  for (int ch = 0; ch < 4; ++ch) colour[ch] = colour[ch] * rest + drop.colour[ch] * factor;
+  terrain.store_colour(cell, colour);
+}
+
+// The colour deposit after a height deposit: colorize4 (Algorithm 8, factor f_col·w at erode4's 4
+// corners, no height condition) or, without interpolation, C(ipos) = C(ipos)·(1 - f_col) + f_col·col.
+template <class Real>
+void deposit_colour(PassTerrain<Real>& terrain, const Droplet<Real>& drop, const Kernel<Real>& k) {
+  if (k.interpolate_colour) {
+    const Corners<Real> corners = corners_around(drop);
+    for (int c = 0; c < 4; ++c) blend_colour(terrain, drop, corners.cells[c], k.colour_mixing * corners.weights[c]);
+    return;
+  }
+  if (terrain.batch()) {
+    terrain.add_colour(drop.texel, k.colour_mixing, drop.colour);
+    return;
+  }
+  Colour<Real> colour = terrain.load_colour(drop.texel);
+  for (int ch = 0; ch < 4; ++ch) colour[ch] = colour[ch] * k.colour_kept + k.colour_mixing * drop.colour[ch];
+  terrain.store_colour(drop.texel, colour);
 }
 
 // One step of a droplet (Appendix A's loop body); false when the droplet left across x or y <= 0.
@@ -247,13 +388,16 @@ bool step(PassTerrain<Real>& terrain, Droplet<Real>& drop, const Kernel<Real>& k
     difference = difference * k.bite;
     if (height > n.lowest) {
       const Real add = k.unbounded_erosion ? difference : std::min(difference, height - n.lowest);
-      terrain.mark_side_maps(drop.texel, static_cast<double>(erode(terrain, drop, height, add, n.lowest, k)), 0.0);
+      const Moved<Real> eroded = erode(terrain, drop, height, add, n.lowest, k);
+      if (terrain.colours()) pick_up_colour(terrain, drop, k);
+      terrain.mark_eroded(drop.texel, eroded);
     }
   } else if (height < n.highest) {
     difference = difference * k.release;
     const Real add = std::min(-difference, n.highest - height);
-    deposit(terrain, drop, height, add, k);
-    terrain.mark_side_maps(drop.texel, 0.0, static_cast<double>(add));
+    const long long quanta = deposit(terrain, drop, height, add, k);
+    if (terrain.colours()) deposit_colour(terrain, drop, k);
+    terrain.mark_deposited(drop.texel, add, quanta);
   }
   drop.pos_x = drop.pos_x + norm_x;
   drop.pos_y = drop.pos_y + norm_y;
@@ -261,9 +405,13 @@ bool step(PassTerrain<Real>& terrain, Droplet<Real>& drop, const Kernel<Real>& k
   return !(drop.pos_x <= 0 || drop.pos_y <= 0);
 }
 
+// A droplet at rest at the centre of texel `base`, carrying that texel's colour when colour is
+// transported.
 template <class Real>
-Droplet<Real> start_droplet(int base_x, int base_y) {
-  return Droplet<Real>{static_cast<Real>(base_x) + Real(0.5), static_cast<Real>(base_y) + Real(0.5), {base_x, base_y}};
+Droplet<Real> start_droplet(const PassTerrain<Real>& terrain, int base_x, int base_y) {
+  Droplet<Real> drop{static_cast<Real>(base_x) + Real(0.5), static_cast<Real>(base_y) + Real(0.5), {base_x, base_y}};
+  if (terrain.colours()) drop.colour = terrain.load_colour(drop.texel);
+  return drop;
 }
 
 // Runs a droplet's life; the sediment it still carries leaves the terrain with it.
@@ -300,55 +448,108 @@ void express_quanta(DropletLedger& ledger, double quantum) {
 
 // One draw of Algorithm 7: a droplet per block of the ceil(W/S) x ceil(H/S) grid, row-major.
 template <class Real>
-void run_pass(DropletRun<Real>& run, const Kernel<Real>& k, int spacing, Texel offset, bool batch) {
-  PassTerrain<Real> terrain(run, k, batch);
+void run_pass(DropletRun<Real>& run, const Kernel<Real>& k, SideSums<Real>& sides, int spacing, Texel offset,
+              bool batch) {
+  PassTerrain<Real> terrain(run, k, batch, sides);
   const int blocks_x = (run.heights.width + spacing - 1) / spacing;
   const int blocks_y = (run.heights.height + spacing - 1) / spacing;
   for (int j = 0; j < blocks_y; ++j) {
     for (int i = 0; i < blocks_x; ++i) {
-      Droplet<Real> drop = start_droplet<Real>(i * spacing + offset.x, j * spacing + offset.y);
+      Droplet<Real> drop = start_droplet(terrain, i * spacing + offset.x, j * spacing + offset.y);
       run_droplet(terrain, drop, k);
     }
   }
   terrain.apply();
 }
 
+// The side maps from their sums: the Real sums as they are, or Real(count)·quantum (the GPU's int32
+// counts converted on download; a count beyond int32 is refused).
+template <class Real>
+void express_side_maps(DropletRun<Real>& run, const SideSums<Real>& sides, const Kernel<Real>& k, bool batch) {
+  const auto express = [&](const std::vector<Real>& sums, const std::vector<long long>& counts, Grid<double>& map,
+                           const char* name) {
+    for (std::size_t i = 0; i < map.size(); ++i) {
+      if (!batch) {
+        map.values[i] = static_cast<double>(sums[i]);
+        continue;
+      }
+      if (std::llabs(counts[i]) > std::numeric_limits<std::int32_t>::max()) {
+        throw std::runtime_error(fmt::format(
+            "erosion.particle: the batch side map `{}` holds {} quanta in one cell, beyond the GPU's 32-bit counter; "
+            "use fewer iterations",
+            name, counts[i]));
+      }
+      map.values[i] = static_cast<double>(static_cast<Real>(counts[i]) * k.quantum);
+    }
+  };
+  express(sides.eroded, sides.eroded_quanta, run.eroded_at_droplet, "eroded_at_droplet");
+  express(sides.deposited, sides.deposited_quanta, run.deposited_at_droplet, "deposited_at_droplet");
+}
+
+template <class Real>
+DropletRun<Real> empty_run(const Grid<Real>& heights) {
+  DropletRun<Real> run{heights, heights.template cast<double>(), heights.template cast<double>(), {}, {}};
+  std::fill(run.eroded_at_droplet.values.begin(), run.eroded_at_droplet.values.end(), 0.0);
+  std::fill(run.deposited_at_droplet.values.begin(), run.deposited_at_droplet.values.end(), 0.0);
+  return run;
+}
+
+template <class Real>
+void check_colour_size(const Grid<Real>& heights, const ColourMap<Real>& colour, const char* what) {
+  if (colour.width != heights.width || colour.height != heights.height || colour.size() != heights.size()) {
+    throw std::invalid_argument(fmt::format("{}: the colour map's size differs from the heights'", what));
+  }
+}
+
 }  // namespace
 
 template <class Real>
 DropletRun<Real> particle_erosion(const Grid<Real>& heights, const ParticleConstants& constants, int iterations,
-                                   DropletOrdering ordering) {
+                                   DropletOrdering ordering, const ColourMap<Real>* colour) {
   const Kernel<Real> kernel(constants);
-  DropletRun<Real> run{heights, heights.template cast<double>(), heights.template cast<double>(), {}};
-  std::fill(run.eroded_at_droplet.values.begin(), run.eroded_at_droplet.values.end(), 0.0);
-  std::fill(run.deposited_at_droplet.values.begin(), run.deposited_at_droplet.values.end(), 0.0);
+  DropletRun<Real> run = empty_run(heights);
+  if (colour != nullptr) {
+    check_colour_size(heights, *colour, "particle_erosion");
+    run.colour = *colour;
+  }
   const bool batch = ordering == DropletOrdering::batch;
+  SideSums<Real> sides(heights.size(), batch);
   for (int iteration = 0; iteration < iterations; ++iteration) {
     for (int y = 0; y < constants.spacing; ++y) {
-      for (int x = 0; x < constants.spacing; ++x) run_pass(run, kernel, constants.spacing, {x, y}, batch);
+      for (int x = 0; x < constants.spacing; ++x) run_pass(run, kernel, sides, constants.spacing, {x, y}, batch);
     }
   }
+  express_side_maps(run, sides, kernel, batch);
   if (batch) express_quanta(run.ledger, constants.quantum);
   return run;
 }
 
 template <class Real>
-DropletPath<Real> run_one_droplet(Grid<Real>& heights, const ParticleConstants& constants, int base_x, int base_y) {
+DropletPath<Real> run_one_droplet(Grid<Real>& heights, const ParticleConstants& constants, int base_x, int base_y,
+                                  ColourMap<Real>* colour) {
   const Kernel<Real> kernel(constants);
-  DropletRun<Real> run{heights, heights.template cast<double>(), heights.template cast<double>(), {}};
-  PassTerrain<Real> terrain(run, kernel, false);
+  DropletRun<Real> run = empty_run(heights);
+  if (colour != nullptr) {
+    check_colour_size(heights, *colour, "run_one_droplet");
+    run.colour = *colour;
+  }
+  SideSums<Real> sides(heights.size(), false);
+  PassTerrain<Real> terrain(run, kernel, false, sides);
   DropletPath<Real> path;
-  Droplet<Real> drop = start_droplet<Real>(base_x, base_y);
+  Droplet<Real> drop = start_droplet(terrain, base_x, base_y);
   path.positions.emplace_back(drop.pos_x, drop.pos_y);
   run_droplet(terrain, drop, kernel, &path.positions);
   path.sediment = drop.sediment;
   heights = run.heights;
+  if (colour != nullptr) *colour = run.colour;
   return path;
 }
 
-template DropletRun<double> particle_erosion(const Grid<double>&, const ParticleConstants&, int, DropletOrdering);
-template DropletRun<float> particle_erosion(const Grid<float>&, const ParticleConstants&, int, DropletOrdering);
-template DropletPath<double> run_one_droplet(Grid<double>&, const ParticleConstants&, int, int);
-template DropletPath<float> run_one_droplet(Grid<float>&, const ParticleConstants&, int, int);
+template DropletRun<double> particle_erosion(const Grid<double>&, const ParticleConstants&, int, DropletOrdering,
+                                             const ColourMap<double>*);
+template DropletRun<float> particle_erosion(const Grid<float>&, const ParticleConstants&, int, DropletOrdering,
+                                            const ColourMap<float>*);
+template DropletPath<double> run_one_droplet(Grid<double>&, const ParticleConstants&, int, int, ColourMap<double>*);
+template DropletPath<float> run_one_droplet(Grid<float>&, const ParticleConstants&, int, int, ColourMap<float>*);
 
 }  // namespace gt::reference

@@ -1,6 +1,7 @@
 // Particle (droplet) water erosion of seed 000 (Hydra), CPU reference.
 //
-// particle_erosion(heights, constants, iterations, ordering) -> heights, droplet maps and ledger
+// particle_erosion(heights, constants, iterations, ordering[, colour]) -> heights, droplet maps, ledger
+// and colour
 //   heights     Grid<Real> in the units of `constants` (seed 000's normalised [0,1] heights by
 //               default); cells with valid == 0 behave as outside the grid: they read 0 and a write
 //               to them is lost (GLSL's image semantics, which Hydra's kernel relies on).
@@ -10,9 +11,15 @@
 //               order of their block, each on the heights its predecessors left (the defined truth);
 //               batch: every droplet of a pass reads the heights of the pass's start and its
 //               erosion and deposition are integer quanta added into a delta applied at the end.
+//   colour      optional: a colour map of the heights' size (reference/erosion/droplets.hpp) that the
+//               droplets transport (§4.5: picked up on erosion, deposited on deposition); returned
+//               in DropletRun::colour. Null: no colour is transported (DropletRun::colour empty) and
+//               everything else is as with it. Batch ordering: colour frozen during a pass, the
+//               deposits' weighted mean applied at its end (reference/erosion/particle.cpp).
 // Real = double is the truth; Real = float repeats the shader's arithmetic operation by operation.
 //
-// The ledger and the side maps: reference/erosion/droplets.hpp.
+// The ledger and the side maps: reference/erosion/droplets.hpp; the side maps are Real sums (batch:
+// quanta) stored as double, twins of the GPU's eroded_at_droplet() / deposited_at_droplet().
 #pragma once
 
 #include <cstdint>
@@ -25,16 +32,18 @@ namespace gt::reference {
 
 template <class Real>
 DropletRun<Real> particle_erosion(const Grid<Real>& heights, const ParticleConstants& constants, int iterations,
-                                   DropletOrdering ordering);
+                                   DropletOrdering ordering, const ColourMap<Real>* colour = nullptr);
 
 // One droplet started at texel `base` on `heights` (sequential ordering), for spec vectors: the
 // positions it occupied after each step (the start first) and the sediment it carried at the end.
+// With `colour` (the heights' size) the droplet transports it, and it is changed in place.
 template <class Real>
 struct DropletPath {
   std::vector<std::pair<Real, Real>> positions;
   Real sediment = 0;
 };
 template <class Real>
-DropletPath<Real> run_one_droplet(Grid<Real>& heights, const ParticleConstants& constants, int base_x, int base_y);
+DropletPath<Real> run_one_droplet(Grid<Real>& heights, const ParticleConstants& constants, int base_x, int base_y,
+                                  ColourMap<Real>* colour = nullptr);
 
 }  // namespace gt::reference

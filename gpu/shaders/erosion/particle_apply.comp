@@ -3,8 +3,12 @@
 // core/params/particle.hpp): each valid cell adds what the pass's droplets moved into or out of it,
 // h = h + float(delta) · quantum (float(delta) rounded to nearest, the product exact as quantum is a
 // power of two, the sum rounded once), and clears its delta for the next pass. Masked cells and
-// their delta (never written) are left alone. Heights in the caller's units. CPU reference:
-// reference/erosion/particle.cpp. Mutants (compare/mutants/particle.cpp): none in this file.
+// their delta (never written) are left alone. Heights in the caller's units. With PARTICLE_COLOUR
+// each valid cell with deposits also takes the weighted mean of its colour (weight 1) and the pass's
+// colour deposits, per channel C = (C + float(Σ factor·col)·2^-20) / (1 + float(Σ factor)·2^-20)
+// (numerator and denominator each rounded as written, then one division), and clears its 5 sums.
+// CPU reference: reference/erosion/particle.cpp (ColourDelta in reference/erosion/droplets.hpp).
+// Mutants (compare/mutants/particle.cpp): none in this file.
 #ifndef PARTICLE_BATCH
 #error particle_apply.comp runs in the batch ordering only: compile it with PARTICLE_BATCH
 #endif
@@ -19,4 +23,17 @@ void main() {
   precise float height = heights[index] + change;
   heights[index] = height;
   delta[index] = 0;
+#ifdef PARTICLE_COLOUR
+  uint base = 5u * index;
+  ivec4 weighted_sums = ivec4(colour_sums[base + 1u], colour_sums[base + 2u], colour_sums[base + 3u], colour_sums[base + 4u]);
+  int factor_sum = colour_sums[base];
+  if (factor_sum == 0 && weighted_sums == ivec4(0)) return;  // no deposit: the colour stays as it is
+  const float unit = 1.0 / 1048576.0;  // 2^-20, exact
+  precise float denominator = 1.0 + float(factor_sum) * unit;
+  precise vec4 numerator = colour[index] + vec4(weighted_sums) * unit;
+  precise vec4 mean = vec4(numerator.x / denominator, numerator.y / denominator, numerator.z / denominator,
+                           numerator.w / denominator);
+  colour[index] = mean;
+  for (uint k = 0u; k < 5u; ++k) colour_sums[base + k] = 0;
+#endif
 }

@@ -6,7 +6,12 @@
 // drag, normalisation with the clamp to v_max (upstream, not Algorithm 5's rescale), erosion
 // (bilinear over 4 texels, Algorithm 6, or at the texel) or deposition (at the texel), a unit step
 // along the normalised velocity, and the stop at pos.x <= 0 or pos.y <= 0. Droplets whose start lies
-// off the grid run too (they read zeros). CPU reference: reference/erosion/particle.cpp.
+// off the grid run too (they read zeros). Every droplet marks the side maps at its texel (what it
+// eroded, what it deposited). With PARTICLE_COLOUR it carries a colour (§4.5, Algorithm 8, eq. 4.9):
+// its start texel's; on erosion (inside h > min_h, after it) col = f_col·C(ipos) + (1 - f_col)·col;
+// on deposition (after the height) colorize4 over erode4's corners with factor f_col·w,
+// C = C·(1 - factor) + col·factor, or without interpolation C(ipos) = C(ipos)·(1 - f_col) + f_col·col.
+// CPU reference: reference/erosion/particle.cpp.
 //
 // Decisions, shared with the reference:
 //   - Texels: ipos = ivec2(pos) and erode4's corner ivec2(pos - 0.5) truncate toward zero, as
@@ -18,15 +23,22 @@
 //     moves is rounded once to a count of quanta (roundEven(amount · inverse_quantum)), added to
 //     the cell's delta with atomicAdd, and the droplet's sediment is an integer count sat_q with
 //     sat = float(sat_q) · quantum. Without interpolation the texel loses the quanta of
-//     h - max(h - add, 0) and the droplet gains those of add.
+//     h - max(h - add, 0) and the droplet gains those of add. The side maps count the quanta the
+//     droplet picked up (the corners' summed) and deposited. Colour (PARTICLE_COLOUR) is frozen too:
+//     pick-ups read the pass's start colour, and each deposit adds roundEven(factor·2^20) and
+//     roundEven((factor·col[ch])·2^20) to the cell's colour sums, which particle_apply.comp turns
+//     into the weighted mean of the start colour (weight 1) and the deposits (weights factor).
+//   - Colour factors: (1 - f_col) and (1 - factor) are each rounded once; colorize4's weights are
+//     erode4's products (bilinear_weights), with the same truncated corner, so they leave [0, 1]
+//     within half a texel of x = 0 or y = 0, as upstream.
 // All arithmetic is `precise` (no fused multiply-add, no reassociation), in the reference's order,
 // so ref<float> repeats it bit for bit. Division and sqrt are GLSL's (not correctly rounded in
 // general; correctly rounded on llvmpipe), as in cave/lattice.glsl, and GPUs may flush subnormals
 // (a velocity decaying for ~180 steps over a flat stretch gets there): either may part the twins.
 // Units: positions and velocities in texels (per step), heights in the caller's units.
 // Mutants (compare/mutants/particle.cpp): FALL_THROUGH_ACCELERATION, DEPOSIT_BESIDE,
-// CORNER_WEIGHTS_SWAPPED (GPU only), RESCALED_VELOCITY, KEPT_SEDIMENT_ON_DEPOSIT, UNBOUNDED_EROSION
-// (both twins).
+// CORNER_WEIGHTS_SWAPPED, COLOUR_MIXING_REVERSED, COLOUR_DEPOSIT_UNWEIGHTED (GPU only),
+// RESCALED_VELOCITY, KEPT_SEDIMENT_ON_DEPOSIT, UNBOUNDED_EROSION (both twins).
 #include "common/grid.glsl"
 #include "erosion/particle_block.glsl"
 
@@ -80,11 +92,17 @@ vec2 corner_point(vec2 position) {
 
 // Bilinear weights of the corners (0,0), (1,0), (0,1), (1,1) for the sample point `point` whose
 // corner cell is `corner`: (1-f.x)(1-f.y), f.x(1-f.y), (1-f.x)f.y, f.x·f.y with f = point - corner.
-vec4 corner_weights(vec2 point, ivec2 corner) {
+vec4 bilinear_weights(vec2 point, ivec2 corner) {
   precise vec2 fraction = vec2(point.x - float(corner.x), point.y - float(corner.y));
   precise float rest_x = 1.0 - fraction.x;
   precise float rest_y = 1.0 - fraction.y;
   precise vec4 weights = vec4(rest_x * rest_y, fraction.x * rest_y, rest_x * fraction.y, fraction.x * fraction.y);
+  return weights;
+}
+
+// erode4's weights (bilinear_weights, swapped under the mutant).
+vec4 corner_weights(vec2 point, ivec2 corner) {
+  precise vec4 weights = bilinear_weights(point, corner);
 #ifdef GT_MUTANT_EROSION_PARTICLE_CORNER_WEIGHTS_SWAPPED
   weights = weights.xzyw;
 #endif
@@ -176,6 +194,61 @@ void deposit(ivec2 texel, float height, float amount) {
 }
 #endif
 
+#ifdef PARTICLE_COLOUR
+// Eq. 4.9 on erosion: the droplet's colour `col` after picking up the colour of its texel
+// (batch: the pass's start colour): f_col·C(ipos) + (1 - f_col)·col.
+vec4 picked_up_colour(vec4 col, ivec2 texel) {
+  precise vec4 texel_colour = load_colour(texel);
+  precise float kept = 1.0 - colour_mixing;
+#ifdef GT_MUTANT_EROSION_PARTICLE_COLOUR_MIXING_REVERSED
+  precise vec4 mixed = kept * texel_colour + colour_mixing * col;
+#else
+  precise vec4 mixed = colour_mixing * texel_colour + kept * col;
+#endif
+  return mixed;
+}
+
+// `factor` of the droplet's colour into the cell: C·(1 - factor) + col·factor in place, or (batch)
+// a weighted deposit into the cell's colour sums.
+void blend_colour(ivec2 cell, float factor, vec4 col) {
+#ifdef PARTICLE_BATCH
+  add_colour(cell, factor, col);
+#else
+  precise float rest = 1.0 - factor;
+  precise vec4 cell_colour = load_colour(cell);
+  precise vec4 blended = cell_colour * rest + col * factor;
+  store_colour(cell, blended);
+#endif
+}
+
+// The colour deposit after a height deposit: colorize4 (Algorithm 8: erode4's corners, factor
+// f_col·w, no height condition) or, without interpolation, C(ipos) = C(ipos)·(1 - f_col) + f_col·col.
+void deposit_colour(ivec2 texel, vec2 position, vec4 col) {
+  if (interpolated_colour != 0u) {
+    precise vec2 point = corner_point(position);
+    ivec2 corner = ivec2(point);
+    precise vec4 weights = bilinear_weights(point, corner);
+    for (int k = 0; k < 4; ++k) {
+#ifdef GT_MUTANT_EROSION_PARTICLE_COLOUR_DEPOSIT_UNWEIGHTED
+      precise float factor = colour_mixing;
+#else
+      precise float factor = colour_mixing * weights[k];
+#endif
+      blend_colour(corner + corner_offsets[k], factor, col);
+    }
+    return;
+  }
+#ifdef PARTICLE_BATCH
+  add_colour(texel, colour_mixing, col);
+#else
+  precise float kept = 1.0 - colour_mixing;
+  precise vec4 cell_colour = load_colour(texel);
+  precise vec4 blended = cell_colour * kept + colour_mixing * col;
+  store_colour(texel, blended);
+#endif
+}
+#endif
+
 void main() {
   ivec2 droplet = ivec2(gl_GlobalInvocationID.xy);
   if (droplet.x >= droplet_grid.x || droplet.y >= droplet_grid.y) return;
@@ -186,6 +259,9 @@ void main() {
   int sediment_quanta = 0;  // sat_q
 #else
   precise float sediment = 0.0;  // sat
+#endif
+#ifdef PARTICLE_COLOUR
+  precise vec4 carried_colour = load_colour(texel);  // col
 #endif
   for (int age = 0; age < lifetime; ++age) {
     // Neighbours n0..n3 at (0,-1), (-1,0), (1,0), (0,1), their extremes, the height under the droplet.
@@ -225,11 +301,16 @@ void main() {
       if (height > lowest) {
         precise float amount = erosion_amount(wanted, height, lowest);
 #ifdef PARTICLE_BATCH
-        sediment_quanta = sediment_quanta + erode(texel, position, height, lowest, amount);
+        int taken = erode(texel, position, height, lowest, amount);
+        sediment_quanta = sediment_quanta + taken;
 #else
         precise float taken = erode(texel, position, height, lowest, amount);
         sediment = sediment + taken;
 #endif
+#ifdef PARTICLE_COLOUR
+        carried_colour = picked_up_colour(carried_colour, texel);
+#endif
+        mark_eroded(texel, taken);
       }
     } else if (height < highest) {
       precise float released = difference * release;
@@ -245,6 +326,14 @@ void main() {
 #ifndef GT_MUTANT_EROSION_PARTICLE_KEPT_SEDIMENT_ON_DEPOSIT
       sediment = sediment - amount;
 #endif
+#endif
+#ifdef PARTICLE_COLOUR
+      deposit_colour(texel, position, carried_colour);
+#endif
+#ifdef PARTICLE_BATCH
+      mark_deposited(texel, deposited);
+#else
+      mark_deposited(texel, amount);
 #endif
     }
 
