@@ -4,15 +4,25 @@
 // droplets of a case (spec.droplet.*) and the performance rows beside the thesis's Table 5.1.
 #include <algorithm>
 #include <cmath>
+#include <array>
+#include <cstdint>
+#include <filesystem>
 #include <memory>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
 
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
 #include "compare/case_descriptors.hpp"
+#include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/droplet_twin.hpp"
 #include "core/errors.hpp"
+#include "core/io/heightmap_io.hpp"
 #include "core/params/particle.hpp"
 #include "core/params/thermal.hpp"
 #include "gpu/erosion/particle.hpp"
@@ -64,7 +74,51 @@ DropletTwin particle_twin(const Heightmap& input, const ParticleConstants& const
 struct ParticleScenario {
   DropletTwin twin;
   ParticleConstants constants;
+  std::optional<reference::ColourMap<double>> colour;  // transported when the case asks (§4.5)
 };
+
+// Hydra's redraw of a colour texture to the heightmap's size (§4.5, eqs. 4.8): GL's linear filter at
+// each texel centre (clamp to edge) on the stored [0, 1] values, then Algorithm 2's sRGB decoding
+// of red, green and blue (alpha as stored, 1 without an alpha channel).
+reference::ColourMap<double> bundled_colour(const std::string& name, const Heightmap& grid) {
+  const auto file = std::filesystem::path(GT_DATASET_DIR) / "real" / "textures" / (name + ".png");
+  auto image = OIIO::ImageInput::open(file.string());
+  if (!image) {
+    throw InputError(fmt::format("erosion.particle: the colour {} is missing (datasets/fetch.sh fetches it)",
+                                 file.string()));
+  }
+  const OIIO::ImageSpec spec = image->spec();
+  std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
+  if (!image->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) {
+    throw InputError(fmt::format("cannot read the pixels of {}: {}", file.string(), image->geterror()));
+  }
+  const auto texel = [&](int x, int y, int channel) {
+    x = std::clamp(x, 0, spec.width - 1);
+    y = std::clamp(y, 0, spec.height - 1);
+    if (channel == 3 && spec.nchannels < 4) return 1.0;
+    const int stored = spec.nchannels >= 3 ? channel : 0;
+    return double(pixels[(std::size_t(y) * std::size_t(spec.width) + std::size_t(x)) * std::size_t(spec.nchannels) +
+                         std::size_t(stored)]);
+  };
+  reference::ColourMap<double> colour;
+  colour.width = grid.width;
+  colour.height = grid.height;
+  colour.valid = grid.valid;
+  colour.values.resize(grid.size());
+  for (int y = 0; y < grid.height; ++y) {
+    for (int x = 0; x < grid.width; ++x) {
+      const double u = (x + 0.5) / grid.width * spec.width - 0.5, v = (y + 0.5) / grid.height * spec.height - 0.5;
+      const int x0 = static_cast<int>(std::floor(u)), y0 = static_cast<int>(std::floor(v));
+      const double fx = u - x0, fy = v - y0;
+      for (int channel = 0; channel < 4; ++channel) {
+        const double sampled = (texel(x0, y0, channel) * (1 - fx) + texel(x0 + 1, y0, channel) * fx) * (1 - fy) +
+                               (texel(x0, y0 + 1, channel) * (1 - fx) + texel(x0 + 1, y0 + 1, channel) * fx) * fy;
+        colour.at(x, y)[std::size_t(channel)] = channel < 3 ? srgb_to_linear(sampled) : sampled;
+      }
+    }
+  }
+  return colour;
+}
 
 ParticleScenario make_scenario(const nlohmann::json& resolved, const Heightmap& given) {
   if (given.size() == 0) throw InputError("erosion.particle erodes a heightmap: the case needs an input");
@@ -77,6 +131,14 @@ ParticleScenario make_scenario(const nlohmann::json& resolved, const Heightmap& 
   scenario.twin = particle_twin(input, c);
   set_droplet_input(scenario.twin, given, normalised);
   auto& notes = scenario.twin.notes;
+  const std::string colour = resolved.at("colour");
+  if (colour != "none") {
+    scenario.colour = bundled_colour(colour, given);
+    notes.push_back(fmt::format("colour {}.png resampled bilinearly to {}x{} texels and sRGB-decoded (§4.5); colour "
+                                "mixing {}, {}",
+                                colour, given.width, given.height, c.colour_mixing,
+                                c.interpolate_colour ? "deposits spread bilinearly (Algorithm 8)" : "deposits at the texel"));
+  }
   if (given.has_mask()) {
     notes.push_back("no-data cells behave as outside the grid: they read 0 and writes to them are lost (Hydra's "
                     "empty regions); the ledger counts what crosses them");
@@ -117,6 +179,131 @@ void add_droplet_spec(const ParticleScenario& scenario, const nlohmann::json& ex
                                         std::nullopt, "sediment carried at the end of its life; " + why));
   result.checks.push_back(bounded_check("spec.droplet.cells.cpu", cell_error, tolerance, std::nullopt,
                                         "heights after its life at the listed texels; " + why));
+}
+
+// The colour picture of a map: sRGB-encoded RGB8, each texel a block of identical pixels so that the
+// longer side reaches 256 px (as compare/report/images.hpp enlarges); masked texels grey.
+template <class Real>
+void write_colour_image(const reference::ColourMap<Real>& colour, const std::filesystem::path& png) {
+  const int factor = std::max(1, (255 + std::max(colour.width, colour.height)) / std::max(colour.width, colour.height));
+  const int width = colour.width * factor, height = colour.height * factor;
+  std::vector<std::uint8_t> pixels(std::size_t(width) * std::size_t(height) * 3);
+  const auto encode = [](double linear) {
+    const double c = std::clamp(linear, 0.0, 1.0);
+    const double srgb = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+    return static_cast<std::uint8_t>(std::lround(255.0 * srgb));
+  };
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t cell = colour.index(x / factor, y / factor);
+      for (int channel = 0; channel < 3; ++channel) {
+        pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(channel)] =
+            colour.is_valid(cell) ? encode(double(colour.values[cell][std::size_t(channel)])) : 128;
+      }
+    }
+  }
+  auto output = OIIO::ImageOutput::create(png.string());
+  if (!output || !output->open(png.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8)) ||
+      !output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !output->close()) {
+    throw std::runtime_error(fmt::format("cannot write {}", png.string()));
+  }
+}
+
+// How far a transported colour map leaves the range its channels started in (0 included: texels off
+// the grid and no-data texels read black): the largest excess over every channel, away from the
+// texels x <= 1 and y <= 1, where upstream's truncated corner gives weights outside [0, 1] and the
+// blend extrapolates as Hydra's does.
+template <class Real>
+double colour_created(const reference::ColourMap<double>& before, const reference::ColourMap<Real>& after) {
+  std::array<double, 4> low{0, 0, 0, 0}, high{0, 0, 0, 0};
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    for (std::size_t ch = 0; ch < 4; ++ch) {
+      low[ch] = std::min(low[ch], before.values[i][ch]);
+      high[ch] = std::max(high[ch], before.values[i][ch]);
+    }
+  }
+  double excess = 0.0;
+  for (int y = 2; y < after.height; ++y) {
+    for (int x = 2; x < after.width; ++x) {
+      for (std::size_t ch = 0; ch < 4; ++ch) {
+        const double value = double(after.at(x, y)[ch]);
+        excess = std::max({excess, value - high[ch], low[ch] - value});
+      }
+    }
+  }
+  return excess;
+}
+
+template <class A, class B>
+std::size_t channels_differing(const reference::ColourMap<A>& a, const reference::ColourMap<B>& b) {
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t ch = 0; ch < 4; ++ch) differing += float(a.values[i][ch]) != float(b.values[i][ch]) ? 1 : 0;
+  }
+  return differing;
+}
+
+reference::ColourMap<float> colour_as_float(const reference::ColourMap<double>& colour) {
+  reference::ColourMap<float> out;
+  out.width = colour.width;
+  out.height = colour.height;
+  out.valid = colour.valid;
+  out.values.resize(colour.size());
+  for (std::size_t i = 0; i < colour.size(); ++i) {
+    for (std::size_t ch = 0; ch < 4; ++ch) out.values[i][ch] = static_cast<float>(colour.values[i][ch]);
+  }
+  return out;
+}
+
+// Colour transport (§4.5) of a case that asks for it, on the whole run: the sequential truth creates
+// no colour; the GPU's colour and side maps equal ref<float>'s bit for bit in batch and disjoint
+// orderings; a race's colour distance is reported.
+void add_colour_checks(const ParticleScenario& scenario, const RunOptions& options, CaseResult& result) {
+  const auto& c = scenario.constants;
+  const auto& colour = *scenario.colour;
+  const auto& input = scenario.twin.input;
+  const auto truth = reference::particle_erosion(input, c, c.iterations, DropletOrdering::race, &colour);
+  result.checks.push_back(bounded_check(
+      "colour.created.cpu", colour_created(colour, truth.colour), 1e-12, std::nullopt,
+      "largest excess of a channel over the range it started in (0 included), ref<double>, texels x, y >= 2: "
+      "blends are convex combinations, so only rounding (u per blend) may step outside"));
+  const reference::ColourMap<float> colour_float = colour_as_float(colour);
+  const auto float_run = reference::particle_erosion(input.cast<float>(), c, c.iterations,
+                                                     reference_ordering(c.ordering), &colour_float);
+  result.checks.push_back(informative_check("colour.created.cpu_float", colour_created(colour, float_run.colour),
+                                            "as colour.created.cpu for ref<float> (batch: the weighted mean's "
+                                            "2^-20 quanta)"));
+  if (!options.report_dir.empty()) {
+    const auto folder = options.report_dir / result.name;
+    write_colour_image(colour, folder / "colour_before.png");
+    result.artifacts.push_back({result.name + "/colour_before.png", "image", "colour map before (sRGB)"});
+    write_colour_image(truth.colour, folder / "colour_after_cpu.png");
+    result.artifacts.push_back({result.name + "/colour_after_cpu.png", "image",
+                                "colour map after the droplets carried it, ref<double> (sRGB)"});
+  }
+  if (!options.gpu_available) {
+    result.checks.push_back(skipped_check("parity.colour", options.gpu_unavailable_reason));
+    return;
+  }
+  gpu::ParticleErosion gpu(input.width, input.height, c, true);
+  gpu.load(input.cast<float>());
+  gpu.load_colour(colour_float);
+  gpu.run();
+  const auto gpu_colour = gpu.colour_result();
+  const double differing = double(channels_differing(float_run.colour, gpu_colour));
+  if (c.ordering == DropletOrdering::race) {
+    result.checks.push_back(informative_check(
+        "race.colour_channels_differing.gpu_vs_float", differing,
+        "colour channels the racing GPU leaves different from the sequential ref<float>"));
+    return;
+  }
+  result.checks.push_back(bounded_check("parity.colour.channels_differing.gpu_vs_float", differing, 0.0, std::nullopt,
+                                        "the whole run's colour, GPU against ref<float>: every bit equal"));
+  const double side_maps = double(field_difference(float_run.eroded_at_droplet, gpu.eroded_at_droplet()).differing_bits +
+                                  field_difference(float_run.deposited_at_droplet, gpu.deposited_at_droplet()).differing_bits);
+  result.checks.push_back(bounded_check("parity.side_maps.cells_differing.gpu_vs_float", side_maps, 0.0, std::nullopt,
+                                        "Hydra's depth and sediment maps (before their contrasts), GPU against "
+                                        "ref<float>: every bit equal"));
 }
 
 // Hydra's Table 5.1 (digest 000 §6.2): total time of 50 iterations at spacing 4, lifetime 50.
@@ -174,6 +361,7 @@ PreparedTwin prepare_particle(const nlohmann::json& resolved, const LoadedInput&
                                                                      const RunOptions& options, CaseResult& result) {
     run_droplet_case(scenario.twin, expect, options, result);
     add_droplet_spec(scenario, expect, result);
+    if (scenario.colour) add_colour_checks(scenario, options, result);
   };
   return prepared;
 }
@@ -200,8 +388,12 @@ Algorithm particle_algorithm() {
           // Estimated, not yet measured: the input and ref<double> with its two side maps (5 doubles),
           // ref<float> with up to 16 checkpoint states and the GPU's copies (about 30 floats), the
           // difference and change maps of the checks (6 doubles), the descriptors.
-          .memory = [](const nlohmann::json&, const LoadedInput& input) {
-            return memory_for(static_cast<double>(input.heights.size()), "cells", 300 + descriptor_bytes_per_cell);
+          // Colour adds the map in double three times (input, truth, copies) and in float four times
+          // (ref<float>, the GPU's upload, result and its sums): about 200 B a cell.
+          .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
+            const double colour = resolved.at("colour") == "none" ? 0.0 : 200.0;
+            return memory_for(static_cast<double>(input.heights.size()), "cells",
+                              300 + colour + descriptor_bytes_per_cell);
           }};
 }
 

@@ -3,27 +3,39 @@
 // spacing 2, 3 iterations) and its hand-derived droplets (spec.ramp, spec.bounded_bite).
 //
 // one_twin: bugs in particle_droplets.comp only, killed by the batch ordering's bit-for-bit parity
-// (parity.shadow.cells_differing and parity.cells_differing: the GPU against ref<float>, bound 0).
+// (parity.shadow.cells_differing, parity.cells_differing and, for colour, parity.colour.*: the GPU
+// against ref<float>, bound 0).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
-// was asked: the hand-derived droplet of the ramp (spec.droplet.*) and the droplet ledger
-// (ledger.*: material neither created nor lost where the kernel does not say so).
+// was asked: the hand-derived droplet of the ramp (spec.droplet.*), the droplet ledger (ledger.*:
+// material neither created nor lost where the kernel does not say so) and colour.created (blends
+// stay within the colours they mix).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
 
 std::vector<Mutant> particle_mutants() {
   const std::vector<std::string> probe = {"erosion.particle.mutant_probe.batch"};
+  const std::vector<std::string> colour_probe = {"erosion.particle.mutant_probe.colour"};
   const std::vector<std::string> probe_and_spec = {"erosion.particle.mutant_probe.batch", "erosion.particle.spec.ramp"};
   return {
       {"erosion.particle.fall_through_acceleration", MutantKind::one_twin,
        "particle_droplets.comp accelerates as Algorithm 4 is printed (if/else-if fall-through) instead of upstream's "
        "nested branches: a droplet moving +x whose drop ahead exceeds drop_max accelerates towards -x",
-       probe},
+       {"erosion.particle.mutant_probe.batch", "erosion.particle.mutant_probe.colour"}},
       {"erosion.particle.deposit_beside", MutantKind::one_twin,
        "particle_droplets.comp deposits at the texel to the droplet's +x side instead of its own", probe},
       {"erosion.particle.corner_weights_swapped", MutantKind::one_twin,
        "particle_droplets.comp swaps the bilinear weights of the (+1, 0) and (0, +1) corners of Algorithm 6", probe},
+      {"erosion.particle.colour_mixing_reversed", MutantKind::one_twin,
+       "particle_droplets.comp picks up colour on erosion as (1 - f_col)·C(ipos) + f_col·col, eq. 4.9's weights "
+       "swapped",
+       colour_probe},
+      {"erosion.particle.colour_deposit_unweighted", MutantKind::one_twin,
+       "particle_droplets.comp blends each of Algorithm 8's 4 corners with f_col instead of f_col·w", colour_probe},
+      {"erosion.particle.colour_kept_whole", MutantKind::both_twins,
+       "both twins blend a colour deposit as C + col·factor, keeping all of the texel's colour: colour created",
+       colour_probe},
       {"erosion.particle.rescaled_velocity", MutantKind::both_twins,
        "both twins rescale every non-zero velocity to v_max (Algorithm 5 as printed) instead of clamping it",
        probe_and_spec},

@@ -43,6 +43,9 @@ const ParamSpecs& particle_param_specs() {
       {"ordering", ParamKind::choice, "batch", 0, 0, {"race", "disjoint", "batch"}, "",
        "droplets of one pass: race (Hydra's dispatch; compared statistically), disjoint (spacing keeps them "
        "apart; exact), batch (frozen heights and a fixed-point delta; bit-exact at any spacing)"},
+      {"colour", ParamKind::choice, "none", 0, 0, {"none", "astronaut", "grass"}, "",
+       "colour map transported by the droplets (§4.5): datasets/real/textures/<name>.png resampled bilinearly to "
+       "the heightmap and sRGB-decoded, or none"},
       {"normalised", ParamKind::boolean, true, 0, 0, {}, "",
        "seed 000's heights (h - min)/(max - min) in [0, 1], in which drop_max and f_c are given; off: the "
        "input's heights as they are"},

@@ -82,6 +82,7 @@ struct Kernel {
   bool rescaled_velocity = mutant_active("erosion.particle.rescaled_velocity");
   bool kept_sediment_on_deposit = mutant_active("erosion.particle.kept_sediment_on_deposit");
   bool unbounded_erosion = mutant_active("erosion.particle.unbounded_erosion");
+  bool colour_kept_whole = mutant_active("erosion.particle.colour_kept_whole");
 };
 
 struct Texel {
@@ -333,12 +334,13 @@ void pick_up_colour(const PassTerrain<Real>& terrain, Droplet<Real>& drop, const
 // `factor` of the droplet's colour blended into the texel: C·(1 - factor) + col·factor (sequential),
 // or the weighted deposit of the batch ordering.
 template <class Real>
-void blend_colour(PassTerrain<Real>& terrain, const Droplet<Real>& drop, Texel cell, Real factor) {
+void blend_colour(PassTerrain<Real>& terrain, const Droplet<Real>& drop, Texel cell, Real factor,
+                  const Kernel<Real>& k) {
   if (terrain.batch()) {
     terrain.add_colour(cell, factor, drop.colour);
     return;
   }
-  const Real rest = Real(1) - factor;
+  const Real rest = k.colour_kept_whole ? Real(1) : Real(1) - factor;
   Colour<Real> colour = terrain.load_colour(cell);
   for (int ch = 0; ch < 4; ++ch) colour[ch] = colour[ch] * rest + drop.colour[ch] * factor;
   terrain.store_colour(cell, colour);
@@ -350,7 +352,7 @@ template <class Real>
 void deposit_colour(PassTerrain<Real>& terrain, const Droplet<Real>& drop, const Kernel<Real>& k) {
   if (k.interpolate_colour) {
     const Corners<Real> corners = corners_around(drop);
-    for (int c = 0; c < 4; ++c) blend_colour(terrain, drop, corners.cells[c], k.colour_mixing * corners.weights[c]);
+    for (int c = 0; c < 4; ++c) blend_colour(terrain, drop, corners.cells[c], k.colour_mixing * corners.weights[c], k);
     return;
   }
   if (terrain.batch()) {

@@ -38,7 +38,7 @@
 // Units: positions and velocities in texels (per step), heights in the caller's units.
 // Mutants (compare/mutants/particle.cpp): FALL_THROUGH_ACCELERATION, DEPOSIT_BESIDE,
 // CORNER_WEIGHTS_SWAPPED, COLOUR_MIXING_REVERSED, COLOUR_DEPOSIT_UNWEIGHTED (GPU only),
-// RESCALED_VELOCITY, KEPT_SEDIMENT_ON_DEPOSIT, UNBOUNDED_EROSION (both twins).
+// RESCALED_VELOCITY, KEPT_SEDIMENT_ON_DEPOSIT, UNBOUNDED_EROSION, COLOUR_KEPT_WHOLE (both twins).
 #include "common/grid.glsl"
 #include "erosion/particle_block.glsl"
 
@@ -214,7 +214,11 @@ void blend_colour(ivec2 cell, float factor, vec4 col) {
 #ifdef PARTICLE_BATCH
   add_colour(cell, factor, col);
 #else
+#ifdef GT_MUTANT_EROSION_PARTICLE_COLOUR_KEPT_WHOLE
+  precise float rest = 1.0;
+#else
   precise float rest = 1.0 - factor;
+#endif
   precise vec4 cell_colour = load_colour(cell);
   precise vec4 blended = cell_colour * rest + col * factor;
   store_colour(cell, blended);
