@@ -243,6 +243,23 @@ std::size_t channels_differing(const reference::ColourMap<A>& a, const reference
   return differing;
 }
 
+// PSNR of b against a over red, green and blue of the valid texels, peak 1 (linear colour):
+// 10·log10(1 / mean squared difference); +inf when equal.
+template <class A, class B>
+double colour_psnr(const reference::ColourMap<A>& a, const reference::ColourMap<B>& b) {
+  double squares = 0.0;
+  std::size_t samples = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!a.is_valid(i)) continue;
+    for (std::size_t ch = 0; ch < 3; ++ch) {
+      const double difference = double(b.values[i][ch]) - double(a.values[i][ch]);
+      squares += difference * difference;
+      ++samples;
+    }
+  }
+  return squares > 0.0 ? 10.0 * std::log10(double(samples) / squares) : INFINITY;
+}
+
 reference::ColourMap<float> colour_as_float(const reference::ColourMap<double>& colour) {
   reference::ColourMap<float> out;
   out.width = colour.width;
@@ -270,6 +287,9 @@ void add_colour_checks(const ParticleScenario& scenario, const RunOptions& optio
   const reference::ColourMap<float> colour_float = colour_as_float(colour);
   const auto float_run = reference::particle_erosion(input.cast<float>(), c, c.iterations,
                                                      reference_ordering(c.ordering), &colour_float);
+  result.checks.push_back(informative_check(
+      "colour.psnr_db.float_vs_double", colour_psnr(truth.colour, float_run.colour),
+      "PSNR of ref<float>'s colour against the sequential ref<double>'s, RGB, peak 1 (batch: another blend)"));
   result.checks.push_back(informative_check("colour.created.cpu_float", colour_created(colour, float_run.colour),
                                             "as colour.created.cpu for ref<float> (batch: the weighted mean's "
                                             "2^-20 quanta)"));
@@ -295,6 +315,10 @@ void add_colour_checks(const ParticleScenario& scenario, const RunOptions& optio
     result.checks.push_back(informative_check(
         "race.colour_channels_differing.gpu_vs_float", differing,
         "colour channels the racing GPU leaves different from the sequential ref<float>"));
+    result.checks.push_back(informative_check("race.colour_psnr_db.gpu_vs_float",
+                                              colour_psnr(float_run.colour, gpu_colour),
+                                              "PSNR of the racing GPU's colour against the sequential ref<float>'s, "
+                                              "RGB, peak 1"));
     return;
   }
   result.checks.push_back(bounded_check("parity.colour.channels_differing.gpu_vs_float", differing, 0.0, std::nullopt,
