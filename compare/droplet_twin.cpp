@@ -397,14 +397,18 @@ void write_pictures(const DropletTwin& twin, const DropletRun<double>& truth,
                                      change.scale_used, change.max_abs));
   Grid<double> zero = before;
   std::fill(zero.values.begin(), zero.values.end(), 0.0);
-  const auto depth = write_difference_image(zero, truth.eroded_at_droplet, folder / "depth_cpu.png",
-                                            robust_scale(zero, truth.eroded_at_droplet));
-  add("depth_cpu.png", fmt::format("Hydra's depth map before its contrast: erosion at the droplet's texel, full red "
-                                   "at {:.3g} (99th percentile)", depth.scale_used));
-  const auto sediment = write_difference_image(zero, truth.deposited_at_droplet, folder / "sediment_cpu.png",
-                                               robust_scale(zero, truth.deposited_at_droplet));
-  add("sediment_cpu.png", fmt::format("Hydra's sediment map before its contrast: deposition, full red at {:.3g} "
-                                      "(99th percentile)", sediment.scale_used));
+  // With a contrast c, full red at 1/c: the picture is Hydra's min(1, c·amount).
+  const auto add_side_map = [&](const Grid<double>& map, double contrast, const std::string& file,
+                                const std::string& what) {
+    const double scale = contrast > 0.0 ? 1.0 / contrast : robust_scale(zero, map);
+    write_difference_image(zero, map, folder / file, scale);
+    add(file, contrast > 0.0 ? fmt::format("{} with its contrast {} (full red at {:.3g})", what, contrast, scale)
+                             : fmt::format("{}, full red at {:.3g} (99th percentile)", what, scale));
+  };
+  add_side_map(truth.eroded_at_droplet, twin.erosion_contrast, "depth_cpu.png",
+               "Hydra's depth map: erosion at the droplet's texel");
+  add_side_map(truth.deposited_at_droplet, twin.deposition_contrast, "sediment_cpu.png",
+               "Hydra's sediment map: deposition at the droplet's texel");
   if (twin.setup.ordering == DropletOrdering::batch) {
     const auto batch = write_difference_image(truth.heights, float_heights.cast<double>(), folder / "batch_vs_sequential.png");
     add("batch_vs_sequential.png", fmt::format("batch ref<float> - sequential ref<double>: max {:.3g}", batch.max_abs));

@@ -62,6 +62,10 @@ struct DropletTwin {
   // outer iterations.
   std::function<GpuFieldRunner(DropletSetup setup)> make_gpu;
   std::vector<std::string> notes;  // decisions taken for the user, said in the output
+  // Hydra's contrasts of its depth and sediment maps (§4.4.1: c_E, c_D): the pictures show
+  // min(1, c·amount) as the add-on writes them; 0 draws the raw maps at their 99th percentile.
+  double erosion_contrast = 0.0;
+  double deposition_contrast = 0.0;
   // The input's own heights from the twins' (h_own = h·height_scale + height_offset): the terrain
   // descriptors are measured in the input's units, not in the normalised [0, 1] the kernel sees.
   double height_scale = 1.0;

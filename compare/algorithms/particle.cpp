@@ -130,6 +130,8 @@ ParticleScenario make_scenario(const nlohmann::json& resolved, const Heightmap& 
   const auto& c = scenario.constants;
   scenario.twin = particle_twin(input, c);
   set_droplet_input(scenario.twin, given, normalised);
+  scenario.twin.erosion_contrast = resolved.at("erosion_contrast");
+  scenario.twin.deposition_contrast = resolved.at("deposition_contrast");
   auto& notes = scenario.twin.notes;
   const std::string colour = resolved.at("colour");
   if (colour != "none") {

@@ -43,6 +43,10 @@ const ParamSpecs& particle_param_specs() {
       {"ordering", ParamKind::choice, "batch", 0, 0, {"race", "disjoint", "batch"}, "",
        "droplets of one pass: race (Hydra's dispatch; compared statistically), disjoint (spacing keeps them "
        "apart; exact), batch (frozen heights and a fixed-point delta; bit-exact at any spacing)"},
+      {"erosion_contrast", ParamKind::real, 20.0, 0.0, 40.0, {}, "1/height",
+       "c_E of the depth map's picture, min(1, c_E·eroded) (depth_contrast 0.5 x 40); 0: the raw map"},
+      {"deposition_contrast", ParamKind::real, 15.0, 0.0, 30.0, {}, "1/height",
+       "c_D of the sediment map's picture, min(1, c_D·deposited) (sed_contrast 0.5 x 30); 0: the raw map"},
       {"colour", ParamKind::choice, "none", 0, 0, {"none", "astronaut", "grass"}, "",
        "colour map transported by the droplets (§4.5): datasets/real/textures/<name>.png resampled bilinearly to "
        "the heightmap and sRGB-decoded, or none"},
