@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "gpu/erosion/droplet_host.hpp"
+
 namespace gt::gpu {
 namespace {
 
@@ -71,15 +73,6 @@ enum Binding : GLuint { block_binding = 0, heights_binding = 1, valid_binding = 
 
 bool is_batch(const BeyerConstants& constants) { return constants.ordering == DropletOrdering::batch; }
 
-// The spacing S, refused below 1 (a pass would have no droplet grid).
-int checked_spacing(const BeyerConstants& constants) {
-  if (constants.spacing < 1) throw std::invalid_argument("BeyerErosion: spacing must be at least 1");
-  return constants.spacing;
-}
-
-// ceil(size / spacing): droplets of one pass along an axis of `size` samples.
-int droplet_count(int size, int spacing) { return (size + spacing - 1) / spacing; }
-
 std::vector<std::string> ordering_defines(const BeyerConstants& constants) {
   if (is_batch(constants)) return {"BEYER_BATCH"};
   return {};
@@ -90,15 +83,9 @@ std::optional<ComputeProgram> apply_program(const BeyerConstants& constants) {
   return ComputeProgram::load("erosion/beyer_apply.comp", ordering_defines(constants));
 }
 
-GLint uniform_location(const ComputeProgram& droplets, const char* name) {
-  const GLint location = droplets.uniform(name);
-  if (location < 0) throw std::runtime_error(std::string("beyer_droplets.comp: no active uniform `") + name + "`");
-  return location;
-}
-
 // Each constant rounded to float once from double, as the reference does.
 BeyerBlock make_block(const BeyerConstants& constants, int width, int height) {
-  const int spacing = checked_spacing(constants);
+  const int spacing = checked_droplet_spacing(constants.spacing, "BeyerErosion");
   BeyerBlock block{};
   block.grid_size[0] = width;
   block.grid_size[1] = height;
@@ -126,55 +113,30 @@ BeyerBlock make_block(const BeyerConstants& constants, int width, int height) {
   return block;
 }
 
-std::size_t cell_count(int width, int height) { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
-
 // One int per cell for the batch delta; a 16-byte placeholder (never bound) otherwise.
 std::size_t delta_bytes(const BeyerConstants& constants, int width, int height) {
   return is_batch(constants) ? cell_count(width, height) * sizeof(std::int32_t) : 16;
-}
-
-// Width and height of the field to load, no values (the heights live in the storage buffer).
-Grid<float> empty_layout(int width, int height) {
-  Grid<float> layout;
-  layout.width = width;
-  layout.height = height;
-  return layout;
-}
-
-void check_loadable(const Grid<float>& heights, int width, int height) {
-  if (heights.width != width || heights.height != height || heights.values.size() != cell_count(width, height)) {
-    throw std::invalid_argument("BeyerErosion::load: grid size differs from the constructor's");
-  }
-  if (heights.has_mask() && heights.valid.size() != heights.values.size()) {
-    throw std::invalid_argument("BeyerErosion::load: mask size differs from the grid's");
-  }
 }
 
 }  // namespace
 
 BeyerErosion::BeyerErosion(int width, int height, const BeyerConstants& constants)
     : iterations_(constants.iterations),
-      spacing_(checked_spacing(constants)),
+      spacing_(checked_droplet_spacing(constants.spacing, "BeyerErosion")),
       droplets_x_(droplet_count(width, spacing_)),
       droplets_y_(droplet_count(height, spacing_)),
       layout_(empty_layout(width, height)),
       droplets_program_(ComputeProgram::load("erosion/beyer_droplets.comp", ordering_defines(constants))),
       apply_program_(apply_program(constants)),
-      offset_location_(uniform_location(droplets_program_, "pass_offset")),
-      pass_number_location_(uniform_location(droplets_program_, "pass_number")),
+      offset_location_(required_uniform(droplets_program_, "beyer_droplets.comp", "pass_offset")),
+      pass_number_location_(required_uniform(droplets_program_, "beyer_droplets.comp", "pass_number")),
       block_(UniformBuffer::from(make_block(constants, width, height))),
       heights_(cell_count(width, height) * sizeof(float)),
       valid_(cell_count(width, height) * sizeof(GLuint)),
       delta_(delta_bytes(constants, width, height)) {}
 
 void BeyerErosion::load(const Grid<float>& heights) {
-  check_loadable(heights, layout_.width, layout_.height);
-  layout_ = heights;
-  layout_.values.clear();
-  heights_.upload(heights.values.data(), heights.values.size() * sizeof(float));
-  std::vector<GLuint> valid(heights.size(), 1u);
-  if (heights.has_mask()) valid.assign(heights.valid.begin(), heights.valid.end());
-  valid_.upload(valid.data(), valid.size() * sizeof(GLuint));
+  layout_ = load_heightfield(heights, layout_.width, layout_.height, heights_, valid_, "BeyerErosion");
   if (batch()) {
     const std::vector<std::int32_t> zeros(heights.size(), 0);
     delta_.upload(zeros.data(), zeros.size() * sizeof(std::int32_t));

@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "gpu/erosion/droplet_host.hpp"
+
 namespace gt::gpu {
 namespace {
 
@@ -80,15 +82,6 @@ constexpr int colour_sums_per_cell = 5;  // Σ factor, Σ factor·r, ·g, ·b, �
 
 bool is_batch(const ParticleConstants& constants) { return constants.ordering == DropletOrdering::batch; }
 
-// The spacing S, refused below 1 (a pass would have no droplet grid).
-int checked_spacing(const ParticleConstants& constants) {
-  if (constants.spacing < 1) throw std::invalid_argument("ParticleErosion: spacing must be at least 1");
-  return constants.spacing;
-}
-
-// ceil(size / spacing): droplets of one pass along an axis of `size` texels (the FBO size, eq. 4.7).
-int droplet_count(int size, int spacing) { return (size + spacing - 1) / spacing; }
-
 std::vector<std::string> program_defines(const ParticleConstants& constants, bool transport_colour) {
   std::vector<std::string> defines;
   if (is_batch(constants)) defines.push_back("PARTICLE_BATCH");
@@ -101,15 +94,9 @@ std::optional<ComputeProgram> apply_program(const ParticleConstants& constants, 
   return ComputeProgram::load("erosion/particle_apply.comp", program_defines(constants, transport_colour));
 }
 
-GLint offset_location(const ComputeProgram& droplets) {
-  const GLint location = droplets.uniform("pass_offset");
-  if (location < 0) throw std::runtime_error("particle_droplets.comp: no active uniform `pass_offset`");
-  return location;
-}
-
 // Each constant rounded to float once from double, as the reference does.
 ParticleBlock make_block(const ParticleConstants& constants, int width, int height) {
-  const int spacing = checked_spacing(constants);
+  const int spacing = checked_droplet_spacing(constants.spacing, "ParticleErosion");
   ParticleBlock block{};
   block.grid_size[0] = width;
   block.grid_size[1] = height;
@@ -135,8 +122,6 @@ ParticleBlock make_block(const ParticleConstants& constants, int width, int heig
   return block;
 }
 
-std::size_t cell_count(int width, int height) { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
-
 // One int per cell for the batch delta; a 16-byte placeholder (never bound) otherwise.
 std::size_t delta_bytes(const ParticleConstants& constants, int width, int height) {
   return is_batch(constants) ? cell_count(width, height) * sizeof(std::int32_t) : 16;
@@ -154,35 +139,18 @@ std::size_t colour_sums_bytes(const ParticleConstants& constants, bool transport
              : 16;
 }
 
-// Width and height of the field to load, no values (the heights live in the storage buffer).
-Grid<float> empty_layout(int width, int height) {
-  Grid<float> layout;
-  layout.width = width;
-  layout.height = height;
-  return layout;
-}
-
-void check_loadable(const Grid<float>& heights, int width, int height) {
-  if (heights.width != width || heights.height != height || heights.values.size() != cell_count(width, height)) {
-    throw std::invalid_argument("ParticleErosion::load: grid size differs from the constructor's");
-  }
-  if (heights.has_mask() && heights.valid.size() != heights.values.size()) {
-    throw std::invalid_argument("ParticleErosion::load: mask size differs from the grid's");
-  }
-}
-
 }  // namespace
 
 ParticleErosion::ParticleErosion(int width, int height, const ParticleConstants& constants, bool transport_colour)
     : iterations_(constants.iterations),
-      spacing_(checked_spacing(constants)),
+      spacing_(checked_droplet_spacing(constants.spacing, "ParticleErosion")),
       droplets_x_(droplet_count(width, spacing_)),
       droplets_y_(droplet_count(height, spacing_)),
       layout_(empty_layout(width, height)),
       droplets_program_(
           ComputeProgram::load("erosion/particle_droplets.comp", program_defines(constants, transport_colour))),
       apply_program_(apply_program(constants, transport_colour)),
-      offset_location_(offset_location(droplets_program_)),
+      offset_location_(required_uniform(droplets_program_, "particle_droplets.comp", "pass_offset")),
       block_(UniformBuffer::from(make_block(constants, width, height))),
       heights_(cell_count(width, height) * sizeof(float)),
       valid_(cell_count(width, height) * sizeof(GLuint)),
@@ -195,13 +163,7 @@ ParticleErosion::ParticleErosion(int width, int height, const ParticleConstants&
       transport_colour_(transport_colour) {}
 
 void ParticleErosion::load(const Grid<float>& heights) {
-  check_loadable(heights, layout_.width, layout_.height);
-  layout_ = heights;
-  layout_.values.clear();
-  heights_.upload(heights.values.data(), heights.values.size() * sizeof(float));
-  std::vector<GLuint> valid(heights.size(), 1u);
-  if (heights.has_mask()) valid.assign(heights.valid.begin(), heights.valid.end());
-  valid_.upload(valid.data(), valid.size() * sizeof(GLuint));
+  layout_ = load_heightfield(heights, layout_.width, layout_.height, heights_, valid_, "ParticleErosion");
   // float 0 and int 0 share their bits: one zero vector serves every side map and sum.
   const std::vector<std::int32_t> zeros(heights.size() * (transport_colour_ && batch() ? colour_sums_per_cell : 1), 0);
   if (batch()) delta_.upload(zeros.data(), heights.size() * sizeof(std::int32_t));

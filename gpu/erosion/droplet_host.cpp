@@ -1,0 +1,48 @@
+#include "gpu/erosion/droplet_host.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gt::gpu {
+
+int checked_droplet_spacing(int spacing, const char* eroder) {
+  if (spacing < 1) throw std::invalid_argument(std::string(eroder) + ": spacing must be at least 1");
+  return spacing;
+}
+
+int droplet_count(int size, int spacing) { return (size + spacing - 1) / spacing; }
+
+std::size_t cell_count(int width, int height) { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
+
+Grid<float> empty_layout(int width, int height) {
+  Grid<float> layout;
+  layout.width = width;
+  layout.height = height;
+  return layout;
+}
+
+Grid<float> load_heightfield(const Grid<float>& heights, int width, int height, StorageBuffer& heights_buffer,
+                             StorageBuffer& valid_buffer, const char* eroder) {
+  if (heights.width != width || heights.height != height || heights.values.size() != cell_count(width, height)) {
+    throw std::invalid_argument(std::string(eroder) + "::load: grid size differs from the constructor's");
+  }
+  if (heights.has_mask() && heights.valid.size() != heights.values.size()) {
+    throw std::invalid_argument(std::string(eroder) + "::load: mask size differs from the grid's");
+  }
+  heights_buffer.upload(heights.values.data(), heights.values.size() * sizeof(float));
+  std::vector<GLuint> valid(heights.size(), 1u);
+  if (heights.has_mask()) valid.assign(heights.valid.begin(), heights.valid.end());
+  valid_buffer.upload(valid.data(), valid.size() * sizeof(GLuint));
+  Grid<float> layout = heights;
+  layout.values.clear();
+  return layout;
+}
+
+GLint required_uniform(const ComputeProgram& program, const char* shader, const char* name) {
+  const GLint location = program.uniform(name);
+  if (location < 0) throw std::runtime_error(std::string(shader) + ": no active uniform `" + name + "`");
+  return location;
+}
+
+}  // namespace gt::gpu
