@@ -32,10 +32,6 @@ BeyerConstants with_setup(BeyerConstants constants, DropletSetup setup) {
   return constants;
 }
 
-DropletOrdering reference_ordering(DropletOrdering ordering) {
-  return ordering == DropletOrdering::batch ? DropletOrdering::batch : DropletOrdering::race;
-}
-
 // The brush's samples within the radius: at most (2·ceil(r) + 1)².
 double brush_samples(const BeyerConstants& constants) {
   const double side = 2.0 * std::ceil(constants.radius) + 1.0;

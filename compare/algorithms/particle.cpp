@@ -43,11 +43,6 @@ ParticleConstants with_setup(ParticleConstants constants, DropletSetup setup) {
   return constants;
 }
 
-// The references' ordering: the sequential truth unless batch.
-DropletOrdering reference_ordering(DropletOrdering ordering) {
-  return ordering == DropletOrdering::batch ? DropletOrdering::batch : DropletOrdering::race;
-}
-
 DropletTwin particle_twin(const Heightmap& input, const ParticleConstants& constants) {
   DropletTwin twin;
   twin.algorithm = "erosion.particle";

@@ -25,6 +25,10 @@ DropletOrdering droplet_ordering_from_name(const std::string& name) {
   throw InputError(fmt::format("unknown droplet ordering '{}'; known: race, disjoint, batch", name));
 }
 
+DropletOrdering reference_ordering(DropletOrdering ordering) {
+  return ordering == DropletOrdering::batch ? DropletOrdering::batch : DropletOrdering::race;
+}
+
 double batch_quantum(double max_abs_height) {
   const double magnitude = std::max(1.0, max_abs_height);
   return std::ldexp(1.0, static_cast<int>(std::ceil(std::log2(magnitude))) - 24);

@@ -27,6 +27,10 @@ const char* droplet_ordering_name(DropletOrdering ordering);
 // The ordering named `name` (one of droplet_ordering_name's).
 DropletOrdering droplet_ordering_from_name(const std::string& name);
 
+// The ordering the CPU references run for a GPU `ordering`: batch as batch, race and disjoint as the
+// sequential truth (their `race` ordering, droplets one after the other).
+DropletOrdering reference_ordering(DropletOrdering ordering);
+
 // The fixed-point unit for heights whose magnitude is at most `max_abs_height`: 2^-24 times the
 // smallest power of two >= max(1, max_abs_height), about one float ulp at the top of the range, so
 // an int32 delta holds ±128 times the heights' magnitude per pass.
