@@ -74,6 +74,15 @@ double ledger_residual(const Grid<Real>& before, const Grid<Real>& after, const 
   return sum.value();
 }
 
+// The droplet steps a run can take at most: every droplet it releases (spacing² passes of
+// ceil(W/S)·ceil(H/S) droplets per iteration) living its whole lifetime.
+double most_droplet_steps(const DropletTwin& twin) {
+  const double spacing = twin.setup.spacing;
+  const double droplets_per_pass =
+      std::ceil(twin.input.width / spacing) * std::ceil(twin.input.height / spacing);
+  return double(twin.iterations) * spacing * spacing * droplets_per_pass * double(twin.lifetime);
+}
+
 // The ledger's closure checks of one reference run.
 template <class Real>
 void add_ledger_checks(const DropletTwin& twin, const Grid<Real>& before, const DropletRun<Real>& run,
@@ -96,10 +105,11 @@ void add_ledger_checks(const DropletTwin& twin, const Grid<Real>& before, const 
   } else {
     // Float, sequential: every stored height rounds once (≤ u·M, M the largest |height| of the
     // input, which the eroders' bounds keep the heights within) and so does every update of the
-    // carried sediment: at most twin.roundings_per_step of them per droplet step. Worst case all add
+    // carried sediment: at most twin.roundings_per_step of them per droplet step, and at most
+    // lifetime steps for each droplet the run releases (known before it runs). Worst case all add
     // up (loose); strict: a random walk.
     const double magnitude = std::max(std::abs(totals.low), std::abs(totals.high));
-    const double roundings = twin.roundings_per_step * static_cast<double>(l.steps);
+    const double roundings = twin.roundings_per_step * most_droplet_steps(twin);
     const double per_rounding = unit_roundoff_float * magnitude / scale;
     result.checks.push_back(bounded_check(
         "ledger.closure." + backend, residual, 6.0 / std::sqrt(3.0) * std::sqrt(roundings) * per_rounding,

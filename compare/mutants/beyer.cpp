@@ -3,6 +3,7 @@
 // iterations).
 //
 // one_twin: bugs in beyer_droplets.comp only, killed by the batch ordering's bit-for-bit parity
+// (brush_unnormalised also by the disjoint ordering's parity.shadow.max_abs)
 // (parity.shadow.cells_differing and parity.cells_differing: the GPU against ref<float>, bound 0).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by the droplet ledger
@@ -20,7 +21,7 @@ std::vector<Mutant> beyer_mutants() {
        probe},
       {"erosion.beyer.brush_unnormalised", MutantKind::one_twin,
        "beyer_droplets.comp erodes amount·w at each brush sample, not amount·w/Σw (eq. 2.42's normalisation lost)",
-       probe},
+       {"erosion.beyer.mutant_probe.batch", "erosion.beyer.disjoint.cone"}},
       {"erosion.beyer.deposit_at_new_position", MutantKind::one_twin,
        "beyer_droplets.comp deposits on the samples around the droplet's new position instead of its old one", probe},
       {"erosion.beyer.sediment_not_taken_on_erosion", MutantKind::both_twins,
