@@ -150,13 +150,14 @@ LoadedInput generated_input(const nlohmann::json& input) {
 }
 
 LoadedInput file_input(const nlohmann::json& input, const std::filesystem::path& dataset_dir) {
-  require_known_keys(input, {"file", "cell_size", "vertical_scale", "srgb"}, "input file");
+  require_known_keys(input, {"file", "cell_size", "vertical_scale", "srgb", "red_channel"}, "input file");
   std::filesystem::path path = input["file"].get<std::string>();
   if (path.is_relative()) path = dataset_dir / path;
   HeightmapReadOptions options;
   options.cell_size = json_number(input, "cell_size", 0.0, 0.0, 1e9, "input file");
   options.image_vertical_scale = json_number(input, "vertical_scale", 1.0, 1e-9, 1e9, "input file");
   options.srgb = json_bool(input, "srgb", false, "input file");
+  options.red_channel = json_bool(input, "red_channel", false, "input file");
   auto file = read_heightmap(path, options);
   LoadedInput loaded;
   loaded.heights = std::move(file.heights);

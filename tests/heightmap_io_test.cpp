@@ -14,6 +14,7 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "core/errors.hpp"
@@ -191,9 +192,36 @@ TEST(HeightmapIo, MultiChannelUsesChannelZeroUnaffectedByAlpha) {
   const fs::path file = folder.path() / "rgba.png";
   // Two RGBA pixels: the first fully transparent, so a premultiplying reader would return 0.
   write_test_image<std::uint8_t>(file, 2, 1, 4, {255, 7, 7, 0, 51, 9, 9, 255});
-  const HeightmapFile read = read_heightmap(file);
+  HeightmapReadOptions options;
+  options.red_channel = true;
+  const HeightmapFile read = read_heightmap(file, options);
   EXPECT_EQ(read.heights.values, (std::vector<double>{1.0, 0.2}));
   EXPECT_TRUE(has_note_containing(read, "channel 0")) << fmt::format("{}", fmt::join(read.notes, "; "));
+  EXPECT_TRUE(has_note_containing(read, "red channel"));
+}
+
+// A colour picture is not a heightmap: refused with the number of coloured pixels, unless the red
+// channel is asked for (above).
+TEST(HeightmapIo, AColourImageIsRefusedAsAHeightmap) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "photo.png";
+  write_test_image<std::uint8_t>(file, 3, 1, 3, {10, 10, 10, 200, 30, 40, 90, 90, 90});
+  try {
+    (void)read_heightmap(file);
+    FAIL() << "a colour image was read as a heightmap";
+  } catch (const gt::InputError& error) {
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("not a heightmap"));
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("1 of 3 pixels"));
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("red_channel"));
+  }
+}
+
+// A grey picture stored as RGB is a heightmap.
+TEST(HeightmapIo, AGreyImageStoredAsRgbIsAHeightmap) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "grey.png";
+  write_test_image<std::uint8_t>(file, 2, 1, 3, {0, 0, 0, 255, 255, 255});
+  EXPECT_EQ(read_heightmap(file).heights.values, (std::vector<double>{0.0, 1.0}));
 }
 
 TEST(HeightmapIo, CellSizeOptionOverridesTheFile) {

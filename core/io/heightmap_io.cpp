@@ -341,6 +341,30 @@ std::string format_label(const std::string& oiio_format, const GeoTiffTags& tags
   return oiio_format;
 }
 
+// Refuses a colour image as a heightmap unless its red channel is asked for: reads the first three
+// channels as float (12 bytes a pixel, counted by the caller's size check) and counts the pixels
+// whose channels differ. A grey picture stored as RGB passes.
+void check_grey(OIIO::ImageInput& input, const HeightmapReadOptions& options, std::vector<std::string>& notes,
+                const path& file) {
+  const OIIO::ImageSpec& spec = input.spec();
+  if (spec.nchannels < 3) return;
+  if (options.red_channel) {
+    notes.push_back("colour image: its red channel taken as height (seed 000 §4.2, `red_channel`)");
+    return;
+  }
+  std::vector<float> rgb(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * 3);
+  if (!input.read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, rgb.data())) {
+    throw InputError(fmt::format("{}: cannot read pixels: {}", file.string(), input.geterror()));
+  }
+  std::size_t coloured = 0;
+  for (std::size_t i = 0; i < rgb.size(); i += 3) coloured += rgb[i] != rgb[i + 1] || rgb[i + 1] != rgb[i + 2] ? 1 : 0;
+  if (coloured == 0) return;
+  throw InputError(fmt::format(
+      "{} is a colour image, not a heightmap: its red, green and blue differ in {} of {} pixels; to take its red "
+      "channel as height, as seed 000 §4.2 does with a picture, set \"red_channel\": true on the case's input",
+      file.string(), coloured, rgb.size() / 3));
+}
+
 HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) {
   check_exr_attribute_sizes(file);
   OIIO::ImageSpec config;
@@ -353,10 +377,12 @@ HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) 
   const bool is_tiff = std::string(input->format_name()) == "tiff";
   const GeoTiffTags tags = is_tiff ? read_geotiff_tags(file) : GeoTiffTags{};
   // While reading: OpenImageIO's decoded image (PNG keeps it whole; every channel in its stored
-  // type), channel 0 converted (at most 8 bytes), the heights (8) and the no-data mask (1).
+  // type), channel 0 converted (at most 8 bytes), the heights (8) and the no-data mask (1); before,
+  // a colour image's three channels as float (12) for check_grey.
   check_grid_fits(spec.width, spec.height, 17 + static_cast<long long>(spec.nchannels) * spec.format.size(),
                   file.string());
   result.format = format_label(input->format_name(), tags);
+  check_grey(*input, options, result.notes, file);
   if (spec.nchannels > 1) {
     result.notes.push_back(fmt::format("{} channels: channel 0 ({}) used as height", spec.nchannels,
                                        spec.channel_name(0)));

@@ -47,6 +47,9 @@ struct HeightmapReadOptions {
   // 8/16-bit images: the [0,1] value is sRGB-encoded and linearised (seed 000 §4.3.1, Algorithm 2)
   // before the vertical scale, as Hydra makes a heightmap of a non-float image's red channel.
   bool srgb = false;
+  // A colour image (three or more channels whose first three differ in some pixel) is not a
+  // heightmap and is refused, unless this takes its red channel as height as seed 000 §4.2 does.
+  bool red_channel = false;
 };
 
 // Seed 000's Algorithm 2, the sRGB decoding curve of one channel value c in [0, 1]:
