@@ -440,8 +440,8 @@ BenchmarkRow iteration_row(const std::string& algorithm, const std::string& back
 
 }  // namespace
 
-void run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, const RunOptions& options,
-                      CaseResult& result) {
+Grid<float> run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, const RunOptions& options,
+                             CaseResult& result) {
   result.width = twin.input.width;
   result.height = twin.input.height;
   for (const auto& note : twin.notes) result.notes.push_back(note);
@@ -484,6 +484,7 @@ void run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, con
   // descriptors' GPU-to-double parity would grade that chaos: the descriptors show the references.
   add_case_descriptors({&input, &truth_heights, &float_as_double, nullptr},
                        expect, options, result);
+  return float_run.run.heights;
 }
 
 void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise) {

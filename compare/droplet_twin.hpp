@@ -77,8 +77,9 @@ struct DropletTwin {
 // and the scale and offset that undo it for the descriptors, with a note saying so.
 void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise);
 
-void run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, const RunOptions& options,
-                      CaseResult& result);
+// Returns ref<float>'s terrain after the run (in the case's ordering): what a flow map is drawn on.
+Grid<float> run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, const RunOptions& options,
+                             CaseResult& result);
 
 // Performance rows for one grid side: ref<double> (sequential) and, with a GPU, its race and batch
 // orderings, one outer iteration per timed run, the median of `reps`, in cell-iterations and droplet

@@ -348,7 +348,19 @@ TEST(CliRun, DropletSuitesMeetTheAcceptanceBounds) {
         ASSERT_NE(check, nullptr) << name;
         EXPECT_EQ(check->at("value").get<double>(), 0.0) << name;
       }
-    } else if (ordering == "race") {
+    }
+    // The flow map (§4.7): drawn by every twin, bit for bit unless racing, and pictured.
+    const bool flow_map = report_case.at("algorithm") == "erosion.particle" &&
+                          report_case.at("params").at("flow_map").get<bool>();
+    if (flow_map && ordering != "race") {
+      const json* flow = find_check(report_case, "parity.flow.cells_differing.gpu_vs_float");
+      ASSERT_NE(flow, nullptr);
+      EXPECT_EQ(flow->at("value").get<double>(), 0.0);
+    }
+    if (flow_map) {
+      EXPECT_TRUE(fs::exists(out / report_case.at("name").get<std::string>() / "flow_cpu.png"));
+    }
+    if (ordering == "race") {
       for (const int spacing : {16, 8, 4, 2, 1}) {
         const json* distance = find_check(report_case, fmt::format("race.relative_rms.spacing_{}.gpu_vs_float", spacing));
         ASSERT_NE(distance, nullptr) << spacing;

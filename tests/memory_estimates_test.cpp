@@ -94,7 +94,13 @@ TEST_P(PeakMemory, StaysWithinTheEstimatePlusTheFixedCost) {
 INSTANTIATE_TEST_SUITE_P(FieldTwins, PeakMemory,
                          ::testing::Values(MeasuredRun{"erosion.thermal", 768, {{"iterations", 16}}},
                                            MeasuredRun{"erosion.pipe", 384, {{"steps", 16}, {"checkpoints", 16}}},
-                                           MeasuredRun{"noise.fbm", 1024, json::object()}),
+                                           MeasuredRun{"noise.fbm", 1024, json::object()},
+                                           // Droplets: one short iteration in batch ordering (no race
+                                           // statistics), large enough that the estimate dominates.
+                                           MeasuredRun{"erosion.particle", 768,
+                                                       {{"iterations", 1}, {"lifetime", 5}, {"ordering", "batch"}}},
+                                           MeasuredRun{"erosion.beyer", 768,
+                                                       {{"iterations", 1}, {"lifetime", 5}, {"ordering", "batch"}}}),
                          [](const ::testing::TestParamInfo<MeasuredRun>& info) {
                            std::string name = info.param.algorithm;
                            for (char& c : name) c = (c == '.') ? '_' : c;

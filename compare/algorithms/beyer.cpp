@@ -129,7 +129,8 @@ Algorithm beyer_algorithm() {
           .has_field_twin = false,
           .benchmark = benchmark_beyer,
           .expect_shape = descriptor_expect_shape(),
-          // Estimated as erosion.particle's: the same grids are kept.
+          // As erosion.particle's without colour and flow map: the same grids are kept; measured within
+          // this by tests/memory_estimates_test.cpp at 768².
           .memory = [](const nlohmann::json&, const LoadedInput& input) {
             return memory_for(static_cast<double>(input.heights.size()), "cells", 300 + descriptor_bytes_per_cell);
           }};

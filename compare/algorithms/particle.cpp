@@ -25,7 +25,9 @@
 #include "core/io/heightmap_io.hpp"
 #include "core/params/particle.hpp"
 #include "core/params/thermal.hpp"
+#include "gpu/erosion/flow_map.hpp"
 #include "gpu/erosion/particle.hpp"
+#include "reference/erosion/flow_map.hpp"
 #include "reference/erosion/particle.hpp"
 
 namespace gt {
@@ -70,6 +72,7 @@ struct ParticleScenario {
   DropletTwin twin;
   ParticleConstants constants;
   std::optional<reference::ColourMap<double>> colour;  // transported when the case asks (§4.5)
+  std::optional<FlowConstants> flow;                   // drawn when the case asks (§4.7)
 };
 
 // Hydra's redraw of a colour texture to the heightmap's size (§4.5, eqs. 4.8): GL's linear filter at
@@ -146,6 +149,17 @@ ParticleScenario make_scenario(const nlohmann::json& resolved, const Heightmap& 
       static_cast<long long>((given.width + c.spacing - 1) / c.spacing) * ((given.height + c.spacing - 1) / c.spacing),
       c.spacing * c.spacing, c.lifetime, c.quantum));
   for (auto& warning : particle_warnings(c)) notes.push_back(std::move(warning));
+  scenario.flow = flow_constants(resolved, c);
+  if (scenario.flow) {
+    const auto& flow = *scenario.flow;
+    notes.push_back(fmt::format(
+        "flow map (§4.7) drawn on ref<float>'s eroded terrain by every twin: spacing {}, contrast {} (f_c = {:.6g}, "
+        "eq. 4.13), {}, ordering {}{}",
+        flow.spacing, resolved.at("flow_contrast").get<double>(), flow.factor,
+        flow.interpolate ? "concentration over 4 texel centres" : "concentration at the droplet's texel",
+        droplet_ordering_name(flow.ordering),
+        flow.ordering == DropletOrdering::batch ? " (weights counted in 2^-10, F = 1 - (1 - f_c)^Σw)" : ""));
+  }
   return scenario;
 }
 
@@ -327,6 +341,70 @@ void add_colour_checks(const ParticleScenario& scenario, const RunOptions& optio
                                         "ref<float>: every bit equal"));
 }
 
+// The flow map as a grey colour map (R = G = B = F, linear), for write_colour_image.
+template <class Real>
+reference::ColourMap<Real> flow_as_colour(const Grid<Real>& flow) {
+  reference::ColourMap<Real> grey;
+  grey.width = flow.width;
+  grey.height = flow.height;
+  grey.valid = flow.valid;
+  grey.values.resize(flow.size());
+  for (std::size_t i = 0; i < flow.size(); ++i) grey.values[i] = {flow.values[i], flow.values[i], flow.values[i], 1};
+  return grey;
+}
+
+// The flow map (§4.7) of the eroded terrain `eroded` (ref<float>'s: every twin reads the same
+// heights, so the flow kernels are compared alone): the GPU equals ref<float> bit for bit in batch
+// and disjoint orderings; a race's distance from the sequential map is reported.
+void add_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, const RunOptions& options,
+                     CaseResult& result) {
+  FlowConstants sequential = flow;
+  sequential.ordering = DropletOrdering::race;
+  FlowConstants twinned = flow;
+  twinned.ordering = reference_ordering(flow.ordering);
+  const auto truth = reference::flow_map(eroded.cast<double>(), sequential);
+  const auto float_run = reference::flow_map(eroded, twinned);
+  result.notes.push_back(fmt::format("flow map: {} droplets; the plug pass filled {} texels left at 0 (ref<double>)",
+                                     truth.droplets, truth.plugged));
+  const Grid<double> float_as_double = float_run.concentration.cast<double>();
+  result.checks.push_back(informative_check(
+      "flow.max_abs.float_vs_double", field_difference(truth.concentration, float_as_double).max_abs,
+      flow.ordering == DropletOrdering::batch ? "batch ref<float> against the sequential ref<double>: another rule"
+                                              : "ref<float> against ref<double>, both sequential"));
+  if (!options.report_dir.empty()) {
+    const auto folder = options.report_dir / result.name;
+    write_colour_image(flow_as_colour(truth.concentration), folder / "flow_cpu.png");
+    result.artifacts.push_back({result.name + "/flow_cpu.png", "image",
+                                "flow map, ref<double> (sequential): concentration 0 black to 1 white, shown as a "
+                                "linear image (sRGB)"});
+  }
+  if (!options.gpu_available) {
+    result.checks.push_back(skipped_check("parity.flow", options.gpu_unavailable_reason));
+    return;
+  }
+  gpu::FlowMap gpu(eroded.width, eroded.height, flow);
+  gpu.load(eroded);
+  gpu.run();
+  const Grid<float> gpu_flow = gpu.result();
+  const FieldDifference difference = field_difference(float_run.concentration, gpu_flow);
+  if (flow.ordering == DropletOrdering::race) {
+    result.checks.push_back(informative_check("race.flow.cells_differing.gpu_vs_float", double(difference.differing_bits),
+                                              "flow map texels the racing GPU leaves different from the sequential "
+                                              "ref<float> (paths crossing in a pass overwrite each other)"));
+    result.checks.push_back(informative_check("race.flow.max_abs.gpu_vs_float", difference.max_abs,
+                                              "largest concentration difference, racing GPU against ref<float>"));
+  } else {
+    result.checks.push_back(bounded_check(
+        "parity.flow.cells_differing.gpu_vs_float", double(difference.differing_bits), 0.0, std::nullopt,
+        "the flow map after the plug pass, GPU against ref<float> on the same heights: every bit equal (disjoint: no "
+        "two droplets of a pass touch a common texel; batch: integer weight counts)"));
+  }
+  if (!options.report_dir.empty()) {
+    write_colour_image(flow_as_colour(gpu_flow), options.report_dir / result.name / "flow_gpu.png");
+    result.artifacts.push_back({result.name + "/flow_gpu.png", "image", "flow map, GPU (as flow_cpu.png)"});
+  }
+}
+
 // Hydra's Table 5.1 (digest 000 §6.2): total time of 50 iterations at spacing 4, lifetime 50.
 struct PublishedTiming {
   const char* device;
@@ -380,9 +458,10 @@ PreparedTwin prepare_particle(const nlohmann::json& resolved, const LoadedInput&
   PreparedTwin prepared;
   prepared.run = [scenario = make_scenario(resolved, input.heights)](const nlohmann::json& expect,
                                                                      const RunOptions& options, CaseResult& result) {
-    run_droplet_case(scenario.twin, expect, options, result);
+    const Grid<float> eroded = run_droplet_case(scenario.twin, expect, options, result);
     add_droplet_spec(scenario, expect, result);
     if (scenario.colour) add_colour_checks(scenario, options, result);
+    if (scenario.flow) add_flow_checks(*scenario.flow, eroded, options, result);
   };
   return prepared;
 }
@@ -406,15 +485,19 @@ Algorithm particle_algorithm() {
           .has_field_twin = false,
           .benchmark = benchmark_particle,
           .expect_shape = particle_expect_shape(),
-          // Estimated, not yet measured: the input and ref<double> with its two side maps (5 doubles),
-          // ref<float> with up to 16 checkpoint states and the GPU's copies (about 30 floats), the
-          // difference and change maps of the checks (6 doubles), the descriptors.
-          // Colour adds the map in double three times (input, truth, copies) and in float four times
-          // (ref<float>, the GPU's upload, result and its sums): about 200 B a cell.
+          // The input and ref<double> with its two side maps (5 doubles), ref<float> with up to 16
+          // checkpoint states and the GPU's copies (about 30 floats), the difference and change maps
+          // of the checks (6 doubles), the descriptors. Colour adds the map in double three times
+          // (input, truth, copies) and in float four times (ref<float>, the GPU's upload, result and
+          // its sums): about 200 B a cell. The flow map: the eroded heights in double, ref<double>'s
+          // map and its copy of the heights, ref<float>'s, the GPU's 4 buffers and download, the
+          // grey pictures' RGBA maps (4 doubles): about 100 B a cell. Measured within this by
+          // tests/memory_estimates_test.cpp at 768² without colour (the colour share is estimated).
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const double colour = resolved.at("colour") == "none" ? 0.0 : 200.0;
+            const double flow = resolved.at("flow_map").get<bool>() ? 100.0 : 0.0;
             return memory_for(static_cast<double>(input.heights.size()), "cells",
-                              300 + colour + descriptor_bytes_per_cell);
+                              300 + colour + flow + descriptor_bytes_per_cell);
           }};
 }
 

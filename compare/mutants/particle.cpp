@@ -3,8 +3,8 @@
 // spacing 2, 3 iterations) and its hand-derived droplets (spec.ramp, spec.bounded_bite).
 //
 // one_twin: bugs in particle_droplets.comp only, killed by the batch ordering's bit-for-bit parity
-// (parity.shadow.cells_differing, parity.cells_differing and, for colour, parity.colour.*: the GPU
-// against ref<float>, bound 0).
+// (parity.shadow.cells_differing, parity.cells_differing, for colour parity.colour.* and for the
+// flow map parity.flow.*: the GPU against ref<float>, bound 0).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
 // was asked: the hand-derived droplet of the ramp (spec.droplet.*), the droplet ledger (ledger.*:
@@ -33,6 +33,10 @@ std::vector<Mutant> particle_mutants() {
        colour_probe},
       {"erosion.particle.colour_deposit_unweighted", MutantKind::one_twin,
        "particle_droplets.comp blends each of Algorithm 8's 4 corners with f_col instead of f_col·w", colour_probe},
+      {"erosion.particle.flow_corner_weights_swapped", MutantKind::one_twin,
+       "flow_map_droplets.comp swaps the bilinear weights of the (+1, 0) and (0, +1) corners where a droplet leaves "
+       "its concentration (eq. 4.12 over erode4's corners)",
+       probe},
       {"erosion.particle.colour_kept_whole", MutantKind::both_twins,
        "both twins blend a colour deposit as C + col·factor, keeping all of the texel's colour: colour created",
        colour_probe},

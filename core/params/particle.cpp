@@ -50,6 +50,14 @@ const ParamSpecs& particle_param_specs() {
       {"colour", ParamKind::choice, "none", 0, 0, {"none", "astronaut", "grass"}, "",
        "colour map transported by the droplets (§4.5): datasets/real/textures/<name>.png resampled bilinearly to "
        "the heightmap and sRGB-decoded, or none"},
+      {"flow_map", ParamKind::boolean, true, 0, 0, {}, "",
+       "draw the flow map of the eroded terrain (§4.7): droplet paths as a concentration in [0, 1]"},
+      {"flow_spacing", ParamKind::integer, 8, 1, 1024, {}, "texel",
+       "the flow map's own spacing (flow_subdiv); disjoint needs flow_spacing > 2·(lifetime + 2)"},
+      {"flow_contrast", ParamKind::real, 0.5, 0.0, 1.0, {}, "1",
+       "contrast of the flow map: f_c = 0.2·exp(-6.61·contrast) of eq. 4.13 in w = w·(1 - f_c) + f_c (eq. 4.12)"},
+      {"interpolate_flow", ParamKind::boolean, true, 0, 0, {}, "",
+       "concentration left over the 4 nearest texel centres with factors f_c·w; off: f_c at the droplet's texel"},
       {"normalised", ParamKind::boolean, true, 0, 0, {}, "",
        "seed 000's heights (h - min)/(max - min) in [0, 1], in which drop_max and f_c are given; off: the "
        "input's heights as they are"},
@@ -82,6 +90,38 @@ ParticleConstants particle_constants(const nlohmann::json& resolved, const Heigh
   const auto [low, high] = valid_range(heights);
   constants.quantum = batch_quantum(low > high ? 0.0 : std::max(std::abs(low), std::abs(high)));
   return constants;
+}
+
+double flow_contrast_factor(double contrast) { return 0.2 * std::exp(-6.61 * contrast); }
+
+std::array<double, 31> flow_batch_powers(double factor) {
+  std::array<double, 31> powers{};
+  for (std::size_t i = 0; i < powers.size(); ++i) {
+    powers[i] = std::pow(1.0 - factor, std::ldexp(flow_weight_quantum, static_cast<int>(i)));
+  }
+  return powers;
+}
+
+std::optional<FlowConstants> flow_constants(const nlohmann::json& resolved, const ParticleConstants& erosion) {
+  if (!resolved.at("flow_map").get<bool>()) return std::nullopt;
+  FlowConstants flow;
+  flow.spacing = resolved.at("flow_spacing").get<int>();
+  flow.lifetime = erosion.lifetime;
+  flow.acceleration = erosion.acceleration;
+  flow.max_velocity = erosion.max_velocity;
+  flow.drag = erosion.drag;
+  flow.factor = flow_contrast_factor(resolved.at("flow_contrast").get<double>());
+  flow.interpolate = resolved.at("interpolate_flow").get<bool>();
+  flow.ordering = erosion.ordering;
+  flow.batch_powers = flow_batch_powers(flow.factor);
+  if (flow.ordering == DropletOrdering::disjoint && flow.spacing <= 2 * droplet_reach(flow.lifetime)) {
+    throw InputError(fmt::format(
+        "erosion.particle: ordering `disjoint` draws the flow map with disjoint droplets too, which needs "
+        "flow_spacing > 2·(lifetime + 2) = {}; flow_spacing is {} (set flow_spacing to at least {}, or flow_map "
+        "false)",
+        2 * droplet_reach(flow.lifetime), flow.spacing, 2 * droplet_reach(flow.lifetime) + 1));
+  }
+  return flow;
 }
 
 std::vector<std::string> particle_warnings(const ParticleConstants& constants) {

@@ -14,6 +14,8 @@
 // only when given one; colour_mixing and interpolate_colour act on nothing otherwise.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,35 @@ struct ParticleConstants {
   double quantum = 0.0;        // batch: the height of one fixed-point unit (a power of two)
 };
 
+// The flow map's constants (§4.7): the droplets move as the erosion's (Algorithm 4 without the
+// drop_max limit, drag, the v_max clamp), one droplet per texel in spacing² passes (its own spacing),
+// and leave a concentration F = F·(1 - factor) + factor (eq. 4.12) where they pass, factor = f_c·w
+// over erode4's 4 corners (interpolate) or f_c at the droplet's texel.
+// Batch ordering: the concentration is order-dependent in float, so each visit adds its weight w as
+// an integer count of 2^-10 (flow_weight_quantum) and a texel's count n becomes
+// F = 1 - Π over n's set bits i of (1 - f_c)^(2^i · 2^-10) (batch_powers[i], rounded once per Real):
+// order-independent, (1 - f_c)^w in place of 1 - f_c·w per visit (equal for w = 1).
+struct FlowConstants {
+  int spacing = 8;             // flow_subdiv: one droplet per spacing x spacing block and pass
+  int lifetime = 50;           // steps of one droplet (shared with erosion)
+  double acceleration = 0.5;   // as ParticleConstants
+  double max_velocity = 2.0;
+  double drag = 0.8;
+  double factor = 0.0;         // f_c of eq. 4.12: flow_contrast_factor(contrast), eq. 4.13
+  bool interpolate = true;     // interpolate_flow: the concentration over the 4 nearest texel centres
+  DropletOrdering ordering = DropletOrdering::race;
+  std::array<double, 31> batch_powers{};  // (1 - factor)^(2^i · flow_weight_quantum), i = 0..30
+};
+
+// One unit of a batch flow weight count.
+inline constexpr double flow_weight_quantum = 1.0 / 1024.0;
+
+// Eq. 4.13: f_c = 0.2·exp(-6.61·contrast), the UI's contrast in [0, 1] to the flow contrast constant.
+double flow_contrast_factor(double contrast);
+
+// (1 - factor)^(2^i · flow_weight_quantum) for i = 0..30, in double.
+std::array<double, 31> flow_batch_powers(double factor);
+
 // The texels one droplet can touch beyond its start: lifetime unit steps, one more for the
 // neighbour reads and one for the bilinear corners. Spacing must exceed twice this for `disjoint`.
 int droplet_reach(int lifetime);
@@ -54,6 +85,11 @@ const ParamSpecs& particle_param_specs();
 // normalised when the case asks for it; the quantum is taken from them). Throws InputError when
 // `disjoint` is asked with a spacing that lets droplets meet.
 ParticleConstants particle_constants(const nlohmann::json& resolved, const Heightmap& heights);
+
+// The flow map's constants from resolved parameters and the erosion's constants (shared motion);
+// nullopt when the case asks for no flow map. Throws InputError when `disjoint` is asked with a flow
+// spacing that lets droplets meet.
+std::optional<FlowConstants> flow_constants(const nlohmann::json& resolved, const ParticleConstants& erosion);
 
 // What the case's output says about parameters run as asked though the thesis warns against them
 // (erosion or deposition strength of 0.5 and more oscillates, §4.4.1): the run goes on.

@@ -51,6 +51,7 @@
 #include <fmt/format.h>
 
 #include "core/mutant.hpp"
+#include "reference/erosion/hydra_motion.hpp"
 
 namespace gt::reference {
 namespace {
@@ -83,11 +84,6 @@ struct Kernel {
   bool kept_sediment_on_deposit = mutant_active("erosion.particle.kept_sediment_on_deposit");
   bool unbounded_erosion = mutant_active("erosion.particle.unbounded_erosion");
   bool colour_kept_whole = mutant_active("erosion.particle.colour_kept_whole");
-};
-
-struct Texel {
-  int x;
-  int y;
 };
 
 template <class Real>
@@ -218,44 +214,11 @@ Neighbourhood<Real> neighbourhood(const PassTerrain<Real>& terrain, Texel t) {
   return n;
 }
 
-// Algorithm 4 as upstream nests it: per axis, towards the lower side along the motion (from rest
-// the negative side), not when the drop exceeds drop_max.
-template <class Real>
-Real accelerate_axis(Real velocity, Real height, Real ahead, Real behind, const Kernel<Real>& k) {
-  if (velocity > 0) {
-    const Real drop = height - ahead;
-    if (drop <= k.max_jump) velocity = velocity + k.acceleration * drop;
-  } else {
-    const Real drop = height - behind;
-    if (drop <= k.max_jump) velocity = velocity - k.acceleration * drop;
-  }
-  return velocity;
-}
-
-// The 4 texel centres around the droplet, erode4's and colorize4's: the corner cell
-// ivec2(pos - 0.5) by truncation (as upstream), then +x, +y, +xy, with the bilinear weights
-// (1-fx)(1-fy), fx(1-fy), (1-fx)fy, fx·fy.
-template <class Real>
-struct Corners {
-  Texel cells[4];
-  Real weights[4];
-};
-
-template <class Real>
-Corners<Real> corners_around(const Droplet<Real>& drop) {
-  const Real corner_x = drop.pos_x - Real(0.5), corner_y = drop.pos_y - Real(0.5);
-  const Texel corner{static_cast<int>(corner_x), static_cast<int>(corner_y)};  // truncation, as ivec2()
-  const Real fx = corner_x - static_cast<Real>(corner.x), fy = corner_y - static_cast<Real>(corner.y);
-  const Real gx = Real(1) - fx, gy = Real(1) - fy;
-  return {{corner, {corner.x + 1, corner.y}, {corner.x, corner.y + 1}, {corner.x + 1, corner.y + 1}},
-          {gx * gy, fx * gy, gx * fy, fx * fy}};
-}
-
 // Algorithm 6 as upstream's erode4: the amount removed at each corner higher than the
 // neighbourhood minimum; returns the weight of the corners eroded and (batch) their quanta.
 template <class Real>
 std::pair<Real, long long> erode_corners(PassTerrain<Real>& terrain, Droplet<Real>& drop, Real amount, Real lowest) {
-  const Corners<Real> corners = corners_around(drop);
+  const Corners<Real> corners = corners_around(drop.pos_x, drop.pos_y);
   Real eroded_weight = 0;
   long long eroded_quanta = 0;
   DropletLedger& ledger = terrain.ledger();
@@ -351,7 +314,7 @@ void blend_colour(PassTerrain<Real>& terrain, const Droplet<Real>& drop, Texel c
 template <class Real>
 void deposit_colour(PassTerrain<Real>& terrain, const Droplet<Real>& drop, const Kernel<Real>& k) {
   if (k.interpolate_colour) {
-    const Corners<Real> corners = corners_around(drop);
+    const Corners<Real> corners = corners_around(drop.pos_x, drop.pos_y);
     for (int c = 0; c < 4; ++c) blend_colour(terrain, drop, corners.cells[c], k.colour_mixing * corners.weights[c], k);
     return;
   }
@@ -369,8 +332,8 @@ template <class Real>
 bool step(PassTerrain<Real>& terrain, Droplet<Real>& drop, const Kernel<Real>& k) {
   const Neighbourhood<Real> n = neighbourhood(terrain, drop.texel);
   Real height = terrain.load(drop.texel);
-  drop.vel_x = accelerate_axis(drop.vel_x, height, n.right, n.left, k);
-  drop.vel_y = accelerate_axis(drop.vel_y, height, n.above, n.below, k);
+  drop.vel_x = accelerate_axis(drop.vel_x, height, n.right, n.left, k.acceleration, k.max_jump);
+  drop.vel_y = accelerate_axis(drop.vel_y, height, n.above, n.below, k.acceleration, k.max_jump);
   if (height < n.lowest) drop.vel_x = drop.vel_y = 0;  // pit stop
   drop.vel_x = drop.vel_x * k.drag;
   drop.vel_y = drop.vel_y * k.drag;

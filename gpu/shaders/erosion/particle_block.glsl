@@ -22,6 +22,8 @@
 #ifndef PARTICLE_BLOCK_GLSL
 #define PARTICLE_BLOCK_GLSL
 
+#include "erosion/hydra_motion.glsl"
+
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std140, binding = 0) uniform ParticleBlock {
@@ -62,11 +64,6 @@ layout(std430, binding = 6) buffer Colour { vec4 colour[]; };  // RGBA per cell
 layout(std430, binding = 7) buffer ColourSums { int colour_sums[]; };
 #endif
 #endif
-
-// std::max(a, b) = a < b ? b : a and std::min(a, b) = b < a ? b : a, signed zeros and NaN as the
-// float reference evaluates them (GLSL's max/min leave those cases open).
-float ref_max(float a, float b) { return a < b ? b : a; }
-float ref_min(float a, float b) { return b < a ? b : a; }
 
 // Whether a droplet may read and write `cell`: inside the grid and valid.
 bool open_cell(ivec2 cell) {

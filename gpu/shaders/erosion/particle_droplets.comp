@@ -44,15 +44,11 @@
 
 uniform ivec2 pass_offset;  // (ox, oy) of this pass, each in [0, S)
 
-// erode4's corners in the order they are visited: (0,0), (1,0), (0,1), (1,1).
-const ivec2 corner_offsets[4] = ivec2[4](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(1, 1));
-
-// Algorithm 4 along one axis: `speed` is the velocity component, `plus_height` / `minus_height`
-// the neighbours at +1 / -1 along that axis, `height` the texel's. Upstream's nested branches: the
-// sign of the velocity picks the neighbour, a drop beyond max_jump leaves the velocity unchanged.
+// Algorithm 4 along one axis (hydra_motion.glsl's accelerated_axis with drop_max; as printed, with
+// its if/else-if fall-through, under the mutant).
 float accelerated(float speed, float height, float plus_height, float minus_height) {
-  precise float result = speed;
 #ifdef GT_MUTANT_EROSION_PARTICLE_FALL_THROUGH_ACCELERATION
+  precise float result = speed;
   precise float plus_drop = height - plus_height;
   precise float minus_drop = height - minus_height;
   if (speed > 0.0 && plus_drop <= max_jump) {
@@ -60,16 +56,10 @@ float accelerated(float speed, float height, float plus_height, float minus_heig
   } else if (minus_drop <= max_jump) {
     result = speed - acceleration * minus_drop;
   }
-#else
-  if (speed > 0.0) {
-    precise float drop = height - plus_height;
-    if (drop <= max_jump) result = speed + acceleration * drop;
-  } else {
-    precise float drop = height - minus_height;
-    if (drop <= max_jump) result = speed - acceleration * drop;
-  }
-#endif
   return result;
+#else
+  return accelerated_axis(speed, height, plus_height, minus_height, acceleration, max_jump);
+#endif
 }
 
 // The amount to erode: bite·(cap - sat) bounded by the height above the neighbourhood minimum.
@@ -81,23 +71,6 @@ float erosion_amount(float wanted, float height, float lowest) {
   precise float amount = ref_min(wanted, above_lowest);
 #endif
   return amount;
-}
-
-// erode4's sample point pos - (0.5, 0.5); its corner cell (0,0) is ivec2(point), truncated toward
-// zero as upstream.
-vec2 corner_point(vec2 position) {
-  precise vec2 point = vec2(position.x - 0.5, position.y - 0.5);
-  return point;
-}
-
-// Bilinear weights of the corners (0,0), (1,0), (0,1), (1,1) for the sample point `point` whose
-// corner cell is `corner`: (1-f.x)(1-f.y), f.x(1-f.y), (1-f.x)f.y, f.x·f.y with f = point - corner.
-vec4 bilinear_weights(vec2 point, ivec2 corner) {
-  precise vec2 fraction = vec2(point.x - float(corner.x), point.y - float(corner.y));
-  precise float rest_x = 1.0 - fraction.x;
-  precise float rest_y = 1.0 - fraction.y;
-  precise vec4 weights = vec4(rest_x * rest_y, fraction.x * rest_y, rest_x * fraction.y, fraction.x * fraction.y);
-  return weights;
 }
 
 // erode4's weights (bilinear_weights, swapped under the mutant).
