@@ -178,7 +178,8 @@ FloatRun run_float(const DropletTwin& twin) {
 }
 
 // GPU vs ref<float> from shared states: batch bit for bit; disjoint within the model of the same
-// float operations (a cell is touched by one droplet per pass, at most 5 times a step).
+// float operations (a cell is touched by one droplet per pass, at most writes_per_cell_per_step
+// times a step, so at most lifetime·spacing² times an iteration).
 void add_shadow_parity(const DropletTwin& twin, const FloatRun& float_run, GpuFieldRunner& gpu,
                        CaseResult& result) {
   double worst_abs = 0.0;
@@ -200,13 +201,13 @@ void add_shadow_parity(const DropletTwin& twin, const FloatRun& float_run, GpuFi
                                           "state: every bit equal; " + where));
     return;
   }
-  const double additions = twin.writes_per_step * twin.lifetime * twin.setup.spacing * twin.setup.spacing;
+  const double additions = twin.writes_per_cell_per_step * twin.lifetime * twin.setup.spacing * twin.setup.spacing;
   const Bounds bounds = parity_bounds_same_arithmetic(additions, std::max(std::abs(totals.low), std::abs(totals.high)) / range);
   result.checks.push_back(bounded_check("parity.shadow.max_abs.gpu_vs_float", worst_abs / range, bounds.strict,
                                         bounds.loose,
                                         fmt::format("{}; {} additions per cell and iteration ({} per step of the one "
                                                     "droplet per pass that reaches it); {}",
-                                                    where, additions, twin.writes_per_step, bounds.model)));
+                                                    where, additions, twin.writes_per_cell_per_step, bounds.model)));
   result.checks.push_back(informative_check("parity.shadow.cells_differing.gpu_vs_float", double(worst_cells),
                                             "cells differing in any bit (0 where division and sqrt round correctly)"));
 }

@@ -50,8 +50,8 @@ struct DropletTwin {
   // Float roundings per droplet step that can move material between the terrain and the sediment
   // (stores and sediment updates): the float ledger's error model.
   double roundings_per_step = 0.0;
-  // Cells a droplet can touch per step at most (writes): the disjoint parity's error model.
-  double writes_per_step = 0.0;
+  // Writes one droplet step can make to one cell at most: the disjoint parity's error model.
+  double writes_per_cell_per_step = 0.0;
   // The references from `heights` for `iterations` outer iterations; race and disjoint run the
   // droplets of a pass one after the other (the sequential truth).
   std::function<reference::DropletRun<double>(const Grid<double>& heights, int iterations, DropletSetup setup)>

@@ -46,9 +46,9 @@ DropletTwin beyer_twin(const Heightmap& input, const BeyerConstants& constants) 
   twin.iterations = constants.iterations;
   twin.lifetime = constants.lifetime;
   // A step erodes with the brush (a store and a sediment update per sample) or deposits on 4
-  // samples (a store each, one sediment update).
+  // samples (a store each, one sediment update): each sample, a distinct cell, written once.
   twin.roundings_per_step = 2.0 * brush_samples(constants);
-  twin.writes_per_step = brush_samples(constants);
+  twin.writes_per_cell_per_step = 1.0;
   twin.reference_double = [constants](const Grid<double>& heights, int iterations, DropletSetup setup) {
     return reference::beyer_erosion(heights, with_setup(constants, setup), iterations,
                                     reference_ordering(setup.ordering));

@@ -53,7 +53,9 @@ DropletTwin particle_twin(const Heightmap& input, const ParticleConstants& const
   twin.iterations = constants.iterations;
   twin.lifetime = constants.lifetime;
   twin.roundings_per_step = 7.0;  // 4 corner stores + 1 deposit + 2 sediment updates
-  twin.writes_per_step = 5.0;     // 4 corners + the deposit texel
+  // A step erodes (each of 4 distinct corners, or the texel, once) or deposits (at the texel):
+  // one write to a cell at most.
+  twin.writes_per_cell_per_step = 1.0;
   twin.reference_double = [constants](const Grid<double>& heights, int iterations, DropletSetup setup) {
     return reference::particle_erosion(heights, with_setup(constants, setup), iterations,
                                        reference_ordering(setup.ordering));

@@ -4,7 +4,8 @@
 //
 // one_twin: bugs in particle_droplets.comp only, killed by the batch ordering's bit-for-bit parity
 // (parity.shadow.cells_differing, parity.cells_differing, for colour parity.colour.* and for the
-// flow map parity.flow.*: the GPU against ref<float>, bound 0).
+// flow map parity.flow.*: the GPU against ref<float>, bound 0) and, on the disjoint cone, by the
+// disjoint ordering's rounding bound (parity.shadow.max_abs).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
 // was asked: the hand-derived droplet of the ramp (spec.droplet.*), the droplet ledger (ledger.*:
@@ -24,7 +25,8 @@ std::vector<Mutant> particle_mutants() {
        "nested branches: a droplet moving +x whose drop ahead exceeds drop_max accelerates towards -x",
        {"erosion.particle.mutant_probe.batch", "erosion.particle.mutant_probe.colour"}},
       {"erosion.particle.deposit_beside", MutantKind::one_twin,
-       "particle_droplets.comp deposits at the texel to the droplet's +x side instead of its own", probe},
+       "particle_droplets.comp deposits at the texel to the droplet's +x side instead of its own",
+       {"erosion.particle.mutant_probe.batch", "erosion.particle.disjoint.cone"}},
       {"erosion.particle.corner_weights_swapped", MutantKind::one_twin,
        "particle_droplets.comp swaps the bilinear weights of the (+1, 0) and (0, +1) corners of Algorithm 6", probe},
       {"erosion.particle.colour_mixing_reversed", MutantKind::one_twin,
