@@ -63,6 +63,7 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
     spec.input = {{"mesh", std::filesystem::absolute(ad_hoc.input).string()}};
   } else if (!ad_hoc.input.empty()) {
     spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
+    if (ad_hoc.red_channel) spec.input["red_channel"] = true;
   } else if (!algorithm.iterates) {
     spec.input = {{"generator", "flat"}, {"width", ad_hoc.width}, {"height", ad_hoc.height}, {"cell_size", ad_hoc.cell_size}};
   } else {

@@ -25,6 +25,7 @@ struct AdHocCase {
   int height = 256;
   double cell_size = 1.0;
   std::vector<std::string> assignments;  // "name=value"
+  bool red_channel = false;              // a colour image's red channel as height (else it is refused)
 };
 
 struct DriverOptions {

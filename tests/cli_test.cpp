@@ -32,6 +32,7 @@
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <tiffio.h>
@@ -674,7 +675,9 @@ TEST_F(CliGeoTiff, JakoThermalOnEgl) {
 // An RGB image is accepted and its channel 0 is the height: one iteration with an 85° talus moves
 // nothing on these gentle slopes (at most 0.05 per 1 m cell), so the result is the input, red / 255.
 // (ZeroIterationsIsTheIdentity says so more directly.)
-TEST(CliRun, RgbPngUsesChannelZero) {
+// A colour picture is not a heightmap: refused with exit 2, nothing written, unless --red-channel
+// takes its red channel (channel 0) as height.
+TEST(CliRun, RgbPngIsRefusedUnlessItsRedChannelIsAskedFor) {
   const TempDir work;
   constexpr int width = 24, height = 16;
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * height * 3);
@@ -695,9 +698,15 @@ TEST(CliRun, RgbPngUsesChannelZero) {
     ASSERT_TRUE(output->close());
   }
   const fs::path out = work / "report";
-  const RunResult run = run_groundtruth({"run", "--algorithm", "erosion.thermal", "--input", input.string(), "--set",
-                                         "iterations=1", "--set", "talus_angle=85", "--out", out.string()},
-                                        work.path());
+  const std::vector<std::string> args = {"run", "--algorithm", "erosion.thermal", "--input", input.string(), "--set",
+                                         "iterations=1", "--set", "talus_angle=85", "--out", out.string()};
+  const RunResult refused = run_groundtruth(args, work.path());
+  EXPECT_EQ(refused.status, 2) << refused;
+  EXPECT_THAT(refused.err, ::testing::HasSubstr("not a heightmap")) << refused;
+  EXPECT_FALSE(fs::exists(out));
+  std::vector<std::string> red_channel = args;
+  red_channel.push_back("--red-channel");
+  const RunResult run = run_groundtruth(red_channel, work.path());
   ASSERT_EQ(run.status, 0) << run;
   const json report = read_json(out / "report.json");
   ASSERT_TRUE(report.is_object());

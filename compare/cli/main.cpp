@@ -247,6 +247,9 @@ int main(int argc, char** argv) {
   run->add_option("--algorithm", ad_hoc.algorithm, "ad-hoc case: the algorithm");
   run->add_option("--input", ad_hoc.input, "ad-hoc case: a heightmap file (PNG, TIFF/GeoTIFF, EXR, volcano JSON, npz)");
   run->add_option("--set", ad_hoc.assignments, "ad-hoc case: a parameter, name=value (repeatable)");
+  run->add_flag("--red-channel", ad_hoc.red_channel,
+                "ad-hoc case: take a colour image's red channel as height (seed 000 §4.2); without it a colour "
+                "image is refused as not a heightmap");
   std::string grid_size;
   run->add_option("--size", grid_size, "ad-hoc case of a generator (noise) without --input: the grid, WxH (256x256)");
   run->add_option("--cell-size", ad_hoc.cell_size, "ad-hoc case of a generator: cell size in metres")

@@ -361,7 +361,8 @@ void check_grey(OIIO::ImageInput& input, const HeightmapReadOptions& options, st
   if (coloured == 0) return;
   throw InputError(fmt::format(
       "{} is a colour image, not a heightmap: its red, green and blue differ in {} of {} pixels; to take its red "
-      "channel as height, as seed 000 §4.2 does with a picture, set \"red_channel\": true on the case's input",
+      "channel as height, as seed 000 §4.2 does with a picture, set \"red_channel\": true on the case's input (ad-hoc "
+      "runs: --red-channel)",
       file.string(), coloured, rgb.size() / 3));
 }
 
