@@ -495,11 +495,16 @@ void write_artifacts(const FieldTwin& twin, const Heightmap& input, const Grid<d
   }
   write_heightmap(cpu, folder / "cpu.exr");
   add_artifact(result, "cpu.exr", "field", "CPU reference (double), float32 EXR");
+  write_heightmap(cpu, folder / "cpu.npy");
+  add_artifact(result, "cpu.npy", "field", "CPU reference (double), float32 NumPy array (height, width), NaN no-data");
   write_provenance(cpu, folder / "cpu.json", result);
-  add_artifact(result, "cpu.json", "field", "how cpu.exr was made: algorithm, parameters, input, grid");
+  add_artifact(result, "cpu.json", "field", "how cpu.exr and cpu.npy were made: algorithm, parameters, input, grid");
   if (!gpu) return;
-  write_heightmap(gpu->first.cast<double>(), folder / "gpu.exr");
+  const Heightmap gpu_field = gpu->first.cast<double>();
+  write_heightmap(gpu_field, folder / "gpu.exr");
   add_artifact(result, "gpu.exr", "field", "GPU, float32 EXR");
+  write_heightmap(gpu_field, folder / "gpu.npy");
+  add_artifact(result, "gpu.npy", "field", "GPU, float32 NumPy array (height, width), NaN no-data");
 }
 
 }  // namespace

@@ -224,6 +224,57 @@ TEST(HeightmapIo, AGreyImageStoredAsRgbIsAHeightmap) {
   EXPECT_EQ(read_heightmap(file).heights.values, (std::vector<double>{0.0, 1.0}));
 }
 
+// .npy: float32 (height, width), NaN no-data, read back with the same values and mask; the data
+// starts at a multiple of 64 bytes as NumPy's format 1.0 asks.
+TEST(HeightmapIo, NpyRoundTripsValuesAndNoData) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "heights.npy";
+  const Heightmap written = masked_sample();
+  write_heightmap(written, file);
+  const HeightmapFile read = read_heightmap(file);
+  EXPECT_EQ(read.format, "npy");
+  EXPECT_EQ(read.heights.width, written.width);
+  EXPECT_EQ(read.heights.height, written.height);
+  EXPECT_EQ(read.heights.valid, written.valid);
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    if (written.is_valid(i)) {
+      EXPECT_EQ(read.heights.values[i], written.values[i]) << i;
+    }
+  }
+  EXPECT_EQ(fs::file_size(file) % 64, written.size() * sizeof(float) % 64);
+  std::ifstream in(file, std::ios::binary);
+  std::string lead(10, '\0');
+  in.read(lead.data(), 10);
+  EXPECT_EQ(lead.substr(1, 5), "NUMPY");
+  const std::size_t header = static_cast<unsigned char>(lead[8]) + 256u * static_cast<unsigned char>(lead[9]);
+  EXPECT_EQ((10 + header) % 64, 0u);
+  EXPECT_EQ(fs::file_size(file), 10 + header + written.size() * sizeof(float));
+}
+
+// A 3-D .npy is a volume, not a heightmap.
+TEST(HeightmapIo, NpyOfAnotherShapeIsRefused) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "volume.npy";
+  const char header[] = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 2, 2), }";
+  std::string padded = header;
+  padded.append(63 - (10 + padded.size()) % 64, ' ');
+  padded.push_back('\n');
+  std::ofstream out(file, std::ios::binary);
+  out.write("\x93NUMPY\x01\x00", 8);
+  out.put(static_cast<char>(padded.size() & 0xff));
+  out.put(static_cast<char>(padded.size() >> 8));
+  out << padded;
+  const std::vector<float> values(8, 1.0f);
+  out.write(reinterpret_cast<const char*>(values.data()), 32);
+  out.close();
+  try {
+    (void)read_heightmap(file);
+    FAIL() << "a 3-D array was read as a heightmap";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("2-D array"));
+  }
+}
+
 TEST(HeightmapIo, CellSizeOptionOverridesTheFile) {
   const TemporaryFolder folder;
   const fs::path file = folder.path() / "heights.exr";

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 #include <zip.h>
 
@@ -242,6 +243,48 @@ HeightmapFile read_volcano_json(const path& file) {
     }
   }
   result.notes.push_back("volcano JSON: heights in metres, 10 m cells (vega-datasets), null values invalid");
+  return result;
+}
+
+HeightmapFile read_npy_heightmap(const path& file) {
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, error);
+  if (error) throw InputError(fmt::format("{}: cannot read: {}", file.string(), error.message()));
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot open", file.string()));
+  const std::string where = file.string();
+  const ByteSource source = [&in, &where](void* destination, std::size_t count) {
+    in.read(static_cast<char*>(destination), static_cast<std::streamsize>(count));
+    if (in.bad()) throw InputError(fmt::format("{}: read error", where));
+    return static_cast<std::size_t>(in.gcount());
+  };
+  const auto element_count = [&where](const std::vector<long long>& shape) {
+    if (shape.size() != 2 || shape[0] < 1 || shape[1] < 1) {
+      throw InputError(fmt::format("{}: a heightmap .npy is a non-empty 2-D array (rows, columns); this one has "
+                                   "shape ({})",
+                                   where, fmt::join(shape, ", ")));
+    }
+    return checked_element_count(shape, where);
+  };
+  NpyArray array = read_npy(source, bytes, element_count, where);
+  HeightmapFile result;
+  result.format = "npy";
+  result.heights = Heightmap(static_cast<int>(array.shape[1]), static_cast<int>(array.shape[0]));
+  std::size_t no_data = 0;
+  for (std::size_t i = 0; i < array.values.size(); ++i) {
+    if (std::isnan(array.values[i])) {
+      mark_invalid(result.heights, i);
+      ++no_data;
+    } else {
+      result.heights.values[i] = array.values[i];
+    }
+  }
+  if (no_data > 0) {
+    result.notes.push_back(fmt::format("{} NaN cells of {} taken as no-data and masked: no algorithm reads or "
+                                       "changes them",
+                                       no_data, array.values.size()));
+  }
+  result.notes.push_back("no cell size in the file: 1 m assumed (set cell_size)");
   return result;
 }
 

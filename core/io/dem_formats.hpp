@@ -19,6 +19,11 @@ HeightmapFile read_volcano_json(const std::filesystem::path& path);
 // arrays the archive holds.
 HeightmapFile read_matplotlib_npz(const std::filesystem::path& path);
 
+// A plain .npy file holding one 2-D array (rows, columns) of '<i2', '<i4', '<f4' or '<f8' (what
+// write_heightmap writes, or numpy.save of a DEM): NaN cells become no-data; no cell size is
+// stored, so 1 m is assumed and said in the notes.
+HeightmapFile read_npy_heightmap(const std::filesystem::path& path);
+
 // Marks cell `index` as no-data: value 0, valid 0 (allocating the mask on first use).
 void mark_invalid(Heightmap& heights, std::size_t index);
 

@@ -16,12 +16,14 @@
 #include "core/io/heightmap_io.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -447,8 +449,32 @@ void write_single_channel(const path& temporary, const path& target, OIIO::TypeD
   }
 }
 
+// NumPy's .npy format 1.0: the magic, the version, a little-endian uint16 header length and a
+// Python dict literal padded with spaces and a newline so the data starts at a multiple of 64
+// bytes; then float32 '<f4' values in C order, shape (height, width), no-data as NaN.
+void write_npy(const Heightmap& heights, const path& temporary, const path& target) {
+  static_assert(std::endian::native == std::endian::little, "write_npy stores the host's floats as '<f4'");
+  std::string header = fmt::format("{{'descr': '<f4', 'fortran_order': False, 'shape': ({}, {}), }}", heights.height,
+                                   heights.width);
+  const std::size_t preamble = 10;  // magic (6), version (2), header length (2)
+  header.append(63 - (preamble + header.size()) % 64, ' ');
+  header.push_back('\n');
+  const std::vector<float> values = float32_pixels(heights);
+  std::ofstream out(temporary, std::ios::binary);
+  const auto length = static_cast<std::uint16_t>(header.size());
+  const char lead[preamble] = {'\x93', 'N', 'U', 'M', 'P', 'Y', '\x01', '\x00', static_cast<char>(length & 0xff),
+                               static_cast<char>(length >> 8)};
+  out.write(lead, preamble);
+  out.write(header.data(), static_cast<std::streamsize>(header.size()));
+  out.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(float)));
+  out.close();
+  if (!out) throw InputError(fmt::format("cannot write {}", target.string()));
+}
+
 void write_pixels(const Heightmap& heights, const path& temporary, const path& target, const std::string& extension) {
-  if (extension == ".png") {
+  if (extension == ".npy") {
+    write_npy(heights, temporary, target);
+  } else if (extension == ".png") {
     const std::vector<std::uint16_t> levels = png16_levels(heights);
     write_single_channel(temporary, target, OIIO::TypeDesc::UINT16, heights.width, heights.height, levels.data());
   } else {
@@ -479,6 +505,7 @@ HeightmapFile read_heightmap(const path& file, const HeightmapReadOptions& optio
   const std::string extension = lower_extension(file);
   HeightmapFile result = extension == ".json"  ? detail::read_volcano_json(file)
                          : extension == ".npz" ? detail::read_matplotlib_npz(file)
+                         : extension == ".npy" ? detail::read_npy_heightmap(file)
                                                : read_image(file, options);
   apply_cell_size_override(result, options.cell_size);
   return result;
@@ -486,9 +513,10 @@ HeightmapFile read_heightmap(const path& file, const HeightmapReadOptions& optio
 
 void write_heightmap(const Heightmap& heights, const path& file) {
   const std::string extension = lower_extension(file);
-  if (extension != ".exr" && extension != ".tif" && extension != ".tiff" && extension != ".png") {
-    throw InputError(fmt::format("cannot write {}: unknown heightmap extension '{}' (use .exr, .tif, .tiff or .png)",
-                                 file.string(), extension));
+  if (extension != ".exr" && extension != ".tif" && extension != ".tiff" && extension != ".png" && extension != ".npy") {
+    throw InputError(fmt::format(
+        "cannot write {}: unknown heightmap extension '{}' (use .exr, .tif, .tiff, .png or .npy)", file.string(),
+        extension));
   }
   check_writable_shape(heights, file);
   const path temporary =

@@ -7,12 +7,15 @@
 //       as raw integers, metres for DEMs). GeoTIFF: GDAL_NODATA (tag 42113) cells become invalid,
 //       ModelPixelScale (tag 33550) gives the cell size (degrees are converted to metres at the
 //       grid's centre latitude from ModelTiepoint, tag 33922). EXR/TIFF float NaN cells become
-//       invalid. Multi-channel images: channel 0 is used and a note says so.
+//       invalid. Multi-channel images: channel 0 is used and a note says so; a colour picture
+//       (red, green and blue differ somewhere) is refused unless `red_channel` asks for its red.
 //   .json: the vega-datasets volcano format {width, height, values[row-major]} (10 m cells,
 //       null values invalid).
 //   .npz: matplotlib's sample DEMs: jacksboro_fault_dem.npz (`elevation`, int16, cell size from
 //       dx/dy, which are in degrees: 1/1200 = 3 arc-seconds) and topobathy.npz (`topo`, float32,
 //       longitude/latitude arrays in degrees; mean latitude step, as the rows are not evenly spaced).
+//   .npy: one 2-D NumPy array (rows, columns) of int16/int32/float32/float64; NaN cells invalid,
+//       1 m cells assumed.
 //   Degrees become metres at the grid's centre latitude: 111320 m x cos(lat) per degree of
 //   longitude, 110574 m per degree of latitude (see detail::degrees_to_metres).
 //   Invalid (no-data, NaN) cells store the value 0. Notes say what was decided for the file.
@@ -21,8 +24,9 @@
 // allocating.
 //
 // write_heightmap picks the format by extension: .exr (float32, no-data as NaN), .tif/.tiff
-// (float32, no-data as NaN), .png (16-bit, valid range mapped to 0..65535, no-data 0; lossy and
-// without the range, for viewing). The cell size is not stored. The file is written under a
+// (float32, no-data as NaN), .npy (NumPy float32, shape (height, width), no-data as NaN; read back
+// by read_heightmap, or numpy.load), .png (16-bit, valid range mapped to 0..65535, no-data 0; lossy
+// and without the range, for viewing). The cell size is not stored. The file is written under a
 // temporary name in the same folder and renamed, so a failed write leaves nothing behind; any
 // other extension, or a write that fails, throws InputError.
 #pragma once
