@@ -14,6 +14,7 @@
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
+#include "core/io/heightmap_io.hpp"
 #include "core/params/thermal.hpp"
 #include "core/sum.hpp"
 #include "gpu/timing.hpp"
@@ -429,6 +430,24 @@ void write_pictures(const DropletTwin& twin, const DropletRun<double>& truth,
   add("gpu_vs_cpu.png", fmt::format("GPU - ref<double>: max {:.3g}", gpu.max_abs));
 }
 
+}  // namespace
+
+void write_field(const Grid<double>& field, const std::string& stem, const std::string& what, const RunOptions& options,
+                 CaseResult& result) {
+  struct Format {
+    const char* extension;
+    const char* description;
+  };
+  for (const Format format : {Format{".exr", "float32 EXR"}, Format{".npy", "float32 NumPy array (height, width), NaN "
+                                                                              "no-data"}}) {
+    const std::string file = stem + format.extension;
+    write_heightmap(field, options.report_dir / result.name / file);
+    result.artifacts.push_back({result.name + "/" + file, "field", fmt::format("{}, {}", what, format.description)});
+  }
+}
+
+namespace {
+
 BenchmarkRow iteration_row(const std::string& algorithm, const std::string& backend, int size, int reps,
                            double ms_per_iteration, double steps_per_iteration, const std::string& device,
                            const std::string& what) {
@@ -480,6 +499,14 @@ Grid<float> run_droplet_case(const DropletTwin& twin, const nlohmann::json& expe
   const Grid<double> input = own_units(twin.input);
   const Grid<double> truth_heights = own_units(truth.heights);
   const Grid<double> float_as_double = own_units(float_run.run.heights.cast<double>());
+  if (!options.report_dir.empty()) {
+    write_field(truth_heights, "cpu", "terrain after, ref<double> (sequential droplets), in the input's units",
+                options, result);
+    if (gpu_heights) {
+      write_field(own_units(gpu_heights->cast<double>()), "gpu", "terrain after, GPU, in the input's units", options,
+                  result);
+    }
+  }
   // The GPU's terrain is judged against ref<float> (bit for bit, or by the race figures); against
   // ref<double> a droplet's discrete path parts at the first rounding that moves its texel, so the
   // descriptors' GPU-to-double parity would grade that chaos: the descriptors show the references.
