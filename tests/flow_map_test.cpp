@@ -143,12 +143,9 @@ TEST_P(FlowMapGpu, EqualsTheFloatReferenceBitForBit) {
   flow.batch_powers = gt::flow_batch_powers(flow.factor);
   flow.interpolate = interpolate;
   flow.spacing = ordering == DropletOrdering::disjoint ? 17 : 3;
-  const auto reference = gt::reference::flow_map(
-      field, [&] {
-        FlowConstants sequential = flow;
-        sequential.ordering = gt::reference_ordering(ordering);
-        return sequential;
-      }());
+  FlowConstants twinned = flow;
+  twinned.ordering = gt::reference_ordering(ordering);
+  const auto reference = gt::reference::flow_map(field, twinned);
   gt::gpu::FlowMap gpu(field.width, field.height, flow);
   gpu.load(field);
   gpu.run();
