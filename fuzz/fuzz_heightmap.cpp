@@ -1,5 +1,5 @@
 // libFuzzer target: read_heightmap on arbitrary bytes under the extension GT_FUZZ_EXTENSION
-// (built once per format: png, tif, exr, npz, json). A malformed file must end in InputError;
+// (built once per format: png, tif, exr, npz, json, npy). A malformed file must end in InputError;
 // anything else (a crash, a sanitizer report, another exception, a blown memory limit) is a bug.
 #include <cstddef>
 #include <cstdint>

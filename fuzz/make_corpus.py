@@ -83,6 +83,11 @@ put("mesh_stl", "tetra_binary.stl", b"\0" * 80 + struct.pack("<I", len(faces)) +
 for descr, code in (("<f4", "f"), ("<f8", "d"), ("<i2", "h"), ("<i4", "i")):
     put("volume_npy", "block_%s.npy" % descr[1:], npy(descr, "(2, 3, 3)", struct.pack("<18" + code, *range(-9, 9))))
 
+# Heightmaps as .npy: a 3x4 grid of each dtype, the float ones with a NaN (no-data) cell.
+for descr, code in (("<f4", "f"), ("<f8", "d"), ("<i2", "h"), ("<i4", "i")):
+    values = [float("nan")] + list(range(11)) if code in "fd" else list(range(-6, 6))
+    put("heightmap_npy", "grid_%s.npy" % descr[1:], npy(descr, "(3, 4)", struct.pack("<12" + code, *values)))
+
 # Case files: one entry of each input kind.
 put("cases", "cases.json", json.dumps([
     {"name": "fuzz.thermal.cone", "algorithm": "erosion.thermal", "params": {"iterations": 2},
