@@ -11,10 +11,10 @@
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/field_files.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
-#include "core/io/heightmap_io.hpp"
 #include "core/params/thermal.hpp"
 #include "core/sum.hpp"
 #include "gpu/timing.hpp"
@@ -430,23 +430,36 @@ void write_pictures(const DropletTwin& twin, const DropletRun<double>& truth,
   add("gpu_vs_cpu.png", fmt::format("GPU - ref<double>: max {:.3g}", gpu.max_abs));
 }
 
-}  // namespace
-
-void write_field(const Grid<double>& field, const std::string& stem, const std::string& what, const RunOptions& options,
-                 CaseResult& result) {
-  struct Format {
-    const char* extension;
-    const char* description;
+// The terrain before and after (ref<double>, GPU) and Hydra's depth and sediment maps of the truth,
+// in the input's own units, as field files.
+template <class OwnUnits>
+void write_droplet_fields(const DropletTwin& twin, const Grid<double>& input, const DropletRun<double>& truth,
+                          const OwnUnits& own_units, const std::optional<Grid<float>>& gpu_heights,
+                          const RunOptions& options, CaseResult& result) {
+  const std::string unit = input.vertical_unit;
+  write_field_files(input, {"input", "terrain", "input", unit, "terrain before"}, options, result);
+  write_field_files(own_units(truth.heights), {"cpu", "terrain", "cpu", unit, "terrain after, ref<double> (sequential "
+                                                                                "droplets)"},
+                    options, result);
+  const auto amounts = [&](Grid<double> map) {  // amounts scale as heights, without the offset
+    for (double& amount : map.values) amount *= twin.height_scale;
+    map.vertical_unit = unit;
+    return map;
   };
-  for (const Format format : {Format{".exr", "float32 EXR"}, Format{".npy", "float32 NumPy array (height, width), NaN "
-                                                                              "no-data"}}) {
-    const std::string file = stem + format.extension;
-    write_heightmap(field, options.report_dir / result.name / file);
-    result.artifacts.push_back({result.name + "/" + file, "field", fmt::format("{}, {}", what, format.description)});
-  }
+  write_field_files(amounts(truth.eroded_at_droplet),
+                    {"eroded_at_droplet_cpu", "eroded_at_droplet", "cpu", unit,
+                     "what the droplets standing on each texel eroded over the run (Hydra's depth map before its "
+                     "contrast), ref<double>"},
+                    options, result);
+  write_field_files(amounts(truth.deposited_at_droplet),
+                    {"deposited_at_droplet_cpu", "deposited_at_droplet", "cpu", unit,
+                     "what the droplets standing on each texel deposited over the run (Hydra's sediment map before "
+                     "its contrast), ref<double>"},
+                    options, result);
+  if (!gpu_heights) return;
+  write_field_files(own_units(gpu_heights->cast<double>()), {"gpu", "terrain", "gpu", unit, "terrain after, GPU"},
+                    options, result);
 }
-
-namespace {
 
 BenchmarkRow iteration_row(const std::string& algorithm, const std::string& backend, int size, int reps,
                            double ms_per_iteration, double steps_per_iteration, const std::string& device,
@@ -499,14 +512,7 @@ Grid<float> run_droplet_case(const DropletTwin& twin, const nlohmann::json& expe
   const Grid<double> input = own_units(twin.input);
   const Grid<double> truth_heights = own_units(truth.heights);
   const Grid<double> float_as_double = own_units(float_run.run.heights.cast<double>());
-  if (!options.report_dir.empty()) {
-    write_field(truth_heights, "cpu", "terrain after, ref<double> (sequential droplets), in the input's units",
-                options, result);
-    if (gpu_heights) {
-      write_field(own_units(gpu_heights->cast<double>()), "gpu", "terrain after, GPU, in the input's units", options,
-                  result);
-    }
-  }
+  write_droplet_fields(twin, input, truth, own_units, gpu_heights, options, result);
   // The GPU's terrain is judged against ref<float> (bit for bit, or by the race figures); against
   // ref<double> a droplet's discrete path parts at the first rounding that moves its texel, so the
   // descriptors' GPU-to-double parity would grade that chaos: the descriptors show the references.

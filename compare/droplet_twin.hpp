@@ -73,11 +73,6 @@ struct DropletTwin {
   std::string height_unit;  // the input's vertical unit, when normalised
 };
 
-// Writes `field` as <stem>.exr and <stem>.npy (float32, NaN no-data) into the case's folder and
-// lists both as field artifacts described by `what`.
-void write_field(const Grid<double>& field, const std::string& stem, const std::string& what, const RunOptions& options,
-                 CaseResult& result);
-
 // The twins' input with normalised heights when `normalise` (seed 000's (h - min)/(max - min)),
 // and the scale and offset that undo it for the descriptors, with a note saying so.
 void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise);

@@ -16,6 +16,7 @@
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/field_files.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "core/errors.hpp"
@@ -470,18 +471,6 @@ void write_generated_pictures(const Grid<double>& cpu, const std::optional<GpuOu
 }
 
 // The parameters beside a written field, so that a generated terrain is a dataset of its own.
-void write_provenance(const Grid<double>& field, const std::filesystem::path& file, const CaseResult& result) {
-  const nlohmann::json provenance = {
-      {"case", result.name},
-      {"algorithm", result.algorithm},
-      {"params", result.params},
-      {"input", result.input},
-      {"grid", {{"width", field.width}, {"height", field.height}, {"cell_size_x", field.cell_size_x},
-                {"cell_size_y", field.cell_size_y}, {"horizontal_unit", field.horizontal_unit},
-                {"vertical_unit", field.vertical_unit}}}};
-  std::ofstream(file) << provenance.dump(2) << '\n';
-}
-
 void write_artifacts(const FieldTwin& twin, const Heightmap& input, const Grid<double>& cpu,
                      const Grid<float>& cpu_float, const std::optional<GpuOutputs>& gpu, const RunOptions& options,
                      CaseResult& result) {
@@ -493,18 +482,13 @@ void write_artifacts(const FieldTwin& twin, const Heightmap& input, const Grid<d
   } else {
     write_change_pictures(input, cpu, cpu_float, gpu, folder, result);
   }
-  write_heightmap(cpu, folder / "cpu.exr");
-  add_artifact(result, "cpu.exr", "field", "CPU reference (double), float32 EXR");
-  write_heightmap(cpu, folder / "cpu.npy");
-  add_artifact(result, "cpu.npy", "field", "CPU reference (double), float32 NumPy array (height, width), NaN no-data");
-  write_provenance(cpu, folder / "cpu.json", result);
-  add_artifact(result, "cpu.json", "field", "how cpu.exr and cpu.npy were made: algorithm, parameters, input, grid");
+  // A generator's output is a dimensionless value; an eroder's, the terrain in the input's units.
+  const std::string field = twin.generated ? "value" : "terrain";
+  const std::string unit = twin.generated ? "1" : cpu.vertical_unit;
+  if (!twin.generated) write_field_files(input, {"input", field, "input", unit, "the input"}, options, result);
+  write_field_files(cpu, {"cpu", field, "cpu", unit, "CPU reference (double)"}, options, result);
   if (!gpu) return;
-  const Heightmap gpu_field = gpu->first.cast<double>();
-  write_heightmap(gpu_field, folder / "gpu.exr");
-  add_artifact(result, "gpu.exr", "field", "GPU, float32 EXR");
-  write_heightmap(gpu_field, folder / "gpu.npy");
-  add_artifact(result, "gpu.npy", "field", "GPU, float32 NumPy array (height, width), NaN no-data");
+  write_field_files(gpu->first.cast<double>(), {"gpu", field, "gpu", unit, "GPU"}, options, result);
 }
 
 }  // namespace

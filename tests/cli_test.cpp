@@ -37,6 +37,7 @@
 #include <nlohmann/json.hpp>
 #include <tiffio.h>
 
+#include "core/io/heightmap_io.hpp"
 #include "tests/support/npy_writer.hpp"
 #include "tests/support/run_program.hpp"
 
@@ -675,6 +676,52 @@ TEST_F(CliGeoTiff, JakoThermalOnEgl) {
 // An RGB image is accepted and its channel 0 is the height: one iteration with an 85° talus moves
 // nothing on these gentle slopes (at most 0.05 per 1 m cell), so the result is the input, red / 255.
 // (ZeroIterationsIsTheIdentity says so more directly.)
+// Fields as data (issue 19): the pipe model's every state field, before and after, for each
+// backend, as EXR and .npy with the same values, each described in fields.json with its unit; the
+// .npy reads back through the heightmap reader (NumPy's format) at the case's grid size.
+TEST(CliRun, EveryPipeFieldIsWrittenAsExrAndNpyWithItsSidecar) {
+  const TempDir work;
+  const fs::path out = work / "report";
+  const RunResult run = run_groundtruth({"run", "--algorithm", "erosion.pipe", "--input", volcano, "--set", "steps=5",
+                                         "--require-gpu", "--out", out.string()},
+                                        work.path());
+  ASSERT_EQ(run.status, 0) << run;
+  const json report = read_json(out / "report.json");
+  const json& report_case = report.at("cases")[0];
+  expect_artifacts_exist(report_case, out);
+  const fs::path folder = out / report_case.at("name").get<std::string>();
+  const json sidecar = read_json(folder / "fields.json");
+  EXPECT_EQ(sidecar.at("algorithm"), "erosion.pipe");
+  EXPECT_EQ(sidecar.at("params").at("steps"), 5);
+  std::set<std::string> described;
+  for (const json& file : sidecar.at("files")) {
+    const auto stem = file.at("stem").get<std::string>();
+    SCOPED_TRACE(stem);
+    described.insert(stem);
+    EXPECT_FALSE(file.at("unit").get<std::string>().empty());
+    const gt::HeightmapFile npy = gt::read_heightmap(folder / (stem + ".npy"));
+    const FloatImage exr = read_float_image(folder / (stem + ".exr"));
+    ASSERT_EQ(npy.heights.width, report_case.at("width").get<int>());
+    ASSERT_EQ(npy.heights.height, report_case.at("height").get<int>());
+    ASSERT_EQ(exr.pixels.size(), npy.heights.size());
+    for (std::size_t i = 0; i < exr.pixels.size(); ++i) {
+      if (std::isnan(exr.pixels[i])) {
+        ASSERT_FALSE(npy.heights.is_valid(i)) << i;
+      } else {
+        ASSERT_EQ(npy.heights.values[i], double{exr.pixels[i]}) << i;
+      }
+    }
+  }
+  for (const char* field : {"terrain", "water", "sediment", "velocity_x", "velocity_y", "regolith"}) {
+    for (const char* backend : {"input", "cpu", "gpu"}) {
+      EXPECT_TRUE(described.contains(fmt::format("{}_{}", field, backend))) << field << " " << backend;
+    }
+  }
+  // The water after 5 steps is what the model made, not the dry input again.
+  const gt::HeightmapFile water = gt::read_heightmap(folder / "water_cpu.npy");
+  EXPECT_GT(*std::max_element(water.heights.values.begin(), water.heights.values.end()), 0.0);
+}
+
 // A colour picture is not a heightmap: refused with exit 2, nothing written, unless --red-channel
 // takes its red channel (channel 0) as height.
 TEST(CliRun, RgbPngIsRefusedUnlessItsRedChannelIsAskedFor) {

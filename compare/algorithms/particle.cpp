@@ -21,6 +21,7 @@
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/droplet_twin.hpp"
+#include "compare/field_files.hpp"
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/params/particle.hpp"
@@ -376,8 +377,8 @@ void add_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, const
   if (!options.report_dir.empty()) {
     const auto folder = options.report_dir / result.name;
     write_colour_image(flow_as_colour(truth.concentration), folder / "flow_cpu.png");
-    write_field(truth.concentration, "flow_cpu", "flow map, ref<double> (sequential), concentration in [0, 1]", options,
-                result);
+    write_field_files(truth.concentration, {"flow_cpu", "flow", "cpu", "1", "flow map (§4.7), ref<double> (sequential)"},
+                      options, result);
     result.artifacts.push_back({result.name + "/flow_cpu.png", "image",
                                 "flow map, ref<double> (sequential): concentration 0 black to 1 white, shown as a "
                                 "linear image (sRGB)"});
@@ -405,7 +406,8 @@ void add_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, const
   }
   if (!options.report_dir.empty()) {
     write_colour_image(flow_as_colour(gpu_flow), options.report_dir / result.name / "flow_gpu.png");
-    write_field(gpu_flow.cast<double>(), "flow_gpu", "flow map, GPU, concentration in [0, 1]", options, result);
+    write_field_files(gpu_flow.cast<double>(), {"flow_gpu", "flow", "gpu", "1", "flow map (§4.7), GPU"}, options,
+                      result);
     result.artifacts.push_back({result.name + "/flow_gpu.png", "image", "flow map, GPU (as flow_cpu.png)"});
   }
 }

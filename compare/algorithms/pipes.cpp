@@ -78,6 +78,7 @@
 #include "compare/checks/field.hpp"
 #include "compare/checks/pipe_error_model.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/field_files.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
@@ -712,6 +713,31 @@ void write_pictures(const PipeScenario& scenario, const BackendRun& truth, const
   add("gpu_vs_cpu.png", fmt::format("terrain, GPU - ref<double>: max {:.3g} m", gpu_vs_cpu.max_abs));
 }
 
+// Every state field of the pipe model (core/params/hydraulic.hpp's PipeState, the pipes' outflow
+// aside) as field files: <field>_<backend>.exr/.npy for the initial state, ref<double>'s last
+// state and the GPU's, units as the state declares them.
+void write_state_fields(const PipeState<double>& state, const std::string& backend, const std::string& when,
+                        const RunOptions& options, CaseResult& result) {
+  struct StateField {
+    const Grid<double>& values;
+    const char* field;
+    const char* unit;
+    const char* meaning;
+  };
+  const StateField fields[] = {{state.terrain, "terrain", "m", "terrain height b"},
+                               {state.water, "water", "m", "water depth d"},
+                               {state.sediment, "sediment", "m", "suspended sediment s, as material over the cell"},
+                               {state.velocity_x, "velocity_x", "m/s", "water velocity u, +x"},
+                               {state.velocity_y, "velocity_y", "m/s", "water velocity v, +y"},
+                               {state.regolith, "regolith", "m", "loosened bed material r (seed 001 §3.9)"}};
+  for (const StateField& field : fields) {
+    write_field_files(field.values,
+                      {fmt::format("{}_{}", field.field, backend), field.field, backend, field.unit,
+                       fmt::format("{}, {}", field.meaning, when)},
+                      options, result);
+  }
+}
+
 void run_pipe_case(const PipeScenario& scenario, const nlohmann::json& expect, const RunOptions& options,
                    CaseResult& result) {
   const auto& terrain = scenario.initial.terrain;
@@ -752,6 +778,9 @@ void run_pipe_case(const PipeScenario& scenario, const nlohmann::json& expect, c
   }
   plot_ledgers(truth, errors, options, result);
   write_pictures(scenario, truth, gpu_run ? &*gpu_run : nullptr, options, result);
+  write_state_fields(scenario.initial, "input", "before the first step", options, result);
+  write_state_fields(truth.final_state, "cpu", "after the last step, ref<double>", options, result);
+  if (gpu_run) write_state_fields(gpu_run->final_state, "gpu", "after the last step, GPU", options, result);
   if (options.progress) options.progress->stage("terrain descriptors");
   add_case_descriptors({&terrain, &truth.final_state.terrain, &float_run.final_state.terrain,
                         gpu_run ? &gpu_run->final_state.terrain : nullptr},

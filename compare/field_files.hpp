@@ -1,0 +1,30 @@
+// Fields as data (issue 19): a case's state fields written for other tools. Each field goes into
+// the case's folder as <stem>.exr (float32, NaN no-data) and <stem>.npy (NumPy float32, shape
+// (height, width), NaN no-data), listed as "field" artifacts, and described in the case's
+// fields.json sidecar: the case, algorithm, parameters and input it came from, the grid (size,
+// cell size, units), and for every file its field, backend ("input", "cpu", "cpu_float", "gpu"),
+// unit and meaning. Each call adds its entry to fields.json (created on the first call), so the
+// parts of a driver that own different fields write them independently. Nothing is written when
+// options.report_dir is empty.
+#pragma once
+
+#include <string>
+
+#include "compare/field_twin.hpp"
+#include "compare/result.hpp"
+#include "core/grid.hpp"
+
+namespace gt {
+
+struct FieldFile {
+  std::string stem;     // file name without extension, e.g. "water_cpu"
+  std::string field;    // e.g. "water"
+  std::string backend;  // "input", "cpu", "cpu_float" or "gpu"
+  std::string unit;     // e.g. "m", "m/s", "1"
+  std::string meaning;  // one line, e.g. "water depth d after the last step, ref<double>"
+};
+
+void write_field_files(const Grid<double>& values, const FieldFile& file, const RunOptions& options,
+                       CaseResult& result);
+
+}  // namespace gt
