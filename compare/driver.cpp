@@ -22,6 +22,7 @@
 #include "compare/progress.hpp"
 #include "compare/provenance.hpp"
 #include "compare/shards.hpp"
+#include "compare/sweep.hpp"
 #include "compare/mutants/mutants.hpp"
 #include "compare/output_folder.hpp"
 #include "compare/report/plots.hpp"
@@ -81,14 +82,28 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
       !ad_hoc.input.empty()                      ? std::filesystem::path(ad_hoc.input).stem().string()
       : algorithm.ad_hoc_input != AdHocInput::heightmap ? "params"
                                                         : fmt::format("{}x{}", ad_hoc.width, ad_hoc.height);
-  spec.name = fmt::format("adhoc.{}.{}", ad_hoc.algorithm, case_name_part(input_name));
+  spec.name = ad_hoc.name.empty() ? fmt::format("adhoc.{}.{}", ad_hoc.algorithm, case_name_part(input_name))
+                                  : ad_hoc.name;
   return spec;
+}
+
+// The ad-hoc case (the run's own, or a sweep's variant) a spec of ad-hoc origin was made from.
+const AdHocCase& ad_hoc_of(const CaseSpec& spec, const DriverOptions& options) {
+  if (options.sweep) {
+    for (const AdHocCase& variant : options.sweep->variants) {
+      if (variant.name == spec.name) return variant;
+    }
+  }
+  return *options.ad_hoc;
 }
 
 std::vector<CaseSpec> selected_specs(const DriverOptions& options, const std::vector<CaseSpec>& suite) {
   std::vector<CaseSpec> specs;
   if (!options.patterns.empty()) specs = select_cases(suite, options.patterns);
   if (options.ad_hoc) specs.push_back(ad_hoc_spec(*options.ad_hoc));
+  if (options.sweep) {
+    for (const AdHocCase& variant : options.sweep->variants) specs.push_back(ad_hoc_spec(variant));
+  }
   if (specs.empty()) throw InputError("nothing to run: name case patterns or an --algorithm with an --input");
   return specs;
 }
@@ -289,12 +304,14 @@ std::vector<std::string> worker_common_args(const DriverOptions& options) {
 // The worker arguments that select this job alone: its exact name, or the ad-hoc case's options.
 std::vector<std::string> job_selection(const Job& job, const DriverOptions& options) {
   if (job.spec.origin != ad_hoc_origin) return {exact_pattern(job.spec.name)};
-  const AdHocCase& ad_hoc = *options.ad_hoc;
+  const AdHocCase& ad_hoc = ad_hoc_of(job.spec, options);
   std::vector<std::string> args = {"--algorithm", ad_hoc.algorithm, "--size",
                                    fmt::format("{}x{}", ad_hoc.width, ad_hoc.height), "--cell-size",
                                    fmt::format("{}", ad_hoc.cell_size)};
   if (!ad_hoc.input.empty()) args.insert(args.end(), {"--input", std::filesystem::absolute(ad_hoc.input).string()});
   for (const auto& assignment : ad_hoc.assignments) args.insert(args.end(), {"--set", assignment});
+  if (ad_hoc.red_channel) args.push_back("--red-channel");
+  if (!ad_hoc.name.empty()) args.insert(args.end(), {"--case-name", ad_hoc.name});
   return args;
 }
 
@@ -437,8 +454,9 @@ std::vector<std::filesystem::path> data_files(const std::vector<Job>& jobs) {
 int run_driver(const DriverOptions& options) {
   if (!options.mutant.empty()) set_active_mutant(find_mutant(options.mutant).name);
   const auto suite = load_suite(options.dataset_dir / "cases", options.extra_cases);
-  const auto selection =
-      options.patterns.empty() && !options.ad_hoc ? std::vector<CaseSpec>{} : selected_specs(options, suite);
+  const auto selection = options.patterns.empty() && !options.ad_hoc && !options.sweep
+                             ? std::vector<CaseSpec>{}
+                             : selected_specs(options, suite);
   const auto baseline = read_baseline(options.baseline, selection);
   Report report;
   const auto specs = shard_specs(selection, options, baseline, report);
@@ -467,6 +485,7 @@ int run_driver(const DriverOptions& options) {
         fmt::print(stderr, "groundtruth: plot unavailable: {}\n", reason);
       }
     }
+    if (options.sweep && !options.worker) write_sweep_summary(*options.sweep, report, folder);
     if (report.environment.gl_platform.empty()) runner.gpu_available();  // every worker failed: describe ours
     add_digests(report.environment, data_files(jobs));
     if (options.mutation) {

@@ -26,11 +26,19 @@ struct AdHocCase {
   double cell_size = 1.0;
   std::vector<std::string> assignments;  // "name=value"
   bool red_channel = false;              // a colour image's red channel as height (else it is refused)
+  std::string name;                      // the case's name; empty: adhoc.<algorithm>.<input>
+};
+
+// `groundtruth sweep` (compare/sweep.hpp): one ad-hoc case per combination of the varied values.
+struct Sweep {
+  std::vector<std::string> varied;   // the varied parameters, in the order given
+  std::vector<AdHocCase> variants;   // each with its assignments and name
 };
 
 struct DriverOptions {
   std::vector<std::string> patterns;     // case-name globs
   std::optional<AdHocCase> ad_hoc;
+  std::optional<Sweep> sweep;            // a sweep's variants, run as ad-hoc cases and tabled
   Backends backends = Backends::both;
   GlBackend gl = GlBackend::egl;
   std::filesystem::path out;

@@ -48,6 +48,7 @@
 #include "compare/report_diff.hpp"
 #include "compare/report_history.hpp"
 #include "compare/shards.hpp"
+#include "compare/sweep.hpp"
 #include "core/errors.hpp"
 
 namespace {
@@ -261,9 +262,33 @@ int main(int argc, char** argv) {
   add_shared_options(*run, run_shared, "groundtruth-report");
   std::vector<std::string> extra_cases;
   run->add_option("--cases", extra_cases, "more case files (JSON arrays of cases) or folders of them, beside the bundled ones");
+  run->add_option("--case-name", ad_hoc.name, "ad-hoc case: its name (a sweep's worker)")->group("");
   std::string mutant;
   run->add_option("--mutant", mutant,
                   "run with a registered deliberate bug switched on (see `groundtruth mutants --list`)");
+
+  Shared sweep_shared;
+  gt::AdHocCase sweep_base;
+  std::vector<std::string> vary;
+  std::string sweep_grid_size;
+  bool force_sweep = false;
+  auto* sweep = app.add_subcommand("sweep", "one algorithm on one input over a grid of parameter values: a table, "
+                                            "plots against the varied parameter and a thumbnail of each run");
+  sweep->add_option("--algorithm", sweep_base.algorithm, "the algorithm")->required();
+  sweep->add_option("--input", sweep_base.input, "a heightmap file, as for an ad-hoc run");
+  sweep->add_option("--vary", vary, "a parameter and its values, name=v1,v2,... (repeatable: every combination runs)")
+      ->required();
+  sweep->add_option("--set", sweep_base.assignments, "a parameter held fixed, name=value (repeatable)");
+  sweep->add_flag("--red-channel", sweep_base.red_channel, "take a colour image's red channel as height");
+  sweep->add_option("--size", sweep_grid_size, "a generator's grid without --input, WxH (256x256)");
+  sweep->add_option("--cell-size", sweep_base.cell_size, "a generator's cell size in metres")
+      ->check(finite_number & CLI::PositiveNumber)
+      ->capture_default_str();
+  sweep->add_flag("--force", force_sweep, fmt::format("run more than {} combinations", gt::sweep_run_cap));
+  sweep->add_option("--backend", sweep_shared.backend, "cpu (references only), gpu, or both")
+      ->check(CLI::IsMember({"cpu", "gpu", "both"}))
+      ->capture_default_str();
+  add_shared_options(*sweep, sweep_shared, "groundtruth-sweep");
 
   Shared report_shared;
   bool skip_benchmark = false;
@@ -451,6 +476,12 @@ int main(int argc, char** argv) {
       if (patterns.empty() && !options.ad_hoc) {
         throw gt::InputError("nothing to run: name case patterns (see `groundtruth list`) or --algorithm with --input");
       }
+      return gt::run_driver(options);
+    }
+    if (sweep->parsed()) {
+      auto options = driver_options(sweep_shared, command_line, memory_limit_mib);
+      if (!sweep_grid_size.empty()) parse_grid_size(sweep_grid_size, sweep_base);
+      options.sweep = gt::make_sweep(sweep_base, vary, force_sweep);
       return gt::run_driver(options);
     }
     if (report->parsed()) {

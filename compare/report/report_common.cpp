@@ -118,6 +118,17 @@ std::string format_bounds(const Check& check) {
   return text;
 }
 
+bool unreserved(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '.' ||
+         c == '_' || c == '~';
+}
+
+std::string case_anchor(const std::string& case_name) {
+  std::string id = "case-";
+  for (char c : case_name) id += unreserved(c) ? c : '_';
+  return id;
+}
+
 std::string escape_markup(std::string_view text) {
   std::string escaped;
   escaped.reserve(text.size());

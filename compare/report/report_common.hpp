@@ -142,6 +142,12 @@ std::optional<FidelityTable> fidelity_table(const Report& report);
 // forbids become U+FFFD.
 std::string escape_markup(std::string_view text);
 
+// ASCII letters, digits and - . _ ~ (RFC 3986 unreserved characters).
+bool unreserved(char c);
+
+// The id of a case's section in index.html: "case-" and its name, other characters as '_'.
+std::string case_anchor(const std::string& case_name);
+
 // Writes `contents` to `file` through a temporary file in the same folder and a rename.
 void write_file_atomically(const std::filesystem::path& file, std::string_view contents);
 

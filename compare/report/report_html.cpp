@@ -72,11 +72,6 @@ dl.params dt { color: #555; } dl.params dd { margin: 0; font-variant-numeric: ta
 
 std::string h(std::string_view text) { return escape_markup(text); }
 
-// ASCII letters, digits and - . _ ~ (RFC 3986 unreserved characters).
-bool unreserved(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '.' ||
-         c == '_' || c == '~';
-}
 
 // A relative path as a URL: bytes other than unreserved characters and '/' are percent-encoded.
 std::string url(std::string_view path) {
@@ -91,13 +86,7 @@ std::string badge(Outcome outcome) {
   return fmt::format("<span class=\"badge {0}\">{0}</span>", outcome_name(outcome));
 }
 
-std::string anchor_of(const std::string& case_name) {
-  std::string id = "case-";
-  for (char c : case_name) id += unreserved(c) ? c : '_';
-  return id;
-}
-
-std::string anchor(const CaseResult& result) { return anchor_of(result.name); }
+std::string anchor(const CaseResult& result) { return case_anchor(result.name); }
 
 void append_digests(std::string& out, const std::string& title, const std::map<std::string, std::string>& digests) {
   if (digests.empty()) return;
@@ -271,7 +260,7 @@ void append_fidelity(std::string& out, const Report& report) {
   for (const auto& value : table->real) out += fmt::format("<td class=\"num\">{}</td>", optional_value(value));
   out += "</tr>\n";
   for (const auto& row : table->rows) {
-    out += fmt::format("<tr><td><a href=\"#{}\">{}</a></td><td>{}</td>", anchor_of(row.case_name), h(row.case_name),
+    out += fmt::format("<tr><td><a href=\"#{}\">{}</a></td><td>{}</td>", case_anchor(row.case_name), h(row.case_name),
                        h(row.algorithm));
     for (const auto& cell : row.cells) {
       out += cell ? fmt::format("<td class=\"num\">{} → {} ({})</td>", format_value(cell->before),

@@ -1,0 +1,332 @@
+#include "compare/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "compare/cases.hpp"
+#include "compare/report/plots.hpp"
+#include "compare/report/report_common.hpp"
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+using report_detail::case_anchor;
+using report_detail::escape_markup;
+
+// The plots drawn at most (each is a matplotlib run); the table holds every metric.
+constexpr std::size_t sweep_plot_cap = 24;
+
+struct Varied {
+  std::string name;
+  std::vector<std::string> values;
+};
+
+Varied parse_vary(const std::string& text) {
+  const auto equals = text.find('=');
+  if (equals == std::string::npos || equals == 0 || equals + 1 == text.size()) {
+    throw InputError(fmt::format("--vary '{}': expected name=v1,v2,...", text));
+  }
+  Varied varied{text.substr(0, equals), {}};
+  std::size_t start = equals + 1;
+  while (start <= text.size()) {
+    const auto comma = std::min(text.find(',', start), text.size());
+    const std::string value = text.substr(start, comma - start);
+    if (value.empty()) throw InputError(fmt::format("--vary '{}': an empty value", text));
+    if (std::find(varied.values.begin(), varied.values.end(), value) != varied.values.end()) {
+      throw InputError(fmt::format("--vary '{}': the value {} twice", text, value));
+    }
+    varied.values.push_back(value);
+    start = comma + 1;
+  }
+  return varied;
+}
+
+std::string input_part(const AdHocCase& base) {
+  if (!base.input.empty()) return case_name_part(std::filesystem::path(base.input).stem().string());
+  return fmt::format("{}x{}", base.width, base.height);
+}
+
+// The number a varied value stands for, or nullopt when the parameter is not numeric.
+std::optional<double> number(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(value)) return value;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+struct Row {
+  std::vector<std::string> values;  // the varied values, as given
+  const CaseResult* result = nullptr;
+};
+
+// The scalar terrain descriptors of ref<double>'s result (compare/case_descriptors.hpp), as
+// "descriptor.<group>.<name>" (hypsometry.integral, slope_deg.mean, drainage.drainage_density_per_m...).
+std::map<std::string, double> descriptor_metrics(const CaseResult& result) {
+  std::map<std::string, double> metrics;
+  const nlohmann::json* cpu = result.descriptors.is_object() ? &result.descriptors : nullptr;
+  for (const char* key : {"terrains", "cpu"}) {
+    cpu = cpu != nullptr && cpu->contains(key) && (*cpu)[key].is_object() ? &(*cpu)[key] : nullptr;
+  }
+  if (cpu == nullptr) return metrics;
+  for (const auto& [group, values] : cpu->items()) {
+    if (group == "grid" || !values.is_object()) continue;
+    for (const auto& [name, value] : values.items()) {
+      if (value.is_number()) metrics[fmt::format("descriptor.{}.{}", group, name)] = value.get<double>();
+    }
+  }
+  return metrics;
+}
+
+// Every metric of the runs: the timings first, then the checks, then the descriptors, in
+// first-seen order.
+std::vector<std::string> metric_names(const std::vector<Row>& rows) {
+  std::vector<std::string> names = {"seconds", "cpu_ms", "gpu_ms"};
+  std::set<std::string> seen(names.begin(), names.end());
+  for (const Row& row : rows) {
+    for (const Check& check : row.result->checks) {
+      if (check.status != Outcome::skip && seen.insert(check.name).second) names.push_back(check.name);
+    }
+  }
+  for (const Row& row : rows) {
+    for (const auto& [name, value] : descriptor_metrics(*row.result)) {
+      if (seen.insert(name).second) names.push_back(name);
+    }
+  }
+  return names;
+}
+
+std::optional<double> metric(const CaseResult& result, const std::string& name) {
+  if (name == "seconds") return result.seconds;
+  if (name == "cpu_ms") return result.timings.cpu_ms;
+  if (name == "gpu_ms") return result.timings.gpu_ms;
+  if (name.rfind("descriptor.", 0) == 0) {
+    const auto descriptors = descriptor_metrics(result);
+    const auto found = descriptors.find(name);
+    if (found != descriptors.end() && std::isfinite(found->second)) return found->second;
+    return std::nullopt;
+  }
+  for (const Check& check : result.checks) {
+    if (check.name == name && check.status != Outcome::skip && std::isfinite(check.value)) return check.value;
+  }
+  return std::nullopt;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+void write_table(const Sweep& sweep, const std::vector<Row>& rows, const std::vector<std::string>& metrics,
+                 const std::filesystem::path& folder) {
+  std::ofstream csv(folder / "sweep.csv");
+  std::vector<std::string> header = sweep.varied;
+  header.insert(header.end(), {"case", "outcome"});
+  header.insert(header.end(), metrics.begin(), metrics.end());
+  for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << csv_field(header[i]);
+  csv << '\n';
+  nlohmann::json table = {{"varied", sweep.varied}, {"metrics", metrics}, {"runs", nlohmann::json::array()}};
+  for (const Row& row : rows) {
+    nlohmann::json run = {{"case", row.result->name}, {"outcome", outcome_name(row.result->status)}};
+    std::vector<std::string> cells = row.values;
+    cells.insert(cells.end(), {row.result->name, outcome_name(row.result->status)});
+    for (std::size_t k = 0; k < sweep.varied.size(); ++k) run["params"][sweep.varied[k]] = row.values[k];
+    for (const std::string& name : metrics) {
+      const auto value = metric(*row.result, name);
+      cells.push_back(value ? fmt::format("{:.9g}", *value) : "");
+      run["metrics"][name] = value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+    }
+    for (std::size_t i = 0; i < cells.size(); ++i) csv << (i ? "," : "") << csv_field(cells[i]);
+    csv << '\n';
+    table["runs"].push_back(run);
+  }
+  std::ofstream(folder / "sweep.json") << table.dump(2) << '\n';
+}
+
+// One plot per metric that differs between the runs: against the first varied parameter, a line
+// per combination of the others.
+std::vector<Artifact> plot_metrics(const Sweep& sweep, const std::vector<Row>& rows,
+                                   const std::vector<std::string>& metrics, const std::filesystem::path& folder) {
+  bool numeric = true;
+  for (const Row& row : rows) numeric = numeric && number(row.values.front()).has_value();
+  std::vector<std::string> first_values;
+  for (const Row& row : rows) {
+    if (std::find(first_values.begin(), first_values.end(), row.values.front()) == first_values.end()) {
+      first_values.push_back(row.values.front());
+    }
+  }
+  const auto x_of = [&](const Row& row) {
+    if (numeric) return *number(row.values.front());
+    return static_cast<double>(std::find(first_values.begin(), first_values.end(), row.values.front()) -
+                               first_values.begin());
+  };
+  // What the experimenter varies the parameter for comes first: the result's descriptors, then the
+  // timings and the checks.
+  std::vector<std::string> order;
+  for (const auto& name : metrics) {
+    if (name.rfind("descriptor.", 0) == 0) order.push_back(name);
+  }
+  for (const auto& name : metrics) {
+    if (name.rfind("descriptor.", 0) != 0) order.push_back(name);
+  }
+  std::vector<Artifact> plots;
+  for (const std::string& name : order) {
+    if (plots.size() == sweep_plot_cap) break;
+    std::set<double> distinct;
+    std::map<std::string, Series> lines;  // by the other varied values
+    for (const Row& row : rows) {
+      const auto value = metric(*row.result, name);
+      if (!value) continue;
+      distinct.insert(*value);
+      std::string others;
+      for (std::size_t k = 1; k < row.values.size(); ++k) {
+        others += fmt::format("{}{}={}", others.empty() ? "" : ", ", sweep.varied[k], row.values[k]);
+      }
+      Series& line = lines[others];
+      line.label = others.empty() ? name : others;
+      line.x.push_back(x_of(row));
+      line.y.push_back(*value);
+    }
+    if (distinct.size() < 2) continue;
+    SeriesPlot plot{.title = name, .x_label = sweep.varied.front(), .y_label = name};
+    if (!numeric) {
+      for (std::size_t i = 0; i < first_values.size(); ++i) plot.x_ticks.emplace_back(double(i), first_values[i]);
+    }
+    for (auto& [others, line] : lines) plot.series.push_back(std::move(line));
+    const std::string file = fmt::format("sweep_{}.png", plots.size() + 1);
+    std::string reason;
+    if (auto artifact = plot_series({plot}, folder, file, fmt::format("{} against {}", name, sweep.varied.front()),
+                                    reason)) {
+      plots.push_back(*artifact);
+    } else {
+      plots.push_back({"", "plot", "plot unavailable: " + reason});
+      break;  // no Python with matplotlib: the next would fail alike
+    }
+  }
+  return plots;
+}
+
+// The picture of a run's result: ref<double>'s terrain after it (or field), else its first picture.
+std::string result_picture(const CaseResult& result) {
+  for (const char* file : {"/after_cpu.png", "/cpu.png"}) {
+    for (const Artifact& artifact : result.artifacts) {
+      if (artifact.kind == "image" && artifact.path.ends_with(file)) return artifact.path;
+    }
+  }
+  for (const Artifact& artifact : result.artifacts) {
+    if (artifact.kind == "image") return artifact.path;
+  }
+  return "";
+}
+
+void write_page(const Sweep& sweep, const std::vector<Row>& rows, const std::vector<Artifact>& plots,
+                const std::filesystem::path& folder) {
+  std::ofstream html(folder / "sweep.html");
+  const std::string algorithm = rows.empty() ? "" : rows.front().result->algorithm;
+  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>sweep of " << escape_markup(algorithm)
+       << "</title><style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #ccc;"
+          "padding:4px}img.thumb{width:128px;image-rendering:pixelated}</style></head><body>\n";
+  html << "<h1>Sweep of " << escape_markup(algorithm) << "</h1>\n<p>" << rows.size()
+       << " runs; the table as <a href=\"sweep.csv\">CSV</a> and <a href=\"sweep.json\">JSON</a>; every run in full "
+          "in <a href=\"index.html\">the report</a>.</p>\n<table><tr>";
+  for (const auto& name : sweep.varied) html << "<th>" << escape_markup(name) << "</th>";
+  html << "<th>case</th><th>outcome</th><th>picture</th></tr>\n";
+  for (const Row& row : rows) {
+    html << "<tr>";
+    for (const auto& value : row.values) html << "<td>" << escape_markup(value) << "</td>";
+    const std::string picture = result_picture(*row.result);
+    html << "<td><a href=\"index.html#" << case_anchor(row.result->name) << "\">" << escape_markup(row.result->name)
+         << "</a></td><td>" << outcome_name(row.result->status) << "</td><td>";
+    if (!picture.empty()) html << "<img class=\"thumb\" src=\"" << escape_markup(picture) << "\" alt=\"\">";
+    html << "</td></tr>\n";
+  }
+  html << "</table>\n";
+  for (const Artifact& plot : plots) {
+    if (plot.path.empty()) {
+      html << "<p>" << escape_markup(plot.caption) << "</p>\n";
+    } else {
+      html << "<figure><img src=\"" << escape_markup(plot.path) << "\" alt=\"" << escape_markup(plot.caption)
+           << "\"><figcaption>" << escape_markup(plot.caption) << "</figcaption></figure>\n";
+    }
+  }
+  html << "</body></html>\n";
+}
+
+}  // namespace
+
+Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force) {
+  if (vary.empty()) throw InputError("sweep: give at least one --vary name=v1,v2,...");
+  std::vector<Varied> axes;
+  std::size_t runs = 1;
+  for (const auto& text : vary) {
+    Varied varied = parse_vary(text);
+    for (const auto& axis : axes) {
+      if (axis.name == varied.name) throw InputError(fmt::format("--vary {} given twice", varied.name));
+    }
+    for (const auto& assignment : base.assignments) {
+      if (assignment.rfind(varied.name + "=", 0) == 0) {
+        throw InputError(fmt::format("{} is both --set and --vary: choose one", varied.name));
+      }
+    }
+    runs *= varied.values.size();
+    axes.push_back(std::move(varied));
+  }
+  if (runs > sweep_run_cap && !force) {
+    throw InputError(fmt::format("sweep: {} runs, more than the cap of {}; pass --force to run them all", runs,
+                                 sweep_run_cap));
+  }
+  Sweep sweep;
+  for (const auto& axis : axes) sweep.varied.push_back(axis.name);
+  for (std::size_t index = 0; index < runs; ++index) {
+    AdHocCase variant = base;
+    std::string name = fmt::format("sweep.{}.{}", base.algorithm, input_part(base));
+    std::size_t rest = index;
+    std::vector<std::string> chosen(axes.size());
+    for (std::size_t k = axes.size(); k-- > 0;) {  // the last axis varies fastest
+      chosen[k] = axes[k].values[rest % axes[k].values.size()];
+      rest /= axes[k].values.size();
+    }
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+      variant.assignments.push_back(axes[k].name + "=" + chosen[k]);
+      name += "." + case_name_part(axes[k].name + "_" + chosen[k]);
+    }
+    variant.name = name;
+    sweep.variants.push_back(std::move(variant));
+  }
+  return sweep;
+}
+
+void write_sweep_summary(const Sweep& sweep, Report& report, const std::filesystem::path& folder) {
+  std::vector<Row> rows;
+  for (const AdHocCase& variant : sweep.variants) {
+    const auto found = std::find_if(report.cases.begin(), report.cases.end(),
+                                    [&](const CaseResult& result) { return result.name == variant.name; });
+    if (found == report.cases.end()) continue;  // another shard's
+    Row row{{}, &*found};
+    for (std::size_t k = 0; k < sweep.varied.size(); ++k) {
+      const auto& assignment = variant.assignments[variant.assignments.size() - sweep.varied.size() + k];
+      row.values.push_back(assignment.substr(assignment.find('=') + 1));
+    }
+    rows.push_back(std::move(row));
+  }
+  const std::vector<std::string> metrics = metric_names(rows);
+  write_table(sweep, rows, metrics, folder);
+  const std::vector<Artifact> plots = plot_metrics(sweep, rows, metrics, folder);
+  write_page(sweep, rows, plots, folder);
+  report.plots.insert(report.plots.end(), plots.begin(), plots.end());
+}
+
+}  // namespace gt

@@ -1,0 +1,36 @@
+// `groundtruth sweep` (issue 19): one algorithm on one input over a grid of parameter values.
+//
+// make_sweep expands every `--vary name=v1,v2,...` into the Cartesian product of the values, each
+// combination an ad-hoc case (compare/driver.hpp's AdHocCase) named
+// sweep.<algorithm>.<input>.<name>_<value>[.<name>_<value>...] with the base's --set assignments
+// and its own; the driver runs them as any ad-hoc case (with -j, in workers), so values out of
+// range and unknown parameters are refused before anything runs (exit 2).
+//
+// write_sweep_summary, after the runs, writes into the report folder:
+//   sweep.csv, sweep.json  one row per run: the varied values, the outcome, the case's wall time,
+//                          the CPU and GPU medians, and the value of every check the runs report
+//   sweep_<n>.png          a metric against the first varied parameter (one line per combination
+//                          of the others; categorical values at their index), for every timing and
+//                          every check whose value differs between the runs
+//   sweep.html             the table with a thumbnail of each run's result and the plots
+// and lists the plots as report-level plots, so index.html shows them too.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "compare/driver.hpp"
+#include "compare/result.hpp"
+
+namespace gt {
+
+// More runs than this need --force: a sweep is meant to be read, and each run takes its time.
+constexpr std::size_t sweep_run_cap = 64;
+
+Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force);
+
+void write_sweep_summary(const Sweep& sweep, Report& report, const std::filesystem::path& folder);
+
+}  // namespace gt

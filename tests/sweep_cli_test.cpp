@@ -1,0 +1,114 @@
+// `groundtruth sweep` (issue 19): a parameter grid run as ad-hoc cases, tabled and plotted.
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_program.hpp"
+#include "tests/support/temporary_folder.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using ::testing::HasSubstr;
+
+const std::string groundtruth = GT_BINARY_DIR "/groundtruth";
+const std::string volcano = (fs::path(GT_DATASET_DIR) / "real" / "volcano.json").string();
+
+gt::testing::ProgramRun run(const std::vector<std::string>& args, const fs::path& cwd) {
+  return gt::testing::run_program(groundtruth, args, cwd);
+}
+
+json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return json::parse(in);
+}
+
+// Six talus angles on a real DEM: one case per value, a table with a row each, the slope of the
+// result in it, and a page with a thumbnail per run. Thermal erosion stops where the slope is
+// below the talus angle, so the lowest angle leaves the gentlest terrain: the table must show the
+// mean slope after 15° below the mean slope after 40°.
+TEST(Sweep, TalusAngleOverSixValuesOnARealDem) {
+  const gt::testing::TemporaryFolder work("gt_sweep");
+  const fs::path out = work / "sweep";
+  const auto result = run({"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--vary",
+                           "talus_angle=15,20,25,30,35,40", "--set", "iterations=20", "--out", out.string()},
+                          work.path());
+  ASSERT_EQ(result.status, 0) << result;
+  const json table = read_json(out / "sweep.json");
+  EXPECT_EQ(table.at("varied"), json::array({"talus_angle"}));
+  ASSERT_EQ(table.at("runs").size(), 6u);
+  for (const json& row : table.at("runs")) {
+    EXPECT_EQ(row.at("outcome"), "pass") << row.dump();
+    EXPECT_TRUE(fs::is_directory(out / row.at("case").get<std::string>())) << row.dump();
+  }
+  const json& gentlest = table.at("runs").front();
+  const json& steepest = table.at("runs").back();
+  EXPECT_EQ(gentlest.at("params").at("talus_angle"), "15");
+  EXPECT_EQ(steepest.at("params").at("talus_angle"), "40");
+  EXPECT_LT(gentlest.at("metrics").at("descriptor.slope_deg.mean").get<double>(),
+            steepest.at("metrics").at("descriptor.slope_deg.mean").get<double>());
+  std::ifstream csv(out / "sweep.csv");
+  std::string line;
+  int lines = 0;
+  while (std::getline(csv, line)) ++lines;
+  EXPECT_EQ(lines, 7);  // header and six runs
+  std::ifstream page_file(out / "sweep.html");
+  const std::string page((std::istreambuf_iterator<char>(page_file)), std::istreambuf_iterator<char>());
+  std::size_t thumbnails = 0;
+  for (auto at = page.find("class=\"thumb\""); at != std::string::npos; at = page.find("class=\"thumb\"", at + 1)) {
+    ++thumbnails;
+  }
+  EXPECT_EQ(thumbnails, 6u);
+  EXPECT_THAT(page, HasSubstr("after_cpu.png"));
+}
+
+// Two varied parameters make every combination, named after their values; -j runs them in workers
+// under the same names.
+TEST(Sweep, TwoParametersRunEveryCombinationInWorkers) {
+  const gt::testing::TemporaryFolder work("gt_sweep");
+  const fs::path out = work / "sweep";
+  const auto result = run({"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--vary", "talus_angle=20,40",
+                           "--vary", "neighbourhood=cardinal,alternating", "--set", "iterations=5", "-j", "2",
+                           "--out", out.string()},
+                          work.path());
+  ASSERT_EQ(result.status, 0) << result;
+  const json table = read_json(out / "sweep.json");
+  std::vector<std::string> cases;
+  for (const json& row : table.at("runs")) cases.push_back(row.at("case"));
+  EXPECT_EQ(cases, (std::vector<std::string>{"sweep.erosion.thermal.volcano.talus_angle_20.neighbourhood_cardinal",
+                                             "sweep.erosion.thermal.volcano.talus_angle_20.neighbourhood_alternating",
+                                             "sweep.erosion.thermal.volcano.talus_angle_40.neighbourhood_cardinal",
+                                             "sweep.erosion.thermal.volcano.talus_angle_40.neighbourhood_alternating"}));
+}
+
+// Bad sweeps are refused before anything runs: exit 2, a message, no output folder.
+TEST(Sweep, BadVariationsAreRefused) {
+  const gt::testing::TemporaryFolder work("gt_sweep");
+  const fs::path out = work / "sweep";
+  std::string many = "talus_angle=1";
+  for (int angle = 2; angle <= 65; ++angle) many += "," + std::to_string(angle);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> refusals = {
+      {{"--vary", "talus=10,20"}, "unknown parameter 'talus'"},
+      {{"--vary", "talus_angle=10,95"}, "out of range"},
+      {{"--vary", many}, "more than the cap of 64"},
+      {{"--vary", "talus_angle=10,20", "--set", "talus_angle=30"}, "both --set and --vary"},
+      {{"--vary", "talus_angle=10,,20"}, "an empty value"},
+  };
+  for (const auto& [extra, message] : refusals) {
+    std::vector<std::string> args = {"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--out",
+                                     out.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto result = run(args, work.path());
+    EXPECT_EQ(result.status, 2) << result;
+    EXPECT_THAT(result.err, HasSubstr(message)) << result;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+}  // namespace
