@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "compare/ab.hpp"
 #include "compare/algorithm.hpp"
 #include "compare/benchmark.hpp"
 #include "compare/calibration.hpp"
@@ -485,7 +486,13 @@ int run_driver(const DriverOptions& options) {
         fmt::print(stderr, "groundtruth: plot unavailable: {}\n", reason);
       }
     }
-    if (options.sweep && !options.worker) write_sweep_summary(*options.sweep, report, folder);
+    if (options.sweep && !options.worker) {
+      if (options.sweep->ab) {
+        write_ab_summary(*options.sweep, report, folder);
+      } else {
+        write_sweep_summary(*options.sweep, report, folder);
+      }
+    }
     if (report.environment.gl_platform.empty()) runner.gpu_available();  // every worker failed: describe ours
     add_digests(report.environment, data_files(jobs));
     if (options.mutation) {

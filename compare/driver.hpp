@@ -29,10 +29,12 @@ struct AdHocCase {
   std::string name;                      // the case's name; empty: adhoc.<algorithm>.<input>
 };
 
-// `groundtruth sweep` (compare/sweep.hpp): one ad-hoc case per combination of the varied values.
+// `groundtruth sweep` (compare/sweep.hpp): one ad-hoc case per combination of the varied values;
+// `groundtruth ab` (compare/ab.hpp): two variants, A and B, side by side.
 struct Sweep {
-  std::vector<std::string> varied;   // the varied parameters, in the order given
-  std::vector<AdHocCase> variants;   // each with its assignments and name
+  std::vector<std::string> varied;   // the varied parameters, in the order given (ab: none)
+  std::vector<AdHocCase> variants;   // each with its assignments and name (ab: A, then B)
+  bool ab = false;                   // summarised as an A/B comparison rather than a sweep
 };
 
 struct DriverOptions {

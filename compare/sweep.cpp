@@ -71,6 +71,12 @@ struct Row {
   const CaseResult* result = nullptr;
 };
 
+std::vector<const CaseResult*> results_of(const std::vector<Row>& rows) {
+  std::vector<const CaseResult*> results;
+  for (const Row& row : rows) results.push_back(row.result);
+  return results;
+}
+
 // The scalar terrain descriptors of ref<double>'s result (compare/case_descriptors.hpp), as
 // "descriptor.<group>.<name>" (hypsometry.integral, slope_deg.mean, drainage.drainage_density_per_m...).
 std::map<std::string, double> descriptor_metrics(const CaseResult& result) {
@@ -87,40 +93,6 @@ std::map<std::string, double> descriptor_metrics(const CaseResult& result) {
     }
   }
   return metrics;
-}
-
-// Every metric of the runs: the timings first, then the checks, then the descriptors, in
-// first-seen order.
-std::vector<std::string> metric_names(const std::vector<Row>& rows) {
-  std::vector<std::string> names = {"seconds", "cpu_ms", "gpu_ms"};
-  std::set<std::string> seen(names.begin(), names.end());
-  for (const Row& row : rows) {
-    for (const Check& check : row.result->checks) {
-      if (check.status != Outcome::skip && seen.insert(check.name).second) names.push_back(check.name);
-    }
-  }
-  for (const Row& row : rows) {
-    for (const auto& [name, value] : descriptor_metrics(*row.result)) {
-      if (seen.insert(name).second) names.push_back(name);
-    }
-  }
-  return names;
-}
-
-std::optional<double> metric(const CaseResult& result, const std::string& name) {
-  if (name == "seconds") return result.seconds;
-  if (name == "cpu_ms") return result.timings.cpu_ms;
-  if (name == "gpu_ms") return result.timings.gpu_ms;
-  if (name.rfind("descriptor.", 0) == 0) {
-    const auto descriptors = descriptor_metrics(result);
-    const auto found = descriptors.find(name);
-    if (found != descriptors.end() && std::isfinite(found->second)) return found->second;
-    return std::nullopt;
-  }
-  for (const Check& check : result.checks) {
-    if (check.name == name && check.status != Outcome::skip && std::isfinite(check.value)) return check.value;
-  }
-  return std::nullopt;
 }
 
 std::string csv_field(const std::string& text) {
@@ -145,7 +117,7 @@ void write_table(const Sweep& sweep, const std::vector<Row>& rows, const std::ve
     cells.insert(cells.end(), {row.result->name, outcome_name(row.result->status)});
     for (std::size_t k = 0; k < sweep.varied.size(); ++k) run["params"][sweep.varied[k]] = row.values[k];
     for (const std::string& name : metrics) {
-      const auto value = metric(*row.result, name);
+      const auto value = run_metric(*row.result, name);
       cells.push_back(value ? fmt::format("{:.9g}", *value) : "");
       run["metrics"][name] = value ? nlohmann::json(*value) : nlohmann::json(nullptr);
     }
@@ -188,7 +160,7 @@ std::vector<Artifact> plot_metrics(const Sweep& sweep, const std::vector<Row>& r
     std::set<double> distinct;
     std::map<std::string, Series> lines;  // by the other varied values
     for (const Row& row : rows) {
-      const auto value = metric(*row.result, name);
+      const auto value = run_metric(*row.result, name);
       if (!value) continue;
       distinct.insert(*value);
       std::string others;
@@ -217,19 +189,6 @@ std::vector<Artifact> plot_metrics(const Sweep& sweep, const std::vector<Row>& r
     }
   }
   return plots;
-}
-
-// The picture of a run's result: ref<double>'s terrain after it (or field), else its first picture.
-std::string result_picture(const CaseResult& result) {
-  for (const char* file : {"/after_cpu.png", "/cpu.png"}) {
-    for (const Artifact& artifact : result.artifacts) {
-      if (artifact.kind == "image" && artifact.path.ends_with(file)) return artifact.path;
-    }
-  }
-  for (const Artifact& artifact : result.artifacts) {
-    if (artifact.kind == "image") return artifact.path;
-  }
-  return "";
 }
 
 void write_page(const Sweep& sweep, const std::vector<Row>& rows, const std::vector<Artifact>& plots,
@@ -266,6 +225,50 @@ void write_page(const Sweep& sweep, const std::vector<Row>& rows, const std::vec
 }
 
 }  // namespace
+
+std::vector<std::string> run_metric_names(const std::vector<const CaseResult*>& results) {
+  std::vector<std::string> names = {"seconds", "cpu_ms", "gpu_ms"};
+  std::set<std::string> seen(names.begin(), names.end());
+  for (const CaseResult* result : results) {
+    for (const Check& check : result->checks) {
+      if (check.status != Outcome::skip && seen.insert(check.name).second) names.push_back(check.name);
+    }
+  }
+  for (const CaseResult* result : results) {
+    for (const auto& [name, value] : descriptor_metrics(*result)) {
+      if (seen.insert(name).second) names.push_back(name);
+    }
+  }
+  return names;
+}
+
+std::optional<double> run_metric(const CaseResult& result, const std::string& name) {
+  if (name == "seconds") return result.seconds;
+  if (name == "cpu_ms") return result.timings.cpu_ms;
+  if (name == "gpu_ms") return result.timings.gpu_ms;
+  if (name.rfind("descriptor.", 0) == 0) {
+    const auto descriptors = descriptor_metrics(result);
+    const auto found = descriptors.find(name);
+    if (found != descriptors.end() && std::isfinite(found->second)) return found->second;
+    return std::nullopt;
+  }
+  for (const Check& check : result.checks) {
+    if (check.name == name && check.status != Outcome::skip && std::isfinite(check.value)) return check.value;
+  }
+  return std::nullopt;
+}
+
+std::string result_picture(const CaseResult& result) {
+  for (const char* file : {"/after_cpu.png", "/cpu.png"}) {
+    for (const Artifact& artifact : result.artifacts) {
+      if (artifact.kind == "image" && artifact.path.ends_with(file)) return artifact.path;
+    }
+  }
+  for (const Artifact& artifact : result.artifacts) {
+    if (artifact.kind == "image") return artifact.path;
+  }
+  return "";
+}
 
 Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force) {
   if (vary.empty()) throw InputError("sweep: give at least one --vary name=v1,v2,...");
@@ -322,7 +325,7 @@ void write_sweep_summary(const Sweep& sweep, Report& report, const std::filesyst
     }
     rows.push_back(std::move(row));
   }
-  const std::vector<std::string> metrics = metric_names(rows);
+  const std::vector<std::string> metrics = run_metric_names(results_of(rows));
   write_table(sweep, rows, metrics, folder);
   const std::vector<Artifact> plots = plot_metrics(sweep, rows, metrics, folder);
   write_page(sweep, rows, plots, folder);

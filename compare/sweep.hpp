@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,19 @@ namespace gt {
 constexpr std::size_t sweep_run_cap = 64;
 
 Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force);
+
+// What a sweep or an A/B comparison reads of each run. The metrics: "seconds" (the case's wall
+// time), "cpu_ms" and "gpu_ms" (the medians), every check the runs report (not skipped), and
+// "descriptor.<group>.<name>" for each scalar terrain descriptor of ref<double>'s result, in that
+// order, each name once.
+std::vector<std::string> run_metric_names(const std::vector<const CaseResult*>& results);
+
+// A metric of one run, or nullopt where the run has none (or a non-finite value).
+std::optional<double> run_metric(const CaseResult& result, const std::string& name);
+
+// The picture of a run's result: ref<double>'s terrain after it (after_cpu.png) or its field
+// (cpu.png), else its first picture; empty when it has none.
+std::string result_picture(const CaseResult& result);
 
 void write_sweep_summary(const Sweep& sweep, Report& report, const std::filesystem::path& folder);
 

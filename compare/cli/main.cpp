@@ -35,6 +35,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "compare/ab.hpp"
 #include "compare/algorithm.hpp"
 #include "compare/cases.hpp"
 #include "core/memory.hpp"
@@ -290,6 +291,27 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   add_shared_options(*sweep, sweep_shared, "groundtruth-sweep");
 
+  Shared ab_shared;
+  gt::AdHocCase ab_base;
+  std::vector<std::string> a_assignments, b_assignments;
+  std::string ab_grid_size;
+  auto* ab = app.add_subcommand("ab", "two variants of one algorithm on one input side by side: both results, their "
+                                      "difference map and the change of every metric");
+  ab->add_option("--algorithm", ab_base.algorithm, "the algorithm")->required();
+  ab->add_option("--input", ab_base.input, "a heightmap file, as for an ad-hoc run");
+  ab->add_option("--a", a_assignments, "variant A's parameter, name=value (repeatable)");
+  ab->add_option("--b", b_assignments, "variant B's parameter, name=value (repeatable)");
+  ab->add_option("--set", ab_base.assignments, "a parameter both share, name=value (repeatable)");
+  ab->add_flag("--red-channel", ab_base.red_channel, "take a colour image's red channel as height");
+  ab->add_option("--size", ab_grid_size, "a generator's grid without --input, WxH (256x256)");
+  ab->add_option("--cell-size", ab_base.cell_size, "a generator's cell size in metres")
+      ->check(finite_number & CLI::PositiveNumber)
+      ->capture_default_str();
+  ab->add_option("--backend", ab_shared.backend, "cpu (references only), gpu, or both")
+      ->check(CLI::IsMember({"cpu", "gpu", "both"}))
+      ->capture_default_str();
+  add_shared_options(*ab, ab_shared, "groundtruth-ab");
+
   Shared report_shared;
   bool skip_benchmark = false;
   auto* report = app.add_subcommand("report", "the main job: every bundled case and the benchmarks");
@@ -482,6 +504,12 @@ int main(int argc, char** argv) {
       auto options = driver_options(sweep_shared, command_line, memory_limit_mib);
       if (!sweep_grid_size.empty()) parse_grid_size(sweep_grid_size, sweep_base);
       options.sweep = gt::make_sweep(sweep_base, vary, force_sweep);
+      return gt::run_driver(options);
+    }
+    if (ab->parsed()) {
+      auto options = driver_options(ab_shared, command_line, memory_limit_mib);
+      if (!ab_grid_size.empty()) parse_grid_size(ab_grid_size, ab_base);
+      options.sweep = gt::make_ab(ab_base, a_assignments, b_assignments);
       return gt::run_driver(options);
     }
     if (report->parsed()) {

@@ -1,0 +1,161 @@
+#include "compare/ab.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <optional>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "compare/cases.hpp"
+#include "compare/report/images.hpp"
+#include "compare/report/report_common.hpp"
+#include "compare/sweep.hpp"
+#include "core/errors.hpp"
+#include "core/io/heightmap_io.hpp"
+
+namespace gt {
+namespace {
+
+using report_detail::case_anchor;
+using report_detail::escape_markup;
+
+std::string parameter_of(const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw InputError(fmt::format("'{}': expected name=value", assignment));
+  }
+  return assignment.substr(0, equals);
+}
+
+// The first ref<double> field a case wrote (compare/field_files.hpp), read back; nullopt when it
+// wrote none.
+std::optional<Heightmap> cpu_field(const std::filesystem::path& folder, const CaseResult& result) {
+  const auto sidecar = folder / result.name / "fields.json";
+  if (!std::filesystem::exists(sidecar)) return std::nullopt;
+  std::ifstream in(sidecar);
+  const nlohmann::json fields = nlohmann::json::parse(in);
+  for (const auto& file : fields.at("files")) {
+    if (file.at("backend") == "cpu") {
+      return read_heightmap(folder / result.name / (file.at("stem").get<std::string>() + ".exr")).heights;
+    }
+  }
+  return std::nullopt;
+}
+
+struct MetricRow {
+  std::string name;
+  std::optional<double> a, b;
+  bool moved() const { return a.has_value() != b.has_value() || (a && *a != *b); }
+};
+
+std::string number_cell(const std::optional<double>& value) { return value ? fmt::format("{:.6g}", *value) : "–"; }
+
+void write_page(const Sweep& ab, const CaseResult& a, const CaseResult& b, const std::vector<MetricRow>& rows,
+                const std::string& difference_caption, const std::filesystem::path& folder) {
+  std::ofstream html(folder / "ab.html");
+  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>A/B of " << escape_markup(a.algorithm)
+       << "</title><style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #ccc;"
+          "padding:4px}td.n{text-align:right}img{width:320px;image-rendering:pixelated}tr.moved{background:#fff6d6}"
+          "</style></head><body>\n<h1>A/B of "
+       << escape_markup(a.algorithm) << "</h1>\n<table><tr><th></th><th>A</th><th>B</th></tr>\n";
+  const auto assignments = [](const AdHocCase& variant) {
+    std::string text;
+    for (const auto& assignment : variant.assignments) text += (text.empty() ? "" : ", ") + assignment;
+    return escape_markup(text.empty() ? "defaults" : text);
+  };
+  html << "<tr><th>parameters</th><td>" << assignments(ab.variants[0]) << "</td><td>" << assignments(ab.variants[1])
+       << "</td></tr>\n<tr><th>outcome</th><td><a href=\"index.html#" << case_anchor(a.name) << "\">"
+       << outcome_name(a.status) << "</a></td><td><a href=\"index.html#" << case_anchor(b.name) << "\">"
+       << outcome_name(b.status) << "</a></td></tr>\n<tr><th>result</th>";
+  for (const CaseResult* result : {&a, &b}) {
+    const std::string picture = result_picture(*result);
+    html << "<td>" << (picture.empty() ? "" : "<img src=\"" + escape_markup(picture) + "\" alt=\"\">") << "</td>";
+  }
+  html << "</tr>\n</table>\n";
+  if (!difference_caption.empty()) {
+    html << "<figure><img src=\"ab_difference.png\" alt=\"B - A\"><figcaption>" << escape_markup(difference_caption)
+         << "</figcaption></figure>\n";
+  }
+  html << "<h2>Metrics</h2>\n<p>Those that moved first (highlighted). The table as <a href=\"ab.json\">JSON</a>.</p>\n"
+          "<table><tr><th>metric</th><th>A</th><th>B</th><th>B - A</th></tr>\n";
+  for (const MetricRow& row : rows) {
+    const std::string delta = row.a && row.b ? fmt::format("{:.6g}", *row.b - *row.a) : "–";
+    html << "<tr" << (row.moved() ? " class=\"moved\"" : "") << "><td>" << escape_markup(row.name)
+         << "</td><td class=\"n\">" << number_cell(row.a) << "</td><td class=\"n\">" << number_cell(row.b)
+         << "</td><td class=\"n\">" << delta << "</td></tr>\n";
+  }
+  html << "</table>\n</body></html>\n";
+}
+
+}  // namespace
+
+Sweep make_ab(const AdHocCase& base, const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  if (a.empty() && b.empty()) throw InputError("ab: give A's and B's parameters with --a name=value and --b name=value");
+  std::vector<std::string> a_sorted = a, b_sorted = b;
+  std::sort(a_sorted.begin(), a_sorted.end());
+  std::sort(b_sorted.begin(), b_sorted.end());
+  if (a_sorted == b_sorted) throw InputError("ab: A and B are the same variant; give them different parameters");
+  for (const auto* side : {&a, &b}) {
+    for (const auto& assignment : *side) {
+      const std::string name = parameter_of(assignment);
+      for (const auto& fixed : base.assignments) {
+        if (parameter_of(fixed) == name) {
+          throw InputError(fmt::format("{} is both --set and --a/--b: choose one", name));
+        }
+      }
+    }
+  }
+  const std::string input = !base.input.empty() ? case_name_part(std::filesystem::path(base.input).stem().string())
+                                                 : fmt::format("{}x{}", base.width, base.height);
+  Sweep ab;
+  ab.ab = true;
+  for (const auto& [label, assignments] : {std::pair{"a", &a}, std::pair{"b", &b}}) {
+    AdHocCase variant = base;
+    variant.assignments.insert(variant.assignments.end(), assignments->begin(), assignments->end());
+    variant.name = fmt::format("ab.{}.{}.{}", base.algorithm, input, label);
+    ab.variants.push_back(std::move(variant));
+  }
+  return ab;
+}
+
+void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::path& folder) {
+  const auto find = [&](const AdHocCase& variant) -> const CaseResult* {
+    for (const CaseResult& result : report.cases) {
+      if (result.name == variant.name) return &result;
+    }
+    return nullptr;
+  };
+  const CaseResult* a = find(ab.variants[0]);
+  const CaseResult* b = find(ab.variants[1]);
+  if (a == nullptr || b == nullptr) return;  // a shard holds one of them only
+  std::vector<MetricRow> rows;
+  for (const auto& name : run_metric_names({a, b})) rows.push_back({name, run_metric(*a, name), run_metric(*b, name)});
+  std::stable_partition(rows.begin(), rows.end(), [](const MetricRow& row) { return row.moved(); });
+  nlohmann::json table = {{"a", {{"case", a->name}, {"assignments", ab.variants[0].assignments},
+                                 {"outcome", outcome_name(a->status)}}},
+                          {"b", {{"case", b->name}, {"assignments", ab.variants[1].assignments},
+                                 {"outcome", outcome_name(b->status)}}},
+                          {"metrics", nlohmann::json::array()}};
+  for (const MetricRow& row : rows) {
+    const auto value = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+    table["metrics"].push_back({{"name", row.name}, {"a", value(row.a)}, {"b", value(row.b)},
+                                {"b_minus_a", row.a && row.b ? nlohmann::json(*row.b - *row.a) : nlohmann::json(nullptr)}});
+  }
+  std::string difference_caption;
+  const auto field_a = cpu_field(folder, *a);
+  const auto field_b = cpu_field(folder, *b);
+  if (field_a && field_b && field_a->width == field_b->width && field_a->height == field_b->height) {
+    const DifferenceStats stats = write_difference_image(*field_a, *field_b, folder / "ab_difference.png");
+    difference_caption = fmt::format("B - A, ref<double>'s results: blue where B is lower, red where higher, full "
+                                     "colour at {:.3g}; rms {:.3g}",
+                                     stats.scale_used, stats.rms);
+    table["difference"] = {{"max_abs", stats.max_abs}, {"rms", stats.rms}};
+    report.plots.push_back({"ab_difference.png", "plot", difference_caption});
+  }
+  std::ofstream(folder / "ab.json") << table.dump(2) << '\n';
+  write_page(ab, *a, *b, rows, difference_caption, folder);
+}
+
+}  // namespace gt
