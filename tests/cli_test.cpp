@@ -676,9 +676,10 @@ TEST_F(CliGeoTiff, JakoThermalOnEgl) {
 // An RGB image is accepted and its channel 0 is the height: one iteration with an 85° talus moves
 // nothing on these gentle slopes (at most 0.05 per 1 m cell), so the result is the input, red / 255.
 // (ZeroIterationsIsTheIdentity says so more directly.)
-// Fields as data (issue 19): the pipe model's every state field, before and after, for each
-// backend, as EXR and .npy with the same values, each described in fields.json with its unit; the
-// .npy reads back through the heightmap reader (NumPy's format) at the case's grid size.
+// Fields as data (issue 19): the pipe model's every state field (the outflow one field per pipe),
+// before and after, for each backend, as EXR and .npy with the same values, each described in
+// fields.json with its unit; the .npy reads back through the heightmap reader (NumPy's format) at
+// the case's grid size.
 TEST(CliRun, EveryPipeFieldIsWrittenAsExrAndNpyWithItsSidecar) {
   const TempDir work;
   const fs::path out = work / "report";
@@ -712,7 +713,8 @@ TEST(CliRun, EveryPipeFieldIsWrittenAsExrAndNpyWithItsSidecar) {
       }
     }
   }
-  for (const char* field : {"terrain", "water", "sediment", "velocity_x", "velocity_y", "regolith"}) {
+  for (const char* field : {"terrain", "water", "sediment", "velocity_x", "velocity_y", "regolith", "outflow_L",
+                            "outflow_R", "outflow_T", "outflow_B"}) {
     for (const char* backend : {"input", "cpu", "gpu"}) {
       EXPECT_TRUE(described.contains(fmt::format("{}_{}", field, backend))) << field << " " << backend;
     }

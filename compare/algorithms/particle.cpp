@@ -286,6 +286,23 @@ reference::ColourMap<float> colour_as_float(const reference::ColourMap<double>& 
   return out;
 }
 
+// A colour map's channels as field files colour_<channel>_<backend> (linear, dimensionless).
+template <class Real>
+void write_colour_fields(const reference::ColourMap<Real>& colour, const Grid<double>& layout,
+                         const std::string& backend, const std::string& when, const RunOptions& options,
+                         CaseResult& result) {
+  static constexpr const char* channels[4] = {"red", "green", "blue", "alpha"};
+  Grid<double> channel = layout;
+  for (std::size_t ch = 0; ch < 4; ++ch) {
+    for (std::size_t cell = 0; cell < channel.size(); ++cell) channel.values[cell] = double(colour.values[cell][ch]);
+    const std::string field = fmt::format("colour_{}", channels[ch]);
+    write_field_files(channel,
+                      {fmt::format("{}_{}", field, backend), field, backend, "1",
+                       fmt::format("{} of the transported colour (linear), {}", channels[ch], when)},
+                      options, result);
+  }
+}
+
 // Colour transport (§4.5) of a case that asks for it, on the whole run: the sequential truth creates
 // no colour; the GPU's colour and side maps equal ref<float>'s bit for bit in batch and disjoint
 // orderings; a race's colour distance is reported.
@@ -314,6 +331,8 @@ void add_colour_checks(const ParticleScenario& scenario, const RunOptions& optio
     write_colour_image(truth.colour, folder / "colour_after_cpu.png");
     result.artifacts.push_back({result.name + "/colour_after_cpu.png", "image",
                                 "colour map after the droplets carried it, ref<double> (sRGB)"});
+    write_colour_fields(colour, input, "input", "before the droplets", options, result);
+    write_colour_fields(truth.colour, input, "cpu", "after the run, ref<double> (sequential)", options, result);
   }
   if (!options.gpu_available) {
     result.checks.push_back(skipped_check("parity.colour", options.gpu_unavailable_reason));
@@ -324,6 +343,7 @@ void add_colour_checks(const ParticleScenario& scenario, const RunOptions& optio
   gpu.load_colour(colour_float);
   gpu.run();
   const auto gpu_colour = gpu.colour_result();
+  write_colour_fields(gpu_colour, input, "gpu", "after the run, GPU", options, result);
   const double differing = double(channels_differing(float_run.colour, gpu_colour));
   if (c.ordering == DropletOrdering::race) {
     result.checks.push_back(informative_check(

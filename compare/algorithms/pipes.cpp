@@ -713,11 +713,12 @@ void write_pictures(const PipeScenario& scenario, const BackendRun& truth, const
   add("gpu_vs_cpu.png", fmt::format("terrain, GPU - ref<double>: max {:.3g} m", gpu_vs_cpu.max_abs));
 }
 
-// Every state field of the pipe model (core/params/hydraulic.hpp's PipeState, the pipes' outflow
-// aside) as field files: <field>_<backend>.exr/.npy for the initial state, ref<double>'s last
-// state and the GPU's, units as the state declares them.
-void write_state_fields(const PipeState<double>& state, const std::string& backend, const std::string& when,
-                        const RunOptions& options, CaseResult& result) {
+// Every state field of the pipe model (core/params/hydraulic.hpp's PipeState) as field files:
+// <field>_<backend>.exr/.npy for the initial state, ref<double>'s last state and the GPU's, units
+// as the state declares them; the outflow as one field per pipe in use, outflow_<pipe>_<backend>
+// (L, R, T, B, then the diagonals).
+void write_state_fields(const PipeState<double>& state, int pipe_count, const std::string& backend,
+                        const std::string& when, const RunOptions& options, CaseResult& result) {
   struct StateField {
     const Grid<double>& values;
     const char* field;
@@ -734,6 +735,16 @@ void write_state_fields(const PipeState<double>& state, const std::string& backe
     write_field_files(field.values,
                       {fmt::format("{}_{}", field.field, backend), field.field, backend, field.unit,
                        fmt::format("{}, {}", field.meaning, when)},
+                      options, result);
+  }
+  Grid<double> outflow = state.terrain;
+  for (int pipe = 0; pipe < pipe_count; ++pipe) {
+    for (std::size_t cell = 0; cell < outflow.size(); ++cell) outflow.values[cell] = state.outflow[cell][pipe];
+    const std::string field = fmt::format("outflow_{}", pipe_name(pipe));
+    write_field_files(outflow,
+                      {fmt::format("{}_{}", field, backend), field, backend, "m³/s",
+                       fmt::format("flux f through pipe {} (towards ({:+d}, {:+d})), {}", pipe_name(pipe),
+                                   pipe_offsets[pipe].dx, pipe_offsets[pipe].dy, when)},
                       options, result);
   }
 }
@@ -778,9 +789,10 @@ void run_pipe_case(const PipeScenario& scenario, const nlohmann::json& expect, c
   }
   plot_ledgers(truth, errors, options, result);
   write_pictures(scenario, truth, gpu_run ? &*gpu_run : nullptr, options, result);
-  write_state_fields(scenario.initial, "input", "before the first step", options, result);
-  write_state_fields(truth.final_state, "cpu", "after the last step, ref<double>", options, result);
-  if (gpu_run) write_state_fields(gpu_run->final_state, "gpu", "after the last step, GPU", options, result);
+  const int pipes = scenario.constants.pipe_count;
+  write_state_fields(scenario.initial, pipes, "input", "before the first step", options, result);
+  write_state_fields(truth.final_state, pipes, "cpu", "after the last step, ref<double>", options, result);
+  if (gpu_run) write_state_fields(gpu_run->final_state, pipes, "gpu", "after the last step, GPU", options, result);
   if (options.progress) options.progress->stage("terrain descriptors");
   add_case_descriptors({&terrain, &truth.final_state.terrain, &float_run.final_state.terrain,
                         gpu_run ? &gpu_run->final_state.terrain : nullptr},
