@@ -247,17 +247,7 @@ HeightmapFile read_volcano_json(const path& file) {
 }
 
 HeightmapFile read_npy_heightmap(const path& file) {
-  std::error_code error;
-  const std::uintmax_t bytes = std::filesystem::file_size(file, error);
-  if (error) throw InputError(fmt::format("{}: cannot read: {}", file.string(), error.message()));
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open", file.string()));
   const std::string where = file.string();
-  const ByteSource source = [&in, &where](void* destination, std::size_t count) {
-    in.read(static_cast<char*>(destination), static_cast<std::streamsize>(count));
-    if (in.bad()) throw InputError(fmt::format("{}: read error", where));
-    return static_cast<std::size_t>(in.gcount());
-  };
   const auto element_count = [&where](const std::vector<long long>& shape) {
     if (shape.size() != 2 || shape[0] < 1 || shape[1] < 1) {
       throw InputError(fmt::format("{}: a heightmap .npy is a non-empty 2-D array (rows, columns); this one has "
@@ -266,7 +256,7 @@ HeightmapFile read_npy_heightmap(const path& file) {
     }
     return checked_element_count(shape, where);
   };
-  NpyArray array = read_npy(source, bytes, element_count, where);
+  NpyArray array = read_npy_file(file, element_count, "the heightmap");
   HeightmapFile result;
   result.format = "npy";
   result.heights = Heightmap(static_cast<int>(array.shape[1]), static_cast<int>(array.shape[0]));

@@ -9,6 +9,7 @@
 
 #include <bit>
 #include <charconv>
+#include <fstream>
 #include <limits>
 #include <regex>
 #include <string_view>
@@ -146,6 +147,21 @@ NpyArray read_npy(const ByteSource& source, std::uintmax_t stored_bytes, const S
   const std::size_t count = element_count(header.shape);
   check_stored_size(header, count, item_bytes, stored_bytes, where);
   return {header.shape, read_data(source, header.descr, count, where)};
+}
+
+NpyArray read_npy_file(const std::filesystem::path& file, const ShapeCheck& element_count, const std::string& what) {
+  const std::string where = file.string();
+  std::error_code error;
+  const std::uintmax_t stored_bytes = std::filesystem::file_size(file, error);
+  if (error) throw InputError(fmt::format("{}: cannot read {}: {}", where, what, error.message()));
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot open {}", where, what));
+  const ByteSource source = [&in, &where](void* destination, std::size_t bytes) {
+    in.read(static_cast<char*>(destination), static_cast<std::streamsize>(bytes));
+    if (in.bad()) throw InputError(fmt::format("{}: read error", where));
+    return static_cast<std::size_t>(in.gcount());
+  };
+  return read_npy(source, stored_bytes, element_count, where);
 }
 
 }  // namespace gt::detail

@@ -1,5 +1,6 @@
 // Internal to core/io: one reader of NumPy's .npy array format, shared by the arrays inside .npz
-// archives (dem_formats.cpp, a libzip member) and plain .npy files (volume_io.cpp).
+// archives (dem_formats.cpp, a libzip member) and plain .npy files (volume_io.cpp's volumes,
+// dem_formats.cpp's heightmaps).
 //
 // The reader sees its bytes through a ByteSource, so the header parser, the size check and the
 // value conversion exist once whatever holds the array. Supported: format versions 1 to 3, dtypes
@@ -14,6 +15,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -36,5 +38,9 @@ struct NpyArray {
 // Reads a whole .npy array from `source`, whose stored size is `stored_bytes`.
 NpyArray read_npy(const ByteSource& source, std::uintmax_t stored_bytes, const ShapeCheck& element_count,
                   const std::string& where);
+
+// Reads a plain .npy file; `what` names the array in the messages of a file that cannot be sized
+// or opened ("{file}: cannot read {what}: ...", "{file}: cannot open {what}").
+NpyArray read_npy_file(const std::filesystem::path& file, const ShapeCheck& element_count, const std::string& what);
 
 }  // namespace gt::detail

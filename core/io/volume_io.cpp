@@ -9,9 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -27,22 +25,6 @@ namespace {
 using std::filesystem::path;
 
 constexpr long long max_samples = 1LL << 28;
-
-std::uintmax_t file_bytes(const path& file) {
-  std::error_code error;
-  const std::uintmax_t bytes = std::filesystem::file_size(file, error);
-  if (error) throw InputError(fmt::format("{}: cannot read the volume: {}", file.string(), error.message()));
-  return bytes;
-}
-
-// The .npy reader's view of an open file.
-detail::ByteSource stream_bytes(std::ifstream& in, const std::string& where) {
-  return [&in, where](void* destination, std::size_t bytes) {
-    in.read(static_cast<char*>(destination), static_cast<std::streamsize>(bytes));
-    if (in.bad()) throw InputError(fmt::format("{}: read error", where));
-    return static_cast<std::size_t>(in.gcount());
-  };
-}
 
 // Samples of an array of this shape, after refusing anything but (nz, ny, nx) with 2 to 2^28
 // samples in all and at least 2 per axis.
@@ -83,13 +65,10 @@ void check_finite(const Volume<double>& volume, const std::string& where) {
 
 Volume<double> read_volume(const path& file) {
   const std::string where = file.string();
-  const std::uintmax_t stored_bytes = file_bytes(file);
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open the volume", where));
   const auto sample_count = [&where](const std::vector<long long>& shape) {
     return checked_sample_count(shape, where);
   };
-  detail::NpyArray array = detail::read_npy(stream_bytes(in, where), stored_bytes, sample_count, where);
+  detail::NpyArray array = detail::read_npy_file(file, sample_count, "the volume");
 
   Volume<double> volume;
   volume.nz = static_cast<int>(array.shape[0]);
