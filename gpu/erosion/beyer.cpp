@@ -29,10 +29,7 @@ namespace {
 
 // Mirror of `BeyerBlock` in gpu/shaders/erosion/beyer_block.glsl (std140).
 struct BeyerBlock {
-  std::int32_t grid_size[2];
-  std::int32_t droplet_grid[2];
-  std::int32_t droplet_spacing;
-  std::int32_t lifetime;
+  DropletBlockHead head;
   std::uint32_t seed;
   std::uint32_t printed_speed;
   float inertia;
@@ -48,10 +45,7 @@ struct BeyerBlock {
   float quantum;
   float inverse_quantum;
 };
-static_assert(offsetof(BeyerBlock, grid_size) == 0);
-static_assert(offsetof(BeyerBlock, droplet_grid) == 8);
-static_assert(offsetof(BeyerBlock, droplet_spacing) == 16);
-static_assert(offsetof(BeyerBlock, lifetime) == 20);
+static_assert(offsetof(BeyerBlock, head) == 0);
 static_assert(offsetof(BeyerBlock, seed) == 24);
 static_assert(offsetof(BeyerBlock, printed_speed) == 28);
 static_assert(offsetof(BeyerBlock, inertia) == 32);
@@ -68,7 +62,6 @@ static_assert(offsetof(BeyerBlock, quantum) == 72);
 static_assert(offsetof(BeyerBlock, inverse_quantum) == 76);
 static_assert(sizeof(BeyerBlock) == 80);
 
-constexpr int local_size = 8;  // local_size_x/y of beyer_block.glsl
 enum Binding : GLuint { block_binding = 0, heights_binding = 1, valid_binding = 2, delta_binding = 3 };
 
 bool is_batch(const BeyerConstants& constants) { return constants.ordering == DropletOrdering::batch; }
@@ -85,14 +78,8 @@ std::optional<ComputeProgram> apply_program(const BeyerConstants& constants) {
 
 // Each constant rounded to float once from double, as the reference does.
 BeyerBlock make_block(const BeyerConstants& constants, int width, int height) {
-  const int spacing = checked_droplet_spacing(constants.spacing, "BeyerErosion");
   BeyerBlock block{};
-  block.grid_size[0] = width;
-  block.grid_size[1] = height;
-  block.droplet_grid[0] = droplet_count(width, spacing);
-  block.droplet_grid[1] = droplet_count(height, spacing);
-  block.droplet_spacing = spacing;
-  block.lifetime = constants.lifetime;
+  block.head = droplet_block_head(width, height, constants.spacing, constants.lifetime, "BeyerErosion");
   block.seed = constants.seed;
   block.printed_speed = constants.speed_rule == BeyerSpeedRule::printed ? 1u : 0u;
   block.inertia = static_cast<float>(constants.inertia);
@@ -174,13 +161,9 @@ void BeyerErosion::bind() const {
 }
 
 void BeyerErosion::run_pass(int offset_x, int offset_y, std::uint32_t pass_number) const {
-  glProgramUniform2i(droplets_program_.id(), offset_location_, offset_x, offset_y);
   glProgramUniform1ui(droplets_program_.id(), pass_number_location_, pass_number);
-  droplets_program_.dispatch(droplets_x_, droplets_y_, local_size, local_size);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  if (!apply_program_) return;
-  apply_program_->dispatch(layout_.width, layout_.height, local_size, local_size);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatch_droplet_pass(droplets_program_, offset_location_, offset_x, offset_y, droplets_x_, droplets_y_);
+  if (apply_program_) dispatch_cell_pass(*apply_program_, layout_.width, layout_.height);
 }
 
 }  // namespace gt::gpu

@@ -15,6 +15,23 @@ int droplet_count(int size, int spacing) { return (size + spacing - 1) / spacing
 
 std::size_t cell_count(int width, int height) { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
 
+DropletBlockHead droplet_block_head(int width, int height, int spacing, int lifetime, const char* eroder) {
+  const int checked = checked_droplet_spacing(spacing, eroder);
+  return {{width, height}, {droplet_count(width, checked), droplet_count(height, checked)}, checked, lifetime};
+}
+
+void dispatch_droplet_pass(const ComputeProgram& program, GLint offset_location, int offset_x, int offset_y,
+                           int droplets_x, int droplets_y) {
+  glProgramUniform2i(program.id(), offset_location, offset_x, offset_y);
+  program.dispatch(droplets_x, droplets_y, droplet_local_size, droplet_local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void dispatch_cell_pass(const ComputeProgram& program, int width, int height) {
+  program.dispatch(width, height, droplet_local_size, droplet_local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 Grid<float> empty_layout(int width, int height) {
   Grid<float> layout;
   layout.width = width;

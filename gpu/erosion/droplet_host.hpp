@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include <glad/gl.h>
 
@@ -14,6 +15,20 @@
 
 namespace gt::gpu {
 
+// The head every droplet shader's std140 parameter block starts with (particle_block.glsl,
+// beyer_block.glsl, flow_map_block.glsl): grid_size, droplet_grid, droplet_spacing, lifetime. Its
+// 24 bytes keep the block's own members at the offsets std140 gives them after these four.
+struct DropletBlockHead {
+  std::int32_t grid_size[2];     // width, height (texels)
+  std::int32_t droplet_grid[2];  // ceil(width / spacing), ceil(height / spacing): droplets per pass
+  std::int32_t droplet_spacing;  // S
+  std::int32_t lifetime;         // steps of one droplet
+};
+static_assert(sizeof(DropletBlockHead) == 24);
+
+// local_size_x/y of the droplet shaders.
+constexpr int droplet_local_size = 8;
+
 // The spacing S, refused below 1 (a pass would have no droplet grid): std::invalid_argument.
 int checked_droplet_spacing(int spacing, const char* eroder);
 
@@ -21,6 +36,17 @@ int checked_droplet_spacing(int spacing, const char* eroder);
 int droplet_count(int size, int spacing);
 
 std::size_t cell_count(int width, int height);
+
+// The head of a width x height grid's block (the spacing checked as checked_droplet_spacing).
+DropletBlockHead droplet_block_head(int width, int height, int spacing, int lifetime, const char* eroder);
+
+// One pass: the program's `pass_offset` (at `offset_location`) set to (offset_x, offset_y), its
+// droplets_x x droplets_y droplets dispatched, then a storage barrier.
+void dispatch_droplet_pass(const ComputeProgram& program, GLint offset_location, int offset_x, int offset_y,
+                           int droplets_x, int droplets_y);
+
+// A per-cell pass over a width x height grid (a batch apply, the plug pass), then a storage barrier.
+void dispatch_cell_pass(const ComputeProgram& program, int width, int height);
 
 // A width x height grid without values: what a host holds between loads (the heights live on the GPU).
 Grid<float> empty_layout(int width, int height);

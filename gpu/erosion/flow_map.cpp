@@ -21,10 +21,7 @@ namespace {
 
 // Mirror of `FlowBlock` in gpu/shaders/erosion/flow_map_block.glsl (std140).
 struct FlowBlock {
-  std::int32_t grid_size[2];
-  std::int32_t droplet_grid[2];
-  std::int32_t droplet_spacing;
-  std::int32_t lifetime;
+  DropletBlockHead head;
   std::uint32_t interpolated_flow;
   float acceleration;
   float max_velocity;
@@ -33,10 +30,7 @@ struct FlowBlock {
   float no_limit;
   float batch_powers[32];  // vec4[8]
 };
-static_assert(offsetof(FlowBlock, grid_size) == 0);
-static_assert(offsetof(FlowBlock, droplet_grid) == 8);
-static_assert(offsetof(FlowBlock, droplet_spacing) == 16);
-static_assert(offsetof(FlowBlock, lifetime) == 20);
+static_assert(offsetof(FlowBlock, head) == 0);
 static_assert(offsetof(FlowBlock, interpolated_flow) == 24);
 static_assert(offsetof(FlowBlock, acceleration) == 28);
 static_assert(offsetof(FlowBlock, max_velocity) == 32);
@@ -46,7 +40,6 @@ static_assert(offsetof(FlowBlock, no_limit) == 44);
 static_assert(offsetof(FlowBlock, batch_powers) == 48);
 static_assert(sizeof(FlowBlock) == 176);
 
-constexpr int local_size = 8;  // local_size_x/y of flow_map_block.glsl
 enum Binding : GLuint { block_binding = 0, heights_binding = 1, valid_binding = 2, flow_binding = 3, plugged_binding = 4 };
 
 std::vector<std::string> program_defines(const FlowConstants& constants) {
@@ -55,14 +48,8 @@ std::vector<std::string> program_defines(const FlowConstants& constants) {
 }
 
 FlowBlock make_block(const FlowConstants& constants, int width, int height) {
-  const int spacing = checked_droplet_spacing(constants.spacing, "FlowMap");
   FlowBlock block{};
-  block.grid_size[0] = width;
-  block.grid_size[1] = height;
-  block.droplet_grid[0] = droplet_count(width, spacing);
-  block.droplet_grid[1] = droplet_count(height, spacing);
-  block.droplet_spacing = spacing;
-  block.lifetime = constants.lifetime;
+  block.head = droplet_block_head(width, height, constants.spacing, constants.lifetime, "FlowMap");
   block.interpolated_flow = constants.interpolate ? 1u : 0u;
   block.acceleration = static_cast<float>(constants.acceleration);
   block.max_velocity = static_cast<float>(constants.max_velocity);
@@ -105,13 +92,10 @@ void FlowMap::run() const {
   plugged_.bind(plugged_binding);
   for (int offset_y = 0; offset_y < spacing_; ++offset_y) {
     for (int offset_x = 0; offset_x < spacing_; ++offset_x) {
-      glProgramUniform2i(droplets_program_.id(), offset_location_, offset_x, offset_y);
-      droplets_program_.dispatch(droplets_x_, droplets_y_, local_size, local_size);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      dispatch_droplet_pass(droplets_program_, offset_location_, offset_x, offset_y, droplets_x_, droplets_y_);
     }
   }
-  plug_program_.dispatch(layout_.width, layout_.height, local_size, local_size);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatch_cell_pass(plug_program_, layout_.width, layout_.height);
 }
 
 Grid<float> FlowMap::result() const {

@@ -31,10 +31,7 @@ namespace {
 
 // Mirror of `ParticleBlock` in gpu/shaders/erosion/particle_block.glsl (std140).
 struct ParticleBlock {
-  std::int32_t grid_size[2];
-  std::int32_t droplet_grid[2];
-  std::int32_t droplet_spacing;
-  std::int32_t lifetime;
+  DropletBlockHead head;
   std::uint32_t interpolated_erosion;
   float acceleration;
   float bite;
@@ -49,10 +46,7 @@ struct ParticleBlock {
   std::uint32_t interpolated_colour;
   std::uint32_t tail_padding[2];  // the std140 block's size rounded up to 16 bytes
 };
-static_assert(offsetof(ParticleBlock, grid_size) == 0);
-static_assert(offsetof(ParticleBlock, droplet_grid) == 8);
-static_assert(offsetof(ParticleBlock, droplet_spacing) == 16);
-static_assert(offsetof(ParticleBlock, lifetime) == 20);
+static_assert(offsetof(ParticleBlock, head) == 0);
 static_assert(offsetof(ParticleBlock, interpolated_erosion) == 24);
 static_assert(offsetof(ParticleBlock, acceleration) == 28);
 static_assert(offsetof(ParticleBlock, bite) == 32);
@@ -67,7 +61,6 @@ static_assert(offsetof(ParticleBlock, colour_mixing) == 64);
 static_assert(offsetof(ParticleBlock, interpolated_colour) == 68);
 static_assert(sizeof(ParticleBlock) == 80);
 
-constexpr int local_size = 8;  // local_size_x/y of particle_block.glsl
 enum Binding : GLuint {
   block_binding = 0,
   heights_binding = 1,
@@ -96,14 +89,8 @@ std::optional<ComputeProgram> apply_program(const ParticleConstants& constants, 
 
 // Each constant rounded to float once from double, as the reference does.
 ParticleBlock make_block(const ParticleConstants& constants, int width, int height) {
-  const int spacing = checked_droplet_spacing(constants.spacing, "ParticleErosion");
   ParticleBlock block{};
-  block.grid_size[0] = width;
-  block.grid_size[1] = height;
-  block.droplet_grid[0] = droplet_count(width, spacing);
-  block.droplet_grid[1] = droplet_count(height, spacing);
-  block.droplet_spacing = spacing;
-  block.lifetime = constants.lifetime;
+  block.head = droplet_block_head(width, height, constants.spacing, constants.lifetime, "ParticleErosion");
   block.interpolated_erosion = constants.interpolate ? 1u : 0u;
   block.acceleration = static_cast<float>(constants.acceleration);
   block.bite = static_cast<float>(constants.bite);
@@ -256,12 +243,8 @@ void ParticleErosion::bind() const {
 }
 
 void ParticleErosion::run_pass(int offset_x, int offset_y) const {
-  glProgramUniform2i(droplets_program_.id(), offset_location_, offset_x, offset_y);
-  droplets_program_.dispatch(droplets_x_, droplets_y_, local_size, local_size);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  if (!apply_program_) return;
-  apply_program_->dispatch(layout_.width, layout_.height, local_size, local_size);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatch_droplet_pass(droplets_program_, offset_location_, offset_x, offset_y, droplets_x_, droplets_y_);
+  if (apply_program_) dispatch_cell_pass(*apply_program_, layout_.width, layout_.height);
 }
 
 }  // namespace gt::gpu
