@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "compare/cases.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/report_common.hpp"
 #include "compare/sweep.hpp"
@@ -107,8 +106,7 @@ Sweep make_ab(const AdHocCase& base, const std::vector<std::string>& a, const st
       }
     }
   }
-  const std::string input = !base.input.empty() ? case_name_part(std::filesystem::path(base.input).stem().string())
-                                                 : fmt::format("{}x{}", base.width, base.height);
+  const std::string input = ad_hoc_input_name(base);
   Sweep ab;
   ab.ab = true;
   for (const auto& [label, assignments] : {std::pair{"a", &a}, std::pair{"b", &b}}) {

@@ -79,11 +79,7 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
     const auto name = assignment.substr(0, equals);
     spec.params[name] = parse_param_text(spec.algorithm, *algorithm.params, name, assignment.substr(equals + 1));
   }
-  const std::string input_name =
-      !ad_hoc.input.empty()                      ? std::filesystem::path(ad_hoc.input).stem().string()
-      : algorithm.ad_hoc_input != AdHocInput::heightmap ? "params"
-                                                        : fmt::format("{}x{}", ad_hoc.width, ad_hoc.height);
-  spec.name = ad_hoc.name.empty() ? fmt::format("adhoc.{}.{}", ad_hoc.algorithm, case_name_part(input_name))
+  spec.name = ad_hoc.name.empty() ? fmt::format("adhoc.{}.{}", ad_hoc.algorithm, ad_hoc_input_name(ad_hoc))
                                   : ad_hoc.name;
   return spec;
 }
@@ -451,6 +447,15 @@ std::vector<std::filesystem::path> data_files(const std::vector<Job>& jobs) {
 }
 
 }  // namespace
+
+std::string ad_hoc_input_name(const AdHocCase& ad_hoc) {
+  const Algorithm& algorithm = find_algorithm(ad_hoc.algorithm);
+  const std::string input_name =
+      !ad_hoc.input.empty()                      ? std::filesystem::path(ad_hoc.input).stem().string()
+      : algorithm.ad_hoc_input != AdHocInput::heightmap ? "params"
+                                                        : fmt::format("{}x{}", ad_hoc.width, ad_hoc.height);
+  return case_name_part(input_name);
+}
 
 int run_driver(const DriverOptions& options) {
   if (!options.mutant.empty()) set_active_mutant(find_mutant(options.mutant).name);

@@ -29,6 +29,10 @@ struct AdHocCase {
   std::string name;                      // the case's name; empty: adhoc.<algorithm>.<input>
 };
 
+// The input's part of an ad-hoc case's name: the input file's stem, a generator's WxH grid, or
+// "params" for an algorithm that takes no heightmap; as a case name part (compare/cases.hpp).
+std::string ad_hoc_input_name(const AdHocCase& ad_hoc);
+
 // `groundtruth sweep` (compare/sweep.hpp): one ad-hoc case per combination of the varied values;
 // `groundtruth ab` (compare/ab.hpp): two variants, A and B, side by side.
 struct Sweep {

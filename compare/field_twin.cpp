@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -470,7 +469,6 @@ void write_generated_pictures(const Grid<double>& cpu, const std::optional<GpuOu
                fmt::format("GPU - reference (double) (±{:.3g})", disagreement.scale_used));
 }
 
-// The parameters beside a written field, so that a generated terrain is a dataset of its own.
 void write_artifacts(const FieldTwin& twin, const Heightmap& input, const Grid<double>& cpu,
                      const Grid<float>& cpu_float, const std::optional<GpuOutputs>& gpu, const RunOptions& options,
                      CaseResult& result) {

@@ -50,11 +50,6 @@ Varied parse_vary(const std::string& text) {
   return varied;
 }
 
-std::string input_part(const AdHocCase& base) {
-  if (!base.input.empty()) return case_name_part(std::filesystem::path(base.input).stem().string());
-  return fmt::format("{}x{}", base.width, base.height);
-}
-
 // The number a varied value stands for, or nullopt when the parameter is not numeric.
 std::optional<double> number(const std::string& text) {
   try {
@@ -295,7 +290,7 @@ Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bo
   for (const auto& axis : axes) sweep.varied.push_back(axis.name);
   for (std::size_t index = 0; index < runs; ++index) {
     AdHocCase variant = base;
-    std::string name = fmt::format("sweep.{}.{}", base.algorithm, input_part(base));
+    std::string name = fmt::format("sweep.{}.{}", base.algorithm, ad_hoc_input_name(base));
     std::size_t rest = index;
     std::vector<std::string> chosen(axes.size());
     for (std::size_t k = axes.size(); k-- > 0;) {  // the last axis varies fastest

@@ -85,6 +85,23 @@ struct Shared {
   bool worker = false;
 };
 
+// What makes an ad-hoc case (run, sweep, ab) beside its algorithm: the input, the parameters held
+// fixed, the red channel of a colour image, a generator's grid and cell size, and the backends.
+void add_ad_hoc_options(CLI::App& command, gt::AdHocCase& ad_hoc, std::string& grid_size, Shared& shared) {
+  command.add_option("--input", ad_hoc.input, "a heightmap file (PNG, TIFF/GeoTIFF, EXR, volcano JSON, npz, npy)");
+  command.add_option("--set", ad_hoc.assignments, "a parameter, name=value (repeatable)");
+  command.add_flag("--red-channel", ad_hoc.red_channel,
+                   "take a colour image's red channel as height (seed 000 §4.2); without it a colour image is refused "
+                   "as not a heightmap");
+  command.add_option("--size", grid_size, "a generator (noise) without --input: the grid, WxH (256x256)");
+  command.add_option("--cell-size", ad_hoc.cell_size, "a generator's cell size in metres")
+      ->check(finite_number & CLI::PositiveNumber)
+      ->capture_default_str();
+  command.add_option("--backend", shared.backend, "cpu (references only), gpu, or both")
+      ->check(CLI::IsMember({"cpu", "gpu", "both"}))
+      ->capture_default_str();
+}
+
 void add_shared_options(CLI::App& command, Shared& shared, const std::string& default_out) {
   shared.out = default_out;
   command.add_option("--gl", shared.gl, "GL context: egl (hardware device, else surfaceless llvmpipe) or osmesa")
@@ -247,19 +264,8 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "run cases (globs over case names) or one ad-hoc case");
   run->add_option("patterns", patterns, "case-name patterns, e.g. 'erosion.thermal.*'");
   run->add_option("--algorithm", ad_hoc.algorithm, "ad-hoc case: the algorithm");
-  run->add_option("--input", ad_hoc.input, "ad-hoc case: a heightmap file (PNG, TIFF/GeoTIFF, EXR, volcano JSON, npz)");
-  run->add_option("--set", ad_hoc.assignments, "ad-hoc case: a parameter, name=value (repeatable)");
-  run->add_flag("--red-channel", ad_hoc.red_channel,
-                "ad-hoc case: take a colour image's red channel as height (seed 000 §4.2); without it a colour "
-                "image is refused as not a heightmap");
   std::string grid_size;
-  run->add_option("--size", grid_size, "ad-hoc case of a generator (noise) without --input: the grid, WxH (256x256)");
-  run->add_option("--cell-size", ad_hoc.cell_size, "ad-hoc case of a generator: cell size in metres")
-      ->check(finite_number & CLI::PositiveNumber)
-      ->capture_default_str();
-  run->add_option("--backend", run_shared.backend, "cpu (references only), gpu, or both")
-      ->check(CLI::IsMember({"cpu", "gpu", "both"}))
-      ->capture_default_str();
+  add_ad_hoc_options(*run, ad_hoc, grid_size, run_shared);
   add_shared_options(*run, run_shared, "groundtruth-report");
   std::vector<std::string> extra_cases;
   run->add_option("--cases", extra_cases, "more case files (JSON arrays of cases) or folders of them, beside the bundled ones");
@@ -276,19 +282,10 @@ int main(int argc, char** argv) {
   auto* sweep = app.add_subcommand("sweep", "one algorithm on one input over a grid of parameter values: a table, "
                                             "plots against the varied parameter and a thumbnail of each run");
   sweep->add_option("--algorithm", sweep_base.algorithm, "the algorithm")->required();
-  sweep->add_option("--input", sweep_base.input, "a heightmap file, as for an ad-hoc run");
   sweep->add_option("--vary", vary, "a parameter and its values, name=v1,v2,... (repeatable: every combination runs)")
       ->required();
-  sweep->add_option("--set", sweep_base.assignments, "a parameter held fixed, name=value (repeatable)");
-  sweep->add_flag("--red-channel", sweep_base.red_channel, "take a colour image's red channel as height");
-  sweep->add_option("--size", sweep_grid_size, "a generator's grid without --input, WxH (256x256)");
-  sweep->add_option("--cell-size", sweep_base.cell_size, "a generator's cell size in metres")
-      ->check(finite_number & CLI::PositiveNumber)
-      ->capture_default_str();
+  add_ad_hoc_options(*sweep, sweep_base, sweep_grid_size, sweep_shared);
   sweep->add_flag("--force", force_sweep, fmt::format("run more than {} combinations", gt::sweep_run_cap));
-  sweep->add_option("--backend", sweep_shared.backend, "cpu (references only), gpu, or both")
-      ->check(CLI::IsMember({"cpu", "gpu", "both"}))
-      ->capture_default_str();
   add_shared_options(*sweep, sweep_shared, "groundtruth-sweep");
 
   Shared ab_shared;
@@ -298,18 +295,9 @@ int main(int argc, char** argv) {
   auto* ab = app.add_subcommand("ab", "two variants of one algorithm on one input side by side: both results, their "
                                       "difference map and the change of every metric");
   ab->add_option("--algorithm", ab_base.algorithm, "the algorithm")->required();
-  ab->add_option("--input", ab_base.input, "a heightmap file, as for an ad-hoc run");
   ab->add_option("--a", a_assignments, "variant A's parameter, name=value (repeatable)");
   ab->add_option("--b", b_assignments, "variant B's parameter, name=value (repeatable)");
-  ab->add_option("--set", ab_base.assignments, "a parameter both share, name=value (repeatable)");
-  ab->add_flag("--red-channel", ab_base.red_channel, "take a colour image's red channel as height");
-  ab->add_option("--size", ab_grid_size, "a generator's grid without --input, WxH (256x256)");
-  ab->add_option("--cell-size", ab_base.cell_size, "a generator's cell size in metres")
-      ->check(finite_number & CLI::PositiveNumber)
-      ->capture_default_str();
-  ab->add_option("--backend", ab_shared.backend, "cpu (references only), gpu, or both")
-      ->check(CLI::IsMember({"cpu", "gpu", "both"}))
-      ->capture_default_str();
+  add_ad_hoc_options(*ab, ab_base, ab_grid_size, ab_shared);
   add_shared_options(*ab, ab_shared, "groundtruth-ab");
 
   Shared report_shared;
