@@ -32,4 +32,15 @@ const Algorithm& find_algorithm(const std::string& name) {
   throw InputError(fmt::format("unknown algorithm '{}'; known: {}", name, fmt::join(names, ", ")));
 }
 
+nlohmann::json algorithm_json(const Algorithm& algorithm) {
+  nlohmann::json params = nlohmann::json::array();
+  for (const auto& spec : *algorithm.params) params.push_back(to_json(spec));
+  const char* input = algorithm.ad_hoc_input == AdHocInput::heightmap         ? "heightmap"
+                      : algorithm.ad_hoc_input == AdHocInput::mesh            ? "mesh"
+                      : algorithm.ad_hoc_input == AdHocInput::optional_volume ? "optional_volume"
+                                                                              : "none";
+  return {{"name", algorithm.name}, {"summary", algorithm.summary}, {"source", algorithm.source},
+          {"input", input},         {"params", params}};
+}
+
 }  // namespace gt

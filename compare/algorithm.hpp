@@ -68,6 +68,10 @@ const std::vector<Algorithm>& algorithms();
 // Throws InputError listing the known names.
 const Algorithm& find_algorithm(const std::string& name);
 
+// What `groundtruth list --json` and the Python module say of an algorithm: {"name", "summary",
+// "source", "input" (heightmap, mesh, optional_volume or none), "params": [core/params.hpp to_json]}.
+nlohmann::json algorithm_json(const Algorithm& algorithm);
+
 // Defined by each file of compare/algorithms/.
 Algorithm thermal_algorithm();
 Algorithm thermal_jako_algorithm();

@@ -66,8 +66,9 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   } else if (!ad_hoc.input.empty()) {
     spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
     if (ad_hoc.red_channel) spec.input["red_channel"] = true;
+    if (ad_hoc.cell_size > 0.0) spec.input["cell_size"] = ad_hoc.cell_size;
   } else if (!algorithm.iterates) {
-    spec.input = {{"generator", "flat"}, {"width", ad_hoc.width}, {"height", ad_hoc.height}, {"cell_size", ad_hoc.cell_size}};
+    spec.input = {{"generator", "flat"}, {"width", ad_hoc.width}, {"height", ad_hoc.height}, {"cell_size", ad_hoc.cell_size > 0.0 ? ad_hoc.cell_size : 1.0}};
   } else {
     throw InputError(fmt::format("{} changes a heightmap: give it one with --input", ad_hoc.algorithm));
   }
@@ -303,8 +304,8 @@ std::vector<std::string> job_selection(const Job& job, const DriverOptions& opti
   if (job.spec.origin != ad_hoc_origin) return {exact_pattern(job.spec.name)};
   const AdHocCase& ad_hoc = ad_hoc_of(job.spec, options);
   std::vector<std::string> args = {"--algorithm", ad_hoc.algorithm, "--size",
-                                   fmt::format("{}x{}", ad_hoc.width, ad_hoc.height), "--cell-size",
-                                   fmt::format("{}", ad_hoc.cell_size)};
+                                   fmt::format("{}x{}", ad_hoc.width, ad_hoc.height)};
+  if (ad_hoc.cell_size > 0.0) args.insert(args.end(), {"--cell-size", fmt::format("{}", ad_hoc.cell_size)});
   if (!ad_hoc.input.empty()) args.insert(args.end(), {"--input", std::filesystem::absolute(ad_hoc.input).string()});
   for (const auto& assignment : ad_hoc.assignments) args.insert(args.end(), {"--set", assignment});
   if (ad_hoc.red_channel) args.push_back("--red-channel");
@@ -512,7 +513,7 @@ int run_driver(const DriverOptions& options) {
     write_report_files(report, folder);
   });
   if (options.worker) return run_failed(report) ? 1 : 0;
-  print_summary(report, options.out);
+  if (options.summary) print_summary(report, options.out);
   if (report.baseline_diff) fmt::print("against {}: {}", report.baseline_file, describe(*report.baseline_diff));
   if (report.mutation) print_mutation(*report.mutation);
   return run_failed(report) || (report.mutation && !report.mutation->passed()) ? 1 : 0;

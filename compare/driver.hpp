@@ -23,7 +23,7 @@ struct AdHocCase {
   std::string input;                     // a heightmap file; empty for a generator (noise) on a
   int width = 256;                       //   width x height grid of cell_size
   int height = 256;
-  double cell_size = 1.0;
+  double cell_size = 0.0;                // metres; 0: the file's own, or 1 m for a generator
   std::vector<std::string> assignments;  // "name=value"
   bool red_channel = false;              // a colour image's red channel as height (else it is refused)
   std::string name;                      // the case's name; empty: adhoc.<algorithm>.<input>
@@ -56,6 +56,7 @@ struct DriverOptions {
   std::string mutant;                    // a registered mutant to activate (compare/mutants/), or empty
   bool require_gpu = false;              // a missing GL context makes every GPU-using case `error`
   bool quiet = false;                    // no progress lines on stderr
+  bool summary = true;                   // each case's outcome and the totals on stdout (the Python module asks none)
   std::filesystem::path baseline;        // a previous report.json to diff against (compare/report_diff.hpp)
   std::optional<MutationOptions> mutation;  // also run the mutants (report: into OUT/mutants/)
   std::vector<std::filesystem::path> expectation_files;  // --expectations: the user's known outcomes

@@ -66,6 +66,11 @@ struct Path {
 const ParamSpecs& endless_specs() {
   static const ParamSpecs specs = [] {
     ParamSpecs declared = cave_param_specs();
+    // The endless cave is made of open chunks: its default is the one value it accepts, so that
+    // an ad-hoc run without --set runs.
+    for (auto& spec : declared) {
+      if (spec.name == "solid") spec.default_value = false;
+    }
     declared.push_back({"slabs", ParamKind::integer, 20, 1, 2000, {}, "count",
                         "slabs appended along the path, one per lattice unit of flight"});
     declared.push_back({"direction", ParamKind::choice, "+x", 0, 0, {"+x", "-x", "+y", "-y", "+z", "-z"}, "",

@@ -94,9 +94,9 @@ void add_ad_hoc_options(CLI::App& command, gt::AdHocCase& ad_hoc, std::string& g
                    "take a colour image's red channel as height (seed 000 §4.2); without it a colour image is refused "
                    "as not a heightmap");
   command.add_option("--size", grid_size, "a generator (noise) without --input: the grid, WxH (256x256)");
-  command.add_option("--cell-size", ad_hoc.cell_size, "a generator's cell size in metres")
-      ->check(finite_number & CLI::PositiveNumber)
-      ->capture_default_str();
+  command.add_option("--cell-size", ad_hoc.cell_size,
+                     "cell size in metres: a generator's grid (default 1), or in place of the --input file's own")
+      ->check(finite_number & CLI::PositiveNumber);
   command.add_option("--backend", shared.backend, "cpu (references only), gpu, or both")
       ->check(CLI::IsMember({"cpu", "gpu", "both"}))
       ->capture_default_str();
@@ -190,12 +190,7 @@ void parse_grid_size(const std::string& text, gt::AdHocCase& ad_hoc) {
 
 nlohmann::json list_json() {
   nlohmann::json out = {{"algorithms", nlohmann::json::array()}, {"cases", nlohmann::json::array()}};
-  for (const auto& algorithm : gt::algorithms()) {
-    nlohmann::json params = nlohmann::json::array();
-    for (const auto& spec : *algorithm.params) params.push_back(gt::to_json(spec));
-    out["algorithms"].push_back(
-        {{"name", algorithm.name}, {"summary", algorithm.summary}, {"source", algorithm.source}, {"params", params}});
-  }
+  for (const auto& algorithm : gt::algorithms()) out["algorithms"].push_back(gt::algorithm_json(algorithm));
   for (const auto& spec : gt::load_cases(std::filesystem::path(GT_DATASET_DIR) / "cases")) {
     out["cases"].push_back({{"name", spec.name}, {"algorithm", spec.algorithm}, {"params", spec.params},
                             {"input", spec.input}, {"file", spec.origin}});

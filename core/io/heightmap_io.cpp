@@ -414,6 +414,8 @@ void apply_cell_size_override(HeightmapFile& file, double cell_size) {
   if (!(cell_size > 0.0)) return;
   file.heights.cell_size_x = file.heights.cell_size_y = cell_size;
   file.heights.horizontal_unit = "m";
+  // The caller's size replaces what a reader assumed for want of one in the file.
+  std::erase_if(file.notes, [](const std::string& note) { return note.find("1 m assumed") != std::string::npos; });
   file.notes.push_back(fmt::format("cell size set to {} m by the caller", cell_size));
 }
 
