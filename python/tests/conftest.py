@@ -1,0 +1,46 @@
+"""Shared helpers of the Python suite: small terrains made in numpy, the command line beside the
+module (for the tests that hold Python's messages against the CLI's), and the float32 rounding
+bound of the fields the module hands back."""
+
+import pathlib
+import subprocess
+
+import numpy
+import pytest
+
+import groundtruth
+
+# The module lives in <build>/python/groundtruth/; the command line in <build>/groundtruth.
+CLI = pathlib.Path(groundtruth._core.__file__).resolve().parents[2] / "groundtruth"
+
+# Fields come back as float32 (.npy files of compare/field_files.hpp): each value is the double
+# rounded to nearest, off by at most half an ulp, 2^-24 of its magnitude.
+FLOAT32_UNIT_ROUNDOFF = 2.0**-24
+
+
+def cone(side=32, peak=40.0, cell_size=1.0):
+    """A right circular cone on a plane, radius 0.4 of the side, as the case generator makes it."""
+    centre = 0.5 * side * cell_size
+    coordinates = (numpy.arange(side) + 0.5) * cell_size
+    x, y = numpy.meshgrid(coordinates, coordinates)
+    distance = numpy.hypot(x - centre, y - centre)
+    return numpy.maximum(0.0, peak * (1.0 - distance / (0.4 * side * cell_size)))
+
+
+def float32_sum_bound(*fields):
+    """The most that the sums of these float32 fields can be off from the sums of the doubles they
+    were rounded from: half an ulp of each value."""
+    return sum(FLOAT32_UNIT_ROUNDOFF * float(numpy.nansum(numpy.abs(field.astype(numpy.float64)))) for field in fields)
+
+
+def cli_message(arguments):
+    """The command line's refusal: its exit status and the message after 'groundtruth: '."""
+    finished = subprocess.run([str(CLI), *arguments], capture_output=True, text=True, timeout=300)
+    lines = [line for line in finished.stderr.splitlines() if line.startswith("groundtruth: ")]
+    return finished.returncode, lines[-1][len("groundtruth: "):] if lines else finished.stderr
+
+
+@pytest.fixture
+def out(tmp_path):
+    """A report folder the test keeps (the module writes nothing else)."""
+    return tmp_path / "report"

@@ -1,0 +1,33 @@
+"""The cave meshers from Python: seed 004's marching tetrahedra (closed, oriented, manifold on a
+solid block, on both twins), the dropped marching cubes (holes: the seed's reason to drop it) and
+the endless cave, with their mesh checks."""
+
+import groundtruth
+
+SMALL_BLOCK = {"size_x": 10, "size_y": 8, "size_z": 6}
+
+
+def test_marching_tetrahedra_closes_a_solid_block_on_both_twins():
+    result = groundtruth.run("cave.marching_tetrahedra", **SMALL_BLOCK)
+    assert result.status not in ("fail", "error"), result.failed() or result.error
+    for backend in ("cpu", "gpu"):
+        for property_ in ("closed", "manifold", "oriented"):
+            assert result.check(f"mesh.{property_}.{backend}")["status"] == "pass"
+    assert result.check("parity.topology.gpu_vs_float")["status"] == "pass"
+    assert result.params["size_x"] == 10
+
+
+def test_marching_cubes_leaves_holes_that_the_checks_see():
+    # Midpoint marching cubes without disambiguation: the seed dropped it for its cracks.
+    result = groundtruth.run("cave.marching_cubes", backend="cpu", **SMALL_BLOCK)
+    assert result.check("mesh.closed.cpu")["status"] == "fail"
+    assert result.check("mesh.holes.cpu")["value"] > 0
+
+
+def test_the_endless_cave_runs_by_default_and_its_seams_hold():
+    result = groundtruth.run("cave.endless", size_x=8, size_y=8, size_z=8, slabs=4)
+    assert result.status not in ("fail", "error"), result.failed() or result.error
+    assert result.params["solid"] is False
+    for backend in ("cpu", "gpu"):
+        seams = result.check(f"seams.unmatched_border_edges.{backend}")
+        assert seams["status"] == "pass" and seams["value"] == 0

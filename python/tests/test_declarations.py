@@ -1,0 +1,43 @@
+"""The declarations Python sees are the command line's: every algorithm, every parameter with its
+kind, default, range or choices and unit."""
+
+import json
+import subprocess
+
+import pytest
+
+import groundtruth
+from conftest import CLI, cli_message
+
+
+def cli_listing():
+    finished = subprocess.run([str(CLI), "list", "--json"], capture_output=True, text=True, check=True, timeout=120)
+    return json.loads(finished.stdout)["algorithms"]
+
+
+def test_every_algorithm_of_the_command_line_is_declared_alike():
+    assert groundtruth.algorithms() == cli_listing()
+
+
+@pytest.mark.parametrize("algorithm", [a["name"] for a in groundtruth.algorithms()])
+def test_every_default_lies_in_its_declared_range(algorithm):
+    for name, spec in groundtruth.parameters(algorithm).items():
+        assert spec["name"] == name
+        assert spec["unit"] is not None
+        if spec["kind"] in ("real", "integer"):
+            assert spec["min"] <= spec["default"] <= spec["max"], spec
+        elif spec["kind"] == "choice":
+            assert spec["default"] in spec["choices"], spec
+        else:
+            assert spec["kind"] == "boolean" and isinstance(spec["default"], bool), spec
+
+
+def test_an_unknown_algorithm_is_refused_with_the_command_lines_message(tmp_path):
+    status, cli = cli_message(["run", "--algorithm", "erosion.nope", "--size", "8x8", "--out", str(tmp_path / "o")])
+    assert status == 2
+    with pytest.raises(groundtruth.InputError) as refused:
+        groundtruth.parameters("erosion.nope")
+    assert str(refused.value) == cli
+    with pytest.raises(groundtruth.InputError) as refused:
+        groundtruth.run("erosion.nope", size=(8, 8))
+    assert str(refused.value) == cli

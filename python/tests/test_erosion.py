@@ -1,0 +1,138 @@
+"""The erosion twins from Python: each algorithm on a small terrain, the fields handed back
+checked against properties the model guarantees, computed here from the arrays (not read from the
+driver's checks), beside the driver's own verdict."""
+
+import json
+
+import numpy
+import pytest
+
+import groundtruth
+from conftest import float32_sum_bound, cone
+
+EROSION = ["erosion.thermal", "erosion.thermal_jako", "erosion.pipe", "erosion.particle", "erosion.beyer"]
+
+# Few iterations keep each run under a few seconds on llvmpipe; the properties hold for any count.
+SHORT_RUN = {"erosion.thermal": {"iterations": 12}, "erosion.thermal_jako": {"iterations": 12},
+             "erosion.pipe": {"steps": 12, "rain_rate": 0.001}, "erosion.particle": {}, "erosion.beyer": {}}
+
+
+def test_the_erosion_algorithms_are_all_here():
+    assert sorted(a["name"] for a in groundtruth.algorithms() if a["name"].startswith("erosion.")) == sorted(EROSION)
+
+
+@pytest.fixture(scope="module")
+def results():
+    """Each erosion algorithm once on a 32x24 cone with 2 m cells, both twins."""
+    heights = cone(32, peak=30.0, cell_size=2.0)[:24]
+    return heights, {name: groundtruth.run(name, heights, cell_size=2.0, **SHORT_RUN[name]) for name in EROSION}
+
+
+@pytest.mark.parametrize("algorithm", EROSION)
+def test_each_twin_runs_and_no_check_fails(results, algorithm):
+    _, result = results
+    result = result[algorithm]
+    assert result.algorithm == algorithm
+    assert result.status not in ("fail", "error"), result.failed() or result.error
+    assert any(check["name"].startswith("parity.") for check in result.checks)
+    assert result.grid["cell_size_x"] == 2.0
+
+
+@pytest.mark.parametrize("algorithm", EROSION)
+def test_the_terrain_comes_back_as_given_and_on_its_grid(results, algorithm):
+    heights, result = results
+    terrain = result[algorithm].fields["terrain"]
+    assert {"cpu", "gpu"} <= set(terrain)
+    # The input field is the array given, rounded to float32, rows as rows: no transposition.
+    numpy.testing.assert_array_equal(terrain["input"], heights.astype(numpy.float32))
+    for backend in ("cpu", "gpu"):
+        assert terrain[backend].shape == heights.shape and terrain[backend].dtype == numpy.float32
+        assert numpy.isfinite(terrain[backend]).all()
+
+
+@pytest.mark.parametrize("algorithm", ["erosion.thermal", "erosion.thermal_jako"])
+def test_thermal_erosion_keeps_the_material_and_lowers_the_peak(results, algorithm):
+    heights, result = results
+    terrain = result[algorithm].fields["terrain"]
+    for backend in ("cpu", "gpu"):
+        after = terrain[backend]
+        # Moving material conserves it: the sums differ by the float32 rounding of both fields
+        # plus the twin's own rounding (GPU: float additions, at most 8 per cell per iteration,
+        # each within 2^-24 of the running height; 12 iterations).
+        twin_rounding = 12 * 8 * 2.0**-24 * float(numpy.abs(heights).sum()) if backend == "gpu" else 0.0
+        assert abs(float(after.astype(numpy.float64).sum()) - float(heights.sum())) <= \
+            float32_sum_bound(terrain["input"], after) + twin_rounding + 1e-12 * float(numpy.abs(heights).sum())
+        # Material only moves downhill: no cell rises above the highest input cell.
+        assert after.max() <= numpy.float32(heights.max())
+        assert after.max() < heights.max(), "the cone's apex is steeper than any talus angle here"
+
+
+def test_the_pipe_model_gives_every_state_field_and_the_water_the_rain_brought(results):
+    heights, result = results
+    result = result["erosion.pipe"]
+    fields = result.fields
+    assert {"terrain", "water", "sediment", "velocity_x", "velocity_y"} <= set(fields), list(fields)
+    for backend in ("cpu", "gpu"):
+        assert (fields["water"][backend] >= 0.0).all()
+    # Closed borders, no evaporation: the water after is the water before plus the rain,
+    # rate x time step x steps on every cell (depths in m; the cells' area is common to all).
+    params = result.params
+    rain_depth = params["rain_rate"] * params["time_step"] * params["steps"]
+    before, after = fields["water"]["input"], fields["water"]["cpu"]
+    expected = float(before.astype(numpy.float64).sum()) + rain_depth * heights.size
+    assert abs(float(after.astype(numpy.float64).sum()) - expected) <= \
+        float32_sum_bound(before, after) + 1e-12 * expected
+    assert result.check("mass.water_balance.cpu")["status"] == "pass"
+    assert "mass.water_balance.cpu" in result.ledger
+
+
+def test_the_flow_map_is_a_share_of_droplets(results):
+    _, result = results
+    flow = result["erosion.particle"].fields["flow"]
+    for backend in ("cpu", "gpu"):
+        assert (flow[backend] >= 0.0).all() and (flow[backend] <= 1.0).all()
+        assert flow[backend].max() > 0.0
+
+
+def test_a_mutant_is_caught_and_lasts_one_call_only():
+    heights = cone(16, peak=10.0)
+    mutated = groundtruth.run("erosion.pipe", heights, backend="cpu", steps=8, rain_rate=0.001,
+                              mutant="erosion.pipe.half_rain")
+    assert mutated.check("mass.water_added.cpu")["status"] == "fail"
+    clean = groundtruth.run("erosion.pipe", heights, backend="cpu", steps=8, rain_rate=0.001)
+    assert clean.check("mass.water_added.cpu")["status"] == "pass"
+
+
+def test_a_real_dem_by_path_keeps_its_cell_size_and_says_so(tmp_path):
+    result = groundtruth.run("erosion.thermal", groundtruth.DATASETS / "real/volcano.json", backend="cpu",
+                             iterations=4, out=tmp_path / "report")
+    assert result.grid["cell_size_x"] == 10.0
+    assert "volcano.json" in result.input
+    assert any("10 m cells" in note for note in result.notes)
+    # The report stays where it was asked for, with the fields as files.
+    assert (result.report / "index.html").exists()
+    sidecar = json.loads((result.report / result.case / "fields.json").read_text())
+    assert {(entry["field"], entry["backend"]) for entry in sidecar["files"]} == {("terrain", "input"), ("terrain", "cpu")}
+    for entry in sidecar["files"]:
+        for extension in ("npy", "exr"):
+            assert (result.report / result.case / f"{entry['stem']}.{extension}").exists()
+
+
+def test_nan_cells_are_masked_and_said(tmp_path):
+    heights = cone(16, peak=10.0)
+    heights[3, 4] = numpy.nan
+    result = groundtruth.run("erosion.thermal", heights, backend="cpu", iterations=4)
+    assert any("1 NaN cells" in note for note in result.notes)
+    assert any("1 m assumed" in note for note in result.notes)
+    assert numpy.isnan(result.fields["terrain"]["cpu"][3, 4])
+    assert numpy.isfinite(numpy.delete(result.fields["terrain"]["cpu"].ravel(), 3 * 16 + 4)).all()
+
+
+def test_a_cell_size_given_replaces_the_files_and_the_assumed_one():
+    dem = groundtruth.run("erosion.thermal", groundtruth.DATASETS / "real/volcano.json", cell_size=5.0,
+                          backend="cpu", iterations=1)
+    assert dem.grid["cell_size_x"] == 5.0
+    assert "cell size set to 5 m by the caller" in dem.notes
+    array = groundtruth.run("erosion.thermal", cone(8), cell_size=2.5, backend="cpu", iterations=1)
+    assert array.grid["cell_size_x"] == 2.5
+    assert not any("assumed" in note for note in array.notes), array.notes

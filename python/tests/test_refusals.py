@@ -1,0 +1,84 @@
+"""Bad input from Python: a groundtruth.InputError (a ValueError) carrying the command line's
+message, never a crash, and nothing written. Where the command line has the same input (an array
+saved as a .npy file, a --set), the two messages are compared word for word."""
+
+import numpy
+import pytest
+
+import groundtruth
+from conftest import cli_message, cone
+
+
+def refusal(tmp_path, *args, **kwargs):
+    """The InputError message of a Python run, checking it left no report behind."""
+    out = tmp_path / "python_report"
+    with pytest.raises(groundtruth.InputError) as refused:
+        groundtruth.run(*args, out=out, **kwargs)
+    assert isinstance(refused.value, ValueError)
+    assert not out.exists()
+    return str(refused.value)
+
+
+def cli_refusal_of_array(tmp_path, array, *arguments):
+    """The command line's message for the same array saved as heights.npy, its path read as
+    'heights' (the name Python gives the array)."""
+    path = tmp_path / "heights.npy"
+    numpy.save(path, array)
+    status, message = cli_message(["run", "--algorithm", "erosion.thermal", "--input", str(path), *arguments,
+                                   "--out", str(tmp_path / "cli_report")])
+    assert status == 2
+    assert not (tmp_path / "cli_report").exists()
+    return message.replace(str(path), "heights")
+
+
+@pytest.mark.parametrize("dtype", ["int64", "uint8", "float16", "complex128", "bool", ">f8"])
+def test_an_array_of_a_dtype_the_reader_does_not_take_is_refused_as_on_the_command_line(tmp_path, dtype):
+    array = numpy.ones((8, 8), dtype=dtype)
+    message = refusal(tmp_path, "erosion.thermal", array)
+    assert "unsupported .npy dtype" in message
+    assert message == cli_refusal_of_array(tmp_path, array)
+
+
+def test_an_object_array_is_refused_without_pickling():
+    with pytest.raises(groundtruth.InputError, match=r"heights: unsupported \.npy dtype '\|O'"):
+        groundtruth.run("erosion.thermal", numpy.array([[1.0, "a"], [2.0, 3.0]], dtype=object))
+
+
+@pytest.mark.parametrize("shape", [(16,), (4, 4, 4), (0, 5)])
+def test_an_array_that_is_not_a_non_empty_grid_is_refused_as_on_the_command_line(tmp_path, shape):
+    array = numpy.ones(shape)
+    message = refusal(tmp_path, "erosion.thermal", array)
+    assert "2-D array" in message
+    assert message == cli_refusal_of_array(tmp_path, array)
+
+
+def test_an_array_of_no_data_only_is_refused(tmp_path):
+    array = numpy.full((6, 6), numpy.nan)
+    message = refusal(tmp_path, "erosion.thermal", array)
+    assert "every cell is no-data" in message
+    assert message == cli_refusal_of_array(tmp_path, array)
+
+
+@pytest.mark.parametrize("name, value", [("talsu_angle", 30.0), ("talus_angle", 95.0), ("iterations", 2.5),
+                                         ("neighbourhood", "hex"), ("iterations", float("nan"))])
+def test_parameters_are_refused_by_the_declarations_as_on_the_command_line(tmp_path, name, value):
+    array = cone(8)
+    message = refusal(tmp_path, "erosion.thermal", array, **{name: value})
+    text = groundtruth._parameter_text(name, value)
+    assert message == cli_refusal_of_array(tmp_path, array, "--set", f"{name}={text}")
+
+
+@pytest.mark.parametrize("arguments", [dict(backend="tpu"), dict(cell_size=-1.0), dict(cell_size=float("inf")),
+                                       dict(size=(0, 8)), dict(gl="vulkan"), dict(mutant="erosion.thermal.nope"),
+                                       dict(talus_angle=[30, 40]), dict(require_gpu=True, backend="cpu")])
+def test_bad_options_are_refused(tmp_path, arguments):
+    assert refusal(tmp_path, "erosion.thermal", cone(8), **arguments)
+
+
+def test_a_heightmap_given_to_an_algorithm_that_makes_its_own_field_is_refused(tmp_path):
+    assert "makes its own field" in refusal(tmp_path, "cave.endless", cone(8))
+
+
+def test_a_missing_file_is_refused_naming_it(tmp_path):
+    missing = tmp_path / "no_such_dem.tif"
+    assert str(missing) in refusal(tmp_path, "erosion.thermal", missing)

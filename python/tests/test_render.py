@@ -1,0 +1,47 @@
+"""The renderers and the mesh checks from Python: a mesh file or an array in, the reference
+rasterizer and the GL pipeline compared by the driver's image checks."""
+
+import numpy
+
+import groundtruth
+from conftest import cone
+
+BUNNY = groundtruth.DATASETS / "real/meshes/bunny00.off"
+ELEPHANT_WITH_HOLES = groundtruth.DATASETS / "real/meshes/elephant-with-holes.off"
+
+
+def assert_twins_agree(result):
+    assert result.status not in ("fail", "error"), result.failed() or result.error
+    assert any(check["name"].endswith("gpu_vs_cpu") for check in result.checks)
+
+
+def test_a_heightmap_of_a_mesh_seen_from_above():
+    assert_twins_agree(groundtruth.run("render.heightmap_from_mesh", BUNNY, width=48, height=40))
+
+
+def test_a_phong_shaded_mesh():
+    assert_twins_agree(groundtruth.run("render.phong", BUNNY, width=48, height=40))
+
+
+def test_a_terrain_given_as_an_array_is_drawn_as_a_solid():
+    result = groundtruth.run("render.terrain", cone(24, peak=6.0), width=64, height=48)
+    assert_twins_agree(result)
+    assert result.check("mesh.closed.cpu")["status"] == "pass"
+
+
+def test_the_mesh_checks_find_the_holes_of_a_mesh_with_holes():
+    closed = groundtruth.run("mesh.check", BUNNY)
+    holed = groundtruth.run("mesh.check", ELEPHANT_WITH_HOLES)
+    assert closed.check("mesh.closed.input")["status"] == "pass"
+    assert holed.check("mesh.closed.input")["status"] == "fail"
+
+
+def test_a_heightmap_is_not_a_mesh(tmp_path):
+    path = tmp_path / "heights.npy"
+    numpy.save(path, cone(8))
+    try:
+        groundtruth.run("mesh.check", path)
+    except groundtruth.InputError as refused:
+        assert str(path) in str(refused)
+    else:
+        raise AssertionError("a .npy heightmap was taken as a mesh")
