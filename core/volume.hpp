@@ -32,6 +32,19 @@ struct Volume {
   }
   T& at(int x, int y, int z) { return values[index(x, y, z)]; }
   const T& at(int x, int y, int z) const { return values[index(x, y, z)]; }
+
+  // Same lattice; values converted to U (rounded to nearest when U is narrower).
+  template <class U>
+  Volume<U> cast() const {
+    Volume<U> out;
+    out.nx = nx;
+    out.ny = ny;
+    out.nz = nz;
+    out.origin = origin;
+    out.spacing = spacing;
+    out.values.assign(values.begin(), values.end());
+    return out;
+  }
 };
 
 }  // namespace gt

@@ -1,6 +1,6 @@
 // Tests of read_volume (core/io/volume_io.hpp) on .npy files written byte by byte here: round trips
 // of each dtype with x fastest (shape (nz, ny, nx)), and every refusal, each message naming the
-// file and the reason.
+// file and the reason; and of write_volume, read back by read_volume.
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -91,6 +91,34 @@ void expect_refusal(const fs::path& file, const std::string& reason) {
 }
 
 std::string eight_floats() { return npy_data(std::vector<float>(8, 1.0f)); }
+
+// write_volume stores float32: the coded values are exact in float, so they come back exactly, on
+// the lattice they were written from; a value beyond float's precision comes back rounded to it.
+TEST(WriteVolume, ReadVolumeReadsItBack) {
+  const TemporaryFolder folder;
+  Volume<double> volume(5, 3, 2);
+  volume.values = coded_values<double>(5, 3, 2);
+  const fs::path file = folder.path() / "density.npy";
+  write_volume(volume, file);
+  expect_coded_volume(read_volume(file), 5, 3, 2, 0.25);
+  volume.values[0] = 0.1;
+  write_volume(volume, file);
+  EXPECT_EQ(read_volume(file).values[0], static_cast<double>(0.1f));
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder.path()), fs::directory_iterator()), 1)
+      << "only the file itself: no temporary left behind";
+}
+
+TEST(WriteVolume, RefusesAVolumeShortOfItsSamplesAndAMissingFolder) {
+  const TemporaryFolder folder;
+  Volume<double> short_volume(4, 4, 4);
+  short_volume.values.pop_back();
+  EXPECT_NE(refusal([&] { write_volume(short_volume, folder.path() / "short.npy"); }).find("holds 63 values"),
+            std::string::npos);
+  const Volume<double> volume(2, 2, 2);
+  const fs::path missing = folder.path() / "no_such_folder" / "v.npy";
+  EXPECT_NE(refusal([&] { write_volume(volume, missing); }).find(missing.string()), std::string::npos);
+  EXPECT_TRUE(fs::is_empty(folder.path()));
+}
 
 TEST(ReadVolumeRefuses, MissingFileAndAFolder) {
   const TemporaryFolder folder;

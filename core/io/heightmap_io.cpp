@@ -16,7 +16,6 @@
 #include "core/io/heightmap_io.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdarg>
@@ -30,14 +29,15 @@
 #include <string>
 #include <type_traits>
 #include <vector>
-#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <tiffio.h>
 
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/dem_formats.hpp"
+#include "core/io/npy.hpp"
 
 namespace gt {
 namespace {
@@ -451,31 +451,10 @@ void write_single_channel(const path& temporary, const path& target, OIIO::TypeD
   }
 }
 
-// NumPy's .npy format 1.0: the magic, the version, a little-endian uint16 header length and a
-// Python dict literal padded with spaces and a newline so the data starts at a multiple of 64
-// bytes; then float32 '<f4' values in C order, shape (height, width), no-data as NaN.
-void write_npy(const Heightmap& heights, const path& temporary, const path& target) {
-  static_assert(std::endian::native == std::endian::little, "write_npy stores the host's floats as '<f4'");
-  std::string header = fmt::format("{{'descr': '<f4', 'fortran_order': False, 'shape': ({}, {}), }}", heights.height,
-                                   heights.width);
-  const std::size_t preamble = 10;  // magic (6), version (2), header length (2)
-  header.append(63 - (preamble + header.size()) % 64, ' ');
-  header.push_back('\n');
-  const std::vector<float> values = float32_pixels(heights);
-  std::ofstream out(temporary, std::ios::binary);
-  const auto length = static_cast<std::uint16_t>(header.size());
-  const char lead[preamble] = {'\x93', 'N', 'U', 'M', 'P', 'Y', '\x01', '\x00', static_cast<char>(length & 0xff),
-                               static_cast<char>(length >> 8)};
-  out.write(lead, preamble);
-  out.write(header.data(), static_cast<std::streamsize>(header.size()));
-  out.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(float)));
-  out.close();
-  if (!out) throw InputError(fmt::format("cannot write {}", target.string()));
-}
 
 void write_pixels(const Heightmap& heights, const path& temporary, const path& target, const std::string& extension) {
   if (extension == ".npy") {
-    write_npy(heights, temporary, target);
+    detail::write_npy_float32({heights.height, heights.width}, float32_pixels(heights), temporary, target);
   } else if (extension == ".png") {
     const std::vector<std::uint16_t> levels = png16_levels(heights);
     write_single_channel(temporary, target, OIIO::TypeDesc::UINT16, heights.width, heights.height, levels.data());
@@ -521,22 +500,8 @@ void write_heightmap(const Heightmap& heights, const path& file) {
         extension));
   }
   check_writable_shape(heights, file);
-  const path temporary =
-      file.parent_path() / fmt::format(".{}.{}.partial{}", file.filename().string(), getpid(), extension);
-  try {
-    write_pixels(heights, temporary, file, extension);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw;
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, file, error);
-  if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw InputError(fmt::format("cannot write {}: {}", file.string(), error.message()));
-  }
+  detail::write_file_atomically(
+      file, [&](const path& temporary) { write_pixels(heights, temporary, file, extension); });
 }
 
 }  // namespace gt

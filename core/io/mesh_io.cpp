@@ -18,7 +18,6 @@
 #include <stdexcept>
 #include <string_view>
 
-#include <unistd.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/exceptions.h>
@@ -31,6 +30,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace gt {
 
@@ -635,16 +635,11 @@ MeshFile read_mesh(const path& file) {
 void write_mesh(const Mesh& mesh, const path& file) {
   const WritableFormat& format = writable_format_of(file);
   const std::vector<std::array<int, 3>> triangles = writable_triangles(mesh, file);
-  const path temporary = file.parent_path() / fmt::format(".{}.{}.partial", file.filename().string(), getpid());
-  const bool written = format.write(temporary.string(), points_of(mesh), triangles);
-  std::error_code error;
-  if (written) std::filesystem::rename(temporary, file, error);
-  if (!written || error) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw InputError(fmt::format("cannot write {}: {}", file.string(),
-                                 written ? error.message() : "the folder is missing or not writable"));
-  }
+  detail::write_file_atomically(file, [&](const path& temporary) {
+    if (!format.write(temporary.string(), points_of(mesh), triangles)) {
+      throw InputError(fmt::format("cannot write {}: the folder is missing or not writable", file.string()));
+    }
+  });
 }
 
 }  // namespace gt

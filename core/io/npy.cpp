@@ -16,6 +16,7 @@
 #include <type_traits>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/errors.hpp"
 
@@ -162,6 +163,25 @@ NpyArray read_npy_file(const std::filesystem::path& file, const ShapeCheck& elem
     return static_cast<std::size_t>(in.gcount());
   };
   return read_npy(source, stored_bytes, element_count, where);
+}
+
+void write_npy_float32(const std::vector<long long>& shape, const std::vector<float>& values,
+                       const std::filesystem::path& destination, const std::filesystem::path& target) {
+  // A 1-tuple needs its comma: (5,).
+  const std::string dimensions = shape.size() == 1 ? fmt::format("{},", shape[0]) : fmt::format("{}", fmt::join(shape, ", "));
+  std::string header = fmt::format("{{'descr': '<f4', 'fortran_order': False, 'shape': ({}), }}", dimensions);
+  const std::size_t preamble = 10;  // magic (6), version (2), header length (2)
+  header.append(63 - (preamble + header.size()) % 64, ' ');
+  header.push_back('\n');
+  std::ofstream out(destination, std::ios::binary);
+  const auto length = static_cast<std::uint16_t>(header.size());
+  const char lead[preamble] = {'\x93', 'N', 'U', 'M', 'P', 'Y', '\x01', '\x00', static_cast<char>(length & 0xff),
+                               static_cast<char>(length >> 8)};
+  out.write(lead, preamble);
+  out.write(header.data(), static_cast<std::streamsize>(header.size()));
+  out.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(float)));
+  out.close();
+  if (!out) throw InputError(fmt::format("cannot write {}", target.string()));
 }
 
 }  // namespace gt::detail

@@ -1,4 +1,4 @@
-// Internal to core/io: one reader of NumPy's .npy array format, shared by the arrays inside .npz
+// Internal to core/io: one reader and one writer of NumPy's .npy array format, shared by the arrays inside .npz
 // archives (dem_formats.cpp, a libzip member) and plain .npy files (volume_io.cpp's volumes,
 // dem_formats.cpp's heightmaps).
 //
@@ -42,5 +42,12 @@ NpyArray read_npy(const ByteSource& source, std::uintmax_t stored_bytes, const S
 // Reads a plain .npy file; `what` names the array in the messages of a file that cannot be sized
 // or opened ("{file}: cannot read {what}: ...", "{file}: cannot open {what}").
 NpyArray read_npy_file(const std::filesystem::path& file, const ShapeCheck& element_count, const std::string& what);
+
+// Writes `values` (float32 '<f4', C order, the last axis fastest) of `shape` as a .npy file of
+// format 1.0 at `destination`: the magic, the version, a little-endian uint16 header length and a
+// Python dict literal padded with spaces and a newline so that the data starts at a multiple of
+// 64 bytes. `target` names the file in the message of a failed write (InputError).
+void write_npy_float32(const std::vector<long long>& shape, const std::vector<float>& values,
+                       const std::filesystem::path& destination, const std::filesystem::path& target);
 
 }  // namespace gt::detail

@@ -17,6 +17,7 @@
 #include <fmt/ranges.h>
 
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/npy.hpp"
 
 namespace gt {
@@ -77,6 +78,19 @@ Volume<double> read_volume(const path& file) {
   volume.values = std::move(array.values);
   check_finite(volume, where);
   return volume;
+}
+
+void write_volume(const Volume<double>& volume, const std::filesystem::path& path) {
+  const std::size_t samples = static_cast<std::size_t>(std::max(volume.nx, 0)) * static_cast<std::size_t>(std::max(volume.ny, 0)) *
+                              static_cast<std::size_t>(std::max(volume.nz, 0));
+  if (samples == 0 || volume.values.size() != samples) {
+    throw InputError(fmt::format("cannot write {}: volume {}x{}x{} holds {} values", path.string(), volume.nx,
+                                 volume.ny, volume.nz, volume.values.size()));
+  }
+  const std::vector<float> values(volume.values.begin(), volume.values.end());
+  detail::write_file_atomically(path, [&](const std::filesystem::path& temporary) {
+    detail::write_npy_float32({volume.nz, volume.ny, volume.nx}, values, temporary, path);
+  });
 }
 
 }  // namespace gt

@@ -1,7 +1,9 @@
 // Reading a scalar volume from a file: what the cave mesher meshes when the field is not the
-// seed's noise (issue 5, "any scalar volume read from a file").
+// seed's noise (issue 5, "any scalar volume read from a file"); and writing one, as read_volume
+// reads it back (the cave's density as a field, issue 19).
 //
 //   Volume<double> read_volume(const std::filesystem::path& path)
+//   void write_volume(const Volume<double>& volume, const std::filesystem::path& path)
 //
 // Inputs
 //   path  a NumPy .npy file (format version 1, 2 or 3) holding one 3-D array of dtype '<f4',
@@ -19,6 +21,10 @@
 //   large for memory); a file whose size is not the header's promise (truncated, or trailing
 //   bytes); a NaN or infinite sample (the message gives the first one's (x, y, z)). Sizes are
 //   checked against the shape and the file's size before anything is allocated.
+//
+// write_volume writes a .npy file of float32 '<f4' with shape (nz, ny, nx) (the placement is not
+// stored), under a temporary name renamed into place; InputError when the file cannot be written
+// or the volume holds fewer values than nx·ny·nz.
 #pragma once
 
 #include <filesystem>
@@ -28,5 +34,7 @@
 namespace gt {
 
 Volume<double> read_volume(const std::filesystem::path& path);
+
+void write_volume(const Volume<double>& volume, const std::filesystem::path& path);
 
 }  // namespace gt
