@@ -8,49 +8,39 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/heightmap_io.hpp"
+#include "core/io/volume_io.hpp"
 
 namespace gt {
 namespace {
 
-nlohmann::json provenance(const Grid<double>& values, const CaseResult& result) {
-  return {{"case", result.name},
-          {"algorithm", result.algorithm},
-          {"params", result.params},
-          {"input", result.input},
-          {"grid", {{"width", values.width}, {"height", values.height}, {"cell_size_x", values.cell_size_x},
-                    {"cell_size_y", values.cell_size_y}, {"horizontal_unit", values.horizontal_unit}}},
-          {"files", nlohmann::json::array()}};
+nlohmann::json grid_of(const Grid<double>& values) {
+  return {{"width", values.width}, {"height", values.height}, {"cell_size_x", values.cell_size_x},
+          {"cell_size_y", values.cell_size_y}, {"horizontal_unit", values.horizontal_unit}};
 }
 
-// The sidecar as the case's earlier calls left it, or a new one.
-nlohmann::json read_sidecar(const std::filesystem::path& sidecar, const Grid<double>& values, const CaseResult& result) {
-  if (!std::filesystem::exists(sidecar)) return provenance(values, result);
-  std::ifstream in(sidecar);
-  return nlohmann::json::parse(in);
+nlohmann::json grid_of(const Volume<double>& volume) {
+  return {{"nx", volume.nx}, {"ny", volume.ny}, {"nz", volume.nz}, {"spacing", volume.spacing},
+          {"origin", volume.origin}};
 }
 
-}  // namespace
-
-void write_field_files(const Grid<double>& values, const FieldFile& file, const RunOptions& options,
-                       CaseResult& result) {
-  if (options.report_dir.empty()) return;
-  const auto folder = options.report_dir / result.name;
-  std::filesystem::create_directories(folder);
-  write_heightmap(values, folder / (file.stem + ".exr"));
-  write_heightmap(values, folder / (file.stem + ".npy"));
-  const std::string what = fmt::format("{} ({}, {})", file.meaning, file.field, file.unit);
-  result.artifacts.push_back({result.name + "/" + file.stem + ".exr", "field", what + ", float32 EXR"});
-  result.artifacts.push_back(
-      {result.name + "/" + file.stem + ".npy", "field", what + ", float32 NumPy array (height, width), NaN no-data"});
+// Adds the file's entry to the case's fields.json, made with the case's provenance and `grid` (the
+// first field's) on the case's first call.
+void describe_field_file(const std::filesystem::path& folder, const nlohmann::json& grid, const FieldFile& file,
+                         const nlohmann::json& formats, CaseResult& result) {
   const auto sidecar = folder / "fields.json";
   const bool first = !std::filesystem::exists(sidecar);
-  nlohmann::json described = read_sidecar(sidecar, values, result);
-  described["files"].push_back({{"stem", file.stem},
-                                {"formats", {"exr", "npy"}},
-                                {"field", file.field},
-                                {"backend", file.backend},
-                                {"unit", file.unit},
-                                {"meaning", file.meaning}});
+  nlohmann::json described;
+  if (first) {
+    described = {{"case", result.name}, {"algorithm", result.algorithm}, {"params", result.params},
+                 {"input", result.input}, {"grid", grid},                {"files", nlohmann::json::array()}};
+  } else {
+    std::ifstream in(sidecar);
+    described = nlohmann::json::parse(in);
+  }
+  nlohmann::json entry = {{"stem", file.stem},       {"formats", formats}, {"field", file.field},
+                          {"backend", file.backend}, {"unit", file.unit},  {"meaning", file.meaning}};
+  if (grid != described["grid"]) entry["grid"] = grid;  // a field on another grid than the first's
+  described["files"].push_back(entry);
   std::ofstream out(sidecar);
   out << described.dump(2) << '\n';
   if (!out) throw std::runtime_error(fmt::format("cannot write {}", sidecar.string()));
@@ -59,6 +49,38 @@ void write_field_files(const Grid<double>& values, const FieldFile& file, const 
                                 "what each field file holds: field, backend, unit, meaning; the case's parameters, "
                                 "input and grid"});
   }
+}
+
+std::filesystem::path case_folder(const RunOptions& options, const CaseResult& result) {
+  const auto folder = options.report_dir / result.name;
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+}  // namespace
+
+void write_field_files(const Grid<double>& values, const FieldFile& file, const RunOptions& options,
+                       CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const auto folder = case_folder(options, result);
+  write_heightmap(values, folder / (file.stem + ".exr"));
+  write_heightmap(values, folder / (file.stem + ".npy"));
+  const std::string what = fmt::format("{} ({}, {})", file.meaning, file.field, file.unit);
+  result.artifacts.push_back({result.name + "/" + file.stem + ".exr", "field", what + ", float32 EXR"});
+  result.artifacts.push_back(
+      {result.name + "/" + file.stem + ".npy", "field", what + ", float32 NumPy array (height, width), NaN no-data"});
+  describe_field_file(folder, grid_of(values), file, {"exr", "npy"}, result);
+}
+
+void write_volume_field_file(const Volume<double>& values, const FieldFile& file, const RunOptions& options,
+                             CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const auto folder = case_folder(options, result);
+  write_volume(values, folder / (file.stem + ".npy"));
+  result.artifacts.push_back({result.name + "/" + file.stem + ".npy", "field",
+                              fmt::format("{} ({}, {}), float32 NumPy array (nz, ny, nx)", file.meaning, file.field,
+                                          file.unit)});
+  describe_field_file(folder, grid_of(values), file, {"npy"}, result);
 }
 
 }  // namespace gt

@@ -6,6 +6,11 @@
 // unit and meaning. Each call adds its entry to fields.json (created on the first call), so the
 // parts of a driver that own different fields write them independently. Nothing is written when
 // options.report_dir is empty.
+//
+// A 3-D field (the cave's density) is written by write_volume_field_file as <stem>.npy alone
+// (float32, shape (nz, ny, nx), the array core/io/volume_io.hpp reads back: an ad-hoc cave run
+// takes it as --input), its grid {nx, ny, nz, spacing, origin}. A file on another grid than the
+// sidecar's first carries its own "grid".
 #pragma once
 
 #include <string>
@@ -13,6 +18,7 @@
 #include "compare/field_twin.hpp"
 #include "compare/result.hpp"
 #include "core/grid.hpp"
+#include "core/volume.hpp"
 
 namespace gt {
 
@@ -26,5 +32,8 @@ struct FieldFile {
 
 void write_field_files(const Grid<double>& values, const FieldFile& file, const RunOptions& options,
                        CaseResult& result);
+
+void write_volume_field_file(const Volume<double>& values, const FieldFile& file, const RunOptions& options,
+                             CaseResult& result);
 
 }  // namespace gt

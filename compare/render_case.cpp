@@ -14,6 +14,7 @@
 
 #include "compare/algorithms/render_phong.hpp"
 #include "compare/checks/image.hpp"
+#include "compare/field_files.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
@@ -85,9 +86,31 @@ void write_image(const OIIO::ImageBuf& image, const std::filesystem::path& file)
   if (!image.write(file.string())) throw InputError(fmt::format("cannot write {}: {}", file.string(), image.geterror()));
 }
 
+// Fields as data (compare/field_files.hpp): each colour channel of a rendered image, 8-bit levels
+// as OpenImageIO reads them (level / 255), row 0 at the top as in the picture.
+void write_image_fields(const OIIO::ImageBuf& image, const std::string& backend, const std::string& made_by,
+                        const RunOptions& options, CaseResult& result) {
+  const OIIO::ImageSpec& spec = image.spec();
+  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  image.get_pixels(image.roi(), OIIO::TypeDesc::FLOAT, pixels.data());
+  const char* channels[] = {"red", "green", "blue"};
+  for (int channel = 0; channel < 3 && channel < spec.nchannels; ++channel) {
+    Grid<double> values(spec.width, spec.height);
+    values.horizontal_unit = "pixel";
+    for (std::size_t i = 0; i < values.size(); ++i) values.values[i] = pixels[i * spec.nchannels + channel];
+    write_field_files(values,
+                      {fmt::format("{}_{}", channels[channel], backend), channels[channel], backend, "1",
+                       fmt::format("{} channel of the rendered image, {} (8-bit level / 255, row 0 at the top)",
+                                   channels[channel], made_by)},
+                      options, result);
+  }
+}
+
 void write_pictures(const OIIO::ImageBuf& cpu, const OIIO::ImageBuf* gpu_image,
                     const NeighbourhoodComparison* tolerant, const RunOptions& options, CaseResult& result) {
   if (options.report_dir.empty()) return;
+  write_image_fields(cpu, "cpu", "CPU reference (double)", options, result);
+  if (gpu_image) write_image_fields(*gpu_image, "gpu", "GPU (GL pipeline)", options, result);
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
   const auto add = [&](const std::string& file, const std::string& caption) {

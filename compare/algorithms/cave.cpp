@@ -54,6 +54,7 @@
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/mesh.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/field_files.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
 #include "core/params/cave.hpp"
@@ -266,16 +267,6 @@ void add_vs_double(const Block& block, const BlockMeshes& meshes, const Triangle
   }
 }
 
-Volume<float> rounded_to_float(const Volume<double>& volume) {
-  Volume<float> single(volume.nx, volume.ny, volume.nz);
-  single.origin = volume.origin;
-  single.spacing = volume.spacing;
-  for (std::size_t sample = 0; sample < volume.values.size(); ++sample) {
-    single.values[sample] = static_cast<float>(volume.values[sample]);
-  }
-  return single;
-}
-
 BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseResult& result) {
   if (options.progress) options.progress->stage("CPU reference (double)");
   BlockMeshes meshes;
@@ -283,7 +274,7 @@ BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseRes
     meshes.density = block.volume ? *block.volume : reference::cave_density<double>(block.params);
     meshes.truth = mesh_block(block, meshes.density);
   }, result.timings);
-  meshes.density_float = block.volume ? rounded_to_float(*block.volume) : reference::cave_density<float>(block.params);
+  meshes.density_float = block.volume ? block.volume->cast<float>() : reference::cave_density<float>(block.params);
   meshes.single = mesh_block(block, meshes.density_float);
   meshes.side_changes = side_changes(meshes.density_float, meshes.density, block.params);
   meshes.density_error = max_abs_difference(meshes.density_float, meshes.density);
@@ -334,6 +325,26 @@ void add_gpu_vs_float(const TriangleMesh<float>& gpu_mesh, const TriangleMesh<fl
                   magnitude, vertices.bit_differences, vertices.matched)));
 }
 
+// Fields as data (compare/field_files.hpp): the density the meshers read, as .npy volumes that an
+// ad-hoc run takes back as --input. A volume input is written once ("input"); the seed's noise as
+// ref<double> samples it ("cpu") and as ref<float> and the GPU mesher read it ("cpu_float").
+void write_density_fields(const Block& block, const BlockMeshes& meshes, const RunOptions& options,
+                          CaseResult& result) {
+  const std::string unit = "1";
+  if (block.volume) {
+    write_volume_field_file(meshes.density, {"density_input", "density", "input", unit, "the density volume read"},
+                            options, result);
+    return;
+  }
+  write_volume_field_file(meshes.density,
+                          {"density_cpu", "density", "cpu", unit, "seed 004 density, rock below the threshold, ref<double>"},
+                          options, result);
+  write_volume_field_file(meshes.density_float.cast<double>(),
+                          {"density_cpu_float", "density", "cpu_float", unit,
+                           "seed 004 density in float, what ref<float> and the GPU mesher read"},
+                          options, result);
+}
+
 void run_block(const Block& block, const std::string& volume_file, const nlohmann::json& expect,
                const RunOptions& options, CaseResult& result) {
   const std::string field = block.volume ? volume_file
@@ -343,6 +354,7 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
                              block.params.size[1], block.params.size[2], block.params.origin[0], block.params.origin[1],
                              block.params.origin[2], block.params.threshold, block.params.solid ? "solid" : "open chunk");
   const BlockMeshes meshes = run_reference(block, options, result);
+  write_density_fields(block, meshes, options, result);
   if (options.progress) options.progress->stage("CGAL and OpenMesh (cpu)");
   MeshReport cpu_report;
   add_block_mesh_checks(block, meshes.truth, "cpu", result, cpu_report);

@@ -36,6 +36,7 @@
 #include "compare/algorithms/render_probe.hpp"
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/field_files.hpp"
 #include "compare/report/images.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
@@ -268,8 +269,13 @@ void write_pictures(const reference::MeshHeightmap& cpu, const gpu::MeshHeightma
   };
   const double exaggeration = write_height_image(cpu.heights, 0.0, 1.0, folder / "cpu.png");
   add("cpu.png", "CPU reference (double): 1 - z', top of the box 1, uncovered 0");
+  const std::string height_meaning = "1 - z' (seed 000 §4.3): top of the mesh's box 1, uncovered texels 0";
+  write_field_files(cpu.heights, {"height_cpu", "height", "cpu", "1", height_meaning + ", CPU reference (double)"},
+                    options, result);
   if (!gpu_heightmap) return;
   const Heightmap gpu_heights = gpu_heightmap->heights.cast<double>();
+  write_field_files(gpu_heights, {"height_gpu", "height", "gpu", "1", height_meaning + ", GPU (GL pipeline, R32F)"},
+                    options, result);
   write_height_image(gpu_heights, 0.0, 1.0, folder / "gpu.png", exaggeration);
   add("gpu.png", "GPU (GL pipeline, R32F)");
   const auto difference = write_difference_image(cpu.heights, gpu_heights, folder / "gpu_vs_cpu.png");

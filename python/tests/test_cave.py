@@ -2,6 +2,8 @@
 solid block, on both twins), the dropped marching cubes (holes: the seed's reason to drop it) and
 the endless cave, with their mesh checks."""
 
+import numpy
+
 import groundtruth
 
 SMALL_BLOCK = {"size_x": 10, "size_y": 8, "size_z": 6}
@@ -31,3 +33,16 @@ def test_the_endless_cave_runs_by_default_and_its_seams_hold():
     for backend in ("cpu", "gpu"):
         seams = result.check(f"seams.unmatched_border_edges.{backend}")
         assert seams["status"] == "pass" and seams["value"] == 0
+
+
+def test_the_density_comes_back_as_a_volume_that_meshes_again(tmp_path):
+    first = groundtruth.run("cave.marching_tetrahedra", backend="cpu", out=tmp_path / "noise", **SMALL_BLOCK)
+    density = first.fields["density"]
+    samples = (SMALL_BLOCK["size_z"] + 1, SMALL_BLOCK["size_y"] + 1, SMALL_BLOCK["size_x"] + 1)  # (nz, ny, nx)
+    assert density["cpu"].shape == density["cpu_float"].shape == samples
+    assert density["cpu"].min() < first.params["threshold"] < density["cpu"].max(), "the block holds rock and air"
+    # The file is the volume an ad-hoc run takes as input; meshed again, it is read back exactly.
+    again = groundtruth.run("cave.marching_tetrahedra", first.report / first.case / "density_cpu_float.npy",
+                            backend="cpu")
+    numpy.testing.assert_array_equal(again.fields["density"]["input"], density["cpu_float"])
+    assert again.check("mesh.closed.cpu")["status"] == "pass"

@@ -16,11 +16,27 @@ def assert_twins_agree(result):
 
 
 def test_a_heightmap_of_a_mesh_seen_from_above():
-    assert_twins_agree(groundtruth.run("render.heightmap_from_mesh", BUNNY, width=48, height=40))
+    result = groundtruth.run("render.heightmap_from_mesh", BUNNY, width=48, height=40)
+    assert_twins_agree(result)
+    height = result.fields["height"]
+    for backend in ("cpu", "gpu"):
+        assert height[backend].shape == (40, 48)
+        # 1 - z' lies in [0, 1]: the box's top is 1, uncovered texels 0, and the bunny covers some.
+        assert height[backend].min() >= 0.0 and height[backend].max() <= 1.0
+        assert 0.0 < (height[backend] > 0.0).mean() < 1.0
 
 
-def test_a_phong_shaded_mesh():
-    assert_twins_agree(groundtruth.run("render.phong", BUNNY, width=48, height=40))
+def test_a_phong_shaded_mesh_comes_back_as_its_colour_channels():
+    result = groundtruth.run("render.phong", BUNNY, width=48, height=40)
+    assert_twins_agree(result)
+    assert {"red", "green", "blue"} <= set(result.fields)
+    for channel in ("red", "green", "blue"):
+        for backend in ("cpu", "gpu"):
+            values = result.fields[channel][backend]
+            assert values.shape == (40, 48)
+            # 8-bit levels / 255: every value is a whole number of 255ths.
+            levels = values.astype(numpy.float64) * 255.0
+            assert numpy.abs(levels - numpy.round(levels)).max() < 1e-3
 
 
 def test_a_terrain_given_as_an_array_is_drawn_as_a_solid():
