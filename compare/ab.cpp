@@ -53,7 +53,7 @@ std::string number_cell(const std::optional<double>& value) { return value ? fmt
 
 void write_page(const Sweep& ab, const CaseResult& a, const CaseResult& b, const std::vector<MetricRow>& rows,
                 const std::string& difference_caption, const std::filesystem::path& folder) {
-  std::ofstream html(folder / "ab.html");
+  std::ofstream html(folder / (ab.ab_stem + ".html"));
   html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>A/B of " << escape_markup(a.algorithm)
        << "</title><style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #ccc;"
           "padding:4px}td.n{text-align:right}img{width:320px;image-rendering:pixelated}tr.moved{background:#fff6d6}"
@@ -74,11 +74,12 @@ void write_page(const Sweep& ab, const CaseResult& a, const CaseResult& b, const
   }
   html << "</tr>\n</table>\n";
   if (!difference_caption.empty()) {
-    html << "<figure><img src=\"ab_difference.png\" alt=\"B - A\"><figcaption>" << escape_markup(difference_caption)
+    html << "<figure><img src=\"" << escape_markup(ab.ab_stem) << "_difference.png\" alt=\"B - A\"><figcaption>"
+         << escape_markup(difference_caption)
          << "</figcaption></figure>\n";
   }
-  html << "<h2>Metrics</h2>\n<p>Those that moved first (highlighted). The table as <a href=\"ab.json\">JSON</a>.</p>\n"
-          "<table><tr><th>metric</th><th>A</th><th>B</th><th>B - A</th></tr>\n";
+  html << "<h2>Metrics</h2>\n<p>Those that moved first (highlighted). The table as <a href=\""
+       << escape_markup(ab.ab_stem) << ".json\">JSON</a>.</p>\n<table><tr><th>metric</th><th>A</th><th>B</th><th>B - A</th></tr>\n";
   for (const MetricRow& row : rows) {
     const std::string delta = row.a && row.b ? fmt::format("{:.6g}", *row.b - *row.a) : "–";
     html << "<tr" << (row.moved() ? " class=\"moved\"" : "") << "><td>" << escape_markup(row.name)
@@ -145,15 +146,43 @@ void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::pa
   const auto field_a = cpu_field(folder, *a);
   const auto field_b = cpu_field(folder, *b);
   if (field_a && field_b && field_a->width == field_b->width && field_a->height == field_b->height) {
-    const DifferenceStats stats = write_difference_image(*field_a, *field_b, folder / "ab_difference.png");
-    difference_caption = fmt::format("B - A, ref<double>'s results: blue where B is lower, red where higher, full "
-                                     "colour at {:.3g}; rms {:.3g}",
-                                     stats.scale_used, stats.rms);
+    const std::string picture = ab.ab_stem + "_difference.png";
+    const DifferenceStats stats = write_difference_image(*field_a, *field_b, folder / picture);
+    difference_caption = fmt::format("{}: B - A, ref<double>'s results: blue where B is lower, red where higher, "
+                                     "full colour at {:.3g}; rms {:.3g} (the page: {}.html)",
+                                     ab.ab_stem, stats.scale_used, stats.rms, ab.ab_stem);
     table["difference"] = {{"max_abs", stats.max_abs}, {"rms", stats.rms}};
-    report.plots.push_back({"ab_difference.png", "plot", difference_caption});
+    report.plots.push_back({picture, "plot", difference_caption});
   }
-  std::ofstream(folder / "ab.json") << table.dump(2) << '\n';
+  std::ofstream(folder / (ab.ab_stem + ".json")) << table.dump(2) << '\n';
   write_page(ab, *a, *b, rows, difference_caption, folder);
+}
+
+void write_case_ab_summaries(const std::vector<CaseSpec>& specs, Report& report, const std::filesystem::path& folder) {
+  const auto assignments = [](const nlohmann::json& params) {
+    std::vector<std::string> texts;
+    for (const auto& [name, value] : params.items()) {
+      texts.push_back(name + "=" + (value.is_string() ? value.get<std::string>() : value.dump()));
+    }
+    return texts;
+  };
+  for (const CaseSpec& a : specs) {
+    if (a.ab_side != "a") continue;
+    const auto b = std::find_if(specs.begin(), specs.end(),
+                                [&](const CaseSpec& spec) { return spec.ab_pair == a.ab_pair && spec.ab_side == "b"; });
+    if (b == specs.end()) continue;  // a selection or a shard holding one side only
+    Sweep pair;
+    pair.ab = true;
+    pair.ab_stem = "ab." + a.ab_pair;
+    for (const CaseSpec* side : {&a, &*b}) {
+      AdHocCase variant;
+      variant.algorithm = side->algorithm;
+      variant.name = side->name;
+      variant.assignments = assignments(side->ab_params);
+      pair.variants.push_back(std::move(variant));
+    }
+    write_ab_summary(pair, report, folder);
+  }
 }
 
 }  // namespace gt

@@ -6,6 +6,7 @@
 // runs. A and B must differ, and a parameter may not be both --set and --a/--b.
 //
 // write_ab_summary, after the runs, writes into the report folder:
+// (Files named with the Sweep's ab_stem, "ab" for the command:)
 //   ab.json        both variants' assignments and, for every metric (compare/sweep.hpp's
 //                  run_metric_names), A's value, B's and B - A; the outcomes
 //   ab_difference.png   B's result - A's (the first ref<double> field of fields.json: the
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/cases.hpp"
 #include "compare/driver.hpp"
 #include "compare/result.hpp"
 
@@ -26,5 +28,10 @@ namespace gt {
 Sweep make_ab(const AdHocCase& base, const std::vector<std::string>& a, const std::vector<std::string>& b);
 
 void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::path& folder);
+
+// A case file's A/B pairs (compare/cases.hpp "ab"): for each pair whose A and B cases are both
+// among `specs` (the run's), the summary above under the stem ab.<pair name>: ab.<pair>.html,
+// ab.<pair>.json and ab.<pair>_difference.png (also a report-level plot, so index.html shows it).
+void write_case_ab_summaries(const std::vector<CaseSpec>& specs, Report& report, const std::filesystem::path& folder);
 
 }  // namespace gt

@@ -15,7 +15,8 @@
 namespace gt {
 namespace {
 
-const std::vector<std::string> known_case_keys = {"name", "algorithm", "params", "input", "crop", "expect", "description"};
+const std::vector<std::string> known_case_keys = {"name",   "algorithm",   "params", "input", "crop",
+                                                  "expect", "description", "ab"};
 
 std::vector<std::filesystem::path> case_files(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
@@ -40,7 +41,9 @@ std::string case_name_part(const std::string& text) {
   return part.empty() ? "input" : part.substr(0, 100);
 }
 
-CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) {
+namespace {
+
+CaseSpec single_case_from_json(const nlohmann::json& entry, const std::string& origin) {
   if (!entry.is_object()) throw InputError(fmt::format("{}: a case must be a JSON object", origin));
   const std::string where =
       entry.contains("name") && entry["name"].is_string() ? fmt::format("{}: case {}", origin, entry["name"].get<std::string>()) : origin;
@@ -65,6 +68,40 @@ CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin) 
   spec.expect = entry.value("expect", nlohmann::json());
   spec.origin = origin;
   return spec;
+}
+
+// The A and B cases of an entry's "ab" pair (see cases.hpp).
+std::vector<CaseSpec> ab_cases(const CaseSpec& base, const nlohmann::json& pair) {
+  const std::string where = fmt::format("{}: case {}", base.origin, base.name);
+  if (!pair.is_object() || pair.size() != 2 || !pair.contains("a") || !pair.contains("b") || !pair["a"].is_object() ||
+      !pair["b"].is_object()) {
+    throw InputError(fmt::format("{}: \"ab\" must be {{\"a\": {{parameters}}, \"b\": {{parameters}}}}", where));
+  }
+  if (pair["a"] == pair["b"]) throw InputError(fmt::format("{}: A and B are the same variant", where));
+  std::vector<CaseSpec> sides;
+  for (const char* side : {"a", "b"}) {
+    CaseSpec spec = base;
+    for (const auto& [name, value] : pair[side].items()) {
+      if (spec.params.contains(name)) {
+        throw InputError(fmt::format("{}: {} is set both in \"params\" and in \"ab\": choose one", where, name));
+      }
+      spec.params[name] = value;
+    }
+    spec.name = base.name + "." + side;
+    spec.ab_pair = base.name;
+    spec.ab_side = side;
+    spec.ab_params = pair[side];
+    sides.push_back(std::move(spec));
+  }
+  return sides;
+}
+
+}  // namespace
+
+std::vector<CaseSpec> cases_from_json(const nlohmann::json& entry, const std::string& origin) {
+  const CaseSpec spec = single_case_from_json(entry, origin);
+  if (!entry.contains("ab")) return {spec};
+  return ab_cases(spec, entry["ab"]);
 }
 
 std::vector<CaseSpec> load_cases(const std::filesystem::path& folder) { return load_suite(folder, {}); }
@@ -108,12 +145,13 @@ std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std:
     }
     if (!document.is_array()) throw InputError(fmt::format("{}: expected an array of cases", file.string()));
     for (const auto& entry : document) {
-      auto spec = case_from_json(entry, file.filename().string());
-      if (index >= bundled_files) anchor_inputs_at(spec, std::filesystem::absolute(file).parent_path());
-      if (!names.insert(spec.name).second) {
-        throw InputError(fmt::format("{}: case name '{}' is used twice", file.string(), spec.name));
+      for (auto& spec : cases_from_json(entry, file.filename().string())) {
+        if (index >= bundled_files) anchor_inputs_at(spec, std::filesystem::absolute(file).parent_path());
+        if (!names.insert(spec.name).second) {
+          throw InputError(fmt::format("{}: case name '{}' is used twice", file.string(), spec.name));
+        }
+        cases.push_back(std::move(spec));
       }
-      cases.push_back(std::move(spec));
     }
   }
   return cases;

@@ -12,7 +12,13 @@
 //                                                          (absent: the algorithm makes its own, e.g. the cave)
 //    "crop": [x, y, width, height],                        optional, applied to the input
 //    "expect": {"cells": [[x, y, value], ...],             optional spec vectors (spec.* checks)
-//               "total": 1.0, "tolerance": 1e-12}}
+//               "total": 1.0, "tolerance": 1e-12},
+//    "ab": {"a": {"tilt_differences": "central"},          optional: an A/B pair (issue 19). The entry
+//           "b": {"tilt_differences": "seed001_code"}}}    becomes two cases, <name>.a and <name>.b,
+//                                                          each with "params" and its side's; the two
+//                                                          sides differ and set no parameter of "params".
+//                                                          A run holding both writes the pair's page
+//                                                          ab.<name>.html (compare/ab.hpp).
 #pragma once
 
 #include <filesystem>
@@ -31,6 +37,11 @@ struct CaseSpec {
   nlohmann::json crop;     // null or [x, y, width, height]
   nlohmann::json expect;   // null or {"cells": [...], "total": ..., "tolerance": ...}
   std::string origin;      // the case file it came from, or "command line"
+  // One side of a case file's A/B pair: the entry's name, "a" or "b", and that side's parameters
+  // (also merged into params); empty for other cases.
+  std::string ab_pair;
+  std::string ab_side;
+  nlohmann::json ab_params;
 };
 
 // Every case of every *.json in `folder`, in file-name order then file order. Throws InputError
@@ -43,7 +54,8 @@ std::vector<CaseSpec> load_cases(const std::filesystem::path& folder);
 // datasets/.
 std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std::vector<std::filesystem::path>& extra);
 
-CaseSpec case_from_json(const nlohmann::json& entry, const std::string& origin);
+// The case (or, for an entry with "ab", the A and B cases) of one case file entry.
+std::vector<CaseSpec> cases_from_json(const nlohmann::json& entry, const std::string& origin);
 
 // `text` (a file name, an algorithm) as one part of a dotted case name: lower case, every other
 // character '_', at most 100 characters, "input" when empty.

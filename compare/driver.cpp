@@ -492,6 +492,7 @@ int run_driver(const DriverOptions& options) {
         fmt::print(stderr, "groundtruth: plot unavailable: {}\n", reason);
       }
     }
+    if (!options.worker) write_case_ab_summaries(specs, report, folder);
     if (options.sweep && !options.worker) {
       if (options.sweep->ab) {
         write_ab_summary(*options.sweep, report, folder);

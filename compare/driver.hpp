@@ -39,6 +39,7 @@ struct Sweep {
   std::vector<std::string> varied;   // the varied parameters, in the order given (ab: none)
   std::vector<AdHocCase> variants;   // each with its assignments and name (ab: A, then B)
   bool ab = false;                   // summarised as an A/B comparison rather than a sweep
+  std::string ab_stem = "ab";        // its files: <stem>.html, <stem>.json, <stem>_difference.png
 };
 
 struct DriverOptions {

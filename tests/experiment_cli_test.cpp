@@ -1,5 +1,5 @@
 // Experiments (issue 19): `groundtruth sweep`, a parameter grid run as ad-hoc cases, tabled and
-// plotted; `groundtruth ab`, two variants side by side.
+// plotted; `groundtruth ab`, two variants side by side; A/B pairs declared in case files.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -158,6 +158,71 @@ TEST(Ab, BadVariantsAreRefused) {
     std::vector<std::string> args = {"ab", "--algorithm", "erosion.pipe", "--input", volcano, "--out", out.string()};
     args.insert(args.end(), extra.begin(), extra.end());
     const auto result = run(args, work.path());
+    EXPECT_EQ(result.status, 2) << result;
+    EXPECT_THAT(result.err, HasSubstr(message)) << result;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+// A case file's "ab" pair: the entry becomes two cases, <name>.a and <name>.b, and a run holding
+// both writes the pair's page beside index.html. Thermal erosion at 20° and at 40° on a 45° cone:
+// the lower talus angle leaves the gentler terrain, so B - A's mean slope is positive.
+TEST(CaseAb, ADeclaredPairRunsBothSidesAndWritesItsPage) {
+  const gt::testing::TemporaryFolder work("gt_case_ab");
+  const json pair = json::array({{{"name", "mine.thermal.talus"},
+                                  {"algorithm", "erosion.thermal"},
+                                  {"params", {{"iterations", 30}}},
+                                  {"input", {{"generator", "cone"}, {"width", 48}, {"height", 48}, {"peak", 20.0}}},
+                                  {"ab", {{"a", {{"talus_angle", 20.0}}}, {"b", {{"talus_angle", 40.0}}}}}}});
+  std::ofstream(work / "pair.json") << pair.dump(2);
+  const fs::path out = work / "report";
+  const auto result = run({"run", "mine.thermal.talus.*", "--cases", (work / "pair.json").string(), "--backend", "cpu",
+                           "--out", out.string()},
+                          work.path());
+  ASSERT_EQ(result.status, 0) << result;
+  const json report = read_json(out / "report.json");
+  ASSERT_EQ(report.at("cases").size(), 2u);
+  EXPECT_EQ(report.at("cases")[0].at("params").at("talus_angle"), 20.0);
+  EXPECT_EQ(report.at("cases")[1].at("params").at("talus_angle"), 40.0);
+  const json table = read_json(out / "ab.mine.thermal.talus.json");
+  EXPECT_EQ(table.at("a").at("case"), "mine.thermal.talus.a");
+  EXPECT_EQ(table.at("b").at("assignments"), json::array({"talus_angle=40.0"}));
+  bool slope_compared = false;
+  for (const json& metric : table.at("metrics")) {
+    if (metric.at("name") != "descriptor.slope_deg.mean") continue;
+    slope_compared = true;
+    EXPECT_GT(metric.at("b_minus_a").get<double>(), 0.0) << metric.dump();
+  }
+  EXPECT_TRUE(slope_compared);
+  EXPECT_TRUE(fs::exists(out / "ab.mine.thermal.talus_difference.png"));
+  std::ifstream page_file(out / "ab.mine.thermal.talus.html");
+  const std::string page((std::istreambuf_iterator<char>(page_file)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(page, HasSubstr("mine.thermal.talus.a/after_cpu.png"));
+  EXPECT_THAT(page, HasSubstr("ab.mine.thermal.talus_difference.png"));
+  std::ifstream index_file(out / "index.html");
+  const std::string index((std::istreambuf_iterator<char>(index_file)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(index, HasSubstr("ab.mine.thermal.talus_difference.png"));
+}
+
+TEST(CaseAb, BadPairsAreRefusedBeforeAnythingRuns) {
+  const gt::testing::TemporaryFolder work("gt_case_ab");
+  const json base = {{"name", "mine.pair"},
+                     {"algorithm", "erosion.thermal"},
+                     {"params", {{"iterations", 3}}},
+                     {"input", {{"generator", "cone"}, {"width", 16}, {"height", 16}}}};
+  const std::vector<std::pair<json, std::string>> refusals = {
+      {{{"a", {{"talus_angle", 20.0}}}, {"b", {{"talus_angle", 20.0}}}}, "the same variant"},
+      {{{"a", {{"talus_angle", 20.0}}}}, "\"ab\" must be"},
+      {{{"a", {{"iterations", 5}}}, {"b", {{"iterations", 6}}}}, "both in \"params\" and in \"ab\""},
+      {{{"a", {{"talus_angle", 20.0}}}, {"b", {{"talus_angle", 95.0}}}}, "talus_angle"},
+  };
+  for (const auto& [ab, message] : refusals) {
+    json entry = base;
+    entry["ab"] = ab;
+    std::ofstream(work / "pair.json") << json::array({entry}).dump(2);
+    const fs::path out = work / "report";
+    const auto result = run({"run", "mine.pair.*", "--cases", (work / "pair.json").string(), "--out", out.string()},
+                            work.path());
     EXPECT_EQ(result.status, 2) << result;
     EXPECT_THAT(result.err, HasSubstr(message)) << result;
     EXPECT_FALSE(fs::exists(out));
