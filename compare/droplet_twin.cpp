@@ -430,16 +430,20 @@ void write_pictures(const DropletTwin& twin, const DropletRun<double>& truth,
   add("gpu_vs_cpu.png", fmt::format("GPU - ref<double>: max {:.3g}", gpu.max_abs));
 }
 
-// The terrain before and after (ref<double>, GPU) and Hydra's depth and sediment maps of the truth,
-// in the input's own units, as field files.
+// The terrain before and after (ref<double>, ref<float>, GPU) and Hydra's depth and sediment maps
+// of the truth, in the input's own units, as field files.
 template <class OwnUnits>
 void write_droplet_fields(const DropletTwin& twin, const Grid<double>& input, const DropletRun<double>& truth,
-                          const OwnUnits& own_units, const std::optional<Grid<float>>& gpu_heights,
-                          const RunOptions& options, CaseResult& result) {
+                          const Grid<double>& float_heights, const OwnUnits& own_units,
+                          const std::optional<Grid<float>>& gpu_heights, const RunOptions& options,
+                          CaseResult& result) {
   const std::string unit = input.vertical_unit;
   write_field_files(input, {"input", "terrain", "input", unit, "terrain before"}, options, result);
   write_field_files(own_units(truth.heights), {"cpu", "terrain", "cpu", unit, "terrain after, ref<double> (sequential "
                                                                                 "droplets)"},
+                    options, result);
+  write_field_files(float_heights,
+                    {"cpu_float", "terrain", "cpu_float", unit, "terrain after, ref<float> (the case's ordering)"},
                     options, result);
   const auto amounts = [&](Grid<double> map) {  // amounts scale as heights, without the offset
     for (double& amount : map.values) amount *= twin.height_scale;
@@ -512,7 +516,7 @@ Grid<float> run_droplet_case(const DropletTwin& twin, const nlohmann::json& expe
   const Grid<double> input = own_units(twin.input);
   const Grid<double> truth_heights = own_units(truth.heights);
   const Grid<double> float_as_double = own_units(float_run.run.heights.cast<double>());
-  write_droplet_fields(twin, input, truth, own_units, gpu_heights, options, result);
+  write_droplet_fields(twin, input, truth, float_as_double, own_units, gpu_heights, options, result);
   // The GPU's terrain is judged against ref<float> (bit for bit, or by the race figures); against
   // ref<double> a droplet's discrete path parts at the first rounding that moves its texel, so the
   // descriptors' GPU-to-double parity would grade that chaos: the descriptors show the references.

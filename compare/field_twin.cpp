@@ -485,6 +485,8 @@ void write_artifacts(const FieldTwin& twin, const Heightmap& input, const Grid<d
   const std::string unit = twin.generated ? "1" : cpu.vertical_unit;
   if (!twin.generated) write_field_files(input, {"input", field, "input", unit, "the input"}, options, result);
   write_field_files(cpu, {"cpu", field, "cpu", unit, "CPU reference (double)"}, options, result);
+  write_field_files(cpu_float.cast<double>(), {"cpu_float", field, "cpu_float", unit, "CPU reference (float)"}, options,
+                    result);
   if (!gpu) return;
   write_field_files(gpu->first.cast<double>(), {"gpu", field, "gpu", unit, "GPU"}, options, result);
 }

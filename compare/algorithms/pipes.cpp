@@ -714,7 +714,7 @@ void write_pictures(const PipeScenario& scenario, const BackendRun& truth, const
 }
 
 // Every state field of the pipe model (core/params/hydraulic.hpp's PipeState) as field files:
-// <field>_<backend>.exr/.npy for the initial state, ref<double>'s last state and the GPU's, units
+// <field>_<backend>.exr/.npy for the initial state, ref<double>'s last state, ref<float>'s and the GPU's, units
 // as the state declares them; the outflow as one field per pipe in use, outflow_<pipe>_<backend>
 // (L, R, T, B, then the diagonals).
 void write_state_fields(const PipeState<double>& state, int pipe_count, const std::string& backend,
@@ -792,6 +792,7 @@ void run_pipe_case(const PipeScenario& scenario, const nlohmann::json& expect, c
   const int pipes = scenario.constants.pipe_count;
   write_state_fields(scenario.initial, pipes, "input", "before the first step", options, result);
   write_state_fields(truth.final_state, pipes, "cpu", "after the last step, ref<double>", options, result);
+  write_state_fields(float_run.final_state, pipes, "cpu_float", "after the last step, ref<float>", options, result);
   if (gpu_run) write_state_fields(gpu_run->final_state, pipes, "gpu", "after the last step, GPU", options, result);
   if (options.progress) options.progress->stage("terrain descriptors");
   add_case_descriptors({&terrain, &truth.final_state.terrain, &float_run.final_state.terrain,

@@ -42,10 +42,10 @@ def test_each_twin_runs_and_no_check_fails(results, algorithm):
 def test_the_terrain_comes_back_as_given_and_on_its_grid(results, algorithm):
     heights, result = results
     terrain = result[algorithm].fields["terrain"]
-    assert {"cpu", "gpu"} <= set(terrain)
+    assert {"cpu", "cpu_float", "gpu"} <= set(terrain)
     # The input field is the array given, rounded to float32, rows as rows: no transposition.
     numpy.testing.assert_array_equal(terrain["input"], heights.astype(numpy.float32))
-    for backend in ("cpu", "gpu"):
+    for backend in ("cpu", "cpu_float", "gpu"):
         assert terrain[backend].shape == heights.shape and terrain[backend].dtype == numpy.float32
         assert numpy.isfinite(terrain[backend]).all()
 
@@ -112,7 +112,8 @@ def test_a_real_dem_by_path_keeps_its_cell_size_and_says_so(tmp_path):
     # The report stays where it was asked for, with the fields as files.
     assert (result.report / "index.html").exists()
     sidecar = json.loads((result.report / result.case / "fields.json").read_text())
-    assert {(entry["field"], entry["backend"]) for entry in sidecar["files"]} == {("terrain", "input"), ("terrain", "cpu")}
+    assert {(entry["field"], entry["backend"]) for entry in sidecar["files"]} == \
+        {("terrain", "input"), ("terrain", "cpu"), ("terrain", "cpu_float")}
     for entry in sidecar["files"]:
         for extension in ("npy", "exr"):
             assert (result.report / result.case / f"{entry['stem']}.{extension}").exists()
