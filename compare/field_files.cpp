@@ -77,10 +77,17 @@ void write_volume_field_file(const Volume<double>& values, const FieldFile& file
   if (options.report_dir.empty()) return;
   const auto folder = case_folder(options, result);
   write_volume(values, folder / (file.stem + ".npy"));
-  result.artifacts.push_back({result.name + "/" + file.stem + ".npy", "field",
-                              fmt::format("{} ({}, {}), float32 NumPy array (nz, ny, nx)", file.meaning, file.field,
-                                          file.unit)});
-  describe_field_file(folder, grid_of(values), file, {"npy"}, result);
+  // For image tools, the z slices one under the other: the volume's own order, x fastest, then y,
+  // then z, is that of an nx x (ny·nz) image.
+  Grid<double> slices(values.nx, values.ny * values.nz);
+  slices.values = values.values;
+  slices.horizontal_unit = "sample";
+  write_heightmap(slices, folder / (file.stem + ".exr"));
+  const std::string what = fmt::format("{} ({}, {})", file.meaning, file.field, file.unit);
+  result.artifacts.push_back({result.name + "/" + file.stem + ".npy", "field", what + ", float32 NumPy array (nz, ny, nx)"});
+  result.artifacts.push_back({result.name + "/" + file.stem + ".exr", "field",
+                              what + ", float32 EXR of the z slices one under the other (row z·ny + y)"});
+  describe_field_file(folder, grid_of(values), file, {"exr", "npy"}, result);
 }
 
 }  // namespace gt

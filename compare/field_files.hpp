@@ -7,9 +7,10 @@
 // parts of a driver that own different fields write them independently. Nothing is written when
 // options.report_dir is empty.
 //
-// A 3-D field (the cave's density) is written by write_volume_field_file as <stem>.npy alone
-// (float32, shape (nz, ny, nx), the array core/io/volume_io.hpp reads back: an ad-hoc cave run
-// takes it as --input), its grid {nx, ny, nz, spacing, origin}. A file on another grid than the
+// A 3-D field (the cave's density) is written by write_volume_field_file as <stem>.npy (float32,
+// shape (nz, ny, nx), the array core/io/volume_io.hpp reads back: an ad-hoc cave run takes it as
+// --input) and as <stem>.exr, the z slices one under the other (an nx x ny·nz image, row z·ny + y),
+// its grid {nx, ny, nz, spacing, origin}. A file on another grid than the
 // sidecar's first carries its own "grid".
 #pragma once
 

@@ -2,6 +2,8 @@
 solid block, on both twins), the dropped marching cubes (holes: the seed's reason to drop it) and
 the endless cave, with their mesh checks."""
 
+import json
+
 import numpy
 
 import groundtruth
@@ -40,6 +42,8 @@ def test_the_density_comes_back_as_a_volume_that_meshes_again(tmp_path):
     density = first.fields["density"]
     samples = (SMALL_BLOCK["size_z"] + 1, SMALL_BLOCK["size_y"] + 1, SMALL_BLOCK["size_x"] + 1)  # (nz, ny, nx)
     assert density["cpu"].shape == density["cpu_float"].shape == samples
+    sidecar = json.loads((first.report / first.case / "fields.json").read_text())
+    assert all(entry["formats"] == ["exr", "npy"] for entry in sidecar["files"])
     assert density["cpu"].min() < first.params["threshold"] < density["cpu"].max(), "the block holds rock and air"
     # The file is the volume an ad-hoc run takes as input; meshed again, it is read back exactly.
     again = groundtruth.run("cave.marching_tetrahedra", first.report / first.case / "density_cpu_float.npy",
