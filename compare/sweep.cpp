@@ -266,7 +266,7 @@ std::string result_picture(const CaseResult& result) {
 }
 
 Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force) {
-  if (vary.empty()) throw InputError("sweep: give at least one --vary name=v1,v2,...");
+  if (vary.empty()) throw InputError("sweep: give at least one --vary name=v1,v2,..., or --sets FILE of named parameter sets");
   std::vector<Varied> axes;
   std::size_t runs = 1;
   for (const auto& text : vary) {
@@ -303,22 +303,67 @@ Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bo
     }
     variant.name = name;
     sweep.variants.push_back(std::move(variant));
+    sweep.varied_values.push_back(std::move(chosen));
+  }
+  return sweep;
+}
+
+Sweep make_sweep_of_sets(const AdHocCase& base, const std::filesystem::path& file, bool force) {
+  const std::string where = fmt::format("--sets {}", file.string());
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("{}: cannot read the file", where));
+  nlohmann::ordered_json sets;  // the sets run in the file's order
+  try {
+    sets = nlohmann::ordered_json::parse(in);
+  } catch (const nlohmann::ordered_json::exception& error) {
+    throw InputError(fmt::format("{}: not valid JSON: {}", where, error.what()));
+  }
+  if (!sets.is_object() || sets.empty()) {
+    throw InputError(fmt::format("{}: expected a non-empty object of named parameter sets, "
+                                 "{{\"name\": {{\"parameter\": value, ...}}, ...}}",
+                                 where));
+  }
+  if (sets.size() > sweep_run_cap && !force) {
+    throw InputError(fmt::format("sweep: {} runs, more than the cap of {}; pass --force to run them all", sets.size(),
+                                 sweep_run_cap));
+  }
+  Sweep sweep;
+  sweep.varied = {"set"};
+  for (const auto& [set_name, params] : sets.items()) {
+    if (!params.is_object()) throw InputError(fmt::format("{}: set '{}' is not an object of parameters", where, set_name));
+    AdHocCase variant = base;
+    for (const auto& [name, value] : params.items()) {
+      if (!value.is_primitive() || value.is_null()) {
+        throw InputError(fmt::format("{}: set '{}': {} must be a number, a bool or a string", where, set_name, name));
+      }
+      for (const auto& assignment : base.assignments) {
+        if (assignment.rfind(name + "=", 0) == 0) {
+          throw InputError(fmt::format("{} is both --set and in set '{}': choose one", name, set_name));
+        }
+      }
+      variant.assignments.push_back(name + "=" + (value.is_string() ? value.get<std::string>() : value.dump()));
+    }
+    variant.name = fmt::format("sweep.{}.{}.{}", base.algorithm, ad_hoc_input_name(base), case_name_part(set_name));
+    for (const AdHocCase& earlier : sweep.variants) {
+      if (earlier.name == variant.name) {
+        throw InputError(fmt::format("{}: sets '{}' and another name the same case {}: rename one", where, set_name,
+                                     variant.name));
+      }
+    }
+    sweep.variants.push_back(std::move(variant));
+    sweep.varied_values.push_back({set_name});
   }
   return sweep;
 }
 
 void write_sweep_summary(const Sweep& sweep, Report& report, const std::filesystem::path& folder) {
   std::vector<Row> rows;
-  for (const AdHocCase& variant : sweep.variants) {
-    const auto found = std::find_if(report.cases.begin(), report.cases.end(),
-                                    [&](const CaseResult& result) { return result.name == variant.name; });
+  for (std::size_t index = 0; index < sweep.variants.size(); ++index) {
+    const auto found = std::find_if(report.cases.begin(), report.cases.end(), [&](const CaseResult& result) {
+      return result.name == sweep.variants[index].name;
+    });
     if (found == report.cases.end()) continue;  // another shard's
-    Row row{{}, &*found};
-    for (std::size_t k = 0; k < sweep.varied.size(); ++k) {
-      const auto& assignment = variant.assignments[variant.assignments.size() - sweep.varied.size() + k];
-      row.values.push_back(assignment.substr(assignment.find('=') + 1));
-    }
-    rows.push_back(std::move(row));
+    rows.push_back({sweep.varied_values[index], &*found});
   }
   const std::vector<std::string> metrics = run_metric_names(results_of(rows));
   write_table(sweep, rows, metrics, folder);

@@ -1,6 +1,7 @@
 // `groundtruth sweep` (issue 19): one algorithm on one input over a grid of parameter values.
 //
-// make_sweep expands every `--vary name=v1,v2,...` into the Cartesian product of the values, each
+// make_sweep expands every `--vary name=v1,v2,...` into the Cartesian product of the values (or
+// make_sweep_of_sets takes named parameter sets from a file, `--sets FILE`), each
 // combination an ad-hoc case (compare/driver.hpp's AdHocCase) named
 // sweep.<algorithm>.<input>.<name>_<value>[.<name>_<value>...] with the base's --set assignments
 // and its own; the driver runs them as any ad-hoc case (with -j, in workers), so values out of
@@ -31,6 +32,14 @@ namespace gt {
 constexpr std::size_t sweep_run_cap = 64;
 
 Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force);
+
+// A sweep over named parameter sets read from a JSON file, {"thesis": {"tilt_differences":
+// "central"}, "code": {...}, ...}: one run per set, in the file's order, named
+// sweep.<algorithm>.<input>.<set name> and tabled under the varied "set". Refused (InputError): a
+// file that cannot be read or is not a non-empty object of objects, a value that is not a number,
+// bool or string, a parameter also given with --set, two sets of the same case name, more sets
+// than the cap without --force.
+Sweep make_sweep_of_sets(const AdHocCase& base, const std::filesystem::path& file, bool force);
 
 // What a sweep or an A/B comparison reads of each run. The metrics: "seconds" (the case's wall
 // time), "cpu_ms" and "gpu_ms" (the medians), every check the runs report (not skipped), and

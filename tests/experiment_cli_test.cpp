@@ -100,6 +100,7 @@ TEST(Sweep, BadVariationsAreRefused) {
       {{"--vary", many}, "more than the cap of 64"},
       {{"--vary", "talus_angle=10,20", "--set", "talus_angle=30"}, "both --set and --vary"},
       {{"--vary", "talus_angle=10,,20"}, "an empty value"},
+      {{}, "or --sets FILE"},
   };
   for (const auto& [extra, message] : refusals) {
     std::vector<std::string> args = {"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--out",
@@ -110,6 +111,70 @@ TEST(Sweep, BadVariationsAreRefused) {
     EXPECT_THAT(result.err, HasSubstr(message)) << result;
     EXPECT_FALSE(fs::exists(out));
   }
+}
+
+// Named parameter sets from a file: one run per set, in the file's order, tabled under "set" with
+// the set's name. Seed 001's choices where its thesis and its code differ, and a third set that
+// takes its code's diffusion weights with the thesis's tilt.
+TEST(Sweep, NamedParameterSetsFromAFile) {
+  const gt::testing::TemporaryFolder work("gt_sweep");
+  std::ofstream(work / "sets.json") << R"({
+    "thesis": {"tilt_differences": "central"},
+    "code": {"tilt_differences": "seed001_code", "diffusion_weighting": "water"},
+    "thesis tilt, code diffusion": {"tilt_differences": "central", "diffusion_weighting": "water"}})";
+  const fs::path out = work / "sweep";
+  const auto result = run({"sweep", "--algorithm", "erosion.pipe", "--input", volcano, "--sets",
+                           (work / "sets.json").string(), "--set", "steps=20", "--set", "rain_rate=0.01", "--set",
+                           "sediment_diffusion=0.1", "--backend", "cpu", "--out", out.string()},
+                          work.path());
+  ASSERT_EQ(result.status, 0) << result;
+  const json table = read_json(out / "sweep.json");
+  EXPECT_EQ(table.at("varied"), json::array({"set"}));
+  ASSERT_EQ(table.at("runs").size(), 3u);
+  const std::vector<std::string> names = {"thesis", "code", "thesis tilt, code diffusion"};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    EXPECT_EQ(table.at("runs")[i].at("params").at("set"), names[i]);
+  }
+  EXPECT_EQ(table.at("runs")[2].at("case"), "sweep.erosion.pipe.volcano.thesis_tilt__code_diffusion");
+  // Each set took effect: the result's mean slope differs from the thesis's in both other runs.
+  const auto mean_slope = [&](std::size_t run) {
+    return table.at("runs")[run].at("metrics").at("descriptor.slope_deg.mean").get<double>();
+  };
+  EXPECT_NE(mean_slope(1), mean_slope(0));
+  EXPECT_NE(mean_slope(2), mean_slope(0));
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report.at("cases")[1].at("params").at("diffusion_weighting"), "water");
+  EXPECT_TRUE(fs::exists(out / "sweep.html"));
+}
+
+TEST(Sweep, BadSetFilesAreRefused) {
+  const gt::testing::TemporaryFolder work("gt_sweep");
+  const fs::path out = work / "sweep";
+  const std::vector<std::pair<std::string, std::string>> refusals = {
+      {"{}", "a non-empty object of named parameter sets"},
+      {"[1, 2]", "a non-empty object of named parameter sets"},
+      {R"({"a": 3})", "set 'a' is not an object"},
+      {R"({"a": {"talus_angle": [1, 2]}})", "must be a number, a bool or a string"},
+      {R"({"a": {"talus_angle": 95}})", "talus_angle"},
+      {R"({"a": {"talsu_angle": 30}})", "unknown parameter 'talsu_angle'"},
+      {R"({"a b": {"talus_angle": 30}, "a.b": {"talus_angle": 40}})", "rename one"},
+      {R"({"a": {"iterations": 3}})", "both --set and in set 'a'"},
+      {"{", "not valid JSON"},
+  };
+  for (const auto& [text, message] : refusals) {
+    std::ofstream(work / "sets.json") << text;
+    const auto result = run({"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--set", "iterations=2",
+                             "--sets", (work / "sets.json").string(), "--out", out.string()},
+                            work.path());
+    EXPECT_EQ(result.status, 2) << text << result;
+    EXPECT_THAT(result.err, HasSubstr(message)) << text << result;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  const auto both = run({"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--vary", "talus_angle=1,2",
+                         "--sets", (work / "sets.json").string(), "--out", out.string()},
+                        work.path());
+  EXPECT_EQ(both.status, 2) << both;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 // The pipe model's thesis (central differences over 2l) against its code (raw differences) for

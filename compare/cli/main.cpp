@@ -277,8 +277,13 @@ int main(int argc, char** argv) {
   auto* sweep = app.add_subcommand("sweep", "one algorithm on one input over a grid of parameter values: a table, "
                                             "plots against the varied parameter and a thumbnail of each run");
   sweep->add_option("--algorithm", sweep_base.algorithm, "the algorithm")->required();
-  sweep->add_option("--vary", vary, "a parameter and its values, name=v1,v2,... (repeatable: every combination runs)")
-      ->required();
+  std::string sweep_sets;
+  auto* vary_option =
+      sweep->add_option("--vary", vary, "a parameter and its values, name=v1,v2,... (repeatable: every combination runs)");
+  sweep->add_option("--sets", sweep_sets,
+                    "a JSON file of named parameter sets, {\"name\": {\"parameter\": value, ...}, ...}: one run each, "
+                    "instead of --vary")
+      ->excludes(vary_option);
   add_ad_hoc_options(*sweep, sweep_base, sweep_grid_size, sweep_shared);
   sweep->add_flag("--force", force_sweep, fmt::format("run more than {} combinations", gt::sweep_run_cap));
   add_shared_options(*sweep, sweep_shared, "groundtruth-sweep");
@@ -486,7 +491,8 @@ int main(int argc, char** argv) {
     if (sweep->parsed()) {
       auto options = driver_options(sweep_shared, command_line, memory_limit_mib);
       if (!sweep_grid_size.empty()) parse_grid_size(sweep_grid_size, sweep_base);
-      options.sweep = gt::make_sweep(sweep_base, vary, force_sweep);
+      options.sweep = sweep_sets.empty() ? gt::make_sweep(sweep_base, vary, force_sweep)
+                                         : gt::make_sweep_of_sets(sweep_base, sweep_sets, force_sweep);
       return gt::run_driver(options);
     }
     if (ab->parsed()) {
