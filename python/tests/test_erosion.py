@@ -137,3 +137,10 @@ def test_a_cell_size_given_replaces_the_files_and_the_assumed_one():
     array = groundtruth.run("erosion.thermal", cone(8), cell_size=2.5, backend="cpu", iterations=1)
     assert array.grid["cell_size_x"] == 2.5
     assert not any("assumed" in note for note in array.notes), array.notes
+
+
+def test_a_transposed_view_is_taken_as_the_array_it_shows():
+    heights = cone(12, peak=5.0)[:, :9]  # 12 rows, 9 columns
+    view = heights.T                      # a Fortran-ordered view: 9 rows, 12 columns
+    result = groundtruth.run("erosion.thermal", view, backend="cpu", iterations=1)
+    numpy.testing.assert_array_equal(result.fields["terrain"]["input"], view.astype(numpy.float32))
