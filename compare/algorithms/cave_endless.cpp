@@ -41,6 +41,7 @@
 #include "compare/checks/cave_mesh.hpp"
 #include "compare/checks/mesh.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/field_files.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
@@ -380,6 +381,13 @@ void run_path(const Path& path, const RunOptions& options, CaseResult& result) {
   time_cpu(std::max(options.cpu_reps, 1), [&] { chunks = reference_path<double>(path); }, result.timings);
   add_seam_checks(path, chunks, "cpu", options, result);
   add_monolithic_check(path, chunks, result);
+  // Fields as data (compare/field_files.hpp): the density over the path's whole box, sampled as
+  // one block; the chunks read it piece by piece.
+  write_volume_field_file(reference::cave_density<double>(union_params(path)),
+                          {"density_cpu", "density", "cpu", "1",
+                           "seed 004 density over the path's box (big cube and slabs), ref<double>; rock below the "
+                           "threshold"},
+                          options, result);
   add_ring_checks(path, chunks, options, result);
   if (!options.gpu_available) {
     for (const char* name : {"seams.gpu", "parity.gpu_vs_float"}) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));

@@ -32,6 +32,8 @@ def test_the_endless_cave_runs_by_default_and_its_seams_hold():
     result = groundtruth.run("cave.endless", size_x=8, size_y=8, size_z=8, slabs=4)
     assert result.status not in ("fail", "error"), result.failed() or result.error
     assert result.params["solid"] is False
+    # The density over the path's box: the 8-cell big cube and 4 slabs along +x, in samples (nz, ny, nx).
+    assert result.fields["density"]["cpu"].shape == (9, 9, 13)
     for backend in ("cpu", "gpu"):
         seams = result.check(f"seams.unmatched_border_edges.{backend}")
         assert seams["status"] == "pass" and seams["value"] == 0
