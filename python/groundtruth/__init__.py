@@ -21,8 +21,9 @@ Inputs (`heights`):
 Parameters are keyword arguments named as `groundtruth.parameters(algorithm)` declares them.
 Fields come from the case's fields-as-data files: result.fields[field][backend], backends "input",
 "cpu" (reference, double), "cpu_float" and "gpu"; result.field_info holds each one's unit and
-meaning. With `out`, the whole report (index.html, report.json, pictures, EXR and .npy fields)
-stays in that folder; without, it is written to a temporary folder that is removed on return.
+meaning. With `out`, the whole report (index.html, report.json, pictures, meshes, EXR and .npy
+fields) stays in that folder and result.artifacts lists its files with their kind and caption;
+without, it is written to a temporary folder that is removed on return.
 """
 
 import json
@@ -72,6 +73,10 @@ class Result:
         self.field_info = field_info
         self.grid = grid
         self.report = report
+        # What the case wrote (pictures, meshes, field files, plots) with its kind and caption; paths
+        # in the report folder, so only with `out` (a temporary report is gone on return).
+        self.artifacts = [] if report is None else [
+            {"path": report / path, **detail} for path, detail in zip(case["artifacts"], case["artifact_details"])]
 
     def check(self, name):
         """The check called `name`; KeyError naming the case's checks when it has none of that name."""

@@ -52,3 +52,7 @@ def test_the_density_comes_back_as_a_volume_that_meshes_again(tmp_path):
                             backend="cpu")
     numpy.testing.assert_array_equal(again.fields["density"]["input"], density["cpu_float"])
     assert again.check("mesh.closed.cpu")["status"] == "pass"
+    # With out=, the meshes are among the artifacts, at their place in the report.
+    meshes = [artifact["path"] for artifact in first.artifacts if artifact["path"].suffix == ".ply"]
+    assert meshes and all(path.is_file() for path in meshes)
+    assert again.artifacts == [], "no out=: no files to point to"
