@@ -140,12 +140,9 @@ std::vector<double> npy_vector(zip_t* archive, const std::string& key, std::size
   return std::move(array.values);
 }
 
-// A 2-D array (rows, columns) as a heightmap; NaN cells become invalid.
-Heightmap npy_heightmap(zip_t* archive, const std::string& key, const path& file) {
-  const NpyArray array = read_npz_array(archive, key, file);
-  if (array.shape.size() != 2 || array.shape[0] < 2 || array.shape[1] < 2) {
-    throw InputError(fmt::format("{}: array '{}' should be 2-D with at least 2 rows and columns", file.string(), key));
-  }
+// A 2-D array (rows, columns), its shape checked by the caller, as a heightmap; NaN cells become
+// invalid.
+Heightmap heightmap_of(const NpyArray& array) {
   Heightmap heights(static_cast<int>(array.shape[1]), static_cast<int>(array.shape[0]));
   for (std::size_t i = 0; i < array.values.size(); ++i) {
     if (std::isnan(array.values[i])) {
@@ -155,6 +152,14 @@ Heightmap npy_heightmap(zip_t* archive, const std::string& key, const path& file
     }
   }
   return heights;
+}
+
+Heightmap npy_heightmap(zip_t* archive, const std::string& key, const path& file) {
+  const NpyArray array = read_npz_array(archive, key, file);
+  if (array.shape.size() != 2 || array.shape[0] < 2 || array.shape[1] < 2) {
+    throw InputError(fmt::format("{}: array '{}' should be 2-D with at least 2 rows and columns", file.string(), key));
+  }
+  return heightmap_of(array);
 }
 
 void set_geographic_cell_size(HeightmapFile& file, double degrees_longitude, double degrees_latitude,
@@ -256,19 +261,11 @@ HeightmapFile read_npy_heightmap(const path& file) {
     }
     return checked_element_count(shape, where);
   };
-  NpyArray array = read_npy_file(file, element_count, "the heightmap");
+  const NpyArray array = read_npy_file(file, element_count, "the heightmap");
   HeightmapFile result;
   result.format = "npy";
-  result.heights = Heightmap(static_cast<int>(array.shape[1]), static_cast<int>(array.shape[0]));
-  std::size_t no_data = 0;
-  for (std::size_t i = 0; i < array.values.size(); ++i) {
-    if (std::isnan(array.values[i])) {
-      mark_invalid(result.heights, i);
-      ++no_data;
-    } else {
-      result.heights.values[i] = array.values[i];
-    }
-  }
+  result.heights = heightmap_of(array);
+  const auto no_data = std::count(result.heights.valid.begin(), result.heights.valid.end(), 0);
   if (no_data > 0) {
     result.notes.push_back(fmt::format("{} NaN cells of {} taken as no-data and masked: no algorithm reads or "
                                        "changes them",

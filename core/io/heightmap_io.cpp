@@ -451,7 +451,6 @@ void write_single_channel(const path& temporary, const path& target, OIIO::TypeD
   }
 }
 
-
 void write_pixels(const Heightmap& heights, const path& temporary, const path& target, const std::string& extension) {
   if (extension == ".npy") {
     detail::write_npy_float32({heights.height, heights.width}, float32_pixels(heights), temporary, target);

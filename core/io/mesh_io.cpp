@@ -18,7 +18,6 @@
 #include <stdexcept>
 #include <string_view>
 
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/exceptions.h>
 #include <CGAL/IO/OFF.h>
