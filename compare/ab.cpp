@@ -54,11 +54,11 @@ std::string number_cell(const std::optional<double>& value) { return value ? fmt
 void write_page(const Sweep& ab, const CaseResult& a, const CaseResult& b, const std::vector<MetricRow>& rows,
                 const std::string& difference_caption, const std::filesystem::path& folder) {
   std::ofstream html(folder / (ab.ab_stem + ".html"));
-  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>A/B of " << escape_markup(a.algorithm)
-       << "</title><style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #ccc;"
-          "padding:4px}td.n{text-align:right}img{width:320px;image-rendering:pixelated}tr.moved{background:#fff6d6}"
-          "</style></head><body>\n<h1>A/B of "
-       << escape_markup(a.algorithm) << "</h1>\n<table><tr><th></th><th>A</th><th>B</th></tr>\n";
+  html << report_detail::page_head("A/B of " + a.algorithm,
+                                   "body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid "
+                                   "#ccc;padding:4px}td.n{text-align:right}img{width:320px;image-rendering:pixelated}"
+                                   "tr.moved{background:#fff6d6}")
+       << "<h1>A/B of " << escape_markup(a.algorithm) << "</h1>\n<table><tr><th></th><th>A</th><th>B</th></tr>\n";
   const auto assignments = [](const AdHocCase& variant) {
     std::string text;
     for (const auto& assignment : variant.assignments) text += (text.empty() ? "" : ", ") + assignment;
@@ -100,11 +100,7 @@ Sweep make_ab(const AdHocCase& base, const std::vector<std::string>& a, const st
   for (const auto* side : {&a, &b}) {
     for (const auto& assignment : *side) {
       const std::string name = parameter_of(assignment);
-      for (const auto& fixed : base.assignments) {
-        if (parameter_of(fixed) == name) {
-          throw InputError(fmt::format("{} is both --set and --a/--b: choose one", name));
-        }
-      }
+      if (sets_parameter(base, name)) throw InputError(fmt::format("{} is both --set and --a/--b: choose one", name));
     }
   }
   const std::string input = ad_hoc_input_name(base);
@@ -161,9 +157,7 @@ void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::pa
 void write_case_ab_summaries(const std::vector<CaseSpec>& specs, Report& report, const std::filesystem::path& folder) {
   const auto assignments = [](const nlohmann::json& params) {
     std::vector<std::string> texts;
-    for (const auto& [name, value] : params.items()) {
-      texts.push_back(name + "=" + (value.is_string() ? value.get<std::string>() : value.dump()));
-    }
+    for (const auto& [name, value] : params.items()) texts.push_back(assignment_text(name, value));
     return texts;
   };
   for (const CaseSpec& a : specs) {

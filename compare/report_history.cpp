@@ -445,13 +445,12 @@ void append_case(std::string& out, std::size_t index, const History& history, co
 }  // namespace
 
 void write_history_page(const History& history, const std::filesystem::path& folder) {
-  std::string out = fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>groundtruth history</title>\n"
-      "<style>{}</style>\n</head>\n<body>\n<h1>groundtruth history</h1>\n"
+  std::string out = report_detail::page_head("groundtruth history", style) + fmt::format(
+      "<h1>groundtruth history</h1>\n"
       "<p>{} revisions. A series drifts where its outcome changes, a check's value moves by more than {:g} % of its "
       "bound (or {:g} of its size), or a time changes by more than a factor {:g} as a ratio to each run's calibration "
       "kernel (raw ms where a report has none), each against the previous revision that has it.</p>\n",
-      style, history.revisions.size(), 100.0 * moved_share_of_threshold, moved_share_of_magnitude, timing_noise_factor);
+      history.revisions.size(), 100.0 * moved_share_of_threshold, moved_share_of_magnitude, timing_noise_factor);
   append_summary(out, history);
   append_revisions(out, history);
   for (std::size_t index = 0; index < history.cases.size(); ++index) append_case(out, index, history, folder);

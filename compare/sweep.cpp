@@ -50,6 +50,13 @@ Varied parse_vary(const std::string& text) {
   return varied;
 }
 
+void check_run_count(std::size_t runs, bool force) {
+  if (runs > sweep_run_cap && !force) {
+    throw InputError(fmt::format("sweep: {} runs, more than the cap of {}; pass --force to run them all", runs,
+                                 sweep_run_cap));
+  }
+}
+
 // The number a varied value stands for, or nullopt when the parameter is not numeric.
 std::optional<double> number(const std::string& text) {
   try {
@@ -190,9 +197,9 @@ void write_page(const Sweep& sweep, const std::vector<Row>& rows, const std::vec
                 const std::filesystem::path& folder) {
   std::ofstream html(folder / "sweep.html");
   const std::string algorithm = rows.empty() ? "" : rows.front().result->algorithm;
-  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>sweep of " << escape_markup(algorithm)
-       << "</title><style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #ccc;"
-          "padding:4px}img.thumb{width:128px;image-rendering:pixelated}</style></head><body>\n";
+  html << report_detail::page_head("sweep of " + algorithm,
+                                   "body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid "
+                                   "#ccc;padding:4px}img.thumb{width:128px;image-rendering:pixelated}");
   html << "<h1>Sweep of " << escape_markup(algorithm) << "</h1>\n<p>" << rows.size()
        << " runs; the table as <a href=\"sweep.csv\">CSV</a> and <a href=\"sweep.json\">JSON</a>; every run in full "
           "in <a href=\"index.html\">the report</a>.</p>\n<table><tr>";
@@ -265,6 +272,15 @@ std::string result_picture(const CaseResult& result) {
   return "";
 }
 
+bool sets_parameter(const AdHocCase& base, const std::string& name) {
+  return std::any_of(base.assignments.begin(), base.assignments.end(),
+                     [&](const std::string& assignment) { return assignment.starts_with(name + "="); });
+}
+
+std::string assignment_text(const std::string& name, const nlohmann::json& value) {
+  return name + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+}
+
 Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force) {
   if (vary.empty()) throw InputError("sweep: give at least one --vary name=v1,v2,..., or --sets FILE of named parameter sets");
   std::vector<Varied> axes;
@@ -274,18 +290,13 @@ Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bo
     for (const auto& axis : axes) {
       if (axis.name == varied.name) throw InputError(fmt::format("--vary {} given twice", varied.name));
     }
-    for (const auto& assignment : base.assignments) {
-      if (assignment.rfind(varied.name + "=", 0) == 0) {
-        throw InputError(fmt::format("{} is both --set and --vary: choose one", varied.name));
-      }
+    if (sets_parameter(base, varied.name)) {
+      throw InputError(fmt::format("{} is both --set and --vary: choose one", varied.name));
     }
     runs *= varied.values.size();
     axes.push_back(std::move(varied));
   }
-  if (runs > sweep_run_cap && !force) {
-    throw InputError(fmt::format("sweep: {} runs, more than the cap of {}; pass --force to run them all", runs,
-                                 sweep_run_cap));
-  }
+  check_run_count(runs, force);
   Sweep sweep;
   for (const auto& axis : axes) sweep.varied.push_back(axis.name);
   for (std::size_t index = 0; index < runs; ++index) {
@@ -323,10 +334,7 @@ Sweep make_sweep_of_sets(const AdHocCase& base, const std::filesystem::path& fil
                                  "{{\"name\": {{\"parameter\": value, ...}}, ...}}",
                                  where));
   }
-  if (sets.size() > sweep_run_cap && !force) {
-    throw InputError(fmt::format("sweep: {} runs, more than the cap of {}; pass --force to run them all", sets.size(),
-                                 sweep_run_cap));
-  }
+  check_run_count(sets.size(), force);
   Sweep sweep;
   sweep.varied = {"set"};
   for (const auto& [set_name, params] : sets.items()) {
@@ -336,12 +344,10 @@ Sweep make_sweep_of_sets(const AdHocCase& base, const std::filesystem::path& fil
       if (!value.is_primitive() || value.is_null()) {
         throw InputError(fmt::format("{}: set '{}': {} must be a number, a bool or a string", where, set_name, name));
       }
-      for (const auto& assignment : base.assignments) {
-        if (assignment.rfind(name + "=", 0) == 0) {
-          throw InputError(fmt::format("{} is both --set and in set '{}': choose one", name, set_name));
-        }
+      if (sets_parameter(base, name)) {
+        throw InputError(fmt::format("{} is both --set and in set '{}': choose one", name, set_name));
       }
-      variant.assignments.push_back(name + "=" + (value.is_string() ? value.get<std::string>() : value.dump()));
+      variant.assignments.push_back(assignment_text(name, value));
     }
     variant.name = fmt::format("sweep.{}.{}.{}", base.algorithm, ad_hoc_input_name(base), case_name_part(set_name));
     for (const AdHocCase& earlier : sweep.variants) {

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "compare/driver.hpp"
 #include "compare/result.hpp"
 
@@ -32,6 +34,14 @@ namespace gt {
 constexpr std::size_t sweep_run_cap = 64;
 
 Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force);
+
+// Whether the base's --set assignments give `name`: a sweep or an A/B comparison may then not
+// vary it.
+bool sets_parameter(const AdHocCase& base, const std::string& name);
+
+// A parameter value from JSON (a named set, a case file's A/B side) as the name=value text of
+// --set, which the declarations parse back: a string as it is, anything else as JSON.
+std::string assignment_text(const std::string& name, const nlohmann::json& value);
 
 // A sweep over named parameter sets read from a JSON file, {"thesis": {"tilt_differences":
 // "central"}, "code": {...}, ...}: one run per set, in the file's order, named

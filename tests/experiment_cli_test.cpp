@@ -25,6 +25,16 @@ gt::testing::ProgramRun run(const std::vector<std::string>& args, const fs::path
   return gt::testing::run_program(groundtruth, args, cwd);
 }
 
+// Runs `args` (which write into `out`) and expects a refusal: exit 2, `message` on stderr, nothing
+// written. `context` says which refusal in a failure message.
+void expect_refusal(const std::vector<std::string>& args, const fs::path& out, const std::string& message,
+                    const fs::path& cwd, const std::string& context = "") {
+  const auto result = run(args, cwd);
+  EXPECT_EQ(result.status, 2) << context << result;
+  EXPECT_THAT(result.err, HasSubstr(message)) << context << result;
+  EXPECT_FALSE(fs::exists(out)) << context;
+}
+
 json read_json(const fs::path& file) {
   std::ifstream in(file);
   return json::parse(in);
@@ -106,10 +116,7 @@ TEST(Sweep, BadVariationsAreRefused) {
     std::vector<std::string> args = {"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--out",
                                      out.string()};
     args.insert(args.end(), extra.begin(), extra.end());
-    const auto result = run(args, work.path());
-    EXPECT_EQ(result.status, 2) << result;
-    EXPECT_THAT(result.err, HasSubstr(message)) << result;
-    EXPECT_FALSE(fs::exists(out));
+    expect_refusal(args, out, message, work.path());
   }
 }
 
@@ -163,18 +170,13 @@ TEST(Sweep, BadSetFilesAreRefused) {
   };
   for (const auto& [text, message] : refusals) {
     std::ofstream(work / "sets.json") << text;
-    const auto result = run({"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--set", "iterations=2",
-                             "--sets", (work / "sets.json").string(), "--out", out.string()},
-                            work.path());
-    EXPECT_EQ(result.status, 2) << text << result;
-    EXPECT_THAT(result.err, HasSubstr(message)) << text << result;
-    EXPECT_FALSE(fs::exists(out));
+    expect_refusal({"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--set", "iterations=2",
+                    "--sets", (work / "sets.json").string(), "--out", out.string()},
+                   out, message, work.path(), text);
   }
-  const auto both = run({"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--vary", "talus_angle=1,2",
-                         "--sets", (work / "sets.json").string(), "--out", out.string()},
-                        work.path());
-  EXPECT_EQ(both.status, 2) << both;
-  EXPECT_FALSE(fs::exists(out));
+  expect_refusal({"sweep", "--algorithm", "erosion.thermal", "--input", volcano, "--vary", "talus_angle=1,2", "--sets",
+                  (work / "sets.json").string(), "--out", out.string()},
+                 out, "excludes", work.path());
 }
 
 // The pipe model's thesis (central differences over 2l) against its code (raw differences) for
@@ -222,10 +224,7 @@ TEST(Ab, BadVariantsAreRefused) {
   for (const auto& [extra, message] : refusals) {
     std::vector<std::string> args = {"ab", "--algorithm", "erosion.pipe", "--input", volcano, "--out", out.string()};
     args.insert(args.end(), extra.begin(), extra.end());
-    const auto result = run(args, work.path());
-    EXPECT_EQ(result.status, 2) << result;
-    EXPECT_THAT(result.err, HasSubstr(message)) << result;
-    EXPECT_FALSE(fs::exists(out));
+    expect_refusal(args, out, message, work.path());
   }
 }
 
@@ -286,11 +285,8 @@ TEST(CaseAb, BadPairsAreRefusedBeforeAnythingRuns) {
     entry["ab"] = ab;
     std::ofstream(work / "pair.json") << json::array({entry}).dump(2);
     const fs::path out = work / "report";
-    const auto result = run({"run", "mine.pair.*", "--cases", (work / "pair.json").string(), "--out", out.string()},
-                            work.path());
-    EXPECT_EQ(result.status, 2) << result;
-    EXPECT_THAT(result.err, HasSubstr(message)) << result;
-    EXPECT_FALSE(fs::exists(out));
+    expect_refusal({"run", "mine.pair.*", "--cases", (work / "pair.json").string(), "--out", out.string()}, out,
+                   message, work.path());
   }
 }
 

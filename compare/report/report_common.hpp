@@ -142,6 +142,10 @@ std::optional<FidelityTable> fidelity_table(const Report& report);
 // forbids become U+FFFD.
 std::string escape_markup(std::string_view text);
 
+// The start of a page of the report folder, through <body>: the doctype, UTF-8, `title`
+// (escaped here) and `style` (CSS, as given).
+std::string page_head(std::string_view title, std::string_view style);
+
 // ASCII letters, digits and - . _ ~ (RFC 3986 unreserved characters).
 bool unreserved(char c);
 

@@ -387,10 +387,7 @@ void append_mutation(std::string& out, const Report& report) {
 }  // namespace
 
 void write_report_html(const Report& report, const std::filesystem::path& file) {
-  std::string out = fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>groundtruth report</title>\n"
-      "<style>{}</style>\n</head>\n<body>\n",
-      style);
+  std::string out = page_head("groundtruth report", style);
   append_header(out, report);
   append_summary(out, report);
   append_baseline(out, report);
