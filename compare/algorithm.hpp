@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "compare/benchmark.hpp"
 #include "compare/field_twin.hpp"
 #include "compare/inputs.hpp"
+#include "compare/peers/peer.hpp"
 #include "compare/result.hpp"
 #include "core/grid.hpp"
 #include "core/memory.hpp"
@@ -34,6 +36,14 @@ struct PreparedTwin {
 // .npy volume when given one, else the seed's noise), or nothing at all (the endless cave).
 enum class AdHocInput { heightmap, mesh, optional_volume, none };
 
+// Bytes read plus written per cell (voxel, sample) and iteration by each backend's passes at the
+// default parameters, as counted in the comment beside the kernels; unset where not counted. The
+// performance table divides them by the measured copy bandwidth: its floor column.
+struct MemoryTraffic {
+  std::optional<double> cpu;
+  std::optional<double> gpu;
+};
+
 struct Algorithm {
   std::string name;     // e.g. erosion.thermal
   std::string summary;  // one line
@@ -52,6 +62,9 @@ struct Algorithm {
   std::function<std::vector<BenchmarkRow>(const BenchmarkOptions& options, bool gpu_available,
                                           const Environment& environment)>
       benchmark = {};
+  MemoryTraffic traffic;
+  // Other libraries' implementations of the same work, timed beside the generic field-twin rows.
+  std::vector<Peer> peers;
   // The keys a case's "expect" may hold (core/json_keys.hpp require_shape): what this algorithm's
   // checks read. Any other key is bad input, so a typo cannot silently drop a check.
   nlohmann::json expect_shape = nlohmann::json::object();

@@ -1,12 +1,16 @@
 #include "compare/benchmark.hpp"
 
 #include <algorithm>
+#include <fnmatch.h>
 
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/benchmark_table.hpp"
 #include "compare/inputs.hpp"
 #include "compare/timing.hpp"
+#include "core/errors.hpp"
+#include "gpu/memory/copy_bandwidth.hpp"
 #include "gpu/timing.hpp"
 
 namespace gt {
@@ -18,6 +22,73 @@ BenchmarkRow row(const std::string& algorithm, const std::string& backend, int s
                       .median_ms = median(times), .device = device};
   result.mcell_iterations_per_s = static_cast<double>(size) * size * iterations / (result.median_ms * 1e-3) / 1e6;
   return result;
+}
+
+// A peer timed on the grid the twin's parameters lay out (noise: one sample per cell), on the
+// thread that times our CPU reference; a peer that cannot take the parameters gets a note.
+BenchmarkRow peer_row(const Peer& peer, const std::string& algorithm, const nlohmann::json& params, int size, int reps,
+                      const Environment& environment) {
+  std::function<void()> work;
+  try {
+    work = peer.prepare(params, size, size);
+  } catch (const std::exception& error) {
+    return {.algorithm = algorithm, .backend = "peer", .size = size, .iterations = 1, .device = environment.cpu,
+            .note = error.what(), .peer = peer.name};
+  }
+  work();
+  std::vector<double> times;
+  for (int rep = 0; rep < reps; ++rep) times.push_back(cpu_wall_ms(work));
+  BenchmarkRow result = row(algorithm, "peer", size, 1, reps, times, environment.cpu);
+  result.peer = peer.name;
+  return result;
+}
+
+// The bandwidth probe: one float copied per element over buffers far larger than any cache
+// (64 MiB each), on the CPU (std::copy, one thread) and through GL (gpu/memory/copy_bandwidth.hpp).
+// Its bytes per cell are the 4 read and 4 written.
+constexpr int probe_side = 4096;
+
+BenchmarkRow probe_row(const std::string& backend, const std::vector<double>& times, int reps, const std::string& device) {
+  BenchmarkRow result = row(bandwidth_probe_name, backend, probe_side, 1, reps, times, device);
+  result.bytes_per_cell = 8.0;
+  result.detail = fmt::format("copy bandwidth {:.3g} GB/s (one float read and written per cell): the floor of this "
+                              "device's rows",
+                              8.0 * benchmark_work(result) / (result.median_ms * 1e-3) / 1e9);
+  return result;
+}
+
+void benchmark_bandwidth(const BenchmarkOptions& options, bool gpu_available, const Environment& environment,
+                         std::vector<BenchmarkRow>& rows) {
+  const std::size_t elements = std::size_t{probe_side} * probe_side;
+  require_memory(memory_for(static_cast<double>(elements), "floats", 2 * sizeof(float)), "the bandwidth probe");
+  {
+    const std::vector<float> source(elements, 1.0f);
+    std::vector<float> target(elements);
+    std::copy(source.begin(), source.end(), target.begin());
+    std::vector<double> times;
+    for (int rep = 0; rep < options.reps; ++rep) {
+      times.push_back(cpu_wall_ms([&] { std::copy(source.begin(), source.end(), target.begin()); }));
+    }
+    rows.push_back(probe_row("cpu", times, options.reps, environment.cpu));
+  }
+  if (!gpu_available) return;
+  const gpu::CopyKernel kernel(elements);
+  kernel.run();
+  std::vector<double> times;
+  for (int rep = 0; rep < options.reps; ++rep) times.push_back(gpu_wall_ms([&] { kernel.run(); }));
+  rows.push_back(probe_row("gpu", times, options.reps, environment.gl_renderer));
+}
+
+// Each row's bytes per cell from its algorithm's declaration, where the row did not set its own.
+void fill_traffic(std::vector<BenchmarkRow>& rows) {
+  for (BenchmarkRow& row : rows) {
+    if (row.bytes_per_cell || !row.peer.empty() || row.algorithm == bandwidth_probe_name) continue;
+    const auto known = std::find_if(algorithms().begin(), algorithms().end(),
+                                    [&](const Algorithm& algorithm) { return algorithm.name == row.algorithm; });
+    if (known == algorithms().end()) continue;
+    if (row.backend == "cpu") row.bytes_per_cell = known->traffic.cpu;
+    if (row.backend == "gpu") row.bytes_per_cell = known->traffic.gpu;
+  }
 }
 
 // A cone steep enough everywhere on its flank that every iteration moves material, with noise
@@ -47,6 +118,10 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
       cpu_times.push_back(cpu_wall_ms([&] { prepared.twin.reference_double(prepared.input); }));
     }
     rows.push_back(row(algorithm.name, "cpu", size, iterations, options.reps, cpu_times, environment.cpu));
+    for (const Peer& peer : algorithm.peers) {
+      progress.stage("peer");
+      rows.push_back(peer_row(peer, algorithm.name, params, size, options.reps, environment));
+    }
     if (!gpu_available) continue;
     progress.stage("gpu");
     const auto input = prepared.input.cast<float>();
@@ -62,13 +137,42 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
   }
 }
 
+bool has_rows(const Algorithm& algorithm) { return algorithm.benchmark || algorithm.has_field_twin; }
+
+// The algorithms of the table that match the options' patterns, in the table's order.
+std::vector<const Algorithm*> selected_algorithms(const BenchmarkOptions& options) {
+  const auto matches = [](const std::string& pattern, const Algorithm& algorithm) {
+    return has_rows(algorithm) && fnmatch(pattern.c_str(), algorithm.name.c_str(), 0) == 0;
+  };
+  for (const std::string& pattern : options.patterns) {
+    if (std::none_of(algorithms().begin(), algorithms().end(), [&](const Algorithm& a) { return matches(pattern, a); })) {
+      throw InputError(fmt::format("no algorithm of the performance table matches '{}' (`groundtruth list` names them)",
+                                   pattern));
+    }
+  }
+  std::vector<const Algorithm*> selected;
+  for (const Algorithm& algorithm : algorithms()) {
+    const bool wanted = options.patterns.empty() ? has_rows(algorithm)
+                                                 : std::any_of(options.patterns.begin(), options.patterns.end(),
+                                                               [&](const std::string& p) { return matches(p, algorithm); });
+    if (wanted) selected.push_back(&algorithm);
+  }
+  return selected;
+}
+
 }  // namespace
 
 std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool gpu_available,
                                          const Environment& environment) {
+  const auto selected = selected_algorithms(options);
   std::vector<BenchmarkRow> rows;
-  Progress progress(static_cast<int>(2 * algorithms().size() * options.sizes.size()), options.quiet);
-  for (const auto& algorithm : algorithms()) {
+  std::size_t expected_rows = 1;  // the probe, then CPU, GPU and each peer at each size
+  for (const Algorithm* algorithm : selected) expected_rows += (2 + algorithm->peers.size()) * options.sizes.size();
+  Progress progress(static_cast<int>(expected_rows), options.quiet);
+  progress.start_case(1, "benchmark memory.copy (the bandwidth floor)");
+  benchmark_bandwidth(options, gpu_available, environment, rows);
+  for (const Algorithm* selected_algorithm : selected) {
+    const Algorithm& algorithm = *selected_algorithm;
     if (algorithm.benchmark) {
       progress.start_case(static_cast<int>(rows.size()) + 1, "benchmark " + algorithm.name);
       const auto own_rows = algorithm.benchmark(options, gpu_available, environment);
@@ -78,6 +182,8 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
     }
   }
   progress.finish();
+  fill_traffic(rows);
+  annotate_benchmarks(rows);
   return rows;
 }
 

@@ -121,6 +121,18 @@ struct BenchmarkRow {
   std::optional<double> mtriangles_per_s;  // meshers: output triangles per second, millions
   std::string note;           // why a row has no time (the size did not fit the device)
   std::string detail;         // what a timed row measured beyond its numbers (GPU passes per step, a published source)
+  // A peer's row: the library and function timed on the same input (e.g. "VTK 9.1 vtkFlyingEdges3D");
+  // empty for groundtruth's own twins and for the bandwidth probe.
+  std::string peer;
+  // Memory traffic counted from the kernel's passes: bytes read plus written per cell (voxel,
+  // sample) and iteration, as stated beside each kernel. Unset where it was not counted.
+  std::optional<double> bytes_per_cell;
+  // The memory-bound floor: bytes_per_cell · cells · iterations over the copy bandwidth measured on
+  // the same device in the same run (compare/benchmark_table.hpp), and median_ms / floor_ms.
+  std::optional<double> floor_ms;
+  // median_ms over the fastest peer's on the same algorithm and size (our rows only), and its name.
+  std::optional<double> times_peer;
+  std::string fastest_peer;
 };
 
 // `groundtruth mutants` (compare/mutation.hpp): each registered mutant run on its cases in a worker.

@@ -25,6 +25,9 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   # plots in reports
   python3-matplotlib
+  # peers timed beside the twins in the performance table (compare/peers/): libnoise linked,
+  # VTK's isosurface filters driven from Python (lighter than libvtk9-dev's JDK, MPI and Qt)
+  libnoise-dev python3-vtk9
   # the Python module (python/): pybind11 and Python's headers to build it, numpy for its arrays,
   # pytest for its suite
   pybind11-dev python3-dev python3-numpy python3-pytest

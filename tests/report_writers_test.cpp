@@ -127,10 +127,11 @@ Report sample_report() {
       {.algorithm = "erosion.thermal", .backend = "cpu", .size = 256, .iterations = 50, .reps = 3, .median_ms = 120.0,
        .mcell_iterations_per_s = 27.3, .device = "Intel Xeon"},
       {.algorithm = "erosion.thermal", .backend = "gpu", .size = 256, .iterations = 50, .reps = 5, .median_ms = 12.0,
-       .mcell_iterations_per_s = 273.0, .device = "llvmpipe", .detail = "2 compute passes per iteration"},
+       .mcell_iterations_per_s = 273.0, .device = "llvmpipe", .detail = "2 compute passes per iteration",
+       .bytes_per_cell = 52.0, .floor_ms = 6.0},
       {.algorithm = "cave.marching_tetrahedra", .backend = "cpu", .size = 64, .iterations = 1, .reps = 3,
        .median_ms = 50.0, .mcell_iterations_per_s = 5.24288, .device = "Intel Xeon", .dimensions = 3,
-       .mtriangles_per_s = 12.5},
+       .mtriangles_per_s = 12.5, .times_peer = 4.0, .fastest_peer = "VTK vtkFlyingEdges3D"},
       {.algorithm = "cave.marching_tetrahedra", .backend = "gpu", .size = 256, .iterations = 1, .device = "llvmpipe",
        .dimensions = 3, .note = "triangles need 444 MB, more than GL_MAX_SHADER_STORAGE_BLOCK_SIZE"}};
   report.plots = {{"", "plot", "plot unavailable: test"}};
@@ -256,6 +257,11 @@ TEST_F(ReportFiles, JsonFollowsSchema1) {
   EXPECT_EQ(report["benchmarks"][2]["dimensions"], 3);
   EXPECT_EQ(report["benchmarks"][2]["mtriangles_per_s"], 12.5);
   EXPECT_EQ(report["benchmarks"][1]["detail"], "2 compute passes per iteration");
+  EXPECT_EQ(report["benchmarks"][1]["bytes_per_cell"], 52.0);
+  EXPECT_EQ(report["benchmarks"][1]["times_floor"], 2.0);
+  EXPECT_EQ(report["benchmarks"][2]["times_peer"], 4.0);
+  EXPECT_TRUE(report["benchmarks"][0]["floor_ms"].is_null());
+  EXPECT_TRUE(report["scaling"].empty());  // no line has 4 sizes
   EXPECT_EQ(report["benchmarks"][0]["detail"], "");
   EXPECT_NE(report["benchmarks"][3]["note"].get<std::string>().find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos);
   EXPECT_EQ(report["summary"], json({{"pass", 1}, {"fail", 3}, {"warn", 1}, {"inconclusive", 0}, {"skip", 1},
@@ -326,10 +332,12 @@ TEST_F(ReportFiles, MarkdownHasSummaryDetailsAndBenchmarks) {
   EXPECT_NE(markdown.find("RUN FAILED"), std::string::npos);
   EXPECT_NE(markdown.find("### erosion.thermal.diagonal.volcano — fail"), std::string::npos);
   EXPECT_EQ(markdown.find("### erosion.thermal.cardinal.volcano"), std::string::npos);  // all checks pass
-  EXPECT_NE(markdown.find("| erosion.thermal | gpu | llvmpipe | 256×256 | 50 | 5 | 12 | 273 |  | 2 compute passes per iteration |"), std::string::npos);
-  EXPECT_NE(markdown.find("| cave.marching_tetrahedra | cpu | Intel Xeon | 64³ | 1 | 3 | 50 | 5.24 | 12.5 |  |"), std::string::npos)
+  // B/cell, × floor (median over floor), × peer (and which), note
+  EXPECT_NE(markdown.find("| erosion.thermal | gpu | llvmpipe | 256×256 | 50 | 5 | 12 | 273 |  | 52 | 2× |  | 2 compute passes per iteration |"), std::string::npos)
       << markdown;
-  EXPECT_NE(markdown.find("| 256³ | 1 | 0 | — | — | — | not run: triangles need 444 MB"), std::string::npos);
+  EXPECT_NE(markdown.find("| cave.marching_tetrahedra | cpu | Intel Xeon | 64³ | 1 | 3 | 50 | 5.24 | 12.5 |  |  | 4× VTK vtkFlyingEdges3D |  |"), std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("| 256³ | 1 | 0 | — | — | — |  |  |  | not run: triangles need 444 MB"), std::string::npos);
   EXPECT_NE(markdown.find("not run: triangles need 444 MB"), std::string::npos);
   EXPECT_NE(markdown.find("| 2 compute passes per iteration |"), std::string::npos);
   EXPECT_NE(markdown.find("| nan |"), std::string::npos);

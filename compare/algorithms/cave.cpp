@@ -55,6 +55,7 @@
 #include "compare/checks/mesh.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/field_files.hpp"
+#include "compare/peers/vtk_isosurface.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
 #include "core/params/cave.hpp"
@@ -432,29 +433,52 @@ BenchmarkRow mesher_row(const std::string& backend, int side, int reps, const st
   return row;
 }
 
+// VTK's flying edges and marching cubes on the same density samples, as peer rows; one row with
+// the reason when VTK cannot be run.
+void add_vtk_peer_rows(const Volume<double>& density, const CaveParams& params, int reps, const Environment& environment,
+                       std::vector<BenchmarkRow>& rows) {
+  const int side = params.size[0];
+  try {
+    for (const IsosurfacePeerRun& run : run_vtk_isosurface(density, params.threshold, reps)) {
+      BenchmarkRow row = mesher_row("peer", side, reps, run.ms, run.triangles, environment.cpu);
+      row.peer = run.name;
+      row.detail = "the same density samples, isosurface only (no capping faces)";
+      rows.push_back(row);
+    }
+  } catch (const std::exception& error) {
+    rows.push_back({.algorithm = "cave.marching_tetrahedra", .backend = "peer", .size = side, .iterations = 1,
+                    .device = environment.cpu, .dimensions = 3, .note = error.what(), .peer = "VTK"});
+  }
+}
+
 std::vector<BenchmarkRow> benchmark_mesher(const BenchmarkOptions& options, bool gpu_available,
                                            const Environment& environment) {
   std::vector<BenchmarkRow> rows;
   for (const int side : benchmark_sides) {
     CaveParams params;
     params.size = {side, side, side};
+    const auto density = reference::cave_density<double>(params);
     std::vector<double> cpu_times;
     std::size_t triangles = 0;
     for (int rep = 0; rep < options.reps; ++rep) {
       cpu_times.push_back(cpu_wall_ms([&] {
-        const auto density = reference::cave_density<double>(params);
         triangles = reference::marching_tetrahedra(density, params.threshold, params.solid, lattice_origin(params))
                         .triangles.size();
       }));
     }
-    rows.push_back(mesher_row("cpu", side, options.reps, cpu_times, triangles, environment.cpu));
+    BenchmarkRow cpu_row = mesher_row("cpu", side, options.reps, cpu_times, triangles, environment.cpu);
+    cpu_row.detail = "meshing only: the density is sampled beforehand";
+    rows.push_back(cpu_row);
+    add_vtk_peer_rows(density, params, options.reps, environment, rows);
     if (!gpu_available) continue;
     try {
       gpu::MarchingTetrahedra mesher(params);
       mesher.run();
       std::vector<double> gpu_times;
       for (int rep = 0; rep < options.reps; ++rep) gpu_times.push_back(gpu_wall_ms([&] { mesher.run(); }));
-      rows.push_back(mesher_row("gpu", side, options.reps, gpu_times, triangles, environment.gl_renderer));
+      BenchmarkRow gpu_row = mesher_row("gpu", side, options.reps, gpu_times, triangles, environment.gl_renderer);
+      gpu_row.detail = "density pass included";
+      rows.push_back(gpu_row);
     } catch (const std::runtime_error& error) {
       rows.push_back({.algorithm = "cave.marching_tetrahedra", .backend = "gpu", .size = side, .iterations = 1,
                       .device = environment.gl_renderer, .dimensions = 3, .note = error.what()});
@@ -492,6 +516,9 @@ std::vector<Algorithm> cave_algorithms() {
        .has_field_twin = false,
        .ad_hoc_input = AdHocInput::optional_volume,
        .benchmark = benchmark_mesher,
+       // Counted in reference/cave/marching_tetrahedra.cpp (meshing only, as the table times it) and
+       // gpu/cave/marching_tetrahedra.cpp (density pass included); per voxel, output not counted.
+       .traffic = {.cpu = 16.0, .gpu = 56.0},
        .expect_shape = {{"triangles", nullptr}},
        .memory = block_memory},
       {.name = "cave.marching_cubes",

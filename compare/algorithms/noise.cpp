@@ -592,6 +592,12 @@ const ParamSpecs& specs_of(const NoiseAlgorithm& entry) {
   return position->second;
 }
 
+std::vector<Peer> noise_peers(const NoiseAlgorithm& entry) {
+  std::vector<Peer> peers = glm_noise_peers(entry.basis, entry.fractal);
+  for (Peer& peer : libnoise_peers(entry.basis, entry.fractal)) peers.push_back(std::move(peer));
+  return peers;
+}
+
 }  // namespace
 
 std::vector<Algorithm> noise_algorithms() {
@@ -605,6 +611,9 @@ std::vector<Algorithm> noise_algorithms() {
                       return prepare_noise(entry.basis, entry.fractal, resolved, input.heights);
                     },
                     .iterates = false,
+                    // Counted in reference/noise/noise_field.cpp and gpu/noise/noise_field.cpp.
+                    .traffic = {.cpu = 16.0, .gpu = 4.0},
+                    .peers = noise_peers(entry),
                     .expect_shape = noise_spec_shape(),
                     // Measured 112 B a sample (noise.fbm, 1024² vs 256², both backends).
                     .memory = [](const nlohmann::json&, const LoadedInput& input) {

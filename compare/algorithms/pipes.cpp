@@ -880,6 +880,9 @@ Algorithm pipe_algorithm() {
           .iterates = false,
           .has_field_twin = false,
           .benchmark = benchmark_pipes,
+          // Counted in reference/erosion/pipes.cpp (step() as the table times it, ledger included)
+          // and gpu/erosion/pipes.cpp, at the benchmark's parameters (4 pipes, flux transport).
+          .traffic = {.cpu = 607.0, .gpu = 308.0},
           .expect_shape = descriptor_expect_shape(),
           // Measured on 1024² (both backends, report included): 959 B a cell with 1 checkpoint, and
           // 133 B a cell for each further one (the states kept for shadow steps and ref<double>).

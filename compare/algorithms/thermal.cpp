@@ -229,6 +229,8 @@ Algorithm thermal_algorithm() {
           .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
             return prepare_thermal(resolved, input.heights);
           },
+          // Counted in reference/erosion/thermal.cpp and gpu/erosion/thermal.cpp.
+          .traffic = {.cpu = 88.0, .gpu = 52.0},
           .expect_shape = talus_spec_shape(),
           // Measured 395 B a cell (1024² vs 256², 64 iterations, both backends, 8 shadow checkpoints).
           .memory = [](const nlohmann::json&, const LoadedInput& input) {
@@ -244,6 +246,8 @@ Algorithm thermal_jako_algorithm() {
           .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
             return prepare_thermal_jako(resolved, input.heights);
           },
+          // Counted in reference/erosion/thermal_jako.cpp and gpu/erosion/thermal_jako.cpp.
+          .traffic = {.cpu = 152.0, .gpu = 84.0},
           .expect_shape = field_spec_shape(),
           // Measured 438 B a cell (1024² vs 256², 64 iterations, both backends, 8 shadow checkpoints).
           .memory = [](const nlohmann::json&, const LoadedInput& input) {

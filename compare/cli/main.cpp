@@ -4,7 +4,7 @@
 //       [--cases FILE_OR_FOLDER] [--mutant NAME] [--require-gpu] [--quiet]
 //   report [--out] [--gl] [--no-benchmark] [--no-mutants] [--require-gpu]
 //                                      the default suite, benchmarks and mutants into reports/latest
-//   bench [--sizes] [--iterations]     only the performance table
+//   bench [PATTERN...] [--sizes] [--iterations]  only the performance table (with its peers and floor)
 //   mutants [PATTERN...] [--list] [--json] [--out]
 //                                      each registered mutant on its cases: which checks kill it
 //   check-mesh FILE [--json]           the mesh checks on an OFF, OBJ, PLY or STL file
@@ -312,6 +312,7 @@ int main(int argc, char** argv) {
   gt::BenchmarkOptions bench_options;
   auto* bench = app.add_subcommand("bench", "only the performance table");
   add_shared_options(*bench, bench_shared, "groundtruth-bench");
+  bench->add_option("patterns", bench_options.patterns, "algorithm-name patterns, e.g. 'noise.*' (all when none)");
   bench->add_option("--sizes", bench_options.sizes, "grid sides, comma-separated")
       ->delimiter(',')
       ->check(CLI::Range(8, 8192))

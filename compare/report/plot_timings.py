@@ -4,9 +4,10 @@
 Usage: plot_timings.py ROWS.json OUT.png
 
 ROWS.json is the "benchmarks" array of report.json (or a whole report.json). One line per
-(algorithm, backend), log-log axes, the devices named in the title. Rows whose numbers are null
-(non-finite in the run) are left out. Exits 3 with a one-line reason when matplotlib is missing,
-2 on bad input; compare/report/plots.cpp shows the last line of output as the reason.
+(algorithm, backend), one per peer library for peers' rows, log-log axes, the devices named in
+the title. Rows whose numbers are null (non-finite in the run) are left out. Exits 3 with a
+one-line reason when matplotlib is missing, 2 on bad input; compare/report/plots.cpp shows the
+last line of output as the reason.
 """
 import json
 import sys
@@ -20,11 +21,16 @@ def load_rows(path):
     return [r for r in rows if r.get("median_ms") and r.get("size") and not r.get("note")]
 
 
+def line_name(row):
+    """The backend, or "peer: NAME" for a peer library's row."""
+    return f"peer: {row['peer']}" if row.get("peer") else row["backend"]
+
+
 def series_by_line(rows):
-    """{(algorithm, backend): [(size, median_ms, mcell_per_s), ...] sorted by size}."""
+    """{(algorithm, backend or peer): [(size, median_ms, mcell_per_s), ...] sorted by size}."""
     lines = defaultdict(list)
     for r in rows:
-        lines[(r["algorithm"], r["backend"])].append(
+        lines[(r["algorithm"], line_name(r))].append(
             (r["size"], r["median_ms"], r.get("mcell_iterations_per_s")))
     return {key: sorted(points) for key, points in sorted(lines.items())}
 
@@ -44,7 +50,7 @@ def plot(rows, out_path):
     lines = series_by_line(rows)
     algorithms = sorted({algorithm for algorithm, _ in lines})
     colours = {algorithm: plt.get_cmap("tab20")(i % 20) for i, algorithm in enumerate(algorithms)}
-    styles = {"gpu": "-o", "cpu": "--s"}  # anything else (published figures): dotted triangles
+    styles = {"gpu": "-o", "cpu": "--s"}  # anything else (published figures, peers): dotted triangles
     legend_rows = (len(lines) + 2) // 3
     legend_height = 0.3 + 0.2 * legend_rows  # inches
     height = 5.0 + legend_height

@@ -1,31 +1,22 @@
 // Runs plot_timings.py on the benchmark rows (see plots.hpp).
 //
 // The rows go to a temporary JSON file (the "benchmarks" array of report.json); the script runs
-// through posix_spawn with an argument vector (no shell), its stdout and stderr captured in a
-// temporary log whose last line becomes the reason when it fails. Both temporaries are removed.
+// through run_logged (compare/subprocess.hpp). Both temporaries are removed.
 #include "compare/report/plots.hpp"
 
-#include <atomic>
-#include <cerrno>
-#include <cstring>
-#include <fcntl.h>
 #include <fstream>
 #include <set>
-#include <spawn.h>
 #include <stdexcept>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "compare/report/report_common.hpp"
+#include "compare/subprocess.hpp"
 
 #if !defined(GT_PYTHON_WITH_MATPLOTLIB) || !defined(GT_SOURCE_DIR)
 #error "compare/report/plots.cpp needs the compile definitions GT_PYTHON_WITH_MATPLOTLIB and GT_SOURCE_DIR"
 #endif
-
-extern char** environ;
 
 namespace gt {
 
@@ -36,57 +27,6 @@ constexpr const char* timings_script = GT_SOURCE_DIR "/compare/report/plot_timin
 constexpr const char* series_script = GT_SOURCE_DIR "/compare/report/plot_series.py";
 constexpr const char* plot_file = "timings.png";
 
-// Removes its files when it goes out of scope.
-struct TemporaryFiles {
-  std::vector<std::filesystem::path> paths;
-  ~TemporaryFiles() {
-    std::error_code ignored;
-    for (const auto& path : paths) std::filesystem::remove(path, ignored);
-  }
-};
-
-std::filesystem::path temporary_path(std::string_view suffix) {
-  static std::atomic<int> counter = 0;
-  return std::filesystem::temp_directory_path() / fmt::format("gt-plot-{}-{}{}", getpid(), counter++, suffix);
-}
-
-std::string last_line(const std::filesystem::path& log) {
-  std::ifstream in(log);
-  std::string line;
-  std::string last;
-  while (std::getline(in, line)) {
-    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  }
-  return last;
-}
-
-// Runs argv with stdout and stderr going to `log`; returns "" on exit status 0, otherwise why not.
-std::string run_logged(const std::vector<std::string>& arguments, const std::filesystem::path& log) {
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t child = 0;
-  const int spawn_error = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawn_error != 0) return fmt::format("cannot run {}: {}", arguments[0], std::strerror(spawn_error));
-
-  int status = 0;
-  while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) return fmt::format("waiting for {} failed: {}", arguments[0], std::strerror(errno));
-  }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
-  const std::string exit = WIFEXITED(status) ? fmt::format("exit status {}", WEXITSTATUS(status))
-                                             : fmt::format("signal {}", WTERMSIG(status));
-  const std::string output = last_line(log);
-  const std::string name = std::filesystem::path(arguments[1]).filename().string();
-  return output.empty() ? fmt::format("{} failed ({})", name, exit) : fmt::format("{} failed ({}): {}", name, exit, output);
-}
-
 void write_json(const nlohmann::json& document, const std::filesystem::path& file) {
   std::ofstream out(file);
   out << document.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -96,8 +36,8 @@ void write_json(const nlohmann::json& document, const std::filesystem::path& fil
 // Runs `script` on `document` to draw `png`; "" on success, otherwise why not.
 std::string draw(const char* script, const nlohmann::json& document, const std::filesystem::path& png) {
   if (std::string_view(python).empty()) return "no Python with matplotlib was found when the build was configured";
-  const std::filesystem::path input = temporary_path(".json");
-  const std::filesystem::path log = temporary_path(".log");
+  const std::filesystem::path input = temporary_path("gt-plot", ".json");
+  const std::filesystem::path log = temporary_path("gt-plot", ".log");
   const TemporaryFiles temporaries{{input, log}};
   write_json(document, input);
   std::error_code ignored;

@@ -276,6 +276,40 @@ std::string benchmark_note_text(const BenchmarkRow& row) {
   return row.note.empty() ? row.detail : "not run: " + row.note;
 }
 
+std::string benchmark_backend_text(const BenchmarkRow& row) {
+  return row.peer.empty() ? row.backend : "peer: " + row.peer;
+}
+
+namespace {
+
+std::string times_text(const std::optional<double>& ratio) {
+  return ratio ? fmt::format("{:.3g}×", *ratio) : "";
+}
+
+}  // namespace
+
+std::string benchmark_bytes_text(const BenchmarkRow& row) {
+  return row.bytes_per_cell ? fmt::format("{:g}", *row.bytes_per_cell) : "";
+}
+
+std::string benchmark_floor_text(const BenchmarkRow& row) {
+  return times_text(row.floor_ms ? std::optional<double>(row.median_ms / *row.floor_ms) : std::nullopt);
+}
+
+std::string benchmark_peer_text(const BenchmarkRow& row) {
+  return row.times_peer ? fmt::format("{} {}", times_text(row.times_peer), row.fastest_peer) : "";
+}
+
+std::string scaling_sizes_text(const ScalingFit& fit) {
+  const auto side = [&](int size) { return fit.dimensions == 3 ? fmt::format("{}³", size) : fmt::format("{}²", size); };
+  return fmt::format("{}–{} ({})", side(fit.sizes.front()), side(fit.sizes.back()), fit.sizes.size());
+}
+
+std::string scaling_exponent_text(const ScalingFit& fit) {
+  return fit.linear() ? fmt::format("{:.2f} linear", fit.exponent)
+                      : fmt::format("{:.2f} superlinear (> {})", fit.exponent, linear_exponent_limit);
+}
+
 }  // namespace gt::report_detail
 
 namespace gt {

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/benchmark_table.hpp"
 #include "compare/result.hpp"
 
 namespace gt::report_detail {
@@ -66,6 +67,16 @@ std::string benchmark_time_text(const BenchmarkRow& row);
 std::string benchmark_rate_text(const BenchmarkRow& row);
 std::string benchmark_triangle_rate_text(const BenchmarkRow& row);
 std::string benchmark_note_text(const BenchmarkRow& row);
+// "gpu", "cpu", or "peer: VTK 9.1.0 vtkFlyingEdges3D (...)" for a peer's row.
+std::string benchmark_backend_text(const BenchmarkRow& row);
+// Bytes read plus written per cell and iteration ("24"), "" where not counted.
+std::string benchmark_bytes_text(const BenchmarkRow& row);
+// "3.1×" (median over the memory-bound floor, median over the fastest peer's), "" without one.
+std::string benchmark_floor_text(const BenchmarkRow& row);
+std::string benchmark_peer_text(const BenchmarkRow& row);
+// The scaling table's cells: "32³–256³ (4)" and "1.07 linear" or "1.42 superlinear (> 1.15)".
+std::string scaling_sizes_text(const ScalingFit& fit);
+std::string scaling_exponent_text(const ScalingFit& fit);
 // "≤ threshold" plus "(warn ≤ loose)" when a loose bound exists; "" when neither exists.
 std::string format_bounds(const Check& check);
 

@@ -44,6 +44,7 @@ table.environment th { width: 9em; }
 .summary .badge { font-size: 1.05em; margin-right: .4em; }
 section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
 .note { color: #555; font-style: italic; }
+.performance tr.peer td { background: #f3f6fb; } .performance tr.superlinear td { background: #fbeaea; }
 pre.error { background: #fbeaea; padding: .6em; white-space: pre-wrap; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
 figure { margin: 0; }
@@ -314,6 +315,28 @@ void append_case_section(std::string& out, const CaseResult& result) {
   out += "</section>\n";
 }
 
+// The fitted exponent of time against work for every line of the table timed at enough sizes.
+void append_scaling(std::string& out, const Report& report) {
+  const auto fits = fit_scaling(report.benchmarks);
+  out += fmt::format("<h3>Scaling</h3>\n<p class=\"note\">Exponent p of time ∝ (cells · iterations)<sup>p</sup>, least "
+                     "squares over each line's sizes (at least {}); above {} the work that is linear in the cells "
+                     "scales worse than linearly. × floor: median over the memory-bound floor, the row's bytes per "
+                     "cell at the copy bandwidth measured by memory.copy on the same device.</p>\n",
+                     scaling_min_sizes, linear_exponent_limit);
+  if (fits.empty()) {
+    out += fmt::format("<p class=\"note\">No line was timed at {} sizes or more.</p>\n", scaling_min_sizes);
+    return;
+  }
+  out += "<table>\n<tr><th>device</th><th>algorithm</th><th>backend</th><th>sizes</th><th>exponent</th></tr>\n";
+  for (const ScalingFit& fit : fits) {
+    out += fmt::format("<tr{}><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td></tr>\n",
+                       fit.linear() ? "" : " class=\"superlinear\"", h(fit.device), h(fit.algorithm),
+                       h(fit.peer.empty() ? fit.backend : "peer: " + fit.peer), h(scaling_sizes_text(fit)),
+                       h(scaling_exponent_text(fit)));
+  }
+  out += "</table>\n";
+}
+
 void append_performance(std::string& out, const Report& report) {
   out += "<section class=\"performance\">\n<h2>Performance</h2>\n";
   if (report.benchmarks.empty()) {
@@ -321,17 +344,19 @@ void append_performance(std::string& out, const Report& report) {
   } else {
     out += "<table>\n<tr><th>device</th><th>algorithm</th><th>backend</th><th>size</th><th>iterations</th>"
            "<th>reps</th><th>median ms</th><th>Mcell-it/s (noise: M samples/s; cave: M voxels/s)</th>"
-           "<th>M triangles/s</th><th>note</th></tr>\n";
+           "<th>M triangles/s</th><th>B/cell</th><th>× floor</th><th>× peer</th><th>note</th></tr>\n";
     for (const BenchmarkRow& row : report.benchmarks) {
       out += fmt::format(
-          "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
+          "<tr{}><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
           "<td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
-          "<td>{}</td></tr>\n",
-          h(row.device), h(row.algorithm), h(row.backend), h(benchmark_size_text(row)), row.iterations, row.reps,
-          h(benchmark_time_text(row)), h(benchmark_rate_text(row)), h(benchmark_triangle_rate_text(row)),
-          h(benchmark_note_text(row)));
+          "<td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
+          row.peer.empty() ? "" : " class=\"peer\"", h(row.device), h(row.algorithm), h(benchmark_backend_text(row)),
+          h(benchmark_size_text(row)), row.iterations, row.reps, h(benchmark_time_text(row)),
+          h(benchmark_rate_text(row)), h(benchmark_triangle_rate_text(row)), h(benchmark_bytes_text(row)),
+          h(benchmark_floor_text(row)), h(benchmark_peer_text(row)), h(benchmark_note_text(row)));
     }
     out += "</table>\n";
+    append_scaling(out, report);
   }
   for (const Artifact& plot : report.plots) {
     if (plot.path.empty()) {

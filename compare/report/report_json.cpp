@@ -93,6 +93,8 @@ json case_to_json(const CaseResult& result) {
   return out;
 }
 
+json optional_number(const std::optional<double>& value) { return value ? number_or_null(*value) : json(nullptr); }
+
 json benchmark_to_json(const BenchmarkRow& row) {
   return {{"algorithm", row.algorithm},
           {"backend", row.backend},
@@ -103,9 +105,31 @@ json benchmark_to_json(const BenchmarkRow& row) {
           {"mcell_iterations_per_s", number_or_null(row.mcell_iterations_per_s)},
           {"device", row.device},
           {"dimensions", row.dimensions},
-          {"mtriangles_per_s", row.mtriangles_per_s ? number_or_null(*row.mtriangles_per_s) : json(nullptr)},
+          {"mtriangles_per_s", optional_number(row.mtriangles_per_s)},
           {"note", row.note},
-          {"detail", row.detail}};
+          {"detail", row.detail},
+          {"peer", row.peer},
+          {"bytes_per_cell", optional_number(row.bytes_per_cell)},
+          {"floor_ms", optional_number(row.floor_ms)},
+          {"times_floor", row.floor_ms ? number_or_null(row.median_ms / *row.floor_ms) : json(nullptr)},
+          {"times_peer", optional_number(row.times_peer)},
+          {"fastest_peer", row.fastest_peer}};
+}
+
+json scaling_to_json(const std::vector<BenchmarkRow>& rows) {
+  json out = json::array();
+  for (const ScalingFit& fit : fit_scaling(rows)) {
+    out.push_back({{"algorithm", fit.algorithm},
+                   {"backend", fit.backend},
+                   {"peer", fit.peer},
+                   {"device", fit.device},
+                   {"dimensions", fit.dimensions},
+                   {"sizes", fit.sizes},
+                   {"exponent", number_or_null(fit.exponent)},
+                   {"linear", fit.linear()},
+                   {"linear_exponent_limit", linear_exponent_limit}});
+  }
+  return out;
 }
 
 }  // namespace
@@ -133,6 +157,7 @@ json report_to_json(const Report& report) {
   out["cases"] = json::array();
   for (const CaseResult& result : report.cases) out["cases"].push_back(case_to_json(result));
   out["benchmarks"] = report_detail::benchmarks_to_json(report.benchmarks);
+  out["scaling"] = scaling_to_json(report.benchmarks);
   out["summary"] = summary_to_json(report);
   out["expectation_problems"] = report.expectation_problems;
   if (report.mutation) out["mutation"] = mutation_to_json(*report.mutation);

@@ -88,20 +88,41 @@ void append_case_details(std::string& out, const CaseResult& result) {
   if (header_written) out += '\n';
 }
 
+void append_scaling(std::string& out, const Report& report) {
+  const auto fits = fit_scaling(report.benchmarks);
+  out += fmt::format("### Scaling\n\nExponent p of time ∝ (cells · iterations)^p, least squares over each line's sizes (at "
+                     "least {}); above {} linear work scales worse than linearly.\n\n",
+                     scaling_min_sizes, linear_exponent_limit);
+  if (fits.empty()) {
+    out += fmt::format("No line was timed at {} sizes or more.\n\n", scaling_min_sizes);
+    return;
+  }
+  out += "| algorithm | backend | device | sizes | exponent |\n|---|---|---|---|---:|\n";
+  for (const ScalingFit& fit : fits) {
+    out += fmt::format("| {} | {} | {} | {} | {} |\n", cell(fit.algorithm),
+                       cell(fit.peer.empty() ? fit.backend : "peer: " + fit.peer), cell(fit.device),
+                       scaling_sizes_text(fit), scaling_exponent_text(fit));
+  }
+  out += '\n';
+}
+
 void append_benchmarks(std::string& out, const Report& report) {
   out += "## Benchmarks\n\n";
   if (report.benchmarks.empty()) {
     out += "No benchmarks in this run.\n\n";
   } else {
     out += "| algorithm | backend | device | size | iterations | reps | median ms | Mcell-it/s (noise: M samples/s; cave: "
-           "M voxels/s) | M triangles/s | note |\n"
-           "|---|---|---|---:|---:|---:|---:|---:|---:|---|\n";
+           "M voxels/s) | M triangles/s | B/cell | × floor | × peer | note |\n"
+           "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
     for (const BenchmarkRow& row : report.benchmarks) {
-      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", cell(row.algorithm), cell(row.backend),
-                         cell(row.device), benchmark_size_text(row), row.iterations, row.reps, benchmark_time_text(row),
-                         benchmark_rate_text(row), benchmark_triangle_rate_text(row), cell(benchmark_note_text(row)));
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", cell(row.algorithm),
+                         cell(benchmark_backend_text(row)), cell(row.device), benchmark_size_text(row), row.iterations,
+                         row.reps, benchmark_time_text(row), benchmark_rate_text(row), benchmark_triangle_rate_text(row),
+                         benchmark_bytes_text(row), benchmark_floor_text(row), cell(benchmark_peer_text(row)),
+                         cell(benchmark_note_text(row)));
     }
     out += '\n';
+    append_scaling(out, report);
   }
   for (const Artifact& plot : report.plots) {
     out += plot.path.empty() ? fmt::format("{}\n\n", cell(plot.caption))

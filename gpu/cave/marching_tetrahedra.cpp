@@ -18,6 +18,11 @@
 // triangles and 1.2 vertices per cube: 457 MB of triangles (measured, seed 3: 38.1M) and about
 // 400 MB of vertices. That passes llvmpipe's 128 MB storage-block limit, so llvmpipe refuses such
 // a block after the counts (limited_storage); blocks up to about 160³ fit there.
+//
+// Memory traffic per voxel (the performance table's floor column): 24 B read + 32 B written =
+// 56 B over the density, count, two scans and emit passes (density f32 written then read,
+// counts and rock flags u32 written, the two in-place scans 16 B read and written, emit's rock
+// flags), plus 12 B per triangle and 20 B per vertex written.
 #include "gpu/cave/marching_tetrahedra.hpp"
 
 #include <algorithm>

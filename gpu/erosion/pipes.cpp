@@ -48,6 +48,13 @@
 // Δt·f_k through exterior pipes, the sediment (and regolith) sent through exterior pipes (flux
 // form) or removed at exterior pipes (semi-Lagrangian, written by the shader), d_B − d for
 // evaporation (a float subtraction, as the reference), Σ d, Σ s, Σ r, Σ b0 + Σ Δb, the CFL number.
+//
+// Memory traffic per cell and step (4 pipes, flux transport; the performance table's floor
+// column): 4 dispatches, 192 B read + 116 B written = 308 B counting whole elements (the cells'
+// 16-B constants read by all 4, the water vec4 read by all 4 and one component written by each,
+// outflow vec4 read twice and written once, sent vec4 written then read, delta f32, velocity
+// vec2, sediment and staying f32); 180 B counting the components touched. Diffusion adds 24 B
+// (1 dispatch), regolith 48 B, 8 pipes make it 388 B.
 #include "gpu/erosion/pipes.hpp"
 
 #include <algorithm>

@@ -1,6 +1,9 @@
 // Sampling a noise function or fractal sum on a grid; see noise_field.hpp. The dispatch on
 // NoiseBasis and Fractal is here; the functions are in simplex.cpp, perlin.cpp, perlin_texture.cpp
 // and fractal.hpp.
+//
+// Memory traffic per sample (ref<double>, the performance table's floor column): 16 B written
+// (the grid's zero fill and the value), nothing read but the permutation tables.
 #include "reference/noise/noise_field.hpp"
 
 #include <vector>

@@ -1,0 +1,67 @@
+#include "compare/subprocess.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+extern char** environ;
+
+namespace gt {
+namespace {
+
+std::string last_line(const std::filesystem::path& log) {
+  std::ifstream in(log);
+  std::string line;
+  std::string last;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  }
+  return last;
+}
+
+}  // namespace
+
+TemporaryFiles::~TemporaryFiles() {
+  std::error_code ignored;
+  for (const auto& path : paths) std::filesystem::remove_all(path, ignored);
+}
+
+std::filesystem::path temporary_path(std::string_view prefix, std::string_view suffix) {
+  static std::atomic<int> counter = 0;
+  return std::filesystem::temp_directory_path() / fmt::format("{}-{}-{}{}", prefix, getpid(), counter++, suffix);
+}
+
+std::string run_logged(const std::vector<std::string>& arguments, const std::filesystem::path& log) {
+  std::vector<char*> argv;
+  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t child = 0;
+  const int spawn_error = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawn_error != 0) return fmt::format("cannot run {}: {}", arguments[0], std::strerror(spawn_error));
+
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) return fmt::format("waiting for {} failed: {}", arguments[0], std::strerror(errno));
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  const std::string exit = WIFEXITED(status) ? fmt::format("exit status {}", WEXITSTATUS(status))
+                                             : fmt::format("signal {}", WTERMSIG(status));
+  const std::string output = last_line(log);
+  const std::string name = std::filesystem::path(arguments.size() > 1 ? arguments[1] : arguments[0]).filename().string();
+  return output.empty() ? fmt::format("{} failed ({})", name, exit) : fmt::format("{} failed ({}): {}", name, exit, output);
+}
+
+}  // namespace gt
