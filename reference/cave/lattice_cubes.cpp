@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -51,6 +52,27 @@ CaveMeshBuilder<Real>::CaveMeshBuilder(const char* algorithm, const Volume<Real>
       placement_(placement) {
   require_finite(algorithm, density);
   require_keyed_range(algorithm, lattice_origin, {density.nx, density.ny, density.nz}, solid);
+  const LatticePoint counts = cube_counts();
+  slab_z_ = first_cube();
+  slab_extent_ = {static_cast<std::size_t>(counts[0]) + 1, static_cast<std::size_t>(counts[1]) + 1};
+  slab_vertices_.assign(2 * slab_extent_[0] * slab_extent_[1] * 7, no_vertex);
+}
+
+template <class Real>
+std::uint32_t& CaveMeshBuilder<Real>::slab_vertex(const LatticePoint& lower, int direction) {
+  if (lower[2] < slab_z_) throw std::logic_error("CaveMeshBuilder: cubes must come in non-decreasing z");
+  const std::size_t slab_size = slab_extent_[0] * slab_extent_[1] * 7;
+  while (lower[2] > slab_z_ + 1) {  // the walk moved up: the lower slab's edges are done with
+    std::copy(slab_vertices_.begin() + static_cast<std::ptrdiff_t>(slab_size), slab_vertices_.end(),
+              slab_vertices_.begin());
+    std::fill(slab_vertices_.begin() + static_cast<std::ptrdiff_t>(slab_size), slab_vertices_.end(), no_vertex);
+    ++slab_z_;
+  }
+  const int first = first_cube();
+  const std::size_t point = (static_cast<std::size_t>(lower[2] - slab_z_) * slab_extent_[1] +
+                             static_cast<std::size_t>(lower[1] - first)) * slab_extent_[0] +
+                            static_cast<std::size_t>(lower[0] - first);
+  return slab_vertices_[point * 7 + static_cast<std::size_t>(direction - 1)];
 }
 
 template <class Real>
@@ -93,14 +115,14 @@ std::uint32_t CaveMeshBuilder<Real>::edge_vertex(const LatticePoint& cube, const
   const LatticePoint lower{cube[0] + lower_offset[0], cube[1] + lower_offset[1], cube[2] + lower_offset[2]};
   const LatticePoint upper{cube[0] + upper_offset[0], cube[1] + upper_offset[1], cube[2] + upper_offset[2]};
   const int direction = edge[1] - edge[0];
-  const std::uint64_t key = lattice_edge_key(
-      {lattice_origin_[0] + lower[0], lattice_origin_[1] + lower[1], lattice_origin_[2] + lower[2]}, direction);
-  const auto [found, inserted] = vertex_of_key_.try_emplace(key, static_cast<std::uint32_t>(mesh_.positions.size()));
-  if (inserted) {
+  std::uint32_t& vertex = slab_vertex(lower, direction);
+  if (vertex == no_vertex) {
+    vertex = static_cast<std::uint32_t>(mesh_.positions.size());
     mesh_.positions.push_back(vertex_position(lower, upper, direction));
-    mesh_.edge_keys.push_back(key);
+    mesh_.edge_keys.push_back(lattice_edge_key(
+        {lattice_origin_[0] + lower[0], lattice_origin_[1] + lower[1], lattice_origin_[2] + lower[2]}, direction));
   }
-  return found->second;
+  return vertex;
 }
 
 template <class Real>

@@ -33,11 +33,16 @@
 // Welding: the first time a triangle uses an edge, the edge gets the next vertex index and its key
 // lattice_edge_key(global a, d-bits) goes to edge_keys; later uses share that index. Vertices are
 // therefore numbered in order of first use over the triangles in output order, corner by corner.
+// Lookup (how, not what): an edge's lower point lies in the cube's z layer or the next, so the
+// builder keeps the vertex indices of two z slabs of lower points, 7 directions each, and drops
+// the older slab when the walk moves up a layer. Memory is two slabs, time constant per lookup:
+// the cost per voxel does not grow with the block (a global hash map's did, by cache misses).
+// Cubes must therefore arrive in non-decreasing z, as for_each_cube gives them.
 #pragma once
 
 #include <array>
 #include <cstdint>
-#include <unordered_map>
+#include <vector>
 #include <utility>
 
 #include "core/mesh.hpp"
@@ -84,7 +89,13 @@ class CaveMeshBuilder {
   bool solid_;
   std::array<std::int64_t, 3> lattice_origin_;
   EdgePlacement placement_;
-  std::unordered_map<std::uint64_t, std::uint32_t> vertex_of_key_;
+  // Vertex index of each (lower point, direction) of z slabs slab_z_ and slab_z_ + 1, or
+  // no_vertex; laid out [slab][y][x][direction - 1] over the cubes' lower points and one more.
+  static constexpr std::uint32_t no_vertex = 0xFFFFFFFFu;
+  std::uint32_t& slab_vertex(const LatticePoint& lower, int direction);
+  int slab_z_ = 0;
+  std::array<std::size_t, 2> slab_extent_{};  // points per slab along x and y
+  std::vector<std::uint32_t> slab_vertices_;
   TriangleMesh<Real> mesh_;
 };
 
