@@ -20,13 +20,16 @@ std::string& active_name() {
 
 const std::string& active_mutant() { return active_name(); }
 
-bool mutant_active(std::string_view name) { return !active_name().empty() && active_name() == name; }
+bool detail::any_mutant_active = false;
+
+bool detail::is_active_mutant(std::string_view name) { return active_name() == name; }
 
 void set_active_mutant(const std::string& name) {
   if (!name.empty() && !is_dotted_identifier(name)) {
     throw InputError(fmt::format("mutant '{}': a mutant name is a dotted lower-case identifier", name));
   }
   active_name() = name;
+  detail::any_mutant_active = !name.empty();
 }
 
 std::string mutant_define(std::string_view name) {

@@ -19,8 +19,17 @@ namespace gt {
 // The active mutant's name, empty when none.
 const std::string& active_mutant();
 
+namespace detail {
+// Whether any mutant is active; set only by set_active_mutant. Read inline so that the references'
+// checks cost one load per call when none is (noise functions test a mutant per corner).
+extern bool any_mutant_active;
+bool is_active_mutant(std::string_view name);
+}  // namespace detail
+
 // Whether `name` is the active mutant.
-bool mutant_active(std::string_view name);
+inline bool mutant_active(std::string_view name) {
+  return detail::any_mutant_active && detail::is_active_mutant(name);
+}
 
 // Activates `name` for the rest of the process (empty: none). Throws InputError for a name that
 // is not a dotted lower-case identifier; whether it is registered is the caller's business.

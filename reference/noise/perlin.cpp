@@ -49,16 +49,35 @@ int corner_hash(const Permutation& permutation, const Cell<Real>& cell, int cx, 
   return permuted(permutation, hash_xy + cell.lattice[2] + cz);
 }
 
-// Grad's selection: the axes of u and v and their signs.
-int axis_u(int h) { return h < 8 ? 0 : 1; }
+// Grad's selection for h = hash & 15: the axes of u and v and their signs, as a table, so that a
+// corner value needs no branch on the hash (random from sample to sample at high frequencies,
+// where fbm's upper octaves mispredict such branches). Multiplying by ±1 is exact, so
+// sign·u + sign·v is Grad's (±u) + (±v) bit for bit.
+struct GradientChoice {
+  std::array<int, 2> axes;     // u's axis, v's axis
+  std::array<double, 2> signs;  // −1 where h & 1 (u), h & 2 (v)
+};
+using GradientChoices = std::array<GradientChoice, 16>;
+
+// `second_x`: the second h whose v is x (14 in Perlin's Grad).
+constexpr GradientChoices gradient_choices(int second_x) {
+  GradientChoices choices{};
+  for (int h = 0; h < 16; ++h) {
+    const int u_axis = h < 8 ? 0 : 1;
+    const int v_axis = h < 4 ? 1 : (h == 12 || h == second_x ? 0 : 2);
+    choices[h] = {{u_axis, v_axis}, {(h & 1) != 0 ? -1.0 : 1.0, (h & 2) != 0 ? -1.0 : 1.0}};
+  }
+  return choices;
+}
+
+constexpr GradientChoices perlin_choices = gradient_choices(14);
 // Mutant noise.perlin3.grad_select (issue 11, both twins): 13 where 14 belongs, a typo that moves
 // two of Perlin's 16 gradients.
-int axis_v(int h) {
-  const int second_x = mutant_active("noise.perlin3.grad_select") ? 13 : 14;
-  return h < 4 ? 1 : (h == 12 || h == second_x ? 0 : 2);
+constexpr GradientChoices grad_select_mutant_choices = gradient_choices(13);
+
+const GradientChoices& active_choices() {
+  return mutant_active("noise.perlin3.grad_select") ? grad_select_mutant_choices : perlin_choices;
 }
-bool negate_u(int h) { return (h & 1) != 0; }
-bool negate_v(int h) { return (h & 2) != 0; }
 
 template <class Real>
 std::array<Real, 3> corner_offset(const Cell<Real>& cell, int cx, int cy, int cz) {
@@ -66,25 +85,23 @@ std::array<Real, 3> corner_offset(const Cell<Real>& cell, int cx, int cy, int cz
 }
 
 template <class Real>
-Real grad(int hash, const std::array<Real, 3>& offset) {
-  const int h = hash & 15;
-  const Real u = offset[axis_u(h)];
-  const Real v = offset[axis_v(h)];
-  return (negate_u(h) ? -u : u) + (negate_v(h) ? -v : v);
+Real grad(const GradientChoice& choice, const std::array<Real, 3>& offset) {
+  return Real(choice.signs[0]) * offset[choice.axes[0]] + Real(choice.signs[1]) * offset[choice.axes[1]];
 }
 
 template <class Real>
-Real corner_value(const Permutation& permutation, const Cell<Real>& cell, int cx, int cy, int cz) {
-  return grad(corner_hash(permutation, cell, cx, cy, cz), corner_offset(cell, cx, cy, cz));
+Real corner_value(const Permutation& permutation, const GradientChoices& choices, const Cell<Real>& cell, int cx,
+                  int cy, int cz) {
+  return grad(choices[corner_hash(permutation, cell, cx, cy, cz) & 15], corner_offset(cell, cx, cy, cz));
 }
 
-// {value, ∂/∂x, ∂/∂y, ∂/∂z} of one corner term.
 template <class Real>
-std::array<Real, 4> corner_sample(const Permutation& permutation, const Cell<Real>& cell, int cx, int cy, int cz) {
-  const int h = corner_hash(permutation, cell, cx, cy, cz) & 15;
-  std::array<Real, 4> sample = {grad(h, corner_offset(cell, cx, cy, cz)), Real(0), Real(0), Real(0)};
-  sample[1 + axis_u(h)] = negate_u(h) ? Real(-1) : Real(1);
-  sample[1 + axis_v(h)] = negate_v(h) ? Real(-1) : Real(1);
+std::array<Real, 4> corner_sample(const Permutation& permutation, const GradientChoices& choices, const Cell<Real>& cell,
+                                  int cx, int cy, int cz) {
+  const GradientChoice& choice = choices[corner_hash(permutation, cell, cx, cy, cz) & 15];
+  std::array<Real, 4> sample = {grad(choice, corner_offset(cell, cx, cy, cz)), Real(0), Real(0), Real(0)};
+  sample[1 + choice.axes[0]] = Real(choice.signs[0]);
+  sample[1 + choice.axes[1]] = Real(choice.signs[1]);
   return sample;
 }
 
@@ -111,8 +128,10 @@ Real perlin3(const Permutation& permutation, Real x, Real y, Real z) {
   const Real u = perlin_fade(cell.local[0]);
   const Real v = perlin_fade(cell.local[1]);
   const Real w = perlin_fade(cell.local[2]);
+  const GradientChoices& choices = active_choices();
   auto along_x = [&](int cy, int cz) {
-    return perlin_lerp(u, corner_value(permutation, cell, 0, cy, cz), corner_value(permutation, cell, 1, cy, cz));
+    return perlin_lerp(u, corner_value(permutation, choices, cell, 0, cy, cz),
+                       corner_value(permutation, choices, cell, 1, cy, cz));
   };
   return perlin_lerp(w, perlin_lerp(v, along_x(0, 0), along_x(1, 0)), perlin_lerp(v, along_x(0, 1), along_x(1, 1)));
 }
@@ -120,9 +139,10 @@ Real perlin3(const Permutation& permutation, Real x, Real y, Real z) {
 template <class Real>
 std::array<Real, 4> perlin3_gradient(const Permutation& permutation, Real x, Real y, Real z) {
   const Cell<Real> cell = locate(x, y, z);
+  const GradientChoices& choices = active_choices();
   auto along_x = [&](int cy, int cz) {
-    return lerp_along(0, cell.local[0], corner_sample(permutation, cell, 0, cy, cz),
-                      corner_sample(permutation, cell, 1, cy, cz));
+    return lerp_along(0, cell.local[0], corner_sample(permutation, choices, cell, 0, cy, cz),
+                      corner_sample(permutation, choices, cell, 1, cy, cz));
   };
   auto along_y = [&](int cz) { return lerp_along(1, cell.local[1], along_x(0, cz), along_x(1, cz)); };
   return lerp_along(2, cell.local[2], along_y(0), along_y(1));

@@ -165,11 +165,16 @@ std::uint32_t corner_hash(const Permutation& perm, const Lattice<N>& origin, con
   return hash;
 }
 
-// {t⁴ (g·d), its derivatives along each axis}; zeros outside the kernel.
-template <class Real, std::size_t N>
-Vector<Real, N + 1> corner_contribution(const Lattice<N>& gradient, const Vector<Real, N>& offset,
-                                        Real kernel_radius_squared) {
-  Vector<Real, N + 1> contribution{};
+// What a sum computes: the value alone (1 component) or the value and its N derivatives. The
+// value's operations are the same in both, so it is the same bits.
+template <std::size_t N, bool WithGradient>
+constexpr std::size_t components = WithGradient ? N + 1 : 1;
+
+// {t⁴ (g·d), its derivatives along each axis (WithGradient)}; zeros outside the kernel.
+template <class Real, std::size_t N, bool WithGradient>
+Vector<Real, components<N, WithGradient>> corner_contribution(const Lattice<N>& gradient, const Vector<Real, N>& offset,
+                                                              Real kernel_radius_squared) {
+  Vector<Real, components<N, WithGradient>> contribution{};
   Real falloff = kernel_radius_squared;
   for (std::size_t axis = 0; axis < N; ++axis) falloff = falloff - (offset[axis] * offset[axis]);
   if (!(falloff > Real(0))) return contribution;
@@ -177,21 +182,23 @@ Vector<Real, N + 1> corner_contribution(const Lattice<N>& gradient, const Vector
   for (std::size_t axis = 1; axis < N; ++axis) along = along + (static_cast<Real>(gradient[axis]) * offset[axis]);
   const Real falloff2 = falloff * falloff;
   const Real falloff4 = falloff2 * falloff2;
-  const Real slope = (Real(-8) * (falloff2 * falloff)) * along;
   contribution[0] = falloff4 * along;
-  for (std::size_t axis = 0; axis < N; ++axis) {
-    contribution[axis + 1] = (slope * offset[axis]) + (falloff4 * static_cast<Real>(gradient[axis]));
+  if constexpr (WithGradient) {
+    const Real slope = (Real(-8) * (falloff2 * falloff)) * along;
+    for (std::size_t axis = 0; axis < N; ++axis) {
+      contribution[axis + 1] = (slope * offset[axis]) + (falloff4 * static_cast<Real>(gradient[axis]));
+    }
   }
   return contribution;
 }
 
-// {value, d/dx_0, ..., d/dx_{n-1}}.
-template <class Real, std::size_t N>
-Vector<Real, N + 1> simplex_with_gradient(const Permutation& perm, const Vector<Real, N>& point,
-                                          Real kernel_radius_squared) {
+// {value} or {value, d/dx_0, ..., d/dx_{n-1}}.
+template <class Real, std::size_t N, bool WithGradient>
+Vector<Real, components<N, WithGradient>> simplex_sum(const Permutation& perm, const Vector<Real, N>& point,
+                                                      Real kernel_radius_squared) {
   const Cell<Real, N> cell = locate_cell(point);
   const Lattice<N> rank = axis_ranks(cell.offset);
-  Vector<Real, N + 1> total{};
+  Vector<Real, components<N, WithGradient>> total{};
   for (std::size_t corner = 0; corner <= N; ++corner) {
     const Lattice<N> step = corner_step(rank, corner);
     const Real unskew = static_cast<Real>(Variant<N>::lattice.corner_unskew[corner]);
@@ -200,8 +207,8 @@ Vector<Real, N + 1> simplex_with_gradient(const Permutation& perm, const Vector<
       offset[axis] = (cell.offset[axis] - static_cast<Real>(step[axis])) + unskew;
     }
     const Lattice<N> gradient = corner_gradient<N>(corner_hash(perm, cell.origin, step));
-    const Vector<Real, N + 1> contribution = corner_contribution(gradient, offset, kernel_radius_squared);
-    for (std::size_t component = 0; component <= N; ++component) {
+    const auto contribution = corner_contribution<Real, N, WithGradient>(gradient, offset, kernel_radius_squared);
+    for (std::size_t component = 0; component < total.size(); ++component) {
       total[component] = total[component] + contribution[component];
     }
   }
@@ -213,27 +220,27 @@ Vector<Real, N + 1> simplex_with_gradient(const Permutation& perm, const Vector<
 
 template <class Real>
 Real simplex2(const Permutation& perm, Real x, Real y) {
-  return simplex2_gradient(perm, x, y)[0];
+  return simplex_sum<Real, 2, false>(perm, {x, y}, Real(0.5))[0];
 }
 
 template <class Real>
 Real simplex3(const Permutation& perm, Real x, Real y, Real z, Real kernel_radius_squared) {
-  return simplex3_gradient(perm, x, y, z, kernel_radius_squared)[0];
+  return simplex_sum<Real, 3, false>(perm, {x, y, z}, kernel_radius_squared)[0];
 }
 
 template <class Real>
 Real simplex4(const Permutation& perm, Real x, Real y, Real z, Real w, Real kernel_radius_squared) {
-  return simplex_with_gradient<Real, 4>(perm, {x, y, z, w}, kernel_radius_squared)[0];
+  return simplex_sum<Real, 4, false>(perm, {x, y, z, w}, kernel_radius_squared)[0];
 }
 
 template <class Real>
 std::array<Real, 3> simplex2_gradient(const Permutation& perm, Real x, Real y) {
-  return simplex_with_gradient<Real, 2>(perm, {x, y}, Real(0.5));
+  return simplex_sum<Real, 2, true>(perm, {x, y}, Real(0.5));
 }
 
 template <class Real>
 std::array<Real, 4> simplex3_gradient(const Permutation& perm, Real x, Real y, Real z, Real kernel_radius_squared) {
-  return simplex_with_gradient<Real, 3>(perm, {x, y, z}, kernel_radius_squared);
+  return simplex_sum<Real, 3, true>(perm, {x, y, z}, kernel_radius_squared);
 }
 
 #define GT_INSTANTIATE_SIMPLEX(Real)                                                                  \
