@@ -141,7 +141,7 @@ TEST(AnnotateBenchmarks, ComparesOurRowsWithTheFastestPeerOfTheSameSize) {
 class CopyKernelTest : public testing::GlTest {};
 
 TEST_F(CopyKernelTest, CopiesEveryElement) {
-  // 70,000 elements: more than one 256-wide workgroup row's worth, with a partial last group.
+  // 70,000 floats, 17,500 vec4 invocations: 69 workgroups of 256, the last one partial.
   const std::size_t elements = 70000;
   const gpu::CopyKernel kernel(elements);
   kernel.run();
@@ -151,7 +151,10 @@ TEST_F(CopyKernelTest, CopiesEveryElement) {
   EXPECT_EQ(kernel.bytes_per_run(), 8.0 * elements);
 }
 
-TEST_F(CopyKernelTest, RefusesNothingToCopy) { EXPECT_THROW(gpu::CopyKernel(0), std::invalid_argument); }
+TEST_F(CopyKernelTest, RefusesCountsThatAreNotWholeVectors) {
+  EXPECT_THROW(gpu::CopyKernel(0), std::invalid_argument);
+  EXPECT_THROW(gpu::CopyKernel(70001), std::invalid_argument);
+}
 
 // ---- peers --------------------------------------------------------------------------------------
 

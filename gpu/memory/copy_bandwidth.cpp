@@ -17,7 +17,9 @@ StorageBuffer indices(std::size_t elements) {
 }
 
 std::size_t checked(std::size_t elements) {
-  if (elements == 0) throw std::invalid_argument("CopyKernel: no elements to copy");
+  if (elements == 0 || elements % 4 != 0) {
+    throw std::invalid_argument("CopyKernel: the element count must be a positive multiple of 4 (vec4 copies)");
+  }
   return elements;
 }
 
@@ -31,10 +33,10 @@ CopyKernel::CopyKernel(std::size_t elements)
 
 void CopyKernel::run() const {
   program_.use();
-  glUniform1ui(program_.uniform("element_count"), static_cast<GLuint>(elements_));
+  glUniform1ui(program_.uniform("vector_count"), static_cast<GLuint>(elements_ / 4));
   source_.bind(0);
   target_.bind(1);
-  dispatch_linear(program_, elements_, local_size);
+  dispatch_linear(program_, elements_ / 4, local_size);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 

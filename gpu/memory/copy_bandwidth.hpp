@@ -1,12 +1,13 @@
 // The device's copy bandwidth through GL: a compute shader (gpu/shaders/memory/copy.comp) copying
 // one float buffer into another. The performance table divides each kernel's bytes per cell by it
-// to get the memory-bound floor (compare/benchmark.hpp).
+// to get the memory-bound floor (compare/benchmark.hpp). Each invocation copies a vec4.
 //
 // CopyKernel(elements) -> two storage buffers of `elements` floats (the source holds its index)
 // run()                -> one copy dispatch followed by the storage barrier; time it with
 //                         gpu_wall_ms (gpu/timing.hpp), which brackets it by glFinish.
 // bytes_per_run()      -> 8 · elements: 4 B read and 4 B written per element.
-// Needs a current GlContext. Throws std::invalid_argument for 0 elements.
+// Needs a current GlContext. Throws std::invalid_argument unless elements is a positive
+// multiple of 4.
 #pragma once
 
 #include <cstddef>
