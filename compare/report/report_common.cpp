@@ -300,6 +300,18 @@ std::string benchmark_peer_text(const BenchmarkRow& row) {
   return row.times_peer ? fmt::format("{} {}", times_text(row.times_peer), row.fastest_peer) : "";
 }
 
+std::string scaling_explanation() {
+  return fmt::format("Exponent p of time ∝ (cells · iterations)^p, least squares over each line's sizes (at least {}); "
+                     "above {} work that is linear in the cells scales worse than linearly. × floor: the median over "
+                     "the memory-bound floor, the row's bytes per cell at the copy bandwidth memory.copy measured on "
+                     "the same device.",
+                     scaling_min_sizes, linear_exponent_limit);
+}
+
+std::string scaling_missing_text() { return fmt::format("No line was timed at {} sizes or more.", scaling_min_sizes); }
+
+std::string scaling_line_text(const ScalingFit& fit) { return fit.peer.empty() ? fit.backend : "peer: " + fit.peer; }
+
 std::string scaling_sizes_text(const ScalingFit& fit) {
   const auto side = [&](int size) { return fit.dimensions == 3 ? fmt::format("{}³", size) : fmt::format("{}²", size); };
   return fmt::format("{}–{} ({})", side(fit.sizes.front()), side(fit.sizes.back()), fit.sizes.size());

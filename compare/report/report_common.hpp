@@ -74,6 +74,11 @@ std::string benchmark_bytes_text(const BenchmarkRow& row);
 // "3.1×" (median over the memory-bound floor, median over the fastest peer's), "" without one.
 std::string benchmark_floor_text(const BenchmarkRow& row);
 std::string benchmark_peer_text(const BenchmarkRow& row);
+// The scaling table's introduction (what the exponent and × floor mean), its line when no line
+// has enough sizes, and its backend cell ("cpu", or "peer: NAME").
+std::string scaling_explanation();
+std::string scaling_missing_text();
+std::string scaling_line_text(const ScalingFit& fit);
 // The scaling table's cells: "32³–256³ (4)" and "1.07 linear" or "1.42 superlinear (> 1.15)".
 std::string scaling_sizes_text(const ScalingFit& fit);
 std::string scaling_exponent_text(const ScalingFit& fit);

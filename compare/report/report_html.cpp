@@ -318,20 +318,16 @@ void append_case_section(std::string& out, const CaseResult& result) {
 // The fitted exponent of time against work for every line of the table timed at enough sizes.
 void append_scaling(std::string& out, const Report& report) {
   const auto fits = fit_scaling(report.benchmarks);
-  out += fmt::format("<h3>Scaling</h3>\n<p class=\"note\">Exponent p of time ∝ (cells · iterations)<sup>p</sup>, least "
-                     "squares over each line's sizes (at least {}); above {} the work that is linear in the cells "
-                     "scales worse than linearly. × floor: median over the memory-bound floor, the row's bytes per "
-                     "cell at the copy bandwidth measured by memory.copy on the same device.</p>\n",
-                     scaling_min_sizes, linear_exponent_limit);
+  out += fmt::format("<h3>Scaling</h3>\n<p class=\"note\">{}</p>\n", h(scaling_explanation()));
   if (fits.empty()) {
-    out += fmt::format("<p class=\"note\">No line was timed at {} sizes or more.</p>\n", scaling_min_sizes);
+    out += fmt::format("<p class=\"note\">{}</p>\n", h(scaling_missing_text()));
     return;
   }
   out += "<table>\n<tr><th>device</th><th>algorithm</th><th>backend</th><th>sizes</th><th>exponent</th></tr>\n";
   for (const ScalingFit& fit : fits) {
     out += fmt::format("<tr{}><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td></tr>\n",
                        fit.linear() ? "" : " class=\"superlinear\"", h(fit.device), h(fit.algorithm),
-                       h(fit.peer.empty() ? fit.backend : "peer: " + fit.peer), h(scaling_sizes_text(fit)),
+                       h(scaling_line_text(fit)), h(scaling_sizes_text(fit)),
                        h(scaling_exponent_text(fit)));
   }
   out += "</table>\n";

@@ -90,17 +90,15 @@ void append_case_details(std::string& out, const CaseResult& result) {
 
 void append_scaling(std::string& out, const Report& report) {
   const auto fits = fit_scaling(report.benchmarks);
-  out += fmt::format("### Scaling\n\nExponent p of time ∝ (cells · iterations)^p, least squares over each line's sizes (at "
-                     "least {}); above {} linear work scales worse than linearly.\n\n",
-                     scaling_min_sizes, linear_exponent_limit);
+  out += fmt::format("### Scaling\n\n{}\n\n", scaling_explanation());
   if (fits.empty()) {
-    out += fmt::format("No line was timed at {} sizes or more.\n\n", scaling_min_sizes);
+    out += scaling_missing_text() + "\n\n";
     return;
   }
   out += "| algorithm | backend | device | sizes | exponent |\n|---|---|---|---|---:|\n";
   for (const ScalingFit& fit : fits) {
     out += fmt::format("| {} | {} | {} | {} | {} |\n", cell(fit.algorithm),
-                       cell(fit.peer.empty() ? fit.backend : "peer: " + fit.peer), cell(fit.device),
+                       cell(scaling_line_text(fit)), cell(fit.device),
                        scaling_sizes_text(fit), scaling_exponent_text(fit));
   }
   out += '\n';
