@@ -18,7 +18,10 @@ def load_rows(path):
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
     rows = data["benchmarks"] if isinstance(data, dict) else data
-    return [r for r in rows if r.get("median_ms") and r.get("size") and not r.get("note")]
+    # The bandwidth probe (memory.copy) is one size, a reference for the table's floor column,
+    # not a line over sizes.
+    return [r for r in rows if r.get("median_ms") and r.get("size") and not r.get("note")
+            and r.get("algorithm") != "memory.copy"]
 
 
 def line_name(row):
@@ -50,13 +53,21 @@ def plot(rows, out_path):
     lines = series_by_line(rows)
     algorithms = sorted({algorithm for algorithm, _ in lines})
     colours = {algorithm: plt.get_cmap("tab20")(i % 20) for i, algorithm in enumerate(algorithms)}
-    styles = {"gpu": "-o", "cpu": "--s"}  # anything else (published figures, peers): dotted triangles
-    legend_rows = (len(lines) + 2) // 3
+    styles = {"gpu": "-o", "cpu": "--s"}  # anything else (published figures, peers): dotted, own marker
+    # Three legend columns, two when a label is long (peers name their library and function).
+    longest_label = max(len(f"{algorithm} ({backend})") for algorithm, backend in lines)
+    legend_columns = 3 if longest_label <= 55 else 2
+    legend_rows = (len(lines) + legend_columns - 1) // legend_columns
     legend_height = 0.3 + 0.2 * legend_rows  # inches
     height = 5.0 + legend_height
     fig, (time_axis, rate_axis) = plt.subplots(1, 2, figsize=(12, height))
+    other_markers = [":^", ":v", ":D", ":x", ":P"]  # one per published or peer line of an algorithm
+    others_drawn = defaultdict(int)
     for (algorithm, backend), points in lines.items():
-        style = styles.get(backend, ":^")
+        style = styles.get(backend)
+        if style is None:
+            style = other_markers[others_drawn[algorithm] % len(other_markers)]
+            others_drawn[algorithm] += 1
         colour = colours[algorithm]
         label = f"{algorithm} ({backend})"
         sizes = [p[0] for p in points]
@@ -71,7 +82,7 @@ def plot(rows, out_path):
     for axis in (time_axis, rate_axis):
         axis.grid(True, which="both", alpha=0.3)
     # One legend for both plots, below them, so that it covers no line.
-    fig.legend(loc="lower center", ncol=3, fontsize="small")
+    fig.legend(loc="lower center", ncol=legend_columns, fontsize="small")
     fig.subplots_adjust(left=0.07, right=0.98, wspace=0.25, top=1.0 - 0.9 / height,
                         bottom=(legend_height + 0.6) / height)
     fig.suptitle(devices_title(rows), fontsize="medium")
