@@ -43,9 +43,9 @@ BenchmarkRow peer_row(const Peer& peer, const std::string& algorithm, const nloh
   return result;
 }
 
-// The bandwidth probe: one float copied per element over buffers far larger than any cache
-// (64 MiB each), on the CPU (std::copy, one thread) and through GL (gpu/memory/copy_bandwidth.hpp).
-// Its bytes per cell are the 4 read and 4 written.
+// The bandwidth probe: 4096² floats copied between buffers far larger than any cache (64 MiB
+// each), on the CPU (std::copy, one thread) and through GL (gpu/memory/copy_bandwidth.hpp, a vec4
+// per invocation). Its bytes per cell (float) are the 4 read and 4 written.
 constexpr int probe_side = 4096;
 
 BenchmarkRow probe_row(const std::string& backend, const std::vector<double>& times, int reps, const std::string& device) {
