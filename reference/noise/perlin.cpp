@@ -17,7 +17,7 @@
 //   - d − c is written as d − 1 or d − 0 (exact), as the reference does.
 #include "reference/noise/perlin.hpp"
 
-#include <cmath>
+#include "reference/noise/lattice_floor.hpp"
 
 namespace gt::reference {
 namespace {
@@ -33,9 +33,9 @@ Cell<Real> locate(Real x, Real y, Real z) {
   const std::array<Real, 3> point = {x, y, z};
   Cell<Real> cell{};
   for (int axis = 0; axis < 3; ++axis) {
-    const Real lower = std::floor(point[axis]);
-    cell.lattice[axis] = static_cast<int>(lower) & 255;
-    cell.local[axis] = point[axis] - lower;
+    const int lower = lattice_floor(point[axis]);
+    cell.lattice[axis] = lower & 255;
+    cell.local[axis] = point[axis] - static_cast<Real>(lower);
   }
   return cell;
 }

@@ -11,7 +11,7 @@
 //
 // Decisions where the sources are vague or wrong:
 //   - True floor instead of Eshelman's fastfloor, which is wrong at 0 and negative integers (digest
-//     §2.2.3 note); the GLSL twin uses floor() too.
+//     §2.2.3 note; lattice_floor.hpp computes it without a libm call); the GLSL twin uses floor() too.
 //   - Ties in the axis ranking follow the sources: 3-D ranks with >= (the lower axis wins, as
 //     Gustavson's 3-D if/else chain), 2-D and 4-D with > (the higher axis wins, as the 2-D branch
 //     and the 4-D comparison table). A tie puts p on a simplex face, where the 0.6 kernel is
@@ -34,6 +34,7 @@
 #include <cstdint>
 
 #include "core/mutant.hpp"
+#include "reference/noise/lattice_floor.hpp"
 
 namespace gt::reference {
 namespace {
@@ -91,14 +92,31 @@ std::uint32_t grad3_index(std::uint32_t hash) {
   return index;
 }
 
-template <std::size_t N>
-Lattice<N> corner_gradient(std::uint32_t hash) {
+// The tables in precision Real, so that a corner costs no int-to-float conversion (their entries
+// are 0 and ±1: exact either way).
+template <class Real, std::size_t N, std::size_t Count>
+constexpr std::array<Vector<Real, N>, Count> in_precision(const std::array<Lattice<N>, Count>& table) {
+  std::array<Vector<Real, N>, Count> converted{};
+  for (std::size_t entry = 0; entry < Count; ++entry) {
+    for (std::size_t axis = 0; axis < N; ++axis) converted[entry][axis] = static_cast<Real>(table[entry][axis]);
+  }
+  return converted;
+}
+
+template <class Real>
+constexpr auto grad3_in_precision = in_precision<Real>(grad3);
+template <class Real>
+constexpr auto grad4_in_precision = in_precision<Real>(grad4);
+
+template <class Real, std::size_t N>
+Vector<Real, N> corner_gradient(std::uint32_t hash) {
   if constexpr (N == 4) {
-    return grad4[hash % 32];
+    return grad4_in_precision<Real>[hash % 32];
   } else {
-    Lattice<N> gradient{};
-    for (std::size_t axis = 0; axis < N; ++axis) gradient[axis] = grad3[grad3_index(hash)][axis];
-    return gradient;
+    const Vector<Real, 3>& gradient = grad3_in_precision<Real>[grad3_index(hash)];
+    Vector<Real, N> components{};
+    for (std::size_t axis = 0; axis < N; ++axis) components[axis] = gradient[axis];
+    return components;
   }
 }
 
@@ -124,7 +142,7 @@ Cell<Real, N> locate_cell(const Vector<Real, N>& point) {
   // below that, core/params/noise.cpp check_lattice_range, but the reference takes any point).
   std::int64_t origin_sum = 0;
   for (std::size_t axis = 0; axis < N; ++axis) {
-    cell.origin[axis] = static_cast<int>(std::floor(point[axis] + skew));
+    cell.origin[axis] = lattice_floor(point[axis] + skew);
     origin_sum += cell.origin[axis];
   }
   const Real unskew = static_cast<Real>(origin_sum) * static_cast<Real>(lattice.corner_unskew[1]);
@@ -172,21 +190,21 @@ constexpr std::size_t components = WithGradient ? N + 1 : 1;
 
 // {t⁴ (g·d), its derivatives along each axis (WithGradient)}; zeros outside the kernel.
 template <class Real, std::size_t N, bool WithGradient>
-Vector<Real, components<N, WithGradient>> corner_contribution(const Lattice<N>& gradient, const Vector<Real, N>& offset,
+Vector<Real, components<N, WithGradient>> corner_contribution(const Vector<Real, N>& gradient, const Vector<Real, N>& offset,
                                                               Real kernel_radius_squared) {
   Vector<Real, components<N, WithGradient>> contribution{};
   Real falloff = kernel_radius_squared;
   for (std::size_t axis = 0; axis < N; ++axis) falloff = falloff - (offset[axis] * offset[axis]);
   if (!(falloff > Real(0))) return contribution;
-  Real along = static_cast<Real>(gradient[0]) * offset[0];
-  for (std::size_t axis = 1; axis < N; ++axis) along = along + (static_cast<Real>(gradient[axis]) * offset[axis]);
+  Real along = gradient[0] * offset[0];
+  for (std::size_t axis = 1; axis < N; ++axis) along = along + (gradient[axis] * offset[axis]);
   const Real falloff2 = falloff * falloff;
   const Real falloff4 = falloff2 * falloff2;
   contribution[0] = falloff4 * along;
   if constexpr (WithGradient) {
     const Real slope = (Real(-8) * (falloff2 * falloff)) * along;
     for (std::size_t axis = 0; axis < N; ++axis) {
-      contribution[axis + 1] = (slope * offset[axis]) + (falloff4 * static_cast<Real>(gradient[axis]));
+      contribution[axis + 1] = (slope * offset[axis]) + (falloff4 * gradient[axis]);
     }
   }
   return contribution;
@@ -206,7 +224,7 @@ Vector<Real, components<N, WithGradient>> simplex_sum(const Permutation& perm, c
     for (std::size_t axis = 0; axis < N; ++axis) {
       offset[axis] = (cell.offset[axis] - static_cast<Real>(step[axis])) + unskew;
     }
-    const Lattice<N> gradient = corner_gradient<N>(corner_hash(perm, cell.origin, step));
+    const Vector<Real, N> gradient = corner_gradient<Real, N>(corner_hash(perm, cell.origin, step));
     const auto contribution = corner_contribution<Real, N, WithGradient>(gradient, offset, kernel_radius_squared);
     for (std::size_t component = 0; component < total.size(); ++component) {
       total[component] = total[component] + contribution[component];
