@@ -79,15 +79,13 @@ void benchmark_bandwidth(const BenchmarkOptions& options, bool gpu_available, co
   rows.push_back(probe_row("gpu", times, options.reps, environment.gl_renderer));
 }
 
-// Each row's bytes per cell from its algorithm's declaration, where the row did not set its own.
-void fill_traffic(std::vector<BenchmarkRow>& rows) {
-  for (BenchmarkRow& row : rows) {
-    if (row.bytes_per_cell || !row.peer.empty() || row.algorithm == bandwidth_probe_name) continue;
-    const auto known = std::find_if(algorithms().begin(), algorithms().end(),
-                                    [&](const Algorithm& algorithm) { return algorithm.name == row.algorithm; });
-    if (known == algorithms().end()) continue;
-    if (row.backend == "cpu") row.bytes_per_cell = known->traffic.cpu;
-    if (row.backend == "gpu") row.bytes_per_cell = known->traffic.gpu;
+// The algorithm's declared bytes per cell on its CPU and GPU rows that did not set their own.
+void add_traffic(const Algorithm& algorithm, std::vector<BenchmarkRow>::iterator first,
+                 std::vector<BenchmarkRow>::iterator last) {
+  for (auto row = first; row != last; ++row) {
+    if (row->bytes_per_cell || !row->peer.empty()) continue;
+    if (row->backend == "cpu") row->bytes_per_cell = algorithm.traffic.cpu;
+    if (row->backend == "gpu") row->bytes_per_cell = algorithm.traffic.gpu;
   }
 }
 
@@ -173,6 +171,7 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
   benchmark_bandwidth(options, gpu_available, environment, rows);
   for (const Algorithm* selected_algorithm : selected) {
     const Algorithm& algorithm = *selected_algorithm;
+    const std::size_t first_row = rows.size();
     if (algorithm.benchmark) {
       progress.start_case(static_cast<int>(rows.size()) + 1, "benchmark " + algorithm.name);
       const auto own_rows = algorithm.benchmark(options, gpu_available, environment);
@@ -180,9 +179,9 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
     } else if (algorithm.has_field_twin) {
       benchmark_field_twin(algorithm, options, gpu_available, environment, progress, rows);
     }
+    add_traffic(algorithm, rows.begin() + static_cast<std::ptrdiff_t>(first_row), rows.end());
   }
   progress.finish();
-  fill_traffic(rows);
   annotate_benchmarks(rows);
   return rows;
 }

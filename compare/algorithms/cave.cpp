@@ -164,21 +164,9 @@ std::function<double(std::uint64_t)> vertex_bound(const Block& block, const Volu
 constexpr double hausdorff_spacing = 0.1;
 constexpr double hausdorff_sample_budget = 2e5;
 
-double surface_area(const Mesh& mesh) {
-  double area = 0.0;
-  for (const auto& triangle : mesh.triangles) {
-    const auto& a = mesh.positions[triangle[0]];
-    const auto& b = mesh.positions[triangle[1]];
-    const auto& c = mesh.positions[triangle[2]];
-    const std::array<double, 3> u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const std::array<double, 3> v = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    area += 0.5 * std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
-  }
-  return area;
-}
-
-double hausdorff_spacing_for(const Mesh& mesh) {
-  return std::max(hausdorff_spacing, std::sqrt(surface_area(mesh) / hausdorff_sample_budget));
+// From the truth mesh's area (CGAL's, in its mesh report).
+double hausdorff_spacing_for(double surface_area) {
+  return std::max(hausdorff_spacing, std::sqrt(surface_area / hausdorff_sample_budget));
 }
 
 struct BlockMeshes {
@@ -257,7 +245,7 @@ void add_normal_checks(const Block& block, const Mesh& mesh, CaseResult& result)
 
 // Mesh `single` (float arithmetic: ref<float> or the GPU) against ref<double>.
 void add_vs_double(const Block& block, const BlockMeshes& meshes, const TriangleMesh<float>& single,
-                   const std::string& name, CaseResult& result) {
+                   double hausdorff_spacing_used, const std::string& name, CaseResult& result) {
   const auto& changes = meshes.side_changes;
   const auto differing = triangles_in_one_only(key_triangles(single), key_triangles(meshes.truth));
   const auto unexplained = std::count_if(differing.begin(), differing.end(), [&](const KeyTriangle& triangle) {
@@ -277,12 +265,13 @@ void add_vs_double(const Block& block, const BlockMeshes& meshes, const Triangle
       fmt::format("largest vertex distance / its bound over {} shared vertices; density error ε = {:.3g} (float vs "
                   "double, measured); bound √3·(min(1, 3ε/(|Δv| - 2ε)) + u·(4 + |a|))",
                   vertices.matched, density_error)));
-  const double spacing = hausdorff_spacing_for(meshes.truth);
   result.checks.push_back(informative_check(
-      "parity.hausdorff." + name, approximate_hausdorff_distance(to_double_mesh(single), meshes.truth, spacing),
+      "parity.hausdorff." + name,
+      approximate_hausdorff_distance(to_double_mesh(single), meshes.truth, hausdorff_spacing_used),
       fmt::format("CGAL's approximate symmetric Hausdorff distance, samples every {:.3g} lattice units (lattice units{}); "
                   "the triangles that change with a sample's side make it larger than the vertex distances",
-                  spacing, spacing > hausdorff_spacing ? ": coarser than 0.1 to keep about 2·10⁵ samples" : "")));
+                  hausdorff_spacing_used,
+                  hausdorff_spacing_used > hausdorff_spacing ? ": coarser than 0.1 to keep about 2·10⁵ samples" : "")));
   if (differing.empty()) {
     result.checks.push_back(informative_check(
         "parity.hausdorff_bound." + name, vertices.max_distance,
@@ -385,7 +374,8 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   add_volume_check(block, meshes, cpu_report, result);
   add_crossing_check(block, meshes, result);
   if (!block.volume) add_normal_checks(block, meshes.truth, result);  // normals of the seed's noise
-  add_vs_double(block, meshes, meshes.single, "float_vs_double", result);
+  const double hausdorff_spacing_used = hausdorff_spacing_for(cpu_report.cgal.area);
+  add_vs_double(block, meshes, meshes.single, hausdorff_spacing_used, "float_vs_double", result);
   write_mesh_artifact(meshes.truth, "mesh.cpu." + block.mesh_format,
                       fmt::format("cpu mesh, {} triangles", meshes.truth.triangles.size()), options, result);
 
@@ -402,7 +392,7 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   }
   const TriangleMesh<float> gpu_mesh = run_gpu(block, meshes.density_float, options, result);
   add_gpu_vs_float(gpu_mesh, meshes.single, result);
-  add_vs_double(block, meshes, gpu_mesh, "gpu_vs_double", result);
+  add_vs_double(block, meshes, gpu_mesh, hausdorff_spacing_used, "gpu_vs_double", result);
   if (options.progress) options.progress->stage("CGAL and OpenMesh (gpu)");
   const Mesh gpu_double = to_double_mesh(gpu_mesh);
   MeshReport gpu_report;
