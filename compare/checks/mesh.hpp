@@ -68,7 +68,7 @@ struct RawMeshFacts {
 };
 
 struct CgalMeshFacts {
-  bool soup_is_polygon_mesh = true;          // is_polygon_soup_a_polygon_mesh, before orientation
+  bool soup_is_polygon_mesh = true;          // orient_polygon_soup found nothing to reverse, split or report
   std::size_t non_manifold_edges = 0;        // met by orient_polygon_soup
   std::size_t non_manifold_vertices = 0;
   std::size_t reversed_faces = 0;            // faces orient_polygon_soup reversed
@@ -135,12 +135,12 @@ std::string describe(const MeshReport& report);
 // expect_closed is false (an open chunk).
 std::vector<Check> mesh_checks(const MeshReport& report, const std::string& backend, bool expect_closed);
 
-// CGAL's approximate symmetric Hausdorff distance between two surfaces: the farthest of points
-// sampled on a grid of `grid_spacing` over each mesh's faces (and its vertices) from the other
-// mesh. A lower bound of the true distance that approaches it as the spacing shrinks; deterministic
+// CGAL's approximate one-sided Hausdorff distance from one surface to another: the farthest of the
+// points sampled on a grid of `grid_spacing` over `from`'s faces (and its vertices and edges) from
+// `to`. A lower bound of the true distance that approaches it as the spacing shrinks; deterministic
 // (grid sampling). Only the usable triangles count (three distinct in-range indices, finite
-// corners: a broken mesh gives a distance, not a crash); 0 for two empty meshes, infinity when
-// only one is empty.
-double approximate_hausdorff_distance(const Mesh& a, const Mesh& b, double grid_spacing);
+// corners: a broken mesh gives a distance, not a crash); 0 when `from` is empty, infinity when
+// only `to` is.
+double approximate_one_sided_hausdorff_distance(const Mesh& from, const Mesh& to, double grid_spacing);
 
 }  // namespace gt
