@@ -27,9 +27,10 @@
 //                                    max |ref<float> - ref<double>| over the block), plus the
 //                                    float roundings of t (4u, GLSL's division included) and of
 //                                    the position (u·(|a| + 1)); √3 for the three axes
-//   parity.hausdorff.{float,gpu}_vs_double   CGAL's approximate symmetric Hausdorff distance
-//                                    (informative); parity.hausdorff_bound.*: with the same
-//                                    triangles, the largest vertex distance bounds it
+//   parity.hausdorff.{float,gpu}_vs_double   symmetric Hausdorff distance (informative;
+//                                    compare/checks/keyed_hausdorff.hpp): the corner distances
+//                                    bound triangles both meshes have, CGAL samples the others
+//                                    against the triangles near them
 //   parity.topology.gpu_vs_float, parity.max_abs.gpu_vs_float   the same float operations: equal
 //                                    index buffers and keys; positions within GLSL's division
 //                                    error (3u of t plus one rounding of the position), 0 on llvmpipe
@@ -52,6 +53,7 @@
 #include "compare/algorithm.hpp"
 #include "compare/checks/cave_mesh.hpp"
 #include "compare/checks/error_model.hpp"
+#include "compare/checks/keyed_hausdorff.hpp"
 #include "compare/checks/mesh.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/field_files.hpp"
@@ -158,17 +160,6 @@ std::function<double(std::uint64_t)> vertex_bound(const Block& block, const Volu
   };
 }
 
-// Hausdorff samples every 0.1 lattice units, coarser on large meshes so that a mesh gets at most
-// about 2·10⁵ (area / spacing²): the distance is informative, and CGAL's sampling and AABB queries
-// over tens of millions of points took minutes at 128³. The check's detail gives the spacing used.
-constexpr double hausdorff_spacing = 0.1;
-constexpr double hausdorff_sample_budget = 2e5;
-
-// From the truth mesh's area (CGAL's, in its mesh report).
-double hausdorff_spacing_for(double surface_area) {
-  return std::max(hausdorff_spacing, std::sqrt(surface_area / hausdorff_sample_budget));
-}
-
 struct BlockMeshes {
   Volume<double> density;
   Mesh truth;                  // ref<double>
@@ -245,7 +236,7 @@ void add_normal_checks(const Block& block, const Mesh& mesh, CaseResult& result)
 
 // Mesh `single` (float arithmetic: ref<float> or the GPU) against ref<double>.
 void add_vs_double(const Block& block, const BlockMeshes& meshes, const TriangleMesh<float>& single,
-                   double hausdorff_spacing_used, const std::string& name, CaseResult& result) {
+                   const std::string& name, CaseResult& result) {
   const auto& changes = meshes.side_changes;
   const auto differing = triangles_in_one_only(key_triangles(single), key_triangles(meshes.truth));
   const auto unexplained = std::count_if(differing.begin(), differing.end(), [&](const KeyTriangle& triangle) {
@@ -265,18 +256,15 @@ void add_vs_double(const Block& block, const BlockMeshes& meshes, const Triangle
       fmt::format("largest vertex distance / its bound over {} shared vertices; density error ε = {:.3g} (float vs "
                   "double, measured); bound √3·(min(1, 3ε/(|Δv| - 2ε)) + u·(4 + |a|))",
                   vertices.matched, density_error)));
+  const KeyedHausdorff hausdorff = keyed_hausdorff(to_double_mesh(single), meshes.truth);
   result.checks.push_back(informative_check(
-      "parity.hausdorff." + name,
-      approximate_hausdorff_distance(to_double_mesh(single), meshes.truth, hausdorff_spacing_used),
-      fmt::format("CGAL's approximate symmetric Hausdorff distance, samples every {:.3g} lattice units (lattice units{}); "
-                  "the triangles that change with a sample's side make it larger than the vertex distances",
-                  hausdorff_spacing_used,
-                  hausdorff_spacing_used > hausdorff_spacing ? ": coarser than 0.1 to keep about 2·10⁵ samples" : "")));
-  if (differing.empty()) {
-    result.checks.push_back(informative_check(
-        "parity.hausdorff_bound." + name, vertices.max_distance,
-        "same triangles by edge key: the largest vertex distance bounds the Hausdorff distance (lattice units)"));
-  }
+      "parity.hausdorff." + name, hausdorff.distance,
+      fmt::format("symmetric Hausdorff distance (lattice units): triangles of the same keys whose corners moved less "
+                  "than 0.1 lie within {:.3g} of their twins; the other {} triangles are sampled by CGAL every {:.3g} "
+                  "lattice units against the other mesh's triangles {}: {:.3g}",
+                  hausdorff.shared_bound, hausdorff.sampled_triangles, hausdorff.grid_spacing,
+                  hausdorff.whole_mesh_fallback ? "(all of them on a side)" : "within 2 lattice units",
+                  hausdorff.sampled_distance)));
 }
 
 BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseResult& result) {
@@ -374,8 +362,7 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   add_volume_check(block, meshes, cpu_report, result);
   add_crossing_check(block, meshes, result);
   if (!block.volume) add_normal_checks(block, meshes.truth, result);  // normals of the seed's noise
-  const double hausdorff_spacing_used = hausdorff_spacing_for(cpu_report.cgal.area);
-  add_vs_double(block, meshes, meshes.single, hausdorff_spacing_used, "float_vs_double", result);
+  add_vs_double(block, meshes, meshes.single, "float_vs_double", result);
   write_mesh_artifact(meshes.truth, "mesh.cpu." + block.mesh_format,
                       fmt::format("cpu mesh, {} triangles", meshes.truth.triangles.size()), options, result);
 
@@ -392,7 +379,7 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   }
   const TriangleMesh<float> gpu_mesh = run_gpu(block, meshes.density_float, options, result);
   add_gpu_vs_float(gpu_mesh, meshes.single, result);
-  add_vs_double(block, meshes, gpu_mesh, hausdorff_spacing_used, "gpu_vs_double", result);
+  add_vs_double(block, meshes, gpu_mesh, "gpu_vs_double", result);
   if (options.progress) options.progress->stage("CGAL and OpenMesh (gpu)");
   const Mesh gpu_double = to_double_mesh(gpu_mesh);
   MeshReport gpu_report;
