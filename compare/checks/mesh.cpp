@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <set>
 #include <utility>
@@ -272,18 +273,29 @@ CgalMeshFacts cgal_facts(const Mesh& mesh, const std::vector<SoupTriangle>& usab
 
 // ---- OpenMesh ----
 
-// add_face reports each refusal on OpenMesh's error stream; the refusals are counted instead.
+// add_face reports each refusal on OpenMesh's error stream; the refusals are counted instead. The
+// stream is global and meshes may be checked on two threads at once (a cave case checks its CPU
+// mesh beside the GPU's): the first user silences it, the last restores it.
 class QuietOpenMeshErrors {
  public:
-  QuietOpenMeshErrors() : was_enabled_(::omerr().is_enabled()) { ::omerr().disable(); }
+  QuietOpenMeshErrors() {
+    const std::lock_guard lock(mutex_);
+    if (users_++ == 0) {
+      was_enabled_ = ::omerr().is_enabled();
+      ::omerr().disable();
+    }
+  }
   ~QuietOpenMeshErrors() {
-    if (was_enabled_) ::omerr().enable();
+    const std::lock_guard lock(mutex_);
+    if (--users_ == 0 && was_enabled_) ::omerr().enable();
   }
   QuietOpenMeshErrors(const QuietOpenMeshErrors&) = delete;
   QuietOpenMeshErrors& operator=(const QuietOpenMeshErrors&) = delete;
 
  private:
-  bool was_enabled_;
+  static inline std::mutex mutex_;
+  static inline int users_ = 0;
+  static inline bool was_enabled_ = true;
 };
 
 OpenTriMesh open_tri_mesh(const Mesh& mesh, const std::vector<SoupTriangle>& triangles, OpenMeshFacts& facts) {
