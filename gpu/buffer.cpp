@@ -51,4 +51,13 @@ void GlBuffer::read_bytes(void* destination, std::size_t bytes) const {
 
 void GlBuffer::bind_base(GLenum target, GLuint binding) const { glBindBufferBase(target, binding, id_); }
 
+void StorageBuffer::bind_range(GLuint binding, std::size_t offset, std::size_t bytes) const {
+  if (bytes == 0 || offset > size_bytes() || bytes > size_bytes() - offset) {
+    throw std::out_of_range(fmt::format("binding bytes [{}, {}) of a {}-byte storage buffer", offset, offset + bytes,
+                                        size_bytes()));
+  }
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, binding, id(), static_cast<GLintptr>(offset),
+                    static_cast<GLsizeiptr>(bytes));
+}
+
 }  // namespace gt

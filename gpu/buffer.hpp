@@ -66,6 +66,11 @@ class StorageBuffer : public GlBuffer {
   }
 
   void bind(GLuint binding) const { bind_base(GL_SHADER_STORAGE_BUFFER, binding); }
+  // Binds bytes [offset, offset + bytes): a window of a buffer larger than the shader may address
+  // (GL_MAX_SHADER_STORAGE_BLOCK_SIZE). offset must be a multiple of
+  // GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT; an empty or out-of-range window throws
+  // std::out_of_range.
+  void bind_range(GLuint binding, std::size_t offset, std::size_t bytes) const;
 };
 
 // A GL_UNIFORM_BUFFER holding one std140 block, bound to `layout(std140, binding = N) uniform`.

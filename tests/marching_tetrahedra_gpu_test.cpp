@@ -164,6 +164,22 @@ TEST_F(GpuMarchingTetrahedraCases, MovedMesherMatchesTheReferenceAtEachOrigin) {
   EXPECT_THROW(mesher.move_to({600000, 0, 0}), gt::InputError);
 }
 
+// Outputs past GL_MAX_SHADER_STORAGE_BLOCK_SIZE (a 256³ block on llvmpipe) are emitted chunk by
+// chunk through buffer windows; small windows split a 24³ block (about 40 KB of triangles) into
+// many chunks, whose bases, alignment and spare vertex slot must give the same mesh bit for bit.
+TEST_F(GpuMarchingTetrahedraCases, OutputsSplitIntoWindowsGiveTheSameMesh) {
+  const auto params = cave_params({7, -3, 11}, {24, 24, 24}, true);
+  const FloatMesh expected = reference_mesh(params);
+  for (const std::size_t window_bytes : {std::size_t{4096}, std::size_t{20000}}) {
+    gt::gpu::MarchingTetrahedra mesher(params);
+    mesher.limit_output_windows(window_bytes);
+    mesher.run();
+    EXPECT_TRUE(same_mesh(expected, mesher.result())) << "windows of " << window_bytes << " bytes";
+  }
+  gt::gpu::MarchingTetrahedra mesher(params);
+  EXPECT_THROW(mesher.limit_output_windows(100), std::invalid_argument) << "less than one cube's triangles";
+}
+
 TEST_F(GpuMarchingTetrahedraCases, RunsTwiceAndTwoMeshersGiveTheSameBits) {
   const auto params = cave_params({5, 5, 5}, {20, 20, 20}, true);
   gt::gpu::MarchingTetrahedra mesher(params);

@@ -16,13 +16,15 @@
 // 67.9 MB; triangle offsets, vertex offsets and rock corners 68.7 MB each; scan block sums 67 KB;
 // cube cases 134 KB. Outputs: 12 bytes per triangle, 12 + 8 per vertex; at scale 10 about 2.3
 // triangles and 1.2 vertices per cube: 457 MB of triangles (measured, seed 3: 38.1M) and about
-// 400 MB of vertices. That passes llvmpipe's 128 MB storage-block limit, so llvmpipe refuses such
-// a block after the counts (limited_storage); blocks up to about 160³ fit there.
+// 400 MB of vertices. That passes llvmpipe's 128 MiB storage-block limit, so the outputs are one
+// buffer each, emitted chunk by chunk through windows of at most the limit (emit_chunks); the
+// per-cube buffers reach the limit at about 320³ cells.
 //
-// Memory traffic per voxel (the performance table's floor column): 24 B read + 32 B written =
-// 56 B over the density, count, two scans and emit passes (density f32 written then read,
+// Memory traffic per voxel (the performance table's floor column, which times an uploaded volume):
+// 24 B read + 28 B written = 52 B over the count, two scans and emit passes (density f32 read,
 // counts and rock flags u32 written, the two in-place scans 16 B read and written, emit's rock
-// flags), plus 12 B per triangle and 20 B per vertex written.
+// flags), plus 12 B per triangle and 20 B per vertex written; the seed's noise adds the density
+// pass's 4 B written.
 #include "gpu/cave/marching_tetrahedra.hpp"
 
 #include <algorithm>
@@ -67,6 +69,9 @@ constexpr int local_size = 256;  // local_size_x of density.comp, count.comp and
 constexpr GLuint block_binding = 0, cube_cases_binding = 0, density_binding = 1, triangle_offsets_binding = 2, vertex_offsets_binding = 3,
                  triangles_binding = 4, permutation_binding = 5, cube_rock_binding = 5, positions_binding = 6, edge_keys_binding = 7;
 constexpr std::size_t max_triangles_per_cube = 12;  // 6 tetrahedra, 2 triangles each
+constexpr std::size_t max_owned_vertices_per_cube = 7;  // 3 axis, 3 face-diagonal and 1 body edges
+constexpr std::size_t triangle_bytes = 3 * sizeof(std::uint32_t), position_bytes = 3 * sizeof(float),
+                      key_bytes = 2 * sizeof(std::uint32_t);
 constexpr std::size_t rock_patterns = 256, edge_slots = 64, first_axes_patterns = 8;
 // Size of `CubeCases` in gpu/shaders/cave/cube_cases.glsl (std430: uint[256], then uvec2 arrays).
 constexpr std::size_t cube_cases_bytes =
@@ -127,6 +132,12 @@ std::int64_t storage_block_limit() {
   return limit;
 }
 
+std::size_t storage_offset_alignment() {
+  GLint alignment = 0;
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  return static_cast<std::size_t>(std::max(alignment, 1));
+}
+
 StorageBuffer limited_storage(std::size_t bytes, const char* contents, std::int64_t limit) {
   if (bytes > static_cast<std::size_t>(limit)) {
     throw std::runtime_error(fmt::format("GPU marching tetrahedra: the {} need {} bytes, more than this GL's "
@@ -137,8 +148,8 @@ StorageBuffer limited_storage(std::size_t bytes, const char* contents, std::int6
 }
 
 // `buffer` when it holds at least `bytes`, else a new buffer of that size.
-void reserve(std::optional<StorageBuffer>& buffer, std::size_t bytes, const char* contents, std::int64_t limit) {
-  if (!buffer || buffer->size_bytes() < bytes) buffer = limited_storage(bytes, contents, limit);
+void reserve(std::optional<StorageBuffer>& buffer, std::size_t bytes) {
+  if (!buffer || buffer->size_bytes() < bytes) buffer.emplace(bytes);
 }
 
 CaveBlock block_of(const CaveParams& params, EdgePlacement placement) {
@@ -217,6 +228,8 @@ MarchingTetrahedra::MarchingTetrahedra(const CaveParams& block, EdgePlacement pl
     : sample_total_(checked_sample_total(block)),
       cube_total_(checked_cube_total(block)),
       storage_block_limit_(storage_block_limit()),
+      output_window_limit_(static_cast<std::size_t>(storage_block_limit_)),
+      offset_alignment_(storage_offset_alignment()),
       params_(block),
       placement_(placement),
       block_(UniformBuffer::from(block_of(block, placement))),
@@ -243,6 +256,15 @@ void MarchingTetrahedra::move_to(const std::array<int, 3>& origin) {
   checked_sample_total(moved);
   params_ = moved;
   block_.upload(block_of(params_, placement_));
+}
+
+void MarchingTetrahedra::limit_output_windows(std::size_t bytes) {
+  if (bytes / triangle_bytes < offset_alignment_ + max_triangles_per_cube) {
+    throw std::invalid_argument(fmt::format("GPU marching tetrahedra: output windows of {} bytes cannot hold one "
+                                            "cube's {} triangles past an alignment of {} triangles",
+                                            bytes, max_triangles_per_cube, offset_alignment_));
+  }
+  output_window_limit_ = std::min(bytes, static_cast<std::size_t>(storage_block_limit_));
 }
 
 void MarchingTetrahedra::run() {
@@ -272,20 +294,55 @@ void MarchingTetrahedra::compute_density() {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
+// One chunk when all outputs fit a window; else runs of cubes sized for the worst case (12
+// triangles and 7 owned vertices a cube, plus a base aligned down by less than the alignment).
+// Reads the chunks' offsets back before any emit dispatch, so that the reads wait only once.
+std::vector<MarchingTetrahedra::EmitChunk> MarchingTetrahedra::emit_chunks() const {
+  const std::size_t alignment = offset_alignment_;  // elements: their byte offsets are multiples of it
+  const bool fits = std::size_t{triangle_total_} * triangle_bytes <= output_window_limit_ &&
+                    std::size_t{vertex_total_} * position_bytes <= output_window_limit_;
+  const std::size_t cubes_per_chunk =
+      fits ? cube_total_ : (output_window_limit_ / triangle_bytes - alignment) / max_triangles_per_cube;
+  static_assert(max_owned_vertices_per_cube * position_bytes <= max_triangles_per_cube * triangle_bytes);
+  std::vector<EmitChunk> chunks;
+  for (std::size_t first = 0; first < cube_total_; first += cubes_per_chunk) {
+    const std::size_t end = std::min(first + cubes_per_chunk, cube_total_);
+    const std::size_t triangle_first = read_uint(triangle_offsets_, first);
+    const std::size_t triangle_end = read_uint(triangle_offsets_, end);
+    if (triangle_end == triangle_first) continue;  // no triangles: no vertices either
+    const std::size_t vertex_base = read_uint(vertex_offsets_, first) / alignment * alignment;
+    // A chunk may own no vertex; its window still spans one (the buffers have that much spare).
+    const std::size_t vertex_end = std::max<std::size_t>(read_uint(vertex_offsets_, end), vertex_base + 1);
+    chunks.push_back({first, end, triangle_first / alignment * alignment, triangle_end, vertex_base, vertex_end});
+  }
+  return chunks;
+}
+
 void MarchingTetrahedra::emit() {
-  reserve(triangles_, std::size_t{triangle_total_} * 3 * sizeof(std::uint32_t), "triangles", storage_block_limit_);
-  reserve(positions_, std::size_t{vertex_total_} * 3 * sizeof(float), "vertex positions", storage_block_limit_);
-  reserve(edge_keys_, std::size_t{vertex_total_} * 2 * sizeof(std::uint32_t), "edge keys", storage_block_limit_);
+  const std::size_t spare = offset_alignment_;  // elements past the end: see emit_chunks
+  reserve(triangles_, (std::size_t{triangle_total_} + spare) * triangle_bytes);
+  reserve(positions_, (std::size_t{vertex_total_} + spare) * position_bytes);
+  reserve(edge_keys_, (std::size_t{vertex_total_} + spare) * key_bytes);
   block_.bind(block_binding);
   cube_cases_.bind(cube_cases_binding);
   density_.bind(density_binding);
   triangle_offsets_.bind(triangle_offsets_binding);
   vertex_offsets_.bind(vertex_offsets_binding);
-  triangles_->bind(triangles_binding);
   cube_rock_.bind(cube_rock_binding);
-  positions_->bind(positions_binding);
-  edge_keys_->bind(edge_keys_binding);
-  dispatch_linear(emit_program_, cube_total_, local_size);
+  const GLuint program = emit_program_.id();
+  for (const EmitChunk& chunk : emit_chunks()) {
+    triangles_->bind_range(triangles_binding, chunk.triangle_base * triangle_bytes,
+                           (chunk.triangle_end - chunk.triangle_base) * triangle_bytes);
+    positions_->bind_range(positions_binding, chunk.vertex_base * position_bytes,
+                           (chunk.vertex_end - chunk.vertex_base) * position_bytes);
+    edge_keys_->bind_range(edge_keys_binding, chunk.vertex_base * key_bytes,
+                           (chunk.vertex_end - chunk.vertex_base) * key_bytes);
+    glProgramUniform1ui(program, emit_program_.uniform("first_emitted_cube"), static_cast<GLuint>(chunk.first_cube));
+    glProgramUniform1ui(program, emit_program_.uniform("end_emitted_cube"), static_cast<GLuint>(chunk.end_cube));
+    glProgramUniform1ui(program, emit_program_.uniform("triangle_base"), static_cast<GLuint>(chunk.triangle_base));
+    glProgramUniform1ui(program, emit_program_.uniform("vertex_base"), static_cast<GLuint>(chunk.vertex_base));
+    dispatch_linear(emit_program_, chunk.end_cube - chunk.first_cube, local_size);
+  }
 }
 
 TriangleMesh<float> MarchingTetrahedra::result() const {

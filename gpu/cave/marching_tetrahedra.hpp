@@ -25,7 +25,9 @@
 //   4. emit      gpu/shaders/cave/emit.comp      one per cube: triangles, positions, edge keys
 // (workgroups of 256 invocations throughout, spread over two dimensions: linear_dispatch.hpp)
 // Between 3 and 4 it reads the two totals back to size the outputs (a wait for the GPU); after 4
-// it does not synchronise (bracket with glFinish to time it). result() downloads the mesh:
+// it does not synchronise (bracket with glFinish to time it). Outputs larger than
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE (a 256³ block's 457 MB of triangles on llvmpipe's 128 MiB) are
+// emitted in chunks of cubes, each through windows of the output buffers (glBindBufferRange). result() downloads the mesh:
 // positions in global lattice coordinates (world units), triangles counter-clockwise seen from the
 // air, edge_keys one per vertex. An all-air or all-rock block (open) gives an empty mesh.
 //
@@ -34,14 +36,15 @@
 // Throws gt::InputError for a block below 1 cell (2 samples) per axis (which the reference meshes
 // as nothing, or a cap), a block (pad included) outside the edge keys' range or, for an uploaded
 // volume, a non-finite sample (both as the reference); std::invalid_argument for a volume whose values are not nx·ny·nz samples;
-// std::runtime_error when a buffer would exceed GL_MAX_SHADER_STORAGE_BLOCK_SIZE (per-sample and
-// per-cube buffers in the constructor, outputs in run()). Needs a current GlContext.
+// std::runtime_error when a per-sample or per-cube buffer would exceed
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE (about 320³ cells). Needs a current GlContext.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "core/mesh.hpp"
 #include "core/params/cave.hpp"
@@ -63,6 +66,10 @@ class MarchingTetrahedra {
   // parameter block only, no recompilation or reallocation. Throws InputError like the constructor.
   // The noise is computed at the new origin; an uploaded volume keeps its samples, placed there.
   void move_to(const std::array<int, 3>& origin);
+  // Emits outputs through windows of at most `bytes` each instead of the driver's
+  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE (tests split small blocks this way). Throws
+  // std::invalid_argument when a window could not hold one cube's worst case.
+  void limit_output_windows(std::size_t bytes);
   void run();
   TriangleMesh<float> result() const;
 
@@ -77,12 +84,22 @@ class MarchingTetrahedra {
 
   // Checks the block, then allocates and tabulates; an upload is left to the caller.
   MarchingTetrahedra(const CaveParams& block, EdgePlacement placement, DensitySource source);
+  // A run of cubes emitted by one dispatch, and the windows of the outputs it writes (in elements:
+  // triangles, vertices; bases aligned for glBindBufferRange).
+  struct EmitChunk {
+    std::size_t first_cube, end_cube;
+    std::size_t triangle_base, triangle_end;
+    std::size_t vertex_base, vertex_end;
+  };
   void compute_density();
+  std::vector<EmitChunk> emit_chunks() const;
   void emit();
 
   std::size_t sample_total_;
   std::size_t cube_total_;
   std::int64_t storage_block_limit_;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE in bytes
+  std::size_t output_window_limit_;   // bytes an output window may span: the above unless limited
+  std::size_t offset_alignment_;      // GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT in bytes
   CaveParams params_;  // the block; for an uploaded volume its noise fields (scale, kernel, seed) are unused
   EdgePlacement placement_;
   UniformBuffer block_;

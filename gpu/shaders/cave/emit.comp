@@ -6,7 +6,17 @@
 // edge's rank among the owner's own edges (cave/tetrahedra.glsl, cave/cube_cases.glsl), from the
 // owner's rock corners the count pass stored. Every output element is written by one invocation,
 // so the result does not depend on scheduling.
+// One dispatch emits the cubes first_emitted_cube .. end_emitted_cube - 1 into windows of the output
+// buffers that start at triangle triangle_base and vertex vertex_base: outputs larger than
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE are emitted chunk by chunk (gpu/cave/marching_tetrahedra.cpp).
+// A cube writes only its own triangles and the vertices it owns, which lie in its chunk's windows;
+// the vertex numbers it writes into triangles stay global.
 layout(local_size_x = 256) in;
+
+uniform uint first_emitted_cube;
+uniform uint end_emitted_cube;
+uniform uint triangle_base;
+uniform uint vertex_base;
 
 #include "cave/linear_dispatch.glsl"
 #include "cave/cube_cases.glsl"
@@ -22,15 +32,16 @@ void write_vertex(uint vertex, ivec3 cube, ivec2 edge) {
   ivec3 lower = cube + corner_offset(edge.x);
   int direction = edge.y - edge.x;
   vec3 position = vertex_position(lower, direction);
-  positions[3u * vertex] = position.x;
-  positions[3u * vertex + 1u] = position.y;
-  positions[3u * vertex + 2u] = position.z;
-  edge_keys[vertex] = lattice_edge_key(lattice_origin.xyz + lower, direction);
+  uint slot = vertex - vertex_base;
+  positions[3u * slot] = position.x;
+  positions[3u * slot + 1u] = position.y;
+  positions[3u * slot + 2u] = position.z;
+  edge_keys[slot] = lattice_edge_key(lattice_origin.xyz + lower, direction);
 }
 
 void main() {
-  uint index = linear_invocation();
-  if (index >= uint(cube_counts.w)) return;
+  uint index = first_emitted_cube + linear_invocation();
+  if (index >= end_emitted_cube) return;
   ivec3 cube = cube_of(index);
   uint rock = cube_rock[index];
   if (case_triangles[rock] == 0u) return;
@@ -49,7 +60,7 @@ void main() {
           met = edge_set_with(met, edge);
           write_vertex(vertex, cube, edge);
         }
-        triangles[3u * triangle_slot + uint(corner)] = vertex;
+        triangles[3u * (triangle_slot - triangle_base) + uint(corner)] = vertex;
       }
       ++triangle_slot;
     }
