@@ -1,0 +1,143 @@
+// The cube-sphere surface; see cube_sphere.hpp.
+#include "core/planet/cube_sphere.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+using FaceMatrix = std::array<std::array<int, 3>, 3>;  // rows: cube point = P · (u, v, 1)
+
+// The code's facePermutationMatrix, rows as the digest's table (§3.4) lists them.
+constexpr std::array<FaceMatrix, cube_face_count> face_matrices = {{
+    {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}},    // front: +z, +a toward +x, +b toward -y
+    {{{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}}},   // right: +x, +a toward -z
+    {{{-1, 0, 0}, {0, 1, 0}, {0, 0, -1}}},  // back: -z, +a toward -x
+    {{{0, 0, -1}, {0, 1, 0}, {1, 0, 0}}},   // left: -x, +a toward +z
+    {{{1, 0, 0}, {0, 0, 1}, {0, -1, 0}}},   // north: +y, +a toward +x, +b toward +z
+    {{{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}},   // south: -y, +a toward +x, +b toward -z
+}};
+
+// Neighbour steps (dx, dy) in the table's order: up, upLeft, left, downLeft, down, downRight,
+// right, upRight.
+constexpr std::array<std::array<int, 2>, 8> neighbour_steps = {
+    {{0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}, {1, 1}, {1, 0}, {1, -1}}};
+
+const FaceMatrix& matrix_of(CubeFace face) { return face_matrices[static_cast<std::size_t>(face)]; }
+
+Vec3 to_cube(CubeFace face, const Vec3& face_space) {
+  const FaceMatrix& matrix = matrix_of(face);
+  Vec3 point{};
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 3; ++column) point[row] += matrix[row][column] * face_space[column];
+  }
+  return point;
+}
+
+Vec3 to_face_space(CubeFace face, const Vec3& point) {
+  const FaceMatrix& matrix = matrix_of(face);
+  Vec3 face_space{};
+  for (int column = 0; column < 3; ++column) {
+    for (int row = 0; row < 3; ++row) face_space[column] += matrix[row][column] * point[row];
+  }
+  return face_space;
+}
+
+// The face a direction meets: its component of largest magnitude, ties to z, then x, then y.
+CubeFace face_of(const Vec3& direction) {
+  const double x = std::abs(direction[0]), y = std::abs(direction[1]), z = std::abs(direction[2]);
+  if (z >= x && z >= y) return direction[2] >= 0 ? CubeFace::front : CubeFace::back;
+  if (x >= y) return direction[0] >= 0 ? CubeFace::right : CubeFace::left;
+  return direction[1] >= 0 ? CubeFace::north : CubeFace::south;
+}
+
+// (u, v) of face space as local (a, b).
+LocalPosition local_of_face_space(CubeFace face, double u, double v) { return {face, (u + 1.0) / 2.0, (1.0 - v) / 2.0}; }
+
+}  // namespace
+
+double warp(double t) { return std::tan(warp_angle * t) / std::tan(warp_angle); }
+
+double unwarp(double u) { return std::atan(u * std::tan(warp_angle)) / warp_angle; }
+
+Vec3 cube_point(const LocalPosition& local) {
+  return to_cube(local.face, {2.0 * local.a - 1.0, 1.0 - 2.0 * local.b, 1.0});
+}
+
+Vec3 sphere_position(const LocalPosition& local, bool warped) {
+  const double u = 2.0 * local.a - 1.0, v = 1.0 - 2.0 * local.b;
+  return normalised(to_cube(local.face, warped ? Vec3{warp(u), warp(v), 1.0} : Vec3{u, v, 1.0}));
+}
+
+LocalPosition local_position_of(const Vec3& direction, bool warped) {
+  const double largest = std::max({std::abs(direction[0]), std::abs(direction[1]), std::abs(direction[2])});
+  if (!(largest > 0.0) || !std::isfinite(largest)) {
+    throw std::invalid_argument(fmt::format("cube sphere: the direction ({}, {}, {}) names no point of the sphere",
+                                            direction[0], direction[1], direction[2]));
+  }
+  const CubeFace face = face_of(direction);
+  const Vec3 face_space = to_face_space(face, (1.0 / largest) * direction);
+  return warped ? local_of_face_space(face, unwarp(face_space[0]), unwarp(face_space[1]))
+                : local_of_face_space(face, face_space[0], face_space[1]);
+}
+
+std::optional<LocalPosition> wrap(const LocalPosition& local) {
+  const double u = 2.0 * local.a - 1.0, v = 1.0 - 2.0 * local.b;
+  const double u_clamped = std::clamp(u, -1.0, 1.0), v_clamped = std::clamp(v, -1.0, 1.0);
+  const double u_over = std::abs(u_clamped - u), v_over = std::abs(v_clamped - v);
+  if (u_over == 0.0 && v_over == 0.0) return local;
+  if (u_over > 0.0 && v_over > 0.0) return std::nullopt;  // over a corner
+  // Fold the overshoot down the edge onto the neighbouring face (an isometric unfolding).
+  const Vec3 folded = to_cube(local.face, {u_clamped, v_clamped, 1.0 - (u_over + v_over)});
+  const CubeFace face = face_of(folded);
+  const Vec3 face_space = to_face_space(face, folded);
+  return local_of_face_space(face, face_space[0], face_space[1]);
+}
+
+CubeSphere::CubeSphere(int resolution) : resolution_(resolution) {
+  if (resolution < 1 || resolution > max_cube_sphere_resolution) {
+    throw InputError(fmt::format("cube sphere: resolution {} is outside 1..{} (6R² regions)", resolution,
+                                 max_cube_sphere_resolution));
+  }
+  const auto per_face = static_cast<std::size_t>(resolution) * static_cast<std::size_t>(resolution);
+  neighbours_.resize(cube_face_count * per_face);
+  for (std::size_t region = 0; region < neighbours_.size(); ++region) {
+    const LocalPosition centre = local_position(region);
+    for (std::size_t step = 0; step < neighbour_steps.size(); ++step) {
+      const LocalPosition next{centre.face, centre.a + neighbour_steps[step][0] / double(resolution),
+                               centre.b + neighbour_steps[step][1] / double(resolution)};
+      const auto found = region_at(next);
+      neighbours_[region][step] = found ? static_cast<std::int32_t>(*found) : invalid_region;
+    }
+  }
+}
+
+LocalPosition CubeSphere::local_position(std::size_t region, double offset_a, double offset_b) const {
+  const auto side = static_cast<std::size_t>(resolution_);
+  const std::size_t per_face = side * side;
+  const std::size_t x = region % side, y = region / side % side;
+  return {static_cast<CubeFace>(region / per_face), (double(x) + offset_a) / double(side),
+          (double(y) + offset_b) / double(side)};
+}
+
+std::optional<std::size_t> CubeSphere::region_on_face(const LocalPosition& local) const {
+  if (!(local.a >= 0.0 && local.a <= 1.0 && local.b >= 0.0 && local.b <= 1.0)) return std::nullopt;
+  const auto cell = [this](double coordinate) {
+    return std::min(static_cast<std::size_t>(coordinate * resolution_), static_cast<std::size_t>(resolution_ - 1));
+  };
+  const auto side = static_cast<std::size_t>(resolution_);
+  return static_cast<std::size_t>(local.face) * side * side + cell(local.b) * side + cell(local.a);
+}
+
+std::optional<std::size_t> CubeSphere::region_at(const LocalPosition& local) const {
+  const auto wrapped = wrap(local);
+  return wrapped ? region_on_face(*wrapped) : std::nullopt;
+}
+
+}  // namespace gt
