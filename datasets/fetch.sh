@@ -29,11 +29,13 @@ readonly cgal_demo_deb="libcgal-demo=5.5.1-2"
 # libcgal-demo's doc folder is a link to libcgal-dev's, so its copyright file ships in libcgal-dev.
 readonly cgal_dev_deb="libcgal-dev=5.5.1-2"
 readonly skimage_deb="python3-skimage=0.19.3-8"
+readonly ferret_deb="ferret-datasets=7.6.0-5"
 readonly mpl_sample_dir="usr/share/matplotlib/mpl-data/sample_data"
 readonly terra_ex_dir="usr/lib/R/site-library/terra/ex"
 readonly cgal_data_tar="usr/share/doc/libcgal-dev/data.tar.gz"
 readonly cgal_copyright="usr/share/doc/libcgal-dev/copyright"
 readonly skimage_data_dir="usr/lib/python3/dist-packages/skimage/data"
+readonly ferret_data_dir="usr/share/ferret-vis/data"
 
 readonly volcano_sha=49578c17a2a595a83a393a6da2cc85e3d3d4c93043e942a5e04dc113ca4a8528
 readonly jacksboro_sha=d493f50a33e82a4420494c54d1fca1539d177bdc27ab190bc5fe6e92f62fb637
@@ -44,6 +46,7 @@ readonly elephant_sha=be4e1ea68f5f840a3d2ada69d828222e76a57d9e25b21e19a9deacd3f2
 readonly cow_sha=1c5a25c3047fc6b14dd0c962d3562b1796671422ab4634f9d46f9f23814cd54a
 readonly elephant_with_holes_sha=0262a20c433534623af10f2b8b3aeb9067792486195cac47738bc6abea0cb8d0
 readonly astronaut_sha=88431cd9653ccd539741b555fb0a46b61558b301d4110412b5bc28b5e3ea6cb5
+readonly etopo60_sha=36b4cb72a01cf4c6dc155e52dca6c4ff148aea5958d056d3136fe2789646c4ad
 readonly grass_sha=b6b6022426b38936c43a4ac09635cd78af074e90f42ffa8227ac8b7452d39f89
 
 work_dir="$(mktemp -d)"
@@ -307,10 +310,35 @@ EOF
 }
 
 mkdir -p "$real_dir/meshes" "$real_dir/textures"
+# ETOPO 1° global relief (issue 13: generated planets beside the Earth).
+fetch_etopo60() {
+  is_current etopo60.cdf etopo60 "$etopo60_sha" && { echo "etopo60.cdf: up to date"; return; }
+  apt_fetch "$ferret_deb"
+  install_file "$work_dir/ferret-datasets/$ferret_data_dir/etopo60.cdf" etopo60.cdf etopo60 "$etopo60_sha" \
+    "$work_dir/ferret-datasets/usr/share/doc/ferret-datasets/copyright"
+  write_sidecar etopo60 <<EOF
+{
+  "file": "etopo60.cdf",
+  "origin": {"package": "deb:$ferret_deb", "path": "$ferret_data_dir/etopo60.cdf"},
+  "sha256": "$etopo60_sha",
+  "licence": {"name": "Ferret licence (NOAA PMEL); ETOPO5 data public domain (NOAA NGDC)", "notice": "LICENSE.etopo60.txt"},
+  "description": "ETOPO 1 degree global relief, land and sea floor (Ferret's packaging of NOAA's ETOPO5)",
+  "format": "netCDF-3 classic; variable ROSE float32, fill -1e34; coordinate variables ETOPO60X, ETOPO60Y",
+  "grid": {"width": 360, "height": 180, "cell_size": "1 degree",
+           "longitude": [20.5, 379.5], "latitude": [-89.5, 89.5], "row_order": "south row first"},
+  "units": {"horizontal": "degree (longitude east, latitude north)", "vertical": "m"},
+  "values": {"min": -7473, "max": 5731, "area_weighted_ocean_fraction": 0.710},
+  "no_data": "-1e34 (none in the file)"
+}
+EOF
+  echo "etopo60.cdf: fetched"
+}
+
 fetch_volcano
 fetch_jacksboro
 fetch_topobathy
 fetch_luxembourg
+fetch_etopo60
 # The topology as groundtruth check-mesh measures it (tests/mesh_checks_test.cpp pins it).
 fetch_cgal_mesh bunny00 "$bunny00_sha" 37706 75408 \
   "Stanford bunny (Stanford 3D Scanning Repository) as shipped in CGAL's demo data" \

@@ -12,6 +12,8 @@ packages=(
   # core libraries
   libopenimageio-dev openimageio-tools libcgal-dev libopenmesh-dev libglm-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libzip-dev libtiff-dev
+  # global elevation grids in netCDF (ETOPO; core/io/global_grid.cpp)
+  libnetcdf-dev
   # power spectra of terrain descriptors (compare/descriptors/power_spectrum.cpp)
   libfftw3-dev
   # tests comparing descriptors with GDAL's (gdaldem slope)

@@ -1,0 +1,105 @@
+// Area-weighted relief of a global grid; see global_relief.hpp.
+#include "compare/descriptors/global_relief.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+constexpr double degree = std::numbers::pi / 180.0;
+
+// Edges halfway between centres; the outer edges mirrored from the neighbouring half-spacing.
+std::vector<double> cell_edges(const std::vector<double>& centres) {
+  std::vector<double> edges(centres.size() + 1);
+  for (std::size_t i = 1; i < centres.size(); ++i) edges[i] = 0.5 * (centres[i - 1] + centres[i]);
+  edges.front() = centres.front() - (edges[1] - centres.front());
+  edges.back() = centres.back() + (centres.back() - edges[centres.size() - 1]);
+  return edges;
+}
+
+// Area of each row's cells per unit of longitude (radians): |sin φ_north - sin φ_south|.
+std::vector<double> row_weights(const std::vector<double>& latitudes) {
+  const std::vector<double> edges = cell_edges(latitudes);
+  std::vector<double> weights(latitudes.size());
+  for (std::size_t row = 0; row < latitudes.size(); ++row) {
+    const double low = std::clamp(edges[row], -90.0, 90.0), high = std::clamp(edges[row + 1], -90.0, 90.0);
+    weights[row] = std::abs(std::sin(high * degree) - std::sin(low * degree));
+  }
+  return weights;
+}
+
+// Each column's width in radians; a last column 360° after the first gets none.
+std::vector<double> column_widths(const std::vector<double>& longitudes) {
+  const std::vector<double> edges = cell_edges(longitudes);
+  std::vector<double> widths(longitudes.size());
+  for (std::size_t column = 0; column < longitudes.size(); ++column) {
+    widths[column] = std::abs(edges[column + 1] - edges[column]) * degree;
+  }
+  const double half_spacing = 0.5 * std::abs(longitudes[1] - longitudes[0]);
+  if (std::abs(std::abs(longitudes.back() - longitudes.front()) - 360.0) < half_spacing) widths.back() = 0.0;
+  return widths;
+}
+
+}  // namespace
+
+GlobalRelief global_relief(const GlobalGrid& grid, double sea_level, int points, double bin_width) {
+  if (points < 2 || !(bin_width > 0.0)) {
+    throw InputError(fmt::format("global relief: {} curve points and bins of {} (at least 2 points, bins above 0)",
+                                 points, bin_width));
+  }
+  const Grid<double>& elevation = grid.elevation;
+  const std::vector<double> rows = row_weights(grid.latitudes);
+  const std::vector<double> columns = column_widths(grid.longitudes);
+  std::vector<std::pair<double, double>> cells;  // (elevation, area)
+  cells.reserve(elevation.values.size());
+  for (int row = 0; row < elevation.height; ++row) {
+    for (int column = 0; column < elevation.width; ++column) {
+      const std::size_t cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(elevation.width) +
+                               static_cast<std::size_t>(column);
+      const double area = rows[static_cast<std::size_t>(row)] * columns[static_cast<std::size_t>(column)];
+      if (area > 0.0 && (elevation.valid.empty() || elevation.valid[cell])) cells.emplace_back(elevation.values[cell], area);
+    }
+  }
+  if (cells.empty()) throw InputError(fmt::format("global relief of {}: no valid cell", grid.variable));
+  std::sort(cells.begin(), cells.end());
+
+  GlobalRelief relief;
+  relief.min = cells.front().first;
+  relief.max = cells.back().first;
+  double land = 0.0, weighted = 0.0;
+  for (const auto& [height, area] : cells) {
+    relief.valid_area += area;
+    weighted += height * area;
+    if (height >= sea_level) land += area;
+  }
+  relief.land_fraction = land / relief.valid_area;
+  relief.mean = weighted / relief.valid_area;
+
+  relief.hypsometry.resize(static_cast<std::size_t>(points));
+  double below = 0.0;
+  std::size_t next = 0;
+  for (int point = 0; point < points; ++point) {
+    const double fraction = double(point) / double(points - 1);
+    while (next + 1 < cells.size() && (below + cells[next].second) / relief.valid_area < fraction) below += cells[next++].second;
+    relief.hypsometry[static_cast<std::size_t>(point)] = point == 0 ? relief.min : cells[next].first;
+  }
+  relief.hypsometry.back() = relief.max;
+
+  relief.bin_width = bin_width;
+  relief.histogram_start = std::floor(relief.min / bin_width) * bin_width;
+  relief.histogram.assign(static_cast<std::size_t>(std::floor((relief.max - relief.histogram_start) / bin_width)) + 1, 0.0);
+  for (const auto& [height, area] : cells) {
+    relief.histogram[static_cast<std::size_t>(std::floor((height - relief.histogram_start) / bin_width))] +=
+        area / relief.valid_area;
+  }
+  return relief;
+}
+
+}  // namespace gt

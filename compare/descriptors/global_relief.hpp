@@ -1,0 +1,40 @@
+// Area-weighted relief of a global latitude-longitude grid (core/io/global_grid.hpp), the figures
+// issue 13 sets a generated planet beside the Earth's: land fraction (ETOPO: 0.290), the
+// hypsometric curve and the elevation histogram (the Earth's is bimodal: continents near +0.1 km,
+// ocean floor near -4 km), the elevation range.
+//
+// Each valid cell weighs its area on the unit sphere, Δλ·(sin φ_north - sin φ_south) with Δλ and
+// the latitude edges halfway between neighbouring centres (the outer rows' outer edges mirrored,
+// then clamped to ±90°); a last column 360° after the first (etopo20 repeats it) is left out.
+// No-data cells are left out; fractions are of the valid area.
+// Output:
+//   land_fraction       the area share not below sea_level (the grid's vertical unit): ocean is
+//                       what lies below it (ETOPO 1° has 0.09 % of its area at exactly 0 m)
+//   mean, min, max      area-weighted mean and the range of valid cells
+//   hypsometry          the elevation below which each area fraction lies, at fractions 0, 1/(n-1),
+//                       ..., 1 (n = points; the first is min, the last max): the hypsometric curve
+//   histogram           area shares of bins of bin_width from floor(min / bin_width)·bin_width up
+// Throws InputError when no cell is valid, points < 2 or bin_width <= 0.
+#pragma once
+
+#include <vector>
+
+#include "core/io/global_grid.hpp"
+
+namespace gt {
+
+struct GlobalRelief {
+  double land_fraction = 0.0;
+  double mean = 0.0;
+  double min = 0.0;
+  double max = 0.0;
+  double valid_area = 0.0;  // steradians; 4π for a whole sphere without no-data
+  std::vector<double> hypsometry;
+  double histogram_start = 0.0;  // the first bin's lower edge
+  double bin_width = 0.0;
+  std::vector<double> histogram;
+};
+
+GlobalRelief global_relief(const GlobalGrid& grid, double sea_level = 0.0, int points = 101, double bin_width = 500.0);
+
+}  // namespace gt

@@ -1,0 +1,133 @@
+// Global elevation grids (core/io/global_grid.hpp) and their area-weighted relief
+// (compare/descriptors/global_relief.hpp): a netCDF file written here with libnetcdf, whose land
+// lies north of 30° N, so that its land fraction is (sin 90° - sin 30°) / 2 = 1/4 exactly up to
+// the roundings of a few sines and sums (1e-12), and Debian's ETOPO 1° (datasets/fetch.sh).
+#include <netcdf.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "compare/descriptors/global_relief.hpp"
+#include "core/errors.hpp"
+#include "core/io/global_grid.hpp"
+
+namespace gt {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double ocean_floor = -4000.0, land = 100.0;
+constexpr float fill_value = -1e34f;
+
+struct SyntheticGrid {
+  int rows = 18;         // 10° rows, centres -85 .. 85
+  int columns = 36;      // 10° columns, centres 5 .. 355 (and 365 with repeat_first_column)
+  bool repeat_first_column = false;
+  int fill_cells = 0;    // the first cells of row 0 get the fill value
+};
+
+fs::path write_grid(const SyntheticGrid& spec, const std::string& name) {
+  const fs::path path = fs::temp_directory_path() / name;
+  int file = -1, latitude_dimension = -1, longitude_dimension = -1, latitude = -1, longitude = -1, height = -1;
+  const int columns = spec.columns + (spec.repeat_first_column ? 1 : 0);
+  EXPECT_EQ(nc_create(path.c_str(), NC_CLOBBER, &file), NC_NOERR);
+  nc_def_dim(file, "lat", static_cast<std::size_t>(spec.rows), &latitude_dimension);
+  nc_def_dim(file, "lon", static_cast<std::size_t>(columns), &longitude_dimension);
+  nc_def_var(file, "lat", NC_DOUBLE, 1, &latitude_dimension, &latitude);
+  nc_def_var(file, "lon", NC_DOUBLE, 1, &longitude_dimension, &longitude);
+  const int dimensions[2] = {latitude_dimension, longitude_dimension};
+  nc_def_var(file, "height", NC_FLOAT, 2, dimensions, &height);
+  nc_put_att_text(file, height, "units", 1, "m");
+  nc_put_att_float(file, height, "_FillValue", NC_FLOAT, 1, &fill_value);
+  nc_enddef(file);
+  std::vector<double> latitudes, longitudes;
+  for (int row = 0; row < spec.rows; ++row) latitudes.push_back(-85.0 + 10.0 * row);
+  for (int column = 0; column < columns; ++column) longitudes.push_back(5.0 + 10.0 * column);
+  std::vector<float> heights;
+  for (const double centre : latitudes) {
+    for (int column = 0; column < columns; ++column) heights.push_back(centre > 30.0 ? float(land) : float(ocean_floor));
+  }
+  for (int cell = 0; cell < spec.fill_cells; ++cell) heights[static_cast<std::size_t>(cell)] = fill_value;
+  nc_put_var_double(file, latitude, latitudes.data());
+  nc_put_var_double(file, longitude, longitudes.data());
+  nc_put_var_float(file, height, heights.data());
+  EXPECT_EQ(nc_close(file), NC_NOERR);
+  return path;
+}
+
+TEST(GlobalGrid, ReadsTheVariableItsCoordinatesAndItsFillValue) {
+  const fs::path path = write_grid({.fill_cells = 3}, "gt_global_grid_fill.nc");
+  const GlobalGrid grid = read_global_grid(path.string());
+  EXPECT_EQ(grid.variable, "height");
+  EXPECT_EQ(grid.elevation.width, 36);
+  EXPECT_EQ(grid.elevation.height, 18);
+  EXPECT_EQ(grid.latitudes.front(), -85.0) << "rows as stored, south first here";
+  EXPECT_EQ(grid.elevation.vertical_unit, "m");
+  EXPECT_EQ(grid.elevation.valid[2], 0);
+  EXPECT_EQ(grid.elevation.valid[3], 1);
+  EXPECT_EQ(grid.elevation.values.back(), land);
+  fs::remove(path);
+}
+
+TEST(GlobalRelief, LandNorthOf30DegreesIsAQuarterOfTheSphere) {
+  const fs::path path = write_grid({}, "gt_global_grid_quarter.nc");
+  const GlobalRelief relief = global_relief(read_global_grid(path.string()));
+  EXPECT_NEAR(relief.land_fraction, 0.25, 1e-12);
+  EXPECT_NEAR(relief.valid_area, 4 * std::numbers::pi, 1e-12);
+  EXPECT_NEAR(relief.mean, 0.75 * ocean_floor + 0.25 * land, 1e-9);
+  EXPECT_EQ(relief.min, ocean_floor);
+  EXPECT_EQ(relief.max, land);
+  EXPECT_EQ(relief.hypsometry[74], ocean_floor) << "three quarters of the area lie at the ocean floor";
+  EXPECT_EQ(relief.hypsometry[76], land);
+  EXPECT_EQ(relief.histogram_start, ocean_floor);
+  ASSERT_EQ(relief.histogram.size(), 9u) << "bins of 500 m from -4000 m to the bin holding 100 m";
+  EXPECT_NEAR(relief.histogram.front(), 0.75, 1e-12);
+  EXPECT_NEAR(relief.histogram.back(), 0.25, 1e-12);
+  fs::remove(path);
+}
+
+TEST(GlobalRelief, ARepeatedWrapColumnCountsOnce) {
+  const fs::path path = write_grid({.repeat_first_column = true}, "gt_global_grid_wrap.nc");
+  const GlobalRelief relief = global_relief(read_global_grid(path.string()));
+  EXPECT_NEAR(relief.valid_area, 4 * std::numbers::pi, 1e-12);
+  EXPECT_NEAR(relief.land_fraction, 0.25, 1e-12);
+  fs::remove(path);
+}
+
+// datasets/real/etopo60.cdf (Debian's ferret-datasets): the figures of ../shared/data-sources.md,
+// an area-weighted ocean fraction (below 0 m) of 0.710 given to three digits (so land 0.290 ±
+// 0.0005) and the range -7473 .. 5731 m, rounded to metres.
+TEST(GlobalRelief, Etopo60HasTheEarthsLandFractionAndRange) {
+  const GlobalGrid earth = read_global_grid((fs::path(GT_DATASET_DIR) / "real" / "etopo60.cdf").string());
+  EXPECT_EQ(earth.variable, "ROSE");
+  EXPECT_EQ(earth.elevation.width, 360);
+  EXPECT_EQ(earth.elevation.height, 180);
+  EXPECT_EQ(earth.latitudes.front(), -89.5) << "south row first";
+  const GlobalRelief relief = global_relief(earth);
+  EXPECT_NEAR(relief.land_fraction, 0.290, 0.0005);
+  EXPECT_NEAR(relief.min, -7473.0, 0.5);
+  EXPECT_NEAR(relief.max, 5731.0, 0.5);
+  EXPECT_NEAR(relief.mean, -2388.0, 0.5) << "the mean data-sources.md gives, rounded to metres";
+  EXPECT_NEAR(relief.valid_area, 4 * std::numbers::pi, 1e-9);
+}
+
+TEST(GlobalGrid, RefusesFilesAndVariablesItCannotRead) {
+  const fs::path text = fs::temp_directory_path() / "gt_global_grid_not_netcdf.nc";
+  std::ofstream(text) << "not a netCDF file\n";
+  EXPECT_THROW(read_global_grid(text.string()), InputError);
+  fs::remove(text);
+  const fs::path path = write_grid({}, "gt_global_grid_names.nc");
+  EXPECT_THROW(read_global_grid(path.string(), "ROSE"), InputError) << "no such variable";
+  EXPECT_THROW(read_global_grid(path.string(), "lat"), InputError) << "one-dimensional";
+  fs::remove(path);
+  EXPECT_THROW(global_relief(GlobalGrid{}, 0.0, 1), InputError);
+}
+
+}  // namespace
+}  // namespace gt
