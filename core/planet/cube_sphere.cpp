@@ -31,23 +31,18 @@ constexpr std::array<std::array<int, 2>, 8> neighbour_steps = {
 
 const FaceMatrix& matrix_of(CubeFace face) { return face_matrices[static_cast<std::size_t>(face)]; }
 
-Vec3 to_cube(CubeFace face, const Vec3& face_space) {
-  const FaceMatrix& matrix = matrix_of(face);
-  Vec3 point{};
-  for (int row = 0; row < 3; ++row) {
-    for (int column = 0; column < 3; ++column) point[row] += matrix[row][column] * face_space[column];
+// P·vector, or Pᵀ·vector (the inverse: P is a signed permutation) when transposed.
+Vec3 apply(const FaceMatrix& matrix, const Vec3& vector, bool transposed) {
+  Vec3 result{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) result[i] += (transposed ? matrix[j][i] : matrix[i][j]) * vector[j];
   }
-  return point;
+  return result;
 }
 
-Vec3 to_face_space(CubeFace face, const Vec3& point) {
-  const FaceMatrix& matrix = matrix_of(face);
-  Vec3 face_space{};
-  for (int column = 0; column < 3; ++column) {
-    for (int row = 0; row < 3; ++row) face_space[column] += matrix[row][column] * point[row];
-  }
-  return face_space;
-}
+Vec3 to_cube(CubeFace face, const Vec3& face_space) { return apply(matrix_of(face), face_space, false); }
+
+Vec3 to_face_space(CubeFace face, const Vec3& point) { return apply(matrix_of(face), point, true); }
 
 // The face a direction meets: its component of largest magnitude, ties to z, then x, then y.
 CubeFace face_of(const Vec3& direction) {
