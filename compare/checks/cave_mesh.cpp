@@ -15,17 +15,20 @@
 namespace gt {
 
 template <class Real>
-std::vector<KeyTriangle> key_triangles(const TriangleMesh<Real>& mesh) {
+KeyTriangle key_triangle(const TriangleMesh<Real>& mesh, const std::array<std::uint32_t, 3>& triangle) {
   const auto key_of = [&mesh](std::uint32_t vertex) {
     return vertex < mesh.edge_keys.size() ? mesh.edge_keys[vertex] : missing_vertex_key;
   };
+  KeyTriangle keys = {key_of(triangle[0]), key_of(triangle[1]), key_of(triangle[2])};
+  std::rotate(keys.begin(), std::min_element(keys.begin(), keys.end()), keys.end());
+  return keys;
+}
+
+template <class Real>
+std::vector<KeyTriangle> key_triangles(const TriangleMesh<Real>& mesh) {
   std::vector<KeyTriangle> keyed;
   keyed.reserve(mesh.triangles.size());
-  for (const auto& triangle : mesh.triangles) {
-    KeyTriangle keys = {key_of(triangle[0]), key_of(triangle[1]), key_of(triangle[2])};
-    std::rotate(keys.begin(), std::min_element(keys.begin(), keys.end()), keys.end());
-    keyed.push_back(keys);
-  }
+  for (const auto& triangle : mesh.triangles) keyed.push_back(key_triangle(mesh, triangle));
   std::sort(keyed.begin(), keyed.end());
   return keyed;
 }
@@ -248,6 +251,8 @@ template std::size_t border_edges_off_box(const TriangleMesh<float>&, const Latt
 template std::size_t border_edges_off_box(const TriangleMesh<double>&, const LatticeBox&);
 template std::vector<std::array<std::uint32_t, 2>> border_edges(const TriangleMesh<float>&);
 template std::vector<std::array<std::uint32_t, 2>> border_edges(const TriangleMesh<double>&);
+template KeyTriangle key_triangle(const TriangleMesh<float>&, const std::array<std::uint32_t, 3>&);
+template KeyTriangle key_triangle(const TriangleMesh<double>&, const std::array<std::uint32_t, 3>&);
 template VertexComparison compare_vertices(const TriangleMesh<float>&, const TriangleMesh<float>&,
                                            const std::function<double(std::uint64_t)>&);
 template VertexComparison compare_vertices(const TriangleMesh<float>&, const TriangleMesh<double>&,

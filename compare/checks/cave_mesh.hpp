@@ -57,6 +57,10 @@ using KeyTriangle = std::array<std::uint64_t, 3>;
 // edge has it (keys use 63 bits), so such a triangle differs from every real one.
 inline constexpr std::uint64_t missing_vertex_key = ~std::uint64_t{0};
 
+// One triangle as its key triple, rotated so that the smallest key comes first (orientation kept).
+template <class Real>
+KeyTriangle key_triangle(const TriangleMesh<Real>& mesh, const std::array<std::uint32_t, 3>& triangle);
+
 template <class Real>
 std::vector<KeyTriangle> key_triangles(const TriangleMesh<Real>& mesh);
 

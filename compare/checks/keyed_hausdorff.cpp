@@ -12,6 +12,7 @@
 
 #include "compare/checks/cave_mesh.hpp"
 #include "compare/checks/mesh.hpp"
+#include "core/vec3.hpp"
 
 namespace gt {
 namespace {
@@ -34,16 +35,10 @@ struct IndexedKeyTriangle {
 };
 
 std::vector<IndexedKeyTriangle> indexed_key_triangles(const Mesh& mesh) {
-  const auto key_of = [&mesh](std::uint32_t vertex) {
-    return vertex < mesh.edge_keys.size() ? mesh.edge_keys[vertex] : missing_vertex_key;
-  };
   std::vector<IndexedKeyTriangle> keyed;
   keyed.reserve(mesh.triangles.size());
   for (std::uint32_t index = 0; index < mesh.triangles.size(); ++index) {
-    const auto& triangle = mesh.triangles[index];
-    KeyTriangle keys = {key_of(triangle[0]), key_of(triangle[1]), key_of(triangle[2])};
-    std::rotate(keys.begin(), std::min_element(keys.begin(), keys.end()), keys.end());
-    keyed.push_back({keys, index});
+    keyed.push_back({key_triangle(mesh, mesh.triangles[index]), index});
   }
   std::sort(keyed.begin(), keyed.end());
   return keyed;
@@ -103,14 +98,6 @@ Matching match_triangles(const Mesh& a, const Mesh& b) {
   return matching;
 }
 
-KeyTriangle keys_of(const Mesh& mesh, const std::array<std::uint32_t, 3>& triangle) {
-  KeyTriangle keys{};
-  for (int corner = 0; corner < 3; ++corner) {
-    keys[corner] = triangle[corner] < mesh.edge_keys.size() ? mesh.edge_keys[triangle[corner]] : missing_vertex_key;
-  }
-  return keys;
-}
-
 bool has_keys(const Mesh& mesh, const std::array<std::uint32_t, 3>& triangle) {
   return std::all_of(triangle.begin(), triangle.end(), [&](std::uint32_t vertex) { return vertex < mesh.edge_keys.size(); });
 }
@@ -120,7 +107,7 @@ bool has_keys(const Mesh& mesh, const std::array<std::uint32_t, 3>& triangle) {
 bool triangles_in_their_cubes(const Mesh& mesh) {
   return std::all_of(mesh.triangles.begin(), mesh.triangles.end(), [&](const auto& triangle) {
     if (!has_keys(mesh, triangle)) return false;
-    const LatticeBox cube = triangle_cube(keys_of(mesh, triangle));
+    const LatticeBox cube = triangle_cube(key_triangle(mesh, triangle));
     return std::all_of(triangle.begin(), triangle.end(), [&](std::uint32_t vertex) {
       if (vertex >= mesh.positions.size()) return false;
       for (int axis = 0; axis < 3; ++axis) {
@@ -147,7 +134,7 @@ std::optional<LatticeBox> near_region_bounds(const Mesh& a, const Mesh& b) {
   bounds.high.fill(std::numeric_limits<std::int64_t>::min());
   for (const Mesh* mesh : {&a, &b}) {
     for (const auto& triangle : mesh->triangles) {
-      const LatticeBox cube = triangle_cube(keys_of(*mesh, triangle));
+      const LatticeBox cube = triangle_cube(key_triangle(*mesh, triangle));
       for (int axis = 0; axis < 3; ++axis) {
         bounds.low[axis] = std::min(bounds.low[axis], cube.low[axis] - reach);
         bounds.high[axis] = std::max(bounds.high[axis], cube.high[axis] + reach);
@@ -253,13 +240,9 @@ double area(const Mesh& mesh) {
   double total = 0.0;
   for (const auto& triangle : mesh.triangles) {
     if (std::max({triangle[0], triangle[1], triangle[2]}) >= mesh.positions.size()) continue;
-    const auto& p = mesh.positions[triangle[0]];
-    const auto& q = mesh.positions[triangle[1]];
-    const auto& r = mesh.positions[triangle[2]];
-    const std::array<double, 3> u{q[0] - p[0], q[1] - p[1], q[2] - p[2]};
-    const std::array<double, 3> v{r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
-    if (std::isfinite(x + y + z)) total += 0.5 * std::sqrt(x * x + y * y + z * z);
+    const Vec3& corner = mesh.positions[triangle[0]];
+    const double doubled = length(cross(mesh.positions[triangle[1]] - corner, mesh.positions[triangle[2]] - corner));
+    if (std::isfinite(doubled)) total += 0.5 * doubled;
   }
   return total;
 }
@@ -278,13 +261,13 @@ std::pair<Mesh, Mesh> near_triangles(const LatticeBox& bounds, const Mesh& a, co
   NearRegion region(bounds);
   for (const auto& [mesh, sampled] : {std::pair{&a, &matching.a_sampled}, std::pair{&b, &matching.b_sampled}}) {
     for (std::size_t triangle = 0; triangle < mesh->triangles.size(); ++triangle) {
-      if ((*sampled)[triangle]) region.mark(triangle_cube(keys_of(*mesh, mesh->triangles[triangle])));
+      if ((*sampled)[triangle]) region.mark(triangle_cube(key_triangle(*mesh, mesh->triangles[triangle])));
     }
   }
   region.dilate();
   const auto near = [&region](const Mesh& mesh) {
     return submesh(mesh, [&](std::size_t triangle) {
-      return region.touches(triangle_cube(keys_of(mesh, mesh.triangles[triangle])));
+      return region.touches(triangle_cube(key_triangle(mesh, mesh.triangles[triangle])));
     });
   };
   return {near(a), near(b)};
