@@ -12,8 +12,6 @@
 namespace gt {
 namespace {
 
-using FaceMatrix = std::array<std::array<int, 3>, 3>;  // rows: cube point = P · (u, v, 1)
-
 // The code's facePermutationMatrix, rows as the digest's table (§3.4) lists them.
 constexpr std::array<FaceMatrix, cube_face_count> face_matrices = {{
     {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}},    // front: +z, +a toward +x, +b toward -y
@@ -29,7 +27,6 @@ constexpr std::array<FaceMatrix, cube_face_count> face_matrices = {{
 constexpr std::array<std::array<int, 2>, 8> neighbour_steps = {
     {{0, -1}, {-1, -1}, {-1, 0}, {-1, 1}, {0, 1}, {1, 1}, {1, 0}, {1, -1}}};
 
-const FaceMatrix& matrix_of(CubeFace face) { return face_matrices[static_cast<std::size_t>(face)]; }
 
 // P·vector, or Pᵀ·vector (the inverse: P is a signed permutation) when transposed.
 Vec3 apply(const FaceMatrix& matrix, const Vec3& vector, bool transposed) {
@@ -40,9 +37,9 @@ Vec3 apply(const FaceMatrix& matrix, const Vec3& vector, bool transposed) {
   return result;
 }
 
-Vec3 to_cube(CubeFace face, const Vec3& face_space) { return apply(matrix_of(face), face_space, false); }
+Vec3 to_cube(CubeFace face, const Vec3& face_space) { return apply(face_matrix(face), face_space, false); }
 
-Vec3 to_face_space(CubeFace face, const Vec3& point) { return apply(matrix_of(face), point, true); }
+Vec3 to_face_space(CubeFace face, const Vec3& point) { return apply(face_matrix(face), point, true); }
 
 // The face a direction meets: its component of largest magnitude, ties to z, then x, then y.
 CubeFace face_of(const Vec3& direction) {
@@ -56,6 +53,8 @@ CubeFace face_of(const Vec3& direction) {
 LocalPosition local_of_face_space(CubeFace face, double u, double v) { return {face, (u + 1.0) / 2.0, (1.0 - v) / 2.0}; }
 
 }  // namespace
+
+const FaceMatrix& face_matrix(CubeFace face) { return face_matrices[static_cast<std::size_t>(face)]; }
 
 double warp(double t) { return std::tan(warp_angle * t) / std::tan(warp_angle); }
 

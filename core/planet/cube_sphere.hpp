@@ -50,6 +50,10 @@ struct LocalPosition {
 // The 8 neighbours of a cell, in the order up, upLeft, left, downLeft, down, downRight, right, upRight.
 using RegionNeighbours = std::array<std::int32_t, 8>;
 
+// The code's facePermutationMatrix P of a face: cube point = P·(u, v, 1); rows as §3.4 lists them.
+using FaceMatrix = std::array<std::array<int, 3>, 3>;
+const FaceMatrix& face_matrix(CubeFace face);
+
 double warp(double t);    // f(t) = tan(θt) / tan θ: [-1, 1] -> [-1, 1]
 double unwarp(double u);  // f⁻¹(u) = atan(u tan θ) / θ
 

@@ -1,0 +1,222 @@
+// Steps 4–9 of the Earth-like generator; see elevation.hpp. The formulas and their order are the
+// spec of core/params/planet.hpp; the comments here only name the step.
+#include "reference/planet/elevation.hpp"
+
+#include <cmath>
+
+#include "core/noise/permutation.hpp"
+#include "core/params/noise_fractal.hpp"
+#include "core/rng.hpp"
+#include "reference/noise/fractal.hpp"
+#include "reference/noise/perlin.hpp"
+
+namespace gt::reference {
+namespace {
+
+template <class Real>
+Real dot3(const Vector3<Real>& a, const Vector3<Real>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+template <class Real>
+Vector3<Real> scaled(const Vector3<Real>& a, Real factor) {
+  return {a[0] * factor, a[1] * factor, a[2] * factor};
+}
+
+template <class Real>
+Vector3<Real> minus(const Vector3<Real>& a, const Vector3<Real>& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+
+template <class Real>
+Vector3<Real> plus(const Vector3<Real>& a, const Vector3<Real>& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+}
+
+template <class Real>
+Real length3(const Vector3<Real>& a) {
+  return std::sqrt(dot3(a, a));
+}
+
+// a·(1/|a|), or 0 for a zero vector.
+template <class Real>
+Vector3<Real> normalised3(const Vector3<Real>& a) {
+  const Real squared = dot3(a, a);
+  return squared > Real(0) ? scaled(a, Real(1) / std::sqrt(squared)) : Vector3<Real>{};
+}
+
+template <class Real>
+Vector3<Real> position_of(const std::vector<Real>& positions, std::size_t region) {
+  return {positions[3 * region], positions[3 * region + 1], positions[3 * region + 2]};
+}
+
+template <class Real>
+Real draw(const PlanetParams& params, int plate, std::uint32_t step, PlanetStream stream) {
+  return static_cast<Real>(uniform01(random_u32(params.seed, static_cast<std::uint32_t>(plate), step, stream)));
+}
+
+// Step 4: normalise(Σ pos) over the members (mean) or the edge members (edge_sum), in index order.
+template <class Real>
+std::vector<Vector3<Real>> plate_centres(const PlanetParams& params, const std::vector<Real>& positions,
+                                         const PlatePartition& partition) {
+  std::vector<Vector3<Real>> sums(static_cast<std::size_t>(params.plates), Vector3<Real>{});
+  for (std::size_t region = 0; region < partition.plate.size(); ++region) {
+    if (params.centre == PlateCentre::edge_sum && !partition.is_edge[region]) continue;
+    auto& sum = sums[partition.plate[region]];
+    sum = plus(sum, position_of(positions, region));
+  }
+  for (auto& sum : sums) sum = normalised3(sum);
+  return sums;
+}
+
+// Step 5, eq. 5.2: m·t/|t| with t = α·(c × x̂) + β·(c × ŷ) = (−β·c_z, α·c_z, β·c_x − α·c_y).
+template <class Real>
+Vector3<Real> plate_shift(const PlanetParams& params, int plate, const Vector3<Real>& centre) {
+  const Real magnitude = Real(0.5) + Real(0.5) * draw<Real>(params, plate, 0, planet_stream_shift);
+  const Real alpha = Real(2) * draw<Real>(params, plate, 1, planet_stream_shift) - Real(1);
+  const Real beta = Real(2) * draw<Real>(params, plate, 2, planet_stream_shift) - Real(1);
+  const Vector3<Real> tangent{-(beta * centre[2]), alpha * centre[2], beta * centre[0] - alpha * centre[1]};
+  const Real tangent_length = length3(tangent);
+  return tangent_length > Real(0) ? scaled(tangent, magnitude / tangent_length) : Vector3<Real>{};
+}
+
+// Step 7: base + S·fbm(f·pos).
+template <class Real>
+std::vector<Real> noisy_elevation(const PlanetParams& params, const std::vector<Real>& positions,
+                                  const PlatePartition& partition, const std::vector<Real>& base) {
+  const Permutation permutation = seeded_permutation(params.seed);
+  const auto basis = [&](Real x, Real y, Real z) { return perlin3<Real>(permutation, x, y, z); };
+  FractalParams fractal;
+  fractal.octaves = params.perlin_octaves;
+  fractal.lacunarity = 2.0;
+  fractal.gain = 0.5;
+  const auto terms = fractal_terms<Real>(fractal);
+  const auto frequency = static_cast<Real>(params.perlin_frequency);
+  const auto strength = static_cast<Real>(params.perlin_strength);
+  std::vector<Real> elevation(partition.plate.size());
+  for (std::size_t region = 0; region < elevation.size(); ++region) {
+    elevation[region] = base[partition.plate[region]];
+    if (!params.noise) continue;
+    const Vector3<Real> point = scaled(position_of(positions, region), frequency);
+    elevation[region] = elevation[region] + strength * fbm(basis, terms, point[0], point[1], point[2]);
+  }
+  return elevation;
+}
+
+// Step 8: E0 + C·Σ pressure over neighbours of another plate, on edge regions.
+template <class Real>
+std::vector<Real> collided_elevation(const CubeSphere& sphere, const PlanetParams& params,
+                                     const std::vector<Real>& positions, const PlatePartition& partition,
+                                     const PlateMotion<Real>& motion, const std::vector<Real>& noisy) {
+  if (!params.collisions) return noisy;
+  std::vector<Real> elevation = noisy;
+  const auto strength = static_cast<Real>(params.collision_strength);
+  for (std::size_t region = 0; region < elevation.size(); ++region) {
+    if (!partition.is_edge[region]) continue;
+    const std::int32_t own = partition.plate[region];
+    Real total = 0;
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour == invalid_region || partition.plate[neighbour] == own) continue;
+      total = total + pressure(params.pressure, position_of(positions, region), motion.shift[own],
+                               position_of(positions, neighbour), motion.shift[partition.plate[neighbour]]);
+    }
+    elevation[region] = elevation[region] + strength * total;
+  }
+  return elevation;
+}
+
+// Step 9, jacobi: the mean of the region and its valid neighbours, self first.
+template <class Real>
+std::vector<Real> jacobi_smoothed(const CubeSphere& sphere, const std::vector<Real>& elevation) {
+  std::vector<Real> smoothed(elevation.size());
+  for (std::size_t region = 0; region < elevation.size(); ++region) {
+    Real sum = elevation[region];
+    int count = 1;
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour == invalid_region) continue;
+      sum = sum + elevation[neighbour];
+      ++count;
+    }
+    smoothed[region] = sum / static_cast<Real>(count);
+  }
+  return smoothed;
+}
+
+// Step 9, legacy: the code's in-place sequential halving blend in index order.
+template <class Real>
+std::vector<Real> legacy_smoothed(const CubeSphere& sphere, std::vector<Real> elevation) {
+  for (std::size_t region = 0; region < elevation.size(); ++region) {
+    Real blended = elevation[region];
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour != invalid_region) blended = Real(0.5) * (blended + elevation[neighbour]);
+    }
+    elevation[region] = blended;
+  }
+  return elevation;
+}
+
+}  // namespace
+
+template <class Real>
+PlateMotion<Real> plate_motion(const PlanetParams& params, const std::vector<Real>& positions,
+                               const PlatePartition& partition) {
+  PlateMotion<Real> motion;
+  motion.centre = plate_centres(params, positions, partition);
+  const auto range = static_cast<Real>(params.elevation_range);
+  for (int plate = 0; plate < params.plates; ++plate) {
+    motion.shift.push_back(plate_shift(params, plate, motion.centre[plate]));
+    motion.base.push_back(range * (Real(2) * draw<Real>(params, plate, 0, planet_stream_elevation) - Real(1)));
+  }
+  return motion;
+}
+
+template <class Real>
+Real pressure(PressureFormula formula, const Vector3<Real>& position, const Vector3<Real>& shift,
+              const Vector3<Real>& neighbour_position, const Vector3<Real>& neighbour_shift) {
+  if (formula == PressureFormula::thesis) {
+    const Vector3<Real> velocity = minus(shift, scaled(position, dot3(shift, position)));
+    const Vector3<Real> neighbour_velocity =
+        minus(neighbour_shift, scaled(neighbour_position, dot3(neighbour_shift, neighbour_position)));
+    return length3(velocity) * dot3(velocity, minus(neighbour_position, position)) +
+           length3(neighbour_velocity) * dot3(neighbour_velocity, minus(position, neighbour_position));
+  }
+  const Vector3<Real> direction = normalised3(minus(neighbour_position, position));
+  const Vector3<Real> velocity = minus(normalised3(plus(position, shift)), position);
+  const Vector3<Real> neighbour_velocity = minus(normalised3(plus(neighbour_position, neighbour_shift)), neighbour_position);
+  return length3(shift) * dot3(velocity, direction) +
+         length3(neighbour_shift) * dot3(neighbour_velocity, scaled(direction, Real(-1)));
+}
+
+template <class Real>
+PlanetElevation<Real> planet_elevation(const CubeSphere& sphere, const PlanetParams& params,
+                                       const std::vector<Real>& positions, const PlatePartition& partition) {
+  PlanetElevation<Real> result;
+  result.motion = plate_motion(params, positions, partition);
+  result.noisy = noisy_elevation(params, positions, partition, result.motion.base);
+  result.collided = collided_elevation(sphere, params, positions, partition, result.motion, result.noisy);
+  result.smoothed = smoothed_elevation(sphere, params.smooths() ? params.smoothing : Smoothing::off, result.collided);
+  return result;
+}
+
+template <class Real>
+std::vector<Real> smoothed_elevation(const CubeSphere& sphere, Smoothing smoothing, std::vector<Real> elevation) {
+  switch (smoothing) {
+    case Smoothing::jacobi: return jacobi_smoothed(sphere, elevation);
+    case Smoothing::legacy: return legacy_smoothed(sphere, std::move(elevation));
+    case Smoothing::off: break;
+  }
+  return elevation;
+}
+
+#define GT_INSTANTIATE_PLANET_ELEVATION(Real)                                                                      \
+  template PlateMotion<Real> plate_motion(const PlanetParams&, const std::vector<Real>&, const PlatePartition&); \
+  template Real pressure(PressureFormula, const Vector3<Real>&, const Vector3<Real>&, const Vector3<Real>&,      \
+                         const Vector3<Real>&);                                                                  \
+  template std::vector<Real> smoothed_elevation(const CubeSphere&, Smoothing, std::vector<Real>);               \
+  template PlanetElevation<Real> planet_elevation(const CubeSphere&, const PlanetParams&, const std::vector<Real>&, \
+                                                  const PlatePartition&);
+GT_INSTANTIATE_PLANET_ELEVATION(double)
+GT_INSTANTIATE_PLANET_ELEVATION(float)
+#undef GT_INSTANTIATE_PLANET_ELEVATION
+
+}  // namespace gt::reference

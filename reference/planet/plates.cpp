@@ -1,0 +1,186 @@
+// Steps 2–3 of the Earth-like generator; see plates.hpp. The synchronous rule is the one both twins
+// run; the legacy rule repeats the seed code's TectonicPlateModifier (digest 002 §4.4.2): its
+// sequential first-come fill, with Algorithm 3 as coded (ceil(rate) + 1 expansions per cycle,
+// erratum 10), on the same seeds and rates.
+#include "reference/planet/plates.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+#include "core/rng.hpp"
+
+namespace gt::reference {
+namespace {
+
+float draw(const PlanetParams& params, int plate, std::uint32_t step, PlanetStream stream) {
+  return uniform01(random_u32(params.seed, static_cast<std::uint32_t>(plate), step, stream));
+}
+
+std::vector<std::int32_t> seeded_plates(const PlanetParams& params) {
+  std::vector<std::int32_t> plate(static_cast<std::size_t>(params.region_count()), invalid_region);
+  const auto seeds = plate_seeds(params);
+  for (std::size_t index = 0; index < seeds.size(); ++index) plate[seeds[index]] = static_cast<std::int32_t>(index);
+  return plate;
+}
+
+// The lowest plate among the region's neighbours that is active in sub-step `substep`, or
+// invalid_region.
+std::int32_t lowest_active_plate(const CubeSphere& sphere, const std::vector<std::int32_t>& plate,
+                                 const std::vector<int>& expansions, std::size_t region, int substep) {
+  std::int32_t lowest = INT32_MAX;
+  for (const std::int32_t neighbour : sphere.neighbours(region)) {
+    if (neighbour == invalid_region) continue;
+    const std::int32_t owner = plate[neighbour];
+    if (owner != invalid_region && substep < expansions[owner]) lowest = std::min(lowest, owner);
+  }
+  return lowest == INT32_MAX ? invalid_region : lowest;
+}
+
+PlatePartition grow_synchronously(const CubeSphere& sphere, const PlanetParams& params) {
+  PlatePartition partition;
+  partition.plate = seeded_plates(params);
+  const auto rates = plate_rates(params);
+  const int max_expansions = plate_rate_bounds(params).max_expansions;
+  std::vector<std::size_t> unassigned;
+  for (std::size_t region = 0; region < partition.plate.size(); ++region) {
+    if (partition.plate[region] == invalid_region) unassigned.push_back(region);
+  }
+  std::vector<int> expansions(rates.size());
+  std::vector<std::pair<std::size_t, std::int32_t>> claims;
+  for (; !unassigned.empty(); ++partition.cycles) {
+    for (int plate = 0; plate < params.plates; ++plate) {
+      expansions[plate] = plate_expansions(params, rates, plate, partition.cycles);
+    }
+    for (int substep = 0; substep < max_expansions && !unassigned.empty(); ++substep) {
+      claims.clear();
+      for (const std::size_t region : unassigned) {
+        const std::int32_t owner = lowest_active_plate(sphere, partition.plate, expansions, region, substep);
+        if (owner != invalid_region) claims.emplace_back(region, owner);
+      }
+      for (const auto& [region, owner] : claims) partition.plate[region] = owner;
+      std::erase_if(unassigned, [&](std::size_t region) { return partition.plate[region] != invalid_region; });
+    }
+  }
+  return partition;
+}
+
+// The seed code's TectonicPlate: its edge list and whether it has stopped growing.
+struct LegacyPlate {
+  std::vector<std::int32_t> edge;
+  bool finished = false;
+};
+
+// expand(): one BFS ring, first come first served (digest §4.4.2).
+bool expand_legacy(const CubeSphere& sphere, std::int32_t index, LegacyPlate& plate, std::vector<std::int32_t>& plate_of) {
+  if (plate.finished) return false;
+  bool added = false;
+  const std::size_t present = plate.edge.size();
+  std::size_t position = 0;
+  for (std::size_t visit = 0; visit < present; ++visit) {
+    const std::int32_t region = plate.edge[position];
+    bool on_edge = false;
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour == invalid_region) continue;
+      if (plate_of[neighbour] == invalid_region) {
+        plate_of[neighbour] = index;
+        plate.edge.push_back(neighbour);
+        added = true;
+      } else if (plate_of[neighbour] != index) {
+        on_edge = true;
+      }
+    }
+    if (on_edge) {
+      ++position;
+    } else {
+      plate.edge.erase(plate.edge.begin() + static_cast<std::ptrdiff_t>(position));
+    }
+  }
+  if (!added) plate.finished = true;
+  return added;
+}
+
+// stepExpandPlate as coded: "while rate > 0: expand; rate −= 1", returning when an expand adds
+// nothing, then the extra expand that `random > rate` always allows. Whether the plate grew.
+bool step_legacy(const CubeSphere& sphere, std::int32_t index, float rate, LegacyPlate& plate,
+                 std::vector<std::int32_t>& plate_of) {
+  bool grew = false;
+  for (; rate > 0.0f; rate -= 1.0f) {
+    if (!expand_legacy(sphere, index, plate, plate_of)) return grew;
+    grew = true;
+  }
+  return expand_legacy(sphere, index, plate, plate_of) || grew;
+}
+
+PlatePartition grow_legacy(const CubeSphere& sphere, const PlanetParams& params) {
+  PlatePartition partition;
+  partition.plate = seeded_plates(params);
+  const auto rates = plate_rates(params);
+  std::vector<LegacyPlate> plates(rates.size());
+  const auto seeds = plate_seeds(params);
+  for (std::size_t index = 0; index < seeds.size(); ++index) plates[index].edge = {seeds[index]};
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t index = 0; index < plates.size(); ++index) {
+      grew = step_legacy(sphere, static_cast<std::int32_t>(index), rates[index], plates[index], partition.plate) || grew;
+    }
+    if (grew) ++partition.cycles;
+  }
+  return partition;
+}
+
+}  // namespace
+
+std::vector<std::int32_t> plate_seeds(const PlanetParams& params) {
+  const auto region_count = static_cast<std::uint32_t>(params.region_count());
+  std::vector<bool> taken(region_count, false);
+  std::vector<std::int32_t> seeds;
+  for (int plate = 0; plate < params.plates; ++plate) {
+    std::uint32_t region = region_count;
+    for (int attempt = 0; attempt < plate_seed_attempts && region == region_count; ++attempt) {
+      const std::uint32_t candidate = random_u32(params.seed, static_cast<std::uint32_t>(plate),
+                                                 static_cast<std::uint32_t>(attempt), planet_stream_plate_seed) %
+                                      region_count;
+      if (!taken[candidate]) region = candidate;
+    }
+    if (region == region_count) region = static_cast<std::uint32_t>(std::find(taken.begin(), taken.end(), false) - taken.begin());
+    taken[region] = true;
+    seeds.push_back(static_cast<std::int32_t>(region));
+  }
+  return seeds;
+}
+
+std::vector<float> plate_rates(const PlanetParams& params) {
+  const PlateRateBounds bounds = plate_rate_bounds(params);
+  std::vector<float> rates;
+  for (int plate = 0; plate < params.plates; ++plate) {
+    const float rate = bounds.low + (bounds.high - bounds.low) * draw(params, plate, 0, planet_stream_rate);
+    rates.push_back(std::max(rate, minimum_plate_rate));
+  }
+  return rates;
+}
+
+int plate_expansions(const PlanetParams& params, const std::vector<float>& rates, int plate, int cycle) {
+  const float whole = std::floor(rates[plate]);
+  const bool extra = draw(params, plate, static_cast<std::uint32_t>(cycle), planet_stream_expansion) < rates[plate] - whole;
+  return static_cast<int>(whole) + (extra ? 1 : 0);
+}
+
+PlatePartition grow_plates(const CubeSphere& sphere, const PlanetParams& params) {
+  PlatePartition partition =
+      params.plate_rule == PlateRule::legacy ? grow_legacy(sphere, params) : grow_synchronously(sphere, params);
+  partition.is_edge = edge_regions(sphere, partition.plate);
+  return partition;
+}
+
+std::vector<std::uint8_t> edge_regions(const CubeSphere& sphere, const std::vector<std::int32_t>& plate) {
+  std::vector<std::uint8_t> is_edge(plate.size(), 0);
+  for (std::size_t region = 0; region < plate.size(); ++region) {
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour != invalid_region && plate[neighbour] != plate[region]) is_edge[region] = 1;
+    }
+  }
+  return is_edge;
+}
+
+}  // namespace gt::reference

@@ -1,0 +1,267 @@
+// The CPU reference of seed 002's Earth-like generator (reference/planet/) against the invariants
+// of digest 002 §9.5 and properties that follow from the spec of core/params/planet.hpp.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "core/errors.hpp"
+#include "core/params.hpp"
+#include "core/params/planet.hpp"
+#include "reference/planet/elevation.hpp"
+#include "reference/planet/jitter.hpp"
+#include "reference/planet/plates.hpp"
+
+namespace gt {
+namespace {
+
+PlanetParams params_of(int resolution, int plates, double expansion_range = 0.5, std::uint32_t seed = 7) {
+  PlanetParams params;
+  params.resolution = resolution;
+  params.plates = plates;
+  params.expansion_range = expansion_range;
+  params.seed = seed;
+  return params;
+}
+
+// Hops from `source` to every region over valid 8-neighbours (the sphere is connected).
+std::vector<int> hop_distances(const CubeSphere& sphere, std::int32_t source) {
+  std::vector<int> distance(sphere.region_count(), -1);
+  std::deque<std::int32_t> queue{source};
+  distance[source] = 0;
+  while (!queue.empty()) {
+    const std::int32_t region = queue.front();
+    queue.pop_front();
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour == invalid_region || distance[neighbour] >= 0) continue;
+      distance[neighbour] = distance[region] + 1;
+      queue.push_back(neighbour);
+    }
+  }
+  return distance;
+}
+
+// Every region has a plate in [0, P); every plate is non-empty, holds its seed and is 8-connected.
+void expect_valid_partition(const CubeSphere& sphere, const PlanetParams& params, const PlatePartition& partition) {
+  ASSERT_EQ(partition.plate.size(), sphere.region_count());
+  const auto seeds = reference::plate_seeds(params);
+  std::vector<std::size_t> reached(static_cast<std::size_t>(params.plates), 0), members(reached.size(), 0);
+  for (const std::int32_t plate : partition.plate) {
+    ASSERT_GE(plate, 0);
+    ASSERT_LT(plate, params.plates);
+    ++members[plate];
+  }
+  for (int plate = 0; plate < params.plates; ++plate) {
+    EXPECT_EQ(partition.plate[seeds[plate]], plate) << "a plate lost its seed region";
+    std::vector<bool> seen(sphere.region_count(), false);
+    std::deque<std::int32_t> queue{seeds[plate]};
+    seen[seeds[plate]] = true;
+    while (!queue.empty()) {
+      const std::int32_t region = queue.front();
+      queue.pop_front();
+      ++reached[plate];
+      for (const std::int32_t neighbour : sphere.neighbours(region)) {
+        if (neighbour != invalid_region && !seen[neighbour] && partition.plate[neighbour] == plate) {
+          seen[neighbour] = true;
+          queue.push_back(neighbour);
+        }
+      }
+    }
+    EXPECT_EQ(reached[plate], members[plate]) << "plate " << plate << " is not 8-connected";
+  }
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    bool bordered = false;
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      bordered = bordered || (neighbour != invalid_region && partition.plate[neighbour] != partition.plate[region]);
+    }
+    EXPECT_EQ(partition.is_edge[region] != 0, bordered) << region;
+  }
+}
+
+TEST(PlanetJitter, ZeroJitterPutsEveryCentroidAtItsCellCentre) {
+  const CubeSphere sphere(7);
+  PlanetParams params = params_of(7, 5);
+  params.jitter = 0.0;
+  const auto regions = reference::jitter_regions<double>(sphere, params);
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    EXPECT_EQ(regions.offsets[2 * region], 0.5);
+    EXPECT_EQ(regions.offsets[2 * region + 1], 0.5);
+    // core's sphere_position is computed independently (Vec3, its own matrix product): a few ulp.
+    const Vec3 expected = sphere_position(sphere.local_position(region));
+    for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(regions.positions[3 * region + axis], expected[axis], 1e-15);
+  }
+}
+
+TEST(PlanetJitter, FullJitterKeepsEachCentroidInsideItsOwnCell) {
+  const CubeSphere sphere(12);
+  const PlanetParams params = params_of(12, 5);
+  const auto regions = reference::jitter_regions<double>(sphere, params);
+  double spread = 0.0;
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    const double a = regions.offsets[2 * region], b = regions.offsets[2 * region + 1];
+    ASSERT_GE(a, 0.0);
+    ASSERT_LT(a, 1.0);
+    ASSERT_GE(b, 0.0);
+    ASSERT_LT(b, 1.0);
+    spread = std::max(spread, std::abs(a - 0.5));
+    const Vec3 position{regions.positions[3 * region], regions.positions[3 * region + 1], regions.positions[3 * region + 2]};
+    EXPECT_NEAR(length(position), 1.0, 1e-15);
+    EXPECT_EQ(sphere.region_at(local_position_of(position)), region);
+  }
+  // 864 uniform draws: the largest |a − 0.5| is below 0.45 with probability 0.1^864.
+  EXPECT_GT(spread, 0.45);
+}
+
+TEST(PlanetPlates, SeedsAreDistinctEvenWhenEveryRegionIsASeed) {
+  const PlanetParams params = params_of(1, 6);
+  auto seeds = reference::plate_seeds(params);
+  std::sort(seeds.begin(), seeds.end());
+  EXPECT_EQ(seeds, (std::vector<std::int32_t>{0, 1, 2, 3, 4, 5}));
+}
+
+TEST(PlanetPlates, RatesLieInTheCodesRangeAndExpansionsAverageToThem) {
+  const PlanetParams params = params_of(10, 40, 0.75);
+  const auto rates = reference::plate_rates(params);
+  for (int plate = 0; plate < params.plates; ++plate) {
+    EXPECT_GE(rates[plate], 0.25f);
+    EXPECT_LE(rates[plate], 1.75f);
+    constexpr int cycles = 4000;
+    double total = 0.0;
+    for (int cycle = 0; cycle < cycles; ++cycle) total += reference::plate_expansions(params, rates, plate, cycle);
+    // Bernoulli extra expansion: standard deviation of the mean <= 0.5/sqrt(4000) = 0.0079; 6σ.
+    EXPECT_NEAR(total / cycles, rates[plate], 0.048) << plate;
+  }
+}
+
+TEST(PlanetPlates, SynchronousFillIsAValidPartition) {
+  for (const auto& [resolution, plates, range] : {std::tuple{1, 6, 0.5}, {10, 10, 0.5}, {25, 50, 2.5}, {20, 250, 0.5}}) {
+    const CubeSphere sphere(resolution);
+    const PlanetParams params = params_of(resolution, plates, range);
+    expect_valid_partition(sphere, params, reference::grow_plates(sphere, params));
+  }
+}
+
+// With e = 0 every plate grows one ring per cycle, so the synchronous rule is a multi-source BFS:
+// each region belongs to a plate whose seed is fewest hops away, the lowest such plate on ties,
+// and the fill takes as many cycles as the farthest region is from its seed.
+TEST(PlanetPlates, EqualRatesGiveTheNearestSeedWithTheLowestIndexOnTies) {
+  const CubeSphere sphere(15);
+  const PlanetParams params = params_of(15, 30, 0.0);
+  const auto partition = reference::grow_plates(sphere, params);
+  const auto seeds = reference::plate_seeds(params);
+  std::vector<std::vector<int>> distance;
+  for (const std::int32_t seed : seeds) distance.push_back(hop_distances(sphere, seed));
+  int farthest = 0;
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    int nearest = std::numeric_limits<int>::max(), owner = -1;
+    for (int plate = 0; plate < params.plates; ++plate) {
+      if (distance[plate][region] < nearest) {
+        nearest = distance[plate][region];
+        owner = plate;
+      }
+    }
+    EXPECT_EQ(partition.plate[region], owner) << region;
+    farthest = std::max(farthest, nearest);
+  }
+  EXPECT_EQ(partition.cycles, farthest);
+}
+
+TEST(PlanetPlates, LegacyFillIsAValidPartitionThatDiffersFromTheSynchronousOne) {
+  const CubeSphere sphere(20);
+  PlanetParams params = params_of(20, 50);
+  params.plate_rule = PlateRule::legacy;
+  const auto legacy = reference::grow_plates(sphere, params);
+  expect_valid_partition(sphere, params, legacy);
+  params.plate_rule = PlateRule::synchronous;
+  const auto synchronous = reference::grow_plates(sphere, params);
+  std::size_t differing = 0;
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) differing += legacy.plate[region] != synchronous.plate[region];
+  // The legacy rule grows ceil(rate) + 1 rings a cycle where the synchronous one grows rate on
+  // average, and serves plates in index order: the two must not coincide.
+  EXPECT_GT(differing, 0u);
+}
+
+TEST(PlanetPlates, TheSameSeedGivesTheSamePlatesAndAnotherSeedOthers) {
+  const CubeSphere sphere(12);
+  const auto first = reference::grow_plates(sphere, params_of(12, 20, 0.5, 3));
+  EXPECT_EQ(first.plate, reference::grow_plates(sphere, params_of(12, 20, 0.5, 3)).plate);
+  EXPECT_NE(first.plate, reference::grow_plates(sphere, params_of(12, 20, 0.5, 4)).plate);
+}
+
+TEST(PlanetElevation, PressureIsSymmetricAndRaisesConvergingPlates) {
+  const Vector3<double> west{std::cos(0.01), -std::sin(0.01), 0.0}, east{std::cos(0.01), std::sin(0.01), 0.0};
+  const Vector3<double> eastward{0.0, 0.8, 0.0}, westward{0.0, -0.6, 0.0};
+  for (const auto formula : {PressureFormula::code, PressureFormula::thesis}) {
+    const double converging = reference::pressure(formula, west, eastward, east, westward);
+    EXPECT_EQ(converging, reference::pressure(formula, east, westward, west, eastward));
+    EXPECT_GT(converging, 0.0);
+    EXPECT_LT(reference::pressure(formula, west, westward, east, eastward), 0.0);
+  }
+}
+
+TEST(PlanetElevation, ShiftsAreTangentWithTheirMagnitudeAndBasesWithinTheirRange) {
+  const CubeSphere sphere(16);
+  const PlanetParams params = params_of(16, 40);
+  const auto regions = reference::jitter_regions<double>(sphere, params);
+  const auto motion = reference::plate_motion(params, regions.positions, reference::grow_plates(sphere, params));
+  for (int plate = 0; plate < params.plates; ++plate) {
+    const auto& centre = motion.centre[plate];
+    const auto& shift = motion.shift[plate];
+    EXPECT_NEAR(std::hypot(centre[0], centre[1], centre[2]), 1.0, 1e-14);
+    EXPECT_NEAR(shift[0] * centre[0] + shift[1] * centre[1] + shift[2] * centre[2], 0.0, 1e-14);
+    const double magnitude = std::hypot(shift[0], shift[1], shift[2]);
+    EXPECT_GE(magnitude, 0.5 - 1e-15);
+    EXPECT_LE(magnitude, 1.0 + 1e-15);
+    EXPECT_LE(std::abs(motion.base[plate]), params.elevation_range);
+  }
+}
+
+TEST(PlanetElevation, WithoutNoiseAndCollisionsEveryRegionHasItsPlatesBaseAndJacobiKeepsIt) {
+  const CubeSphere sphere(10);
+  PlanetParams params = params_of(10, 1);
+  params.noise = false;
+  params.collisions = false;
+  const auto regions = reference::jitter_regions<double>(sphere, params);
+  const auto elevation = reference::planet_elevation(sphere, params, regions.positions, reference::grow_plates(sphere, params));
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    EXPECT_EQ(elevation.noisy[region], elevation.motion.base[0]);
+    // The mean of nine (or eight) equal numbers: within an ulp of each.
+    EXPECT_NEAR(elevation.smoothed[region], elevation.motion.base[0], 1e-15);
+  }
+}
+
+// The code's blend (§4.4.3): in index order, e = E(i), then e = (e + E(n))/2 for up, upLeft, left,
+// downLeft, down, downRight, right, upRight, so with 8 neighbours the weights are up 1/256, upLeft
+// 1/128, left 1/64, downLeft 1/32, down 1/16, downRight 1/8, right 1/4, upRight 1/2 (self 1/256),
+// and a neighbour of smaller index counts with its value already blended. Raise region 28 (front
+// face, x 4, y 3) by 1 and follow it to region 27 (x 3, y 3) on an 8×8 face:
+//   19 (3, 2) sees 28 as its downRight: 1/8;
+//   20 (4, 2) sees 19 as its left and 28 as its down: 1/8·1/64 + 1/16 = 1/16 + 1/512;
+//   26 (2, 3) sees 19 as its upRight: 1/8·1/2 = 1/16;
+//   27 takes 19 as up (1/256), 26 as left (1/64), 28 as right (1/4), 20 as upRight (1/2):
+//   1/2048 + 1/1024 + 1/4 + 1/32 + 1/1024, exactly. The thesis's mean gives 1/9.
+TEST(PlanetElevation, LegacySmoothingIsTheCodesSequentialHalvingBlend) {
+  const CubeSphere sphere(8);
+  std::vector<double> field(sphere.region_count(), 0.0);
+  field[28] = 1.0;
+  ASSERT_EQ(sphere.neighbours(27)[6], 28);
+  ASSERT_EQ(sphere.neighbours(27)[7], 20);
+  ASSERT_EQ(sphere.neighbours(27)[0], 19);
+  ASSERT_EQ(sphere.neighbours(27)[2], 26);
+  EXPECT_EQ(reference::smoothed_elevation(sphere, Smoothing::legacy, field)[27], 1.0 / 2048 + 1.0 / 1024 + 0.25 + 1.0 / 32 + 1.0 / 1024);
+  EXPECT_NEAR(reference::smoothed_elevation(sphere, Smoothing::jacobi, field)[27], 1.0 / 9.0, 1e-16);
+  EXPECT_EQ(reference::smoothed_elevation(sphere, Smoothing::off, field), field);
+}
+
+TEST(PlanetParams, PlatesBeyondTheRegionsAreRefused) {
+  nlohmann::json given = {{"resolution", 2}, {"plates", 25}};
+  EXPECT_THROW(planet_params_from_json(resolve_params("planet.earth_like", planet_param_specs(), given)), InputError);
+  given["plates"] = 24;
+  EXPECT_EQ(planet_params_from_json(resolve_params("planet.earth_like", planet_param_specs(), given)).plates, 24);
+}
+
+}  // namespace
+}  // namespace gt
