@@ -117,6 +117,21 @@ TEST(GlobalRelief, Etopo60HasTheEarthsLandFractionAndRange) {
   EXPECT_NEAR(relief.valid_area, 4 * std::numbers::pi, 1e-9);
 }
 
+// Sarle's coefficient from its moments: two equal point masses have γ = 0, κ = 1 (b = 1); a uniform
+// distribution γ = 0, κ = 9/5 (b = 5/9); equal areas on a fine uniform grid approach it within
+// O(1/n²); unequal areas weigh the samples (a 3:1 two-point mass: γ² = 4/3, κ = 7/3, b = 1).
+TEST(GlobalRelief, BimodalityCoefficientOfKnownDistributions) {
+  EXPECT_DOUBLE_EQ(bimodality_coefficient({{-4000.0, 1.0}, {100.0, 1.0}}), 1.0);
+  std::vector<AreaSample> uniform;
+  for (int i = 0; i < 1000; ++i) uniform.push_back({(i + 0.5) / 1000.0, 0.25});
+  EXPECT_NEAR(bimodality_coefficient(uniform), 5.0 / 9.0, 1e-5);
+  EXPECT_DOUBLE_EQ(bimodality_coefficient({{0.0, 3.0}, {1.0, 1.0}}), 1.0);
+  EXPECT_EQ(bimodality_coefficient({{2.0, 1.0}, {2.0, 3.0}}), 0.0);
+  const GlobalRelief weighted = weighted_relief({{-1.0, 3.0}, {1.0, 1.0}}, 0.0, 3, 1.0);
+  EXPECT_DOUBLE_EQ(weighted.land_fraction, 0.25);
+  EXPECT_DOUBLE_EQ(weighted.valid_area, 4.0);
+}
+
 TEST(GlobalGrid, RefusesFilesAndVariablesItCannotRead) {
   const fs::path text = fs::temp_directory_path() / "gt_global_grid_not_netcdf.nc";
   std::ofstream(text) << "not a netCDF file\n";
@@ -127,6 +142,7 @@ TEST(GlobalGrid, RefusesFilesAndVariablesItCannotRead) {
   EXPECT_THROW(read_global_grid(path.string(), "lat"), InputError) << "one-dimensional";
   fs::remove(path);
   EXPECT_THROW(global_relief(GlobalGrid{}, 0.0, 1), InputError);
+  EXPECT_THROW(global_relief(GlobalGrid{}), InputError) << "no coordinates";
 }
 
 }  // namespace

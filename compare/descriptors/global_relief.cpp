@@ -47,32 +47,49 @@ std::vector<double> column_widths(const std::vector<double>& longitudes) {
   return widths;
 }
 
-}  // namespace
-
-GlobalRelief global_relief(const GlobalGrid& grid, double sea_level, int points, double bin_width) {
+void check_relief_options(int points, double bin_width) {
   if (points < 2 || !(bin_width > 0.0)) {
     throw InputError(fmt::format("global relief: {} curve points and bins of {} (at least 2 points, bins above 0)",
                                  points, bin_width));
   }
+}
+
+}  // namespace
+
+std::vector<AreaSample> area_samples(const GlobalGrid& grid) {
   const Grid<double>& elevation = grid.elevation;
+  if (grid.latitudes.size() < 2 || grid.longitudes.size() < 2) {
+    throw InputError(fmt::format("global relief of {}: fewer than 2 latitudes or longitudes", grid.variable));
+  }
   const std::vector<double> rows = row_weights(grid.latitudes);
   const std::vector<double> columns = column_widths(grid.longitudes);
-  std::vector<std::pair<double, double>> cells;  // (elevation, area)
+  std::vector<AreaSample> cells;
   cells.reserve(elevation.values.size());
   for (int row = 0; row < elevation.height; ++row) {
     for (int column = 0; column < elevation.width; ++column) {
       const std::size_t cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(elevation.width) +
                                static_cast<std::size_t>(column);
       const double area = rows[static_cast<std::size_t>(row)] * columns[static_cast<std::size_t>(column)];
-      if (area > 0.0 && (elevation.valid.empty() || elevation.valid[cell])) cells.emplace_back(elevation.values[cell], area);
+      if (area > 0.0 && (elevation.valid.empty() || elevation.valid[cell])) cells.push_back({elevation.values[cell], area});
     }
   }
   if (cells.empty()) throw InputError(fmt::format("global relief of {}: no valid cell", grid.variable));
-  std::sort(cells.begin(), cells.end());
+  return cells;
+}
+
+GlobalRelief global_relief(const GlobalGrid& grid, double sea_level, int points, double bin_width) {
+  check_relief_options(points, bin_width);
+  return weighted_relief(area_samples(grid), sea_level, points, bin_width);
+}
+
+GlobalRelief weighted_relief(std::vector<AreaSample> cells, double sea_level, int points, double bin_width) {
+  check_relief_options(points, bin_width);
+  if (cells.empty()) throw InputError("global relief: no sample");
+  std::sort(cells.begin(), cells.end(), [](const AreaSample& a, const AreaSample& b) { return a.elevation < b.elevation; });
 
   GlobalRelief relief;
-  relief.min = cells.front().first;
-  relief.max = cells.back().first;
+  relief.min = cells.front().elevation;
+  relief.max = cells.back().elevation;
   double land = 0.0, weighted = 0.0;
   for (const auto& [height, area] : cells) {
     relief.valid_area += area;
@@ -87,8 +104,8 @@ GlobalRelief global_relief(const GlobalGrid& grid, double sea_level, int points,
   std::size_t next = 0;
   for (int point = 0; point < points; ++point) {
     const double fraction = double(point) / double(points - 1);
-    while (next + 1 < cells.size() && (below + cells[next].second) / relief.valid_area < fraction) below += cells[next++].second;
-    relief.hypsometry[static_cast<std::size_t>(point)] = point == 0 ? relief.min : cells[next].first;
+    while (next + 1 < cells.size() && (below + cells[next].area) / relief.valid_area < fraction) below += cells[next++].area;
+    relief.hypsometry[static_cast<std::size_t>(point)] = point == 0 ? relief.min : cells[next].elevation;
   }
   relief.hypsometry.back() = relief.max;
 
@@ -100,6 +117,25 @@ GlobalRelief global_relief(const GlobalGrid& grid, double sea_level, int points,
         area / relief.valid_area;
   }
   return relief;
+}
+
+double bimodality_coefficient(const std::vector<AreaSample>& samples) {
+  double total = 0.0, mean = 0.0;
+  for (const auto& [elevation, area] : samples) {
+    total += area;
+    mean += elevation * area;
+  }
+  mean /= total;
+  double m2 = 0.0, m3 = 0.0, m4 = 0.0;
+  for (const auto& [elevation, area] : samples) {
+    const double deviation = elevation - mean, squared = deviation * deviation;
+    m2 += squared * area / total;
+    m3 += squared * deviation * area / total;
+    m4 += squared * squared * area / total;
+  }
+  if (!(m2 > 0.0)) return 0.0;
+  const double skewness = m3 / std::pow(m2, 1.5), kurtosis = m4 / (m2 * m2);
+  return (skewness * skewness + 1.0) / kurtosis;
 }
 
 }  // namespace gt

@@ -35,6 +35,25 @@ struct GlobalRelief {
   std::vector<double> histogram;
 };
 
+struct AreaSample {
+  double elevation = 0.0;
+  double area = 0.0;  // steradians
+};
+
+// The grid's valid cells with their areas (the weights above).
+std::vector<AreaSample> area_samples(const GlobalGrid& grid);
+
 GlobalRelief global_relief(const GlobalGrid& grid, double sea_level = 0.0, int points = 101, double bin_width = 500.0);
+
+// The same figures of any surface given as (elevation, area) samples with areas > 0 (a generated
+// planet's regions and their solid angles); valid_area is the sum of the areas.
+GlobalRelief weighted_relief(std::vector<AreaSample> samples, double sea_level = 0.0, int points = 101,
+                             double bin_width = 500.0);
+
+// Sarle's bimodality coefficient of the area-weighted distribution, (γ² + 1)/κ with the population
+// skewness γ = m3/m2^1.5 and kurtosis κ = m4/m2² (not in excess): 1/3 for a normal distribution, 5/9
+// for a uniform one, 1 for two equal point masses; above 5/9 suggests two modes (SAS Institute
+// 1990; Pfister et al. 2013, Front. Psychol. 4:700). 0 for a distribution without spread.
+double bimodality_coefficient(const std::vector<AreaSample>& samples);
 
 }  // namespace gt

@@ -31,7 +31,11 @@
 //      order, first come first served). Stops after a cycle in which no plate grew.
 // 3. Edge regions: is_edge(i) = some valid neighbour has another plate.
 // 4. Plate centre c_k: `mean` (thesis): normalise(Σ pos over members); `edge_sum` (code):
-//    normalise(Σ pos over edge members). A zero sum gives c_k = 0.
+//    normalise(Σ pos over edge members). A zero sum gives c_k = 0. The sum is accumulated well
+//    beyond float: in double on the CPU for either Real, in 64-bit fixed point on the GPU (both
+//    within N·2^-30 of the exact sum, and order-independent on the GPU), then rounded to Real and
+//    normalised. A float running sum over a plate of n regions would be off by up to n·2^-24
+//    relative, which the shift would inherit.
 // 5. Shift (eq. 5.2): m = 0.5 + 0.5·U(k, 0, shift), α = 2·U(k, 1, shift) − 1, β = 2·U(k, 2, shift) − 1;
 //    t_x = c × (1, 0, 0), t_y = c × (0, 1, 0), t = α·t_x + β·t_y; s_k = m·t/|t| (0 when |t| = 0).
 // 6. Base elevation: b_k = e_r·(2·U(k, 0, elevation) − 1).

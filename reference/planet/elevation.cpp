@@ -56,17 +56,20 @@ Real draw(const PlanetParams& params, int plate, std::uint32_t step, PlanetStrea
 }
 
 // Step 4: normalise(Σ pos) over the members (mean) or the edge members (edge_sum), in index order.
+// The sums in double for either Real (core/params/planet.hpp), rounded to Real, then normalised.
 template <class Real>
 std::vector<Vector3<Real>> plate_centres(const PlanetParams& params, const std::vector<Real>& positions,
                                          const PlatePartition& partition) {
-  std::vector<Vector3<Real>> sums(static_cast<std::size_t>(params.plates), Vector3<Real>{});
+  std::vector<Vector3<double>> sums(static_cast<std::size_t>(params.plates), Vector3<double>{});
   for (std::size_t region = 0; region < partition.plate.size(); ++region) {
     if (params.centre == PlateCentre::edge_sum && !partition.is_edge[region]) continue;
-    auto& sum = sums[partition.plate[region]];
-    sum = plus(sum, position_of(positions, region));
+    for (int axis = 0; axis < 3; ++axis) sums[partition.plate[region]][axis] += positions[3 * region + axis];
   }
-  for (auto& sum : sums) sum = normalised3(sum);
-  return sums;
+  std::vector<Vector3<Real>> centres;
+  for (const auto& sum : sums) {
+    centres.push_back(normalised3(Vector3<Real>{static_cast<Real>(sum[0]), static_cast<Real>(sum[1]), static_cast<Real>(sum[2])}));
+  }
+  return centres;
 }
 
 // Step 5, eq. 5.2: m·t/|t| with t = α·(c × x̂) + β·(c × ŷ) = (−β·c_z, α·c_z, β·c_x − α·c_y).
