@@ -1,0 +1,24 @@
+#version 450
+// Steps 6–7 per region (§4.4.3 phases 1 and 3, §9.3 step 7; core/params/planet.hpp), twin of
+// reference::planet_elevation<float>'s E0:
+//   E0(i) = b_plate(i) + S·fbm(f·pos(i))   (PLANET_NOISE; fbm: noise/fractal.glsl's gt_fbm of
+//                                           improved Perlin noise, octaves o, lacunarity 2, gain 0.5)
+//   E0(i) = b_plate(i)                     (without noise)
+// f·pos componentwise, then S times the fbm, then the base added. No division or square root: the
+// same bits as the reference on a device that honours `precise`.
+layout(local_size_x = 256) in;
+
+#include "planet/planet.glsl"
+
+void main() {
+  int region = int(gl_GlobalInvocationID.x);
+  if (region >= region_count) return;
+  float base = plates[plate[region]].base;
+#ifdef PLANET_NOISE
+  precise vec3 sample_point = perlin_frequency * positions[region].xyz;
+  precise float elevation = base + perlin_strength * gt_fbm(sample_point, fractal_terms);
+  noisy[region] = elevation;
+#else
+  noisy[region] = base;
+#endif
+}

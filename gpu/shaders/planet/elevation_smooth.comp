@@ -1,0 +1,33 @@
+#version 450
+// Step 9 per region (erratum 14, §9.3 step 9 option A; core/params/planet.hpp), twin of
+// reference::planet_elevation<float>'s E2 with Smoothing::jacobi:
+//   E2(i) = (E1(i) + Σ valid E1(n)) / (1 + valid count)   (PLANET_SMOOTHS)
+// the sum from E1(i), then the neighbours added in table order, then one division by the float
+// count (7 + 1 or 8 + 1). Without PLANET_SMOOTHS (smoothing off, or only with collisions and
+// collisions off): E2 = E1. Reads `collided`, writes `smoothed` (a Jacobi step).
+layout(local_size_x = 256) in;
+
+#include "planet/planet.glsl"
+
+void main() {
+  int region = int(gl_GlobalInvocationID.x);
+  if (region >= region_count) return;
+#ifdef PLANET_SMOOTHS
+  precise float sum = collided[region];
+  int count = 1;
+  for (int k = 0; k < neighbour_count; ++k) {
+    int neighbour = neighbours[neighbour_count * region + k];
+    if (neighbour < 0) continue;
+    sum = sum + collided[neighbour];
+    ++count;
+  }
+#ifdef GT_MUTANT_PLANET_SMOOTHING_COUNT_WITHOUT_SELF
+  precise float mean = sum / float(count - 1);  // mutant (both twins): the region summed but not counted
+#else
+  precise float mean = sum / float(count);
+#endif
+  smoothed[region] = mean;
+#else
+  smoothed[region] = collided[region];
+#endif
+}
