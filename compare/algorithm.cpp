@@ -14,6 +14,7 @@ const std::vector<Algorithm>& algorithms() {
     for (auto& algorithm : noise_algorithms()) list.push_back(std::move(algorithm));
     for (auto& algorithm : cave_algorithms()) list.push_back(std::move(algorithm));
     list.push_back(cave_endless_algorithm());
+    list.push_back(planet_algorithm());
     list.push_back(mesh_check_algorithm());
     list.push_back(render_heightmap_algorithm());
     list.push_back(render_phong_algorithm());
@@ -38,6 +39,7 @@ nlohmann::json algorithm_json(const Algorithm& algorithm) {
   const char* input = algorithm.ad_hoc_input == AdHocInput::heightmap         ? "heightmap"
                       : algorithm.ad_hoc_input == AdHocInput::mesh            ? "mesh"
                       : algorithm.ad_hoc_input == AdHocInput::optional_volume ? "optional_volume"
+                      : algorithm.ad_hoc_input == AdHocInput::optional_global_grid ? "optional_global_grid"
                                                                               : "none";
   return {{"name", algorithm.name}, {"summary", algorithm.summary}, {"source", algorithm.source},
           {"input", input},         {"params", params}};

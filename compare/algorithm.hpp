@@ -34,7 +34,7 @@ struct PreparedTwin {
 // What an ad-hoc run's --input names: a heightmap (erosion; noise samples on its grid, or on a
 // --size grid without one), a mesh file (mesh.check), a volume file or nothing (the cave meshes a
 // .npy volume when given one, else the seed's noise), or nothing at all (the endless cave).
-enum class AdHocInput { heightmap, mesh, optional_volume, none };
+enum class AdHocInput { heightmap, mesh, optional_volume, optional_global_grid, none };
 
 // Bytes read plus written per cell (voxel, sample) and iteration by each backend's passes at the
 // default parameters, as counted in the comment beside the kernels; unset where not counted. The
@@ -82,7 +82,7 @@ const std::vector<Algorithm>& algorithms();
 const Algorithm& find_algorithm(const std::string& name);
 
 // What `groundtruth list --json` and the Python module say of an algorithm: {"name", "summary",
-// "source", "input" (heightmap, mesh, optional_volume or none), "params": [core/params.hpp to_json]}.
+// "source", "input" (heightmap, mesh, optional_volume, optional_global_grid or none), "params": [core/params.hpp to_json]}.
 nlohmann::json algorithm_json(const Algorithm& algorithm);
 
 // Defined by each file of compare/algorithms/.
@@ -94,6 +94,7 @@ Algorithm beyer_algorithm();
 std::vector<Algorithm> noise_algorithms();
 std::vector<Algorithm> cave_algorithms();
 Algorithm cave_endless_algorithm();
+Algorithm planet_algorithm();
 Algorithm mesh_check_algorithm();
 Algorithm render_heightmap_algorithm();
 Algorithm render_phong_algorithm();

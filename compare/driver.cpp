@@ -57,6 +57,9 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
       throw InputError(fmt::format("{} makes its own field from its parameters: drop --input, use --set", ad_hoc.algorithm));
     }
     spec.input = nlohmann::json::object();
+  } else if (algorithm.ad_hoc_input == AdHocInput::optional_global_grid) {
+    spec.input = ad_hoc.input.empty() ? nlohmann::json::object()
+                                      : nlohmann::json{{"global_grid", std::filesystem::absolute(ad_hoc.input).string()}};
   } else if (algorithm.ad_hoc_input == AdHocInput::optional_volume) {
     spec.input = ad_hoc.input.empty() ? nlohmann::json::object()
                                       : nlohmann::json{{"volume", std::filesystem::absolute(ad_hoc.input).string()}};

@@ -218,6 +218,16 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
     loaded.source = path;
     return loaded;
   }
+  if (input.contains("global_grid") && input["global_grid"].is_string()) {
+    require_known_keys(input, {"global_grid", "variable"}, "input global grid");
+    std::filesystem::path path = input["global_grid"].get<std::string>();
+    if (path.is_relative()) path = dataset_dir / path;
+    loaded.global_grid = read_global_grid(path.string(), input.value("variable", std::string()));
+    loaded.description = fmt::format("{} ({}, {}x{} cells)", path.filename().string(), loaded.global_grid->variable,
+                                     loaded.global_grid->elevation.width, loaded.global_grid->elevation.height);
+    loaded.source = path;
+    return loaded;
+  }
   if (input.contains("volume") && input["volume"].is_string()) {
     require_known_keys(input, {"volume"}, "input volume");
     std::filesystem::path path = input["volume"].get<std::string>();

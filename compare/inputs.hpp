@@ -17,6 +17,9 @@
 // {"mesh": "real/meshes/cow.off"}   a triangle mesh (OFF, OBJ, PLY, STL; core/io/mesh_io.hpp).
 // {"volume": "sdf.npy"}            a scalar volume, a 3-D .npy array (core/io/volume_io.hpp): the
 //                                  cave's density when it is not the seed's noise.
+// {"global_grid": "real/etopo60.cdf", "variable": "ROSE"}   a global latitude-longitude elevation
+//                                  grid (netCDF, core/io/global_grid.hpp; "variable" optional): what
+//                                  a generated planet is set beside (planet.earth_like).
 // {} (no input)                    an empty LoadedInput: the algorithm makes its own field (cave).
 // "crop": [x, y, width, height] cuts a window out of the input (InputError if it does not fit).
 #pragma once
@@ -29,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/grid.hpp"
+#include "core/io/global_grid.hpp"
 #include "core/mesh.hpp"
 #include "core/volume.hpp"
 
@@ -40,6 +44,7 @@ struct LoadedInput {
   std::vector<std::string> notes;   // what the reader decided
   std::optional<Mesh> mesh;         // for {"mesh": path}
   std::optional<Volume<double>> volume;  // for {"volume": path}
+  std::optional<GlobalGrid> global_grid;  // for {"global_grid": path}
   std::filesystem::path source;     // the file read, empty for generated fields (provenance digests it)
 };
 

@@ -37,6 +37,7 @@ std::vector<Mutant> beyer_mutants();     // compare/mutants/beyer.cpp: erosion.b
 std::vector<Mutant> noise_mutants();    // compare/mutants/noise.cpp
 std::vector<Mutant> cave_mutants();     // compare/mutants/cave.cpp
 std::vector<Mutant> render_mutants();   // compare/mutants/render.cpp
+std::vector<Mutant> planet_mutants();   // compare/mutants/planet.cpp
 
 // Every registered mutant, in family order.
 const std::vector<Mutant>& mutants();

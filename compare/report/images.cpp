@@ -263,6 +263,13 @@ std::vector<Rgb> difference_colours(const DifferenceField& field, double scale) 
 
 }  // namespace
 
+void write_colour_image(int width, int height, const std::vector<Rgb>& colours, const std::filesystem::path& png) {
+  if (width <= 0 || height <= 0 || colours.size() != std::size_t(width) * std::size_t(height)) {
+    throw std::invalid_argument(fmt::format("{} colours for a {}x{} picture", colours.size(), width, height));
+  }
+  write_png(rgb_image(width, height, colours), png);
+}
+
 double write_height_image(const Heightmap& heights, double low, double high, const std::filesystem::path& png,
                           double vertical_exaggeration) {
   require_cells(heights);

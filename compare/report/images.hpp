@@ -14,8 +14,10 @@
 //   - Failures to write throw std::runtime_error; grids of different sizes std::invalid_argument.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
+#include <vector>
 
 #include "core/grid.hpp"
 
@@ -29,6 +31,11 @@ namespace gt {
 // after an algorithm ran so the two pictures are comparable.
 double write_height_image(const Heightmap& heights, double low, double high, const std::filesystem::path& png,
                           double vertical_exaggeration = 0.0);
+
+// Writes colours (row-major from the top-left, each channel in [0, 1] as stored: no transfer
+// function applied) as an 8-bit RGB PNG of width x height pixels, without resizing.
+void write_colour_image(int width, int height, const std::vector<std::array<float, 3>>& colours,
+                        const std::filesystem::path& png);
 
 struct DifferenceStats {
   double max_abs = 0.0;     // max |b - a| over cells valid in both; +inf if one of them is NaN/inf

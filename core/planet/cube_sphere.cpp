@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 
 namespace gt {
 namespace {
@@ -106,7 +107,10 @@ CubeSphere::CubeSphere(int resolution) : resolution_(resolution) {
     for (std::size_t step = 0; step < neighbour_steps.size(); ++step) {
       const LocalPosition next{centre.face, centre.a + neighbour_steps[step][0] / double(resolution),
                                centre.b + neighbour_steps[step][1] / double(resolution)};
-      const auto found = region_at(next);
+      // Mutant planet.cube_sphere.no_wrap (both twins: the table is shared): neighbours off the
+      // face are left out, as if the cube's faces were not joined.
+      const bool off_face = next.a < 0.0 || next.a > 1.0 || next.b < 0.0 || next.b > 1.0;
+      const auto found = off_face && mutant_active("planet.cube_sphere.no_wrap") ? std::nullopt : region_at(next);
       neighbours_[region][step] = found ? static_cast<std::int32_t>(*found) : invalid_region;
     }
   }

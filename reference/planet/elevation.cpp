@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/mutant.hpp"
 #include "core/noise/permutation.hpp"
 #include "core/params/noise_fractal.hpp"
 #include "core/rng.hpp"
@@ -140,7 +141,8 @@ std::vector<Real> jacobi_smoothed(const CubeSphere& sphere, const std::vector<Re
       sum = sum + elevation[neighbour];
       ++count;
     }
-    smoothed[region] = sum / static_cast<Real>(count);
+    // Mutant planet.smoothing.count_without_self (both twins): the region summed but not counted.
+    smoothed[region] = sum / static_cast<Real>(mutant_active("planet.smoothing.count_without_self") ? count - 1 : count);
   }
   return smoothed;
 }

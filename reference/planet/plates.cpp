@@ -8,6 +8,7 @@
 #include <climits>
 #include <cmath>
 
+#include "core/mutant.hpp"
 #include "core/rng.hpp"
 
 namespace gt::reference {
@@ -161,7 +162,8 @@ std::vector<float> plate_rates(const PlanetParams& params) {
 }
 
 int plate_expansions(const PlanetParams& params, const std::vector<float>& rates, int plate, int cycle) {
-  const float whole = std::floor(rates[plate]);
+  // Mutant planet.plates.ceil_rate (both twins): whole rings rounded up, so no extra draw can win.
+  const float whole = mutant_active("planet.plates.ceil_rate") ? std::ceil(rates[plate]) : std::floor(rates[plate]);
   const bool extra = draw(params, plate, static_cast<std::uint32_t>(cycle), planet_stream_expansion) < rates[plate] - whole;
   return static_cast<int>(whole) + (extra ? 1 : 0);
 }

@@ -1,0 +1,626 @@
+// `planet.earth_like`: seed 002's Earth-like generator (digest 002 §4.4, §9): jitter, tectonic
+// plates, elevation, on the CPU (ref<double>, ref<float>) and the GPU, beside the real Earth.
+// Spec of every step: core/params/planet.hpp; error model: compare/checks/planet_error_model.hpp.
+//
+// The twins: the GPU runs the synchronous plate rule and Jacobi (or no) smoothing. A case that asks
+// for the seed code's legacy rules gets them on the CPU (its pictures, its relief, its fidelity),
+// and its twins are compared in the parallel configuration: the same parameters with the
+// synchronous rule and Jacobi smoothing in place of the legacy ones (said in the case's notes).
+//
+// Checks (backend cpu = ref<double>, float = ref<float>, gpu = the GPU twin):
+//   topology.*                the cube sphere's neighbour table: asymmetric pairs, regions whose
+//                             neighbour count is not 7 (corner cells) or 8, the largest round-trip
+//                             error (face, a, b) -> direction -> (face, a, b) (§9.5)
+//   partition.*.{cpu,gpu}     regions without a plate, empty plates, plates not 8-connected,
+//                             regions whose is_edge is not the definition (all must be 0)
+//   spec.expansion_rate.cpu   Algorithm 3 as intended: rings per cycle average to the rate (6σ)
+//   spec.smoothing_constant.cpu   the Jacobi mean keeps a constant field
+//   legacy.*                  informative: the share of regions whose plate the seed code's
+//                             sequential fill gives differently, and the largest change of the
+//                             elevation that its sequential smoothing makes, against the parallel
+//                             rules on the same seeds
+//   parity.positions.*        largest position difference (float vs double; GPU vs float, strict
+//                             4 ulp per operation, warn up to the Vulkan environment's 2^-11 tan)
+//   parity.offsets.gpu_vs_float     offsets that differ in any bit (must be 0: the same draws and
+//                             operations, every intermediate `precise`)
+//   parity.plates.gpu_vs_cpu, parity.plate_cycles.gpu_vs_cpu, parity.edges.gpu_vs_cpu   regions
+//                             whose plate or is_edge differ, and the difference in cycles (all 0)
+//   parity.{noise,collision,elevation}.{float_vs_double,gpu_vs_float}   the largest ratio of a
+//                             region's difference to its bound (strict 1): the GPU fed ref<float>'s
+//                             positions and partition (shadow parity), ref<float> on its own
+//                             positions; `inconclusive` when the largest bound exceeds a tenth of
+//                             the elevation's range
+//   fidelity.land_fraction, fidelity.bimodality   for cases whose expect says earth_like: the
+//                             land share within 0.1 of the Earth's 0.290 (ETOPO 1°, data-sources.md),
+//                             Sarle's bimodality coefficient above 5/9; `warn` when not met
+//   fidelity.*                informative otherwise, with the mean and range
+// Pictures (equirectangular, 512 x 256, each pixel the region whose cell holds its direction): the
+// elevation palette (§4.3), the plates (edges in the plate's colour, interiors mixed with white),
+// the GPU's difference; the hypsometric curves and histograms of the planet and the Earth; the
+// elevation map as EXR/NPY fields.
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <filesystem>
+#include <numbers>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/checks/planet_error_model.hpp"
+#include "compare/checks/threshold.hpp"
+#include "compare/descriptors/global_relief.hpp"
+#include "compare/field_files.hpp"
+#include "compare/report/images.hpp"
+#include "compare/report/plots.hpp"
+#include "compare/timing.hpp"
+#include "core/errors.hpp"
+#include "core/io/global_grid.hpp"
+#include "core/params/planet.hpp"
+#include "core/rng.hpp"
+#include "gpu/planet/generator.hpp"
+#include "reference/planet/elevation.hpp"
+#include "reference/planet/jitter.hpp"
+#include "reference/planet/plates.hpp"
+
+namespace gt {
+namespace {
+
+constexpr double earth_land_fraction = 0.290;  // ETOPO 1°, area-weighted (tests/global_relief_test.cpp)
+constexpr double land_fraction_tolerance = 0.1;  // issue 13: within ±0.1 of the Earth's
+constexpr double bimodal_threshold = 5.0 / 9.0;  // Sarle's coefficient of a uniform distribution
+constexpr double tellable_share = 0.1;           // a parity bound wider than this share of the range tells nothing
+constexpr int map_width = 512;
+constexpr int map_height = 256;
+
+template <class Real>
+struct Planet {
+  JitteredRegions<Real> regions;
+  PlatePartition partition;
+  PlanetElevation<Real> elevation;
+};
+
+template <class Real>
+Planet<Real> generate(const CubeSphere& sphere, const PlanetParams& params) {
+  Planet<Real> planet;
+  planet.regions = reference::jitter_regions<Real>(sphere, params);
+  planet.partition = reference::grow_plates(sphere, params);
+  planet.elevation = reference::planet_elevation<Real>(sphere, params, planet.regions.positions, planet.partition);
+  return planet;
+}
+
+// The configuration both twins run: legacy rules replaced by the parallel ones.
+PlanetParams twin_params(PlanetParams params) {
+  params.plate_rule = PlateRule::synchronous;
+  if (params.smoothing == Smoothing::legacy) params.smoothing = Smoothing::jacobi;
+  return params;
+}
+
+bool uses_legacy(const PlanetParams& params) {
+  return params.plate_rule == PlateRule::legacy || params.smoothing == Smoothing::legacy;
+}
+
+// ---- topology and partition invariants -----------------------------------------------------
+
+void add_topology_checks(const CubeSphere& sphere, CaseResult& result) {
+  std::size_t asymmetric = 0, wrong_count = 0;
+  double round_trip = 0.0;
+  const int resolution = sphere.resolution();
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    int valid = 0;
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour == invalid_region) continue;
+      ++valid;
+      const auto& back = sphere.neighbours(static_cast<std::size_t>(neighbour));
+      asymmetric += std::count(back.begin(), back.end(), static_cast<std::int32_t>(region)) == 1 ? 0 : 1;
+    }
+    const int x = static_cast<int>(region % resolution), y = static_cast<int>(region / resolution % resolution);
+    const bool corner = (x == 0 || x == resolution - 1) && (y == 0 || y == resolution - 1);
+    wrong_count += valid == (corner ? 7 : 8) ? 0 : 1;
+    const LocalPosition local = sphere.local_position(region, 0.3, 0.8);
+    const LocalPosition back = local_position_of(sphere_position(local));
+    round_trip = std::max({round_trip, back.face == local.face ? 0.0 : 1.0, std::abs(back.a - local.a), std::abs(back.b - local.b)});
+  }
+  result.checks.push_back(bounded_check("topology.asymmetric_neighbours", double(asymmetric), 0.0, std::nullopt,
+                                        "directed neighbour pairs whose reverse is missing or repeated"));
+  result.checks.push_back(bounded_check("topology.neighbour_count", double(wrong_count), 0.0, std::nullopt,
+                                        "regions with other than 7 valid neighbours (the 24 corner cells) or 8"));
+  // tan, atan, the normalisation and the division by the largest component, each within an ulp or
+  // two of double, amplified at most by the warp's slope (< 1.7): 1e-13 (tests/cube_sphere_test.cpp).
+  result.checks.push_back(bounded_check("topology.round_trip", round_trip, 1e-13, std::nullopt,
+                                        "largest |Δa|, |Δb| of (face, a, b) -> direction -> (face, a, b) at offset "
+                                        "(0.3, 0.8) in every cell; a changed face counts 1"));
+}
+
+// Members of each plate reachable from its first member over its own 8-neighbours.
+std::size_t disconnected_plates(const CubeSphere& sphere, const PlanetParams& params, const PlatePartition& partition) {
+  std::vector<std::size_t> members(static_cast<std::size_t>(params.plates), 0), reached(members.size(), 0);
+  std::vector<std::int32_t> first(members.size(), invalid_region);
+  for (std::size_t region = 0; region < partition.plate.size(); ++region) {
+    const std::int32_t plate = partition.plate[region];
+    if (plate < 0 || plate >= params.plates) continue;
+    ++members[plate];
+    if (first[plate] == invalid_region) first[plate] = static_cast<std::int32_t>(region);
+  }
+  std::vector<bool> seen(partition.plate.size(), false);
+  std::size_t disconnected = 0;
+  for (int plate = 0; plate < params.plates; ++plate) {
+    if (first[plate] == invalid_region) continue;
+    std::deque<std::int32_t> queue{first[plate]};
+    seen[first[plate]] = true;
+    while (!queue.empty()) {
+      const std::int32_t region = queue.front();
+      queue.pop_front();
+      ++reached[plate];
+      for (const std::int32_t neighbour : sphere.neighbours(region)) {
+        if (neighbour == invalid_region || seen[neighbour] || partition.plate[neighbour] != plate) continue;
+        seen[neighbour] = true;
+        queue.push_back(neighbour);
+      }
+    }
+    disconnected += reached[plate] == members[plate] ? 0 : 1;
+  }
+  return disconnected;
+}
+
+void add_partition_checks(const CubeSphere& sphere, const PlanetParams& params, const PlatePartition& partition,
+                          const std::string& backend, CaseResult& result) {
+  std::size_t unassigned = 0;
+  std::vector<std::size_t> members(static_cast<std::size_t>(params.plates), 0);
+  for (const std::int32_t plate : partition.plate) {
+    if (plate < 0 || plate >= params.plates) {
+      ++unassigned;
+    } else {
+      ++members[plate];
+    }
+  }
+  const auto edges = reference::edge_regions(sphere, partition.plate);
+  std::size_t wrong_edges = 0;
+  for (std::size_t region = 0; region < edges.size(); ++region) wrong_edges += edges[region] == partition.is_edge[region] ? 0 : 1;
+  const auto empty = static_cast<std::size_t>(std::count(members.begin(), members.end(), std::size_t{0}));
+  result.checks.push_back(bounded_check("partition.unassigned." + backend, double(unassigned), 0.0, std::nullopt,
+                                        fmt::format("regions without a plate in 0..{} (of {})", params.plates - 1,
+                                                    partition.plate.size())));
+  result.checks.push_back(bounded_check("partition.empty_plates." + backend, double(empty), 0.0, std::nullopt,
+                                        "plates without a region (seeds are distinct, §9.2)"));
+  result.checks.push_back(bounded_check("partition.disconnected_plates." + backend,
+                                        double(disconnected_plates(sphere, params, partition)), 0.0, std::nullopt,
+                                        "plates not 8-connected"));
+  result.checks.push_back(bounded_check("partition.edge_definition." + backend, double(wrong_edges), 0.0, std::nullopt,
+                                        "regions whose is_edge is not 'a valid neighbour has another plate'"));
+}
+
+// ---- spec checks of the parallel rules, against what was asked -----------------------------
+
+// Algorithm 3 as intended (erratum 10): a plate grows `rate` rings a cycle on average. Over 4000
+// cycles the mean of floor(rate) + Bernoulli(rate − floor(rate)) has a standard deviation of at
+// most 0.5/sqrt(4000) = 0.0079; the bound is 6 of them (the draws are fixed by the seed: no flake).
+void add_expansion_rate_check(const PlanetParams& params, CaseResult& result) {
+  constexpr int cycles = 4000;
+  const auto rates = reference::plate_rates(params);
+  double worst = 0.0;
+  for (int plate = 0; plate < params.plates; ++plate) {
+    double total = 0.0;
+    for (int cycle = 0; cycle < cycles; ++cycle) total += reference::plate_expansions(params, rates, plate, cycle);
+    worst = std::max(worst, std::abs(total / cycles - rates[plate]));
+  }
+  result.checks.push_back(bounded_check("spec.expansion_rate.cpu", worst, 6.0 * 0.5 / std::sqrt(double(cycles)),
+                                        std::nullopt,
+                                        "largest |mean rings per cycle − rate| over the plates, 4000 cycles each; "
+                                        "bound 6σ of a Bernoulli mean"));
+}
+
+// The thesis' smoothing is a mean: a constant field stays that constant, up to the rounding of nine
+// additions and a division in double (10·2^-53 relative).
+void add_smoothing_check(const CubeSphere& sphere, CaseResult& result) {
+  constexpr double level = 0.37;
+  const auto smoothed = reference::smoothed_elevation(sphere, Smoothing::jacobi, std::vector<double>(sphere.region_count(), level));
+  double worst = 0.0;
+  for (const double value : smoothed) worst = std::max(worst, std::abs(value - level));
+  result.checks.push_back(bounded_check("spec.smoothing_constant.cpu", worst, 10.0 * 0x1p-53 * level, std::nullopt,
+                                        "largest |Jacobi mean of a constant 0.37 − 0.37|"));
+}
+
+// ---- legacy modes --------------------------------------------------------------------------
+
+void add_legacy_checks(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& parallel,
+                       CaseResult& result) {
+  PlanetParams legacy = params;
+  legacy.plate_rule = PlateRule::legacy;
+  const auto legacy_partition = reference::grow_plates(sphere, legacy);
+  std::size_t differing = 0;
+  for (std::size_t region = 0; region < legacy_partition.plate.size(); ++region) {
+    differing += legacy_partition.plate[region] == parallel.partition.plate[region] ? 0 : 1;
+  }
+  result.checks.push_back(informative_check(
+      "legacy.plate_difference", double(differing) / double(legacy_partition.plate.size()),
+      fmt::format("share of regions the seed code's sequential fill (ceil(rate) + 1 rings a cycle, plates in index "
+                  "order) gives another plate than the synchronous rule; {} cycles against {}",
+                  legacy_partition.cycles, parallel.partition.cycles)));
+  const auto sequential = reference::smoothed_elevation(sphere, Smoothing::legacy, parallel.elevation.collided);
+  const auto jacobi = reference::smoothed_elevation(sphere, Smoothing::jacobi, parallel.elevation.collided);
+  double largest = 0.0;
+  for (std::size_t region = 0; region < jacobi.size(); ++region) largest = std::max(largest, std::abs(sequential[region] - jacobi[region]));
+  result.checks.push_back(informative_check("legacy.smoothing_difference", largest,
+                                            "largest |E_sequential − E_jacobi| of the two smoothings of the same "
+                                            "collided elevation (the code's halving blend against the thesis' mean)"));
+}
+
+// ---- parity ---------------------------------------------------------------------------------
+
+template <class Real>
+double largest_difference(const std::vector<Real>& values, const std::vector<double>& truth) {
+  double largest = 0.0;
+  for (std::size_t index = 0; index < truth.size(); ++index) {
+    largest = std::max(largest, std::abs(double(values[index]) - truth[index]));
+    if (std::isnan(double(values[index]))) return std::numeric_limits<double>::infinity();
+  }
+  return largest;
+}
+
+double elevation_range(const std::vector<double>& elevation) {
+  const auto [low, high] = std::minmax_element(elevation.begin(), elevation.end());
+  return *high - *low;
+}
+
+// The largest ratio of a region's |difference| to its bound: strict 1.
+template <class Real>
+Check ratio_check(const std::string& name, const std::vector<Real>& values, const std::vector<double>& truth,
+                  const std::vector<double>& bounds, double range) {
+  double worst = 0.0, widest = 0.0;
+  std::size_t worst_region = 0;
+  for (std::size_t region = 0; region < truth.size(); ++region) {
+    widest = std::max(widest, bounds[region]);
+    const double difference = std::abs(double(values[region]) - truth[region]);
+    const double ratio = std::isnan(double(values[region])) ? std::numeric_limits<double>::infinity()
+                         : bounds[region] > 0.0           ? difference / bounds[region]
+                         : difference > 0.0               ? std::numeric_limits<double>::infinity()
+                                                          : 0.0;
+    if (ratio > worst || region == 0) {
+      worst = std::max(worst, ratio);
+      worst_region = region;
+    }
+  }
+  const std::string detail = fmt::format(
+      "largest |difference| / bound over the regions: region {} differs by {:.3g} against its bound {:.3g} "
+      "(compare/checks/planet_error_model.hpp); widest bound {:.3g}",
+      worst_region, std::abs(double(values[worst_region]) - truth[worst_region]), bounds[worst_region], widest);
+  Check check = bounded_check(name, worst, 1.0, std::nullopt, detail);
+  if ((check.status == Outcome::pass) && widest > tellable_share * range) {
+    check.status = Outcome::inconclusive;
+    check.detail += fmt::format(" — inconclusive: the widest bound exceeds {} of the elevation's range {:.3g}",
+                                tellable_share, range);
+  }
+  return check;
+}
+
+void add_elevation_parity(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& truth,
+                          const PlanetElevation<double>& compared_to, const PlanetElevation<float>& compared,
+                          const PlanetErrorModel& model, const std::string& suffix, CaseResult& result) {
+  const auto bounds = elevation_bounds(sphere, params, truth.regions.positions, truth.partition, truth.elevation, model);
+  const double range = elevation_range(truth.elevation.smoothed);
+  result.checks.push_back(ratio_check("parity.noise." + suffix, compared.noisy, compared_to.noisy, bounds.noisy, range));
+  result.checks.push_back(
+      ratio_check("parity.collision." + suffix, compared.collided, compared_to.collided, bounds.collided, range));
+  result.checks.push_back(
+      ratio_check("parity.elevation." + suffix, compared.smoothed, compared_to.smoothed, bounds.smoothed, range));
+}
+
+std::vector<double> widened(const std::vector<float>& values) { return {values.begin(), values.end()}; }
+
+PlanetElevation<double> widened(const PlanetElevation<float>& elevation) {
+  PlanetElevation<double> wide;
+  wide.noisy = widened(elevation.noisy);
+  wide.collided = widened(elevation.collided);
+  wide.smoothed = widened(elevation.smoothed);
+  return wide;
+}
+
+void add_float_parity(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& truth,
+                      const Planet<float>& single, CaseResult& result) {
+  const double position_difference = largest_difference(single.regions.positions, truth.regions.positions);
+  result.checks.push_back(bounded_check("parity.positions.float_vs_double", position_difference,
+                                        float_position_error(), std::nullopt,
+                                        "largest |Δ| of a position component; bound 32u (planet_error_model.hpp)"));
+  add_elevation_parity(sphere, params, truth, truth.elevation, single.elevation,
+                       {float_position_error(), 0x1p-24}, "float_vs_double", result);
+}
+
+void add_gpu_checks(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& truth,
+                    const Planet<float>& single, const RunOptions& options, CaseResult& result) {
+  if (options.progress) options.progress->stage("GPU");
+  gpu::PlanetGenerator generator(sphere, params);
+  const auto regions = generator.jitter();
+  std::size_t differing_offsets = 0;
+  for (std::size_t index = 0; index < regions.offsets.size(); ++index) {
+    differing_offsets += regions.offsets[index] == single.regions.offsets[index] ? 0 : 1;
+  }
+  result.checks.push_back(bounded_check("parity.offsets.gpu_vs_float", double(differing_offsets), 0.0, std::nullopt,
+                                        "jitter offsets that differ in any bit from ref<float>'s"));
+  // Loose: the Vulkan environment's 2^-11 absolute error of sin and cos, through tan's quotient
+  // (≤ 2.2·2^-11 over the warp's range) and the warp's slope 1.77: 4·2^-11.
+  result.checks.push_back(bounded_check(
+      "parity.positions.gpu_vs_float", largest_difference(regions.positions, widened(single.regions.positions)),
+      gpu_position_error(), 4.0 * 0x1p-11,
+      "largest |Δ| of a position component; strict: each float operation within 4 ulp (tan, division, sqrt)"));
+  const auto partition = generator.grow_plates();
+  std::size_t differing_plates = 0, differing_edges = 0;
+  for (std::size_t region = 0; region < partition.plate.size(); ++region) {
+    differing_plates += partition.plate[region] == truth.partition.plate[region] ? 0 : 1;
+    differing_edges += partition.is_edge[region] == truth.partition.is_edge[region] ? 0 : 1;
+  }
+  result.checks.push_back(bounded_check("parity.plates.gpu_vs_cpu", double(differing_plates), 0.0, std::nullopt,
+                                        "regions whose plate differs (the synchronous rule: integers, exact)"));
+  result.checks.push_back(bounded_check("parity.plate_cycles.gpu_vs_cpu",
+                                        std::abs(double(partition.cycles - truth.partition.cycles)), 0.0, std::nullopt,
+                                        fmt::format("flood-fill cycles: GPU {}, CPU {}", partition.cycles,
+                                                    truth.partition.cycles)));
+  result.checks.push_back(bounded_check("parity.edges.gpu_vs_cpu", double(differing_edges), 0.0, std::nullopt,
+                                        "regions whose is_edge differs"));
+  add_partition_checks(sphere, params, partition, "gpu", result);
+  // Shadow parity: the GPU fed ref<float>'s positions and partition.
+  const auto shadow = generator.elevation(single.regions.positions, single.partition);
+  add_elevation_parity(sphere, params, truth, widened(single.elevation), shadow, {0.0, 4.0 * 0x1p-24}, "gpu_vs_float",
+                       result);
+  time_gpu(options.gpu_reps, [&] { generator.run(); }, result.timings);
+}
+
+// ---- the Earth ------------------------------------------------------------------------------
+
+// Solid angle of a cell: its two triangles on the sphere (Van Oosterom & Strackee 1983).
+double triangle_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double numerator = dot(a, cross(b, c));
+  const double denominator = 1.0 + dot(a, b) + dot(b, c) + dot(c, a);
+  return 2.0 * std::abs(std::atan2(numerator, denominator));
+}
+
+std::vector<AreaSample> planet_samples(const CubeSphere& sphere, const std::vector<double>& elevation) {
+  std::vector<AreaSample> samples;
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    Vec3 corners[4];
+    for (int corner = 0; corner < 4; ++corner) corners[corner] = sphere_position(sphere.local_position(region, corner % 2, corner / 2));
+    const double area = triangle_solid_angle(corners[0], corners[1], corners[3]) +
+                        triangle_solid_angle(corners[0], corners[3], corners[2]);
+    samples.push_back({elevation[region], area});
+  }
+  return samples;
+}
+
+// The relief a planet is set beside: ETOPO 1° (datasets/fetch.sh), or the global grid the case
+// gives as its input.
+struct ReferenceRelief {
+  std::string name;
+  GlobalRelief relief;
+  double bimodality = 0.0;
+};
+
+ReferenceRelief reference_relief(const GlobalGrid& grid, const std::string& name) {
+  const auto samples = area_samples(grid);
+  return {name, weighted_relief(samples), bimodality_coefficient(samples)};
+}
+
+// ETOPO 1° when datasets/fetch.sh has fetched it, read once per process; otherwise none and why.
+const std::optional<ReferenceRelief>& etopo_relief(const std::filesystem::path& dataset_dir, std::string& reason) {
+  static std::optional<ReferenceRelief> earth;
+  static std::string why;
+  static bool read = false;
+  if (!read) {
+    read = true;
+    const auto path = dataset_dir / "real" / "etopo60.cdf";
+    if (std::filesystem::exists(path)) {
+      earth = reference_relief(read_global_grid(path.string()), "Earth (ETOPO 1°)");
+    } else {
+      why = fmt::format("{} is missing: datasets/fetch.sh fetches it", path.string());
+    }
+  }
+  reason = why;
+  return earth;
+}
+
+// The hypsometric curves (elevation over its largest magnitude against the share of the surface
+// above) and the histograms of the planet and the Earth on one plot each.
+void plot_relief(const GlobalRelief& planet, const std::optional<ReferenceRelief>& earth, const RunOptions& options,
+                 CaseResult& result) {
+  const auto curve = [](const GlobalRelief& relief, const std::string& label) {
+    Series series{label, {}, {}, false, {}};
+    const double scale = std::max(std::abs(relief.min), std::abs(relief.max));
+    for (std::size_t point = 0; point < relief.hypsometry.size(); ++point) {
+      series.x.push_back(1.0 - double(point) / double(relief.hypsometry.size() - 1));
+      series.y.push_back(relief.hypsometry[point] / scale);
+    }
+    return series;
+  };
+  SeriesPlot hypsometry{"hypsometric curves", "share of the surface above", "elevation / largest |elevation|", false,
+                        false, {curve(planet, "planet")}};
+  if (earth) hypsometry.series.push_back(curve(earth->relief, earth->name));
+  hypsometry.series.push_back({"sea level", {0.0, 1.0}, {0.0, 0.0}, true, {}});
+  // Area density over the scaled elevation: each bin's area share over its scaled width.
+  const auto density = [](const GlobalRelief& relief, const std::string& label) {
+    Series series{label, {}, {}, false, {}};
+    const double scale = std::max(std::abs(relief.min), std::abs(relief.max));
+    for (std::size_t bin = 0; bin < relief.histogram.size(); ++bin) {
+      series.x.push_back((relief.histogram_start + (double(bin) + 0.5) * relief.bin_width) / scale);
+      series.y.push_back(relief.histogram[bin] / (relief.bin_width / scale));
+    }
+    return series;
+  };
+  SeriesPlot histogram{"elevation histograms", "elevation / largest |elevation|", "area density", false, false,
+                       {density(planet, "planet")}};
+  if (earth) histogram.series.push_back(density(earth->relief, earth->name));
+  attach_plot({hypsometry, histogram}, options.report_dir, "hypsometry.png",
+              earth ? fmt::format("hypsometric curves and histograms of the planet and {}, each scaled by its largest "
+                                  "|elevation|",
+                                  earth->name)
+                    : std::string("hypsometric curve and histogram of the planet (no global grid to set it beside)"),
+              result);
+}
+
+void add_fidelity_checks(const CubeSphere& sphere, const Planet<double>& planet, bool earth_like,
+                         const std::optional<ReferenceRelief>& given, const RunOptions& options, CaseResult& result) {
+  const auto samples = planet_samples(sphere, planet.elevation.smoothed);
+  const GlobalRelief relief = weighted_relief(samples, 0.0, 101, 0.1);
+  const double bimodality = bimodality_coefficient(samples);
+  std::string reason;
+  const auto& earth = given ? given : etopo_relief(options.dataset_dir, reason);
+  if (!earth) result.notes.push_back("no global grid to set the planet beside: " + reason);
+  const double target_land = earth ? earth->relief.land_fraction : earth_land_fraction;
+  const std::string target = earth ? earth->name : "the Earth (ETOPO 1°, data-sources.md)";
+  const std::string land_detail = fmt::format("|land share − {}'s {:.3f}|: land (not below 0) {:.3f} of the area",
+                                              target, target_land, relief.land_fraction);
+  const std::string bimodal_detail =
+      fmt::format("5/9 − Sarle's bimodality coefficient {:.3f} (above 5/9 suggests two modes){}", bimodality,
+                  earth ? fmt::format("; {}'s {:.3f}", earth->name, earth->bimodality) : std::string());
+  const double land_gap = std::abs(relief.land_fraction - target_land);
+  if (earth_like) {
+    const double unbounded = std::numeric_limits<double>::infinity();
+    result.checks.push_back(bounded_check("fidelity.land_fraction", land_gap, land_fraction_tolerance, unbounded, land_detail));
+    result.checks.push_back(bounded_check("fidelity.bimodality", bimodal_threshold - bimodality, 0.0, unbounded, bimodal_detail));
+  } else {
+    result.checks.push_back(informative_check("fidelity.land_fraction", land_gap, land_detail));
+    result.checks.push_back(informative_check("fidelity.bimodality", bimodal_threshold - bimodality, bimodal_detail));
+  }
+  result.checks.push_back(informative_check(
+      "fidelity.mean", relief.mean,
+      fmt::format("area-weighted mean elevation; range {:.3f} .. {:.3f} (generator units, sea level 0)", relief.min,
+                  relief.max)));
+  if (!options.report_dir.empty()) plot_relief(relief, earth, options, result);
+}
+
+// ---- pictures -------------------------------------------------------------------------------
+
+// The region under each pixel of an equirectangular map (row 0 at the north pole, +y; column 0 at
+// longitude −180°, the −z side; longitude 0 faces +z, the front face).
+std::vector<std::size_t> map_regions(const CubeSphere& sphere) {
+  std::vector<std::size_t> regions;
+  for (int row = 0; row < map_height; ++row) {
+    const double latitude = std::numbers::pi / 2 - (row + 0.5) / map_height * std::numbers::pi;
+    for (int column = 0; column < map_width; ++column) {
+      const double longitude = (column + 0.5) / map_width * 2 * std::numbers::pi - std::numbers::pi;
+      const Vec3 direction{std::cos(latitude) * std::sin(longitude), std::sin(latitude),
+                           std::cos(latitude) * std::cos(longitude)};
+      regions.push_back(sphere.region_at(local_position_of(direction)).value_or(0));
+    }
+  }
+  return regions;
+}
+
+// §4.3: base (107, 193, 255) below 0, (255, 189, 97) from 0, times (1 − |e|/4) clamped to [0, 1].
+std::array<float, 3> elevation_colour(double elevation) {
+  const std::array<float, 3> base = elevation < 0 ? std::array<float, 3>{107, 193, 255} : std::array<float, 3>{255, 189, 97};
+  const auto factor = static_cast<float>(std::clamp(1.0 - std::abs(elevation) / 4.0, 0.0, 1.0));
+  return {base[0] * factor / 255.0f, base[1] * factor / 255.0f, base[2] * factor / 255.0f};
+}
+
+// A plate's colour from the counter RNG (its own stream), edges full, interiors mixed with white.
+std::array<float, 3> plate_colour(const PlanetParams& params, std::int32_t plate, bool edge) {
+  std::array<float, 3> colour{};
+  for (std::uint32_t channel = 0; channel < 3; ++channel) {
+    const float value = 0.15f + 0.7f * uniform01(random_u32(params.seed, static_cast<std::uint32_t>(plate), channel, 0x706c0010u));
+    colour[channel] = edge ? value : 0.5f * (value + 1.0f);
+  }
+  return colour;
+}
+
+void write_maps(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& planet,
+                const RunOptions& options, CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const auto folder = options.report_dir / result.name;
+  std::filesystem::create_directories(folder);
+  const auto regions = map_regions(sphere);
+  std::vector<std::array<float, 3>> elevation_pixels, plate_pixels;
+  Grid<double> elevation_map(map_width, map_height);
+  for (std::size_t pixel = 0; pixel < regions.size(); ++pixel) {
+    const std::size_t region = regions[pixel];
+    elevation_pixels.push_back(elevation_colour(planet.elevation.smoothed[region]));
+    plate_pixels.push_back(plate_colour(params, planet.partition.plate[region], planet.partition.is_edge[region] != 0));
+    elevation_map.values[pixel] = planet.elevation.smoothed[region];
+  }
+  write_colour_image(map_width, map_height, elevation_pixels, folder / "elevation.png");
+  result.artifacts.push_back({result.name + "/elevation.png", "image",
+                              "elevation, ref<double>, equirectangular (§4.3 palette: blue below sea level, brown above)"});
+  write_colour_image(map_width, map_height, plate_pixels, folder / "plates.png");
+  result.artifacts.push_back({result.name + "/plates.png", "image",
+                              fmt::format("the {} plates ({} rule), edge regions in full colour", params.plates,
+                                          plate_rule_name(params.plate_rule))});
+  write_field_files(elevation_map,
+                    {"elevation_cpu", "elevation", "cpu", "1",
+                     "elevation (sea level 0) of the region under each pixel of an equirectangular map, ref<double>"},
+                    options, result);
+}
+
+// ---- the case -------------------------------------------------------------------------------
+
+void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>& given, const nlohmann::json& expect,
+                const RunOptions& options, CaseResult& result) {
+  const CubeSphere sphere(params.resolution);
+  result.input = fmt::format("cube sphere R = {} ({} regions), {} plates, seed {}", params.resolution,
+                             sphere.region_count(), params.plates, params.seed);
+  result.width = 6 * params.resolution;
+  result.height = params.resolution;
+  const PlanetParams twins = twin_params(params);
+  if (uses_legacy(params)) {
+    result.notes.push_back(fmt::format("the legacy rules ({} plates, {} smoothing) run on the CPU; the twins are compared "
+                                       "with the synchronous rule and Jacobi smoothing on the same draws",
+                                       plate_rule_name(params.plate_rule), smoothing_name(params.smoothing)));
+  }
+  add_topology_checks(sphere, result);
+  if (options.progress) options.progress->stage("CPU reference (double)");
+  Planet<double> planet;
+  time_cpu(std::max(options.cpu_reps, 1), [&] { planet = generate<double>(sphere, params); }, result.timings);
+  add_partition_checks(sphere, params, planet.partition, "cpu", result);
+  add_expansion_rate_check(twins, result);
+  add_smoothing_check(sphere, result);
+  const Planet<double> truth = uses_legacy(params) ? generate<double>(sphere, twins) : planet;
+  add_legacy_checks(sphere, twins, truth, result);
+  if (options.progress) options.progress->stage("CPU reference (float)");
+  const Planet<float> single = generate<float>(sphere, twins);
+  add_float_parity(sphere, twins, truth, single, result);
+  add_fidelity_checks(sphere, planet, expect.is_object() && expect.value("earth_like", false), given, options, result);
+  write_maps(sphere, params, planet, options, result);
+  if (!options.gpu_available) {
+    result.checks.push_back(skipped_check("parity.gpu", options.gpu_unavailable_reason));
+    return;
+  }
+  add_gpu_checks(sphere, twins, truth, single, options, result);
+}
+
+PreparedTwin prepare_planet(const nlohmann::json& resolved, const LoadedInput& input) {
+  if (input.heights.size() != 0 || input.mesh || input.volume) {
+    throw InputError("the planet makes its own surface: give it no input, or a global elevation grid to be set beside");
+  }
+  const PlanetParams params = planet_params_from_json(resolved);
+  std::optional<ReferenceRelief> given;
+  if (input.global_grid) given = reference_relief(*input.global_grid, input.description);
+  PreparedTwin prepared;
+  prepared.run = [params, given](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+    run_planet(params, given, expect, options, result);
+  };
+  return prepared;
+}
+
+// Per region: ref<double> (offsets 16, positions 24, plate 4, edge 1, three elevations 24) twice
+// when legacy rules run, ref<float> about half, the GPU's downloads and the area samples: about
+// 400 B; rounded up to 1000 B for the vectors' growth and the error model's per-stage bounds.
+// A global grid the case gives is read (its own estimate, core/io/global_grid.cpp) before this.
+MemoryEstimate planet_memory(const nlohmann::json& resolved, const LoadedInput&) {
+  const double resolution = resolved.at("resolution").get<double>();
+  return memory_for(6.0 * resolution * resolution, "regions", 1000);
+}
+
+}  // namespace
+
+Algorithm planet_algorithm() {
+  return {.name = "planet.earth_like",
+          .summary = "seed 002's Earth-like planet: jitter, tectonic plates, elevation on a cube sphere, beside the Earth",
+          .source = "seed 002 digest §4.4, §9 (eq. 5.1–5.3, Algorithm 3)",
+          .params = &planet_param_specs(),
+          .prepare = prepare_planet,
+          .iterates = false,
+          .has_field_twin = false,
+          .ad_hoc_input = AdHocInput::optional_global_grid,
+          .expect_shape = {{"earth_like", true}},
+          .memory = planet_memory};
+}
+
+}  // namespace gt

@@ -1,0 +1,35 @@
+// Mutants of seed 002's planet twins (planet.earth_like); see compare/mutants/mutants.hpp. Each runs
+// on the small planet.mutant_probe.r12 case (R = 12, 20 plates).
+//
+// one_twin: bugs in the GPU shaders only, killed by the parity checks: parity.offsets.gpu_vs_float
+// (any bit), parity.plates.gpu_vs_cpu (any region), parity.collision.gpu_vs_float (a sign flips a
+// pressure term, far beyond the error model's per-region bound).
+//
+// both_twins: the same bug in the reference and the shader (or in the cube sphere both share),
+// killed by checks against what was asked: spec.expansion_rate.cpu (rings per cycle average to the
+// rate), spec.smoothing_constant.cpu (the mean of a constant), topology.* (neighbour counts and
+// symmetry of the shared table).
+#include "compare/mutants/mutants.hpp"
+
+namespace gt {
+
+std::vector<Mutant> planet_mutants() {
+  const std::vector<std::string> probe = {"planet.mutant_probe.r12"};
+  return {
+      {"planet.jitter.gpu_swapped_axes", MutantKind::one_twin,
+       "jitter.comp draws offset a on b's counter and b on a's", probe},
+      {"planet.plates.gpu_highest_index", MutantKind::one_twin,
+       "plate_claim.comp gives an unassigned region the highest active neighbouring plate instead of the lowest",
+       probe},
+      {"planet.collision.gpu_neighbour_sign", MutantKind::one_twin,
+       "elevation_collision.comp projects the neighbour's chord on d instead of −d", probe},
+      {"planet.plates.ceil_rate", MutantKind::both_twins,
+       "both twins grow ceil(rate) rings a cycle (the extra ring's draw can never win)", probe},
+      {"planet.smoothing.count_without_self", MutantKind::both_twins,
+       "both twins' Jacobi mean sums the region but divides by its neighbours' count only", probe},
+      {"planet.cube_sphere.no_wrap", MutantKind::both_twins,
+       "the shared neighbour table leaves out neighbours across the cube's edges", probe},
+  };
+}
+
+}  // namespace gt
