@@ -219,6 +219,27 @@ TEST(PlanetElevation, ShiftsAreTangentWithTheirMagnitudeAndBasesWithinTheirRange
   }
 }
 
+// Bimodal bases: oceanic plates in [−e_r, −e_r/2], continental ones in [0, e_r/4], and the oceanic
+// share near ocean_share: 500 plates, binomial σ = sqrt(0.7·0.3/500) = 0.0205; bound 5σ.
+TEST(PlanetElevation, BimodalBasesLieInTheirTwoRangesInTheirShares) {
+  const CubeSphere sphere(20);
+  PlanetParams params = params_of(20, 500);
+  params.plate_bases = PlateBases::bimodal;
+  const auto regions = reference::jitter_regions<double>(sphere, params);
+  const auto motion = reference::plate_motion(params, regions.positions, reference::grow_plates(sphere, params));
+  int oceanic = 0;
+  for (const double base : motion.base) {
+    if (base < 0.0) {
+      ++oceanic;
+      EXPECT_GE(base, -0.8);
+      EXPECT_LE(base, -0.4);
+    } else {
+      EXPECT_LE(base, 0.2);
+    }
+  }
+  EXPECT_NEAR(oceanic / 500.0, 0.7, 0.1025);
+}
+
 TEST(PlanetElevation, WithoutNoiseAndCollisionsEveryRegionHasItsPlatesBaseAndJacobiKeepsIt) {
   const CubeSphere sphere(10);
   PlanetParams params = params_of(10, 1);

@@ -25,6 +25,8 @@ constexpr std::pair<const char*, PlateCentre> centres[] = {{"mean", PlateCentre:
                                                            {"edge_sum", PlateCentre::edge_sum}};
 constexpr std::pair<const char*, PressureFormula> pressures[] = {{"code", PressureFormula::code},
                                                                  {"thesis", PressureFormula::thesis}};
+constexpr std::pair<const char*, PlateBases> plate_bases[] = {{"uniform", PlateBases::uniform},
+                                                              {"bimodal", PlateBases::bimodal}};
 constexpr std::pair<const char*, Smoothing> smoothings[] = {
     {"jacobi", Smoothing::jacobi}, {"legacy", Smoothing::legacy}, {"off", Smoothing::off}};
 
@@ -62,6 +64,10 @@ const ParamSpecs& planet_param_specs() {
       {"centre", ParamKind::choice, "mean", 0, 0, {"mean", "edge_sum"}, "",
        "plate centre: normalised mean of all members (thesis) or of the edge members (code)"},
       {"elevation_range", ParamKind::real, 0.8, 0.0, 1.0, {}, "1", "e_r: plate base elevations uniform in [−e_r, e_r]"},
+      {"plate_bases", ParamKind::choice, "uniform", 0, 0, {"uniform", "bimodal"}, "",
+       "plate base elevations uniform in [−e_r, e_r] (the seed), or oceanic plates in [−e_r, −e_r/2] and continental "
+       "ones in [0, e_r/4] (Earth-like hypsometry)"},
+      {"ocean_share", ParamKind::real, 0.7, 0.0, 1.0, {}, "1", "with bimodal bases: the probability that a plate is oceanic"},
       {"collisions", ParamKind::boolean, true, 0, 0, {}, "", "usePlateCollisions: pressure at plate borders"},
       {"collision_strength", ParamKind::real, 0.5, 0.0, 10.0, {}, "1", "C of eq. 5.3"},
       {"pressure", ParamKind::choice, "code", 0, 0, {"code", "thesis"}, "",
@@ -89,6 +95,8 @@ PlanetParams planet_params_from_json(const nlohmann::json& resolved) {
   params.plate_rule = choice_of(resolved, "plate_rule", plate_rules);
   params.centre = choice_of(resolved, "centre", centres);
   params.elevation_range = resolved.at("elevation_range").get<double>();
+  params.plate_bases = choice_of(resolved, "plate_bases", plate_bases);
+  params.ocean_share = resolved.at("ocean_share").get<double>();
   params.collisions = resolved.at("collisions").get<bool>();
   params.collision_strength = resolved.at("collision_strength").get<double>();
   params.pressure = choice_of(resolved, "pressure", pressures);

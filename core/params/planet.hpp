@@ -38,7 +38,12 @@
 //    relative, which the shift would inherit.
 // 5. Shift (eq. 5.2): m = 0.5 + 0.5·U(k, 0, shift), α = 2·U(k, 1, shift) − 1, β = 2·U(k, 2, shift) − 1;
 //    t_x = c × (1, 0, 0), t_y = c × (0, 1, 0), t = α·t_x + β·t_y; s_k = m·t/|t| (0 when |t| = 0).
-// 6. Base elevation: b_k = e_r·(2·U(k, 0, elevation) − 1).
+// 6. Base elevation: `uniform` (the seed): b_k = e_r·(2·U(k, 0, elevation) − 1), so half the plates are
+//    land. `bimodal` (ours, for Earth-like hypsometry: the seed's default gives a land share near
+//    0.5 and no second mode, see planet.earth_like.default): plate k is oceanic when
+//    U(k, 1, elevation) < ocean_share, with b_k = −e_r·(0.5 + 0.5·U(k, 0, elevation)) in
+//    [−e_r, −e_r/2]; otherwise continental, b_k = (0.25·e_r)·U(k, 0, elevation) in [0, e_r/4]
+//    (the Earth: ocean floor near −4 km, continents near +0.1 km).
 // 7. Noise (§4.4.3 phase 3): E0(i) = b_plate(i) + S·fbm(f·pos(i)), fbm = seed 002's
 //    normalizedOctaveNoise3D of improved Perlin noise (reference/noise/fractal.hpp: octaves o,
 //    lacunarity 2, gain 0.5) on seeded_permutation(seed) (core/noise/permutation.hpp); without noise
@@ -72,6 +77,7 @@ enum class PlateRule { synchronous, legacy };
 enum class PlateCentre { mean, edge_sum };
 enum class PressureFormula { code, thesis };
 enum class Smoothing { jacobi, legacy, off };
+enum class PlateBases { uniform, bimodal };
 
 // The `stream` counters of §9.2.
 enum PlanetStream : std::uint32_t {
@@ -95,6 +101,8 @@ struct PlanetParams {
   PlateRule plate_rule = PlateRule::synchronous;
   PlateCentre centre = PlateCentre::mean;
   double elevation_range = 0.8;     // e_r
+  PlateBases plate_bases = PlateBases::uniform;
+  double ocean_share = 0.7;         // share of oceanic plates with bimodal bases
   bool collisions = true;
   double collision_strength = 0.5;  // C
   PressureFormula pressure = PressureFormula::code;

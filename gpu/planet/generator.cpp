@@ -39,7 +39,8 @@ struct PlanetBlock {
   float collision_strength;
   float perlin_frequency;
   float perlin_strength;
-  float padding[3];
+  float ocean_share;
+  float padding[2];
   FractalTerms<float> fractal_terms;
   float padding_end;
 };
@@ -113,6 +114,7 @@ std::vector<std::string> program_defines(const PlanetParams& params) {
       stream_define("SHIFT", planet_stream_shift),         stream_define("ELEVATION", planet_stream_elevation)};
   if (params.centre == PlateCentre::edge_sum) defines.emplace_back("PLANET_CENTRE_EDGE_SUM");
   if (params.noise) defines.emplace_back("PLANET_NOISE");
+  if (params.plate_bases == PlateBases::bimodal) defines.emplace_back("PLANET_BIMODAL_BASES");
   if (params.collisions) defines.emplace_back("PLANET_COLLISIONS");
   if (params.pressure == PressureFormula::thesis) defines.emplace_back("PLANET_PRESSURE_THESIS");
   if (params.smooths()) defines.emplace_back("PLANET_SMOOTHS");
@@ -145,6 +147,7 @@ UniformBuffer block_buffer(const PlanetParams& params) {
   block.collision_strength = static_cast<float>(params.collision_strength);
   block.perlin_frequency = static_cast<float>(params.perlin_frequency);
   block.perlin_strength = static_cast<float>(params.perlin_strength);
+  block.ocean_share = static_cast<float>(params.ocean_share);
   block.fractal_terms = fractal_terms<float>(
       FractalParams{.octaves = static_cast<double>(params.perlin_octaves), .lacunarity = 2.0, .gain = 0.5});
   return UniformBuffer::from(block);

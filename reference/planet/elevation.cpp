@@ -84,6 +84,16 @@ Vector3<Real> plate_shift(const PlanetParams& params, int plate, const Vector3<R
   return tangent_length > Real(0) ? scaled(tangent, magnitude / tangent_length) : Vector3<Real>{};
 }
 
+// Step 6: uniform in [−e_r, e_r], or bimodal: oceanic in [−e_r, −e_r/2], continental in [0, e_r/4].
+template <class Real>
+Real plate_base(const PlanetParams& params, int plate) {
+  const auto range = static_cast<Real>(params.elevation_range);
+  const Real level = draw<Real>(params, plate, 0, planet_stream_elevation);
+  if (params.plate_bases == PlateBases::uniform) return range * (Real(2) * level - Real(1));
+  const bool oceanic = draw<Real>(params, plate, 1, planet_stream_elevation) < static_cast<Real>(params.ocean_share);
+  return oceanic ? -(range * (Real(0.5) + Real(0.5) * level)) : (Real(0.25) * range) * level;
+}
+
 // Step 7: base + S·fbm(f·pos).
 template <class Real>
 std::vector<Real> noisy_elevation(const PlanetParams& params, const std::vector<Real>& positions,
@@ -167,10 +177,9 @@ PlateMotion<Real> plate_motion(const PlanetParams& params, const std::vector<Rea
                                const PlatePartition& partition) {
   PlateMotion<Real> motion;
   motion.centre = plate_centres(params, positions, partition);
-  const auto range = static_cast<Real>(params.elevation_range);
   for (int plate = 0; plate < params.plates; ++plate) {
     motion.shift.push_back(plate_shift(params, plate, motion.centre[plate]));
-    motion.base.push_back(range * (Real(2) * draw<Real>(params, plate, 0, planet_stream_elevation) - Real(1)));
+    motion.base.push_back(plate_base<Real>(params, plate));
   }
   return motion;
 }

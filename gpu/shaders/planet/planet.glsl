@@ -35,6 +35,7 @@ layout(std140, binding = 0) uniform PlanetBlock {
   float collision_strength;  // C
   float perlin_frequency;    // f
   float perlin_strength;     // S
+  float ocean_share;         // with PLANET_BIMODAL_BASES: the share of oceanic plates
   GtFractalTerms fractal_terms;  // octaves o, lacunarity 2, gain 0.5
 };
 

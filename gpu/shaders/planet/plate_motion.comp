@@ -6,7 +6,9 @@
 //   t_x = c × (1, 0, 0) = (0, c_z, −c_y), t_y = c × (0, 1, 0) = (−c_z, 0, c_x) (exact);
 //   t = α·t_x + β·t_y componentwise (α's product first);
 //   s = t·(m/sqrt(dot3(t, t))), 0 when dot3(t, t) = 0;
-//   b = e_r·(2·U(k, 0, elevation) − 1).
+//   b = e_r·(2·U(k, 0, elevation) − 1), or with PLANET_BIMODAL_BASES: oceanic when
+//   U(k, 1, elevation) < ocean_share, b = −(e_r·(0.5 + 0.5·U(k, 0, elevation))), else
+//   b = (0.25·e_r)·U(k, 0, elevation) (0.25·e_r is exact).
 // Writes plates[k].centre, .shift, .base.
 layout(local_size_x = 64) in;
 
@@ -33,7 +35,13 @@ vec3 shift_of(uint k, vec3 centre) {
 }
 
 float base_of(uint k) {
-  precise float base = elevation_range * (2.0 * planet_draw(k, 0u, PLANET_STREAM_ELEVATION) - 1.0);
+  float level = planet_draw(k, 0u, PLANET_STREAM_ELEVATION);
+#ifdef PLANET_BIMODAL_BASES
+  bool oceanic = planet_draw(k, 1u, PLANET_STREAM_ELEVATION) < ocean_share;
+  precise float base = oceanic ? -(elevation_range * (0.5 + 0.5 * level)) : (0.25 * elevation_range) * level;
+#else
+  precise float base = elevation_range * (2.0 * level - 1.0);
+#endif
   return base;
 }
 
