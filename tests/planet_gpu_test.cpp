@@ -32,9 +32,11 @@
 #include "core/planet/cube_sphere.hpp"
 #include "core/rng.hpp"
 #include "gpu/planet/generator.hpp"
+#include "gpu/planet/voronoi.hpp"
 #include "reference/planet/elevation.hpp"
 #include "reference/planet/jitter.hpp"
 #include "reference/planet/plates.hpp"
+#include "reference/planet/voronoi.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/refusal.hpp"
 
@@ -311,6 +313,47 @@ TEST_F(PlanetChainGpu, RunGivesTheStepwiseResultsAndRepeatsBitForBit) {
   expect_elevation_matches(sphere, params, positions, reference_partition, elevation);
   gpu.run();
   EXPECT_EQ(gpu.elevation_result().smoothed, elevation.smoothed);
+}
+
+// The cell-grid search (5×5 through the neighbour table) against the exact nearest centroid, both
+// on ref<float>'s positions: a label may differ only on a near-tie, where the GPU's float squared
+// chords cannot tell the two apart. Each squared chord takes 3 subtractions, 3 products and 2 sums,
+// each rounded by at most 2^-24 of a magnitude <= 4 (2^-22): 8·2^-22 = 2^-19 per distance, so a
+// label may be farther than the nearest by 2^-18 in squared chord, no more.
+TEST_F(PlanetChainGpu, VoronoiLabelsAreTheNearestCentroidsUpToTies) {
+  for (const int resolution : {3, 10, 25}) {
+    const gt::CubeSphere sphere(resolution);
+    const auto positions = gt::reference::jitter_regions<float>(sphere, planet_params(resolution, 5, 0.5, 21)).positions;
+    std::vector<gt::Vector3<double>> directions;
+    std::vector<gt::Vector3<float>> queries;
+    for (std::uint32_t index = 0; index < 20000; ++index) {
+      std::array<double, 3> direction{};
+      double squared = 0.0;
+      for (std::uint32_t axis = 0; axis < 3; ++axis) {
+        direction[axis] = 2.0 * gt::uniform01(gt::random_u32(5, index, axis, 1)) - 1.0;
+        squared += direction[axis] * direction[axis];
+      }
+      if (squared < 1e-6 || squared > 1.0) continue;
+      const auto single = gt::Vector3<float>{float(direction[0] / std::sqrt(squared)), float(direction[1] / std::sqrt(squared)),
+                                             float(direction[2] / std::sqrt(squared))};
+      queries.push_back(single);
+      directions.push_back({single[0], single[1], single[2]});
+    }
+    const std::vector<double> wide(positions.begin(), positions.end());
+    const auto nearest = gt::reference::nearest_sites(wide, directions);
+    for (const int rings : {1, 2}) {
+      const auto labels = gt::gpu::PlanetVoronoi(sphere, rings).labels(positions, queries);
+      std::size_t misses = 0;
+      for (std::size_t index = 0; index < labels.size(); ++index) {
+        const auto label = static_cast<std::size_t>(labels[index]);
+        const double distance = std::hypot(wide[3 * label] - directions[index][0], wide[3 * label + 1] - directions[index][1],
+                                           wide[3 * label + 2] - directions[index][2]);
+        misses += distance * distance > nearest[index].distance * nearest[index].distance + 0x1p-18 ? 1 : 0;
+      }
+      if (rings == 2) EXPECT_EQ(misses, 0u) << "R = " << resolution << ": the 5×5 block holds the nearest centroid";
+      EXPECT_LE(misses, labels.size() / 100) << "R = " << resolution << ", " << rings << " ring(s)";
+    }
+  }
 }
 
 TEST_F(PlanetChainGpu, RefusesTheCpuOnlyModes) {

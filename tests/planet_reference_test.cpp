@@ -11,9 +11,13 @@
 #include "core/errors.hpp"
 #include "core/params.hpp"
 #include "core/params/planet.hpp"
+#include "core/rng.hpp"
 #include "reference/planet/elevation.hpp"
 #include "reference/planet/jitter.hpp"
 #include "reference/planet/plates.hpp"
+#include "reference/planet/voronoi.hpp"
+#include "core/planet/sphere_mesh.hpp"
+#include <map>
 
 namespace gt {
 namespace {
@@ -275,6 +279,65 @@ TEST(PlanetElevation, LegacySmoothingIsTheCodesSequentialHalvingBlend) {
   EXPECT_EQ(reference::smoothed_elevation(sphere, Smoothing::legacy, field)[27], 1.0 / 2048 + 1.0 / 1024 + 0.25 + 1.0 / 32 + 1.0 / 1024);
   EXPECT_NEAR(reference::smoothed_elevation(sphere, Smoothing::jacobi, field)[27], 1.0 / 9.0, 1e-16);
   EXPECT_EQ(reference::smoothed_elevation(sphere, Smoothing::off, field), field);
+}
+
+// The k-d tree's nearest centroid against a brute-force scan of every centroid (the same double
+// distances, so equal up to exact ties, which random directions do not meet).
+TEST(PlanetVoronoi, NearestSiteIsTheBruteForceNearestCentroid) {
+  const CubeSphere sphere(6);
+  const auto regions = reference::jitter_regions<double>(sphere, params_of(6, 5));
+  std::vector<Vector3<double>> directions;
+  for (std::uint32_t index = 0; index < 2000; ++index) {
+    Vec3 direction{};
+    for (std::uint32_t axis = 0; axis < 3; ++axis) direction[axis] = 2.0 * uniform01(random_u32(9, index, axis, 0)) - 1.0;
+    if (length(direction) < 1e-3) continue;
+    direction = normalised(direction);
+    directions.push_back({direction[0], direction[1], direction[2]});
+  }
+  const auto nearest = reference::nearest_sites(regions.positions, directions);
+  for (std::size_t index = 0; index < directions.size(); ++index) {
+    double best = std::numeric_limits<double>::infinity(), second = best;
+    std::int32_t best_region = -1;
+    for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+      const double distance = std::hypot(regions.positions[3 * region] - directions[index][0],
+                                         regions.positions[3 * region + 1] - directions[index][1],
+                                         regions.positions[3 * region + 2] - directions[index][2]);
+      if (distance < best) {
+        second = best;
+        best = distance;
+        best_region = static_cast<std::int32_t>(region);
+      } else if (distance < second) {
+        second = distance;
+      }
+    }
+    EXPECT_EQ(nearest[index].region, best_region) << index;
+    EXPECT_NEAR(nearest[index].distance, best, 1e-15);
+    EXPECT_NEAR(nearest[index].second_distance, second, 1e-15);
+  }
+}
+
+// A closed genus-0 surface: V − E + F = 2 with V = 6R² + 2 and F = 12R², every undirected edge used
+// by exactly two triangles in opposite directions, and every vertex on the unit sphere.
+TEST(PlanetMesh, TheCubeSphereMeshIsAClosedOrientedSphere) {
+  for (const int resolution : {1, 2, 7}) {
+    const Mesh mesh = sphere_mesh(CubeSphere(resolution));
+    EXPECT_EQ(mesh.positions.size(), std::size_t(6 * resolution * resolution + 2));
+    EXPECT_EQ(mesh.triangles.size(), std::size_t(12 * resolution * resolution));
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (const auto& triangle : mesh.triangles) {
+      for (int corner = 0; corner < 3; ++corner) ++directed[{triangle[corner], triangle[(corner + 1) % 3]}];
+    }
+    for (const auto& [edge, uses] : directed) {
+      EXPECT_EQ(uses, 1) << "a directed edge used twice: misoriented";
+      EXPECT_EQ(directed.count({edge.second, edge.first}), 1u) << "a border edge";
+    }
+    EXPECT_EQ(long(mesh.positions.size()) - long(directed.size() / 2) + long(mesh.triangles.size()), 2);
+    for (const auto& position : mesh.positions) EXPECT_NEAR(length(position), 1.0, 1e-15);
+    // Outward: the first triangle's normal points away from the centre.
+    const auto& first = mesh.triangles.front();
+    const Vec3 normal = cross(mesh.positions[first[1]] - mesh.positions[first[0]], mesh.positions[first[2]] - mesh.positions[first[0]]);
+    EXPECT_GT(dot(normal, mesh.positions[first[0]]), 0.0);
+  }
 }
 
 TEST(PlanetParams, PlatesBeyondTheRegionsAreRefused) {

@@ -11,10 +11,18 @@
 //   topology.*                the cube sphere's neighbour table: asymmetric pairs, regions whose
 //                             neighbour count is not 7 (corner cells) or 8, the largest round-trip
 //                             error (face, a, b) -> direction -> (face, a, b) (§9.5)
+//   mesh.*.planet, topology.mesh_genus, topology.mesh_vertices   the planet as a closed mesh
+//                             (core/planet/sphere_mesh.hpp) through the mesh checks: closed,
+//                             manifold, oriented, free of self-intersections, genus 0, 6R² + 2 vertices
+//   parity.voronoi.gpu_vs_cpu map directions whose GPU label (Algorithm 1's 5×5 cell-grid search) is
+//                             farther than the exact nearest centroid (CGAL k-d tree) beyond the
+//                             positions' error (must be 0); voronoi.misses_3x3.gpu, informative: the
+//                             seed shader's 3×3 search
 //   partition.*.{cpu,gpu}     regions without a plate, empty plates, plates not 8-connected,
 //                             regions whose is_edge is not the definition (all must be 0)
 //   spec.expansion_rate.cpu   Algorithm 3 as intended: rings per cycle average to the rate (6σ)
 //   spec.smoothing_constant.cpu   the Jacobi mean keeps a constant field
+//   spec.pressure_symmetry.cpu    pressure(i, n) = pressure(n, i) bit for bit (§9.5)
 //   legacy.*                  informative: the share of regions whose plate the seed code's
 //                             sequential fill gives differently, and the largest change of the
 //                             elevation that its sequential smoothing makes, against the parallel
@@ -48,6 +56,7 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/checks/mesh.hpp"
 #include "compare/checks/planet_error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/descriptors/global_relief.hpp"
@@ -58,11 +67,14 @@
 #include "core/errors.hpp"
 #include "core/io/global_grid.hpp"
 #include "core/params/planet.hpp"
+#include "core/planet/sphere_mesh.hpp"
 #include "core/rng.hpp"
 #include "gpu/planet/generator.hpp"
+#include "gpu/planet/voronoi.hpp"
 #include "reference/planet/elevation.hpp"
 #include "reference/planet/jitter.hpp"
 #include "reference/planet/plates.hpp"
+#include "reference/planet/voronoi.hpp"
 
 namespace gt {
 namespace {
@@ -98,7 +110,7 @@ PlanetParams twin_params(PlanetParams params) {
 }
 
 bool uses_legacy(const PlanetParams& params) {
-  return params.plate_rule == PlateRule::legacy || params.smoothing == Smoothing::legacy;
+  return params.plate_rule != PlateRule::synchronous || params.smoothing == Smoothing::legacy;
 }
 
 // ---- topology and partition invariants -----------------------------------------------------
@@ -131,6 +143,22 @@ void add_topology_checks(const CubeSphere& sphere, CaseResult& result) {
   result.checks.push_back(bounded_check("topology.round_trip", round_trip, 1e-13, std::nullopt,
                                         "largest |Δa|, |Δb| of (face, a, b) -> direction -> (face, a, b) at offset "
                                         "(0.3, 0.8) in every cell; a changed face counts 1"));
+}
+
+// The planet as a closed mesh (core/planet/sphere_mesh.hpp) through the mesh checks of
+// compare/checks/mesh.hpp, with its genus (0) and its vertex count (6R² + 2: the cube's corners
+// and edges welded) held to what a sphere must have.
+void add_mesh_checks(const CubeSphere& sphere, CaseResult& result) {
+  const Mesh mesh = sphere_mesh(sphere);
+  const MeshReport report = check_mesh(mesh);
+  for (auto& check : mesh_checks(report, "planet", true)) result.checks.push_back(std::move(check));
+  result.checks.push_back(bounded_check("topology.mesh_genus", std::abs(report.openmesh.genus), 0.0, std::nullopt,
+                                        "genus of the planet mesh (OpenMesh: (2C − χ − b)/2); a sphere has 0"));
+  const double expected_vertices = 6.0 * sphere.resolution() * sphere.resolution() + 2.0;
+  result.checks.push_back(bounded_check("topology.mesh_vertices", std::abs(double(mesh.positions.size()) - expected_vertices),
+                                        0.0, std::nullopt,
+                                        fmt::format("|vertices − (6R² + 2)|: {} vertices, {} triangles",
+                                                    mesh.positions.size(), mesh.triangles.size())));
 }
 
 // Members of each plate reachable from its first member over its own 8-neighbours.
@@ -222,22 +250,60 @@ void add_smoothing_check(const CubeSphere& sphere, CaseResult& result) {
                                         "largest |Jacobi mean of a constant 0.37 − 0.37|"));
 }
 
+// Both pressure formulas are symmetric bit for bit: normalise(−x) = −normalise(x) and the two terms
+// swap places in a commutative addition (core/params/planet.hpp). Every pair of neighbouring regions
+// on different plates, both ways.
+void add_pressure_symmetry_check(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& planet,
+                                 CaseResult& result) {
+  const auto& positions = planet.regions.positions;
+  const auto& shift = planet.elevation.motion.shift;
+  const auto& plate = planet.partition.plate;
+  const auto position = [&](std::size_t region) {
+    return Vector3<double>{positions[3 * region], positions[3 * region + 1], positions[3 * region + 2]};
+  };
+  std::size_t asymmetric = 0, pairs = 0;
+  for (std::size_t region = 0; region < plate.size(); ++region) {
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour == invalid_region || plate[neighbour] == plate[region]) continue;
+      ++pairs;
+      const double forward = reference::pressure(params.pressure, position(region), shift[plate[region]],
+                                                 position(neighbour), shift[plate[neighbour]]);
+      const double backward = reference::pressure(params.pressure, position(neighbour), shift[plate[neighbour]],
+                                                  position(region), shift[plate[region]]);
+      asymmetric += forward == backward ? 0 : 1;
+    }
+  }
+  result.checks.push_back(bounded_check("spec.pressure_symmetry.cpu", double(asymmetric), 0.0, std::nullopt,
+                                        fmt::format("directed pairs of {} across plate borders whose pressure differs "
+                                                    "from the reverse pair's in any bit",
+                                                    pairs)));
+}
+
 // ---- legacy modes --------------------------------------------------------------------------
 
 void add_legacy_checks(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& parallel,
                        CaseResult& result) {
-  PlanetParams legacy = params;
-  legacy.plate_rule = PlateRule::legacy;
-  const auto legacy_partition = reference::grow_plates(sphere, legacy);
-  std::size_t differing = 0;
-  for (std::size_t region = 0; region < legacy_partition.plate.size(); ++region) {
-    differing += legacy_partition.plate[region] == parallel.partition.plate[region] ? 0 : 1;
+  const struct {
+    PlateRule rule;
+    const char* name;
+    const char* what;
+  } rules[] = {{PlateRule::legacy, "legacy.plate_difference",
+                "the seed code's sequential fill (ceil(rate) + 1 rings a cycle, plates in index order)"},
+               {PlateRule::legacy_random, "legacy.random_plate_difference",
+                "the seed code's random-driven fill (one random plate per pick)"}};
+  for (const auto& [rule, name, what] : rules) {
+    PlanetParams legacy = params;
+    legacy.plate_rule = rule;
+    const auto legacy_partition = reference::grow_plates(sphere, legacy);
+    std::size_t differing = 0;
+    for (std::size_t region = 0; region < legacy_partition.plate.size(); ++region) {
+      differing += legacy_partition.plate[region] == parallel.partition.plate[region] ? 0 : 1;
+    }
+    result.checks.push_back(informative_check(
+        name, double(differing) / double(legacy_partition.plate.size()),
+        fmt::format("share of regions {} gives another plate than the synchronous rule; {} cycles (picks) against {}",
+                    what, legacy_partition.cycles, parallel.partition.cycles)));
   }
-  result.checks.push_back(informative_check(
-      "legacy.plate_difference", double(differing) / double(legacy_partition.plate.size()),
-      fmt::format("share of regions the seed code's sequential fill (ceil(rate) + 1 rings a cycle, plates in index "
-                  "order) gives another plate than the synchronous rule; {} cycles against {}",
-                  legacy_partition.cycles, parallel.partition.cycles)));
   const auto sequential = reference::smoothed_elevation(sphere, Smoothing::legacy, parallel.elevation.collided);
   const auto jacobi = reference::smoothed_elevation(sphere, Smoothing::jacobi, parallel.elevation.collided);
   double largest = 0.0;
@@ -366,6 +432,50 @@ void add_gpu_checks(const CubeSphere& sphere, const PlanetParams& params, const 
   time_gpu(options.gpu_reps, [&] { generator.run(); }, result.timings);
 }
 
+// The GPU's cell-grid search (Algorithm 1) on its own positions against the exact nearest centroid
+// (the jitter, hence the positions, do not depend on the plate rules: `nearest` holds for both).
+// A GPU label counts as a miss when its centroid's squared chord exceeds the nearest's by more than
+// the GPU can tell apart: its own float rounding, 2^-19 per squared chord (8 operations, each within
+// 2^-24 of a magnitude <= 4), twice, plus the positions' error e (the GPU's and ref<float>'s from
+// ref<double>, per component) moving each squared chord by at most 2·|p − w|·√3·e <= 4√3·e.
+void add_voronoi_checks(const CubeSphere& sphere, const Planet<double>& truth, const std::vector<Vector3<double>>& directions,
+                        const std::vector<reference::NearestSite>& nearest, const PlanetParams& params, CaseResult& result) {
+  gpu::PlanetGenerator generator(sphere, params);
+  const auto positions = generator.jitter().positions;
+  std::vector<Vector3<float>> queries;
+  for (const auto& direction : directions) {
+    queries.push_back({static_cast<float>(direction[0]), static_cast<float>(direction[1]), static_cast<float>(direction[2])});
+  }
+  const double margin = 0x1p-18 + 8.0 * std::sqrt(3.0) * (gpu_position_error() + float_position_error());
+  const auto misses = [&](const std::vector<std::int32_t>& labels, std::size_t& agreeing) {
+    std::size_t missed = 0;
+    agreeing = 0;
+    for (std::size_t index = 0; index < labels.size(); ++index) {
+      const auto& position = truth.regions.positions;
+      const std::size_t label = static_cast<std::size_t>(labels[index]);
+      const double distance = std::hypot(position[3 * label] - directions[index][0], position[3 * label + 1] - directions[index][1],
+                                         position[3 * label + 2] - directions[index][2]);
+      missed += distance * distance > nearest[index].distance * nearest[index].distance + margin ? 1 : 0;
+      agreeing += labels[index] == nearest[index].region ? 1 : 0;
+    }
+    return missed;
+  };
+  std::size_t agreeing = 0, agreeing_3x3 = 0;
+  const std::size_t missed = misses(gpu::PlanetVoronoi(sphere, 2).labels(positions, queries), agreeing);
+  const std::size_t missed_3x3 = misses(gpu::PlanetVoronoi(sphere, 1).labels(positions, queries), agreeing_3x3);
+  result.checks.push_back(bounded_check(
+      "parity.voronoi.gpu_vs_cpu", double(missed), 0.0, std::nullopt,
+      fmt::format("of {} map directions, those whose 5×5 cell-grid label (Algorithm 1) is farther than the exact "
+                  "nearest centroid (CGAL k-d tree) by more than {:.2g} in squared chord; {:.4f} % agree label for "
+                  "label (the rest are near-ties)",
+                  directions.size(), margin, 100.0 * double(agreeing) / double(directions.size()))));
+  result.checks.push_back(informative_check(
+      "voronoi.misses_3x3.gpu", double(missed_3x3) / double(directions.size()),
+      fmt::format("share of map directions the seed shader's 3×3 search gives a farther centroid than the nearest "
+                  "({} of {}); {:.4f} % agree label for label",
+                  missed_3x3, directions.size(), 100.0 * double(agreeing_3x3) / double(directions.size()))));
+}
+
 // ---- the Earth ------------------------------------------------------------------------------
 
 // Solid angle of a cell: its two triangles on the sphere (Van Oosterom & Strackee 1983).
@@ -489,20 +599,19 @@ void add_fidelity_checks(const CubeSphere& sphere, const Planet<double>& planet,
 
 // ---- pictures -------------------------------------------------------------------------------
 
-// The region under each pixel of an equirectangular map (row 0 at the north pole, +y; column 0 at
-// longitude −180°, the −z side; longitude 0 faces +z, the front face).
-std::vector<std::size_t> map_regions(const CubeSphere& sphere) {
-  std::vector<std::size_t> regions;
+// The directions of an equirectangular map's pixel centres, row-major: row 0 at the north pole (+y),
+// column 0 at longitude −180° (the −z side); longitude 0 faces +z (the front face).
+std::vector<Vector3<double>> map_directions() {
+  std::vector<Vector3<double>> directions;
   for (int row = 0; row < map_height; ++row) {
     const double latitude = std::numbers::pi / 2 - (row + 0.5) / map_height * std::numbers::pi;
     for (int column = 0; column < map_width; ++column) {
       const double longitude = (column + 0.5) / map_width * 2 * std::numbers::pi - std::numbers::pi;
-      const Vec3 direction{std::cos(latitude) * std::sin(longitude), std::sin(latitude),
-                           std::cos(latitude) * std::cos(longitude)};
-      regions.push_back(sphere.region_at(local_position_of(direction)).value_or(0));
+      directions.push_back({std::cos(latitude) * std::sin(longitude), std::sin(latitude),
+                            std::cos(latitude) * std::cos(longitude)});
     }
   }
-  return regions;
+  return directions;
 }
 
 // §4.3: base (107, 193, 255) below 0, (255, 189, 97) from 0, times (1 − |e|/4) clamped to [0, 1].
@@ -522,23 +631,48 @@ std::array<float, 3> plate_colour(const PlanetParams& params, std::int32_t plate
   return colour;
 }
 
-void write_maps(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& planet,
+// The cube map: the six faces side by side in index order (front, right, back, left, north, south),
+// each R×R cells row-major from its top-left as the regions are numbered: region i is pixel
+// (face·R + x, y). EXR/NPY elevation and a PNG in the elevation palette.
+void write_cube_map(const PlanetParams& params, const Planet<double>& planet, const RunOptions& options,
+                    CaseResult& result) {
+  const int resolution = params.resolution;
+  Grid<double> cube(cube_face_count * resolution, resolution);
+  std::vector<std::array<float, 3>> pixels(cube.values.size());
+  for (std::size_t region = 0; region < planet.elevation.smoothed.size(); ++region) {
+    const auto side = static_cast<std::size_t>(resolution);
+    const std::size_t face = region / (side * side), y = region / side % side, x = region % side;
+    const std::size_t pixel = y * cube_face_count * side + face * side + x;
+    cube.values[pixel] = planet.elevation.smoothed[region];
+    pixels[pixel] = elevation_colour(planet.elevation.smoothed[region]);
+  }
+  write_colour_image(cube.width, cube.height, pixels, options.report_dir / result.name / "elevation_cube.png");
+  result.artifacts.push_back({result.name + "/elevation_cube.png", "image",
+                              "cube map of the elevation: the faces front, right, back, left, north, south, a cell a pixel"});
+  write_field_files(cube,
+                    {"elevation_cube_cpu", "elevation", "cpu", "1",
+                     "elevation per region as a cube map: faces in index order side by side, each R×R row-major"},
+                    options, result);
+}
+
+// Pictures of the spherical Voronoi cells (the exact reference's nearest centroid per pixel).
+void write_maps(const PlanetParams& params, const Planet<double>& planet, const std::vector<reference::NearestSite>& nearest,
                 const RunOptions& options, CaseResult& result) {
   if (options.report_dir.empty()) return;
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
-  const auto regions = map_regions(sphere);
   std::vector<std::array<float, 3>> elevation_pixels, plate_pixels;
   Grid<double> elevation_map(map_width, map_height);
-  for (std::size_t pixel = 0; pixel < regions.size(); ++pixel) {
-    const std::size_t region = regions[pixel];
+  for (std::size_t pixel = 0; pixel < nearest.size(); ++pixel) {
+    const auto region = static_cast<std::size_t>(nearest[pixel].region);
     elevation_pixels.push_back(elevation_colour(planet.elevation.smoothed[region]));
     plate_pixels.push_back(plate_colour(params, planet.partition.plate[region], planet.partition.is_edge[region] != 0));
     elevation_map.values[pixel] = planet.elevation.smoothed[region];
   }
   write_colour_image(map_width, map_height, elevation_pixels, folder / "elevation.png");
   result.artifacts.push_back({result.name + "/elevation.png", "image",
-                              "elevation, ref<double>, equirectangular (§4.3 palette: blue below sea level, brown above)"});
+                              "elevation, ref<double>, equirectangular, each pixel its nearest centroid's region (§4.3 "
+                              "palette: blue below sea level, brown above)"});
   write_colour_image(map_width, map_height, plate_pixels, folder / "plates.png");
   result.artifacts.push_back({result.name + "/plates.png", "image",
                               fmt::format("the {} plates ({} rule), edge regions in full colour", params.plates,
@@ -547,6 +681,7 @@ void write_maps(const CubeSphere& sphere, const PlanetParams& params, const Plan
                     {"elevation_cpu", "elevation", "cpu", "1",
                      "elevation (sea level 0) of the region under each pixel of an equirectangular map, ref<double>"},
                     options, result);
+  write_cube_map(params, planet, options, result);
 }
 
 // ---- the case -------------------------------------------------------------------------------
@@ -565,24 +700,29 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
                                        plate_rule_name(params.plate_rule), smoothing_name(params.smoothing)));
   }
   add_topology_checks(sphere, result);
+  add_mesh_checks(sphere, result);
   if (options.progress) options.progress->stage("CPU reference (double)");
   Planet<double> planet;
   time_cpu(std::max(options.cpu_reps, 1), [&] { planet = generate<double>(sphere, params); }, result.timings);
   add_partition_checks(sphere, params, planet.partition, "cpu", result);
   add_expansion_rate_check(twins, result);
   add_smoothing_check(sphere, result);
+  add_pressure_symmetry_check(sphere, params, planet, result);
   const Planet<double> truth = uses_legacy(params) ? generate<double>(sphere, twins) : planet;
   add_legacy_checks(sphere, twins, truth, result);
   if (options.progress) options.progress->stage("CPU reference (float)");
   const Planet<float> single = generate<float>(sphere, twins);
   add_float_parity(sphere, twins, truth, single, result);
   add_fidelity_checks(sphere, planet, expect.is_object() && expect.value("earth_like", false), given, options, result);
-  write_maps(sphere, params, planet, options, result);
+  const auto directions = map_directions();
+  const auto nearest = reference::nearest_sites(planet.regions.positions, directions);
+  write_maps(params, planet, nearest, options, result);
   if (!options.gpu_available) {
     result.checks.push_back(skipped_check("parity.gpu", options.gpu_unavailable_reason));
     return;
   }
   add_gpu_checks(sphere, twins, truth, single, options, result);
+  add_voronoi_checks(sphere, truth, directions, nearest, twins, result);
 }
 
 PreparedTwin prepare_planet(const nlohmann::json& resolved, const LoadedInput& input) {
@@ -608,6 +748,88 @@ MemoryEstimate planet_memory(const nlohmann::json& resolved, const LoadedInput&)
   return memory_for(6.0 * resolution * resolution, "regions", 1000);
 }
 
+// ---- performance ----------------------------------------------------------------------------
+
+constexpr int benchmark_resolutions[] = {25, 50, 120, 300};
+
+BenchmarkRow planet_row(const std::string& algorithm, const std::string& backend, int resolution, int reps,
+                        const std::vector<double>& times, const std::string& device, const std::string& detail) {
+  BenchmarkRow row{.algorithm = algorithm, .backend = backend, .size = resolution, .iterations = 1, .reps = reps,
+                   .median_ms = median(times), .device = device, .dimensions = 2};
+  const double regions = 6.0 * resolution * resolution;
+  row.mcell_iterations_per_s = regions / (row.median_ms * 1e-3) / 1e6;
+  row.detail = fmt::format("R = {}: {:.0f} regions (the size column shows R×R, a face), 50 plates; {}", resolution,
+                           regions, detail);
+  return row;
+}
+
+// PlanetaryCreation's published figures (issue 13): its oceanic stage at 163,842 vertices on an
+// RTX 3080, GPU 10.9 ms and CPU 19.4 ms: other work, named beside ours for scale. 6·165² = 163,350.
+std::vector<BenchmarkRow> published_planet_rows() {
+  std::vector<BenchmarkRow> rows;
+  for (const auto& [backend_device, ms] : {std::pair{std::string("GPU, RTX 3080"), 10.9}, {std::string("CPU"), 19.4}}) {
+    BenchmarkRow row{.algorithm = "planet.earth_like", .backend = "published", .size = 165, .iterations = 1, .reps = 1,
+                     .median_ms = ms, .device = "PlanetaryCreation (" + backend_device + ")", .dimensions = 2};
+    row.mcell_iterations_per_s = 163842.0 / (ms * 1e-3) / 1e6;
+    row.detail = "its oceanic stage at 163,842 vertices, as published: other work than ours, named for scale";
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+void add_cpu_planet_rows(const PlanetParams& params, int reps, const Environment& environment,
+                         std::vector<BenchmarkRow>& rows) {
+  const CubeSphere sphere(params.resolution);
+  JitteredRegions<double> regions;
+  PlatePartition partition;
+  std::vector<double> jitter_times, plate_times, elevation_times;
+  for (int rep = 0; rep < reps; ++rep) {
+    jitter_times.push_back(cpu_wall_ms([&] { regions = reference::jitter_regions<double>(sphere, params); }));
+    plate_times.push_back(cpu_wall_ms([&] { partition = reference::grow_plates(sphere, params); }));
+    elevation_times.push_back(cpu_wall_ms([&] { reference::planet_elevation<double>(sphere, params, regions.positions, partition); }));
+  }
+  std::vector<double> totals;
+  for (int rep = 0; rep < reps; ++rep) totals.push_back(jitter_times[rep] + plate_times[rep] + elevation_times[rep]);
+  const int resolution = params.resolution;
+  rows.push_back(planet_row("planet.jitter", "cpu", resolution, reps, jitter_times, environment.cpu, "step 1, ref<double>"));
+  rows.push_back(planet_row("planet.plates", "cpu", resolution, reps, plate_times, environment.cpu,
+                            fmt::format("steps 2–3, synchronous rule, {} cycles", partition.cycles)));
+  rows.push_back(planet_row("planet.elevation", "cpu", resolution, reps, elevation_times, environment.cpu, "steps 4–9"));
+  rows.push_back(planet_row("planet.earth_like", "cpu", resolution, reps, totals, environment.cpu, "steps 1–9"));
+}
+
+void add_gpu_planet_rows(const PlanetParams& params, int reps, const Environment& environment,
+                         std::vector<BenchmarkRow>& rows) {
+  gpu::PlanetGenerator generator(CubeSphere(params.resolution), params);
+  generator.run();
+  std::vector<double> jitter_times, plate_times, elevation_times, totals;
+  for (int rep = 0; rep < reps; ++rep) {
+    jitter_times.push_back(gpu_wall_ms([&] { generator.run_jitter(); }));
+    plate_times.push_back(gpu_wall_ms([&] { generator.run_plate_growth(); }));
+    elevation_times.push_back(gpu_wall_ms([&] { generator.run_elevation(); }));
+    totals.push_back(gpu_wall_ms([&] { generator.run(); }));
+  }
+  const int resolution = params.resolution;
+  const std::string& device = environment.gl_renderer;
+  rows.push_back(planet_row("planet.jitter", "gpu", resolution, reps, jitter_times, device, "step 1"));
+  rows.push_back(planet_row("planet.plates", "gpu", resolution, reps, plate_times, device,
+                            "steps 2–3: one dispatch per sub-step and a 4-byte counter read per cycle"));
+  rows.push_back(planet_row("planet.elevation", "gpu", resolution, reps, elevation_times, device, "steps 4–9"));
+  rows.push_back(planet_row("planet.earth_like", "gpu", resolution, reps, totals, device, "steps 1–9, run()"));
+}
+
+std::vector<BenchmarkRow> benchmark_planet(const BenchmarkOptions& options, bool gpu_available,
+                                           const Environment& environment) {
+  std::vector<BenchmarkRow> rows = published_planet_rows();
+  for (const int resolution : benchmark_resolutions) {
+    PlanetParams params;
+    params.resolution = resolution;
+    add_cpu_planet_rows(params, options.reps, environment, rows);
+    if (gpu_available) add_gpu_planet_rows(params, options.reps, environment, rows);
+  }
+  return rows;
+}
+
 }  // namespace
 
 Algorithm planet_algorithm() {
@@ -619,6 +841,7 @@ Algorithm planet_algorithm() {
           .iterates = false,
           .has_field_twin = false,
           .ad_hoc_input = AdHocInput::optional_global_grid,
+          .benchmark = benchmark_planet,
           .expect_shape = {{"earth_like", true}},
           .memory = planet_memory};
 }

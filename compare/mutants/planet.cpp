@@ -3,12 +3,14 @@
 //
 // one_twin: bugs in the GPU shaders only, killed by the parity checks: parity.offsets.gpu_vs_float
 // (any bit), parity.plates.gpu_vs_cpu (any region), parity.collision.gpu_vs_float (a sign flips a
-// pressure term, far beyond the error model's per-region bound).
+// pressure term, far beyond the error model's per-region bound), parity.voronoi.gpu_vs_cpu (a label
+// farther than the exact nearest centroid).
 //
 // both_twins: the same bug in the reference and the shader (or in the cube sphere both share),
 // killed by checks against what was asked: spec.expansion_rate.cpu (rings per cycle average to the
-// rate), spec.smoothing_constant.cpu (the mean of a constant), topology.* (neighbour counts and
-// symmetry of the shared table).
+// rate), spec.smoothing_constant.cpu (the mean of a constant), spec.pressure_symmetry.cpu (the
+// pressure of a pair both ways), topology.* (neighbour counts and symmetry of the shared table),
+// mesh.*.planet (the planet mesh's orientation).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -25,8 +27,16 @@ std::vector<Mutant> planet_mutants() {
        "elevation_collision.comp projects the neighbour's chord on d instead of −d", probe},
       {"planet.plates.ceil_rate", MutantKind::both_twins,
        "both twins grow ceil(rate) rings a cycle (the extra ring's draw can never win)", probe},
+      {"planet.collision.neighbour_sign", MutantKind::both_twins,
+       "both twins project the neighbour's chord on d instead of −d in the code's pressure", probe},
       {"planet.smoothing.count_without_self", MutantKind::both_twins,
        "both twins' Jacobi mean sums the region but divides by its neighbours' count only", probe},
+      {"planet.mesh.flipped_front_face", MutantKind::both_twins,
+       "the planet mesh winds the front face's triangles clockwise, against the other five faces", probe},
+      {"planet.voronoi.gpu_cell_centres", MutantKind::one_twin,
+       "voronoi.comp measures distances to each cell's centre (Algorithm 1's massCenterOfCell) instead of the "
+       "region's jittered centroid",
+       probe},
       {"planet.cube_sphere.no_wrap", MutantKind::both_twins,
        "the shared neighbour table leaves out neighbours across the cube's edges", probe},
   };

@@ -20,7 +20,8 @@ Enum choice_of(const nlohmann::json& resolved, const char* key, const std::pair<
 }
 
 constexpr std::pair<const char*, PlateRule> plate_rules[] = {{"synchronous", PlateRule::synchronous},
-                                                             {"legacy", PlateRule::legacy}};
+                                                             {"legacy", PlateRule::legacy},
+                                                             {"legacy_random", PlateRule::legacy_random}};
 constexpr std::pair<const char*, PlateCentre> centres[] = {{"mean", PlateCentre::mean},
                                                            {"edge_sum", PlateCentre::edge_sum}};
 constexpr std::pair<const char*, PressureFormula> pressures[] = {{"code", PressureFormula::code},
@@ -32,7 +33,12 @@ constexpr std::pair<const char*, Smoothing> smoothings[] = {
 
 }  // namespace
 
-const char* plate_rule_name(PlateRule rule) { return rule == PlateRule::legacy ? "legacy" : "synchronous"; }
+const char* plate_rule_name(PlateRule rule) {
+  for (const auto& [name, value] : plate_rules) {
+    if (value == rule) return name;
+  }
+  return "?";
+}
 
 const char* smoothing_name(Smoothing smoothing) {
   for (const auto& [name, value] : smoothings) {
@@ -58,9 +64,9 @@ const ParamSpecs& planet_param_specs() {
       {"plates", ParamKind::integer, 50, 1, 500, {}, "count", "plateNumber: at most 6R²"},
       {"expansion_range", ParamKind::real, 0.5, 0.0, 5.0, {}, "1",
        "e: plate rates uniform in [max(0, 1 − e), 1 + e] rings per cycle (the code's formula)"},
-      {"plate_rule", ParamKind::choice, "synchronous", 0, 0, {"synchronous", "legacy"}, "",
-       "synchronous ring-BFS with the lowest-index rule (both twins), or the seed code's sequential first-come fill "
-       "(CPU only)"},
+      {"plate_rule", ParamKind::choice, "synchronous", 0, 0, {"synchronous", "legacy", "legacy_random"}, "",
+       "synchronous ring-BFS with the lowest-index rule (both twins), the seed code's sequential first-come fill "
+       "(CPU only), or its random-driven variant: one random plate per pick (CPU only)"},
       {"centre", ParamKind::choice, "mean", 0, 0, {"mean", "edge_sum"}, "",
        "plate centre: normalised mean of all members (thesis) or of the edge members (code)"},
       {"elevation_range", ParamKind::real, 0.8, 0.0, 1.0, {}, "1", "e_r: plate base elevations uniform in [−e_r, e_r]"},

@@ -29,6 +29,9 @@
 //      `random > rate` test after the loop is always true, erratum 10), stopping early when an
 //      expand adds nothing; expand() as §4.4.2 (edge list in insertion order, neighbours in table
 //      order, first come first served). Stops after a cycle in which no plate grew.
+//    Legacy random-driven rule (CPU only, the code's randomDriven): pick t = 0, 1, ... expands plate
+//      random_u32(seed, t, 0, random_driven) % P by stepExpandPlate; stops when every plate has
+//      finished (an expand that added nothing). `cycles` counts the picks.
 // 3. Edge regions: is_edge(i) = some valid neighbour has another plate.
 // 4. Plate centre c_k: `mean` (thesis): normalise(Σ pos over members); `edge_sum` (code):
 //    normalise(Σ pos over edge members). A zero sum gives c_k = 0. The sum is accumulated well
@@ -73,7 +76,7 @@
 
 namespace gt {
 
-enum class PlateRule { synchronous, legacy };
+enum class PlateRule { synchronous, legacy, legacy_random };
 enum class PlateCentre { mean, edge_sum };
 enum class PressureFormula { code, thesis };
 enum class Smoothing { jacobi, legacy, off };
@@ -87,6 +90,7 @@ enum PlanetStream : std::uint32_t {
   planet_stream_expansion = 0x706c0004u,
   planet_stream_shift = 0x706c0005u,
   planet_stream_elevation = 0x706c0006u,
+  planet_stream_random_driven = 0x706c0007u,
 };
 
 inline constexpr int plate_seed_attempts = 64;

@@ -84,9 +84,10 @@ enum Binding : GLuint {
 
 // params, once checked: what the GPU twin cannot run is refused.
 const PlanetParams& supported(const CubeSphere& sphere, const PlanetParams& params) {
-  if (params.plate_rule == PlateRule::legacy) {
-    throw InputError("planet on the GPU: plate_rule 'legacy' (the seed code's sequential fill) is CPU only; "
-                     "use 'synchronous'");
+  if (params.plate_rule != PlateRule::synchronous) {
+    throw InputError(fmt::format("planet on the GPU: plate_rule '{}' (the seed code's sequential fill) is CPU only; "
+                                 "use 'synchronous'",
+                                 plate_rule_name(params.plate_rule)));
   }
   if (params.smoothing == Smoothing::legacy) {
     throw InputError("planet on the GPU: smoothing 'legacy' (the seed code's in-place blend) is CPU only; "

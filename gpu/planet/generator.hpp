@@ -48,6 +48,11 @@ class PlanetGenerator {
   PlanetElevation<float> elevation(const std::vector<float>& positions, const PlatePartition& partition);
 
   void run();
+  // The steps of run() one at a time (for timing each; each needs the ones before it to have run):
+  // step 1, steps 2–3 (reads one counter per cycle), steps 4–9.
+  void run_jitter() const;
+  void run_plate_growth();
+  void run_elevation() const;
   PlanetElevation<float> elevation_result() const;
   PlatePartition partition_result() const;
 
@@ -60,10 +65,7 @@ class PlanetGenerator {
   void bind_buffers() const;
   void dispatch_regions(const ComputeProgram& program) const;
   void dispatch_plates(const ComputeProgram& program) const;
-  void run_jitter() const;
-  void run_plate_growth();
   void run_growth_cycle(int cycle);
-  void run_elevation() const;
 
   PlanetParams params_;
   int region_count_;

@@ -197,8 +197,10 @@ Real pressure(PressureFormula formula, const Vector3<Real>& position, const Vect
   const Vector3<Real> direction = normalised3(minus(neighbour_position, position));
   const Vector3<Real> velocity = minus(normalised3(plus(position, shift)), position);
   const Vector3<Real> neighbour_velocity = minus(normalised3(plus(neighbour_position, neighbour_shift)), neighbour_position);
+  // Mutant planet.collision.neighbour_sign (both twins): the neighbour's chord projected on d, not −d.
+  const Real neighbour_sign = mutant_active("planet.collision.neighbour_sign") ? Real(1) : Real(-1);
   return length3(shift) * dot3(velocity, direction) +
-         length3(neighbour_shift) * dot3(neighbour_velocity, scaled(direction, Real(-1)));
+         length3(neighbour_shift) * dot3(neighbour_velocity, scaled(direction, neighbour_sign));
 }
 
 template <class Real>

@@ -113,13 +113,35 @@ bool step_legacy(const CubeSphere& sphere, std::int32_t index, float rate, Legac
   return expand_legacy(sphere, index, plate, plate_of) || grew;
 }
 
+std::vector<LegacyPlate> legacy_plates(const PlanetParams& params) {
+  std::vector<LegacyPlate> plates(static_cast<std::size_t>(params.plates));
+  const auto seeds = plate_seeds(params);
+  for (std::size_t index = 0; index < seeds.size(); ++index) plates[index].edge = {seeds[index]};
+  return plates;
+}
+
+// randomDriven: one random plate per pick until every plate has finished.
+PlatePartition grow_legacy_random(const CubeSphere& sphere, const PlanetParams& params) {
+  PlatePartition partition;
+  partition.plate = seeded_plates(params);
+  const auto rates = plate_rates(params);
+  auto plates = legacy_plates(params);
+  const auto all_finished = [&] {
+    return std::all_of(plates.begin(), plates.end(), [](const LegacyPlate& plate) { return plate.finished; });
+  };
+  for (; !all_finished(); ++partition.cycles) {
+    const std::size_t index = random_u32(params.seed, static_cast<std::uint32_t>(partition.cycles), 0,
+                                         planet_stream_random_driven) % plates.size();
+    step_legacy(sphere, static_cast<std::int32_t>(index), rates[index], plates[index], partition.plate);
+  }
+  return partition;
+}
+
 PlatePartition grow_legacy(const CubeSphere& sphere, const PlanetParams& params) {
   PlatePartition partition;
   partition.plate = seeded_plates(params);
   const auto rates = plate_rates(params);
-  std::vector<LegacyPlate> plates(rates.size());
-  const auto seeds = plate_seeds(params);
-  for (std::size_t index = 0; index < seeds.size(); ++index) plates[index].edge = {seeds[index]};
+  auto plates = legacy_plates(params);
   for (bool grew = true; grew;) {
     grew = false;
     for (std::size_t index = 0; index < plates.size(); ++index) {
@@ -169,8 +191,9 @@ int plate_expansions(const PlanetParams& params, const std::vector<float>& rates
 }
 
 PlatePartition grow_plates(const CubeSphere& sphere, const PlanetParams& params) {
-  PlatePartition partition =
-      params.plate_rule == PlateRule::legacy ? grow_legacy(sphere, params) : grow_synchronously(sphere, params);
+  PlatePartition partition = params.plate_rule == PlateRule::legacy          ? grow_legacy(sphere, params)
+                             : params.plate_rule == PlateRule::legacy_random ? grow_legacy_random(sphere, params)
+                                                                             : grow_synchronously(sphere, params);
   partition.is_edge = edge_regions(sphere, partition.plate);
   return partition;
 }

@@ -46,8 +46,9 @@ vec3 chord(vec3 p, vec3 shift) {
 float pressure(vec3 p, vec3 shift_p, vec3 q, vec3 shift_q) {
   precise vec3 difference = q - p;
   vec3 direction = normalise(difference);
-#ifdef GT_MUTANT_PLANET_COLLISION_GPU_NEIGHBOUR_SIGN
-  // mutant (this twin alone): the neighbour's chord projected on d instead of −d
+#if defined(GT_MUTANT_PLANET_COLLISION_GPU_NEIGHBOUR_SIGN) || defined(GT_MUTANT_PLANET_COLLISION_NEIGHBOUR_SIGN)
+  // mutants GPU_NEIGHBOUR_SIGN (this twin alone) and NEIGHBOUR_SIGN (both twins): the neighbour's
+  // chord projected on d instead of −d
   precise float value = magnitude(shift_p) * dot3(chord(p, shift_p), direction) +
                         magnitude(shift_q) * dot3(chord(q, shift_q), direction);
 #else

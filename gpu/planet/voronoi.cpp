@@ -1,0 +1,91 @@
+// The GPU spherical Voronoi; see voronoi.hpp.
+#include "gpu/planet/voronoi.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include <cstddef>
+
+namespace gt::gpu {
+namespace {
+
+// Mirror of VoronoiBlock in voronoi.comp (std140).
+struct VoronoiBlock {
+  std::int32_t face_rows[18][4];
+  std::int32_t resolution;
+  std::int32_t direction_count;
+  float warp_angle;
+  float tan_warp_angle;
+};
+static_assert(offsetof(VoronoiBlock, resolution) == 288);
+static_assert(sizeof(VoronoiBlock) == 304);
+
+constexpr int local_size = 64;
+
+ComputeProgram voronoi_program(int rings) {
+  if (rings < 1 || rings > 2) throw std::invalid_argument(fmt::format("Voronoi search of {} rings: 1 or 2", rings));
+  return ComputeProgram::load("planet/voronoi.comp", {fmt::format("SEARCH_RINGS={}", rings)});
+}
+
+StorageBuffer neighbour_table(const CubeSphere& sphere) {
+  std::vector<std::int32_t> table;
+  table.reserve(8 * sphere.region_count());
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    for (const std::int32_t neighbour : sphere.neighbours(region)) table.push_back(neighbour);
+  }
+  return StorageBuffer::from(table);
+}
+
+// x, y, z per item -> x, y, z, 0 per item (std430 vec4).
+std::vector<float> padded_xyz(const std::vector<float>& xyz) {
+  std::vector<float> result(xyz.size() / 3 * 4, 0.0f);
+  for (std::size_t item = 0; item < xyz.size() / 3; ++item) {
+    for (std::size_t axis = 0; axis < 3; ++axis) result[4 * item + axis] = xyz[3 * item + axis];
+  }
+  return result;
+}
+
+}  // namespace
+
+PlanetVoronoi::PlanetVoronoi(const CubeSphere& sphere, int rings)
+    : resolution_(sphere.resolution()),
+      region_count_(sphere.region_count()),
+      program_(voronoi_program(rings)),
+      neighbours_(neighbour_table(sphere)) {}
+
+std::vector<std::int32_t> PlanetVoronoi::labels(const std::vector<float>& positions,
+                                                const std::vector<Vector3<float>>& directions) {
+  if (positions.size() != 3 * region_count_) {
+    throw std::invalid_argument(fmt::format("Voronoi: {} position values for {} regions", positions.size(), region_count_));
+  }
+  if (directions.empty()) return {};
+  VoronoiBlock block{};
+  for (int face = 0; face < cube_face_count; ++face) {
+    const FaceMatrix& matrix = face_matrix(static_cast<CubeFace>(face));
+    for (int row = 0; row < 3; ++row) {
+      for (int column = 0; column < 3; ++column) block.face_rows[3 * face + row][column] = matrix[row][column];
+    }
+  }
+  block.resolution = resolution_;
+  block.direction_count = static_cast<std::int32_t>(directions.size());
+  block.warp_angle = static_cast<float>(warp_angle);
+  block.tan_warp_angle = static_cast<float>(std::tan(warp_angle));
+  const auto uniforms = UniformBuffer::from(block);
+  std::vector<float> direction_values;
+  for (const auto& direction : directions) direction_values.insert(direction_values.end(), direction.begin(), direction.end());
+  const auto position_buffer = StorageBuffer::from(padded_xyz(positions));
+  const auto direction_buffer = StorageBuffer::from(padded_xyz(direction_values));
+  StorageBuffer label_buffer(directions.size() * sizeof(std::int32_t));
+  uniforms.bind(0);
+  neighbours_.bind(0);
+  position_buffer.bind(1);
+  direction_buffer.bind(2);
+  label_buffer.bind(3);
+  program_.dispatch(static_cast<int>(directions.size()), 1, local_size, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  return label_buffer.download<std::int32_t>(directions.size());
+}
+
+}  // namespace gt::gpu

@@ -1,0 +1,35 @@
+// The spherical Voronoi of seed 002's region centroids on the GPU (digest 002 §2.8, Algorithm 1):
+// for each query direction, the nearest centroid among the 3×3 (rings = 1, the seed's shader) or
+// 5×5 (rings = 2, its thesis) block of cells around the cell holding the direction, through the
+// cube sphere's neighbour table. Twin of reference/planet/voronoi.hpp (exact, by k-d tree).
+// Shader: gpu/shaders/planet/voronoi.comp. Needs a current GlContext.
+//
+// PlanetVoronoi(sphere, rings) compiles the pass and uploads the neighbour table;
+// labels(positions, directions) uploads positions (3 per region, unit length) and directions and
+// returns one region per direction. Throws std::invalid_argument for rings outside 1..2 or
+// positions of the wrong size.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/planet/cube_sphere.hpp"
+#include "core/planet/planet_state.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/shader_program.hpp"
+
+namespace gt::gpu {
+
+class PlanetVoronoi {
+ public:
+  PlanetVoronoi(const CubeSphere& sphere, int rings);
+  std::vector<std::int32_t> labels(const std::vector<float>& positions, const std::vector<Vector3<float>>& directions);
+
+ private:
+  int resolution_;
+  std::size_t region_count_;
+  ComputeProgram program_;
+  StorageBuffer neighbours_;
+};
+
+}  // namespace gt::gpu

@@ -1,0 +1,28 @@
+// Spherical Voronoi of the region centroids (digest 002 §2.8, §9.3 step 11), CPU reference: for each
+// direction, the region whose centroid is nearest, exactly (up to double rounding of the
+// distances), by CGAL's k-d tree (dD Spatial Searching, exact with ε = 0). On the unit sphere the
+// nearest centroid in Euclidean (chord) distance is the nearest in great-circle distance, so the
+// 3-D search answers the spherical question. GPU twin: gpu/shaders/planet/voronoi.comp, which
+// searches the cell grid as Algorithm 1 does.
+//
+// nearest_sites(positions, directions) -> per direction: the nearest region, its chord distance
+// and the second-nearest distance (a tie when they are equal within rounding).
+// Inputs: positions 3 per region (unit length), directions of unit length. Units: chord lengths.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/planet/planet_state.hpp"
+
+namespace gt::reference {
+
+struct NearestSite {
+  std::int32_t region = -1;
+  double distance = 0.0;
+  double second_distance = 0.0;  // +inf with a single region
+};
+
+std::vector<NearestSite> nearest_sites(const std::vector<double>& positions, const std::vector<Vector3<double>>& directions);
+
+}  // namespace gt::reference
