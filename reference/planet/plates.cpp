@@ -38,29 +38,51 @@ std::int32_t lowest_active_plate(const CubeSphere& sphere, const std::vector<std
   return lowest == INT32_MAX ? invalid_region : lowest;
 }
 
+// The unassigned neighbours of `regions` not yet on the frontier, appended to it.
+void extend_frontier(const CubeSphere& sphere, const std::vector<std::int32_t>& plate,
+                     const std::vector<std::size_t>& regions, std::vector<std::uint8_t>& on_frontier,
+                     std::vector<std::size_t>& frontier) {
+  for (const std::size_t region : regions) {
+    for (const std::int32_t neighbour : sphere.neighbours(region)) {
+      if (neighbour == invalid_region || plate[neighbour] != invalid_region || on_frontier[neighbour]) continue;
+      on_frontier[neighbour] = 1;
+      frontier.push_back(static_cast<std::size_t>(neighbour));
+    }
+  }
+}
+
+// Only unassigned regions next to a plate can be claimed: each sub-step visits that frontier, not
+// every unassigned region, so the fill costs O(N + Σ frontier) rather than O(N · cycles).
 PlatePartition grow_synchronously(const CubeSphere& sphere, const PlanetParams& params) {
   PlatePartition partition;
   partition.plate = seeded_plates(params);
   const auto rates = plate_rates(params);
   const int max_expansions = plate_rate_bounds(params).max_expansions;
-  std::vector<std::size_t> unassigned;
-  for (std::size_t region = 0; region < partition.plate.size(); ++region) {
-    if (partition.plate[region] == invalid_region) unassigned.push_back(region);
-  }
+  std::size_t unassigned = partition.plate.size() - static_cast<std::size_t>(params.plates);
+  std::vector<std::uint8_t> on_frontier(partition.plate.size(), 0);
+  std::vector<std::size_t> frontier, claimed;
+  const auto seeds = plate_seeds(params);
+  extend_frontier(sphere, partition.plate, std::vector<std::size_t>(seeds.begin(), seeds.end()), on_frontier, frontier);
   std::vector<int> expansions(rates.size());
   std::vector<std::pair<std::size_t, std::int32_t>> claims;
-  for (; !unassigned.empty(); ++partition.cycles) {
+  for (; unassigned > 0; ++partition.cycles) {
     for (int plate = 0; plate < params.plates; ++plate) {
       expansions[plate] = plate_expansions(params, rates, plate, partition.cycles);
     }
-    for (int substep = 0; substep < max_expansions && !unassigned.empty(); ++substep) {
+    for (int substep = 0; substep < max_expansions && unassigned > 0; ++substep) {
       claims.clear();
-      for (const std::size_t region : unassigned) {
+      for (const std::size_t region : frontier) {
         const std::int32_t owner = lowest_active_plate(sphere, partition.plate, expansions, region, substep);
         if (owner != invalid_region) claims.emplace_back(region, owner);
       }
-      for (const auto& [region, owner] : claims) partition.plate[region] = owner;
-      std::erase_if(unassigned, [&](std::size_t region) { return partition.plate[region] != invalid_region; });
+      claimed.clear();
+      for (const auto& [region, owner] : claims) {
+        partition.plate[region] = owner;
+        claimed.push_back(region);
+      }
+      unassigned -= claims.size();
+      std::erase_if(frontier, [&](std::size_t region) { return partition.plate[region] != invalid_region; });
+      extend_frontier(sphere, partition.plate, claimed, on_frontier, frontier);
     }
   }
   return partition;
