@@ -116,6 +116,13 @@ CubeSphere::CubeSphere(int resolution) : resolution_(resolution) {
   }
 }
 
+std::vector<std::int32_t> CubeSphere::neighbour_table() const {
+  std::vector<std::int32_t> table;
+  table.reserve(8 * neighbours_.size());
+  for (const auto& around : neighbours_) table.insert(table.end(), around.begin(), around.end());
+  return table;
+}
+
 LocalPosition CubeSphere::local_position(std::size_t region, double offset_a, double offset_b) const {
   const auto side = static_cast<std::size_t>(resolution_);
   const std::size_t per_face = side * side;

@@ -82,6 +82,8 @@ class CubeSphere {
   // corner.
   std::optional<std::size_t> region_at(const LocalPosition& local) const;
   const RegionNeighbours& neighbours(std::size_t region) const { return neighbours_[region]; }
+  // The whole table flat, 8 entries per region in region order: what the shaders receive (§9.1).
+  std::vector<std::int32_t> neighbour_table() const;
 
  private:
   std::optional<std::size_t> region_on_face(const LocalPosition& local) const;

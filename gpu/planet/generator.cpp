@@ -154,15 +154,6 @@ UniformBuffer block_buffer(const PlanetParams& params) {
   return UniformBuffer::from(block);
 }
 
-StorageBuffer neighbour_buffer(const CubeSphere& sphere) {
-  std::vector<std::int32_t> table;
-  table.reserve(8 * sphere.region_count());
-  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
-    for (const std::int32_t neighbour : sphere.neighbours(region)) table.push_back(neighbour);
-  }
-  return StorageBuffer::from(table);
-}
-
 std::size_t region_bytes(const PlanetParams& params, std::size_t per_region) {
   return static_cast<std::size_t>(params.region_count()) * per_region;
 }
@@ -199,7 +190,7 @@ PlanetGenerator::PlanetGenerator(const CubeSphere& sphere, const PlanetParams& p
                 planet_program("plate_motion", params),     planet_program("elevation_noise", params),
                 planet_program("elevation_collision", params), planet_program("elevation_smooth", params)},
       block_(block_buffer(params)),
-      neighbours_(neighbour_buffer(sphere)),
+      neighbours_(StorageBuffer::from(sphere.neighbour_table())),
       offsets_(region_bytes(params, 2 * sizeof(float))),
       positions_(region_bytes(params, 4 * sizeof(float))),
       plate_buffers_{StorageBuffer(region_bytes(params, sizeof(std::int32_t))),

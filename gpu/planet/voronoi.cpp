@@ -29,15 +29,6 @@ ComputeProgram voronoi_program(int rings) {
   return ComputeProgram::load("planet/voronoi.comp", {fmt::format("SEARCH_RINGS={}", rings)});
 }
 
-StorageBuffer neighbour_table(const CubeSphere& sphere) {
-  std::vector<std::int32_t> table;
-  table.reserve(8 * sphere.region_count());
-  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
-    for (const std::int32_t neighbour : sphere.neighbours(region)) table.push_back(neighbour);
-  }
-  return StorageBuffer::from(table);
-}
-
 // x, y, z per item -> x, y, z, 0 per item (std430 vec4).
 std::vector<float> padded_xyz(const std::vector<float>& xyz) {
   std::vector<float> result(xyz.size() / 3 * 4, 0.0f);
@@ -53,7 +44,7 @@ PlanetVoronoi::PlanetVoronoi(const CubeSphere& sphere, int rings)
     : resolution_(sphere.resolution()),
       region_count_(sphere.region_count()),
       program_(voronoi_program(rings)),
-      neighbours_(neighbour_table(sphere)) {}
+      neighbours_(StorageBuffer::from(sphere.neighbour_table())) {}
 
 std::vector<std::int32_t> PlanetVoronoi::labels(const std::vector<float>& positions,
                                                 const std::vector<Vector3<float>>& directions) {

@@ -135,43 +135,45 @@ bool step_legacy(const CubeSphere& sphere, std::int32_t index, float rate, Legac
   return expand_legacy(sphere, index, plate, plate_of) || grew;
 }
 
-std::vector<LegacyPlate> legacy_plates(const PlanetParams& params) {
-  std::vector<LegacyPlate> plates(static_cast<std::size_t>(params.plates));
-  const auto seeds = plate_seeds(params);
-  for (std::size_t index = 0; index < seeds.size(); ++index) plates[index].edge = {seeds[index]};
-  return plates;
-}
+// The state of the seed code's fill: the partition, the rates and each plate's edge list.
+struct LegacyFill {
+  PlatePartition partition;
+  std::vector<float> rates;
+  std::vector<LegacyPlate> plates;
+
+  explicit LegacyFill(const PlanetParams& params) : rates(plate_rates(params)), plates(rates.size()) {
+    partition.plate = seeded_plates(params);
+    const auto seeds = plate_seeds(params);
+    for (std::size_t index = 0; index < seeds.size(); ++index) plates[index].edge = {seeds[index]};
+  }
+  // stepExpandPlate of plate `index`; whether it grew.
+  bool step(const CubeSphere& sphere, std::size_t index) {
+    return step_legacy(sphere, static_cast<std::int32_t>(index), rates[index], plates[index], partition.plate);
+  }
+};
 
 // randomDriven: one random plate per pick until every plate has finished.
 PlatePartition grow_legacy_random(const CubeSphere& sphere, const PlanetParams& params) {
-  PlatePartition partition;
-  partition.plate = seeded_plates(params);
-  const auto rates = plate_rates(params);
-  auto plates = legacy_plates(params);
+  LegacyFill fill(params);
   const auto all_finished = [&] {
-    return std::all_of(plates.begin(), plates.end(), [](const LegacyPlate& plate) { return plate.finished; });
+    return std::all_of(fill.plates.begin(), fill.plates.end(), [](const LegacyPlate& plate) { return plate.finished; });
   };
-  for (; !all_finished(); ++partition.cycles) {
-    const std::size_t index = random_u32(params.seed, static_cast<std::uint32_t>(partition.cycles), 0,
-                                         planet_stream_random_driven) % plates.size();
-    step_legacy(sphere, static_cast<std::int32_t>(index), rates[index], plates[index], partition.plate);
+  for (; !all_finished(); ++fill.partition.cycles) {
+    fill.step(sphere, random_u32(params.seed, static_cast<std::uint32_t>(fill.partition.cycles), 0,
+                                 planet_stream_random_driven) % fill.plates.size());
   }
-  return partition;
+  return fill.partition;
 }
 
+// Even mode: every plate in index order each cycle, until a cycle in which none grew.
 PlatePartition grow_legacy(const CubeSphere& sphere, const PlanetParams& params) {
-  PlatePartition partition;
-  partition.plate = seeded_plates(params);
-  const auto rates = plate_rates(params);
-  auto plates = legacy_plates(params);
+  LegacyFill fill(params);
   for (bool grew = true; grew;) {
     grew = false;
-    for (std::size_t index = 0; index < plates.size(); ++index) {
-      grew = step_legacy(sphere, static_cast<std::int32_t>(index), rates[index], plates[index], partition.plate) || grew;
-    }
-    if (grew) ++partition.cycles;
+    for (std::size_t index = 0; index < fill.plates.size(); ++index) grew = fill.step(sphere, index) || grew;
+    if (grew) ++fill.partition.cycles;
   }
-  return partition;
+  return fill.partition;
 }
 
 }  // namespace
