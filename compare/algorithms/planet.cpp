@@ -42,10 +42,10 @@
 //                             land share within 0.1 of the Earth's 0.290 (ETOPO 1°, data-sources.md),
 //                             Sarle's bimodality coefficient above 5/9; `warn` when not met
 //   fidelity.*                informative otherwise, with the mean and range
-// Pictures (equirectangular, 512 x 256, each pixel the region whose cell holds its direction): the
-// elevation palette (§4.3), the plates (edges in the plate's colour, interiors mixed with white),
-// the GPU's difference; the hypsometric curves and histograms of the planet and the Earth; the
-// elevation map as EXR/NPY fields.
+// Pictures (equirectangular, 512 x 256, each pixel the region of the exact nearest centroid): the
+// elevation palette (§4.3), the plates (edges in the plate's colour, interiors mixed with white), the
+// Voronoi cells with their borders; the elevation as a cube map; the hypsometric curves and
+// histograms of the planet and the Earth; both elevation maps as EXR/NPY fields.
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -203,9 +203,16 @@ void add_partition_checks(const CubeSphere& sphere, const PlanetParams& params, 
       ++members[plate];
     }
   }
-  const auto edges = reference::edge_regions(sphere, partition.plate);
+  // The definition written out here, apart from reference::edge_regions, so that the CPU's flags are
+  // checked too.
   std::size_t wrong_edges = 0;
-  for (std::size_t region = 0; region < edges.size(); ++region) wrong_edges += edges[region] == partition.is_edge[region] ? 0 : 1;
+  for (std::size_t region = 0; region < partition.plate.size(); ++region) {
+    const auto& around = sphere.neighbours(region);
+    const bool bordered = std::any_of(around.begin(), around.end(), [&](std::int32_t neighbour) {
+      return neighbour != invalid_region && partition.plate[neighbour] != partition.plate[region];
+    });
+    wrong_edges += bordered == (partition.is_edge[region] != 0) ? 0 : 1;
+  }
   const auto empty = static_cast<std::size_t>(std::count(members.begin(), members.end(), std::size_t{0}));
   result.checks.push_back(bounded_check("partition.unassigned." + backend, double(unassigned), 0.0, std::nullopt,
                                         fmt::format("regions without a plate in 0..{} (of {})", params.plates - 1,
@@ -252,7 +259,7 @@ void add_smoothing_check(const CubeSphere& sphere, CaseResult& result) {
 
 // Both pressure formulas are symmetric bit for bit: normalise(−x) = −normalise(x) and the two terms
 // swap places in a commutative addition (core/params/planet.hpp). Every pair of neighbouring regions
-// on different plates, both ways.
+// on different plates, once, both ways.
 void add_pressure_symmetry_check(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& planet,
                                  CaseResult& result) {
   const auto& positions = planet.regions.positions;
@@ -264,7 +271,7 @@ void add_pressure_symmetry_check(const CubeSphere& sphere, const PlanetParams& p
   std::size_t asymmetric = 0, pairs = 0;
   for (std::size_t region = 0; region < plate.size(); ++region) {
     for (const std::int32_t neighbour : sphere.neighbours(region)) {
-      if (neighbour == invalid_region || plate[neighbour] == plate[region]) continue;
+      if (neighbour == invalid_region || std::size_t(neighbour) < region || plate[neighbour] == plate[region]) continue;
       ++pairs;
       const double forward = reference::pressure(params.pressure, position(region), shift[plate[region]],
                                                  position(neighbour), shift[plate[neighbour]]);
@@ -274,8 +281,8 @@ void add_pressure_symmetry_check(const CubeSphere& sphere, const PlanetParams& p
     }
   }
   result.checks.push_back(bounded_check("spec.pressure_symmetry.cpu", double(asymmetric), 0.0, std::nullopt,
-                                        fmt::format("directed pairs of {} across plate borders whose pressure differs "
-                                                    "from the reverse pair's in any bit",
+                                        fmt::format("pairs of neighbours on different plates (of {}) whose pressure "
+                                                    "differs from the reverse pair's in any bit",
                                                     pairs)));
 }
 
@@ -393,8 +400,9 @@ void add_float_parity(const CubeSphere& sphere, const PlanetParams& params, cons
                        {float_position_error(), 0x1p-24}, "float_vs_double", result);
 }
 
-void add_gpu_checks(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& truth,
-                    const Planet<float>& single, const RunOptions& options, CaseResult& result) {
+// Returns the GPU's own centroids (3 per region), which the Voronoi search runs on.
+std::vector<float> add_gpu_checks(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& truth,
+                                  const Planet<float>& single, const RunOptions& options, CaseResult& result) {
   if (options.progress) options.progress->stage("GPU");
   gpu::PlanetGenerator generator(sphere, params);
   const auto regions = generator.jitter();
@@ -430,6 +438,7 @@ void add_gpu_checks(const CubeSphere& sphere, const PlanetParams& params, const 
   add_elevation_parity(sphere, params, truth, widened(single.elevation), shadow, {0.0, 4.0 * 0x1p-24}, "gpu_vs_float",
                        result);
   time_gpu(options.gpu_reps, [&] { generator.run(); }, result.timings);
+  return regions.positions;
 }
 
 // The GPU's cell-grid search (Algorithm 1) on its own positions against the exact nearest centroid
@@ -438,20 +447,19 @@ void add_gpu_checks(const CubeSphere& sphere, const PlanetParams& params, const 
 // the GPU can tell apart: its own float rounding, 2^-19 per squared chord (8 operations, each within
 // 2^-24 of a magnitude <= 4), twice, plus the positions' error e (the GPU's and ref<float>'s from
 // ref<double>, per component) moving each squared chord by at most 2·|p − w|·√3·e <= 4√3·e.
-void add_voronoi_checks(const CubeSphere& sphere, const Planet<double>& truth, const std::vector<Vector3<double>>& directions,
-                        const std::vector<reference::NearestSite>& nearest, const PlanetParams& params, CaseResult& result) {
-  gpu::PlanetGenerator generator(sphere, params);
-  const auto positions = generator.jitter().positions;
+void add_voronoi_checks(const CubeSphere& sphere, const Planet<double>& truth, const std::vector<float>& positions,
+                        const std::vector<Vector3<double>>& directions,
+                        const std::vector<reference::NearestSite>& nearest, CaseResult& result) {
   std::vector<Vector3<float>> queries;
   for (const auto& direction : directions) {
     queries.push_back({static_cast<float>(direction[0]), static_cast<float>(direction[1]), static_cast<float>(direction[2])});
   }
   const double margin = 0x1p-18 + 8.0 * std::sqrt(3.0) * (gpu_position_error() + float_position_error());
+  const auto& position = truth.regions.positions;
   const auto misses = [&](const std::vector<std::int32_t>& labels, std::size_t& agreeing) {
     std::size_t missed = 0;
     agreeing = 0;
     for (std::size_t index = 0; index < labels.size(); ++index) {
-      const auto& position = truth.regions.positions;
       const std::size_t label = static_cast<std::size_t>(labels[index]);
       const double distance = std::hypot(position[3 * label] - directions[index][0], position[3 * label + 1] - directions[index][1],
                                          position[3 * label + 2] - directions[index][2]);
@@ -742,8 +750,8 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
     result.checks.push_back(skipped_check("parity.gpu", options.gpu_unavailable_reason));
     return;
   }
-  add_gpu_checks(sphere, twins, truth, single, options, result);
-  add_voronoi_checks(sphere, truth, directions, nearest, twins, result);
+  const auto gpu_positions = add_gpu_checks(sphere, twins, truth, single, options, result);
+  add_voronoi_checks(sphere, truth, gpu_positions, directions, nearest, result);
 }
 
 PreparedTwin prepare_planet(const nlohmann::json& resolved, const LoadedInput& input) {

@@ -9,7 +9,8 @@
 // both_twins: the same bug in the reference and the shader (or in the cube sphere both share),
 // killed by checks against what was asked: spec.expansion_rate.cpu (rings per cycle average to the
 // rate), spec.smoothing_constant.cpu (the mean of a constant), spec.pressure_symmetry.cpu (the
-// pressure of a pair both ways), topology.* (neighbour counts and symmetry of the shared table),
+// pressure of a pair both ways), partition.edge_definition.cpu (is_edge against its definition,
+// written apart), topology.* (neighbour counts and symmetry of the shared table),
 // mesh.*.planet (the planet mesh's orientation).
 #include "compare/mutants/mutants.hpp"
 
@@ -29,6 +30,8 @@ std::vector<Mutant> planet_mutants() {
        "both twins grow ceil(rate) rings a cycle (the extra ring's draw can never win)", probe},
       {"planet.collision.neighbour_sign", MutantKind::both_twins,
        "both twins project the neighbour's chord on d instead of −d in the code's pressure", probe},
+      {"planet.plates.edges_without_diagonals", MutantKind::both_twins,
+       "both twins flag a region as an edge only from its 4 cardinal neighbours, not all 8", probe},
       {"planet.smoothing.count_without_self", MutantKind::both_twins,
        "both twins' Jacobi mean sums the region but divides by its neighbours' count only", probe},
       {"planet.mesh.flipped_front_face", MutantKind::both_twins,

@@ -223,10 +223,14 @@ PlatePartition grow_plates(const CubeSphere& sphere, const PlanetParams& params)
 }
 
 std::vector<std::uint8_t> edge_regions(const CubeSphere& sphere, const std::vector<std::int32_t>& plate) {
+  // Mutant planet.plates.edges_without_diagonals (both twins): only the 4 cardinal neighbours (even
+  // places of the table) are looked at.
+  const std::size_t stride = mutant_active("planet.plates.edges_without_diagonals") ? 2 : 1;
   std::vector<std::uint8_t> is_edge(plate.size(), 0);
   for (std::size_t region = 0; region < plate.size(); ++region) {
-    for (const std::int32_t neighbour : sphere.neighbours(region)) {
-      if (neighbour != invalid_region && plate[neighbour] != plate[region]) is_edge[region] = 1;
+    const auto& around = sphere.neighbours(region);
+    for (std::size_t place = 0; place < around.size(); place += stride) {
+      if (around[place] != invalid_region && plate[around[place]] != plate[region]) is_edge[region] = 1;
     }
   }
   return is_edge;

@@ -9,7 +9,11 @@ void main() {
   int region = int(gl_GlobalInvocationID.x);
   if (region >= region_count) return;
   uint edge = 0u;
+#ifdef GT_MUTANT_PLANET_PLATES_EDGES_WITHOUT_DIAGONALS
+  for (int k = 0; k < neighbour_count; k += 2) {  // mutant (both twins): the cardinal neighbours only
+#else
   for (int k = 0; k < neighbour_count; ++k) {
+#endif
     int neighbour = neighbours[neighbour_count * region + k];
     if (neighbour >= 0 && plate[neighbour] != plate[region]) edge = 1u;
   }
