@@ -127,7 +127,27 @@ void write_pictures(const OIIO::ImageBuf& cpu, const OIIO::ImageBuf* gpu_image,
   add("gpu_vs_cpu_mask.png", "3×3-tolerant verdicts at 4/255: grey identical, green within, blue edge shift, red fails");
 }
 
+// The image checks and pictures of a pair, or the reference's pictures alone without a GPU image.
+void compare_images_and_picture(const OIIO::ImageBuf& cpu, const OIIO::ImageBuf* gpu_image, const RunOptions& options,
+                                CaseResult& result) {
+  if (!gpu_image) {
+    write_pictures(cpu, nullptr, nullptr, options, result);
+    return;
+  }
+  const NeighbourhoodComparison tolerant = compare_neighbourhoods(cpu, *gpu_image, phong_tolerance);
+  add_image_checks(compare_images(cpu, *gpu_image, phong_tolerance), tolerant, result);
+  write_pictures(cpu, gpu_image, &tolerant, options, result);
+}
+
 }  // namespace
+
+void compare_rendered_images(int width, int height, const std::vector<std::uint8_t>& cpu_rgb,
+                             const std::vector<std::uint8_t>* gpu_rgb, const RunOptions& options, CaseResult& result) {
+  const OIIO::ImageBuf cpu = rgb8_buffer(width, height, cpu_rgb);
+  if (!gpu_rgb) return compare_images_and_picture(cpu, nullptr, options, result);
+  const OIIO::ImageBuf gpu_image = rgb8_buffer(width, height, *gpu_rgb);
+  compare_images_and_picture(cpu, &gpu_image, options, result);
+}
 
 void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
                      const std::string& input, const RunOptions& options, CaseResult& result,
@@ -146,13 +166,11 @@ void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, doub
     for (const char* name : {"image.gpu_vs_cpu", "determinism.gpu"}) {
       result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
     }
-    write_pictures(cpu, nullptr, nullptr, options, result);
+    compare_images_and_picture(cpu, nullptr, options, result);
     return;
   }
   const OIIO::ImageBuf gpu_image = run_gpu(scene, options, result, spec);
-  const NeighbourhoodComparison tolerant = compare_neighbourhoods(cpu, gpu_image, phong_tolerance);
-  add_image_checks(compare_images(cpu, gpu_image, phong_tolerance), tolerant, result);
-  write_pictures(cpu, &gpu_image, &tolerant, options, result);
+  compare_images_and_picture(cpu, &gpu_image, options, result);
 }
 
 }  // namespace gt

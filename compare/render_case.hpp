@@ -50,6 +50,13 @@ inline constexpr double phong_max_failing_share = 0.005;
 using RenderedImageSpec =
     std::function<void(const std::vector<std::uint8_t>& rgb, const std::string& backend, CaseResult& result)>;
 
+// The image.* checks (PSNR, the 3×3-tolerant share, the informative metrics) and the pictures (cpu.png,
+// gpu.png, heat map, mask, the channels as fields) of any rendered pair: RGB8, rows top first, both
+// width × height. Without a GPU image (nullptr), the reference's pictures alone: the caller adds
+// the skipped checks.
+void compare_rendered_images(int width, int height, const std::vector<std::uint8_t>& cpu_rgb,
+                             const std::vector<std::uint8_t>* gpu_rgb, const RunOptions& options, CaseResult& result);
+
 void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
                      const std::string& input, const RunOptions& options, CaseResult& result,
                      const RenderedImageSpec& spec = {});

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <deque>
 #include <limits>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include "reference/planet/elevation.hpp"
 #include "reference/planet/jitter.hpp"
 #include "reference/planet/plates.hpp"
+#include "reference/planet/render.hpp"
 #include "reference/planet/voronoi.hpp"
 #include "core/planet/sphere_mesh.hpp"
 #include <map>
@@ -337,6 +339,56 @@ TEST(PlanetMesh, TheCubeSphereMeshIsAClosedOrientedSphere) {
     const auto& first = mesh.triangles.front();
     const Vec3 normal = cross(mesh.positions[first[1]] - mesh.positions[first[0]], mesh.positions[first[2]] - mesh.positions[first[0]]);
     EXPECT_GT(dot(normal, mesh.positions[first[0]]), 0.0);
+  }
+}
+
+// §4.3's palette: the seed's two base colours at sea level, darkened linearly to black at |e| = 4.
+TEST(PlanetRender, ThePaletteIsTheSeedsColoursDarkenedWithDepthAndHeight) {
+  const Vec3 land = reference::elevation_colour(0.0), deep = reference::elevation_colour(-2.0);
+  EXPECT_EQ(land, (Vec3{255.0 / 255.0, 189.0 / 255.0, 97.0 / 255.0}));
+  EXPECT_EQ(deep, (Vec3{0.5 * 107.0 / 255.0, 0.5 * 193.0 / 255.0, 0.5 * 255.0 / 255.0}));
+  const Vec3 shallow = reference::elevation_colour(-1e-12);
+  EXPECT_GT(shallow[2], shallow[0]) << "just below sea level is ocean (blue over red)";
+  for (const double beyond : {-4.0, 4.0, 7.5, -30.0}) EXPECT_EQ(reference::elevation_colour(beyond), (Vec3{0.0, 0.0, 0.0}));
+}
+
+// The planet seen from 2.8 radii: the mesh's silhouette lies between the sphere's and that of the
+// sphere through the nearest face plane (the mesh is inscribed, its vertices on the unit sphere), so
+// the covered pixel centres (GL's rule) lie between the two discs' pixel counts, each disc of
+// radius r px holding between π(r − √2/2)² and π(r + √2/2)² centres. Every covered pixel shows its
+// region's colour; the rest stay black.
+TEST(PlanetRender, TheSphereCoversItsProjectedDiscAndEachPixelShowsItsRegionsColour) {
+  const CubeSphere sphere(8);
+  const auto positions = reference::jitter_regions<double>(sphere, params_of(8, 5)).positions;
+  std::vector<double> elevation(sphere.region_count());
+  for (std::size_t region = 0; region < elevation.size(); ++region) {
+    elevation[region] = 6.0 * uniform01(random_u32(3, std::uint32_t(region), 0, 0)) - 3.0;
+  }
+  const Mesh mesh = sphere_mesh(sphere);
+  reference::Camera camera;
+  camera.eye = {0.0, 0.0, 2.8};
+  camera.near = 1.0;
+  camera.far = 5.0;
+  camera.width = camera.height = 96;
+  const auto drawn = reference::render_planet(mesh, camera, positions, elevation);
+  double nearest_plane = 1.0;
+  for (const auto& triangle : mesh.triangles) {
+    const Vec3 normal = normalised(cross(mesh.positions[triangle[1]] - mesh.positions[triangle[0]],
+                                         mesh.positions[triangle[2]] - mesh.positions[triangle[0]]));
+    nearest_plane = std::min(nearest_plane, dot(normal, mesh.positions[triangle[0]]));
+  }
+  const double pixels_per_tangent = 0.5 * camera.height / std::tan(0.5 * camera.fov_y_deg * std::numbers::pi / 180.0);
+  const auto disc_radius = [&](double radius) { return pixels_per_tangent * std::tan(std::asin(radius / 2.8)); };
+  const double inner = disc_radius(nearest_plane) - std::sqrt(0.5), outer = disc_radius(1.0) + std::sqrt(0.5);
+  EXPECT_GE(double(drawn.image.covered_pixels), std::numbers::pi * inner * inner);
+  EXPECT_LE(double(drawn.image.covered_pixels), std::numbers::pi * outer * outer);
+  for (std::size_t pixel = 0; pixel < drawn.regions.size(); ++pixel) {
+    const std::int32_t region = drawn.regions[pixel];
+    ASSERT_LT(region, std::int32_t(sphere.region_count()));
+    const Vec3 colour = region < 0 ? Vec3{0.0, 0.0, 0.0} : reference::elevation_colour(elevation[std::size_t(region)]);
+    for (std::size_t channel = 0; channel < 3; ++channel) {
+      EXPECT_EQ(drawn.image.rgb[3 * pixel + channel], std::uint8_t(std::lround(255.0 * colour[channel]))) << pixel;
+    }
   }
 }
 

@@ -221,6 +221,7 @@ TEST(MutantRegistry, EachKindIsKilledOnlyByTheChecksMeantForIt) {
   using gt::MutantKind;
   EXPECT_TRUE(gt::check_kind_kills(MutantKind::one_twin, "parity.shadow.water.gpu_vs_float"));
   EXPECT_TRUE(gt::check_kind_kills(MutantKind::one_twin, "image.psnr.gpu_vs_cpu"));
+  EXPECT_TRUE(gt::check_kind_kills(MutantKind::one_twin, "determinism.gpu"));
   EXPECT_FALSE(gt::check_kind_kills(MutantKind::one_twin, "mass.water_added.gpu"));
   EXPECT_TRUE(gt::check_kind_kills(MutantKind::both_twins, "mass.water_added.cpu"));
   EXPECT_TRUE(gt::check_kind_kills(MutantKind::both_twins, "spec.points.cpu"));

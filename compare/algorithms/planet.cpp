@@ -38,6 +38,12 @@
 //                             positions and partition (shadow parity), ref<float> on its own
 //                             positions; `inconclusive` when the largest bound exceeds a tenth of
 //                             the elevation's range
+//   determinism.gpu           regions whose plate or elevation differ in any bit between the first
+//                             and the last of the GPU's timed runs
+//   image.*.gpu_vs_cpu        the planet drawn by both twins (reference rasterizer and GL, mesh,
+//                             per-pixel Voronoi, palette): PSNR >= 40 dB and at most 0.5 % of pixels
+//                             beyond 4/255 after the 3×3 edge tolerance (compare/render_case.hpp);
+//                             image.region_agreement informative
 //   fidelity.land_fraction, fidelity.bimodality   for cases whose expect says earth_like: the
 //                             land share within 0.1 of the Earth's 0.290 (ETOPO 1°, data-sources.md),
 //                             Sarle's bimodality coefficient above 5/9; `warn` when not met
@@ -47,6 +53,7 @@
 // Voronoi cells with their borders; the elevation as a cube map; the hypsometric curves and
 // histograms of the planet and the Earth; both elevation maps as EXR/NPY fields.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <deque>
 #include <filesystem>
@@ -69,11 +76,14 @@
 #include "core/params/planet.hpp"
 #include "core/planet/sphere_mesh.hpp"
 #include "core/rng.hpp"
+#include "compare/render_case.hpp"
 #include "gpu/planet/generator.hpp"
+#include "gpu/planet/render.hpp"
 #include "gpu/planet/voronoi.hpp"
 #include "reference/planet/elevation.hpp"
 #include "reference/planet/jitter.hpp"
 #include "reference/planet/plates.hpp"
+#include "reference/planet/render.hpp"
 #include "reference/planet/voronoi.hpp"
 
 namespace gt {
@@ -400,6 +410,28 @@ void add_float_parity(const CubeSphere& sphere, const PlanetParams& params, cons
                        {float_position_error(), 0x1p-24}, "float_vs_double", result);
 }
 
+// The whole pipeline once, then the timed runs: the last one's plates and elevations must equal the
+// first's in every bit (integer claims, fixed-point sums, one thread per output: nothing may race or
+// be left over from the run before).
+void add_determinism_check(gpu::PlanetGenerator& generator, const RunOptions& options, CaseResult& result) {
+  generator.run();
+  const PlatePartition first_partition = generator.partition_result();
+  const std::vector<float> first_elevation = generator.elevation_result().smoothed;
+  time_gpu(options.gpu_reps, [&] { generator.run(); }, result.timings);
+  const PlatePartition last_partition = generator.partition_result();
+  const std::vector<float> last_elevation = generator.elevation_result().smoothed;
+  std::size_t changed = 0;
+  for (std::size_t region = 0; region < first_elevation.size(); ++region) {
+    const bool same = first_partition.plate[region] == last_partition.plate[region] &&
+                      std::bit_cast<std::uint32_t>(first_elevation[region]) == std::bit_cast<std::uint32_t>(last_elevation[region]);
+    changed += same ? 0 : 1;
+  }
+  result.checks.push_back(bounded_check("determinism.gpu", double(changed), 0.0, std::nullopt,
+                                        fmt::format("regions whose plate or elevation differ in any bit between the first "
+                                                    "and the last of {} GPU runs",
+                                                    options.gpu_reps + 1)));
+}
+
 // Returns the GPU's own centroids (3 per region), which the Voronoi search runs on.
 std::vector<float> add_gpu_checks(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& truth,
                                   const Planet<float>& single, const RunOptions& options, CaseResult& result) {
@@ -437,7 +469,7 @@ std::vector<float> add_gpu_checks(const CubeSphere& sphere, const PlanetParams& 
   const auto shadow = generator.elevation(single.regions.positions, single.partition);
   add_elevation_parity(sphere, params, truth, widened(single.elevation), shadow, {0.0, 4.0 * 0x1p-24}, "gpu_vs_float",
                        result);
-  time_gpu(options.gpu_reps, [&] { generator.run(); }, result.timings);
+  add_determinism_check(generator, options, result);
   return regions.positions;
 }
 
@@ -482,6 +514,45 @@ void add_voronoi_checks(const CubeSphere& sphere, const Planet<double>& truth, c
       fmt::format("share of map directions the seed shader's 3×3 search gives a farther centroid than the nearest "
                   "({} of {}); {:.4f} % agree label for label",
                   missed_3x3, directions.size(), 100.0 * double(agreeing_3x3) / double(directions.size()))));
+}
+
+// The planet drawn by both twins as the seed's demo draws it: the mesh, the per-pixel Voronoi and
+// the palette, from ref<float>'s centroids and elevations on the GPU and ref<double>'s on the CPU.
+// A camera 2.8 radii from the centre at azimuth 35° and elevation 25°, 45° field of view, 384².
+void add_render_checks(const CubeSphere& sphere, const Planet<double>& truth, const Planet<float>& single,
+                       const RunOptions& options, CaseResult& result) {
+  constexpr double azimuth = 35.0 * std::numbers::pi / 180.0, elevation = 25.0 * std::numbers::pi / 180.0;
+  reference::Camera camera;
+  camera.eye = {2.8 * std::cos(elevation) * std::sin(azimuth), 2.8 * std::sin(elevation),
+                2.8 * std::cos(elevation) * std::cos(azimuth)};
+  camera.near = 1.0;
+  camera.far = 5.0;
+  camera.width = camera.height = 384;
+  const Mesh mesh = sphere_mesh(sphere);
+  const auto cpu = reference::render_planet(mesh, camera, truth.regions.positions, truth.elevation.smoothed);
+  if (!options.gpu_available) {
+    compare_rendered_images(camera.width, camera.height, cpu.image.rgb, nullptr, options, result);
+    result.checks.push_back(skipped_check("image.gpu_vs_cpu", options.gpu_unavailable_reason));
+    return;
+  }
+  const reference::Matrix4 view_projection =
+      reference::multiply(reference::projection_matrix(camera), reference::view_matrix(camera));
+  const gpu::PlanetRenderer renderer(mesh, view_projection, sphere, single.regions.positions, single.elevation.smoothed,
+                                     camera.width, camera.height);
+  renderer.run();
+  const gpu::PlanetPixels image = renderer.image();
+  compare_rendered_images(camera.width, camera.height, cpu.image.rgb, &image.rgb, options, result);
+  std::size_t both = 0, agreeing = 0;
+  for (std::size_t pixel = 0; pixel < cpu.regions.size(); ++pixel) {
+    if (cpu.regions[pixel] < 0 || image.regions[pixel] < 0) continue;
+    ++both;
+    agreeing += cpu.regions[pixel] == image.regions[pixel] ? 1 : 0;
+  }
+  result.checks.push_back(informative_check(
+      "image.region_agreement.gpu_vs_cpu", both > 0 ? double(agreeing) / double(both) : 1.0,
+      fmt::format("share of the {} pixels both twins drew whose region is the same (the rest: Voronoi near-ties, "
+                  "and the float centroids' and elevations' rounding)",
+                  both)));
 }
 
 // ---- the Earth ------------------------------------------------------------------------------
@@ -622,11 +693,10 @@ std::vector<Vector3<double>> map_directions() {
   return directions;
 }
 
-// §4.3: base (107, 193, 255) below 0, (255, 189, 97) from 0, times (1 − |e|/4) clamped to [0, 1].
+// §4.3's palette (reference/planet/render.hpp) as a picture's pixel.
 std::array<float, 3> elevation_colour(double elevation) {
-  const std::array<float, 3> base = elevation < 0 ? std::array<float, 3>{107, 193, 255} : std::array<float, 3>{255, 189, 97};
-  const auto factor = static_cast<float>(std::clamp(1.0 - std::abs(elevation) / 4.0, 0.0, 1.0));
-  return {base[0] * factor / 255.0f, base[1] * factor / 255.0f, base[2] * factor / 255.0f};
+  const Vec3 colour = reference::elevation_colour(elevation);
+  return {static_cast<float>(colour[0]), static_cast<float>(colour[1]), static_cast<float>(colour[2])};
 }
 
 // A colour per index (a plate, a region) from the counter RNG on a stream of its own: full, or mixed
@@ -746,6 +816,7 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
   const auto directions = map_directions();
   const auto nearest = reference::nearest_sites(planet.regions.positions, directions);
   write_maps(params, planet, nearest, options, result);
+  add_render_checks(sphere, truth, single, options, result);
   if (!options.gpu_available) {
     result.checks.push_back(skipped_check("parity.gpu", options.gpu_unavailable_reason));
     return;

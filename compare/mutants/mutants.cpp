@@ -50,8 +50,9 @@ const Mutant& find_mutant(const std::string& name) {
 
 bool check_kind_kills(MutantKind kind, const std::string& check_name) {
   const bool compares_twins = starts_with(check_name, "parity.") || starts_with(check_name, "image.");
-  if (kind == MutantKind::one_twin) return compares_twins;
-  return !compares_twins && !starts_with(check_name, "determinism.");
+  const bool compares_reruns = starts_with(check_name, "determinism.");
+  if (kind == MutantKind::one_twin) return compares_twins || compares_reruns;
+  return !compares_twins && !compares_reruns;
 }
 
 }  // namespace gt

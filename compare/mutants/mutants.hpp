@@ -4,7 +4,9 @@
 //
 // Two kinds, each to be killed by the kind of check meant for it:
 //   one_twin    the bug is in one twin only (usually the GPU): the twins disagree, and a parity
-//               check (`parity.*`, or `image.*` where rendered images are compared) must fail;
+//               check (`parity.*`, or `image.*` where rendered images are compared) must fail, or
+//               the twin disagrees with its own rerun (`determinism.*`: state left over from the
+//               last run, which the first run, the one compared, cannot show);
 //   both_twins  the same bug in both twins: they agree with each other, so only a check against
 //               something outside them (ledgers against what was asked, spec vectors, invariants:
 //               `mass.*`, `spec.*`, `mesh.*`, ...) can fail. Parity and determinism checks do not

@@ -4,7 +4,8 @@
 // one_twin: bugs in the GPU shaders only, killed by the parity checks: parity.offsets.gpu_vs_float
 // (any bit), parity.plates.gpu_vs_cpu (any region), parity.collision.gpu_vs_float (a sign flips a
 // pressure term, far beyond the error model's per-region bound), parity.voronoi.gpu_vs_cpu (a label
-// farther than the exact nearest centroid).
+// farther than the exact nearest centroid), image.psnr.gpu_vs_cpu (the rendered planet's colours),
+// determinism.gpu (state carried from one run into the next).
 //
 // both_twins: the same bug in the reference and the shader (or in the cube sphere both share),
 // killed by checks against what was asked: spec.expansion_rate.cpu (rings per cycle average to the
@@ -36,6 +37,10 @@ std::vector<Mutant> planet_mutants() {
        "both twins' Jacobi mean sums the region but divides by its neighbours' count only", probe},
       {"planet.mesh.flipped_front_face", MutantKind::both_twins,
        "the planet mesh winds the front face's triangles clockwise, against the other five faces", probe},
+      {"planet.plates.gpu_cycles_carried_over", MutantKind::one_twin,
+       "the GPU's growth-cycle count, which keys the expansion draws, is not reset between runs", probe},
+      {"planet.render.gpu_darker_palette", MutantKind::one_twin,
+       "render.frag darkens the palette by |e|/2 instead of |e|/4", probe},
       {"planet.voronoi.gpu_cell_centres", MutantKind::one_twin,
        "voronoi.comp measures distances to each cell's centre (Algorithm 1's massCenterOfCell) instead of the "
        "region's jittered centroid",

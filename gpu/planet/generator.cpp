@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 #include "core/noise/permutation.hpp"
 #include "core/params/noise_fractal.hpp"
 
@@ -258,7 +259,8 @@ void PlanetGenerator::run_plate_growth() {
   download_barrier();
   std::uint32_t assigned = assigned_count_.download<std::uint32_t>(1)[0];
   int stalled = 0;
-  for (cycles_ = 0; assigned < static_cast<std::uint32_t>(region_count_); ++cycles_) {
+  // Mutant: the cycle count, which keys the expansion draws, carries on from the last run.
+  for (cycles_ = mutant_active("planet.plates.gpu_cycles_carried_over") ? cycles_ : 0; assigned < static_cast<std::uint32_t>(region_count_); ++cycles_) {
     run_growth_cycle(cycles_);
     download_barrier();
     const std::uint32_t before = assigned;

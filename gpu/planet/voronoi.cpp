@@ -29,7 +29,8 @@ ComputeProgram voronoi_program(int rings) {
   return ComputeProgram::load("planet/voronoi.comp", {fmt::format("SEARCH_RINGS={}", rings)});
 }
 
-// x, y, z per item -> x, y, z, 0 per item (std430 vec4).
+}  // namespace
+
 std::vector<float> padded_xyz(const std::vector<float>& xyz) {
   std::vector<float> result(xyz.size() / 3 * 4, 0.0f);
   for (std::size_t item = 0; item < xyz.size() / 3; ++item) {
@@ -38,7 +39,20 @@ std::vector<float> padded_xyz(const std::vector<float>& xyz) {
   return result;
 }
 
-}  // namespace
+UniformBuffer voronoi_block(int resolution, std::size_t direction_count) {
+  VoronoiBlock block{};
+  for (int face = 0; face < cube_face_count; ++face) {
+    const FaceMatrix& matrix = face_matrix(static_cast<CubeFace>(face));
+    for (int row = 0; row < 3; ++row) {
+      for (int column = 0; column < 3; ++column) block.face_rows[3 * face + row][column] = matrix[row][column];
+    }
+  }
+  block.resolution = resolution;
+  block.direction_count = static_cast<std::int32_t>(direction_count);
+  block.warp_angle = static_cast<float>(warp_angle);
+  block.tan_warp_angle = static_cast<float>(std::tan(warp_angle));
+  return UniformBuffer::from(block);
+}
 
 PlanetVoronoi::PlanetVoronoi(const CubeSphere& sphere, int rings)
     : resolution_(sphere.resolution()),
@@ -52,18 +66,7 @@ std::vector<std::int32_t> PlanetVoronoi::labels(const std::vector<float>& positi
     throw std::invalid_argument(fmt::format("Voronoi: {} position values for {} regions", positions.size(), region_count_));
   }
   if (directions.empty()) return {};
-  VoronoiBlock block{};
-  for (int face = 0; face < cube_face_count; ++face) {
-    const FaceMatrix& matrix = face_matrix(static_cast<CubeFace>(face));
-    for (int row = 0; row < 3; ++row) {
-      for (int column = 0; column < 3; ++column) block.face_rows[3 * face + row][column] = matrix[row][column];
-    }
-  }
-  block.resolution = resolution_;
-  block.direction_count = static_cast<std::int32_t>(directions.size());
-  block.warp_angle = static_cast<float>(warp_angle);
-  block.tan_warp_angle = static_cast<float>(std::tan(warp_angle));
-  const auto uniforms = UniformBuffer::from(block);
+  const auto uniforms = voronoi_block(resolution_, directions.size());
   std::vector<float> direction_values;
   for (const auto& direction : directions) direction_values.insert(direction_values.end(), direction.begin(), direction.end());
   const auto position_buffer = StorageBuffer::from(padded_xyz(positions));

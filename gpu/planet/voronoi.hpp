@@ -20,6 +20,13 @@
 
 namespace gt::gpu {
 
+// The std140 block of planet/voronoi_search.glsl (binding 0): the face matrices, R, θ and tan θ
+// rounded to float once, and the number of queries (voronoi.comp's; 0 for the renderer).
+UniformBuffer voronoi_block(int resolution, std::size_t direction_count);
+
+// x, y, z per item -> x, y, z, 0 per item: std430 vec4s, as the shaders read positions.
+std::vector<float> padded_xyz(const std::vector<float>& xyz);
+
 class PlanetVoronoi {
  public:
   PlanetVoronoi(const CubeSphere& sphere, int rings);

@@ -5,12 +5,14 @@
 // 3-D search answers the spherical question. GPU twin: gpu/shaders/planet/voronoi.comp, which
 // searches the cell grid as Algorithm 1 does.
 //
-// nearest_sites(positions, directions) -> per direction: the nearest region, its chord distance
-// and the second-nearest distance (a tie when they are equal within rounding).
+// VoronoiSearch(positions).nearest(direction) -> the nearest region, its chord distance and the
+// second-nearest distance (a tie when they are equal within rounding); the tree is built once.
+// nearest_sites(positions, directions) -> the same for many directions.
 // Inputs: positions 3 per region (unit length), directions of unit length. Units: chord lengths.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/planet/planet_state.hpp"
@@ -21,6 +23,17 @@ struct NearestSite {
   std::int32_t region = -1;
   double distance = 0.0;
   double second_distance = 0.0;  // +inf with a single region
+};
+
+class VoronoiSearch {
+ public:
+  explicit VoronoiSearch(const std::vector<double>& positions);
+  ~VoronoiSearch();
+  NearestSite nearest(const Vector3<double>& direction) const;
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
 };
 
 std::vector<NearestSite> nearest_sites(const std::vector<double>& positions, const std::vector<Vector3<double>>& directions);

@@ -162,21 +162,6 @@ RasterInput clip_input(const PhongScene& scene) {
 
 // GL's bottom-first colour buffer to top-first RGB8. Mutant render.phong.vertical_flip (issue 11, in
 // both twins): rows read bottom first, the picture upside down.
-Rgb8Image quantised_top_first(const RasterTarget& target) {
-  Rgb8Image image{target.width, target.height, {}};
-  image.rgb.reserve(std::size_t(target.width) * std::size_t(target.height) * 3);
-  const bool flipped = mutant_active("render.phong.vertical_flip");
-  for (int row = 0; row < target.height; ++row) {
-    const int gl_row = flipped ? row : target.height - 1 - row;
-    for (int x = 0; x < target.width; ++x) {
-      for (int channel = 0; channel < 3; ++channel) {
-        image.rgb.push_back(quantise_unorm8(target.colour_at(x, gl_row, channel)));
-      }
-    }
-  }
-  return image;
-}
-
 }  // namespace
 
 Matrix4 view_matrix(const Camera& camera) {
@@ -359,6 +344,21 @@ Vec3 shade_fragment(const PhongScene& scene, const Vec3& position, const Vec3& n
 }
 
 std::uint8_t quantise_unorm8(double channel) { return std::uint8_t(std::lround(255.0 * channel)); }
+
+Rgb8Image quantised_top_first(const RasterTarget& target) {
+  Rgb8Image image{target.width, target.height, {}};
+  image.rgb.reserve(std::size_t(target.width) * std::size_t(target.height) * 3);
+  const bool flipped = mutant_active("render.phong.vertical_flip");
+  for (int row = 0; row < target.height; ++row) {
+    const int gl_row = flipped ? row : target.height - 1 - row;
+    for (int x = 0; x < target.width; ++x) {
+      for (int channel = 0; channel < 3; ++channel) {
+        image.rgb.push_back(quantise_unorm8(target.colour_at(x, gl_row, channel)));
+      }
+    }
+  }
+  return image;
+}
 
 Rgb8Image render_phong(const PhongScene& scene, int subpixel_bits) {
   require_look(scene);

@@ -183,4 +183,8 @@ struct Rgb8Image {
 
 Rgb8Image render_phong(const PhongScene& scene, int subpixel_bits = 8);
 
+// A target's first three channels as 8-bit levels, rows top first (GL's row 0 is the bottom).
+struct RasterTarget;
+Rgb8Image quantised_top_first(const RasterTarget& target);
+
 }  // namespace gt::reference
