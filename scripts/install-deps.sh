@@ -16,6 +16,8 @@ packages=(
   libnetcdf-dev
   # power spectra of terrain descriptors (compare/descriptors/power_spectrum.cpp)
   libfftw3-dev
+  # spherical power spectra of planets and global grids (compare/descriptors/spherical_spectrum.cpp)
+  libhealpix-cxx-dev
   # tests comparing descriptors with GDAL's (gdaldem slope)
   gdal-bin
   # SHA-256 of shaders and data sets in every report's provenance (libcrypto)

@@ -47,11 +47,14 @@
 //   fidelity.land_fraction, fidelity.bimodality   for cases whose expect says earth_like: the
 //                             land share within 0.1 of the Earth's 0.290 (ETOPO 1°, data-sources.md),
 //                             Sarle's bimodality coefficient above 5/9; `warn` when not met
+//   fidelity.spectral_exponent  |β − the Earth's β| of the spherical power spectrum C_l ∝ l^-β over
+//                             l = 2..R, within 0.5 for earth_like cases (`warn` when not)
 //   fidelity.*                informative otherwise, with the mean and range
 // Pictures (equirectangular, 512 x 256, each pixel the region of the exact nearest centroid): the
 // elevation palette (§4.3), the plates (edges in the plate's colour, interiors mixed with white), the
 // Voronoi cells with their borders; the elevation as a cube map; the hypsometric curves and
-// histograms of the planet and the Earth; both elevation maps as EXR/NPY fields.
+// histograms of the planet and the Earth; their spherical power spectra; both elevation maps as
+// EXR/NPY fields; the planet drawn by both twins (cpu.png, gpu.png, their difference).
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -67,6 +70,7 @@
 #include "compare/checks/planet_error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/descriptors/global_relief.hpp"
+#include "compare/descriptors/spherical_spectrum.hpp"
 #include "compare/field_files.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
@@ -92,6 +96,18 @@ namespace {
 constexpr double earth_land_fraction = 0.290;  // ETOPO 1°, area-weighted (tests/global_relief_test.cpp)
 constexpr double land_fraction_tolerance = 0.1;  // issue 13: within ±0.1 of the Earth's
 constexpr double bimodal_threshold = 5.0 / 9.0;  // Sarle's coefficient of a uniform distribution
+// Spherical power spectra (compare/descriptors/spherical_spectrum.hpp) on a HEALPix map of ~0.9°
+// pixels, ETOPO 1°'s own resolution, to degree 128 (< 3·nside); the exponent is fitted from l = 2
+// (l = 0 is the mean, l = 1 a hemisphere's offset) to l = R, a wavelength of 4 cells at the
+// equator's 4R: the smallest features the planet's regions can draw, and the same band for both.
+constexpr int spectrum_nside = 64;
+constexpr int spectrum_lmax = 128;
+constexpr int spectrum_low_degree = 2;
+// The exponents' allowed gap, a judgement fixed before any run: half a unit, against the exponent's
+// range from 0 (independent regions: white noise) to 4 and above (smooth blobs); the Earth's own
+// exponent moves by 0.7 as the band's upper end goes from l = 10 to 128, which is why both are fitted
+// over the same band. Warn-only, like the other fidelity checks.
+constexpr double spectral_exponent_tolerance = 0.5;
 constexpr double tellable_share = 0.1;           // a parity bound wider than this share of the range tells nothing
 constexpr int map_width = 512;
 constexpr int map_height = 256;
@@ -582,11 +598,18 @@ struct ReferenceRelief {
   std::string name;
   GlobalRelief relief;
   double bimodality = 0.0;
+  std::vector<double> spectrum;  // C_l, l = 0..spectrum_lmax
+  std::size_t no_data_cells = 0;  // set to the mean for the spectrum
 };
 
 ReferenceRelief reference_relief(const GlobalGrid& grid, const std::string& name) {
   const auto samples = area_samples(grid);
-  return {name, weighted_relief(samples), bimodality_coefficient(samples)};
+  ReferenceRelief reference{name, weighted_relief(samples), bimodality_coefficient(samples), {}, 0};
+  const auto& valid = grid.elevation.valid;
+  reference.no_data_cells = std::size_t(std::count(valid.begin(), valid.end(), std::uint8_t{0}));
+  reference.spectrum =
+      angular_power_spectrum(nearest_cell_sampler(grid, reference.relief.mean), spectrum_nside, spectrum_lmax);
+  return reference;
 }
 
 // ETOPO 1° when datasets/fetch.sh has fetched it, read once per process; otherwise none and why.
@@ -645,6 +668,59 @@ void plot_relief(const GlobalRelief& planet, const std::optional<ReferenceRelief
               result);
 }
 
+// The planet's relief as the picture shows it (each direction its nearest centroid's region) on the
+// HEALPix map, its exponent beside the Earth's over the same band, and both spectra on one plot,
+// each as its share of the variance per degree, (2l + 1)·C_l / Σ_{l>=1} (2l + 1)·C_l.
+void add_spectrum_checks(const CubeSphere& sphere, const Planet<double>& planet, bool earth_like,
+                         const std::optional<ReferenceRelief>& earth, const RunOptions& options, CaseResult& result) {
+  const reference::VoronoiSearch search(planet.regions.positions);
+  const auto& elevation = planet.elevation.smoothed;
+  const auto spectrum = angular_power_spectrum(
+      [&](const std::array<double, 3>& direction) {
+        return elevation[static_cast<std::size_t>(search.nearest({direction[0], direction[1], direction[2]}).region)];
+      },
+      spectrum_nside, spectrum_lmax);
+  const int high_degree = std::min(sphere.resolution(), spectrum_lmax);
+  const double exponent = spectral_exponent(spectrum, spectrum_low_degree, high_degree);
+  if (!earth) {
+    result.checks.push_back(informative_check(
+        "fidelity.spectral_exponent", exponent,
+        fmt::format("β of C_l ∝ l^-β over l = {}..{} (no global grid to set it beside)", spectrum_low_degree, high_degree)));
+  } else {
+    const double earth_exponent = spectral_exponent(earth->spectrum, spectrum_low_degree, high_degree);
+    if (earth->no_data_cells > 0) {
+      result.notes.push_back(fmt::format("{}'s {} no-data cells were set to its mean elevation for its spectrum",
+                                         earth->name, earth->no_data_cells));
+    }
+    const std::string detail = fmt::format("|β − {}'s β| of C_l ∝ l^-β over l = {}..{}: planet {:.2f}, {} {:.2f}",
+                                           earth->name, spectrum_low_degree, high_degree, exponent, earth->name,
+                                           earth_exponent);
+    const double gap = std::abs(exponent - earth_exponent);
+    result.checks.push_back(earth_like ? bounded_check("fidelity.spectral_exponent", gap, spectral_exponent_tolerance,
+                                                       std::numeric_limits<double>::infinity(), detail)
+                                       : informative_check("fidelity.spectral_exponent", gap, detail));
+  }
+  if (options.report_dir.empty()) return;
+  const auto shares = [&](const std::vector<double>& power, const std::string& label) {
+    double total = 0.0;
+    for (int degree = 1; degree <= spectrum_lmax; ++degree) total += (2.0 * degree + 1.0) * power[std::size_t(degree)];
+    Series series{label, {}, {}, false, {}};
+    for (int degree = 1; degree <= spectrum_lmax; ++degree) {
+      series.x.push_back(degree);
+      series.y.push_back((2.0 * degree + 1.0) * power[std::size_t(degree)] / total);
+    }
+    return series;
+  };
+  SeriesPlot plot{"spherical power spectra", "degree l", "share of the variance at degree l", true, true,
+                  {shares(spectrum, "planet")}};
+  if (earth) plot.series.push_back(shares(earth->spectrum, earth->name));
+  attach_plot({plot}, options.report_dir, "spectrum.png",
+              fmt::format("angular power spectra (HEALPix nside {}), each degree's share of the variance; the exponent "
+                          "is fitted over l = {}..{}",
+                          spectrum_nside, spectrum_low_degree, high_degree),
+              result);
+}
+
 void add_fidelity_checks(const CubeSphere& sphere, const Planet<double>& planet, bool earth_like,
                          const std::optional<ReferenceRelief>& given, const RunOptions& options, CaseResult& result) {
   const auto samples = planet_samples(sphere, planet.elevation.smoothed);
@@ -673,6 +749,7 @@ void add_fidelity_checks(const CubeSphere& sphere, const Planet<double>& planet,
       "fidelity.mean", relief.mean,
       fmt::format("area-weighted mean elevation; range {:.3f} .. {:.3f} (generator units, sea level 0)", relief.min,
                   relief.max)));
+  add_spectrum_checks(sphere, planet, earth_like, earth, options, result);
   if (!options.report_dir.empty()) plot_relief(relief, earth, options, result);
 }
 

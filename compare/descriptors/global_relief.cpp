@@ -54,7 +54,49 @@ void check_relief_options(int points, double bin_width) {
   }
 }
 
+// The index of the centre nearest `value` among ascending `centres`.
+std::size_t nearest_ascending(const std::vector<double>& centres, double value) {
+  const auto above = std::lower_bound(centres.begin(), centres.end(), value);
+  if (above == centres.begin()) return 0;
+  if (above == centres.end()) return centres.size() - 1;
+  const auto below = above - 1;
+  return static_cast<std::size_t>((value - *below <= *above - value ? below : above) - centres.begin());
+}
+
 }  // namespace
+
+std::function<double(const std::array<double, 3>&)> nearest_cell_sampler(const GlobalGrid& grid, double no_data_value) {
+  if (grid.latitudes.empty() || grid.longitudes.empty()) {
+    throw InputError(fmt::format("sampling {}: no latitudes or longitudes", grid.variable));
+  }
+  // Latitudes ascending with their rows; longitudes wrapped into [0, 360) and sorted with their
+  // columns, then the first repeated 360° on and the last 360° back, so the nearest is found
+  // round the circle.
+  std::vector<std::pair<double, std::size_t>> rows, columns;
+  for (std::size_t row = 0; row < grid.latitudes.size(); ++row) rows.push_back({grid.latitudes[row], row});
+  for (std::size_t column = 0; column < grid.longitudes.size(); ++column) {
+    columns.push_back({std::fmod(std::fmod(grid.longitudes[column], 360.0) + 360.0, 360.0), column});
+  }
+  std::sort(rows.begin(), rows.end());
+  std::sort(columns.begin(), columns.end());
+  columns.insert(columns.begin(), {columns.back().first - 360.0, columns.back().second});
+  columns.push_back({columns[1].first + 360.0, columns[1].second});
+  const auto firsts = [](const std::vector<std::pair<double, std::size_t>>& pairs) {
+    std::vector<double> values;
+    for (const auto& pair : pairs) values.push_back(pair.first);
+    return values;
+  };
+  return [&grid, no_data_value, rows, columns, latitudes = firsts(rows), longitudes = firsts(columns)](
+             const std::array<double, 3>& direction) {
+    const double latitude = std::asin(std::clamp(direction[2], -1.0, 1.0)) / degree;
+    const double longitude = std::fmod(std::atan2(direction[1], direction[0]) / degree + 360.0, 360.0);
+    const std::size_t row = rows[nearest_ascending(latitudes, latitude)].second;
+    const std::size_t column = columns[nearest_ascending(longitudes, longitude)].second;
+    const std::size_t cell = row * static_cast<std::size_t>(grid.elevation.width) + column;
+    const bool valid = grid.elevation.valid.empty() || grid.elevation.valid[cell];
+    return valid ? grid.elevation.values[cell] : no_data_value;
+  };
+}
 
 std::vector<AreaSample> area_samples(const GlobalGrid& grid) {
   const Grid<double>& elevation = grid.elevation;

@@ -17,6 +17,8 @@
 // Throws InputError when no cell is valid, points < 2 or bin_width <= 0.
 #pragma once
 
+#include <array>
+#include <functional>
 #include <vector>
 
 #include "core/io/global_grid.hpp"
@@ -49,6 +51,11 @@ GlobalRelief global_relief(const GlobalGrid& grid, double sea_level = 0.0, int p
 // planet's regions and their solid angles); valid_area is the sum of the areas.
 GlobalRelief weighted_relief(std::vector<AreaSample> samples, double sea_level = 0.0, int points = 101,
                              double bin_width = 500.0);
+
+// The grid as a function on the unit sphere, for spherical_spectrum.hpp: at direction (x, y, z) the
+// cell whose centre is nearest in latitude asin(z) and in longitude atan2(y, x) (taken round the
+// circle), or `no_data_value` where that cell is no-data. The grid must outlive the function.
+std::function<double(const std::array<double, 3>&)> nearest_cell_sampler(const GlobalGrid& grid, double no_data_value);
 
 // Sarle's bimodality coefficient of the area-weighted distribution, (γ² + 1)/κ with the population
 // skewness γ = m3/m2^1.5 and kurtosis κ = m4/m2² (not in excess): 1/3 for a normal distribution, 5/9
