@@ -1,0 +1,188 @@
+// Construction, checks, neighbours and ledger of the layered ground (see layered_ground.hpp).
+#include "core/layered/layered_ground.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "core/params/hydraulic.hpp"
+#include "core/sum.hpp"
+
+namespace gt {
+namespace {
+
+constexpr const char* algorithm_name = "erosion.layered";
+// A topsoil may exceed its maximum by the rounding of reserve-then-deposit, never by more.
+constexpr double topsoil_rounding = 1e-6;
+
+void require(bool condition, const std::string& what) {
+  if (!condition) throw InputError(fmt::format("{}: {}", algorithm_name, what));
+}
+
+template <class Real>
+void require_thickness(Real value, const std::string& what, std::size_t c) {
+  require(std::isfinite(static_cast<double>(value)) && value >= Real(0),
+          fmt::format("{} of cell {} is {}: it must be finite and >= 0", what, c, static_cast<double>(value)));
+}
+
+template <class Real>
+void check_sizes(const LayeredGround<Real>& ground) {
+  require(ground.width > 0 && ground.height > 0, "the ground needs at least one cell");
+  require(ground.bedrock_layer_count > 0, "the ground needs at least one bedrock layer");
+  const std::size_t cells = ground.cells();
+  const auto bedrock_cells = cells * static_cast<std::size_t>(ground.bedrock_layer_count);
+  require(ground.surface.size() == cells && ground.vegetation.size() == cells &&
+              ground.soil.size() == cells * soil_layer_count * soil_component_count &&
+              ground.bedrock.size() == bedrock_cells && ground.bedrock_type.size() == bedrock_cells,
+          "the ground's arrays do not match its size");
+  for (double size : {ground.cell_size_x, ground.cell_size_y}) {
+    require(std::isfinite(size) && size >= 1e-9 && size <= 1e9,
+            fmt::format("cell size {} m is outside [1e-9, 1e9]", size));
+  }
+}
+
+template <class Real>
+void check_column(const LayeredGround<Real>& ground, const LayeredParams& params, std::size_t c) {
+  require(std::isfinite(static_cast<double>(ground.surface[c])), fmt::format("surface of cell {} is not finite", c));
+  const double vegetation = static_cast<double>(ground.vegetation[c]);
+  require(vegetation >= 0.0 && vegetation <= 1.0, fmt::format("vegetation of cell {} is {}, not in [0, 1]", c, vegetation));
+  for (int layer = 0; layer < soil_layer_count; ++layer) {
+    for (int component = 0; component < soil_component_count; ++component) {
+      require_thickness(ground.soil_at(layer, component, c),
+                        fmt::format("soil layer {} {}", layer, soil_component_name(component)), c);
+    }
+  }
+  const double topsoil = static_cast<double>(ground.soil_thickness(0, c));
+  require(topsoil <= params.topsoil_max * (1.0 + topsoil_rounding),
+          fmt::format("topsoil of cell {} is {} m, more than topsoil_max = {} m", c, topsoil, params.topsoil_max));
+  for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
+    require_thickness(ground.bedrock_at(layer, c), fmt::format("bedrock layer {}", layer), c);
+    const auto type = ground.bedrock_type_at(layer, c);
+    require(type >= 0 && static_cast<std::size_t>(type) < params.bedrock_types.size(),
+            fmt::format("bedrock layer {} of cell {} has type {}, but only {} types are defined", layer, c, type,
+                        params.bedrock_types.size()));
+  }
+}
+
+}  // namespace
+
+template <class Real>
+LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredProfile& profile,
+                                        const LayeredParams& params, double vegetation) {
+  validate_layered_params(params);
+  validate_layered_profile(profile, params);
+  require(!surface.has_mask(), "the layered ground takes a surface without no-data cells");
+  check_finite(surface, "layered ground surface");
+  check_cell_size(surface, "layered ground surface");
+  require(vegetation >= 0.0 && vegetation <= 1.0, fmt::format("vegetation {} is not in [0, 1]", vegetation));
+  // Per cell: the state (surface, vegetation, 10 soil components, the bedrock thicknesses and
+  // types) twice (a step's snapshot) and the 8 outflows of a step.
+  const auto bedrock_layers = static_cast<long long>(profile.bedrock.size());
+  const auto state_bytes = static_cast<long long>(sizeof(Real)) * (2 + soil_layer_count * soil_component_count + bedrock_layers) +
+                           static_cast<long long>(sizeof(std::int32_t)) * bedrock_layers;
+  check_grid_fits(surface.width, surface.height,
+                  2 * state_bytes + static_cast<long long>(sizeof(Real)) * layered_neighbour_count, "layered ground");
+  LayeredGround<Real> ground;
+  ground.width = surface.width;
+  ground.height = surface.height;
+  ground.cell_size_x = surface.cell_size_x;
+  ground.cell_size_y = surface.cell_size_y;
+  ground.bedrock_layer_count = static_cast<int>(profile.bedrock.size());
+  const std::size_t cells = ground.cells();
+  ground.surface.assign(surface.values.begin(), surface.values.end());
+  ground.vegetation.assign(cells, static_cast<Real>(vegetation));
+  ground.soil.assign(cells * soil_layer_count * soil_component_count, Real(0));
+  ground.bedrock.assign(cells * profile.bedrock.size(), Real(0));
+  ground.bedrock_type.assign(cells * profile.bedrock.size(), 0);
+  for (std::size_t c = 0; c < cells; ++c) {
+    for (int component = 0; component < soil_component_count; ++component) {
+      const auto i = static_cast<std::size_t>(component);
+      ground.soil_at(0, component, c) = static_cast<Real>(profile.topsoil[i]);
+      ground.soil_at(1, component, c) = static_cast<Real>(profile.subsoil[i]);
+    }
+    for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
+      const auto& bedrock = profile.bedrock[static_cast<std::size_t>(layer)];
+      ground.bedrock_at(layer, c) = static_cast<Real>(bedrock.thickness);
+      ground.bedrock_type[ground.bedrock_index(layer, c)] = bedrock.type;
+    }
+  }
+  return ground;
+}
+
+template <class Real>
+void check_layered_ground(const LayeredGround<Real>& ground, const LayeredParams& params) {
+  check_sizes(ground);
+  require(params.border == LayeredBorder::closed || (ground.width >= 3 && ground.height >= 3),
+          fmt::format("a periodic border needs at least 3 × 3 cells, not {} × {}", ground.width, ground.height));
+  for (std::size_t c = 0; c < ground.cells(); ++c) check_column(ground, params, c);
+}
+
+template <class Real>
+std::optional<std::size_t> layered_neighbour(const LayeredGround<Real>& ground, LayeredBorder border, int x, int y,
+                                             int k) {
+  const auto offset = pipe_offsets[static_cast<std::size_t>(k)];
+  int nx = x + offset.dx;
+  int ny = y + offset.dy;
+  if (border == LayeredBorder::periodic) {
+    nx = (nx + ground.width) % ground.width;
+    ny = (ny + ground.height) % ground.height;
+  } else if (nx < 0 || ny < 0 || nx >= ground.width || ny >= ground.height) {
+    return std::nullopt;
+  }
+  return ground.cell(nx, ny);
+}
+
+double layered_neighbour_distance(double cell_size_x, double cell_size_y, int k) {
+  if (k < 2) return cell_size_x;
+  if (k < 4) return cell_size_y;
+  return std::hypot(cell_size_x, cell_size_y);
+}
+
+double LayeredLedger::total() const {
+  CompensatedSum sum;
+  for (double volume : components) sum.add(volume);
+  for (double volume : bedrock) sum.add(volume);
+  return sum.value();
+}
+
+template <class Real>
+LayeredLedger layered_ledger(const LayeredGround<Real>& ground, std::size_t bedrock_type_count) {
+  const double area = ground.cell_size_x * ground.cell_size_y;
+  std::array<CompensatedSum, soil_component_count> components;
+  std::vector<CompensatedSum> bedrock(bedrock_type_count);
+  for (std::size_t c = 0; c < ground.cells(); ++c) {
+    for (int layer = 0; layer < soil_layer_count; ++layer) {
+      for (int component = 0; component < soil_component_count; ++component) {
+        components[static_cast<std::size_t>(component)].add(static_cast<double>(ground.soil_at(layer, component, c)) * area);
+      }
+    }
+    for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
+      bedrock.at(static_cast<std::size_t>(ground.bedrock_type_at(layer, c)))
+          .add(static_cast<double>(ground.bedrock_at(layer, c)) * area);
+    }
+  }
+  LayeredLedger ledger;
+  for (std::size_t i = 0; i < components.size(); ++i) ledger.components[i] = components[i].value();
+  for (const auto& sum : bedrock) ledger.bedrock.push_back(sum.value());
+  return ledger;
+}
+
+LayeredConversions no_conversions(std::size_t bedrock_type_count) {
+  LayeredConversions conversions;
+  conversions.fragmented_from.assign(bedrock_type_count, 0.0);
+  return conversions;
+}
+
+#define GT_LAYERED_GROUND_INSTANTIATE(Real)                                                                    \
+  template LayeredGround<Real> make_layered_ground(const Heightmap&, const LayeredProfile&, const LayeredParams&, \
+                                                   double);                                                   \
+  template void check_layered_ground(const LayeredGround<Real>&, const LayeredParams&);                       \
+  template std::optional<std::size_t> layered_neighbour(const LayeredGround<Real>&, LayeredBorder, int, int, int); \
+  template LayeredLedger layered_ledger(const LayeredGround<Real>&, std::size_t);
+GT_LAYERED_GROUND_INSTANTIATE(float)
+GT_LAYERED_GROUND_INSTANTIATE(double)
+#undef GT_LAYERED_GROUND_INSTANTIATE
+
+}  // namespace gt

@@ -1,0 +1,207 @@
+// Parameter declarations and validation of `erosion.layered` (see layered.hpp).
+#include "core/params/layered.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace gt {
+namespace {
+
+constexpr const char* algorithm_name = "erosion.layered";
+constexpr double fragment_sum_tolerance = 1e-9;
+
+void require(bool condition, const std::string& what) {
+  if (!condition) throw InputError(fmt::format("{}: {}", algorithm_name, what));
+}
+
+void require_finite(double value, const std::string& name) {
+  require(std::isfinite(value), fmt::format("{} = {} must be finite", name, value));
+}
+
+void require_at_least(double value, double low, const std::string& name) {
+  require_finite(value, name);
+  require(value >= low, fmt::format("{} = {} must be >= {}", name, value, low));
+}
+
+void require_positive(double value, const std::string& name) {
+  require_finite(value, name);
+  require(value > 0.0, fmt::format("{} = {} must be > 0", name, value));
+}
+
+void require_repose(double tan_phi, const std::string& name) {
+  require(std::isfinite(tan_phi) && tan_phi > 0.0,
+          fmt::format("{} = {} is not the tangent of an angle of repose in (0°, 90°): it must be finite and > 0",
+                      name, tan_phi));
+}
+
+void validate_bedrock_type(const BedrockType& type, std::size_t index) {
+  const std::string name = fmt::format("bedrock type {}", index);
+  require_repose(type.repose_tan, name + " repose_tan");
+  double sum = 0.0;
+  for (int size = 0; size < fragment_size_count; ++size) {
+    const double share = type.fragments[static_cast<std::size_t>(size)];
+    const std::string share_name = fmt::format("{} fragment share of {}", name, soil_component_name(size + 1));
+    require_at_least(share, 0.0, share_name);
+    require(share <= 1.0, fmt::format("{} = {} must be <= 1", share_name, share));
+    sum += share;
+  }
+  require(std::abs(sum - 1.0) <= fragment_sum_tolerance,
+          fmt::format("{} fragment shares K_rock sum to {}, not 1", name, sum));
+  require_at_least(type.hardness, 0.0, name + " hardness");
+}
+
+template <class Enum>
+Enum choice_from_json(const nlohmann::json& resolved, const char* key, std::initializer_list<Enum> options,
+                      const char* (*name_of)(Enum)) {
+  const auto text = resolved.at(key).get<std::string>();
+  for (Enum option : options) {
+    if (text == name_of(option)) return option;
+  }
+  throw InputError(fmt::format("{}: unknown {} '{}'", algorithm_name, key, text));
+}
+
+constexpr std::array<const char*, soil_component_count> repose_keys{"repose_org", "repose_sand", "repose_gravel",
+                                                                    "repose_stones", "repose_boulders"};
+
+}  // namespace
+
+const char* soil_component_name(int component) {
+  static constexpr std::array<const char*, soil_component_count> names{"org", "sand", "gravel", "stones",
+                                                                       "boulders"};
+  return names.at(static_cast<std::size_t>(component));
+}
+
+const char* talus_amount_name(TalusAmount amount) {
+  return amount == TalusAmount::thesis ? "thesis" : "seed001_code";
+}
+
+const char* creep_denominator_name(CreepDenominator denominator) {
+  return denominator == CreepDenominator::singular ? "singular" : "seed001_code";
+}
+
+const char* layered_border_name(LayeredBorder border) {
+  return border == LayeredBorder::closed ? "closed" : "periodic";
+}
+
+std::vector<BedrockType> seed001_bedrock_types() {
+  return {{4.0, {0.0, 0.2, 0.3, 0.5}, 1.0}, {1e7, {0.0, 0.1, 0.2, 0.7}, 2.0}, {1e7, {0.0, 0.05, 0.15, 0.8}, 3.0}};
+}
+
+void validate_layered_params(const LayeredParams& params) {
+  require_positive(params.time_step, "time_step");
+  for (int component = 0; component < soil_component_count; ++component) {
+    require_repose(params.repose_tan[static_cast<std::size_t>(component)], repose_keys[static_cast<std::size_t>(component)]);
+  }
+  require_at_least(params.vegetation_repose, 0.0, "vegetation_repose");
+  require_at_least(params.depth_factor, 1.0, "depth_factor");
+  require(params.depth_factor <= 1.5, fmt::format("depth_factor = {} must be <= 1.5", params.depth_factor));
+  require_positive(params.topsoil_max, "topsoil_max");
+  require(!params.bedrock_types.empty(), "at least one bedrock type is needed");
+  for (std::size_t i = 0; i < params.bedrock_types.size(); ++i) validate_bedrock_type(params.bedrock_types[i], i);
+  require_at_least(params.creep_rate, 0.0, "creep_rate");
+  require_positive(params.critical_slope, "critical_slope");
+  require_positive(params.creep_denominator_floor, "creep_denominator_floor");
+  require(params.creep_denominator_floor <= 1.0,
+          fmt::format("creep_denominator_floor = {} must be <= 1", params.creep_denominator_floor));
+}
+
+const ParamSpecs& layered_param_specs() {
+  static const ParamSpecs specs = {
+      {"time_step", ParamKind::real, 0.2, 1e-6, 10.0, {}, "s",
+       "Δt of talus (eq. 3.3) and creep (eq. 3.4); talus overshoots (never rests) above 2/9"},
+      {"repose_org", ParamKind::real, 1.25, 1e-6, 1e7, {}, "1", "tan φ of pure organic matter (eq. 3.1)"},
+      {"repose_sand", ParamKind::real, 0.7, 1e-6, 1e7, {}, "1", "tan φ of pure sand (rock0)"},
+      {"repose_gravel", ParamKind::real, 0.8, 1e-6, 1e7, {}, "1", "tan φ of pure gravel (rock1)"},
+      {"repose_stones", ParamKind::real, 1.0, 1e-6, 1e7, {}, "1", "tan φ of pure stones (rock2)"},
+      {"repose_boulders", ParamKind::real, 1.0, 1e-6, 1e7, {}, "1", "tan φ of pure boulders (rock3)"},
+      {"vegetation_repose", ParamKind::real, 0.2, 0.0, 10.0, {}, "1", "K_sveg: repose × (1 + K_sveg·veg)"},
+      {"depth_factor", ParamKind::real, 1.25, 1.0, 1.5, {}, "1", "K_depth: soil layer j's repose × K_depth^j"},
+      {"topsoil_max", ParamKind::real, 1.5, 1e-6, 1e3, {}, "m", "largest topsoil thickness; overflow goes down"},
+      {"creep_rate", ParamKind::real, 0.01, 0.0, 10.0, {}, "m/s", "K_z of Roering's creep flux"},
+      {"critical_slope", ParamKind::real, 1.40, 1e-3, 100.0, {}, "1", "S_c, where the creep flux diverges"},
+      {"creep_denominator", ParamKind::choice, "singular", 0, 0, {"singular", "seed001_code"}, "",
+       "the thesis's 1 − (s/S_c)², or its code's max(1 − (s/S_c)², creep_denominator_floor)"},
+      {"creep_denominator_floor", ParamKind::real, 0.1, 1e-6, 1.0, {}, "1",
+       "least creep denominator of the seed001_code variant"},
+      {"talus_amount", ParamKind::choice, "thesis", 0, 0, {"thesis", "seed001_code"}, "",
+       "eq. 3.3 per neighbour then clamped, or the code's min(½·maxΔh·rand, h_layer) split ∝ Δh"},
+      {"talus_random", ParamKind::boolean, true, 0, 0, {}, "", "talus amounts × rand(0.9, 1) (thesis and code)"},
+      {"creep_random", ParamKind::boolean, true, 0, 0, {}, "", "creep amounts × rand(0.9, 1) (thesis; the code: off)"},
+      {"border", ParamKind::choice, "closed", 0, 0, {"closed", "periodic"}, "",
+       "closed walls, or the code's periodic wrap (grids of at least 3 × 3)"},
+      {"seed", ParamKind::integer, 1, 0, 4294967295.0, {}, "count", "key of the counter-based random numbers"},
+  };
+  return specs;
+}
+
+LayeredParams layered_params_from_json(const nlohmann::json& resolved) {
+  LayeredParams params;
+  params.time_step = resolved.at("time_step").get<double>();
+  for (std::size_t component = 0; component < repose_keys.size(); ++component) {
+    params.repose_tan[component] = resolved.at(repose_keys[component]).get<double>();
+  }
+  params.vegetation_repose = resolved.at("vegetation_repose").get<double>();
+  params.depth_factor = resolved.at("depth_factor").get<double>();
+  params.topsoil_max = resolved.at("topsoil_max").get<double>();
+  params.creep_rate = resolved.at("creep_rate").get<double>();
+  params.critical_slope = resolved.at("critical_slope").get<double>();
+  params.creep_denominator = choice_from_json(resolved, "creep_denominator",
+                                              {CreepDenominator::singular, CreepDenominator::seed001_code},
+                                              creep_denominator_name);
+  params.creep_denominator_floor = resolved.at("creep_denominator_floor").get<double>();
+  params.talus_amount = choice_from_json(resolved, "talus_amount", {TalusAmount::thesis, TalusAmount::seed001_code},
+                                         talus_amount_name);
+  params.talus_random = resolved.at("talus_random").get<bool>();
+  params.creep_random = resolved.at("creep_random").get<bool>();
+  params.border = choice_from_json(resolved, "border", {LayeredBorder::closed, LayeredBorder::periodic},
+                                   layered_border_name);
+  params.seed = resolved.at("seed").get<std::uint32_t>();
+  validate_layered_params(params);
+  return params;
+}
+
+std::vector<BedrockType> bedrock_types_from_json(const nlohmann::json& types) {
+  require(types.is_array(), "bedrock_types must be an array of {repose_tan, fragments, hardness}");
+  std::vector<BedrockType> out;
+  for (const auto& entry : types) {
+    require(entry.is_object() && entry.contains("repose_tan") && entry.contains("fragments") &&
+                entry.at("fragments").is_array() && entry.at("fragments").size() == fragment_size_count,
+            fmt::format("bedrock type {} needs repose_tan, fragments (4 shares) and hardness", out.size()));
+    BedrockType type;
+    type.repose_tan = entry.at("repose_tan").get<double>();
+    for (int size = 0; size < fragment_size_count; ++size) {
+      type.fragments[static_cast<std::size_t>(size)] = entry.at("fragments").at(static_cast<std::size_t>(size)).get<double>();
+    }
+    type.hardness = entry.value("hardness", 1.0);
+    validate_bedrock_type(type, out.size());
+    out.push_back(type);
+  }
+  require(!out.empty(), "at least one bedrock type is needed");
+  return out;
+}
+
+void validate_layered_profile(const LayeredProfile& profile, const LayeredParams& params) {
+  double topsoil = 0.0;
+  for (int component = 0; component < soil_component_count; ++component) {
+    const auto c = static_cast<std::size_t>(component);
+    require_at_least(profile.topsoil[c], 0.0, fmt::format("profile topsoil {}", soil_component_name(component)));
+    require_at_least(profile.subsoil[c], 0.0, fmt::format("profile subsoil {}", soil_component_name(component)));
+    topsoil += profile.topsoil[c];
+  }
+  require(topsoil <= params.topsoil_max,
+          fmt::format("profile topsoil is {} m thick, more than topsoil_max = {} m", topsoil, params.topsoil_max));
+  require(!profile.bedrock.empty(), "the profile needs at least one bedrock layer");
+  for (std::size_t layer = 0; layer < profile.bedrock.size(); ++layer) {
+    const auto& bedrock = profile.bedrock[layer];
+    require(bedrock.type >= 0 && static_cast<std::size_t>(bedrock.type) < params.bedrock_types.size(),
+            fmt::format("profile bedrock layer {} has type {}, but only {} types are defined", layer, bedrock.type,
+                        params.bedrock_types.size()));
+    require_at_least(bedrock.thickness, 0.0, fmt::format("profile bedrock layer {} thickness", layer));
+  }
+}
+
+}  // namespace gt

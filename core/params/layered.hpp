@@ -1,0 +1,114 @@
+// Parameters of seed 001's layered ground (digest 001_erosion_terrain.md §3.1, §3.10, §3.11, §5):
+// columns of two soil–rock layers (topsoil, subsoil) of five components over typed bedrock, and the
+// constants of its talus collapse and soil creep. Algorithm family `erosion.layered`. Shared by
+// reference/erosion/layered/* and (later) the GPU twin.
+//
+// Units: lengths and thicknesses in metres (a component "volume" is its thickness over the cell,
+// volume = thickness·l_x·l_y), Δt in seconds, repose angles as tan φ (dimensionless), K_z in m/s.
+//
+// Where the thesis and its code (commit 496cef1) disagree, the thesis is the default and the code's
+// choice a named parameter:
+//   - `talus_amount`: thesis eq. 3.3, Δt·Δh·rand(0.9,1)/2 per neighbour, then the availability
+//     clamp; `seed001_code`: min(½·max Δh·rand, h_layer) in total (no Δt), split ∝ Δh_i.
+//   - `creep_denominator`: thesis, Roering's 1 − (s/S_c)² (singular at S_c); `seed001_code`: the
+//     denominator is at least `creep_denominator_floor` (0.1).
+//   - `talus_random`, `creep_random`: the thesis draws rand(0.9, 1) in both (eq. 3.3, 3.4); the code
+//     only in talus. Off, the factor is 1.
+//   - `border`: the thesis states none; closed walls by default, `periodic` is the code's wrap.
+//   - The code's depth factor (subsoil × 1.25) is K_depth^j with K_depth = 1.25, not a variant.
+//   - The code indexes the bedrock fragment table by layer index instead of type: a bug, not kept.
+// Constants the thesis leaves open take the code's values: K_sveg 0.2, K_depth 1.25, topsoil
+// maximum 1.5 m, S_c 1.40, K_z 0.01, and the three bedrock types (tan φ 4.0, 1e7, 1e7 — only type 0
+// ever falls — with the fragment shares of new_soil_from_bedrock_type). Δt defaults to 0.2 s, not the
+// thesis's 0.5 (§3.2, for the single-material 4-neighbour case): eq. 3.3's per-neighbour amounts
+// sum over 8 neighbours, so a peak's difference to its neighbours becomes Δh·(1 − 4.5·Δt), which
+// overshoots for Δt > 2/9 s and makes a pile oscillate in a checkerboard that never rests. Bedrock hardness has no value in either source: it is a relative
+// rank (1, 2, 3) for force erosion (§3.12) and is not read by talus or creep.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/params.hpp"
+
+namespace gt {
+
+// The components of a soil–rock layer (§3.1): organic matter and rock fragments rock0..rock3.
+enum class SoilComponent { org, sand, gravel, stones, boulders };
+inline constexpr int soil_component_count = 5;
+inline constexpr int fragment_size_count = 4;  // sand .. boulders: the sizes bedrock breaks into
+// "org", "sand", "gravel", "stones", "boulders".
+const char* soil_component_name(int component);
+
+enum class TalusAmount { thesis, seed001_code };
+enum class CreepDenominator { singular, seed001_code };
+enum class LayeredBorder { closed, periodic };
+
+// "thesis", "seed001_code"; "singular", "seed001_code"; "closed", "periodic".
+const char* talus_amount_name(TalusAmount amount);
+const char* creep_denominator_name(CreepDenominator denominator);
+const char* layered_border_name(LayeredBorder border);
+
+struct BedrockType {
+  double repose_tan = 4.0;  // tan φ of the rock face
+  // K_rock: shares of sand, gravel, stones, boulders a fallen volume breaks into; each in [0, 1],
+  // summing to 1.
+  std::array<double, fragment_size_count> fragments{0.0, 0.2, 0.3, 0.5};
+  double hardness = 1.0;  // relative, ≥ 0; for force erosion (§3.12)
+};
+
+// The code's three bedrock types (§3.10 [code]).
+std::vector<BedrockType> seed001_bedrock_types();
+
+struct LayeredParams {
+  double time_step = 0.2;  // Δt, s
+  // tan φ of a pure layer of each component, eq. 3.1: org, sand, gravel, stones, boulders.
+  std::array<double, soil_component_count> repose_tan{1.25, 0.7, 0.8, 1.0, 1.0};
+  double vegetation_repose = 0.2;  // K_sveg of eq. 3.1, ≥ 0
+  double depth_factor = 1.25;      // K_depth: layer j's repose × K_depth^j, in [1, 1.5]
+  double topsoil_max = 1.5;        // largest topsoil thickness, m (> 0); the subsoil has none
+  std::vector<BedrockType> bedrock_types = seed001_bedrock_types();
+  double creep_rate = 0.01;        // K_z of Roering's q = K_z·s/(1 − (s/S_c)²), m/s
+  double critical_slope = 1.40;    // S_c, > 0
+  CreepDenominator creep_denominator = CreepDenominator::singular;
+  double creep_denominator_floor = 0.1;  // the seed001_code variant's least denominator, in (0, 1]
+  TalusAmount talus_amount = TalusAmount::thesis;
+  bool talus_random = true;
+  bool creep_random = true;
+  LayeredBorder border = LayeredBorder::closed;
+  std::uint32_t seed = 1;          // key of the counter-based RNG (core/rng.hpp)
+};
+
+// Throws InputError ("erosion.layered: ...") naming the first bad value: non-finite numbers, Δt ≤ 0,
+// a repose tan ≤ 0 (angle outside (0°, 90°)), K_sveg < 0, K_depth outside [1, 1.5], topsoil
+// maximum ≤ 0, no bedrock type, fragment shares outside [0, 1] or not summing to 1 (±1e-9),
+// negative hardness, K_z < 0, S_c ≤ 0, a denominator floor outside (0, 1].
+void validate_layered_params(const LayeredParams& params);
+
+// The scalar parameters (everything but the bedrock types) with names, ranges and units.
+const ParamSpecs& layered_param_specs();
+// From resolve_params(..., layered_param_specs(), ...); the bedrock types keep their defaults.
+LayeredParams layered_params_from_json(const nlohmann::json& resolved);
+// [{"repose_tan": 4.0, "fragments": [0, 0.2, 0.3, 0.5], "hardness": 1}, ...]; validated as above.
+std::vector<BedrockType> bedrock_types_from_json(const nlohmann::json& types);
+
+// The initial profile of every column, top down: topsoil and subsoil component thicknesses (m) and
+// the bedrock layers (type index into LayeredParams::bedrock_types, thickness m).
+struct LayeredProfile {
+  std::array<double, soil_component_count> topsoil{};
+  std::array<double, soil_component_count> subsoil{};
+  struct Bedrock {
+    int type = 0;
+    double thickness = 0.0;
+  };
+  std::vector<Bedrock> bedrock;
+};
+
+// Throws InputError for a negative or non-finite thickness, a topsoil thicker than the maximum, a
+// bedrock type out of range, or a profile without bedrock layers.
+void validate_layered_profile(const LayeredProfile& profile, const LayeredParams& params);
+
+}  // namespace gt

@@ -1,0 +1,119 @@
+// Column operations of the layered ground: reserve-then-deposit, removal, fragmentation (digest 001
+// §3.1, §3.10; decisions in column.hpp). Units: metres.
+#include "reference/erosion/layered/column.hpp"
+
+#include <algorithm>
+
+namespace gt::reference {
+namespace {
+
+// Takes the share `fraction` (in [0, 1]) of every component of soil layer `layer`; returns it.
+template <class Real>
+Composition<Real> take_share(LayeredGround<Real>& ground, int layer, std::size_t c, Real fraction) {
+  Composition<Real> taken{};
+  for (int component = 0; component < soil_component_count; ++component) {
+    Real& stored = ground.soil_at(layer, component, c);
+    const Real part = fraction == Real(1) ? stored : stored * fraction;
+    stored -= part;
+    taken[static_cast<std::size_t>(component)] = part;
+  }
+  return taken;
+}
+
+// Takes up to `left` from soil layer `layer` proportionally, adds it to `removed` and lowers `left`
+// by it. A layer thicker than the request meets it whole (left = 0), so that the rounding of the
+// proportional shares never reaches into the layer below.
+template <class Real>
+void take_from_soil_layer(LayeredGround<Real>& ground, int layer, std::size_t c, Real& left, Composition<Real>& removed) {
+  const Real thickness = ground.soil_thickness(layer, c);
+  if (thickness <= Real(0) || left <= Real(0)) return;
+  const bool whole_layer = left >= thickness;
+  const Composition<Real> taken = take_share(ground, layer, c, whole_layer ? Real(1) : left / thickness);
+  for (std::size_t i = 0; i < taken.size(); ++i) removed[i] += taken[i];
+  left = whole_layer ? left - thickness : Real(0);
+}
+
+}  // namespace
+
+template <class Real>
+Real composition_total(const Composition<Real>& material) {
+  Real sum = 0;
+  for (Real part : material) sum += part;
+  return sum;
+}
+
+template <class Real>
+int top_nonempty_layer(const LayeredGround<Real>& ground, std::size_t c) {
+  for (int layer = 0; layer < soil_layer_count; ++layer) {
+    if (ground.soil_thickness(layer, c) > Real(0)) return layer;
+  }
+  for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
+    if (ground.bedrock_at(layer, c) > Real(0)) return soil_layer_count + layer;
+  }
+  return -1;
+}
+
+template <class Real>
+void organize_horizon(LayeredGround<Real>& ground, std::size_t c, Real needed, Real topsoil_max) {
+  const Real topsoil = ground.soil_thickness(0, c);
+  if (topsoil <= Real(0) || topsoil + needed <= topsoil_max) return;
+  const Real fraction = std::clamp((topsoil + needed - topsoil_max) / topsoil, Real(0), Real(1));
+  const Composition<Real> moved = take_share(ground, 0, c, fraction);
+  for (int component = 0; component < soil_component_count; ++component) {
+    ground.soil_at(1, component, c) += moved[static_cast<std::size_t>(component)];
+  }
+}
+
+template <class Real>
+void deposit_soil(LayeredGround<Real>& ground, std::size_t c, const Composition<Real>& material, Real topsoil_max) {
+  const Real total = composition_total(material);
+  if (total <= Real(0)) return;
+  organize_horizon(ground, c, total, topsoil_max);
+  for (int component = 0; component < soil_component_count; ++component) {
+    ground.soil_at(0, component, c) += material[static_cast<std::size_t>(component)];
+  }
+  organize_horizon(ground, c, Real(0), topsoil_max);
+  ground.surface[c] += total;
+}
+
+template <class Real>
+Removed<Real> remove_soil(LayeredGround<Real>& ground, std::size_t c, Real amount) {
+  Removed<Real> removed;
+  Real left = amount;
+  for (int layer = 0; layer < soil_layer_count; ++layer) take_from_soil_layer(ground, layer, c, left, removed.soil);
+  const int top = top_nonempty_layer(ground, c);
+  if (left > Real(0) && top >= soil_layer_count) {
+    removed.bedrock_layer = top - soil_layer_count;
+    Real& thickness = ground.bedrock_at(removed.bedrock_layer, c);
+    removed.bedrock = std::min(left, thickness);
+    thickness -= removed.bedrock;
+  }
+  ground.surface[c] -= removed.total();
+  return removed;
+}
+
+template <class Real>
+Composition<Real> fragments(const BedrockType& type, Real amount) {
+  Composition<Real> out{};
+  Real given = 0;
+  for (int size = 0; size + 1 < fragment_size_count; ++size) {
+    const Real part = static_cast<Real>(type.fragments[static_cast<std::size_t>(size)]) * amount;
+    out[static_cast<std::size_t>(size + 1)] = part;
+    given += part;
+  }
+  out[fragment_size_count] = std::max(amount - given, Real(0));
+  return out;
+}
+
+#define GT_LAYERED_COLUMN_INSTANTIATE(Real)                                                             \
+  template Real composition_total(const Composition<Real>&);                                            \
+  template int top_nonempty_layer(const LayeredGround<Real>&, std::size_t);                             \
+  template void organize_horizon(LayeredGround<Real>&, std::size_t, Real, Real);                        \
+  template void deposit_soil(LayeredGround<Real>&, std::size_t, const Composition<Real>&, Real);       \
+  template Removed<Real> remove_soil(LayeredGround<Real>&, std::size_t, Real);                          \
+  template Composition<Real> fragments(const BedrockType&, Real);
+GT_LAYERED_COLUMN_INSTANTIATE(float)
+GT_LAYERED_COLUMN_INSTANTIATE(double)
+#undef GT_LAYERED_COLUMN_INSTANTIATE
+
+}  // namespace gt::reference
