@@ -2,6 +2,7 @@
 #include "core/layered/layered_ground.hpp"
 
 #include <cmath>
+#include <type_traits>
 #include <string>
 
 #include <fmt/format.h>
@@ -17,14 +18,23 @@ constexpr const char* algorithm_name = "erosion.layered";
 // A topsoil may exceed its maximum by the rounding of reserve-then-deposit, never by more.
 constexpr double topsoil_rounding = 1e-6;
 
-void require(bool condition, const std::string& what) {
-  if (!condition) throw InputError(fmt::format("{}: {}", algorithm_name, what));
+// `what` is the message, or a function making it: the per-cell checks run every step, so their
+// messages are only formatted when one fails.
+template <class Message>
+void require(bool condition, const Message& what) {
+  if (condition) return;
+  if constexpr (std::is_invocable_v<Message>) {
+    throw InputError(fmt::format("{}: {}", algorithm_name, what()));
+  } else {
+    throw InputError(fmt::format("{}: {}", algorithm_name, what));
+  }
 }
 
-template <class Real>
-void require_thickness(Real value, const std::string& what, std::size_t c) {
-  require(std::isfinite(static_cast<double>(value)) && value >= Real(0),
-          fmt::format("{} of cell {} is {}: it must be finite and >= 0", what, c, static_cast<double>(value)));
+template <class Real, class Name>
+void require_thickness(Real value, const Name& what, std::size_t c) {
+  require(std::isfinite(static_cast<double>(value)) && value >= Real(0), [&] {
+    return fmt::format("{} of cell {} is {}: it must be finite and >= 0", what(), c, static_cast<double>(value));
+  });
 }
 
 template <class Real>
@@ -45,24 +55,27 @@ void check_sizes(const LayeredGround<Real>& ground) {
 
 template <class Real>
 void check_column(const LayeredGround<Real>& ground, const LayeredParams& params, std::size_t c) {
-  require(std::isfinite(static_cast<double>(ground.surface[c])), fmt::format("surface of cell {} is not finite", c));
+  require(std::isfinite(static_cast<double>(ground.surface[c])), [&] { return fmt::format("surface of cell {} is not finite", c); });
   const double vegetation = static_cast<double>(ground.vegetation[c]);
-  require(vegetation >= 0.0 && vegetation <= 1.0, fmt::format("vegetation of cell {} is {}, not in [0, 1]", c, vegetation));
+  require(vegetation >= 0.0 && vegetation <= 1.0,
+          [&] { return fmt::format("vegetation of cell {} is {}, not in [0, 1]", c, vegetation); });
   for (int layer = 0; layer < soil_layer_count; ++layer) {
     for (int component = 0; component < soil_component_count; ++component) {
       require_thickness(ground.soil_at(layer, component, c),
-                        fmt::format("soil layer {} {}", layer, soil_component_name(component)), c);
+                        [&] { return fmt::format("soil layer {} {}", layer, soil_component_name(component)); }, c);
     }
   }
   const double topsoil = static_cast<double>(ground.soil_thickness(0, c));
-  require(topsoil <= params.topsoil_max * (1.0 + topsoil_rounding),
-          fmt::format("topsoil of cell {} is {} m, more than topsoil_max = {} m", c, topsoil, params.topsoil_max));
+  require(topsoil <= params.topsoil_max * (1.0 + topsoil_rounding), [&] {
+    return fmt::format("topsoil of cell {} is {} m, more than topsoil_max = {} m", c, topsoil, params.topsoil_max);
+  });
   for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
-    require_thickness(ground.bedrock_at(layer, c), fmt::format("bedrock layer {}", layer), c);
+    require_thickness(ground.bedrock_at(layer, c), [&] { return fmt::format("bedrock layer {}", layer); }, c);
     const auto type = ground.bedrock_type_at(layer, c);
-    require(type >= 0 && static_cast<std::size_t>(type) < params.bedrock_types.size(),
-            fmt::format("bedrock layer {} of cell {} has type {}, but only {} types are defined", layer, c, type,
-                        params.bedrock_types.size()));
+    require(type >= 0 && static_cast<std::size_t>(type) < params.bedrock_types.size(), [&] {
+      return fmt::format("bedrock layer {} of cell {} has type {}, but only {} types are defined", layer, c, type,
+                         params.bedrock_types.size());
+    });
   }
 }
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "core/mutant.hpp"
+
 namespace gt::reference {
 namespace {
 
@@ -36,13 +38,6 @@ void take_from_soil_layer(LayeredGround<Real>& ground, int layer, std::size_t c,
 }  // namespace
 
 template <class Real>
-Real composition_total(const Composition<Real>& material) {
-  Real sum = 0;
-  for (Real part : material) sum += part;
-  return sum;
-}
-
-template <class Real>
 int top_nonempty_layer(const LayeredGround<Real>& ground, std::size_t c) {
   for (int layer = 0; layer < soil_layer_count; ++layer) {
     if (ground.soil_thickness(layer, c) > Real(0)) return layer;
@@ -68,11 +63,12 @@ template <class Real>
 void deposit_soil(LayeredGround<Real>& ground, std::size_t c, const Composition<Real>& material, Real topsoil_max) {
   const Real total = composition_total(material);
   if (total <= Real(0)) return;
-  organize_horizon(ground, c, total, topsoil_max);
+  const bool reserve = !mutant_active("erosion.layered.deposit_without_reserve");  // mutant: no room made
+  if (reserve) organize_horizon(ground, c, total, topsoil_max);
   for (int component = 0; component < soil_component_count; ++component) {
     ground.soil_at(0, component, c) += material[static_cast<std::size_t>(component)];
   }
-  organize_horizon(ground, c, Real(0), topsoil_max);
+  if (reserve) organize_horizon(ground, c, Real(0), topsoil_max);
   ground.surface[c] += total;
 }
 
@@ -88,7 +84,7 @@ Removed<Real> remove_soil(LayeredGround<Real>& ground, std::size_t c, Real amoun
     removed.bedrock = std::min(left, thickness);
     thickness -= removed.bedrock;
   }
-  ground.surface[c] -= removed.total();
+  if (!mutant_active("erosion.layered.surface_not_lowered")) ground.surface[c] -= removed.total();
   return removed;
 }
 
@@ -101,12 +97,13 @@ Composition<Real> fragments(const BedrockType& type, Real amount) {
     out[static_cast<std::size_t>(size + 1)] = part;
     given += part;
   }
-  out[fragment_size_count] = std::max(amount - given, Real(0));
+  // Mutant: the boulders' remainder is lost.
+  out[fragment_size_count] = mutant_active("erosion.layered.fragments_without_boulders") ? Real(0)
+                                                                                          : std::max(amount - given, Real(0));
   return out;
 }
 
 #define GT_LAYERED_COLUMN_INSTANTIATE(Real)                                                             \
-  template Real composition_total(const Composition<Real>&);                                            \
   template int top_nonempty_layer(const LayeredGround<Real>&, std::size_t);                             \
   template void organize_horizon(LayeredGround<Real>&, std::size_t, Real, Real);                        \
   template void deposit_soil(LayeredGround<Real>&, std::size_t, const Composition<Real>&, Real);       \

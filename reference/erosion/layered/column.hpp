@@ -29,9 +29,18 @@ namespace gt::reference {
 template <class Real>
 using Composition = std::array<Real, soil_component_count>;  // component thicknesses, m
 
-// Sum in component order.
+// Sum of the parts in index order (the order the GPU twin adds them in).
+template <class Real, std::size_t Count>
+Real ordered_total(const std::array<Real, Count>& parts) {
+  Real sum = 0;
+  for (Real part : parts) sum += part;
+  return sum;
+}
+
 template <class Real>
-Real composition_total(const Composition<Real>& material);
+Real composition_total(const Composition<Real>& material) {
+  return ordered_total(material);
+}
 
 // What remove_soil took: soil components (both soil layers together) and bedrock of one layer.
 template <class Real>

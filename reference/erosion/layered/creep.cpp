@@ -79,8 +79,6 @@ Outflows<Real> creep_outflows(const LayeredGround<Real>& ground, const LayeredPa
 template <class Real>
 void creep_step(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
                 LayeredConversions& conversions) {
-  validate_layered_params(params);
-  check_layered_ground(ground, params);
   const Outflows<Real> outflows = creep_outflows(ground, params, step);
   apply_outflows(ground, outflows, params, false, conversions);
 }

@@ -30,6 +30,7 @@ Outflows<Real> creep_outflows(const LayeredGround<Real>& ground, const LayeredPa
 
 // Checks the ground (check_layered_ground), then one compute-then-apply step. Creep converts
 // nothing; `conversions` is passed for the common step protocol and stays as it is.
+// Valid parameters and ground assumed, as talus_step (talus.hpp).
 template <class Real>
 void creep_step(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
                 LayeredConversions& conversions);

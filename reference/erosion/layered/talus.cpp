@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/mutant.hpp"
 #include "reference/erosion/layered/column.hpp"
 
 namespace gt::reference {
@@ -110,7 +111,8 @@ NeighbourAmounts<Real> column_outflow(const LayeredGround<Real>& ground, const L
 template <class Real>
 Real soil_repose(const LayeredGround<Real>& ground, const LayeredParams& params, std::size_t c) {
   const Real vegetation_factor = Real(1) + static_cast<Real>(params.vegetation_repose) * ground.vegetation[c];
-  Real depth_factor = 1;
+  // Mutant: every soil layer stands at twice its repose slope.
+  Real depth_factor = mutant_active("erosion.layered.repose_doubled") ? Real(2) : Real(1);
   Real least = unbounded<Real>;
   for (int layer = 0; layer < soil_layer_count; ++layer) {
     const Real thickness = ground.soil_thickness(layer, c);
@@ -134,8 +136,6 @@ Outflows<Real> talus_outflows(const LayeredGround<Real>& ground, const LayeredPa
 template <class Real>
 void talus_step(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
                 LayeredConversions& conversions) {
-  validate_layered_params(params);
-  check_layered_ground(ground, params);
   const Outflows<Real> outflows = talus_outflows(ground, params, step);
   apply_outflows(ground, outflows, params, true, conversions);
 }

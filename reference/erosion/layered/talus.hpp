@@ -37,7 +37,9 @@ Real soil_repose(const LayeredGround<Real>& ground, const LayeredParams& params,
 template <class Real>
 Outflows<Real> talus_outflows(const LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step);
 
-// Checks the ground (check_layered_ground), then one compute-then-apply step.
+// One compute-then-apply step. The parameters and the ground must be valid (validate_layered_params,
+// check_layered_ground: make_layered_ground's grounds are, and the steps keep them so); they are not
+// checked every step, so that what a bug does to the state reaches the comparison's layers.* checks.
 template <class Real>
 void talus_step(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
                 LayeredConversions& conversions);

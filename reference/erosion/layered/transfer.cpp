@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/mutant.hpp"
 #include "core/rng.hpp"
 #include "reference/erosion/layered/column.hpp"
 
@@ -13,13 +14,6 @@ namespace {
 template <class Real>
 Real layer_thickness(const LayeredGround<Real>& ground, int layer, std::size_t c) {
   return layer < soil_layer_count ? ground.soil_thickness(layer, c) : ground.bedrock_at(layer - soil_layer_count, c);
-}
-
-template <class Real>
-Real amounts_total(const NeighbourAmounts<Real>& amounts) {
-  Real sum = 0;
-  for (Real amount : amounts) sum += amount;
-  return sum;
 }
 
 // What `amount` m leaving donor n carries, from the snapshot `before`: its topmost non-empty
@@ -32,7 +26,10 @@ Composition<Real> flux_composition(const LayeredGround<Real>& before, std::size_
     const Real share = amount / before.soil_thickness(layer, n);
     Composition<Real> carried{};
     for (int component = 0; component < soil_component_count; ++component) {
-      carried[static_cast<std::size_t>(component)] = before.soil_at(layer, component, n) * share;
+      // Mutant: each component arrives as the next one (organic as sand, ..., boulders as organic).
+      const int arriving = mutant_active("erosion.layered.flux_components_shifted") ? (component + 1) % soil_component_count
+                                                                                     : component;
+      carried[static_cast<std::size_t>(arriving)] = before.soil_at(layer, component, n) * share;
     }
     return carried;
   }
@@ -91,7 +88,7 @@ NeighbourAmounts<Real> neighbour_surfaces(const LayeredGround<Real>& ground, Lay
 
 template <class Real>
 void clamp_to_available(NeighbourAmounts<Real>& amounts, Real available) {
-  const Real total = amounts_total(amounts);
+  const Real total = ordered_total(amounts);
   if (total <= available) return;
   const Real factor = available / total;
   for (Real& amount : amounts) amount *= factor;
@@ -106,7 +103,7 @@ void apply_outflows(LayeredGround<Real>& ground, const Outflows<Real>& outflows,
   for (int y = 0; y < ground.height; ++y) {
     for (int x = 0; x < ground.width; ++x) {
       const std::size_t c = ground.cell(x, y);
-      const Real outflow = amounts_total(outflows[c]);
+      const Real outflow = ordered_total(outflows[c]);
       if (outflow > Real(0)) give(ground, before, c, outflow, conversions);
       const Composition<Real> arriving = gather(before, outflows, params, x, y, conversions);
       const bool received = composition_total(arriving) > Real(0);

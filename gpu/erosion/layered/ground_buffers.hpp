@@ -1,0 +1,94 @@
+// The layered ground of seed 001 (digest 001 §3.1) on the GPU, and the compute-then-apply step its
+// talus collapse (§3.10) and soil creep (§3.11) share. GPU side of core/layered/layered_ground.hpp
+// and reference/erosion/layered/transfer.hpp (apply_outflows).
+//
+// LayeredGroundBuffers(ground, params) allocates one storage buffer per array of LayeredGround<float>
+// (soil and bedrock twice as long: the current state, then the step's snapshot), the bedrock types,
+// the 8 outflows per column, the per-column conversions and the std140 parameter block of
+// gpu/shaders/erosion/layered/layered.glsl, and uploads `ground`. compute_then_apply(outflow,
+// apply, step, conversions) runs one step: snapshot copy, the process's outflow pass, the apply
+// pass (gpu/shaders/erosion/layered/apply.comp), then adds the step's fragmentation to
+// `conversions` (m³; per-column floats summed here in double in column order). download() returns
+// the current state.
+// LayeredSlopeProcess(outflow_shader, clear_vegetation) is one such process (talus.hpp, creep.hpp
+// make them): its outflow program and the apply program, with LAYERED_CLEAR_VEGETATION when asked.
+// Needs a current GlContext. Units: metres.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/layered/layered_ground.hpp"
+#include "core/params/layered.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/shader_program.hpp"
+
+namespace gt::gpu {
+
+// Mirror of `LayeredBlock` in gpu/shaders/erosion/layered/layered.glsl (std140; offsets checked in
+// ground_buffers.cpp). Every real is the reference<float>'s static_cast<float> of the double.
+struct LayeredBlock {
+  float repose_tan_a[4];
+  float distance[8];
+  std::int32_t grid_size[2];
+  std::int32_t bedrock_layer_count;
+  std::int32_t periodic;
+  float repose_boulders;
+  float time_step;
+  float vegetation_repose;
+  float depth_factor;
+  float topsoil_max;
+  float creep_rate;
+  float critical_slope;
+  float creep_denominator_floor;
+  float random_base;
+  float random_span;
+  std::uint32_t seed;
+  std::uint32_t step_number;
+  std::int32_t talus_thesis_amount;
+  std::int32_t talus_random;
+  std::int32_t creep_random;
+  std::int32_t creep_floored;
+};
+
+class LayeredGroundBuffers {
+ public:
+  // Validates `params` and `ground` (InputError) and uploads it.
+  LayeredGroundBuffers(const LayeredGround<float>& ground, const LayeredParams& params);
+
+  // A ground of the constructed size and bedrock layer count (else std::invalid_argument).
+  void upload(const LayeredGround<float>& ground);
+  LayeredGround<float> download() const;
+
+  void compute_then_apply(const ComputeProgram& outflow, const ComputeProgram& apply, std::uint32_t step,
+                          LayeredConversions& conversions);
+
+ private:
+  void bind() const;
+  void add_conversions(LayeredConversions& conversions) const;
+
+  LayeredParams params_;
+  LayeredGround<float> shape_;  // sizes and cell sizes; its arrays stay empty
+  LayeredBlock block_;
+  UniformBuffer block_buffer_;
+  StorageBuffer surface_;
+  StorageBuffer soil_;
+  StorageBuffer bedrock_;
+  StorageBuffer bedrock_type_;
+  StorageBuffer vegetation_;
+  StorageBuffer bedrock_types_;
+  StorageBuffer outflows_;
+  StorageBuffer conversions_;
+};
+
+class LayeredSlopeProcess {
+ public:
+  LayeredSlopeProcess(const std::string& outflow_shader, bool clear_vegetation);
+  void step(LayeredGroundBuffers& ground, std::uint32_t step, LayeredConversions& conversions) const;
+
+ private:
+  ComputeProgram outflow_;
+  ComputeProgram apply_;
+};
+
+}  // namespace gt::gpu

@@ -1,0 +1,277 @@
+// The GPU twins of the layered ground's talus collapse and soil creep (digest 001 §3.10-3.11;
+// gpu/erosion/layered/) against reference<float> (reference/erosion/layered/), step for step, on a
+// random 24 × 24 layered terrain (l_x = 1 m, l_y = 1.25 m) with a 10 m cliff whose edge is bare
+// bedrock, so that talus fragments it: rows of that edge alternate a falling top layer (type 0), a
+// hard top layer (type 1) over a falling layer exposed in the cliff face (so the hard one falls), and
+// the same with the falling layer buried below the cliff's foot (nothing falls); closed and periodic
+// borders, the thesis and seed001_code variants.
+//
+// Error model, fixed before running: the shaders do the reference<float>'s float operations in its
+// order, `precise` (no fused multiply-add); +, −, × are correctly rounded in GLSL 4.50 (§4.7.1) and
+// every division goes through gt_div (gpu/shaders/erosion/layered/division.glsl), which rounds to
+// nearest by integer long division; min, max, clamp and comparisons are exact; the distances and
+// constants are the reference's float casts, made on the host; the random factors are the same
+// integer hash. So the state is expected bit for bit: bound 0 on every array, every step. (The one
+// exception the model allows, subnormal operands or results, which GLSL may flush to zero, is
+// checked absent from the reference's state after every pass.)
+// Conversions: fragmented_from is summed in double in column order on both sides from the same
+// floats, so it is expected equal. fragmented_into: the reference adds each flux's fragment f as
+// double(f)·A; the GPU first sums a column's ≤ 8 fragments in float (error ≤ γ_7 = 7u/(1 − 7u) of
+// their sum, u = 2^-24), then adds those in double. Both double sums of N nonnegative terms err by
+// ≤ (N + 1)·2^-53 of the total, so |gpu − ref| ≤ (γ_7 + 2(N + 1)·2^-53)·ref.
+// Determinism: a second GPU run from the same ground gives the same bits and conversions.
+// gt_div itself is checked against the CPU's division on pairs spread over the exponents.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/layered/layered_ground.hpp"
+#include "core/params/layered.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/erosion/layered/creep.hpp"
+#include "gpu/erosion/layered/ground_buffers.hpp"
+#include "gpu/erosion/layered/talus.hpp"
+#include "gpu/shader_program.hpp"
+#include "reference/erosion/layered/creep.hpp"
+#include "reference/erosion/layered/talus.hpp"
+#include "tests/support/gl_test.hpp"
+
+namespace {
+
+using gt::LayeredConversions;
+using gt::LayeredGround;
+using gt::LayeredParams;
+
+constexpr int side = 24;
+constexpr int cliff_x = 12;  // columns x ≥ cliff_x stand 10 m higher; x = cliff_x is bare bedrock
+
+struct Variant {
+  const char* name;
+  gt::LayeredBorder border;
+  bool seed001_code;  // the code's talus amount and creep denominator, creep without rand
+};
+
+LayeredParams params_for(const Variant& variant) {
+  LayeredParams params;
+  params.border = variant.border;
+  params.seed = 7;
+  if (variant.seed001_code) {
+    params.talus_amount = gt::TalusAmount::seed001_code;
+    params.creep_denominator = gt::CreepDenominator::seed001_code;
+    params.creep_random = false;
+  }
+  return params;
+}
+
+// Bedrock of a bare edge column in row y, as the header describes (profile: 3 m of type 0, 2 m of
+// type 1, 40 m of type 0).
+void set_edge_bedrock(LayeredGround<float>& ground, std::size_t c, int y) {
+  if (y % 3 == 0) return;
+  ground.bedrock_type[ground.bedrock_index(0, c)] = 1;
+  if (y % 3 == 2) ground.bedrock_at(1, c) = 15.0f;
+}
+
+// Soil component thicknesses in [0, 0.3) m, about a third of them 0 (so some layers hold no
+// organic matter and some are empty).
+float random_component(std::mt19937& random) {
+  std::uniform_real_distribution<float> share(0.0f, 1.0f);
+  const float u = share(random);
+  return u < 0.35f ? 0.0f : 0.3f * share(random);
+}
+
+LayeredGround<float> random_ground(const LayeredParams& params) {
+  std::mt19937 random(2024);
+  std::uniform_real_distribution<double> bump(0.0, 2.0);
+  gt::Heightmap surface(side, side);
+  surface.cell_size_x = 1.0;
+  surface.cell_size_y = 1.25;
+  for (int y = 0; y < side; ++y) {
+    for (int x = 0; x < side; ++x) surface.at(x, y) = 0.2 * y + bump(random) + (x >= cliff_x ? 10.0 : 0.0);
+  }
+  gt::LayeredProfile profile;
+  profile.bedrock = {{0, 3.0}, {1, 2.0}, {0, 40.0}};
+  auto ground = gt::make_layered_ground<float>(surface, profile, params, 0.0);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (int y = 0; y < side; ++y) {
+    for (int x = 0; x < side; ++x) {
+      const std::size_t c = ground.cell(x, y);
+      const bool bare = x == cliff_x;
+      for (int layer = 0; layer < gt::soil_layer_count; ++layer) {
+        for (int component = 0; component < gt::soil_component_count; ++component) {
+          ground.soil_at(layer, component, c) = bare ? 0.0f : random_component(random);
+        }
+      }
+      ground.vegetation[c] = unit(random);
+      if (bare) set_edge_bedrock(ground, c, y);
+      if (!bare && unit(random) < 0.2f) ground.bedrock_at(0, c) = 0.0f;  // an emptied layer, skipped
+    }
+  }
+  return ground;
+}
+
+template <class T>
+void expect_same_bits(const char* name, const std::vector<T>& expected, const std::vector<T>& actual,
+                      const std::string& when) {
+  ASSERT_EQ(expected.size(), actual.size()) << when << ": " << name;
+  std::size_t differing = 0, first = 0;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    if (std::memcmp(&expected[i], &actual[i], sizeof(T)) == 0) continue;
+    if (differing++ == 0) first = i;
+  }
+  EXPECT_EQ(differing, 0u) << when << ": " << name << " differs in " << differing << " entries, first at " << first
+                           << " (reference " << expected[first] << ", GPU " << actual[first] << ")";
+}
+
+// The error model's premise: no state value is subnormal.
+void expect_no_subnormals(const LayeredGround<float>& ground, const std::string& when) {
+  for (const auto* values : {&ground.surface, &ground.soil, &ground.bedrock, &ground.vegetation}) {
+    for (float value : *values) {
+      ASSERT_TRUE(value == 0.0f || std::abs(value) >= std::numeric_limits<float>::min()) << when << ": " << value;
+    }
+  }
+}
+
+void expect_same_ground(const LayeredGround<float>& expected, const LayeredGround<float>& actual,
+                        const std::string& when) {
+  expect_no_subnormals(expected, when);
+  expect_same_bits("surface", expected.surface, actual.surface, when);
+  expect_same_bits("soil", expected.soil, actual.soil, when);
+  expect_same_bits("bedrock", expected.bedrock, actual.bedrock, when);
+  expect_same_bits("bedrock_type", expected.bedrock_type, actual.bedrock_type, when);
+  expect_same_bits("vegetation", expected.vegetation, actual.vegetation, when);
+}
+
+// The bound of the header's model for fragmented_into after `steps` apply passes.
+void expect_conversions(const LayeredConversions& expected, const LayeredConversions& actual, int steps,
+                        const std::string& when) {
+  EXPECT_EQ(expected.fragmented_from, actual.fragmented_from) << when;
+  const double u = std::ldexp(1.0, -24);
+  const double gamma7 = 7.0 * u / (1.0 - 7.0 * u);
+  const double terms = static_cast<double>(side) * side * gt::layered_neighbour_count * steps;
+  const double relative = gamma7 + 2.0 * (terms + 1.0) * std::ldexp(1.0, -53);
+  for (std::size_t i = 0; i < expected.fragmented_into.size(); ++i) {
+    EXPECT_LE(std::abs(actual.fragmented_into[i] - expected.fragmented_into[i]), relative * expected.fragmented_into[i])
+        << when << ": fragments into " << gt::soil_component_name(static_cast<int>(i));
+  }
+}
+
+bool moved(const LayeredGround<float>& before, const LayeredGround<float>& after) {
+  return before.soil != after.soil || before.surface != after.surface;
+}
+
+// Pairs a ≥ 0, b > 0 with normal quotients: random significands over exponents 2^-40 .. 2^40, equal
+// significands (the quotient a power of two), b = 1, and a = 0.
+std::vector<float> division_pairs() {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> significand(1.0f, 2.0f);
+  std::uniform_int_distribution<int> exponent(-40, 40);
+  std::vector<float> pairs;
+  for (int i = 0; i < 20000; ++i) {
+    const float b = std::ldexp(significand(random), exponent(random));
+    const float a = i % 10 == 0 ? b * 4.0f : std::ldexp(significand(random), exponent(random));
+    pairs.insert(pairs.end(), {a, i % 10 == 1 ? 1.0f : b});
+  }
+  pairs.insert(pairs.end(), {0.0f, 3.0f, 1.0f, 3.0f, 2.0f, 3.0f, std::nextafter(2.0f, 0.0f), 1.0f});
+  return pairs;
+}
+
+class LayeredGpuDivision : public gt::testing::GlTest {};
+
+TEST_F(LayeredGpuDivision, GtDivIsTheCpusFloatDivision) {
+  const auto pairs = division_pairs();
+  const std::size_t count = pairs.size() / 2;
+  const auto pair_buffer = gt::StorageBuffer::from(pairs);
+  gt::StorageBuffer quotient_buffer(count * sizeof(float));
+  pair_buffer.bind(0);
+  quotient_buffer.bind(1);
+  gt::ComputeProgram::load("erosion/layered/division_probe.comp").dispatch(static_cast<int>(count), 1, 64, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const auto quotients = quotient_buffer.download<float>(count);
+  std::vector<float> expected(count);
+  for (std::size_t i = 0; i < count; ++i) expected[i] = pairs[2 * i] / pairs[2 * i + 1];
+  expect_same_bits("gt_div", expected, quotients, "division probe");
+}
+
+class LayeredGpu : public gt::testing::GlTestWithParam<Variant> {};
+
+TEST_P(LayeredGpu, OneTalusStepIsTheFloatReferenceBitForBit) {
+  const auto params = params_for(GetParam());
+  const auto initial = random_ground(params);
+  auto reference = initial;
+  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::reference::talus_step(reference, params, 3, reference_conversions);
+  ASSERT_TRUE(moved(initial, reference));
+  ASSERT_GT(reference_conversions.fragmented_from[0], 0.0) << "the cliff's bedrock should fragment";
+  ASSERT_GT(reference_conversions.fragmented_from[1], 0.0) << "a hard layer over an exposed soft one should fall";
+
+  gt::gpu::LayeredGroundBuffers buffers(initial, params);
+  auto conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::gpu::layered_talus().step(buffers, 3, conversions);
+  expect_same_ground(reference, buffers.download(), "talus step");
+  expect_conversions(reference_conversions, conversions, 1, "talus step");
+}
+
+TEST_P(LayeredGpu, OneCreepStepIsTheFloatReferenceBitForBit) {
+  const auto params = params_for(GetParam());
+  const auto initial = random_ground(params);
+  auto reference = initial;
+  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::reference::creep_step(reference, params, 5, reference_conversions);
+  ASSERT_TRUE(moved(initial, reference));
+
+  gt::gpu::LayeredGroundBuffers buffers(initial, params);
+  auto conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::gpu::layered_creep().step(buffers, 5, conversions);
+  expect_same_ground(reference, buffers.download(), "creep step");
+  expect_conversions(reference_conversions, conversions, 1, "creep step");
+}
+
+// 20 iterations of creep then talus (the code's order, reference::slope_step), compared after
+// every pass; then a second GPU run from the same ground repeats the first bit for bit.
+TEST_P(LayeredGpu, TwentyMixedStepsFollowTheReferenceAndRepeat) {
+  const auto params = params_for(GetParam());
+  const auto initial = random_ground(params);
+  auto reference = initial;
+  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::gpu::LayeredGroundBuffers buffers(initial, params);
+  const auto creep = gt::gpu::layered_creep();
+  const auto talus = gt::gpu::layered_talus();
+  auto conversions = gt::no_conversions(params.bedrock_types.size());
+  const std::uint32_t steps = 20;
+  for (std::uint32_t step = 0; step < steps; ++step) {
+    const std::string when = "step " + std::to_string(step);
+    gt::reference::creep_step(reference, params, step, reference_conversions);
+    creep.step(buffers, step, conversions);
+    expect_same_ground(reference, buffers.download(), when + " creep");
+    gt::reference::talus_step(reference, params, step, reference_conversions);
+    talus.step(buffers, step, conversions);
+    expect_same_ground(reference, buffers.download(), when + " talus");
+    expect_conversions(reference_conversions, conversions, 2 * static_cast<int>(step + 1), when);
+    if (HasFailure()) return;
+  }
+  const auto first = buffers.download();
+  buffers.upload(initial);
+  auto again = gt::no_conversions(params.bedrock_types.size());
+  for (std::uint32_t step = 0; step < steps; ++step) {
+    creep.step(buffers, step, again);
+    talus.step(buffers, step, again);
+  }
+  expect_same_ground(first, buffers.download(), "second GPU run");
+  EXPECT_EQ(conversions.fragmented_from, again.fragmented_from);
+  EXPECT_EQ(conversions.fragmented_into, again.fragmented_into);
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, LayeredGpu,
+                         ::testing::Values(Variant{"closed_thesis", gt::LayeredBorder::closed, false},
+                                           Variant{"periodic_thesis", gt::LayeredBorder::periodic, false},
+                                           Variant{"closed_seed001_code", gt::LayeredBorder::closed, true},
+                                           Variant{"periodic_seed001_code", gt::LayeredBorder::periodic, true}),
+                         [](const ::testing::TestParamInfo<Variant>& info) { return std::string(info.param.name); });
+
+}  // namespace
