@@ -91,6 +91,7 @@ Algorithm thermal_jako_algorithm();
 Algorithm pipe_algorithm();
 Algorithm particle_algorithm();
 Algorithm beyer_algorithm();
+Algorithm layered_algorithm();
 std::vector<Algorithm> noise_algorithms();
 std::vector<Algorithm> cave_algorithms();
 Algorithm cave_endless_algorithm();

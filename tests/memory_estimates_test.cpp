@@ -100,7 +100,8 @@ INSTANTIATE_TEST_SUITE_P(FieldTwins, PeakMemory,
                                            MeasuredRun{"erosion.particle", 768,
                                                        {{"iterations", 1}, {"lifetime", 5}, {"ordering", "batch"}}},
                                            MeasuredRun{"erosion.beyer", 768,
-                                                       {{"iterations", 1}, {"lifetime", 5}, {"ordering", "batch"}}}),
+                                                       {{"iterations", 1}, {"lifetime", 5}, {"ordering", "batch"}}},
+                                           MeasuredRun{"erosion.layered", 384, {{"steps", 4}}}),
                          [](const ::testing::TestParamInfo<MeasuredRun>& info) {
                            std::string name = info.param.algorithm;
                            for (char& c : name) c = (c == '.') ? '_' : c;

@@ -354,7 +354,9 @@ TEST_F(PlanetChainGpu, VoronoiLabelsAreTheNearestCentroidsUpToTies) {
                                            wide[3 * label + 2] - directions[index][2]);
         misses += distance * distance > nearest[index].distance * nearest[index].distance + 0x1p-18 ? 1 : 0;
       }
-      if (rings == 2) EXPECT_EQ(misses, 0u) << "R = " << resolution << ": the 5×5 block holds the nearest centroid";
+      if (rings == 2) {
+        EXPECT_EQ(misses, 0u) << "R = " << resolution << ": the 5×5 block holds the nearest centroid";
+      }
       EXPECT_LE(misses, labels.size() / 100) << "R = " << resolution << ", " << rings << " ring(s)";
     }
   }

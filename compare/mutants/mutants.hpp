@@ -36,6 +36,7 @@ std::vector<Mutant> thermal_mutants();  // compare/mutants/thermal.cpp: erosion.
 std::vector<Mutant> pipe_mutants();     // compare/mutants/pipe.cpp: erosion.pipe, erosion family
 std::vector<Mutant> particle_mutants();  // compare/mutants/particle.cpp: erosion.particle, erosion family
 std::vector<Mutant> beyer_mutants();     // compare/mutants/beyer.cpp: erosion.beyer, erosion family
+std::vector<Mutant> layered_mutants();   // compare/mutants/layered.cpp: erosion.layered, erosion family
 std::vector<Mutant> noise_mutants();    // compare/mutants/noise.cpp
 std::vector<Mutant> cave_mutants();     // compare/mutants/cave.cpp
 std::vector<Mutant> render_mutants();   // compare/mutants/render.cpp

@@ -1,0 +1,633 @@
+// The driver's view of seed 001's layered ground (issue 14; digest 001 §3.1, §3.10–3.11, §4):
+// a heightmap given a stated soil–rock profile in every column, then `steps` iterations of the
+// slope processes (reference/erosion/slope_step.hpp: creep, then talus), in ref<double> and
+// ref<float>, with a ledger per material and the pictures a geologist reads.
+//
+// The initial profile (the same in every column, hung from the input's surface), from parameters:
+//   soil                 the components' shares (org, sand, gravel, stones, boulders) of topsoil and
+//                        subsoil: loam (0.4, 0.3, 0.15, 0.1, 0.05 over 0.1, 0.35, 0.25, 0.2, 0.1),
+//                        sand (pure sand in both), scree (0, 0.1, 0.3, 0.3, 0.3 in both)
+//   topsoil_thickness, subsoil_thickness    m; soft_rock_thickness m of bedrock type 0 (the code's
+//                        soft rock, tan φ 4, the only one that falls), over hard_rock_thickness m of
+//                        type 1 (tan φ 1e7: it never falls; the code makes it 1e6 m, which would
+//                        drown the ledger's precision: it only needs to outlast the relief)
+//   vegetation           the initial density in [0, 1] on every column
+//
+// Checks (ledgers as volumes, m³; V the total volume of all materials at the start; S steps):
+//   ledger.materials.cpu, .cpu_float   the largest |V_m(end) − V_m(start) − converted into m + converted
+//                        out of m| / V over the materials (5 components, each bedrock type)
+//   ledger.total.cpu, .cpu_float       |ΣV(end) − ΣV(start)| / V: conversions move volume between
+//                        materials and never create or destroy it (fragmentation is the only one yet)
+//   ledger.conversions.cpu             |bedrock fragmented − fragments made| / V
+//     Bound of all three: S·R·2u (tests/layered_reference_test.cpp's model: each stored thickness
+//     passes through at most R = 32 roundings a step, each within u of what the cell holds of the
+//     material, and what moved is at most V), u the unit roundoff of the run's type.
+//   layers.invalid.cpu                 columns with a negative or non-finite thickness, or a topsoil
+//                        above topsoil_max·(1 + 64u) (two organizes leave it at the maximum within a
+//                        few roundings)
+//   layers.surface.cpu                 the largest |surface − Σ thicknesses − its start value| over
+//                        columns: the surface moves with every layer change; bound S·R·2u·(|surface| +
+//                        Σ thickness), the largest over the columns at the start
+//   spec.repose.cpu      (expect {"at_rest": true}) the largest slope to a lower neighbour over the
+//                        column's repose slope, written out here from eq. 3.1 (min over non-empty soil
+//                        layers j of K_depth^j·Σ_i tan φ_i·V_i/V·(1 + K_sveg·veg)), over columns with
+//                        soil: at rest it is below 1 (eq. 3.3 moves Δt·Δh/2 whenever a slope reaches
+//                        tan φ, so a resting slope lies below it)
+//   parity.surface.float_vs_double     informative: the largest |Δ surface|
+//   parity.state.gpu_vs_float          the GPU twin (gpu/erosion/layered/) stepped beside ref<float>,
+//                        compared at every ledger checkpoint: values differing in any bit, plus
+//                        conversion totals beyond their summation bound (bound 0; GpuShadow below)
+// Pictures: the surface material (the top non-empty layer's colour, mixed by composition, green by
+// vegetation), the cross-section along the middle row, topsoil and subsoil thickness and
+// vegetation as fields, the ledger over the steps.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/checks/threshold.hpp"
+#include "compare/field_files.hpp"
+#include "compare/report/images.hpp"
+#include "compare/report/plots.hpp"
+#include "compare/timing.hpp"
+#include "core/errors.hpp"
+#include "core/layered/layered_ground.hpp"
+#include "core/params/layered.hpp"
+#include "gpu/erosion/layered/creep.hpp"
+#include "gpu/erosion/layered/ground_buffers.hpp"
+#include "gpu/erosion/layered/talus.hpp"
+#include "reference/erosion/layered/column.hpp"
+#include "reference/erosion/layered/slope_step.hpp"
+
+namespace gt {
+namespace {
+
+constexpr double roundings_per_step = 32.0;  // tests/layered_reference_test.cpp's ledger model
+constexpr int ledger_points = 50;            // checkpoints of the ledger plot
+
+using Shares = std::array<double, soil_component_count>;
+
+const ParamSpecs& case_param_specs() {
+  static const ParamSpecs specs = [] {
+    ParamSpecs all = layered_param_specs();
+    all.push_back({"steps", ParamKind::integer, 200, 1, 100000, {}, "count", "iterations of creep then talus"});
+    all.push_back({"soil", ParamKind::choice, "loam", 0, 0, {"loam", "sand", "scree"}, "",
+                   "the initial topsoil's and subsoil's composition"});
+    all.push_back({"topsoil_thickness", ParamKind::real, 0.5, 0.0, 1e3, {}, "m", "initial topsoil (at most topsoil_max)"});
+    all.push_back({"subsoil_thickness", ParamKind::real, 1.5, 0.0, 1e4, {}, "m", "initial subsoil"});
+    all.push_back({"soft_rock_thickness", ParamKind::real, 5.0, 0.0, 1e5, {}, "m", "bedrock type 0 under the soil"});
+    all.push_back({"hard_rock_thickness", ParamKind::real, 1000.0, 0.0, 1e6, {}, "m",
+                   "bedrock type 1 under the soft rock (never falls)"});
+    all.push_back({"vegetation", ParamKind::real, 0.0, 0.0, 1.0, {}, "1", "initial vegetation density"});
+    return all;
+  }();
+  return specs;
+}
+
+std::array<Shares, soil_layer_count> soil_shares(const std::string& soil) {
+  if (soil == "sand") return {Shares{0, 1, 0, 0, 0}, Shares{0, 1, 0, 0, 0}};
+  if (soil == "scree") return {Shares{0, 0.1, 0.3, 0.3, 0.3}, Shares{0, 0.1, 0.3, 0.3, 0.3}};
+  return {Shares{0.4, 0.3, 0.15, 0.1, 0.05}, Shares{0.1, 0.35, 0.25, 0.2, 0.1}};
+}
+
+LayeredProfile profile_from(const nlohmann::json& resolved) {
+  const auto shares = soil_shares(resolved.at("soil").get<std::string>());
+  const double topsoil = resolved.at("topsoil_thickness").get<double>();
+  const double subsoil = resolved.at("subsoil_thickness").get<double>();
+  LayeredProfile profile;
+  for (std::size_t component = 0; component < shares[0].size(); ++component) {
+    profile.topsoil[component] = shares[0][component] * topsoil;
+    profile.subsoil[component] = shares[1][component] * subsoil;
+  }
+  profile.bedrock = {{0, resolved.at("soft_rock_thickness").get<double>()},
+                     {1, resolved.at("hard_rock_thickness").get<double>()}};
+  return profile;
+}
+
+struct LayeredSetup {
+  LayeredParams params;
+  LayeredProfile profile;
+  std::string soil;  // loam, sand, scree
+  int steps = 0;
+  double vegetation = 0.0;
+  Heightmap surface;
+};
+
+// Every material's volume in one list: the 5 components, then each bedrock type.
+std::vector<double> material_volumes(const LayeredLedger& ledger) {
+  std::vector<double> volumes(ledger.components.begin(), ledger.components.end());
+  volumes.insert(volumes.end(), ledger.bedrock.begin(), ledger.bedrock.end());
+  return volumes;
+}
+
+std::vector<double> conversion_net(const LayeredConversions& conversions, std::size_t types) {
+  std::vector<double> net(conversions.fragmented_into.begin(), conversions.fragmented_into.end());
+  for (std::size_t type = 0; type < types; ++type) {
+    net.push_back(type < conversions.fragmented_from.size() ? -conversions.fragmented_from[type] : 0.0);
+  }
+  return net;
+}
+
+std::string material_name(std::size_t material) {
+  return material < soil_component_count ? soil_component_name(int(material))
+                                         : fmt::format("bedrock type {}", material - soil_component_count);
+}
+
+template <class Real>
+struct LayeredRun {
+  LayeredGround<Real> ground;
+  LayeredConversions conversions;
+  std::vector<int> checkpoints;                    // steps done at each ledger point
+  std::vector<std::vector<double>> volumes;        // per checkpoint, per material, m³
+  std::vector<std::vector<double>> converted;      // per checkpoint, per material, net conversion m³
+};
+
+// Called at each ledger checkpoint with the steps done and the state then.
+template <class Real>
+using CheckpointObserver = std::function<void(int done, const LayeredGround<Real>& ground, const LayeredConversions&)>;
+
+template <class Real>
+LayeredRun<Real> run_layered(const LayeredSetup& setup, const CheckpointObserver<Real>& observe = {}) {
+  const std::size_t types = setup.params.bedrock_types.size();
+  LayeredRun<Real> run{make_layered_ground<Real>(setup.surface, setup.profile, setup.params, setup.vegetation),
+                       no_conversions(types), {}, {}, {}};
+  const int every = std::max(1, setup.steps / ledger_points);
+  const auto record = [&](int done) {
+    run.checkpoints.push_back(done);
+    run.volumes.push_back(material_volumes(layered_ledger(run.ground, types)));
+    run.converted.push_back(conversion_net(run.conversions, types));
+    if (observe) observe(done, run.ground, run.conversions);
+  };
+  record(0);
+  for (int step = 0; step < setup.steps; ++step) {
+    reference::slope_step(run.ground, setup.params, static_cast<std::uint32_t>(step), run.conversions);
+    if ((step + 1) % every == 0 || step + 1 == setup.steps) record(step + 1);
+  }
+  return run;
+}
+
+template <class Real>
+double ledger_bound(int steps) {
+  return steps * roundings_per_step * 2.0 * std::numeric_limits<Real>::epsilon() / 2.0;
+}
+
+template <class Real>
+void add_ledger_checks(const LayeredRun<Real>& run, int steps, const std::string& backend, CaseResult& result) {
+  const auto& start = run.volumes.front();
+  const auto& end = run.volumes.back();
+  const auto& converted = run.converted.back();
+  double total_start = 0.0, total_end = 0.0, worst = 0.0;
+  std::size_t worst_material = 0;
+  for (std::size_t material = 0; material < start.size(); ++material) {
+    total_start += start[material];
+    total_end += end[material];
+  }
+  for (std::size_t material = 0; material < start.size(); ++material) {
+    const double drift = std::abs(end[material] - start[material] - converted[material]) / total_start;
+    if (drift > worst) {
+      worst = drift;
+      worst_material = material;
+    }
+  }
+  const double bound = ledger_bound<Real>(steps);
+  result.checks.push_back(bounded_check(
+      "ledger.materials." + backend, worst, bound, std::nullopt,
+      fmt::format("largest |V_end − V_start − converted| / V over the materials ({}), V = {:.6g} m³; bound S·R·2u "
+                  "with S = {} steps, R = {}",
+                  material_name(worst_material), total_start, steps, roundings_per_step)));
+  result.checks.push_back(bounded_check("ledger.total." + backend, std::abs(total_end - total_start) / total_start, bound,
+                                        std::nullopt,
+                                        fmt::format("|ΣV_end − ΣV_start| / V: {:.6g} m³ against {:.6g} m³", total_end,
+                                                    total_start)));
+  if (backend != "cpu") return;
+  double fragmented = 0.0, made = 0.0;
+  for (const double volume : run.conversions.fragmented_from) fragmented += volume;
+  for (const double volume : run.conversions.fragmented_into) made += volume;
+  result.checks.push_back(bounded_check(
+      "ledger.conversions." + backend, std::abs(fragmented - made) / total_start, bound, std::nullopt,
+      fmt::format("|bedrock fragmented − fragments made| / V: {:.6g} m³ of bedrock broke into {:.6g} m³ of fragments",
+                  fragmented, made)));
+}
+
+// Columns breaking an invariant of the state (see the header).
+std::size_t invalid_columns(const LayeredGround<double>& ground, double topsoil_max) {
+  const double allowance = 64.0 * std::numeric_limits<double>::epsilon() / 2.0;
+  std::size_t invalid = 0;
+  for (std::size_t c = 0; c < ground.cells(); ++c) {
+    bool bad = !std::isfinite(ground.surface[c]) || ground.soil_thickness(0, c) > topsoil_max * (1.0 + allowance);
+    for (int layer = 0; layer < soil_layer_count; ++layer) {
+      for (int component = 0; component < soil_component_count; ++component) {
+        const double thickness = ground.soil_at(layer, component, c);
+        bad = bad || !std::isfinite(thickness) || thickness < 0.0;
+      }
+    }
+    for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
+      bad = bad || !std::isfinite(ground.bedrock_at(layer, c)) || ground.bedrock_at(layer, c) < 0.0;
+    }
+    invalid += bad ? 1 : 0;
+  }
+  return invalid;
+}
+
+double column_thickness(const LayeredGround<double>& ground, std::size_t c) {
+  double thickness = 0.0;
+  for (int layer = 0; layer < soil_layer_count; ++layer) thickness += ground.soil_thickness(layer, c);
+  for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) thickness += ground.bedrock_at(layer, c);
+  return thickness;
+}
+
+void add_state_checks(const LayeredGround<double>& start, const LayeredGround<double>& end, const LayeredSetup& setup,
+                      CaseResult& result) {
+  result.checks.push_back(bounded_check(
+      "layers.invalid.cpu", double(invalid_columns(end, setup.params.topsoil_max)), 0.0, std::nullopt,
+      "columns with a negative or non-finite thickness or surface, or a topsoil above topsoil_max·(1 + 64u)"));
+  double worst = 0.0, scale = 0.0;
+  for (std::size_t c = 0; c < start.cells(); ++c) {
+    const double base_start = start.surface[c] - column_thickness(start, c);
+    const double base_end = end.surface[c] - column_thickness(end, c);
+    worst = std::max(worst, std::abs(base_end - base_start));
+    scale = std::max(scale, std::abs(start.surface[c]) + column_thickness(start, c));
+  }
+  result.checks.push_back(bounded_check(
+      "layers.surface.cpu", worst, ledger_bound<double>(setup.steps) * scale, std::nullopt,
+      "largest change of surface − Σ thicknesses over the columns, m (the surface moves with every layer change)"));
+}
+
+// Eq. 3.1 with the depth factor, written apart from the reference's soil_repose: the least repose
+// slope over the column's non-empty soil layers; +∞ without soil.
+double repose_slope(const LayeredGround<double>& ground, const LayeredParams& params, std::size_t c) {
+  double least = std::numeric_limits<double>::infinity();
+  for (int layer = 0; layer < soil_layer_count; ++layer) {
+    const double thickness = ground.soil_thickness(layer, c);
+    if (thickness <= 0.0) continue;
+    double mixed = 0.0;
+    for (int component = 0; component < soil_component_count; ++component) {
+      mixed += params.repose_tan[std::size_t(component)] * ground.soil_at(layer, component, c) / thickness;
+    }
+    const double vegetation = 1.0 + params.vegetation_repose * ground.vegetation[c];
+    least = std::min(least, std::pow(params.depth_factor, layer) * mixed * vegetation);
+  }
+  return least;
+}
+
+void add_repose_check(const LayeredGround<double>& ground, const LayeredParams& params, CaseResult& result) {
+  double worst = 0.0;
+  for (int y = 0; y < ground.height; ++y) {
+    for (int x = 0; x < ground.width; ++x) {
+      const std::size_t c = ground.cell(x, y);
+      const double repose = repose_slope(ground, params, c);
+      if (!std::isfinite(repose)) continue;
+      for (int k = 0; k < layered_neighbour_count; ++k) {
+        const auto n = layered_neighbour(ground, params.border, x, y, k);
+        if (!n) continue;
+        const double slope = (ground.surface[c] - ground.surface[*n]) /
+                             layered_neighbour_distance(ground.cell_size_x, ground.cell_size_y, k);
+        worst = std::max(worst, slope / repose);
+      }
+    }
+  }
+  result.checks.push_back(bounded_check(
+      "spec.repose.cpu", worst, 1.0, std::nullopt,
+      "largest slope to a neighbour over the column's repose slope (eq. 3.1, written apart), columns with soil: "
+      "below 1 at rest"));
+}
+
+// ---- the GPU twin ---------------------------------------------------------------------------
+
+// The GPU twin (gpu/erosion/layered/) stepped beside ref<float> and compared with it at every ledger
+// checkpoint. Error model (gpu/erosion/layered/ground_buffers.hpp, tests/layered_gpu_test.cpp): the
+// same float operations in the same order, every division rounded to nearest by gt_div, so every
+// stored value is the same float: bound 0 bits. The fragments made are summed per column in float
+// on the GPU (up to 8 terms) before the host's double sum, so they may differ from the reference's
+// by (γ_7 + 2(N + 1)·2^-53) of the total, N the terms summed (columns × steps).
+class GpuShadow {
+ public:
+  explicit GpuShadow(const LayeredSetup& setup)
+      : buffers_(make_layered_ground<float>(setup.surface, setup.profile, setup.params, setup.vegetation), setup.params),
+        talus_(gpu::layered_talus()),
+        creep_(gpu::layered_creep()),
+        conversions_(no_conversions(setup.params.bedrock_types.size())) {}
+
+  // Steps the GPU to `done` steps (creep then talus, as slope_step) and compares with the reference.
+  void compare_at(int done, const LayeredGround<float>& reference, const LayeredConversions& converted) {
+    stepping_ms_ += gpu_wall_ms([&] {
+      for (; steps_ < done; ++steps_) {
+        creep_.step(buffers_, static_cast<std::uint32_t>(steps_), conversions_);
+        talus_.step(buffers_, static_cast<std::uint32_t>(steps_), conversions_);
+      }
+    });
+    const LayeredGround<float> state = buffers_.download();
+    std::size_t differing = differing_bits(state.surface, reference.surface) + differing_bits(state.soil, reference.soil) +
+                            differing_bits(state.bedrock, reference.bedrock) +
+                            differing_bits(state.vegetation, reference.vegetation);
+    differing += conversions_differing(converted, reference.cells() * static_cast<std::size_t>(done));
+    if (differing > 0 && first_differing_ < 0) first_differing_ = done;
+    differing_ += differing;
+    ++checkpoints_;
+  }
+
+  // The GPU's time is its stepping between the checkpoints (each step reads its conversions back;
+  // the checkpoints' downloads are left out).
+  void add_checks(CaseResult& result) const {
+    result.timings.gpu_ms = stepping_ms_;
+    result.timings.gpu_reps = 1;
+    result.checks.push_back(bounded_check(
+        "parity.state.gpu_vs_float", double(differing_), 0.0, std::nullopt,
+        fmt::format("values (surface, soil components, bedrock, vegetation) differing in any bit from ref<float>'s, "
+                    "plus conversion totals beyond their bound, over {} checkpoints{}",
+                    checkpoints_, first_differing_ < 0 ? std::string() : fmt::format("; first at step {}", first_differing_))));
+  }
+
+ private:
+  static std::size_t differing_bits(const std::vector<float>& a, const std::vector<float>& b) {
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) differing += std::bit_cast<std::uint32_t>(a[i]) == std::bit_cast<std::uint32_t>(b[i]) ? 0 : 1;
+    return differing;
+  }
+
+  std::size_t conversions_differing(const LayeredConversions& reference, std::size_t terms) const {
+    const double u = 0x1p-24, gamma7 = 7.0 * u / (1.0 - 7.0 * u);
+    std::size_t differing = 0;
+    for (std::size_t type = 0; type < reference.fragmented_from.size(); ++type) {
+      differing += conversions_.fragmented_from[type] == reference.fragmented_from[type] ? 0 : 1;
+    }
+    for (std::size_t size = 0; size < reference.fragmented_into.size(); ++size) {
+      const double bound = (gamma7 + 2.0 * double(terms + 1) * 0x1p-53) * reference.fragmented_into[size];
+      differing += std::abs(conversions_.fragmented_into[size] - reference.fragmented_into[size]) <= bound ? 0 : 1;
+    }
+    return differing;
+  }
+
+  gpu::LayeredGroundBuffers buffers_;
+  gpu::LayeredSlopeProcess talus_;
+  gpu::LayeredSlopeProcess creep_;
+  LayeredConversions conversions_;
+  int steps_ = 0;
+  std::size_t differing_ = 0;
+  int first_differing_ = -1;
+  int checkpoints_ = 0;
+  double stepping_ms_ = 0.0;
+};
+
+// ---- pictures -------------------------------------------------------------------------------
+
+using Colour = std::array<float, 3>;
+
+// Component colours: organic dark brown, sand pale yellow, gravel light grey, stones grey,
+// boulders slate; bedrock types soft red sandstone, dark grey, near black.
+constexpr std::array<Colour, soil_component_count> component_colours{
+    Colour{0.32f, 0.22f, 0.12f}, Colour{0.93f, 0.83f, 0.56f}, Colour{0.68f, 0.66f, 0.62f},
+    Colour{0.48f, 0.48f, 0.50f}, Colour{0.32f, 0.34f, 0.40f}};
+constexpr std::array<Colour, 3> bedrock_colours{Colour{0.72f, 0.42f, 0.32f}, Colour{0.36f, 0.36f, 0.36f},
+                                                Colour{0.16f, 0.16f, 0.18f}};
+
+Colour soil_colour(const LayeredGround<double>& ground, int layer, std::size_t c) {
+  const double thickness = ground.soil_thickness(layer, c);
+  Colour mixed{0, 0, 0};
+  for (int component = 0; component < soil_component_count; ++component) {
+    const auto share = float(ground.soil_at(layer, component, c) / thickness);
+    for (int channel = 0; channel < 3; ++channel) mixed[channel] += share * component_colours[component][channel];
+  }
+  return mixed;
+}
+
+Colour bedrock_colour(const LayeredGround<double>& ground, int layer, std::size_t c) {
+  return bedrock_colours[std::size_t(ground.bedrock_type_at(layer, c)) % bedrock_colours.size()];
+}
+
+Colour surface_colour(const LayeredGround<double>& ground, std::size_t c) {
+  const int layer = reference::top_nonempty_layer(ground, c);
+  Colour colour = layer < 0                    ? Colour{1, 1, 1}
+                  : layer < soil_layer_count ? soil_colour(ground, layer, c)
+                                               : bedrock_colour(ground, layer - soil_layer_count, c);
+  const auto green = float(0.6 * ground.vegetation[c]);
+  const Colour leaf{0.20f, 0.55f, 0.15f};
+  for (int channel = 0; channel < 3; ++channel) colour[channel] = (1 - green) * colour[channel] + green * leaf[channel];
+  return colour;
+}
+
+// The colour at depth `depth` m below the surface of column c: the layer holding it (subsoil a
+// little darker than the same mixture in the topsoil).
+Colour colour_at_depth(const LayeredGround<double>& ground, std::size_t c, double depth) {
+  double top = 0.0;
+  for (int layer = 0; layer < soil_layer_count; ++layer) {
+    const double thickness = ground.soil_thickness(layer, c);
+    if (depth < top + thickness) {
+      Colour colour = soil_colour(ground, layer, c);
+      for (float& channel : colour) channel *= layer == 0 ? 1.0f : 0.8f;
+      return colour;
+    }
+    top += thickness;
+  }
+  for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
+    top += ground.bedrock_at(layer, c);
+    if (depth < top) return bedrock_colour(ground, layer, c);
+  }
+  return {0, 0, 0};
+}
+
+// The middle row: above, the surface's elevation (grey ground under white air, its range stretched
+// to the panel); below, a dark rule, then the layers from the surface down to 1.2 times the deepest
+// soil plus soft rock of the row, true to scale in depth.
+void write_cross_section(const LayeredGround<double>& ground, const std::filesystem::path& png, double& depth_shown) {
+  constexpr int elevation_rows = 120, rule_rows = 3, layer_rows = 240;
+  const int row = ground.height / 2;
+  const int scale = std::max(1, 720 / ground.width);
+  const int width = ground.width * scale;
+  double low = std::numeric_limits<double>::infinity(), high = -low, deepest = 0.0;
+  for (int x = 0; x < ground.width; ++x) {
+    const std::size_t c = ground.cell(x, row);
+    low = std::min(low, ground.surface[c]);
+    high = std::max(high, ground.surface[c]);
+    double soft = ground.soil_thickness(0, c) + ground.soil_thickness(1, c);
+    if (ground.bedrock_layer_count > 0) soft += ground.bedrock_at(0, c);
+    deepest = std::max(deepest, soft);
+  }
+  depth_shown = std::max(1.2 * deepest, 1.0);
+  const double span = std::max(high - low, 1e-9);
+  std::vector<Colour> pixels(std::size_t(width) * (elevation_rows + rule_rows + layer_rows));
+  for (int px = 0; px < width; ++px) {
+    const std::size_t c = ground.cell(px / scale, row);
+    const double ground_rows = 8.0 + (elevation_rows - 16.0) * (ground.surface[c] - low) / span;
+    for (int py = 0; py < elevation_rows; ++py) {
+      const bool below = elevation_rows - py <= ground_rows;
+      pixels[std::size_t(py) * width + px] = below ? surface_colour(ground, c) : Colour{1, 1, 1};
+    }
+    for (int py = elevation_rows; py < elevation_rows + rule_rows; ++py) pixels[std::size_t(py) * width + px] = {0.1f, 0.1f, 0.1f};
+    for (int py = 0; py < layer_rows; ++py) {
+      const double depth = (py + 0.5) / layer_rows * depth_shown;
+      pixels[std::size_t(elevation_rows + rule_rows + py) * width + px] = colour_at_depth(ground, c, depth);
+    }
+  }
+  write_colour_image(width, elevation_rows + rule_rows + layer_rows, pixels, png);
+}
+
+void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double>& run, const RunOptions& options,
+                    CaseResult& result) {
+  const auto folder = options.report_dir / result.name;
+  std::filesystem::create_directories(folder);
+  std::vector<Colour> surface;
+  for (std::size_t c = 0; c < ground.cells(); ++c) surface.push_back(surface_colour(ground, c));
+  // Each cell a square of pixels, so a small grid is still readable.
+  const int scale = std::max(1, 512 / ground.width);
+  std::vector<Colour> pixels;
+  for (int py = 0; py < ground.height * scale; ++py) {
+    for (int px = 0; px < ground.width * scale; ++px) pixels.push_back(surface[ground.cell(px / scale, py / scale)]);
+  }
+  write_colour_image(ground.width * scale, ground.height * scale, pixels, folder / "surface_material.png");
+  result.artifacts.push_back({result.name + "/surface_material.png", "image",
+                              "surface material after the run, ref<double> (a cell a square of pixels): the top non-empty layer's mixture (organic "
+                              "dark brown, sand pale yellow, gravel light grey, stones grey, boulders slate; bedrock: "
+                              "soft rock red, hard rock dark grey), greened by vegetation"});
+  double depth_shown = 0.0;
+  write_cross_section(ground, folder / "cross_section.png", depth_shown);
+  result.artifacts.push_back(
+      {result.name + "/cross_section.png", "image",
+       fmt::format("cross-section along row {} after the run: above, the surface (elevation stretched to the panel); "
+                   "below, the layers from the surface down to {:.3g} m, true to scale in depth (topsoil, the subsoil "
+                   "darker, soft rock red, hard rock grey; colours as the surface material)",
+                   ground.height / 2, depth_shown)});
+  const auto field = [&](auto value) {
+    Grid<double> grid(ground.width, ground.height);
+    grid.cell_size_x = ground.cell_size_x;
+    grid.cell_size_y = ground.cell_size_y;
+    for (std::size_t c = 0; c < ground.cells(); ++c) grid.values[c] = value(c);
+    return grid;
+  };
+  write_field_files(field([&](std::size_t c) { return ground.soil_thickness(0, c); }),
+                    {"topsoil_cpu", "topsoil", "cpu", "m", "topsoil thickness after the run, ref<double>"}, options,
+                    result);
+  write_field_files(field([&](std::size_t c) { return ground.soil_thickness(1, c); }),
+                    {"subsoil_cpu", "subsoil", "cpu", "m", "subsoil thickness after the run, ref<double>"}, options,
+                    result);
+  write_field_files(field([&](std::size_t c) { return ground.vegetation[c]; }),
+                    {"vegetation_cpu", "vegetation", "cpu", "1", "vegetation density after the run, ref<double>"},
+                    options, result);
+  write_field_files(field([&](std::size_t c) { return ground.surface[c]; }),
+                    {"surface_cpu", "surface", "cpu", "m", "surface height after the run, ref<double>"}, options,
+                    result);
+  double total = 0.0;
+  for (const double volume : run.volumes.front()) total += volume;
+  SeriesPlot changes{"each material's volume", "step", "(V − V_start) / V_all", false, false, {}};
+  for (std::size_t material = 0; material < run.volumes.front().size(); ++material) {
+    Series series{material_name(material), {}, {}, false, {}};
+    for (std::size_t point = 0; point < run.checkpoints.size(); ++point) {
+      series.x.push_back(run.checkpoints[point]);
+      series.y.push_back((run.volumes[point][material] - run.volumes.front()[material]) / total);
+    }
+    changes.series.push_back(series);
+  }
+  SeriesPlot drift{"ledger drift", "step", "|V − V_start − converted| / V_all", false, false, {}};
+  for (std::size_t material = 0; material < run.volumes.front().size(); ++material) {
+    Series series{material_name(material), {}, {}, false, {}};
+    for (std::size_t point = 0; point < run.checkpoints.size(); ++point) {
+      series.x.push_back(run.checkpoints[point]);
+      series.y.push_back(std::abs(run.volumes[point][material] - run.volumes.front()[material] -
+                                  run.converted[point][material]) / total);
+    }
+    drift.series.push_back(series);
+  }
+  attach_plot({changes, drift}, options.report_dir, "ledger.png",
+              "the ledger per material over the steps, ref<double>: each material's volume change (fragmentation turns "
+              "bedrock into sand..boulders) and what the ledger cannot account for",
+              result);
+}
+
+// ---- the case -------------------------------------------------------------------------------
+
+void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, const RunOptions& options,
+                      CaseResult& result) {
+  if (options.progress) options.progress->stage("CPU reference (double)");
+  LayeredRun<double> run;
+  time_cpu(1, [&] { run = run_layered<double>(setup); }, result.timings);
+  const auto start = make_layered_ground<double>(setup.surface, setup.profile, setup.params, setup.vegetation);
+  add_ledger_checks(run, setup.steps, "cpu", result);
+  add_state_checks(start, run.ground, setup, result);
+  if (expect.is_object() && expect.value("at_rest", false)) add_repose_check(run.ground, setup.params, result);
+  std::optional<GpuShadow> shadow;
+  if (options.gpu_available) shadow.emplace(setup);
+  if (options.progress) options.progress->stage(shadow ? "CPU reference (float) and the GPU beside it" : "CPU reference (float)");
+  const LayeredRun<float> single = run_layered<float>(
+      setup, shadow ? CheckpointObserver<float>([&](int done, const LayeredGround<float>& ground,
+                                                   const LayeredConversions& conversions) {
+        shadow->compare_at(done, ground, conversions);
+      })
+                    : CheckpointObserver<float>());
+  if (shadow) {
+    shadow->add_checks(result);
+  } else {
+    result.checks.push_back(skipped_check("parity.gpu", options.gpu_unavailable_reason));
+  }
+  add_ledger_checks(single, setup.steps, "cpu_float", result);
+  double largest = 0.0;
+  for (std::size_t c = 0; c < run.ground.cells(); ++c) {
+    largest = std::max(largest, std::abs(double(single.ground.surface[c]) - run.ground.surface[c]));
+  }
+  result.checks.push_back(informative_check("parity.surface.float_vs_double", largest,
+                                            "largest |surface_float − surface_double| over the columns, m"));
+  if (!options.report_dir.empty()) write_pictures(run.ground, run, options, result);
+}
+
+PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& input) {
+  if (input.heights.size() == 0) throw InputError("erosion.layered lays its ground on a heightmap: the case needs an input");
+  const auto& valid = input.heights.valid;
+  if (std::find(valid.begin(), valid.end(), std::uint8_t{0}) != valid.end()) {
+    throw InputError("erosion.layered: the input has no-data cells, which the layered ground cannot hold yet; crop it "
+                     "to a window without them");
+  }
+  LayeredSetup setup;
+  setup.params = layered_params_from_json(resolved);
+  setup.soil = resolved.at("soil").get<std::string>();
+  setup.profile = profile_from(resolved);
+  validate_layered_profile(setup.profile, setup.params);
+  setup.steps = static_cast<int>(resolved.at("steps").get<long long>());
+  setup.vegetation = resolved.at("vegetation").get<double>();
+  setup.surface = input.heights;
+  setup.surface.valid.clear();  // every cell valid (a crop of a masked file keeps its all-valid mask)
+  // Refuses a bad surface or a grid beyond memory before the run.
+  (void)make_layered_ground<double>(setup.surface, setup.profile, setup.params, setup.vegetation);
+  PreparedTwin prepared;
+  prepared.run = [setup](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+    result.notes.push_back(fmt::format(
+        "initial profile in every column, top down: {} m topsoil and {} m subsoil of {}, {} m soft rock (type 0), "
+        "{} m hard rock (type 1); vegetation {}",
+        std::accumulate(setup.profile.topsoil.begin(), setup.profile.topsoil.end(), 0.0),
+        std::accumulate(setup.profile.subsoil.begin(), setup.profile.subsoil.end(), 0.0), setup.soil,
+        setup.profile.bedrock[0].thickness, setup.profile.bedrock[1].thickness, setup.vegetation));
+    run_layered_case(setup, expect, options, result);
+  };
+  return prepared;
+}
+
+}  // namespace
+
+Algorithm layered_algorithm() {
+  return {.name = "erosion.layered",
+          .summary = "seed 001's layered ground: soil–rock layers over bedrock, creep and per-material talus, a ledger "
+                     "per material",
+          .source = "seed 001 §3.1, §3.10–3.11, §4 (eq. 3.1–3.4)",
+          .params = &case_param_specs(),
+          .prepare = prepare_layered,
+          .iterates = false,
+          .has_field_twin = false,
+          .expect_shape = {{"at_rest", true}},
+          // The double state (5·2 components, 2 bedrock layers, types, surface, vegetation: ~112 B),
+          // its snapshot each step and its start copy, 8 outflows (64 B), the float run's half of all
+          // that, the pictures' grids: under 700 B a cell; 1000 kept.
+          .memory = [](const nlohmann::json&, const LoadedInput& input) {
+            return memory_for(static_cast<double>(input.heights.size()), "cells", 1000);
+          }};
+}
+
+}  // namespace gt

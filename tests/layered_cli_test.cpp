@@ -1,0 +1,117 @@
+// erosion.layered as a user runs it (issue 14): the probe cases pass with their ledger, layer,
+// repose and GPU checks and their pictures; a DEM the project has never seen, given ad hoc, runs
+// with the same checks; bad layer definitions are refused with exit 2 and a message naming them.
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_program.hpp"
+#include "tests/support/temporary_folder.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::Contains;
+using ::testing::HasSubstr;
+
+const std::string groundtruth = GT_BINARY_DIR "/groundtruth";
+
+gt::testing::ProgramRun run(const std::vector<std::string>& args, const fs::path& cwd) {
+  return gt::testing::run_program(groundtruth, args, cwd);
+}
+
+nlohmann::json report_of(const fs::path& out) {
+  std::ifstream stream(out / "report.json");
+  return nlohmann::json::parse(stream);
+}
+
+std::vector<std::string> check_names(const nlohmann::json& report_case) {
+  std::vector<std::string> names;
+  for (const auto& check : report_case["checks"]) names.push_back(check["name"]);
+  return names;
+}
+
+TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
+  gt::testing::TemporaryFolder folder;
+  const auto out = folder.path() / "out";
+  const auto result = run({"run", "erosion.layered.mutant_probe.*", "--out", out.string()}, folder.path());
+  ASSERT_EQ(result.status, 0) << result;
+  const auto report = report_of(out);
+  ASSERT_EQ(report["cases"].size(), 2u);
+  for (const auto& layered : report["cases"]) {
+    EXPECT_EQ(layered["status"], "pass") << layered["name"];
+    const auto names = check_names(layered);
+    for (const char* expected : {"ledger.materials.cpu", "ledger.total.cpu", "ledger.conversions.cpu",
+                                 "ledger.materials.cpu_float", "layers.invalid.cpu", "layers.surface.cpu"}) {
+      EXPECT_THAT(names, Contains(std::string(expected))) << layered["name"];
+    }
+    const std::string name = layered["name"];
+    for (const char* file : {"surface_material.png", "cross_section.png", "ledger.png", "topsoil_cpu.npy"}) {
+      EXPECT_TRUE(fs::exists(out / name / file)) << name << ": " << file;
+    }
+  }
+  EXPECT_THAT(check_names(report["cases"][0]), Contains(std::string("spec.repose.cpu")));
+}
+
+// An ad-hoc run on a DEM written here (a tilted, bumpy 40×30 surface of 5 m cells in a .npy file):
+// the same ledger and layer checks hold.
+TEST(LayeredCli, AnUnseenDemHoldsTheSameFigures) {
+  gt::testing::TemporaryFolder folder;
+  const auto dem = folder.path() / "unseen.npy";
+  {
+    std::ofstream file(dem, std::ios::binary);
+    const std::string header = "{'descr': '<f8', 'fortran_order': False, 'shape': (30, 40), }";
+    std::string padded = header + std::string(64 - (10 + header.size() + 1) % 64, ' ') + "\n";
+    file.write("\x93NUMPY\x01\x00", 8);
+    const auto length = static_cast<std::uint16_t>(padded.size());
+    file.put(static_cast<char>(length & 0xff));
+    file.put(static_cast<char>(length >> 8));
+    file << padded;
+    for (int y = 0; y < 30; ++y) {
+      for (int x = 0; x < 40; ++x) {
+        const double height = 2.0 * x + 0.5 * y + 3.0 * ((x * 7 + y * 13) % 5);
+        file.write(reinterpret_cast<const char*>(&height), sizeof height);
+      }
+    }
+  }
+  const auto out = folder.path() / "out";
+  const auto result = run({"run", "--algorithm", "erosion.layered", "--input", dem.string(), "--cell-size", "5",
+                           "--set", "steps=50", "--set", "soil=scree", "--out", out.string()},
+                          folder.path());
+  ASSERT_EQ(result.status, 0) << result;
+  const auto report = report_of(out);
+  ASSERT_EQ(report["cases"].size(), 1u);
+  EXPECT_EQ(report["cases"][0]["status"], "pass");
+  const auto names = check_names(report["cases"][0]);
+  for (const char* expected : {"ledger.materials.cpu", "ledger.total.cpu", "layers.invalid.cpu", "layers.surface.cpu"}) {
+    EXPECT_THAT(names, Contains(std::string(expected)));
+  }
+}
+
+TEST(LayeredCli, BadLayerDefinitionsAreRefused) {
+  gt::testing::TemporaryFolder folder;
+  const struct {
+    std::vector<std::string> sets;
+    const char* message;
+  } refused[] = {{{"topsoil_thickness=-1"}, "topsoil_thickness"},
+                 {{"topsoil_thickness=2", "topsoil_max=1.5"}, "topsoil_max"},
+                 {{"repose_sand=0"}, "repose_sand"},
+                 {{"repose_gravel=nan"}, "repose_gravel"},
+                 {{"soil=clay"}, "soil"}};
+  for (const auto& [sets, message] : refused) {
+    std::vector<std::string> args = {"run", "--algorithm", "erosion.layered", "--input",
+                                     GT_DATASET_DIR "/real/volcano.json", "--out", (folder.path() / "out").string()};
+    for (const auto& set : sets) args.insert(args.end(), {"--set", set});
+    const auto result = run(args, folder.path());
+    EXPECT_EQ(result.status, 2) << result;
+    EXPECT_THAT(result.err, HasSubstr(message)) << result;
+    EXPECT_FALSE(fs::exists(folder.path() / "out" / "report.json"));
+  }
+}
+
+}  // namespace
