@@ -1,4 +1,5 @@
-// The GPU twins of the layered ground's talus collapse and soil creep (digest 001 §3.10-3.11;
+// The GPU twins of the layered ground's talus collapse, soil creep, vegetation growth and weathering
+// (digest 001 §3.10-3.11, §3.15-3.16;
 // gpu/erosion/layered/) against reference<float> (reference/erosion/layered/), step for step, on a
 // random 24 × 24 layered terrain (l_x = 1 m, l_y = 1.25 m) with a 10 m cliff whose edge is bare
 // bedrock, so that talus fragments it: rows of that edge alternate a falling top layer (type 0), a
@@ -19,6 +20,10 @@
 // double(f)·A; the GPU first sums a column's ≤ 8 fragments in float (error ≤ γ_7 = 7u/(1 − 7u) of
 // their sum, u = 2^-24), then adds those in double. Both double sums of N nonnegative terms err by
 // ≤ (N + 1)·2^-53 of the total, so |gpu − ref| ≤ (γ_7 + 2(N + 1)·2^-53)·ref.
+// Weathering's conversions (§3.16): the GPU writes each column's float amounts and the host adds
+// them in double in the reference's order (column, layer, conversion), so they are expected equal.
+// Vegetation and weathering run with the variants' vegetation quality (seed001_code: the code's, with
+// K_vorg 1.5) and weathering at 50× the code's rates, so that clamps to the source occur.
 // Determinism: a second GPU run from the same ground gives the same bits and conversions.
 // gt_div itself is checked against the CPU's division on pairs spread over the exponents.
 #include <cmath>
@@ -37,9 +42,13 @@
 #include "gpu/erosion/layered/creep.hpp"
 #include "gpu/erosion/layered/ground_buffers.hpp"
 #include "gpu/erosion/layered/talus.hpp"
+#include "gpu/erosion/layered/vegetation.hpp"
+#include "gpu/erosion/layered/weathering.hpp"
 #include "gpu/shader_program.hpp"
 #include "reference/erosion/layered/creep.hpp"
 #include "reference/erosion/layered/talus.hpp"
+#include "reference/erosion/layered/vegetation.hpp"
+#include "reference/erosion/layered/weathering.hpp"
 #include "tests/support/gl_test.hpp"
 
 namespace {
@@ -61,10 +70,14 @@ LayeredParams params_for(const Variant& variant) {
   LayeredParams params;
   params.border = variant.border;
   params.seed = 7;
+  params.weathering_rate = 0.05;
+  for (auto& type : params.bedrock_types) type.soil_rate *= 50.0;
   if (variant.seed001_code) {
     params.talus_amount = gt::TalusAmount::seed001_code;
     params.creep_denominator = gt::CreepDenominator::seed001_code;
     params.creep_random = false;
+    params.vegetation_quality = gt::VegetationQuality::seed001_code;
+    params.vegetation_soil_quality[0] = 1.5;
   }
   return params;
 }
@@ -161,6 +174,15 @@ void expect_conversions(const LayeredConversions& expected, const LayeredConvers
   }
 }
 
+// Weathering's counts: equal (see the header).
+void expect_weathering_conversions(const LayeredConversions& expected, const LayeredConversions& actual,
+                                   const std::string& when) {
+  EXPECT_EQ(expected.weathered_from, actual.weathered_from) << when;
+  EXPECT_EQ(expected.weathered_into, actual.weathered_into) << when;
+  EXPECT_EQ(expected.soil_formed_from, actual.soil_formed_from) << when;
+  EXPECT_EQ(expected.soil_formed_into, actual.soil_formed_into) << when;
+}
+
 bool moved(const LayeredGround<float>& before, const LayeredGround<float>& after) {
   return before.soil != after.soil || before.surface != after.surface;
 }
@@ -232,7 +254,7 @@ TEST_P(LayeredGpu, OneCreepStepIsTheFloatReferenceBitForBit) {
   expect_conversions(reference_conversions, conversions, 1, "creep step");
 }
 
-// 20 iterations of creep then talus (the code's order, reference::slope_step), compared after
+// 20 iterations of creep then talus (the code's order, as reference::layered_iteration begins), compared after
 // every pass; then a second GPU run from the same ground repeats the first bit for bit.
 TEST_P(LayeredGpu, TwentyMixedStepsFollowTheReferenceAndRepeat) {
   const auto params = params_for(GetParam());
@@ -265,6 +287,84 @@ TEST_P(LayeredGpu, TwentyMixedStepsFollowTheReferenceAndRepeat) {
   expect_same_ground(first, buffers.download(), "second GPU run");
   EXPECT_EQ(conversions.fragmented_from, again.fragmented_from);
   EXPECT_EQ(conversions.fragmented_into, again.fragmented_into);
+}
+
+TEST_P(LayeredGpu, OneVegetationStepIsTheFloatReferenceBitForBit) {
+  const auto params = params_for(GetParam());
+  const auto initial = random_ground(params);
+  auto reference = initial;
+  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::reference::vegetation_step(reference, params, 6, reference_conversions);
+  ASSERT_NE(initial.vegetation, reference.vegetation);
+
+  gt::gpu::LayeredGroundBuffers buffers(initial, params);
+  auto conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::gpu::layered_vegetation().step(buffers, 6, conversions);
+  expect_same_ground(reference, buffers.download(), "vegetation step");
+}
+
+TEST_P(LayeredGpu, OneWeatheringStepIsTheFloatReferenceBitForBit) {
+  const auto params = params_for(GetParam());
+  const auto initial = random_ground(params);
+  auto reference = initial;
+  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::reference::weathering_step(reference, params, 2, reference_conversions);
+  ASSERT_TRUE(moved(initial, reference) || initial.bedrock != reference.bedrock);
+  ASSERT_GT(reference_conversions.weathered_into[0], 0.0);
+  ASSERT_GT(reference_conversions.soil_formed_from[0], 0.0);
+
+  gt::gpu::LayeredGroundBuffers buffers(initial, params);
+  auto conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::gpu::layered_weathering().step(buffers, 2, conversions);
+  expect_same_ground(reference, buffers.download(), "weathering step");
+  expect_weathering_conversions(reference_conversions, conversions, "weathering step");
+}
+
+// 20 iterations of creep, talus, vegetation and weathering (the code's order, §4), compared after
+// every pass; then a second GPU run from the same ground repeats the first bit for bit.
+TEST_P(LayeredGpu, TwentyStepsOfEveryProcessFollowTheReferenceAndRepeat) {
+  const auto params = params_for(GetParam());
+  const auto initial = random_ground(params);
+  auto reference = initial;
+  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
+  gt::gpu::LayeredGroundBuffers buffers(initial, params);
+  const auto creep = gt::gpu::layered_creep();
+  const auto talus = gt::gpu::layered_talus();
+  const auto vegetation = gt::gpu::layered_vegetation();
+  const auto weathering = gt::gpu::layered_weathering();
+  auto conversions = gt::no_conversions(params.bedrock_types.size());
+  const std::uint32_t steps = 20;
+  for (std::uint32_t step = 0; step < steps; ++step) {
+    const std::string when = "step " + std::to_string(step);
+    gt::reference::creep_step(reference, params, step, reference_conversions);
+    creep.step(buffers, step, conversions);
+    expect_same_ground(reference, buffers.download(), when + " creep");
+    gt::reference::talus_step(reference, params, step, reference_conversions);
+    talus.step(buffers, step, conversions);
+    expect_same_ground(reference, buffers.download(), when + " talus");
+    gt::reference::vegetation_step(reference, params, step, reference_conversions);
+    vegetation.step(buffers, step, conversions);
+    expect_same_ground(reference, buffers.download(), when + " vegetation");
+    gt::reference::weathering_step(reference, params, step, reference_conversions);
+    weathering.step(buffers, step, conversions);
+    expect_same_ground(reference, buffers.download(), when + " weathering");
+    expect_conversions(reference_conversions, conversions, 2 * static_cast<int>(step + 1), when);
+    expect_weathering_conversions(reference_conversions, conversions, when);
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(reference_conversions.weathered_from[4], 0.0);
+  const auto first = buffers.download();
+  buffers.upload(initial);
+  auto again = gt::no_conversions(params.bedrock_types.size());
+  for (std::uint32_t step = 0; step < steps; ++step) {
+    creep.step(buffers, step, again);
+    talus.step(buffers, step, again);
+    vegetation.step(buffers, step, again);
+    weathering.step(buffers, step, again);
+  }
+  expect_same_ground(first, buffers.download(), "second GPU run");
+  expect_weathering_conversions(conversions, again, "second GPU run");
+  EXPECT_EQ(conversions.fragmented_from, again.fragmented_from);
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, LayeredGpu,

@@ -1,7 +1,9 @@
 // Properties of seed 001's layered ground reference (core/layered, reference/erosion/layered): the
 // parameter checks, the thesis's reserve-then-deposit example, removal order, fragmentation, the
 // per-material ledger over many talus + creep steps, resting piles at their angles of repose, the
-// fixed layer count, and the classic stack's growth on the Fig. 3.1 scenario.
+// fixed layer count, and the classic stack's growth on the Fig. 3.1 scenario; vegetation growth
+// (§3.15) and weathering (§3.16): worked examples by hand, the reach of bedrock → soil, and the
+// ledger per material with every conversion counted.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,8 +18,10 @@
 #include "reference/erosion/layered/classic_stack.hpp"
 #include "reference/erosion/layered/column.hpp"
 #include "reference/erosion/layered/creep.hpp"
-#include "reference/erosion/layered/slope_step.hpp"
+#include "reference/erosion/layered/iteration.hpp"
 #include "reference/erosion/layered/talus.hpp"
+#include "reference/erosion/layered/vegetation.hpp"
+#include "reference/erosion/layered/weathering.hpp"
 
 namespace {
 
@@ -242,7 +246,8 @@ void run_ledger_case(gt::LayeredBorder border) {
   constexpr int steps = 60;
   const double tolerance = ledger_tolerance<Real>(steps);
   for (int step = 0; step < steps; ++step) {
-    ref::slope_step(ground, params, static_cast<std::uint32_t>(step), conversions);
+    ref::creep_step(ground, params, static_cast<std::uint32_t>(step), conversions);
+    ref::talus_step(ground, params, static_cast<std::uint32_t>(step), conversions);
     expect_valid(ground, params);
   }
   const gt::LayeredLedger final_ledger = gt::layered_ledger(ground, types);
@@ -293,7 +298,10 @@ TEST(LayeredLedger, CodeVariantsConserveToo) {
   auto ground = random_terrain<double>(16, params, 11);
   const auto initial = gt::layered_ledger(ground, params.bedrock_types.size());
   auto conversions = gt::no_conversions(params.bedrock_types.size());
-  for (std::uint32_t step = 0; step < 30; ++step) ref::slope_step(ground, params, step, conversions);
+  for (std::uint32_t step = 0; step < 30; ++step) {
+    ref::creep_step(ground, params, step, conversions);
+    ref::talus_step(ground, params, step, conversions);
+  }
   const auto final_ledger = gt::layered_ledger(ground, params.bedrock_types.size());
   EXPECT_NEAR(final_ledger.total(), initial.total(), ledger_tolerance<double>(30) * initial.total());
   EXPECT_GT(conversions.fragmented_from[0], 0.0);
@@ -568,6 +576,263 @@ TEST(LayeredLayerCount, TheClassicStackGrowsWhileTheFixedModelStaysBounded) {
   std::cout << "classic stack max layers per step:";
   for (auto count : counts) std::cout << ' ' << count;
   std::cout << '\n';
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vegetation growth (§3.15) and weathering (§3.16)
+
+TEST(LayeredParams, VegetationAndWeatheringDefaultsAndRefusals) {
+  const LayeredParams params;
+  EXPECT_EQ(params.vegetation_quality, gt::VegetationQuality::thesis);
+  EXPECT_EQ(params.vegetation_soil_quality, (std::array<double, 5>{1.0, 0.2, 0.0, 0.0, 0.0}));
+  EXPECT_EQ(params.weathering_shares, (std::array<double, 4>{1.0, 0.2, 0.3, 0.4}));
+  EXPECT_EQ(params.weathering_reach, 4.0);
+  EXPECT_EQ(params.bedrock_types[1].soil_rate, 0.0003);
+  const auto resolved = gt::resolve_params("erosion.layered", gt::layered_param_specs(),
+                                           nlohmann::json{{"vegetation_quality", "seed001_code"},
+                                                          {"vegetation_quality_org", 1.5},
+                                                          {"weathering_stones", 0.5}});
+  const LayeredParams read = gt::layered_params_from_json(resolved);
+  EXPECT_EQ(read.vegetation_quality, gt::VegetationQuality::seed001_code);
+  EXPECT_EQ(read.vegetation_soil_quality[0], 1.5);
+  EXPECT_EQ(read.weathering_shares[3], 0.5);
+  EXPECT_EQ(read.root_depth, 0.25);
+  LayeredParams bad;
+  bad.bedrock_types[0].soil_composition = {0.5, 0.0, 0.0, 0.0, 0.0};
+  EXPECT_THROW(gt::validate_layered_params(bad), gt::InputError);
+  bad = LayeredParams{};
+  bad.weathering_rate = -1.0;
+  EXPECT_THROW(gt::validate_layered_params(bad), gt::InputError);
+  bad = LayeredParams{};
+  bad.root_depth = 0.0;
+  EXPECT_THROW(gt::validate_layered_params(bad), gt::InputError);
+}
+
+// The worked column: topsoil org 0.1, sand 0.1 (0.2 m); subsoil org 0.05, sand 0.15, gravel 0.3
+// (0.5 m); 3 × 3 columns alike, vegetation 0.5 everywhere; the code's constants (K_vorg 1.5,
+// K_vrock0 0.2, K_eveg 0.8, K_nveg 0.25, K_veg 1, Δt 0.2, depths 0.25 m and 2.0 m, base 0.2).
+LayeredGround<double> worked_ground(const LayeredParams& params) {
+  return gt::make_layered_ground<double>(flat_surface(3, 3, 10.0),
+                                         profile_with({0.1, 0.1, 0, 0, 0}, {0.05, 0.15, 0.3, 0, 0}, 5.0), params, 0.5);
+}
+
+LayeredParams worked_params(gt::VegetationQuality quality) {
+  LayeredParams params;
+  params.vegetation_quality = quality;
+  params.vegetation_soil_quality[0] = 1.5;
+  return params;
+}
+
+// By hand: the 0.25 m sample takes the whole topsoil and 0.05/0.5 of the subsoil: org 0.1 + 0.005,
+// sand 0.1 + 0.015, gravel 0.03 (K 0); q(0.25) = (1.5·0.105 + 0.2·0.115)/0.25 = 0.722. The 2.0 m
+// sample takes all 0.7 m: q(2.0) = (1.5·0.15 + 0.2·0.25)/0.7 = 0.275/0.7.
+// Thesis: drive = q − 0.8·0.5 + 0.25·(8·0.5) = 1.322 at the centre (8 neighbours);
+// seed001_code: q_s = 0.5·0.722 + 0.5·0.275/0.7 − 0.2, nveg = 9·0.5.
+// veg' = 0.5 + u·1·0.2·drive with u the column's rand(0, 1). Bound 1e-15: a few roundings of
+// numbers ≤ 2.
+TEST(LayeredVegetation, WorkedColumnByHand) {
+  const std::uint32_t step = 4;
+  const std::size_t centre = 4;
+  const double u = gt::uniform01(gt::random_u32(1, static_cast<std::uint32_t>(centre), step, gt::vegetation_cell_stream));
+  const double shallow = (1.5 * 0.105 + 0.2 * 0.115) / 0.25;
+  const double deep = 0.275 / 0.7;
+  {
+    const auto params = worked_params(gt::VegetationQuality::thesis);
+    auto ground = worked_ground(params);
+    EXPECT_NEAR(ref::soil_quality(ground, params, centre, 0.25), 0.722, 1e-15);
+    EXPECT_NEAR(ref::soil_quality(ground, params, centre, 2.0), deep, 1e-15);
+    auto conversions = gt::no_conversions(3);
+    ref::vegetation_step(ground, params, step, conversions);
+    EXPECT_NEAR(ground.vegetation[centre], 0.5 + u * 0.2 * (shallow - 0.8 * 0.5 + 0.25 * 4.0), 1e-15);
+    // A corner has 3 neighbours inside the closed border.
+    const double corner_u = gt::uniform01(gt::random_u32(1, 0, step, gt::vegetation_cell_stream));
+    EXPECT_NEAR(ground.vegetation[0], 0.5 + corner_u * 0.2 * (shallow - 0.4 + 0.25 * 1.5), 1e-15);
+  }
+  {
+    const auto params = worked_params(gt::VegetationQuality::seed001_code);
+    auto ground = worked_ground(params);
+    auto conversions = gt::no_conversions(3);
+    ref::vegetation_step(ground, params, step, conversions);
+    const double quality = 0.5 * shallow + 0.5 * deep - 0.2;
+    EXPECT_NEAR(ground.vegetation[centre], 0.5 + u * 0.2 * (quality - 0.4 + 0.25 * 4.5), 1e-15);
+  }
+}
+
+// No organic matter in either soil layer kills the vegetation (the code's rule); organic matter in
+// the subsoil alone keeps it. Growth never leaves [0, 1], and it converts nothing.
+TEST(LayeredVegetation, DeathWithoutOrganicMatterClampAndNoMaterial) {
+  LayeredParams params;
+  params.vegetation_rate = 10.0;  // large steps, to reach the clamps
+  auto ground = gt::make_layered_ground<double>(flat_surface(4, 1, 0.0), profile_with({0, 0.3, 0, 0, 0}, {}, 5.0),
+                                                params, 1.0);
+  ground.soil_at(1, org, 1) = 0.2;   // organic subsoil: lives
+  ground.soil_at(0, org, 2) = 1.0;   // rich topsoil: grows to the clamp
+  ground.soil_at(0, sand, 3) = 0.0;  // no soil at all: dies
+  const auto soil = ground.soil;
+  const auto bedrock = ground.bedrock;
+  const auto surface = ground.surface;
+  auto conversions = gt::no_conversions(3);
+  for (std::uint32_t step = 0; step < 20; ++step) {
+    ref::vegetation_step(ground, params, step, conversions);
+    for (double veg : ground.vegetation) {
+      EXPECT_GE(veg, 0.0);
+      EXPECT_LE(veg, 1.0);
+    }
+    EXPECT_EQ(ground.vegetation[0], 0.0);
+    EXPECT_EQ(ground.vegetation[3], 0.0);
+  }
+  EXPECT_GT(ground.vegetation[1], 0.0);
+  EXPECT_EQ(ground.vegetation[2], 1.0);
+  EXPECT_EQ(ground.soil, soil);
+  EXPECT_EQ(ground.bedrock, bedrock);
+  EXPECT_EQ(ground.surface, surface);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(conversions.converted_into(i), 0.0);
+    EXPECT_EQ(conversions.converted_from(i), 0.0);
+  }
+}
+
+// The worked column of WorkedColumnByHand, one weathering step (veg 0.5, Δt 0.2, K_conv 0.001:
+// K_conv·Δt·veg = 1e-4 m): topsoil sand → org 1e-4 (gravel 0: nothing else); subsoil sand → org
+// 1e-4, gravel → sand 0.2e-4 (stones 0: nothing more); the soil (0.7 m) is within the reach, so
+// bedrock type 0 gives q = 0.001·0.2·0.5 = 1e-4 m to the subsoil: org 0.2q, stones 0.1q, boulders
+// 0.7q. The surface stays. Cell area l_x·l_y = 1 m², so the counts in m³ equal the thicknesses.
+// Bound 1e-17: one or two roundings of numbers ≤ 0.3.
+TEST(LayeredWeathering, WorkedColumnByHand) {
+  const LayeredParams params;
+  auto ground = worked_ground(params);
+  auto conversions = gt::no_conversions(3);
+  const std::size_t c = 4;
+  ref::weathering_step(ground, params, 0, conversions);
+  const double q = 1e-4;
+  EXPECT_NEAR(ground.soil_at(0, org, c), 0.1 + 1e-4, 1e-17);
+  EXPECT_NEAR(ground.soil_at(0, sand, c), 0.1 - 1e-4, 1e-17);
+  EXPECT_NEAR(ground.soil_at(1, org, c), 0.05 + 1e-4 + 0.2 * q, 1e-17);
+  EXPECT_NEAR(ground.soil_at(1, sand, c), 0.15 + 0.2e-4 - 1e-4, 1e-17);
+  EXPECT_NEAR(ground.soil_at(1, 2, c), 0.3 - 0.2e-4, 1e-17);
+  EXPECT_NEAR(ground.soil_at(1, 3, c), 0.1 * q, 1e-17);
+  EXPECT_NEAR(ground.soil_at(1, boulders, c), 0.7 * q, 1e-17);
+  EXPECT_NEAR(ground.bedrock_at(0, c), 5.0 - q, 1e-15);
+  EXPECT_EQ(ground.bedrock_at(1, c), 5.0);
+  EXPECT_EQ(ground.surface[c], 10.0);
+  const double cells = 9.0;
+  EXPECT_NEAR(conversions.weathered_from[sand], cells * 2e-4, 1e-16);
+  EXPECT_NEAR(conversions.weathered_into[org], cells * 2e-4, 1e-16);
+  EXPECT_NEAR(conversions.weathered_from[2], cells * 0.2e-4, 1e-17);
+  EXPECT_EQ(conversions.weathered_from[boulders], 0.0);
+  EXPECT_NEAR(conversions.soil_formed_from[0], cells * q, 1e-16);
+  EXPECT_EQ(conversions.soil_formed_from[1], 0.0);
+  EXPECT_NEAR(conversions.soil_formed_into[boulders], cells * 0.7 * q, 1e-16);
+}
+
+// Each amount is clamped to its source (the code's clamp; the thesis has none): 1e-6 m of boulders
+// against 0.4·1e-4 asked leaves exactly 0, never a negative thickness. No vegetation, no weathering.
+TEST(LayeredWeathering, ClampsToTheSourceAndNeedsVegetation) {
+  LayeredParams params;
+  auto ground = gt::make_layered_ground<double>(flat_surface(2, 1, 0.0), profile_with({0, 0, 0, 0, 1e-6}, {}, 5.0),
+                                                params, 0.5);
+  ground.vegetation[1] = 0.0;
+  const auto bare = ground;
+  auto conversions = gt::no_conversions(3);
+  ref::weathering_step(ground, params, 0, conversions);
+  EXPECT_EQ(ground.soil_at(0, boulders, 0), 0.0);
+  EXPECT_EQ(ground.soil_at(0, 3, 0), 1e-6);
+  EXPECT_EQ(conversions.weathered_from[boulders], 1e-6);
+  for (std::size_t i = 0; i < ground.soil.size(); ++i) {
+    if (i % 2 == 1) {
+      EXPECT_EQ(ground.soil[i], bare.soil[i]) << i;  // column 1 (no vegetation) untouched
+    }
+  }
+  EXPECT_EQ(ground.bedrock_at(0, 1), 5.0);
+}
+
+// Bedrock turns into soil only under less soil than the reach (4.0 m, strict), from the top
+// non-empty bedrock layer (an emptied layer is skipped), at the type's rate (type 2: none).
+TEST(LayeredWeathering, BedrockTurnsIntoSoilOnlyWithinReach) {
+  LayeredParams params;
+  LayeredProfile profile = profile_with({}, {}, 0.0);
+  profile.bedrock = {{0, 0.0}, {1, 5.0}, {0, 5.0}};
+  auto ground = gt::make_layered_ground<double>(flat_surface(4, 1, 0.0), profile, params, 1.0);
+  const std::array<double, 4> soil{3.9, 4.0, 4.1, 0.0};
+  for (int x = 0; x < 4; ++x) ground.soil_at(1, org, static_cast<std::size_t>(x)) = soil[static_cast<std::size_t>(x)];
+  ground.bedrock_type[ground.bedrock_index(1, 3)] = 2;  // granite forms no soil
+  auto conversions = gt::no_conversions(3);
+  ref::weathering_step(ground, params, 0, conversions);
+  const double q = 0.0003 * 0.2 * 1.0;  // type 1
+  EXPECT_NEAR(ground.bedrock_at(1, 0), 5.0 - q, 1e-15);
+  EXPECT_EQ(ground.bedrock_at(1, 1), 5.0);
+  EXPECT_EQ(ground.bedrock_at(1, 2), 5.0);
+  EXPECT_EQ(ground.bedrock_at(1, 3), 5.0);
+  EXPECT_EQ(ground.bedrock_at(2, 0), 5.0);
+  EXPECT_NEAR(ground.soil_thickness(1, 0), 3.9 + q, 1e-15);
+  EXPECT_NEAR(ground.soil_at(1, boulders, 0), 0.8 * q, 1e-18);
+  EXPECT_EQ(conversions.soil_formed_from[0], 0.0);
+  EXPECT_NEAR(conversions.soil_formed_from[1], q, 1e-18);
+  EXPECT_EQ(conversions.soil_formed_from[2], 0.0);
+  // The q-thick slice of rock formed q of soil: the surface is where it was.
+  for (double h : ground.surface) EXPECT_EQ(h, 0.0);
+}
+
+// The ledger with every process: S = 60 iterations of creep, talus, vegetation and weathering (the
+// code's order, §4) on random_terrain, with weathering 50× the code's rate so that every conversion
+// is large. For each component, V(end) − V(start) = Σ converted in − Σ converted out, for each
+// bedrock type V(end) − V(start) = −(fragmented + formed into soil). Error model: creep and talus's R = 32
+// roundings per stored value and step (above), plus weathering's: 2 per component and layer for
+// the breakdown ((V + in) − out), 1 for the subsoil's share of the formed soil and 1 for the bedrock:
+// R = 36, so the relative drift is at most S·R·2·u (what moved bounded by the total): double
+// 60·36·2·1.1e-16 = 4.8e-13, float 2.6e-4. The conversions themselves are counted exactly in
+// double from the amounts the column used.
+template <class Real>
+void run_full_ledger_case(gt::LayeredBorder border, gt::VegetationQuality quality) {
+  LayeredParams params;
+  params.border = border;
+  params.vegetation_quality = quality;
+  params.weathering_rate = 0.05;
+  for (auto& type : params.bedrock_types) type.soil_rate *= 50.0;
+  auto ground = random_terrain<Real>(24, params, 13);
+  const std::size_t types = params.bedrock_types.size();
+  const gt::LayeredLedger initial = gt::layered_ledger(ground, types);
+  gt::LayeredConversions conversions = gt::no_conversions(types);
+  constexpr int steps = 60;
+  const double tolerance = steps * 36.0 * 2.0 * std::numeric_limits<Real>::epsilon() / 2.0;
+  for (int step = 0; step < steps; ++step) {
+    const auto s = static_cast<std::uint32_t>(step);
+    ref::layered_iteration(ground, params, s, conversions);
+    ASSERT_NO_THROW(gt::check_layered_ground(ground, params)) << "step " << step;  // ≥ 0, veg in [0, 1]
+  }
+  const gt::LayeredLedger final_ledger = gt::layered_ledger(ground, types);
+  for (int component = 0; component < 5; ++component) {
+    const auto i = static_cast<std::size_t>(component);
+    const double expected = initial.components[i] + conversions.converted_into(component) -
+                            conversions.converted_from(component);
+    const double scale = initial.components[i] + conversions.converted_into(component);
+    EXPECT_NEAR(final_ledger.components[i], expected, tolerance * scale) << gt::soil_component_name(component);
+  }
+  for (std::size_t type = 0; type < types; ++type) {
+    EXPECT_NEAR(final_ledger.bedrock[type], initial.bedrock[type] - conversions.bedrock_converted(type),
+                tolerance * initial.bedrock[type])
+        << "bedrock type " << type;
+  }
+  EXPECT_NEAR(final_ledger.total(), initial.total(), tolerance * initial.total());
+  // Every kind of conversion happened; weathering is the only source of organic matter.
+  EXPECT_GT(conversions.weathered_into[org], 0.0);
+  EXPECT_GT(conversions.weathered_from[boulders], 0.0);
+  EXPECT_GT(conversions.soil_formed_from[0], 0.0);
+  EXPECT_GT(conversions.soil_formed_into[org], 0.0);
+  EXPECT_EQ(conversions.soil_formed_from[2], 0.0);
+  EXPECT_EQ(conversions.fragmented_into[org], 0.0);
+}
+
+TEST(LayeredLedger, EveryMaterialWithWeatheringAndVegetationDouble) {
+  run_full_ledger_case<double>(gt::LayeredBorder::closed, gt::VegetationQuality::thesis);
+}
+
+TEST(LayeredLedger, EveryMaterialWithWeatheringAndVegetationPeriodicCode) {
+  run_full_ledger_case<double>(gt::LayeredBorder::periodic, gt::VegetationQuality::seed001_code);
+}
+
+TEST(LayeredLedger, EveryMaterialWithWeatheringAndVegetationFloat) {
+  run_full_ledger_case<float>(gt::LayeredBorder::closed, gt::VegetationQuality::thesis);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Construction, checks, neighbours and ledger of the layered ground (see layered_ground.hpp).
 #include "core/layered/layered_ground.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 #include <string>
@@ -182,9 +183,30 @@ LayeredLedger layered_ledger(const LayeredGround<Real>& ground, std::size_t bedr
   return ledger;
 }
 
+double LayeredConversions::converted_into(int component) const {
+  const auto i = static_cast<std::size_t>(component);
+  return fragmented_into.at(i) + weathered_into.at(i) + soil_formed_into.at(i);
+}
+
+double LayeredConversions::converted_from(int component) const {
+  return weathered_from.at(static_cast<std::size_t>(component));
+}
+
+double LayeredConversions::bedrock_converted(std::size_t type) const {
+  const double fragmented = type < fragmented_from.size() ? fragmented_from[type] : 0.0;
+  const double formed = type < soil_formed_from.size() ? soil_formed_from[type] : 0.0;
+  return fragmented + formed;
+}
+
+void LayeredConversions::fit_types(std::size_t bedrock_type_count) {
+  fragmented_from.resize(std::max(fragmented_from.size(), bedrock_type_count), 0.0);
+  soil_formed_from.resize(std::max(soil_formed_from.size(), bedrock_type_count), 0.0);
+}
+
 LayeredConversions no_conversions(std::size_t bedrock_type_count) {
   LayeredConversions conversions;
   conversions.fragmented_from.assign(bedrock_type_count, 0.0);
+  conversions.soil_formed_from.assign(bedrock_type_count, 0.0);
   return conversions;
 }
 

@@ -39,6 +39,8 @@ inline constexpr int layered_neighbour_count = 8;
 inline constexpr std::uint32_t talus_neighbour_stream(int k) { return static_cast<std::uint32_t>(k); }
 inline constexpr std::uint32_t talus_cell_stream = 8;
 inline constexpr std::uint32_t creep_cell_stream = 9;
+// rand(0, 1) of vegetation growth (§3.15), one per column and step.
+inline constexpr std::uint32_t vegetation_cell_stream = 10;
 
 template <class Real>
 struct LayeredGround {
@@ -105,12 +107,34 @@ struct LayeredLedger {
   double total() const;
 };
 
-// Cumulative conversions between ledger lines, m³. Fragmentation (talus on bedrock, §3.10) is the
-// only one so far: `fragmented_from[t]` left bedrock type t, `fragmented_into[i]` entered component i.
-// Neither closed nor periodic borders let material out, so the ledger has no outflow term.
+// Cumulative conversions between ledger lines, m³:
+//   - fragmentation (talus on bedrock, §3.10): `fragmented_from[t]` left bedrock type t,
+//     `fragmented_into[i]` entered component i;
+//   - weathering of soil (§3.16): `weathered_from[i]` left component i, `weathered_into[i]` entered
+//     it (sand → org, gravel → sand, stones → gravel, boulders → stones: org never leaves, boulders
+//     never enter);
+//   - soil formation (bedrock → subsoil, §3.16): `soil_formed_from[t]` left bedrock type t,
+//     `soil_formed_into[i]` entered component i.
+// Vegetation growth creates no material (decision: veg is a density, not a volume), so it has no
+// line; weathering's sand → org is the only source of organic matter, counted here.
+// Neither closed nor periodic borders let material out, so the ledger has no outflow term: for each
+// component i, V_i(end) − V_i(start) = converted_into(i) − converted_from(i), and for each bedrock
+// type t, V_t(end) − V_t(start) = −bedrock_converted(t).
 struct LayeredConversions {
   std::vector<double> fragmented_from;                            // per bedrock type
   std::array<double, soil_component_count> fragmented_into{};     // org stays 0
+  std::array<double, soil_component_count> weathered_from{};      // org stays 0
+  std::array<double, soil_component_count> weathered_into{};      // boulders stay 0
+  std::vector<double> soil_formed_from;                           // per bedrock type
+  std::array<double, soil_component_count> soil_formed_into{};
+
+  // Σ of every conversion into / out of soil component i, and out of bedrock type t (0 past the
+  // vectors' ends), m³.
+  double converted_into(int component) const;
+  double converted_from(int component) const;
+  double bedrock_converted(std::size_t type) const;
+  // Sizes the per-type vectors for `bedrock_type_count` types (never shrinks them).
+  void fit_types(std::size_t bedrock_type_count);
 };
 
 template <class Real>

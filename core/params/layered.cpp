@@ -52,6 +52,17 @@ void validate_bedrock_type(const BedrockType& type, std::size_t index) {
   require(std::abs(sum - 1.0) <= fragment_sum_tolerance,
           fmt::format("{} fragment shares K_rock sum to {}, not 1", name, sum));
   require_at_least(type.hardness, 0.0, name + " hardness");
+  require_at_least(type.soil_rate, 0.0, name + " soil_rate");
+  double composition = 0.0;
+  for (int component = 0; component < soil_component_count; ++component) {
+    const double share = type.soil_composition[static_cast<std::size_t>(component)];
+    const std::string share_name = fmt::format("{} soil_composition share of {}", name, soil_component_name(component));
+    require_at_least(share, 0.0, share_name);
+    require(share <= 1.0, fmt::format("{} = {} must be <= 1", share_name, share));
+    composition += share;
+  }
+  require(std::abs(composition - 1.0) <= fragment_sum_tolerance,
+          fmt::format("{} soil_composition shares K_j,i sum to {}, not 1", name, composition));
 }
 
 template <class Enum>
@@ -66,6 +77,11 @@ Enum choice_from_json(const nlohmann::json& resolved, const char* key, std::init
 
 constexpr std::array<const char*, soil_component_count> repose_keys{"repose_org", "repose_sand", "repose_gravel",
                                                                     "repose_stones", "repose_boulders"};
+constexpr std::array<const char*, soil_component_count> quality_keys{
+    "vegetation_quality_org", "vegetation_quality_sand", "vegetation_quality_gravel", "vegetation_quality_stones",
+    "vegetation_quality_boulders"};
+constexpr std::array<const char*, fragment_size_count> weathering_keys{"weathering_org", "weathering_sand",
+                                                                       "weathering_gravel", "weathering_stones"};
 
 }  // namespace
 
@@ -87,8 +103,15 @@ const char* layered_border_name(LayeredBorder border) {
   return border == LayeredBorder::closed ? "closed" : "periodic";
 }
 
+const char* vegetation_quality_name(VegetationQuality quality) {
+  return quality == VegetationQuality::thesis ? "thesis" : "seed001_code";
+}
+
+// Type 2 ("granite") forms no soil in the code (rate 0); its composition, never used, is all boulders.
 std::vector<BedrockType> seed001_bedrock_types() {
-  return {{4.0, {0.0, 0.2, 0.3, 0.5}, 1.0}, {1e7, {0.0, 0.1, 0.2, 0.7}, 2.0}, {1e7, {0.0, 0.05, 0.15, 0.8}, 3.0}};
+  return {{4.0, {0.0, 0.2, 0.3, 0.5}, 1.0, 0.001, {0.2, 0.0, 0.0, 0.1, 0.7}},
+          {1e7, {0.0, 0.1, 0.2, 0.7}, 2.0, 0.0003, {0.2, 0.0, 0.0, 0.0, 0.8}},
+          {1e7, {0.0, 0.05, 0.15, 0.8}, 3.0, 0.0, {0.0, 0.0, 0.0, 0.0, 1.0}}};
 }
 
 void validate_layered_params(const LayeredParams& params) {
@@ -107,6 +130,20 @@ void validate_layered_params(const LayeredParams& params) {
   require_positive(params.creep_denominator_floor, "creep_denominator_floor");
   require(params.creep_denominator_floor <= 1.0,
           fmt::format("creep_denominator_floor = {} must be <= 1", params.creep_denominator_floor));
+  require_at_least(params.vegetation_rate, 0.0, "vegetation_rate");
+  require_at_least(params.vegetation_equilibrium, 0.0, "vegetation_equilibrium");
+  require_at_least(params.vegetation_neighbours, 0.0, "vegetation_neighbours");
+  for (std::size_t i = 0; i < quality_keys.size(); ++i) {
+    require_at_least(params.vegetation_soil_quality[i], 0.0, quality_keys[i]);
+  }
+  require_positive(params.root_depth, "root_depth");
+  require_positive(params.root_depth_deep, "root_depth_deep");
+  require_at_least(params.vegetation_base, 0.0, "vegetation_base");
+  require_at_least(params.weathering_rate, 0.0, "weathering_rate");
+  for (std::size_t i = 0; i < weathering_keys.size(); ++i) {
+    require_at_least(params.weathering_shares[i], 0.0, weathering_keys[i]);
+  }
+  require_at_least(params.weathering_reach, 0.0, "weathering_reach");
 }
 
 const ParamSpecs& layered_param_specs() {
@@ -134,6 +171,28 @@ const ParamSpecs& layered_param_specs() {
       {"border", ParamKind::choice, "closed", 0, 0, {"closed", "periodic"}, "",
        "closed walls, or the code's periodic wrap (grids of at least 3 × 3)"},
       {"seed", ParamKind::integer, 1, 0, 4294967295.0, {}, "count", "key of the counter-based random numbers"},
+      {"vegetation_quality", ParamKind::choice, "thesis", 0, 0, {"thesis", "seed001_code"}, "",
+       "soil quality of vegetation growth (§3.15): one sample to root_depth, nveg over 8 neighbours; or the code's "
+       "blend of root_depth and root_depth_deep samples by veg, minus vegetation_base, nveg over the 3 × 3"},
+      {"vegetation_rate", ParamKind::real, 1.0, 0.0, 10.0, {}, "1/s", "K_veg: vegetation spread rate (code: 1)"},
+      {"vegetation_equilibrium", ParamKind::real, 0.8, 0.0, 10.0, {}, "1", "K_eveg: veg' ∝ q_s − K_eveg·veg (code)"},
+      {"vegetation_neighbours", ParamKind::real, 0.25, 0.0, 10.0, {}, "1", "K_nveg: weight of the neighbours' veg (code)"},
+      {"vegetation_quality_org", ParamKind::real, 1.0, 0.0, 100.0, {}, "1", "K_vorg (thesis 1; the code 1.5)"},
+      {"vegetation_quality_sand", ParamKind::real, 0.2, 0.0, 100.0, {}, "1", "K_vrock0 (thesis and code 0.2)"},
+      {"vegetation_quality_gravel", ParamKind::real, 0.0, 0.0, 100.0, {}, "1", "K_vrock1"},
+      {"vegetation_quality_stones", ParamKind::real, 0.0, 0.0, 100.0, {}, "1", "K_vrock2"},
+      {"vegetation_quality_boulders", ParamKind::real, 0.0, 0.0, 100.0, {}, "1", "K_vrock3"},
+      {"root_depth", ParamKind::real, 0.25, 1e-6, 1e3, {}, "m", "K_vd, depth of the soil sample (code's shallow one)"},
+      {"root_depth_deep", ParamKind::real, 2.0, 1e-6, 1e3, {}, "m", "the code's deep sample (seed001_code)"},
+      {"vegetation_base", ParamKind::real, 0.2, 0.0, 2.0, {}, "1", "subtracted from the quality (seed001_code)"},
+      {"weathering_rate", ParamKind::real, 0.001, 0.0, 1.0, {}, "m/s",
+       "K_conv: rock broken by roots per second at veg 1 (code: 0.01 × rock breakdown speed 0.1)"},
+      {"weathering_org", ParamKind::real, 1.0, 0.0, 100.0, {}, "1", "K_org: sand → organic matter"},
+      {"weathering_sand", ParamKind::real, 0.2, 0.0, 100.0, {}, "1", "K_1,0: gravel → sand"},
+      {"weathering_gravel", ParamKind::real, 0.3, 0.0, 100.0, {}, "1", "K_2,1: stones → gravel"},
+      {"weathering_stones", ParamKind::real, 0.4, 0.0, 100.0, {}, "1", "K_3,2: boulders → stones"},
+      {"weathering_reach", ParamKind::real, 4.0, 0.0, 1e3, {}, "m",
+       "bedrock turns into subsoil only under less soil than this (code: 4.0)"},
   };
   return specs;
 }
@@ -160,6 +219,23 @@ LayeredParams layered_params_from_json(const nlohmann::json& resolved) {
   params.border = choice_from_json(resolved, "border", {LayeredBorder::closed, LayeredBorder::periodic},
                                    layered_border_name);
   params.seed = resolved.at("seed").get<std::uint32_t>();
+  params.vegetation_quality = choice_from_json(resolved, "vegetation_quality",
+                                               {VegetationQuality::thesis, VegetationQuality::seed001_code},
+                                               vegetation_quality_name);
+  params.vegetation_rate = resolved.at("vegetation_rate").get<double>();
+  params.vegetation_equilibrium = resolved.at("vegetation_equilibrium").get<double>();
+  params.vegetation_neighbours = resolved.at("vegetation_neighbours").get<double>();
+  for (std::size_t i = 0; i < quality_keys.size(); ++i) {
+    params.vegetation_soil_quality[i] = resolved.at(quality_keys[i]).get<double>();
+  }
+  params.root_depth = resolved.at("root_depth").get<double>();
+  params.root_depth_deep = resolved.at("root_depth_deep").get<double>();
+  params.vegetation_base = resolved.at("vegetation_base").get<double>();
+  params.weathering_rate = resolved.at("weathering_rate").get<double>();
+  for (std::size_t i = 0; i < weathering_keys.size(); ++i) {
+    params.weathering_shares[i] = resolved.at(weathering_keys[i]).get<double>();
+  }
+  params.weathering_reach = resolved.at("weathering_reach").get<double>();
   validate_layered_params(params);
   return params;
 }
@@ -177,6 +253,15 @@ std::vector<BedrockType> bedrock_types_from_json(const nlohmann::json& types) {
       type.fragments[static_cast<std::size_t>(size)] = entry.at("fragments").at(static_cast<std::size_t>(size)).get<double>();
     }
     type.hardness = entry.value("hardness", 1.0);
+    if (entry.contains("soil_rate")) type.soil_rate = entry.at("soil_rate").get<double>();
+    if (entry.contains("soil_composition")) {
+      require(entry.at("soil_composition").is_array() && entry.at("soil_composition").size() == soil_component_count,
+              fmt::format("bedrock type {} soil_composition needs 5 shares", out.size()));
+      for (int component = 0; component < soil_component_count; ++component) {
+        type.soil_composition[static_cast<std::size_t>(component)] =
+            entry.at("soil_composition").at(static_cast<std::size_t>(component)).get<double>();
+      }
+    }
     validate_bedrock_type(type, out.size());
     out.push_back(type);
   }

@@ -24,6 +24,16 @@
 // sum over 8 neighbours, so a peak's difference to its neighbours becomes Δh·(1 − 4.5·Δt), which
 // overshoots for Δt > 2/9 s and makes a pile oscillate in a checkerboard that never rests. Bedrock hardness has no value in either source: it is a relative
 // rank (1, 2, 3) for force erosion (§3.12) and is not read by talus or creep.
+//
+// Vegetation (§3.15) and weathering (§3.16; reference/erosion/layered/{vegetation,weathering}.hpp):
+//   - `vegetation_quality`: thesis, q_s = Σ_i K_v,i·V*_i/min(K_vd, h_soil) over the soil down to the
+//     root depth K_vd, and nveg over the 8 neighbours; `seed001_code`: (1 − veg)·q(0.25 m) +
+//     veg·q(2.0 m) − vegetation_base, nveg over the 3 × 3 including the centre. K_vorg is a parameter
+//     of its own: the thesis's 1 by default, the code uses 1.5 (set it with the variant).
+//   - K_veg (the code's spread speed 1), K_eveg 0.8 and K_nveg 0.25: the thesis gives no values.
+//   - Weathering: K_conv = 0.01·0.1 m/s (the code's 0.01·organification_speed), [K_org, K_1,0, K_2,1,
+//     K_3,2] = [1, 0.2, 0.3, 0.4], reach 4.0 m; per bedrock type the code's soil formation rate
+//     (0.01·0.1·[1, 0.3, 0] m/s) and the composition of the soil it forms.
 #pragma once
 
 #include <array>
@@ -46,11 +56,14 @@ const char* soil_component_name(int component);
 enum class TalusAmount { thesis, seed001_code };
 enum class CreepDenominator { singular, seed001_code };
 enum class LayeredBorder { closed, periodic };
+enum class VegetationQuality { thesis, seed001_code };
 
 // "thesis", "seed001_code"; "singular", "seed001_code"; "closed", "periodic".
 const char* talus_amount_name(TalusAmount amount);
 const char* creep_denominator_name(CreepDenominator denominator);
 const char* layered_border_name(LayeredBorder border);
+// "thesis", "seed001_code".
+const char* vegetation_quality_name(VegetationQuality quality);
 
 struct BedrockType {
   double repose_tan = 4.0;  // tan φ of the rock face
@@ -58,6 +71,11 @@ struct BedrockType {
   // summing to 1.
   std::array<double, fragment_size_count> fragments{0.0, 0.2, 0.3, 0.5};
   double hardness = 1.0;  // relative, ≥ 0; for force erosion (§3.12)
+  // §3.16 bedrock → soil: K_j, thickness turned into subsoil per second at full vegetation (m/s,
+  // ≥ 0), and K_j,i, the shares of org, sand, gravel, stones, boulders it becomes (each in [0, 1],
+  // summing to 1).
+  double soil_rate = 0.001;
+  std::array<double, soil_component_count> soil_composition{0.2, 0.0, 0.0, 0.1, 0.7};
 };
 
 // The code's three bedrock types (§3.10 [code]).
@@ -80,6 +98,21 @@ struct LayeredParams {
   bool creep_random = true;
   LayeredBorder border = LayeredBorder::closed;
   std::uint32_t seed = 1;          // key of the counter-based RNG (core/rng.hpp)
+  // Vegetation growth (§3.15).
+  VegetationQuality vegetation_quality = VegetationQuality::thesis;
+  double vegetation_rate = 1.0;         // K_veg, 1/s
+  double vegetation_equilibrium = 0.8;  // K_eveg, ≥ 0
+  double vegetation_neighbours = 0.25;  // K_nveg, ≥ 0
+  // K_v of org (K_vorg: thesis 1, code 1.5), sand (K_vrock0), gravel, stones, boulders; ≥ 0.
+  std::array<double, soil_component_count> vegetation_soil_quality{1.0, 0.2, 0.0, 0.0, 0.0};
+  double root_depth = 0.25;       // K_vd, m (> 0); the code's shallow sample
+  double root_depth_deep = 2.0;   // the code's deep sample, m (> 0; seed001_code only)
+  double vegetation_base = 0.2;   // subtracted from the quality (seed001_code only), ≥ 0
+  // Weathering (§3.16).
+  double weathering_rate = 0.001;  // K_conv, m/s, ≥ 0
+  // [K_org (sand → org), K_1,0 (gravel → sand), K_2,1 (stones → gravel), K_3,2 (boulders → stones)], ≥ 0.
+  std::array<double, fragment_size_count> weathering_shares{1.0, 0.2, 0.3, 0.4};
+  double weathering_reach = 4.0;   // bedrock turns into soil only under less soil than this, m (≥ 0)
 };
 
 // Throws InputError ("erosion.layered: ...") naming the first bad value: non-finite numbers, Δt ≤ 0,
@@ -93,6 +126,7 @@ const ParamSpecs& layered_param_specs();
 // From resolve_params(..., layered_param_specs(), ...); the bedrock types keep their defaults.
 LayeredParams layered_params_from_json(const nlohmann::json& resolved);
 // [{"repose_tan": 4.0, "fragments": [0, 0.2, 0.3, 0.5], "hardness": 1}, ...]; validated as above.
+// Optional "soil_rate" and "soil_composition" (5 shares; §3.16) default to BedrockType's (type 0's).
 std::vector<BedrockType> bedrock_types_from_json(const nlohmann::json& types);
 
 // The initial profile of every column, top down: topsoil and subsoil component thicknesses (m) and

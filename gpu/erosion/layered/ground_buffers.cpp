@@ -23,15 +23,24 @@ static_assert(offsetof(LayeredBlock, seed) == 104);
 static_assert(offsetof(LayeredBlock, step_number) == 108);
 static_assert(offsetof(LayeredBlock, talus_thesis_amount) == 112);
 static_assert(offsetof(LayeredBlock, creep_floored) == 124);
-static_assert(sizeof(LayeredBlock) == 128);
+static_assert(offsetof(LayeredBlock, vegetation_quality_a) == 128);
+static_assert(offsetof(LayeredBlock, weathering_shares) == 144);
+static_assert(offsetof(LayeredBlock, vegetation_quality_boulders) == 160);
+static_assert(offsetof(LayeredBlock, vegetation_code) == 188);
+static_assert(offsetof(LayeredBlock, weathering_reach) == 196);
+static_assert(sizeof(LayeredBlock) == 208);
 
-// Mirror of `BedrockTypeRecord` (std430: a vec4, a float, padded to 32 bytes).
+// Mirror of `BedrockTypeRecord` (std430: a vec4, two floats, a vec4 at 32; 48 bytes).
 struct BedrockTypeRecord {
   float fragments[4];
   float repose_tan;
-  float padding[3];
+  float soil_rate;
+  float padding[2];
+  float soil_composition_a[4];
 };
-static_assert(sizeof(BedrockTypeRecord) == 32);
+static_assert(offsetof(BedrockTypeRecord, soil_rate) == 20);
+static_assert(offsetof(BedrockTypeRecord, soil_composition_a) == 32);
+static_assert(sizeof(BedrockTypeRecord) == 48);
 
 // Mirror of `ColumnConversion` in apply.comp (std430: a vec4, a float, an int, padded to 32 bytes).
 struct ColumnConversion {
@@ -73,6 +82,20 @@ LayeredBlock make_block(const LayeredGround<float>& ground, const LayeredParams&
   block.talus_random = params.talus_random ? 1 : 0;
   block.creep_random = params.creep_random ? 1 : 0;
   block.creep_floored = params.creep_denominator == CreepDenominator::seed001_code ? 1 : 0;
+  for (int i = 0; i < 4; ++i) {
+    block.vegetation_quality_a[i] = static_cast<float>(params.vegetation_soil_quality[static_cast<std::size_t>(i)]);
+    block.weathering_shares[i] = static_cast<float>(params.weathering_shares[static_cast<std::size_t>(i)]);
+  }
+  block.vegetation_quality_boulders = static_cast<float>(params.vegetation_soil_quality[4]);
+  block.vegetation_rate = static_cast<float>(params.vegetation_rate);
+  block.vegetation_equilibrium = static_cast<float>(params.vegetation_equilibrium);
+  block.vegetation_neighbours = static_cast<float>(params.vegetation_neighbours);
+  block.root_depth = static_cast<float>(params.root_depth);
+  block.root_depth_deep = static_cast<float>(params.root_depth_deep);
+  block.vegetation_base = static_cast<float>(params.vegetation_base);
+  block.vegetation_code = params.vegetation_quality == VegetationQuality::seed001_code ? 1 : 0;
+  block.weathering_rate = static_cast<float>(params.weathering_rate);
+  block.weathering_reach = static_cast<float>(params.weathering_reach);
   return block;
 }
 
@@ -84,6 +107,10 @@ std::vector<BedrockTypeRecord> type_records(const LayeredParams& params) {
       record.fragments[size] = static_cast<float>(type.fragments[static_cast<std::size_t>(size)]);
     }
     record.repose_tan = static_cast<float>(type.repose_tan);
+    record.soil_rate = static_cast<float>(type.soil_rate);
+    for (int i = 0; i < 4; ++i) {
+      record.soil_composition_a[i] = static_cast<float>(type.soil_composition[static_cast<std::size_t>(i)]);
+    }
     records.push_back(record);
   }
   return records;
@@ -176,6 +203,14 @@ void LayeredGroundBuffers::compute_then_apply(const ComputeProgram& outflow, con
   apply.dispatch(shape_.width, shape_.height, local_size, local_size);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   add_conversions(conversions);
+}
+
+void LayeredGroundBuffers::dispatch_pass(const ComputeProgram& pass, std::uint32_t step) {
+  block_.step_number = step;
+  block_buffer_.upload(block_);
+  bind();
+  pass.dispatch(shape_.width, shape_.height, local_size, local_size);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 void LayeredGroundBuffers::add_conversions(LayeredConversions& conversions) const {

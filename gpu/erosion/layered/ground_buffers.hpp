@@ -12,6 +12,7 @@
 // the current state.
 // LayeredSlopeProcess(outflow_shader, clear_vegetation) is one such process (talus.hpp, creep.hpp
 // make them): its outflow program and the apply program, with LAYERED_CLEAR_VEGETATION when asked.
+// dispatch_pass(pass, step) runs one pass of a local process (vegetation.hpp, weathering.hpp).
 // Needs a current GlContext. Units: metres.
 #pragma once
 
@@ -49,6 +50,19 @@ struct LayeredBlock {
   std::int32_t talus_random;
   std::int32_t creep_random;
   std::int32_t creep_floored;
+  float vegetation_quality_a[4];
+  float weathering_shares[4];
+  float vegetation_quality_boulders;
+  float vegetation_rate;
+  float vegetation_equilibrium;
+  float vegetation_neighbours;
+  float root_depth;
+  float root_depth_deep;
+  float vegetation_base;
+  std::int32_t vegetation_code;
+  float weathering_rate;
+  float weathering_reach;
+  std::int32_t padding[2];
 };
 
 class LayeredGroundBuffers {
@@ -62,6 +76,12 @@ class LayeredGroundBuffers {
 
   void compute_then_apply(const ComputeProgram& outflow, const ComputeProgram& apply, std::uint32_t step,
                           LayeredConversions& conversions);
+  // One pass of a local process (vegetation, weathering): the block with `step`, every buffer bound
+  // (the outflows as its scratch), one invocation per column, then a barrier. No snapshot copy.
+  void dispatch_pass(const ComputeProgram& pass, std::uint32_t step);
+  // Sizes and cell sizes of the ground (its arrays empty); the parameters.
+  const LayeredGround<float>& shape() const { return shape_; }
+  const LayeredParams& params() const { return params_; }
 
  private:
   void bind() const;

@@ -2,7 +2,7 @@
 // twin: core/layered/layered_ground.hpp, reference/erosion/layered/{column,transfer}.cpp; host:
 // gpu/erosion/layered/ground_buffers.cpp): the parameter block, the state buffers and their
 // indexing, neighbours, the random factor, layer thicknesses, the topmost non-empty layer and the
-// availability clamp.
+// availability clamp; the parameters of vegetation and weathering (vegetation.comp, weathering.comp).
 //
 // State layout (structure of arrays, cell c = y·width + x, `cells` = width·height):
 //   soil[(j·5 + i)·cells + c]: component i of soil layer j; bedrock[k·cells + c]: bedrock layer k.
@@ -46,11 +46,26 @@ layout(std140, binding = 0) uniform LayeredBlock {
   int talus_random;
   int creep_random;
   int creep_floored;            // 1: the seed001_code denominator
+  // Vegetation (§3.15) and weathering (§3.16).
+  vec4 vegetation_quality_a;    // K_v of org, sand, gravel, stones
+  vec4 weathering_shares;       // K_org, K_1,0, K_2,1, K_3,2
+  float vegetation_quality_boulders;
+  float vegetation_rate;        // K_veg, 1/s
+  float vegetation_equilibrium; // K_eveg
+  float vegetation_neighbours;  // K_nveg
+  float root_depth;             // K_vd, m
+  float root_depth_deep;        // m (seed001_code)
+  float vegetation_base;        // (seed001_code)
+  int vegetation_code;          // 1: the seed001_code quality
+  float weathering_rate;        // K_conv, m/s
+  float weathering_reach;       // m
 };
 
 struct BedrockTypeRecord {
   vec4 fragments;  // K_rock: sand, gravel, stones, boulders
   float repose_tan;
+  float soil_rate;              // K_t of bedrock → soil, m/s (§3.16)
+  vec4 soil_composition_a;      // K_t,i of org, sand, gravel, stones (boulders: the remainder)
 };
 
 layout(std430, binding = 1) buffer Surface { float surface[]; };

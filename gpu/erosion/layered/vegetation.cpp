@@ -1,0 +1,21 @@
+// Host side of vegetation growth on the layered ground (digest 001 §3.15; see vegetation.hpp).
+#include "gpu/erosion/layered/vegetation.hpp"
+
+#include <string>
+#include <vector>
+
+namespace gt::gpu {
+
+LayeredVegetation::LayeredVegetation()
+    : grow_(ComputeProgram::load("erosion/layered/vegetation.comp")),
+      store_(ComputeProgram::load("erosion/layered/vegetation.comp", std::vector<std::string>{"VEGETATION_STORE"})) {}
+
+void LayeredVegetation::step(LayeredGroundBuffers& ground, std::uint32_t step,
+                             LayeredConversions& /*conversions*/) const {
+  ground.dispatch_pass(grow_, step);
+  ground.dispatch_pass(store_, step);
+}
+
+LayeredVegetation layered_vegetation() { return {}; }
+
+}  // namespace gt::gpu

@@ -1,0 +1,29 @@
+// Vegetation growth on the layered ground (digest 001 §3.15), GPU twin of
+// reference/erosion/layered/vegetation.hpp (decisions there). LayeredVegetation compiles
+// gpu/shaders/erosion/layered/vegetation.comp twice: the grow pass writes every column's new density
+// into the outflow buffer (scratch) from the old densities, the store pass copies it into the
+// vegetation buffer — the reference's double buffer. step(ground, step, conversions) runs both,
+// drawing rand(0, 1) with the reference's key (seed, cell, step, vegetation_cell_stream); growth
+// converts nothing, so `conversions` stays as it is. Needs a current GlContext.
+// Units: K_veg in 1/s, Δt in s, depths in m.
+#pragma once
+
+#include <cstdint>
+
+#include "gpu/erosion/layered/ground_buffers.hpp"
+
+namespace gt::gpu {
+
+class LayeredVegetation {
+ public:
+  LayeredVegetation();
+  void step(LayeredGroundBuffers& ground, std::uint32_t step, LayeredConversions& conversions) const;
+
+ private:
+  ComputeProgram grow_;
+  ComputeProgram store_;
+};
+
+LayeredVegetation layered_vegetation();
+
+}  // namespace gt::gpu

@@ -1,0 +1,47 @@
+// Vegetation growth on the layered ground (digest 001 §3.15), CPU reference.
+//
+// vegetation_step(ground, params, step, conversions): every column's new density from one snapshot
+// of the old densities (double-buffered, as the code's vegetation2), then written back:
+//   - death: a column with no organic matter in either soil layer gets veg' = 0 (the code's rule;
+//     the thesis is silent, taken for both variants). The flood rule (wet > threshold) is a no-op
+//     here: the model has no water yet, wetness is 0 and never exceeds any threshold, so it has no
+//     parameter until the water processes exist.
+//   - soil quality, from the soil sampled down to depth d (topsoil, then subsoil, a layer partly
+//     sampled contributing the same share of each component), normalised by min(d, h_soil):
+//       q(d) = (Σ_i K_v,i·V*_i(d)) / min(d, h_soil)      (0 where the soil is empty)
+//     thesis: q_s = q(K_vd); seed001_code: q_s = (1 − veg)·q(K_vd) + veg·q(d_deep) − vegetation_base
+//     (the code's 0.25 m and 2.0 m samples; the code's own normalisation "only if the thickness is
+//     > 1" is vague, the thesis's min(d, h_soil) is used for both samples).
+//   - nveg: the old densities of the 8 neighbours (thesis), or of the 3 × 3 including the column
+//     (seed001_code); neighbours outside a closed border count 0.
+//   - veg' = clamp(veg + rand(0,1)·K_veg·Δt·(q_s − K_eveg·veg + K_nveg·nveg), 0, 1); the thesis
+//     writes no clamp, but veg ∈ [0, 1] by definition (the code clamps). rand from the counter-based
+//     RNG keyed (seed, c, step, vegetation_cell_stream).
+// Vegetation is a density, not a volume: growth creates no material and converts nothing, so
+// `conversions` is left as it is (organic matter is made only by weathering, weathering.hpp).
+// Units: K_veg in 1/s, Δt in s, depths in m; q_s, veg, nveg dimensionless.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/layered/layered_ground.hpp"
+#include "core/params/layered.hpp"
+
+namespace gt::reference {
+
+// q(d) of column c: Σ_i K_v,i·V*_i(d) / min(d, h_soil), 0 for an empty soil.
+template <class Real>
+Real soil_quality(const LayeredGround<Real>& ground, const LayeredParams& params, std::size_t c, Real depth);
+
+// Column (x, y)'s density after one step, from `ground` as it is.
+template <class Real>
+Real grown_vegetation(const LayeredGround<Real>& ground, const LayeredParams& params, int x, int y,
+                      std::uint32_t step);
+
+// One double-buffered step. Valid parameters and ground assumed, as talus_step (talus.hpp).
+template <class Real>
+void vegetation_step(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
+                     LayeredConversions& conversions);
+
+}  // namespace gt::reference
