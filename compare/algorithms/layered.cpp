@@ -1,7 +1,7 @@
 // The driver's view of seed 001's layered ground (issue 14; digest 001 §3.1, §3.10–3.11, §4):
-// a heightmap given a stated soil–rock profile in every column, then `steps` iterations of the
-// slope processes (reference/erosion/slope_step.hpp: creep, then talus), in ref<double> and
-// ref<float>, with a ledger per material and the pictures a geologist reads.
+// a heightmap given a stated soil–rock profile in every column, then `steps` iterations
+// (reference/erosion/layered/iteration.hpp: creep, talus, vegetation, weathering), in ref<double>
+// and ref<float>, beside the GPU twin, with a ledger per material and the pictures a geologist reads.
 //
 // The initial profile (the same in every column, hung from the input's surface), from parameters:
 //   soil                 the components' shares (org, sand, gravel, stones, boulders) of topsoil and
@@ -20,7 +20,7 @@
 //                        materials and never create or destroy it (fragmentation is the only one yet)
 //   ledger.conversions.cpu             |bedrock fragmented − fragments made| / V
 //     Bound of all three: S·R·2u (tests/layered_reference_test.cpp's model: each stored thickness
-//     passes through at most R = 32 roundings a step, each within u of what the cell holds of the
+//     passes through at most R = 36 roundings an iteration, each within u of what the cell holds of the
 //     material, and what moved is at most V), u the unit roundoff of the run's type.
 //   layers.invalid.cpu                 columns with a negative or non-finite thickness, or a topsoil
 //                        above topsoil_max·(1 + 64u) (two organizes leave it at the maximum within a
@@ -37,6 +37,7 @@
 //   parity.state.gpu_vs_float          the GPU twin (gpu/erosion/layered/) stepped beside ref<float>,
 //                        compared at every ledger checkpoint: values differing in any bit, plus
 //                        conversion totals beyond their summation bound (bound 0; GpuShadow below)
+// Performance: ms a step by grid side, CPU and GPU, beside Šťava et al. 2008's published figure.
 // Pictures: the surface material (the top non-empty layer's colour, mixed by composition, green by
 // vegetation), the cross-section along the middle row, topsoil and subsoil thickness and
 // vegetation as fields, the ledger over the steps.
@@ -56,6 +57,7 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/inputs.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/field_files.hpp"
 #include "compare/report/images.hpp"
@@ -64,16 +66,17 @@
 #include "core/errors.hpp"
 #include "core/layered/layered_ground.hpp"
 #include "core/params/layered.hpp"
-#include "gpu/erosion/layered/creep.hpp"
 #include "gpu/erosion/layered/ground_buffers.hpp"
-#include "gpu/erosion/layered/talus.hpp"
+#include "gpu/erosion/layered/iteration.hpp"
 #include "reference/erosion/layered/column.hpp"
-#include "reference/erosion/layered/slope_step.hpp"
+#include "reference/erosion/layered/iteration.hpp"
 
 namespace gt {
 namespace {
 
-constexpr double roundings_per_step = 32.0;  // tests/layered_reference_test.cpp's ledger model
+// tests/layered_reference_test.cpp's ledger model: creep and talus round a stored value at most 32
+// times an iteration, weathering 4 more.
+constexpr double roundings_per_step = 36.0;
 constexpr int ledger_points = 50;            // checkpoints of the ledger plot
 
 using Shares = std::array<double, soil_component_count>;
@@ -81,7 +84,7 @@ using Shares = std::array<double, soil_component_count>;
 const ParamSpecs& case_param_specs() {
   static const ParamSpecs specs = [] {
     ParamSpecs all = layered_param_specs();
-    all.push_back({"steps", ParamKind::integer, 200, 1, 100000, {}, "count", "iterations of creep then talus"});
+    all.push_back({"steps", ParamKind::integer, 200, 1, 100000, {}, "count", "iterations of creep, talus, vegetation, weathering"});
     all.push_back({"soil", ParamKind::choice, "loam", 0, 0, {"loam", "sand", "scree"}, "",
                    "the initial topsoil's and subsoil's composition"});
     all.push_back({"topsoil_thickness", ParamKind::real, 0.5, 0.0, 1e3, {}, "m", "initial topsoil (at most topsoil_max)"});
@@ -131,11 +134,14 @@ std::vector<double> material_volumes(const LayeredLedger& ledger) {
   return volumes;
 }
 
+// Each material's net conversion, m³: into it minus out of it (fragmentation, weathering, soil
+// formation), in material_volumes' order.
 std::vector<double> conversion_net(const LayeredConversions& conversions, std::size_t types) {
-  std::vector<double> net(conversions.fragmented_into.begin(), conversions.fragmented_into.end());
-  for (std::size_t type = 0; type < types; ++type) {
-    net.push_back(type < conversions.fragmented_from.size() ? -conversions.fragmented_from[type] : 0.0);
+  std::vector<double> net;
+  for (int component = 0; component < soil_component_count; ++component) {
+    net.push_back(conversions.converted_into(component) - conversions.converted_from(component));
   }
+  for (std::size_t type = 0; type < types; ++type) net.push_back(-conversions.bedrock_converted(type));
   return net;
 }
 
@@ -171,7 +177,7 @@ LayeredRun<Real> run_layered(const LayeredSetup& setup, const CheckpointObserver
   };
   record(0);
   for (int step = 0; step < setup.steps; ++step) {
-    reference::slope_step(run.ground, setup.params, static_cast<std::uint32_t>(step), run.conversions);
+    reference::layered_iteration(run.ground, setup.params, static_cast<std::uint32_t>(step), run.conversions);
     if ((step + 1) % every == 0 || step + 1 == setup.steps) record(step + 1);
   }
   return run;
@@ -211,13 +217,17 @@ void add_ledger_checks(const LayeredRun<Real>& run, int steps, const std::string
                                         fmt::format("|ΣV_end − ΣV_start| / V: {:.6g} m³ against {:.6g} m³", total_end,
                                                     total_start)));
   if (backend != "cpu") return;
-  double fragmented = 0.0, made = 0.0;
-  for (const double volume : run.conversions.fragmented_from) fragmented += volume;
-  for (const double volume : run.conversions.fragmented_into) made += volume;
+  double from = 0.0, into = 0.0;
+  for (int component = 0; component < soil_component_count; ++component) {
+    from += run.conversions.converted_from(component);
+    into += run.conversions.converted_into(component);
+  }
+  for (std::size_t type = 0; type < start.size() - soil_component_count; ++type) from += run.conversions.bedrock_converted(type);
   result.checks.push_back(bounded_check(
-      "ledger.conversions." + backend, std::abs(fragmented - made) / total_start, bound, std::nullopt,
-      fmt::format("|bedrock fragmented − fragments made| / V: {:.6g} m³ of bedrock broke into {:.6g} m³ of fragments",
-                  fragmented, made)));
+      "ledger.conversions." + backend, std::abs(from - into) / total_start, bound, std::nullopt,
+      fmt::format("|converted out of all materials − converted into them| / V: {:.6g} m³ out (bedrock fragmented or "
+                  "turned to soil, rock weathered), {:.6g} m³ in",
+                  from, into)));
 }
 
 // Columns breaking an invariant of the state (see the header).
@@ -315,19 +325,17 @@ class GpuShadow {
  public:
   explicit GpuShadow(const LayeredSetup& setup)
       : buffers_(make_layered_ground<float>(setup.surface, setup.profile, setup.params, setup.vegetation), setup.params),
-        talus_(gpu::layered_talus()),
-        creep_(gpu::layered_creep()),
         conversions_(no_conversions(setup.params.bedrock_types.size())) {}
 
-  // Steps the GPU to `done` steps (creep then talus, as slope_step) and compares with the reference.
+  // Steps the GPU to `done` iterations and compares with the reference.
   void compare_at(int done, const LayeredGround<float>& reference, const LayeredConversions& converted) {
     stepping_ms_ += gpu_wall_ms([&] {
       for (; steps_ < done; ++steps_) {
-        creep_.step(buffers_, static_cast<std::uint32_t>(steps_), conversions_);
-        talus_.step(buffers_, static_cast<std::uint32_t>(steps_), conversions_);
+        iteration_.step(buffers_, static_cast<std::uint32_t>(steps_), conversions_);
       }
     });
-    const LayeredGround<float> state = buffers_.download();
+    state_ = buffers_.download();
+    const LayeredGround<float>& state = state_;
     std::size_t differing = differing_bits(state.surface, reference.surface) + differing_bits(state.soil, reference.soil) +
                             differing_bits(state.bedrock, reference.bedrock) +
                             differing_bits(state.vegetation, reference.vegetation);
@@ -339,6 +347,8 @@ class GpuShadow {
 
   // The GPU's time is its stepping between the checkpoints (each step reads its conversions back;
   // the checkpoints' downloads are left out).
+  const LayeredGround<float>& last_state() const { return state_; }
+
   void add_checks(CaseResult& result) const {
     result.timings.gpu_ms = stepping_ms_;
     result.timings.gpu_reps = 1;
@@ -362,6 +372,14 @@ class GpuShadow {
     for (std::size_t type = 0; type < reference.fragmented_from.size(); ++type) {
       differing += conversions_.fragmented_from[type] == reference.fragmented_from[type] ? 0 : 1;
     }
+    // Weathering and soil formation: per-column floats the host adds in the reference's order.
+    const auto exact = [&](const auto& gpu, const auto& cpu) {
+      for (std::size_t i = 0; i < cpu.size(); ++i) differing += gpu[i] == cpu[i] ? 0 : 1;
+    };
+    exact(conversions_.weathered_from, reference.weathered_from);
+    exact(conversions_.weathered_into, reference.weathered_into);
+    exact(conversions_.soil_formed_from, reference.soil_formed_from);
+    exact(conversions_.soil_formed_into, reference.soil_formed_into);
     for (std::size_t size = 0; size < reference.fragmented_into.size(); ++size) {
       const double bound = (gamma7 + 2.0 * double(terms + 1) * 0x1p-53) * reference.fragmented_into[size];
       differing += std::abs(conversions_.fragmented_into[size] - reference.fragmented_into[size]) <= bound ? 0 : 1;
@@ -370,9 +388,9 @@ class GpuShadow {
   }
 
   gpu::LayeredGroundBuffers buffers_;
-  gpu::LayeredSlopeProcess talus_;
-  gpu::LayeredSlopeProcess creep_;
+  gpu::LayeredIteration iteration_;
   LayeredConversions conversions_;
+  LayeredGround<float> state_;  // as downloaded at the last checkpoint
   int steps_ = 0;
   std::size_t differing_ = 0;
   int first_differing_ = -1;
@@ -473,6 +491,31 @@ void write_cross_section(const LayeredGround<double>& ground, const std::filesys
   write_colour_image(width, elevation_rows + rule_rows + layer_rows, pixels, png);
 }
 
+// The surface as every erosion algorithm hands its terrain back (field `terrain`): as given, and after
+// the run from each backend that ran.
+template <class Real>
+Grid<double> surface_grid(const LayeredGround<Real>& ground) {
+  Grid<double> grid(ground.width, ground.height);
+  grid.cell_size_x = ground.cell_size_x;
+  grid.cell_size_y = ground.cell_size_y;
+  for (std::size_t c = 0; c < ground.cells(); ++c) grid.values[c] = static_cast<double>(ground.surface[c]);
+  return grid;
+}
+
+void write_terrain_fields(const LayeredSetup& setup, const LayeredGround<double>& cpu, const LayeredGround<float>& single,
+                          const LayeredGround<float>* gpu, const RunOptions& options, CaseResult& result) {
+  write_field_files(setup.surface, {"terrain_input", "terrain", "input", "m", "the surface as given"}, options, result);
+  write_field_files(surface_grid(cpu), {"terrain_cpu", "terrain", "cpu", "m", "surface after the run, ref<double>"},
+                    options, result);
+  write_field_files(surface_grid(single),
+                    {"terrain_cpu_float", "terrain", "cpu_float", "m", "surface after the run, ref<float>"}, options,
+                    result);
+  if (gpu) {
+    write_field_files(surface_grid(*gpu), {"terrain_gpu", "terrain", "gpu", "m", "surface after the run, the GPU twin"},
+                      options, result);
+  }
+}
+
 void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double>& run, const RunOptions& options,
                     CaseResult& result) {
   const auto folder = options.report_dir / result.name;
@@ -514,9 +557,6 @@ void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double
   write_field_files(field([&](std::size_t c) { return ground.vegetation[c]; }),
                     {"vegetation_cpu", "vegetation", "cpu", "1", "vegetation density after the run, ref<double>"},
                     options, result);
-  write_field_files(field([&](std::size_t c) { return ground.surface[c]; }),
-                    {"surface_cpu", "surface", "cpu", "m", "surface height after the run, ref<double>"}, options,
-                    result);
   double total = 0.0;
   for (const double volume : run.volumes.front()) total += volume;
   SeriesPlot changes{"each material's volume", "step", "(V − V_start) / V_all", false, false, {}};
@@ -576,7 +616,9 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
   }
   result.checks.push_back(informative_check("parity.surface.float_vs_double", largest,
                                             "largest |surface_float − surface_double| over the columns, m"));
-  if (!options.report_dir.empty()) write_pictures(run.ground, run, options, result);
+  if (options.report_dir.empty()) return;
+  write_pictures(run.ground, run, options, result);
+  write_terrain_fields(setup, run.ground, single.ground, shadow ? &shadow->last_state() : nullptr, options, result);
 }
 
 PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& input) {
@@ -610,6 +652,71 @@ PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& 
   return prepared;
 }
 
+// ---- performance ----------------------------------------------------------------------------
+
+// Šťava et al. 2008 (issue 14): at least 20 frames per second at 2048×1024 with 4 layers on the
+// GPU of 2008, one erosion step a frame: at most 50 ms a step. Other work (their layers are
+// (material, thickness) pairs under water erosion), named for scale.
+BenchmarkRow published_layered_row() {
+  BenchmarkRow row{.algorithm = "erosion.layered", .backend = "published", .size = 2048, .iterations = 1, .reps = 1,
+                   .median_ms = 50.0, .device = "Šťava et al. 2008 (GPU of 2008)", .dimensions = 2};
+  row.mcell_iterations_per_s = 2048.0 * 1024.0 / 0.05 / 1e6;
+  row.detail = "≥ 20 fps at 2048×1024 cells (not 2048²), 4 layers, water erosion: other work, as published";
+  return row;
+}
+
+// `iterations` iterations (creep, talus, vegetation, weathering) on a noisy cone under the default
+// loam profile; the CPU in ref<double>, the GPU as the case runs it (creep and talus: a snapshot
+// copy, an outflow and the apply pass each; vegetation two passes, weathering one; the conversions
+// read back after each process).
+std::vector<BenchmarkRow> benchmark_layered(const BenchmarkOptions& options, bool gpu_available,
+                                            const Environment& environment) {
+  std::vector<BenchmarkRow> rows{published_layered_row()};
+  const int steps = std::max(1, std::min(options.iterations, 4));
+  for (const int size : options.sizes) {
+    const nlohmann::json cone = {{"generator", "cone"}, {"width", size}, {"height", size}, {"cell_size", 1.0},
+                                 {"peak", 0.2 * size}, {"noise", 1.0}, {"seed", 7}};
+    LayeredSetup setup;
+    const auto resolved = resolve_params("erosion.layered", case_param_specs(), {{"steps", steps}});
+    setup.params = layered_params_from_json(resolved);
+    setup.profile = profile_from(resolved);
+    setup.steps = steps;
+    setup.surface = load_input(cone, nullptr, {}).heights;
+    const auto row = [&](const std::string& backend, const std::vector<double>& times, const std::string& device,
+                         const std::string& detail) {
+      BenchmarkRow timed{.algorithm = "erosion.layered", .backend = backend, .size = size, .iterations = steps,
+                         .reps = options.reps, .median_ms = median(times), .device = device, .dimensions = 2};
+      timed.mcell_iterations_per_s = double(size) * size * steps / (timed.median_ms * 1e-3) / 1e6;
+      timed.detail = fmt::format("{:.1f} ms a step; {}", timed.median_ms / steps, detail);
+      return timed;
+    };
+    std::vector<double> cpu_times;
+    for (int rep = 0; rep < options.reps; ++rep) {
+      auto ground = make_layered_ground<double>(setup.surface, setup.profile, setup.params, 0.0);
+      auto conversions = no_conversions(setup.params.bedrock_types.size());
+      cpu_times.push_back(cpu_wall_ms([&] {
+        for (int step = 0; step < steps; ++step) reference::layered_iteration(ground, setup.params, std::uint32_t(step), conversions);
+      }));
+    }
+    rows.push_back(row("cpu", cpu_times, environment.cpu, "creep, talus, vegetation, weathering; ref<double>, one thread"));
+    if (!gpu_available) continue;
+    gpu::LayeredGroundBuffers buffers(make_layered_ground<float>(setup.surface, setup.profile, setup.params, 0.0),
+                                      setup.params);
+    const gpu::LayeredIteration iteration;
+    std::vector<double> gpu_times;
+    for (int rep = 0; rep < options.reps; ++rep) {
+      auto conversions = no_conversions(setup.params.bedrock_types.size());
+      gpu_times.push_back(gpu_wall_ms([&] {
+        for (int step = 0; step < steps; ++step) iteration.step(buffers, std::uint32_t(step), conversions);
+      }));
+    }
+    rows.push_back(row("gpu", gpu_times, environment.gl_renderer,
+                       "9 passes an iteration (creep and talus: snapshot copy, outflow, apply; vegetation 2; weathering 1) and "
+                       "the conversions read back after each process"));
+  }
+  return rows;
+}
+
 }  // namespace
 
 Algorithm layered_algorithm() {
@@ -621,6 +728,7 @@ Algorithm layered_algorithm() {
           .prepare = prepare_layered,
           .iterates = false,
           .has_field_twin = false,
+          .benchmark = benchmark_layered,
           .expect_shape = {{"at_rest", true}},
           // The double state (5·2 components, 2 bedrock layers, types, surface, vegetation: ~112 B),
           // its snapshot each step and its start copy, 8 outflows (64 B), the float run's half of all

@@ -2,12 +2,12 @@
 // on the small probes of datasets/cases/erosion.layered.json: a steep 32×32 cone of loam over soft
 // rock that comes to rest, and a 32×24 bare cliff of soft rock that falls and fragments.
 //
-// both_twins: the same bug in the reference (column.cpp, transfer.cpp, talus.cpp) and the shaders
-// (apply.comp, talus_outflow.comp), killed by checks against what was asked, computed on the host:
-// ledger.materials (each material's volume, conversions counted), ledger.total and
-// ledger.conversions (fragments hold the bedrock they come from), layers.invalid (the topsoil's
-// maximum), layers.surface (the surface moves with the layers) and spec.repose (a resting slope
-// below the repose slope of eq. 3.1, written apart).
+// both_twins: the same bug in the reference (column.cpp, transfer.cpp, talus.cpp, weathering.cpp)
+// and the shaders (apply.comp, talus_outflow.comp, weathering.comp), killed by checks against what
+// was asked, computed on the host: ledger.materials (each material's volume, conversions counted),
+// ledger.total and ledger.conversions (fragments hold the bedrock they come from), layers.invalid
+// (the topsoil's maximum), layers.surface (the surface moves with the layers) and spec.repose (a
+// resting slope below the repose slope of eq. 3.1, written apart).
 //
 // one_twin: a bug in the GPU twin alone, killed by parity.state.gpu_vs_float (bit for bit).
 #include "compare/mutants/mutants.hpp"
@@ -32,6 +32,10 @@ std::vector<Mutant> layered_mutants() {
        "the soil–rock flux delivers each component as the next one (organic as sand, ..., boulders as organic)", cone},
       {"erosion.layered.repose_doubled", MutantKind::both_twins,
        "talus takes every soil layer's repose slope twice as steep as eq. 3.1 gives", cone},
+      {"erosion.layered.weathering_loses_organic", MutantKind::both_twins,
+       "weathering takes the sand that roots turn organic out of the sand, counts it, and never adds it to the "
+       "organic matter",
+       cone},
       {"erosion.layered.fragments_without_boulders", MutantKind::both_twins,
        "fallen bedrock breaks into gravel and stones only: the boulders' share is lost", cliff},
   };

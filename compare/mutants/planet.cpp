@@ -1,10 +1,11 @@
 // Mutants of seed 002's planet twins (planet.earth_like); see compare/mutants/mutants.hpp. Each runs
 // on the small planet.mutant_probe.r12 case (R = 12, 20 plates).
 //
-// one_twin: bugs in the GPU shaders only, killed by the parity checks: parity.offsets.gpu_vs_float
+// one_twin: bugs in the GPU twin only, killed by the parity checks: parity.offsets.gpu_vs_float
 // (any bit), parity.plates.gpu_vs_cpu (any region), parity.collision.gpu_vs_float (a sign flips a
 // pressure term, far beyond the error model's per-region bound), parity.voronoi.gpu_vs_cpu (a label
-// farther than the exact nearest centroid), image.psnr.gpu_vs_cpu (the rendered planet's colours),
+// farther than the exact nearest centroid), parity.plate_cycles.gpu_vs_cpu (a count off by one),
+// image.psnr.gpu_vs_cpu (the rendered planet's colours),
 // determinism.gpu (state carried from one run into the next).
 //
 // both_twins: the same bug in the reference and the shader (or in the cube sphere both share),
@@ -39,6 +40,8 @@ std::vector<Mutant> planet_mutants() {
        "the planet mesh winds the front face's triangles clockwise, against the other five faces", probe},
       {"planet.plates.gpu_cycles_carried_over", MutantKind::one_twin,
        "the GPU's growth-cycle count, which keys the expansion draws, is not reset between runs", probe},
+      {"planet.plates.gpu_cycle_count_off_by_one", MutantKind::one_twin,
+       "the GPU reports one flood-fill cycle more than it ran (the plates themselves are right)", probe},
       {"planet.render.gpu_darker_palette", MutantKind::one_twin,
        "render.frag darkens the palette by |e|/2 instead of |e|/4", probe},
       {"planet.voronoi.gpu_cell_centres", MutantKind::one_twin,

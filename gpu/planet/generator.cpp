@@ -349,7 +349,8 @@ PlatePartition PlanetGenerator::partition_result() const {
   partition.plate = plate_buffers_[current_plate_].download<std::int32_t>(count);
   const auto is_edge = is_edge_.download<std::uint32_t>(count);
   partition.is_edge.assign(is_edge.begin(), is_edge.end());
-  partition.cycles = cycles_;
+  // Mutant: the count includes the cycle whose claims found the last regions already taken.
+  partition.cycles = cycles_ + (mutant_active("planet.plates.gpu_cycle_count_off_by_one") ? 1 : 0);
   return partition;
 }
 

@@ -10,11 +10,13 @@ import pytest
 import groundtruth
 from conftest import float32_sum_bound, cone
 
-EROSION = ["erosion.thermal", "erosion.thermal_jako", "erosion.pipe", "erosion.particle", "erosion.beyer"]
+EROSION = ["erosion.thermal", "erosion.thermal_jako", "erosion.pipe", "erosion.particle", "erosion.beyer",
+           "erosion.layered"]
 
 # Few iterations keep each run under a few seconds on llvmpipe; the properties hold for any count.
 SHORT_RUN = {"erosion.thermal": {"iterations": 12}, "erosion.thermal_jako": {"iterations": 12},
-             "erosion.pipe": {"steps": 12, "rain_rate": 0.001}, "erosion.particle": {}, "erosion.beyer": {}}
+             "erosion.pipe": {"steps": 12, "rain_rate": 0.001}, "erosion.particle": {}, "erosion.beyer": {},
+             "erosion.layered": {"steps": 12}}
 
 
 def test_the_erosion_algorithms_are_all_here():
