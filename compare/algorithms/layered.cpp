@@ -1,4 +1,4 @@
-// The driver's view of seed 001's layered ground (issue 14; digest 001 §3.1, §3.10–3.11, §4):
+// The driver's view of seed 001's layered ground (issue 14; digest 001 §3.1, §3.10–3.11, §3.15–3.16, §4):
 // a heightmap given a stated soil–rock profile in every column, then `steps` iterations
 // (reference/erosion/layered/iteration.hpp: creep, talus, vegetation, weathering), in ref<double>
 // and ref<float>, beside the GPU twin, with a ledger per material and the pictures a geologist reads.
@@ -16,9 +16,10 @@
 // Checks (ledgers as volumes, m³; V the total volume of all materials at the start; S steps):
 //   ledger.materials.cpu, .cpu_float   the largest |V_m(end) − V_m(start) − converted into m + converted
 //                        out of m| / V over the materials (5 components, each bedrock type)
-//   ledger.total.cpu, .cpu_float       |ΣV(end) − ΣV(start)| / V: conversions move volume between
-//                        materials and never create or destroy it (fragmentation is the only one yet)
-//   ledger.conversions.cpu             |bedrock fragmented − fragments made| / V
+//   ledger.total.cpu, .cpu_float       |ΣV(end) − ΣV(start)| / V: conversions (fragmentation,
+//                        weathering, soil formation) move volume between materials and never create
+//                        or destroy it
+//   ledger.conversions.cpu             |volume converted out of all materials − into them| / V
 //     Bound of all three: S·R·2u (tests/layered_reference_test.cpp's model: each stored thickness
 //     passes through at most R = 36 roundings an iteration, each within u of what the cell holds of the
 //     material, and what moved is at most V), u the unit roundoff of the run's type.
@@ -37,10 +38,11 @@
 //   parity.state.gpu_vs_float          the GPU twin (gpu/erosion/layered/) stepped beside ref<float>,
 //                        compared at every ledger checkpoint: values differing in any bit, plus
 //                        conversion totals beyond their summation bound (bound 0; GpuShadow below)
-// Performance: ms a step by grid side, CPU and GPU, beside Šťava et al. 2008's published figure.
+// Performance: ms an iteration by grid side, CPU and GPU, beside Šťava et al. 2008's published figure.
 // Pictures: the surface material (the top non-empty layer's colour, mixed by composition, green by
 // vegetation), the cross-section along the middle row, topsoil and subsoil thickness and
-// vegetation as fields, the ledger over the steps.
+// vegetation as fields, the terrain as given and after each backend (field `terrain`, as every
+// erosion algorithm hands it back), the ledger over the steps.
 #include <algorithm>
 #include <array>
 #include <bit>
