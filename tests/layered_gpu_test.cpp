@@ -254,41 +254,6 @@ TEST_P(LayeredGpu, OneCreepStepIsTheFloatReferenceBitForBit) {
   expect_conversions(reference_conversions, conversions, 1, "creep step");
 }
 
-// 20 iterations of creep then talus (the code's order, as reference::layered_iteration begins), compared after
-// every pass; then a second GPU run from the same ground repeats the first bit for bit.
-TEST_P(LayeredGpu, TwentyMixedStepsFollowTheReferenceAndRepeat) {
-  const auto params = params_for(GetParam());
-  const auto initial = random_ground(params);
-  auto reference = initial;
-  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::gpu::LayeredGroundBuffers buffers(initial, params);
-  const auto creep = gt::gpu::layered_creep();
-  const auto talus = gt::gpu::layered_talus();
-  auto conversions = gt::no_conversions(params.bedrock_types.size());
-  const std::uint32_t steps = 20;
-  for (std::uint32_t step = 0; step < steps; ++step) {
-    const std::string when = "step " + std::to_string(step);
-    gt::reference::creep_step(reference, params, step, reference_conversions);
-    creep.step(buffers, step, conversions);
-    expect_same_ground(reference, buffers.download(), when + " creep");
-    gt::reference::talus_step(reference, params, step, reference_conversions);
-    talus.step(buffers, step, conversions);
-    expect_same_ground(reference, buffers.download(), when + " talus");
-    expect_conversions(reference_conversions, conversions, 2 * static_cast<int>(step + 1), when);
-    if (HasFailure()) return;
-  }
-  const auto first = buffers.download();
-  buffers.upload(initial);
-  auto again = gt::no_conversions(params.bedrock_types.size());
-  for (std::uint32_t step = 0; step < steps; ++step) {
-    creep.step(buffers, step, again);
-    talus.step(buffers, step, again);
-  }
-  expect_same_ground(first, buffers.download(), "second GPU run");
-  EXPECT_EQ(conversions.fragmented_from, again.fragmented_from);
-  EXPECT_EQ(conversions.fragmented_into, again.fragmented_into);
-}
-
 TEST_P(LayeredGpu, OneVegetationStepIsTheFloatReferenceBitForBit) {
   const auto params = params_for(GetParam());
   const auto initial = random_ground(params);
