@@ -22,6 +22,7 @@
 #include "reference/erosion/layered/talus.hpp"
 #include "reference/erosion/layered/vegetation.hpp"
 #include "reference/erosion/layered/weathering.hpp"
+#include "tests/support/refusal.hpp"
 
 namespace {
 
@@ -109,6 +110,35 @@ TEST(LayeredParams, RefusesBadProfiles) {
   EXPECT_THROW((gt::make_layered_ground<double>(flat_surface(3, 3, 0.0), profile_with({}, {std::nan(""), 0, 0, 0, 0}, 5.0),
                                                 params)),
                gt::InputError);
+}
+
+// validate_layered_inputs refuses what make_layered_ground refuses, with the same message, and
+// makes nothing: the driver checks a case with it before the run.
+TEST(LayeredParams, ValidateLayeredInputsRefusesWhatMakeLayeredGroundRefuses) {
+  const LayeredParams params;
+  const LayeredProfile profile = profile_with({0.5, 0, 0, 0, 0}, {}, 5.0);
+  const auto same_refusal = [&](const gt::Heightmap& surface, const LayeredProfile& with, double vegetation,
+                                const std::string& named) {
+    const std::string validated =
+        gt::testing::refusal([&] { gt::validate_layered_inputs(surface, with, params, vegetation); });
+    const std::string made =
+        gt::testing::refusal([&] { (void)gt::make_layered_ground<double>(surface, with, params, vegetation); });
+    EXPECT_NE(validated.find(named), std::string::npos) << validated;
+    EXPECT_EQ(validated, made);
+  };
+  EXPECT_NO_THROW(gt::validate_layered_inputs(flat_surface(3, 3, 0.0), profile, params, 0.5));
+  same_refusal(flat_surface(3, 3, 0.0), profile_with({}, {}, -5.0), 0.0, "erosion.layered");
+  gt::Heightmap masked = flat_surface(3, 3, 0.0);
+  masked.valid.assign(9, 1);
+  masked.valid[4] = 0;
+  same_refusal(masked, profile, 0.0, "no-data");
+  gt::Heightmap not_finite = flat_surface(3, 3, 0.0);
+  not_finite.values[4] = std::nan("");
+  same_refusal(not_finite, profile, 0.0, "layered ground surface");
+  gt::Heightmap no_spacing = flat_surface(3, 3, 0.0);
+  no_spacing.cell_size_x = 0.0;
+  same_refusal(no_spacing, profile, 0.0, "layered ground surface");
+  same_refusal(flat_surface(3, 3, 0.0), profile, 1.5, "vegetation 1.5");
 }
 
 // ---------------------------------------------------------------------------------------------

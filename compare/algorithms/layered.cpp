@@ -639,8 +639,8 @@ PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& 
   setup.vegetation = resolved.at("vegetation").get<double>();
   setup.surface = input.heights;
   setup.surface.valid.clear();  // every cell valid (a crop of a masked file keeps its all-valid mask)
-  // Refuses a bad surface or a grid beyond memory before the run.
-  (void)make_layered_ground<double>(setup.surface, setup.profile, setup.params, setup.vegetation);
+  // Refuses a bad surface or a grid beyond memory before the run (the double ground is the larger).
+  validate_layered_inputs(setup.surface, setup.profile, setup.params, setup.vegetation);
   PreparedTwin prepared;
   prepared.run = [setup](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     result.notes.push_back(fmt::format(

@@ -82,9 +82,8 @@ void check_column(const LayeredGround<Real>& ground, const LayeredParams& params
 
 }  // namespace
 
-template <class Real>
-LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredProfile& profile,
-                                        const LayeredParams& params, double vegetation) {
+void validate_layered_inputs(const Heightmap& surface, const LayeredProfile& profile, const LayeredParams& params,
+                             double vegetation, std::size_t real_bytes) {
   validate_layered_params(params);
   validate_layered_profile(profile, params);
   require(!surface.has_mask(), "the layered ground takes a surface without no-data cells");
@@ -94,10 +93,16 @@ LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredP
   // Per cell: the state (surface, vegetation, 10 soil components, the bedrock thicknesses and
   // types) twice (a step's snapshot) and the 8 outflows of a step.
   const auto bedrock_layers = static_cast<long long>(profile.bedrock.size());
-  const auto state_bytes = static_cast<long long>(sizeof(Real)) * (2 + soil_layer_count * soil_component_count + bedrock_layers) +
+  const auto real = static_cast<long long>(real_bytes);
+  const auto state_bytes = real * (2 + soil_layer_count * soil_component_count + bedrock_layers) +
                            static_cast<long long>(sizeof(std::int32_t)) * bedrock_layers;
-  check_grid_fits(surface.width, surface.height,
-                  2 * state_bytes + static_cast<long long>(sizeof(Real)) * layered_neighbour_count, "layered ground");
+  check_grid_fits(surface.width, surface.height, 2 * state_bytes + real * layered_neighbour_count, "layered ground");
+}
+
+template <class Real>
+LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredProfile& profile,
+                                        const LayeredParams& params, double vegetation) {
+  validate_layered_inputs(surface, profile, params, vegetation, sizeof(Real));
   LayeredGround<Real> ground;
   ground.width = surface.width;
   ground.height = surface.height;

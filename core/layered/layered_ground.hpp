@@ -81,10 +81,16 @@ struct LayeredGround {
 // Every column gets `profile` under the surface height of `surface` (its grid sets the size and
 // cell sizes; a mask is refused), vegetation `vegetation`. Throws InputError for a bad profile or
 // surface (validate_layered_profile, check_finite, check_cell_size) and for a grid whose state, its
-// step snapshot and outflows do not fit in memory (check_grid_fits).
+// step snapshot and outflows do not fit in memory (check_grid_fits): validate_layered_inputs.
 template <class Real>
 LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredProfile& profile,
                                         const LayeredParams& params, double vegetation = 0.0);
+
+// make_layered_ground's checks, in its order and with its messages, without making the ground:
+// params, profile, no mask, finite surface, cell sizes, vegetation in [0, 1], and the memory of a
+// ground of `real_bytes`-byte reals (sizeof(Real): the default, double, is the larger).
+void validate_layered_inputs(const Heightmap& surface, const LayeredProfile& profile, const LayeredParams& params,
+                             double vegetation, std::size_t real_bytes = sizeof(double));
 
 // What the processes refuse before a step (InputError, "erosion.layered: ..."): arrays of the
 // wrong size, non-finite values, negative thicknesses, a topsoil thicker than the maximum (beyond
