@@ -154,7 +154,8 @@ std::string material_name(std::size_t material) {
 
 template <class Real>
 struct LayeredRun {
-  LayeredGround<Real> ground;
+  LayeredGround<Real> start;                       // as made from the setup, before the first step
+  LayeredGround<Real> ground;                      // after the last step
   LayeredConversions conversions;
   std::vector<int> checkpoints;                    // steps done at each ledger point
   std::vector<std::vector<double>> volumes;        // per checkpoint, per material, m³
@@ -168,8 +169,10 @@ using CheckpointObserver = std::function<void(int done, const LayeredGround<Real
 template <class Real>
 LayeredRun<Real> run_layered(const LayeredSetup& setup, const CheckpointObserver<Real>& observe = {}) {
   const std::size_t types = setup.params.bedrock_types.size();
-  LayeredRun<Real> run{make_layered_ground<Real>(setup.surface, setup.profile, setup.params, setup.vegetation),
-                       no_conversions(types), {}, {}, {}};
+  LayeredRun<Real> run;
+  run.start = make_layered_ground<Real>(setup.surface, setup.profile, setup.params, setup.vegetation);
+  run.ground = run.start;
+  run.conversions = no_conversions(types);
   const int every = std::max(1, setup.steps / ledger_points);
   const auto record = [&](int done) {
     run.checkpoints.push_back(done);
@@ -593,9 +596,8 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
   if (options.progress) options.progress->stage("CPU reference (double)");
   LayeredRun<double> run;
   time_cpu(1, [&] { run = run_layered<double>(setup); }, result.timings);
-  const auto start = make_layered_ground<double>(setup.surface, setup.profile, setup.params, setup.vegetation);
   add_ledger_checks(run, setup.steps, "cpu", result);
-  add_state_checks(start, run.ground, setup, result);
+  add_state_checks(run.start, run.ground, setup, result);
   if (expect.is_object() && expect.value("at_rest", false)) add_repose_check(run.ground, setup.params, result);
   std::optional<GpuShadow> shadow;
   if (options.gpu_available) shadow.emplace(setup);
