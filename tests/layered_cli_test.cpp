@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/run_program.hpp"
+#include "tests/support/cli_report.hpp"
 #include "tests/support/temporary_folder.hpp"
 
 namespace {
@@ -19,27 +19,15 @@ namespace fs = std::filesystem;
 using ::testing::Contains;
 using ::testing::HasSubstr;
 
-const std::string groundtruth = GT_BINARY_DIR "/groundtruth";
-
-gt::testing::ProgramRun run(const std::vector<std::string>& args, const fs::path& cwd) {
-  return gt::testing::run_program(groundtruth, args, cwd);
-}
-
-nlohmann::json report_of(const fs::path& out) {
-  std::ifstream stream(out / "report.json");
-  return nlohmann::json::parse(stream);
-}
-
-std::vector<std::string> check_names(const nlohmann::json& report_case) {
-  std::vector<std::string> names;
-  for (const auto& check : report_case["checks"]) names.push_back(check["name"]);
-  return names;
-}
+using gt::testing::check_names;
+using gt::testing::report_of;
+using gt::testing::run_groundtruth;
 
 TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
   gt::testing::TemporaryFolder folder;
   const auto out = folder.path() / "out";
-  const auto result = run({"run", "erosion.layered.mutant_probe.*", "--out", out.string()}, folder.path());
+  const auto result =
+      run_groundtruth({"run", "erosion.layered.mutant_probe.*", "--out", out.string()}, folder.path());
   ASSERT_EQ(result.status, 0) << result;
   const auto report = report_of(out);
   ASSERT_EQ(report["cases"].size(), 2u);
@@ -80,9 +68,10 @@ TEST(LayeredCli, AnUnseenDemHoldsTheSameFigures) {
     }
   }
   const auto out = folder.path() / "out";
-  const auto result = run({"run", "--algorithm", "erosion.layered", "--input", dem.string(), "--cell-size", "5",
-                           "--set", "steps=50", "--set", "soil=scree", "--out", out.string()},
-                          folder.path());
+  const auto result = run_groundtruth({"run", "--algorithm", "erosion.layered", "--input", dem.string(),
+                                       "--cell-size", "5", "--set", "steps=50", "--set", "soil=scree", "--out",
+                                       out.string()},
+                                      folder.path());
   ASSERT_EQ(result.status, 0) << result;
   const auto report = report_of(out);
   ASSERT_EQ(report["cases"].size(), 1u);
@@ -107,7 +96,7 @@ TEST(LayeredCli, BadLayerDefinitionsAreRefused) {
     std::vector<std::string> args = {"run", "--algorithm", "erosion.layered", "--input",
                                      GT_DATASET_DIR "/real/volcano.json", "--out", (folder.path() / "out").string()};
     for (const auto& set : sets) args.insert(args.end(), {"--set", set});
-    const auto result = run(args, folder.path());
+    const auto result = run_groundtruth(args, folder.path());
     EXPECT_EQ(result.status, 2) << result;
     EXPECT_THAT(result.err, HasSubstr(message)) << result;
     EXPECT_FALSE(fs::exists(folder.path() / "out" / "report.json"));

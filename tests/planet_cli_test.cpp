@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/run_program.hpp"
+#include "tests/support/cli_report.hpp"
 #include "tests/support/temporary_folder.hpp"
 
 namespace {
@@ -18,28 +18,20 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-const std::string groundtruth = GT_BINARY_DIR "/groundtruth";
-
-gt::testing::ProgramRun run(const std::vector<std::string>& args, const fs::path& cwd) {
-  return gt::testing::run_program(groundtruth, args, cwd);
-}
-
-nlohmann::json report_of(const fs::path& out) {
-  std::ifstream stream(out / "report.json");
-  return nlohmann::json::parse(stream);
-}
+using gt::testing::check_names;
+using gt::testing::report_of;
+using gt::testing::run_groundtruth;
 
 TEST(PlanetCli, TheProbeCasePassesWithItsMapsAndFields) {
   gt::testing::TemporaryFolder folder;
   const auto out = folder.path() / "out";
-  const auto result = run({"run", "planet.mutant_probe.r12", "--out", out.string()}, folder.path());
+  const auto result = run_groundtruth({"run", "planet.mutant_probe.r12", "--out", out.string()}, folder.path());
   ASSERT_EQ(result.status, 0) << result;
   const auto report = report_of(out);
   ASSERT_EQ(report["cases"].size(), 1u);
   const auto& planet = report["cases"][0];
   EXPECT_EQ(planet["status"], "pass");
-  std::vector<std::string> names;
-  for (const auto& check : planet["checks"]) names.push_back(check["name"]);
+  const auto names = check_names(planet);
   for (const char* expected : {"partition.disconnected_plates.cpu", "parity.elevation.float_vs_double",
                                "legacy.plate_difference", "fidelity.land_fraction", "spec.expansion_rate.cpu"}) {
     EXPECT_THAT(names, ::testing::Contains(std::string(expected)));
@@ -53,9 +45,9 @@ TEST(PlanetCli, ABadGlobalGridIsRefused) {
   gt::testing::TemporaryFolder folder;
   const auto grid = folder.path() / "mars.nc";
   std::ofstream(grid) << "not netCDF\n";
-  const auto result = run({"run", "--algorithm", "planet.earth_like", "--set", "resolution=8", "--set", "plates=5",
-                           "--input", grid.string(), "--out", (folder.path() / "out").string()},
-                          folder.path());
+  const auto result = run_groundtruth({"run", "--algorithm", "planet.earth_like", "--set", "resolution=8", "--set",
+                                       "plates=5", "--input", grid.string(), "--out", (folder.path() / "out").string()},
+                                      folder.path());
   EXPECT_EQ(result.status, 2) << result;
   EXPECT_THAT(result.err, HasSubstr("mars.nc"));
 }
@@ -73,7 +65,7 @@ TEST(PlanetCli, OutOfRangeParametersAreRefused) {
   for (const auto& [sets, message] : refused) {
     std::vector<std::string> args = {"run", "--algorithm", "planet.earth_like", "--out", (folder.path() / "out").string()};
     for (const auto& set : sets) args.insert(args.end(), {"--set", set});
-    const auto result = run(args, folder.path());
+    const auto result = run_groundtruth(args, folder.path());
     EXPECT_EQ(result.status, 2) << result;
     EXPECT_THAT(result.err, HasSubstr(message)) << result;
     EXPECT_FALSE(fs::exists(folder.path() / "out" / "report.json"));
