@@ -190,28 +190,32 @@ LayeredLedger layered_ledger(const LayeredGround<Real>& ground, std::size_t bedr
 
 double LayeredConversions::converted_into(int component) const {
   const auto i = static_cast<std::size_t>(component);
-  return fragmented_into.at(i) + weathered_into.at(i) + soil_formed_into.at(i);
+  return fragmented_into.at(i) + weathered_into.at(i) + soil_formed_into.at(i) + broken_into.at(i) +
+         bedrock_eroded_into.at(i);
 }
 
 double LayeredConversions::converted_from(int component) const {
-  return weathered_from.at(static_cast<std::size_t>(component));
+  const auto i = static_cast<std::size_t>(component);
+  return weathered_from.at(i) + broken_from.at(i);
 }
 
 double LayeredConversions::bedrock_converted(std::size_t type) const {
-  const double fragmented = type < fragmented_from.size() ? fragmented_from[type] : 0.0;
-  const double formed = type < soil_formed_from.size() ? soil_formed_from[type] : 0.0;
-  return fragmented + formed;
+  double total = 0.0;
+  for (const auto* per_type : {&fragmented_from, &soil_formed_from, &bedrock_eroded_from}) {
+    if (type < per_type->size()) total += (*per_type)[type];
+  }
+  return total;
 }
 
 void LayeredConversions::fit_types(std::size_t bedrock_type_count) {
-  fragmented_from.resize(std::max(fragmented_from.size(), bedrock_type_count), 0.0);
-  soil_formed_from.resize(std::max(soil_formed_from.size(), bedrock_type_count), 0.0);
+  for (auto* per_type : {&fragmented_from, &soil_formed_from, &bedrock_eroded_from}) {
+    per_type->resize(std::max(per_type->size(), bedrock_type_count), 0.0);
+  }
 }
 
 LayeredConversions no_conversions(std::size_t bedrock_type_count) {
   LayeredConversions conversions;
-  conversions.fragmented_from.assign(bedrock_type_count, 0.0);
-  conversions.soil_formed_from.assign(bedrock_type_count, 0.0);
+  conversions.fit_types(bedrock_type_count);
   return conversions;
 }
 

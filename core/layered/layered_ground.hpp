@@ -123,9 +123,15 @@ struct LayeredLedger {
 //     `soil_formed_into[i]` entered component i.
 // Vegetation growth creates no material (decision: veg is a density, not a volume), so it has no
 // line; weathering's sand → org is the only source of organic matter, counted here.
-// Neither closed nor periodic borders let material out, so the ledger has no outflow term: for each
-// component i, V_i(end) − V_i(start) = converted_into(i) − converted_from(i), and for each bedrock
-// type t, V_t(end) − V_t(start) = −bedrock_converted(t).
+//   - force erosion (§3.12): `broken_from[j]` left component j to be suspended as a smaller size,
+//     `broken_into[i]` was suspended as size i from a larger one; `bedrock_eroded_from[t]` left
+//     bedrock type t into the water, `bedrock_eroded_into[i]` as size i.
+// And what crosses the ledger's edge (the river's sink rows, §3.19; reference/erosion/layered/water.hpp):
+// `sunk[i]` of component i (suspended and regolith), `water_added` and `water_sunk` (m³ of water).
+// Neither closed nor periodic borders let anything else out: for each component i, with V_i the
+// volume in the ground and in the water (layered_water_ledger), V_i(end) − V_i(start) =
+// converted_into(i) − converted_from(i) − sunk[i], and for each bedrock type t,
+// V_t(end) − V_t(start) = −bedrock_converted(t); the water W(end) − W(start) = water_added − water_sunk.
 struct LayeredConversions {
   std::vector<double> fragmented_from;                            // per bedrock type
   std::array<double, soil_component_count> fragmented_into{};     // org stays 0
@@ -133,6 +139,13 @@ struct LayeredConversions {
   std::array<double, soil_component_count> weathered_into{};      // boulders stay 0
   std::vector<double> soil_formed_from;                           // per bedrock type
   std::array<double, soil_component_count> soil_formed_into{};
+  std::array<double, soil_component_count> broken_from{};         // org stays 0
+  std::array<double, soil_component_count> broken_into{};         // org and boulders stay 0
+  std::vector<double> bedrock_eroded_from;                         // per bedrock type
+  std::array<double, soil_component_count> bedrock_eroded_into{};  // org stays 0
+  std::array<double, soil_component_count> sunk{};
+  double water_added = 0.0;
+  double water_sunk = 0.0;
 
   // Σ of every conversion into / out of soil component i, and out of bedrock type t (0 past the
   // vectors' ends), m³.

@@ -63,6 +63,21 @@ void validate_bedrock_type(const BedrockType& type, std::size_t index) {
   }
   require(std::abs(composition - 1.0) <= fragment_sum_tolerance,
           fmt::format("{} soil_composition shares K_j,i sum to {}, not 1", name, composition));
+  for (std::size_t size = 0; size < fragment_size_count; ++size) {
+    require_at_least(type.erosion_slopes[size], 0.0, fmt::format("{} erosion slope {}", name, size));
+    require_at_least(type.erosion_thresholds[size], 0.0, fmt::format("{} erosion threshold {}", name, size));
+  }
+}
+
+void validate_fragment_matrix(const FragmentMatrix& matrix, const char* name) {
+  for (std::size_t j = 0; j < fragment_size_count; ++j) {
+    for (std::size_t i = 0; i < fragment_size_count; ++i) {
+      require_at_least(matrix[j][i], 0.0, fmt::format("{}[{}][{}]", name, j, i));
+      require(i <= j || matrix[j][i] == 0.0,
+              fmt::format("{}[{}][{}] = {}: fragments cannot grow, the matrix is lower triangular", name, j, i,
+                          matrix[j][i]));
+    }
+  }
 }
 
 template <class Enum>
@@ -107,11 +122,33 @@ const char* vegetation_quality_name(VegetationQuality quality) {
   return quality == VegetationQuality::thesis ? "thesis" : "seed001_code";
 }
 
+const char* slope_form_name(SlopeForm form) { return form == SlopeForm::thesis ? "thesis" : "seed001_code"; }
+const char* breakdown_form_name(BreakdownForm form) {
+  return form == BreakdownForm::thesis ? "thesis" : "seed001_code";
+}
+const char* share_form_name(ShareForm form) { return form == ShareForm::thesis ? "thesis" : "seed001_code"; }
+
+FragmentMatrix thesis_breakdown_slopes() {
+  return {{{0.3, 0.0, 0.0, 0.0}, {0.02, 0.08, 0.0, 0.0}, {0.02, 0.01, 0.04, 0.0}, {0.02, 0.01, 0.01, 0.02}}};
+}
+
+FragmentMatrix thesis_breakdown_thresholds() {
+  return {{{0.0, 0.0, 0.0, 0.0}, {0.01, 0.1, 0.0, 0.0}, {0.02, 0.2, 0.3, 0.0}, {0.03, 0.25, 0.4, 0.5}}};
+}
+
+bool has_water(const LayeredParams& params) {
+  return params.initial_water > 0.0 || params.rain_rate > 0.0 || params.river;
+}
+
 // Type 2 ("granite") forms no soil in the code (rate 0); its composition, never used, is all boulders.
 std::vector<BedrockType> seed001_bedrock_types() {
-  return {{4.0, {0.0, 0.2, 0.3, 0.5}, 1.0, 0.001, {0.2, 0.0, 0.0, 0.1, 0.7}},
-          {1e7, {0.0, 0.1, 0.2, 0.7}, 2.0, 0.0003, {0.2, 0.0, 0.0, 0.0, 0.8}},
-          {1e7, {0.0, 0.05, 0.15, 0.8}, 3.0, 0.0, {0.0, 0.0, 0.0, 0.0, 1.0}}};
+  // The code's Ab and Bb rows (§3.12 [code]; Bb stored negated there).
+  return {{4.0, {0.0, 0.2, 0.3, 0.5}, 1.0, 0.001, {0.2, 0.0, 0.0, 0.1, 0.7}, {0.05, 0.01, 0.004, 0.002},
+           {0.0, 0.25, 0.4, 0.5}},
+          {1e7, {0.0, 0.1, 0.2, 0.7}, 2.0, 0.0003, {0.2, 0.0, 0.0, 0.0, 0.8}, {0.02, 0.005, 0.001, 0.0001},
+           {0.0, 0.3, 0.5, 0.7}},
+          {1e7, {0.0, 0.05, 0.15, 0.8}, 3.0, 0.0, {0.0, 0.0, 0.0, 0.0, 1.0}, {0.002, 0.0005, 0.0, 0.0},
+           {0.0, 0.5, 0.0, 0.0}}};
 }
 
 void validate_layered_params(const LayeredParams& params) {
@@ -144,6 +181,32 @@ void validate_layered_params(const LayeredParams& params) {
     require_at_least(params.weathering_shares[i], 0.0, weathering_keys[i]);
   }
   require_at_least(params.weathering_reach, 0.0, "weathering_reach");
+  require_at_least(params.initial_water, 0.0, "initial_water");
+  require_at_least(params.rain_rate, 0.0, "rain_rate");
+  require_at_least(params.river_depth, 0.0, "river_depth");
+  require_positive(params.gravity, "gravity");
+  require_at_least(params.velocity_depth_floor, 0.0, "velocity_depth_floor");
+  require_positive(params.depth_ramp, "depth_ramp");
+  require_at_least(params.slope_floor, 0.0, "slope_floor");
+  require(params.slope_floor <= 1.0, fmt::format("slope_floor = {} must be <= 1", params.slope_floor));
+  require_at_least(params.erosion_strength, 0.0, "erosion_strength");
+  require_at_least(params.organic_capacity, 0.0, "organic_capacity");
+  for (const auto& [rate, name] : {std::pair{params.erosion_rate, "erosion_rate"},
+                                   std::pair{params.deposition_rate, "deposition_rate"},
+                                   std::pair{params.regolith_erosion, "regolith_erosion"},
+                                   std::pair{params.regolith_deposition, "regolith_deposition"},
+                                   std::pair{params.least_share, "least_share"}}) {
+    require_at_least(rate, 0.0, name);
+    require(rate <= 1.0, fmt::format("{} = {} is a fraction of the gap closed per step and must be <= 1", name, rate));
+  }
+  require_at_least(params.vegetation_protection, 0.0, "vegetation_protection");
+  require_positive(params.transparency_depth, "transparency_depth");
+  validate_fragment_matrix(params.breakdown_slopes, "breakdown_slopes");
+  validate_fragment_matrix(params.breakdown_thresholds, "breakdown_thresholds");
+  require_at_least(params.regolith_depth, 0.0, "regolith_depth");
+  require_at_least(params.drying, 0.0, "drying");
+  require(params.drying <= 1.0, fmt::format("drying = {} must be <= 1", params.drying));
+  require_at_least(params.flood_wetness, 0.0, "flood_wetness");
 }
 
 const ParamSpecs& layered_param_specs() {
@@ -193,6 +256,34 @@ const ParamSpecs& layered_param_specs() {
       {"weathering_stones", ParamKind::real, 0.4, 0.0, 100.0, {}, "1", "K_3,2: boulders → stones"},
       {"weathering_reach", ParamKind::real, 4.0, 0.0, 1e3, {}, "m",
        "bedrock turns into subsoil only under less soil than this (code: 4.0)"},
+      {"initial_water", ParamKind::real, 0.0, 0.0, 1e3, {}, "m", "water on every column at the start (code: 0.2)"},
+      {"rain_rate", ParamKind::real, 0.0, 0.0, 10.0, {}, "m/s", "water added to every column each step"},
+      {"river", ParamKind::boolean, false, 0, 0, {}, "",
+       "the code's river: column (W/2, H/16) held at river_depth, rows y >= 15H/16 a sink"},
+      {"river_depth", ParamKind::real, 1.0, 0.0, 20.0, {}, "m", "water depth of the river's source column"},
+      {"gravity", ParamKind::real, 9.81, 1e-3, 100.0, {}, "m/s^2", "g of the pipe model (§3.3)"},
+      {"velocity_depth_floor", ParamKind::real, 0.0, 0.0, 10.0, {}, "m",
+       "least mean depth w̄ of the velocity (thesis none; the code 0.05)"},
+      {"depth_ramp", ParamKind::real, 0.45, 1e-6, 100.0, {}, "m", "K_w: capacity rises with depth up to it"},
+      {"slope_floor", ParamKind::real, 0.05, 0.0, 1.0, {}, "1", "least sin φ of the capacity"},
+      {"slope_form", ParamKind::choice, "thesis", 0, 0, {"thesis", "seed001_code"}, "",
+       "sin φ of the true slope (central differences over 2l), or the code's un-halved differences with l = 1"},
+      {"erosion_strength", ParamKind::real, 0.25, 0.0, 10.0, {}, "s", "K_c: water strength x = K_c·sin φ·|v|·l(w)"},
+      {"organic_capacity", ParamKind::real, 0.12, 0.0, 10.0, {}, "1", "C_org = organic_capacity·x (code 0.12)"},
+      {"erosion_rate", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "K_e (thesis 0.5; the code 0.1)"},
+      {"deposition_rate", ParamKind::real, 0.25, 0.0, 1.0, {}, "1", "K_d (thesis and code 0.25)"},
+      {"vegetation_protection", ParamKind::real, 0.2, 0.0, 100.0, {}, "1", "K_wveg: x/(1 + K_wveg·veg)"},
+      {"breakdown_form", ParamKind::choice, "thesis", 0, 0, {"thesis", "seed001_code"}, "",
+       "eq. 3.5's a·(x − b), or the code's max(a·x − b, 0)"},
+      {"share_form", ParamKind::choice, "thesis", 0, 0, {"thesis", "seed001_code"}, "",
+       "eq. 3.10's min(m·max(K_emin, V_j/V), V_j), or the code's min(V_j, m)·max(K_emin, V_j/V)"},
+      {"least_share", ParamKind::real, 0.1, 0.0, 1.0, {}, "1", "K_emin of the surface-only factor"},
+      {"transparency_depth", ParamKind::real, 0.1, 1e-6, 100.0, {}, "m", "K_pmin: erosion reaches below thinner layers"},
+      {"regolith_depth", ParamKind::real, 0.01, 0.0, 2.0, {}, "m", "K_r: regolith depth (§3.13); 0 switches it off"},
+      {"regolith_erosion", ParamKind::real, 1.0, 0.0, 1.0, {}, "1", "K_re"},
+      {"regolith_deposition", ParamKind::real, 1.0, 0.0, 1.0, {}, "1", "K_rd"},
+      {"drying", ParamKind::real, 0.5, 0.0, 1.0, {}, "1/s", "K_dry: a dry column's wetness × K_dry^Δt"},
+      {"flood_wetness", ParamKind::real, 1.0, 0.0, 1e6, {}, "m·s", "vegetation dies above this wetness (code 1.0)"},
   };
   return specs;
 }
@@ -236,6 +327,30 @@ LayeredParams layered_params_from_json(const nlohmann::json& resolved) {
     params.weathering_shares[i] = resolved.at(weathering_keys[i]).get<double>();
   }
   params.weathering_reach = resolved.at("weathering_reach").get<double>();
+  for (auto [key, value] : {std::pair{"initial_water", &params.initial_water}, std::pair{"rain_rate", &params.rain_rate},
+                            std::pair{"river_depth", &params.river_depth}, std::pair{"gravity", &params.gravity},
+                            std::pair{"velocity_depth_floor", &params.velocity_depth_floor},
+                            std::pair{"depth_ramp", &params.depth_ramp}, std::pair{"slope_floor", &params.slope_floor},
+                            std::pair{"erosion_strength", &params.erosion_strength},
+                            std::pair{"organic_capacity", &params.organic_capacity},
+                            std::pair{"erosion_rate", &params.erosion_rate},
+                            std::pair{"deposition_rate", &params.deposition_rate},
+                            std::pair{"vegetation_protection", &params.vegetation_protection},
+                            std::pair{"least_share", &params.least_share},
+                            std::pair{"transparency_depth", &params.transparency_depth},
+                            std::pair{"regolith_depth", &params.regolith_depth},
+                            std::pair{"regolith_erosion", &params.regolith_erosion},
+                            std::pair{"regolith_deposition", &params.regolith_deposition},
+                            std::pair{"drying", &params.drying}, std::pair{"flood_wetness", &params.flood_wetness}}) {
+    *value = resolved.at(key).get<double>();
+  }
+  params.river = resolved.at("river").get<bool>();
+  params.slope_form = choice_from_json(resolved, "slope_form", {SlopeForm::thesis, SlopeForm::seed001_code},
+                                       slope_form_name);
+  params.breakdown_form = choice_from_json(resolved, "breakdown_form",
+                                           {BreakdownForm::thesis, BreakdownForm::seed001_code}, breakdown_form_name);
+  params.share_form = choice_from_json(resolved, "share_form", {ShareForm::thesis, ShareForm::seed001_code},
+                                       share_form_name);
   validate_layered_params(params);
   return params;
 }

@@ -57,13 +57,24 @@ enum class TalusAmount { thesis, seed001_code };
 enum class CreepDenominator { singular, seed001_code };
 enum class LayeredBorder { closed, periodic };
 enum class VegetationQuality { thesis, seed001_code };
+enum class SlopeForm { thesis, seed001_code };
+enum class BreakdownForm { thesis, seed001_code };
+enum class ShareForm { thesis, seed001_code };
 
 // "thesis", "seed001_code"; "singular", "seed001_code"; "closed", "periodic".
 const char* talus_amount_name(TalusAmount amount);
 const char* creep_denominator_name(CreepDenominator denominator);
 const char* layered_border_name(LayeredBorder border);
-// "thesis", "seed001_code".
+// "thesis", "seed001_code" (each of the four).
 const char* vegetation_quality_name(VegetationQuality quality);
+const char* slope_form_name(SlopeForm form);
+const char* breakdown_form_name(BreakdownForm form);
+const char* share_form_name(ShareForm form);
+
+using FragmentMatrix = std::array<std::array<double, fragment_size_count>, fragment_size_count>;
+// Eq. 3.8 and 3.9: row = source size j, column = result size i (sand .. boulders); lower triangular.
+FragmentMatrix thesis_breakdown_slopes();
+FragmentMatrix thesis_breakdown_thresholds();
 
 struct BedrockType {
   double repose_tan = 4.0;  // tan φ of the rock face
@@ -76,6 +87,10 @@ struct BedrockType {
   // summing to 1).
   double soil_rate = 0.001;
   std::array<double, soil_component_count> soil_composition{0.2, 0.0, 0.0, 0.1, 0.7};
+  // §3.12 force erosion of bedrock: row t of A^rock and B^rock, the fragments of each size (sand ..
+  // boulders) water of strength x breaks off, K_e·max(a·(x − b), 0) m per step (the code's Ab, Bb).
+  std::array<double, fragment_size_count> erosion_slopes{0.05, 0.01, 0.004, 0.002};
+  std::array<double, fragment_size_count> erosion_thresholds{0.0, 0.25, 0.4, 0.5};
 };
 
 // The code's three bedrock types (§3.10 [code]).
@@ -113,7 +128,41 @@ struct LayeredParams {
   // [K_org (sand → org), K_1,0 (gravel → sand), K_2,1 (stones → gravel), K_3,2 (boulders → stones)], ≥ 0.
   std::array<double, fragment_size_count> weathering_shares{1.0, 0.2, 0.3, 0.4};
   double weathering_reach = 4.0;   // bedrock turns into soil only under less soil than this, m (≥ 0)
+  // Water (§3.3-3.5, §3.19): the water processes run only when water is given (initial_water,
+  // rain_rate or river; `has_water`).
+  double initial_water = 0.0;     // depth on every column at the start, m
+  double rain_rate = 0.0;         // added to every column each step, m/s
+  bool river = false;             // the code's river: column (W/2, H/16) set to river_depth each step,
+                                  // rows y ≥ 15H/16 emptied (a sink), water and what it carries
+  double river_depth = 1.0;       // m
+  double gravity = 9.81;          // g, m/s²
+  double velocity_depth_floor = 0.0;  // least w̄ of the velocity, m (thesis none; the code 0.05)
+  double depth_ramp = 0.45;       // K_w of l(w), m (the code's WATER_MAX_DEPTH_EROSION)
+  double slope_floor = 0.05;      // least sin φ
+  SlopeForm slope_form = SlopeForm::thesis;
+  // Force erosion (§3.12): water strength x = K_c·sin φ·|v|·l(w)/(1 + K_wveg·veg), m.
+  double erosion_strength = 0.25;     // K_c, s (the code's erosion_constant)
+  double organic_capacity = 0.12;     // C_org = organic_capacity·x (the code's organic_constant)
+  double erosion_rate = 0.5;          // K_e (thesis; the code 0.1)
+  double deposition_rate = 0.25;      // K_d
+  double vegetation_protection = 0.2; // K_wveg
+  BreakdownForm breakdown_form = BreakdownForm::thesis;
+  ShareForm share_form = ShareForm::thesis;
+  double least_share = 0.1;           // K_emin
+  double transparency_depth = 0.1;    // K_pmin, m
+  FragmentMatrix breakdown_slopes = thesis_breakdown_slopes();          // A (eq. 3.8), 1
+  FragmentMatrix breakdown_thresholds = thesis_breakdown_thresholds();  // B (eq. 3.9), m
+  // Dissolution (§3.13): regolith of org and sand, at most K_r deep.
+  double regolith_depth = 0.01;       // K_r, m (0: off)
+  double regolith_erosion = 1.0;      // K_re
+  double regolith_deposition = 1.0;   // K_rd
+  // Wetness (§3.15, eq. 3.12) and the flood death of vegetation.
+  double drying = 0.5;                // K_dry, per second
+  double flood_wetness = 1.0;         // vegetation dies above this wetness, m·s
 };
+
+// Whether any water is given: initial_water > 0, rain_rate > 0 or the river.
+bool has_water(const LayeredParams& params);
 
 // Throws InputError ("erosion.layered: ...") naming the first bad value: non-finite numbers, Δt ≤ 0,
 // a repose tan ≤ 0 (angle outside (0°, 90°)), K_sveg < 0, K_depth outside [1, 1.5], topsoil

@@ -103,12 +103,62 @@ Composition<Real> fragments(const BedrockType& type, Real amount) {
   return out;
 }
 
+template <class Real>
+Real erode_component(LayeredGround<Real>& ground, std::size_t c, int component, Real request,
+                     const LayeredParams& params) {
+  const auto least_share = static_cast<Real>(params.least_share);
+  const auto transparency_depth = static_cast<Real>(params.transparency_depth);
+  Real taken = 0;
+  Real left = request;
+  for (int layer = 0; layer < soil_layer_count && left > Real(0); ++layer) {
+    const Real thickness = ground.soil_thickness(layer, c);
+    if (thickness <= Real(0)) continue;
+    Real& stored = ground.soil_at(layer, component, c);
+    const Real before = stored;
+    const Real share = std::max(least_share, before / thickness);
+    const Real take = params.share_form == ShareForm::thesis ? std::min(left * share, before)
+                                                             : std::min(before, left) * share;
+    stored = before - take;
+    taken += take;
+    left = std::max(left - before, Real(0)) * std::max(Real(1) - thickness / transparency_depth, Real(0));
+  }
+  ground.surface[c] -= taken;
+  return taken;
+}
+
+template <class Real>
+Real soil_transparency(const LayeredGround<Real>& ground, std::size_t c, const LayeredParams& params) {
+  const auto transparency_depth = static_cast<Real>(params.transparency_depth);
+  Real through = 1;
+  for (int layer = 0; layer < soil_layer_count; ++layer) {
+    const Real thickness = ground.soil_thickness(layer, c);
+    if (thickness > Real(0)) through *= std::max(Real(1) - thickness / transparency_depth, Real(0));
+  }
+  return through;
+}
+
+template <class Real>
+ErodedBedrock<Real> erode_bedrock(LayeredGround<Real>& ground, std::size_t c, Real amount) {
+  for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
+    Real& thickness = ground.bedrock_at(layer, c);
+    if (thickness <= Real(0)) continue;
+    const Real taken = std::min(amount, thickness);
+    thickness -= taken;
+    ground.surface[c] -= taken;
+    return {layer, taken};
+  }
+  return {};
+}
+
 #define GT_LAYERED_COLUMN_INSTANTIATE(Real)                                                             \
   template int top_nonempty_layer(const LayeredGround<Real>&, std::size_t);                             \
   template void organize_horizon(LayeredGround<Real>&, std::size_t, Real, Real);                        \
   template void deposit_soil(LayeredGround<Real>&, std::size_t, const Composition<Real>&, Real);       \
   template Removed<Real> remove_soil(LayeredGround<Real>&, std::size_t, Real);                          \
-  template Composition<Real> fragments(const BedrockType&, Real);
+  template Composition<Real> fragments(const BedrockType&, Real);                                        \
+  template Real erode_component(LayeredGround<Real>&, std::size_t, int, Real, const LayeredParams&);     \
+  template Real soil_transparency(const LayeredGround<Real>&, std::size_t, const LayeredParams&);        \
+  template ErodedBedrock<Real> erode_bedrock(LayeredGround<Real>&, std::size_t, Real);
 GT_LAYERED_COLUMN_INSTANTIATE(float)
 GT_LAYERED_COLUMN_INSTANTIATE(double)
 #undef GT_LAYERED_COLUMN_INSTANTIATE

@@ -14,6 +14,16 @@
 //     bedrock flux S = K_rock_j·Δmaterial/h_rock gives a fraction; the intent, S = K_rock_j·Δmaterial,
 //     is taken. Decision: boulders get the remainder amount − (sand + gravel + stones), so the
 //     fragments sum to the rock volume to rounding whatever the rounding of ΣK_rock.
+//   erode_component(g, c, component, request, params): force erosion's removal of one component
+//     (§3.12, eq. 3.10 and the transparency rule), top layer down: in each non-empty soil layer of
+//     thickness V holding V_j of the component, take min(m·max(K_emin, V_j/V), V_j) (thesis) or
+//     min(V_j, m)·max(K_emin, V_j/V) (share_form seed001_code), then carry the request
+//     m ← max(m − V_j, 0)·max(1 − V/K_pmin, 0) to the layer below. Empty layers are skipped (they
+//     let everything through). Returns what was taken; the surface is lowered by it.
+//   soil_transparency(g, c, params): Π over the non-empty soil layers of max(1 − V/K_pmin, 0), the
+//     share of a request that reaches the bedrock.
+//   erode_bedrock(g, c, amount): takes min(amount, thickness) from the first non-empty bedrock
+//     layer (remove_soil's rule: it stops there) and lowers the surface; returns the layer and amount.
 // Every operation changes the surface height by the thickness it adds or removes, as the code keeps
 // its height map in step with the layers. Units: metres.
 #pragma once
@@ -66,5 +76,22 @@ Removed<Real> remove_soil(LayeredGround<Real>& ground, std::size_t c, Real amoun
 
 template <class Real>
 Composition<Real> fragments(const BedrockType& type, Real amount);
+
+template <class Real>
+Real erode_component(LayeredGround<Real>& ground, std::size_t c, int component, Real request,
+                     const LayeredParams& params);
+
+template <class Real>
+Real soil_transparency(const LayeredGround<Real>& ground, std::size_t c, const LayeredParams& params);
+
+// The bedrock layer taken from (-1: none) and the thickness taken, m.
+template <class Real>
+struct ErodedBedrock {
+  int layer = -1;
+  Real amount = 0;
+};
+
+template <class Real>
+ErodedBedrock<Real> erode_bedrock(LayeredGround<Real>& ground, std::size_t c, Real amount);
 
 }  // namespace gt::reference

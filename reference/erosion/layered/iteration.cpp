@@ -2,22 +2,35 @@
 #include "reference/erosion/layered/iteration.hpp"
 
 #include "reference/erosion/layered/creep.hpp"
+#include "reference/erosion/layered/dissolution.hpp"
+#include "reference/erosion/layered/force_erosion.hpp"
 #include "reference/erosion/layered/talus.hpp"
 #include "reference/erosion/layered/vegetation.hpp"
+#include "reference/erosion/layered/water.hpp"
 #include "reference/erosion/layered/weathering.hpp"
+#include "reference/erosion/layered/wetness.hpp"
 
 namespace gt::reference {
 
 template <class Real>
 void layered_iteration(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
-                       LayeredConversions& conversions) {
+                       LayeredConversions& conversions, LayeredWater<Real>* water) {
+  if (water != nullptr) water_sources(ground, *water, params, conversions);
   creep_step(ground, params, step, conversions);
   talus_step(ground, params, step, conversions);
-  vegetation_step(ground, params, step, conversions);
+  if (water != nullptr) {
+    water_flow(ground, *water, params);
+    force_erosion_step(ground, *water, params, conversions);
+    dissolution_step(ground, *water, params);
+    wetness_step(*water, params);
+  }
+  vegetation_step(ground, params, step, conversions, water);
   weathering_step(ground, params, step, conversions);
 }
 
-template void layered_iteration(LayeredGround<float>&, const LayeredParams&, std::uint32_t, LayeredConversions&);
-template void layered_iteration(LayeredGround<double>&, const LayeredParams&, std::uint32_t, LayeredConversions&);
+template void layered_iteration(LayeredGround<float>&, const LayeredParams&, std::uint32_t, LayeredConversions&,
+                                LayeredWater<float>*);
+template void layered_iteration(LayeredGround<double>&, const LayeredParams&, std::uint32_t, LayeredConversions&,
+                                LayeredWater<double>*);
 
 }  // namespace gt::reference

@@ -1,8 +1,10 @@
-// One iteration of seed 001's layered ground, CPU reference, in its code's order (digest 001 §4):
-// soil creep (step 2, creep.hpp), talus collapse (3, talus.hpp), vegetation (10, vegetation.hpp),
-// weathering (11, weathering.hpp), each on the state the previous one left. The water processes
-// (steps 4–9: water, force erosion, impact erosion, dissolution, sediment diffusion, wetness) are not
-// built yet. Every process draws its random factors with the same `step` counter, on its own
+// One iteration of seed 001's layered ground, CPU reference, in its code's order (digest 001 §4),
+// each process on the state the previous one left:
+//   with `water`: 1 sources and sinks (water.hpp); 2 soil creep (creep.hpp); 3 talus collapse
+//   (talus.hpp); with `water`: 4 the pipe flow (water.hpp), 5 force erosion (force_erosion.hpp),
+//   7 dissolution (dissolution.hpp), 9 wetness (wetness.hpp); 10 vegetation (vegetation.hpp, with the
+//   flood death when there is water); 11 weathering (weathering.hpp). Not built yet: 6 impact erosion
+//   and 8 sediment diffusion. Every process draws its random factors with the same `step` counter, on its own
 // streams (core/layered/layered_ground.hpp). GPU twin: gpu/erosion/layered/iteration.hpp. Units:
 // metres, Δt in seconds; conversions in m³.
 #pragma once
@@ -10,12 +12,13 @@
 #include <cstdint>
 
 #include "core/layered/layered_ground.hpp"
+#include "core/layered/layered_water.hpp"
 #include "core/params/layered.hpp"
 
 namespace gt::reference {
 
 template <class Real>
 void layered_iteration(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
-                       LayeredConversions& conversions);
+                       LayeredConversions& conversions, LayeredWater<Real>* water = nullptr);
 
 }  // namespace gt::reference

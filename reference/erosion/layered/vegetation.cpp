@@ -72,10 +72,15 @@ Real grown_vegetation(const LayeredGround<Real>& ground, const LayeredParams& pa
 
 template <class Real>
 void vegetation_step(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
-                     LayeredConversions& /*conversions*/) {
+                     LayeredConversions& /*conversions*/, const LayeredWater<Real>* water) {
   std::vector<Real> grown(ground.cells());
+  const auto flood = static_cast<Real>(params.flood_wetness);
   for (int y = 0; y < ground.height; ++y) {
-    for (int x = 0; x < ground.width; ++x) grown[ground.cell(x, y)] = grown_vegetation(ground, params, x, y, step);
+    for (int x = 0; x < ground.width; ++x) {
+      const std::size_t c = ground.cell(x, y);
+      const bool flooded = water != nullptr && water->wetness[c] > flood;
+      grown[c] = flooded ? Real(0) : grown_vegetation(ground, params, x, y, step);
+    }
   }
   ground.vegetation = std::move(grown);
 }
@@ -83,7 +88,8 @@ void vegetation_step(LayeredGround<Real>& ground, const LayeredParams& params, s
 #define GT_LAYERED_VEGETATION_INSTANTIATE(Real)                                                             \
   template Real soil_quality(const LayeredGround<Real>&, const LayeredParams&, std::size_t, Real);          \
   template Real grown_vegetation(const LayeredGround<Real>&, const LayeredParams&, int, int, std::uint32_t); \
-  template void vegetation_step(LayeredGround<Real>&, const LayeredParams&, std::uint32_t, LayeredConversions&);
+  template void vegetation_step(LayeredGround<Real>&, const LayeredParams&, std::uint32_t, LayeredConversions&, \
+                               const LayeredWater<Real>*);
 GT_LAYERED_VEGETATION_INSTANTIATE(float)
 GT_LAYERED_VEGETATION_INSTANTIATE(double)
 #undef GT_LAYERED_VEGETATION_INSTANTIATE

@@ -3,9 +3,9 @@
 // vegetation_step(ground, params, step, conversions): every column's new density from one snapshot
 // of the old densities (double-buffered, as the code's vegetation2), then written back:
 //   - death: a column with no organic matter in either soil layer gets veg' = 0 (the code's rule;
-//     the thesis is silent, taken for both variants). The flood rule (wet > threshold) is a no-op
-//     here: the model has no water yet, wetness is 0 and never exceeds any threshold, so it has no
-//     parameter until the water processes exist.
+//     the thesis is silent, taken for both variants), and the flood death: with `water`, a column
+//     whose wetness (wetness.hpp) exceeds flood_wetness gets veg' = 0 (the thesis's "critical
+//     threshold", the code's wet > 1.0).
 //   - soil quality, from the soil sampled down to depth d (topsoil, then subsoil, a layer partly
 //     sampled contributing the same share of each component), normalised by min(d, h_soil):
 //       q(d) = (Σ_i K_v,i·V*_i(d)) / min(d, h_soil)      (0 where the soil is empty)
@@ -26,6 +26,7 @@
 #include <cstdint>
 
 #include "core/layered/layered_ground.hpp"
+#include "core/layered/layered_water.hpp"
 #include "core/params/layered.hpp"
 
 namespace gt::reference {
@@ -42,6 +43,6 @@ Real grown_vegetation(const LayeredGround<Real>& ground, const LayeredParams& pa
 // One double-buffered step. Valid parameters and ground assumed, as talus_step (talus.hpp).
 template <class Real>
 void vegetation_step(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
-                     LayeredConversions& conversions);
+                     LayeredConversions& conversions, const LayeredWater<Real>* water = nullptr);
 
 }  // namespace gt::reference
