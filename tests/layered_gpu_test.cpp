@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <random>
 #include <string>
@@ -222,67 +223,97 @@ TEST_F(LayeredGpuDivision, GtDivIsTheCpusFloatDivision) {
 
 class LayeredGpu : public gt::testing::GlTestWithParam<Variant> {};
 
-TEST_P(LayeredGpu, OneTalusStepIsTheFloatReferenceBitForBit) {
-  const auto params = params_for(GetParam());
-  const auto initial = random_ground(params);
-  auto reference = initial;
-  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::reference::talus_step(reference, params, 3, reference_conversions);
-  ASSERT_TRUE(moved(initial, reference));
-  ASSERT_GT(reference_conversions.fragmented_from[0], 0.0) << "the cliff's bedrock should fragment";
-  ASSERT_GT(reference_conversions.fragmented_from[1], 0.0) << "a hard layer over an exposed soft one should fall";
+// One process of the layered iteration, as the one-step test runs it: the reference's step and the
+// GPU twin's, at step number `step`; `missing_effect` names what the reference's step should have
+// done from the test ground and did not (nullptr when it did), so that the comparison is not
+// vacuous; `fragments` and `weathers` say which conversions it counts.
+struct Process {
+  const char* name;
+  std::uint32_t step;
+  std::function<void(LayeredGround<float>&, const LayeredParams&, std::uint32_t, LayeredConversions&)> reference;
+  std::function<void(gt::gpu::LayeredGroundBuffers&, std::uint32_t, LayeredConversions&)> gpu;
+  std::function<const char*(const LayeredGround<float>& initial, const LayeredGround<float>& stepped,
+                            const LayeredConversions& converted)>
+      missing_effect;
+  bool fragments;
+  bool weathers;
+};
 
-  gt::gpu::LayeredGroundBuffers buffers(initial, params);
-  auto conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::gpu::layered_talus().step(buffers, 3, conversions);
-  expect_same_ground(reference, buffers.download(), "talus step");
-  expect_conversions(reference_conversions, conversions, 1, "talus step");
+std::vector<Process> processes() {
+  return {
+      {"talus", 3,
+       [](auto& ground, const auto& params, std::uint32_t step, auto& converted) {
+         gt::reference::talus_step(ground, params, step, converted);
+       },
+       [](auto& buffers, std::uint32_t step, auto& converted) {
+         gt::gpu::layered_talus().step(buffers, step, converted);
+       },
+       [](const auto& initial, const auto& stepped, const auto& converted) -> const char* {
+         if (!moved(initial, stepped)) return "no soil moved";
+         if (!(converted.fragmented_from[0] > 0.0)) return "the cliff's bedrock should fragment";
+         if (!(converted.fragmented_from[1] > 0.0)) return "a hard layer over an exposed soft one should fall";
+         return nullptr;
+       },
+       true, false},
+      {"creep", 5,
+       [](auto& ground, const auto& params, std::uint32_t step, auto& converted) {
+         gt::reference::creep_step(ground, params, step, converted);
+       },
+       [](auto& buffers, std::uint32_t step, auto& converted) {
+         gt::gpu::layered_creep().step(buffers, step, converted);
+       },
+       [](const auto& initial, const auto& stepped, const auto&) -> const char* {
+         return moved(initial, stepped) ? nullptr : "no soil moved";
+       },
+       true, false},
+      {"vegetation", 6,
+       [](auto& ground, const auto& params, std::uint32_t step, auto& converted) {
+         gt::reference::vegetation_step(ground, params, step, converted);
+       },
+       [](auto& buffers, std::uint32_t step, auto& converted) {
+         gt::gpu::layered_vegetation().step(buffers, step, converted);
+       },
+       [](const auto& initial, const auto& stepped, const auto&) -> const char* {
+         return initial.vegetation != stepped.vegetation ? nullptr : "no vegetation density changed";
+       },
+       false, false},
+      {"weathering", 2,
+       [](auto& ground, const auto& params, std::uint32_t step, auto& converted) {
+         gt::reference::weathering_step(ground, params, step, converted);
+       },
+       [](auto& buffers, std::uint32_t step, auto& converted) {
+         gt::gpu::layered_weathering().step(buffers, step, converted);
+       },
+       [](const auto& initial, const auto& stepped, const auto& converted) -> const char* {
+         if (!moved(initial, stepped) && initial.bedrock == stepped.bedrock) return "no soil or bedrock changed";
+         if (!(converted.weathered_into[0] > 0.0)) return "no sand weathered into organic matter";
+         if (!(converted.soil_formed_from[0] > 0.0)) return "no soft rock became soil";
+         return nullptr;
+       },
+       false, true},
+  };
 }
 
-TEST_P(LayeredGpu, OneCreepStepIsTheFloatReferenceBitForBit) {
+// Each process's one step from the same random ground, GPU against reference<float>.
+TEST_P(LayeredGpu, OneStepOfEachProcessIsTheFloatReferenceBitForBit) {
   const auto params = params_for(GetParam());
   const auto initial = random_ground(params);
-  auto reference = initial;
-  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::reference::creep_step(reference, params, 5, reference_conversions);
-  ASSERT_TRUE(moved(initial, reference));
-
-  gt::gpu::LayeredGroundBuffers buffers(initial, params);
-  auto conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::gpu::layered_creep().step(buffers, 5, conversions);
-  expect_same_ground(reference, buffers.download(), "creep step");
-  expect_conversions(reference_conversions, conversions, 1, "creep step");
-}
-
-TEST_P(LayeredGpu, OneVegetationStepIsTheFloatReferenceBitForBit) {
-  const auto params = params_for(GetParam());
-  const auto initial = random_ground(params);
-  auto reference = initial;
-  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::reference::vegetation_step(reference, params, 6, reference_conversions);
-  ASSERT_NE(initial.vegetation, reference.vegetation);
-
-  gt::gpu::LayeredGroundBuffers buffers(initial, params);
-  auto conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::gpu::layered_vegetation().step(buffers, 6, conversions);
-  expect_same_ground(reference, buffers.download(), "vegetation step");
-}
-
-TEST_P(LayeredGpu, OneWeatheringStepIsTheFloatReferenceBitForBit) {
-  const auto params = params_for(GetParam());
-  const auto initial = random_ground(params);
-  auto reference = initial;
-  auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::reference::weathering_step(reference, params, 2, reference_conversions);
-  ASSERT_TRUE(moved(initial, reference) || initial.bedrock != reference.bedrock);
-  ASSERT_GT(reference_conversions.weathered_into[0], 0.0);
-  ASSERT_GT(reference_conversions.soil_formed_from[0], 0.0);
-
-  gt::gpu::LayeredGroundBuffers buffers(initial, params);
-  auto conversions = gt::no_conversions(params.bedrock_types.size());
-  gt::gpu::layered_weathering().step(buffers, 2, conversions);
-  expect_same_ground(reference, buffers.download(), "weathering step");
-  expect_weathering_conversions(reference_conversions, conversions, "weathering step");
+  for (const Process& process : processes()) {
+    const std::string when = std::string(process.name) + " step";
+    auto reference = initial;
+    auto reference_conversions = gt::no_conversions(params.bedrock_types.size());
+    process.reference(reference, params, process.step, reference_conversions);
+    if (const char* missing = process.missing_effect(initial, reference, reference_conversions)) {
+      ADD_FAILURE() << when << " of the reference: " << missing << " (the test ground no longer exercises it)";
+      continue;
+    }
+    gt::gpu::LayeredGroundBuffers buffers(initial, params);
+    auto conversions = gt::no_conversions(params.bedrock_types.size());
+    process.gpu(buffers, process.step, conversions);
+    expect_same_ground(reference, buffers.download(), when);
+    if (process.fragments) expect_conversions(reference_conversions, conversions, 1, when);
+    if (process.weathers) expect_weathering_conversions(reference_conversions, conversions, when);
+  }
 }
 
 // 20 iterations of creep, talus, vegetation and weathering (the code's order, §4), compared after
