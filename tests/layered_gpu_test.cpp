@@ -25,7 +25,10 @@
 // Vegetation and weathering run with the variants' vegetation quality (seed001_code: the code's, with
 // K_vorg 1.5) and weathering at 50× the code's rates, so that clamps to the source occur.
 // Determinism: a second GPU run from the same ground gives the same bits and conversions.
-// gt_div itself is checked against the CPU's division on pairs spread over the exponents.
+// gt_div itself is checked against the CPU's division on pairs spread over the exponents, and gt_sqrt
+// (gpu/shaders/erosion/layered/square_root.glsl) against std::sqrt(float) on normal floats chosen to
+// test its rounding.
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -219,6 +222,61 @@ TEST_F(LayeredGpuDivision, GtDivIsTheCpusFloatDivision) {
   std::vector<float> expected(count);
   for (std::size_t i = 0; i < count; ++i) expected[i] = pairs[2 * i] / pairs[2 * i + 1];
   expect_same_bits("gt_div", expected, quotients, "division probe");
+}
+
+// Positive normal floats whose roots test gt_sqrt's rounding: random bit patterns over the whole
+// normal range; exact squares of 12-bit significands (a remainder of 0) and their float neighbours;
+// floats nearest the squares of midpoints between adjacent floats (the root just above or below a
+// rounding tie: the sticky bit decides) and their neighbours; every power of two (odd and even
+// exponents: the two radicand shifts); the smallest and largest normals and their neighbours.
+std::vector<float> square_root_values() {
+  std::mt19937 random(13);
+  std::uniform_int_distribution<std::uint32_t> normal_bits(0x00800000u, 0x7f7fffffu);
+  std::uniform_int_distribution<int> twelve_bits(1 << 11, (1 << 12) - 1);
+  std::uniform_int_distribution<std::uint32_t> significand(0, 0x7fffffu);
+  std::uniform_int_distribution<int> exponent(-60, 60);          // of a root whose square is normal
+  std::uniform_int_distribution<int> square_exponent(-74, 51);  // of 2^11 ≤ k < 2^12 in k·2^e: (k·2^e)² normal
+  std::vector<float> values;
+  const auto with_neighbours = [&](float value) {
+    values.insert(values.end(), {std::nextafter(value, 0.0f), value,
+                                 std::nextafter(value, std::numeric_limits<float>::infinity())});
+  };
+  for (int i = 0; i < 200000; ++i) values.push_back(std::bit_cast<float>(normal_bits(random)));
+  for (int i = 0; i < 20000; ++i) {
+    const float root = std::ldexp(static_cast<float>(twelve_bits(random)), square_exponent(random));
+    with_neighbours(root * root);  // exact: 24 significand bits at most
+  }
+  for (int i = 0; i < 20000; ++i) {
+    // The midpoint between root and its successor, squared in double (exactly: 50 bits), rounded to float.
+    const auto biased = static_cast<std::uint32_t>(127 + exponent(random));
+    const float root = std::bit_cast<float>((biased << 23) | significand(random));
+    const double midpoint = 0.5 * (double(root) + double(std::nextafter(root, 2.0f * root)));
+    with_neighbours(static_cast<float>(midpoint * midpoint));
+  }
+  for (int power = -126; power <= 127; ++power) values.push_back(std::ldexp(1.0f, power));
+  with_neighbours(std::numeric_limits<float>::max());
+  values.pop_back();  // its successor is infinite
+  with_neighbours(std::numeric_limits<float>::min());
+  values.erase(values.end() - 3);  // its predecessor is subnormal
+  return values;
+}
+
+class LayeredGpuSquareRoot : public gt::testing::GlTest {};
+
+TEST_F(LayeredGpuSquareRoot, GtSqrtIsTheCpusFloatSquareRoot) {
+  const auto values = square_root_values();
+  for (float value : values) ASSERT_TRUE(std::isnormal(value) && value > 0.0f) << value;
+  const auto value_buffer = gt::StorageBuffer::from(values);
+  gt::StorageBuffer root_buffer(values.size() * sizeof(float));
+  value_buffer.bind(0);
+  root_buffer.bind(1);
+  gt::ComputeProgram::load("erosion/layered/square_root_probe.comp")
+      .dispatch(static_cast<int>(values.size()), 1, 64, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const auto roots = root_buffer.download<float>(values.size());
+  std::vector<float> expected(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) expected[i] = std::sqrt(values[i]);
+  expect_same_bits("gt_sqrt", expected, roots, "square root probe");
 }
 
 class LayeredGpu : public gt::testing::GlTestWithParam<Variant> {};
