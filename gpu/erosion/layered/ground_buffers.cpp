@@ -30,17 +30,20 @@ static_assert(offsetof(LayeredBlock, vegetation_code) == 188);
 static_assert(offsetof(LayeredBlock, weathering_reach) == 196);
 static_assert(sizeof(LayeredBlock) == 208);
 
-// Mirror of `BedrockTypeRecord` (std430: a vec4, two floats, a vec4 at 32; 48 bytes).
+// Mirror of `BedrockTypeRecord` (std430: a vec4, two floats, three vec4 from 32; 80 bytes).
 struct BedrockTypeRecord {
   float fragments[4];
   float repose_tan;
   float soil_rate;
   float padding[2];
   float soil_composition_a[4];
+  float erosion_slopes[4];
+  float erosion_thresholds[4];
 };
 static_assert(offsetof(BedrockTypeRecord, soil_rate) == 20);
 static_assert(offsetof(BedrockTypeRecord, soil_composition_a) == 32);
-static_assert(sizeof(BedrockTypeRecord) == 48);
+static_assert(offsetof(BedrockTypeRecord, erosion_thresholds) == 64);
+static_assert(sizeof(BedrockTypeRecord) == 80);
 
 // Mirror of `ColumnConversion` in apply.comp (std430: a vec4, a float, an int, padded to 32 bytes).
 struct ColumnConversion {
@@ -109,7 +112,10 @@ std::vector<BedrockTypeRecord> type_records(const LayeredParams& params) {
     record.repose_tan = static_cast<float>(type.repose_tan);
     record.soil_rate = static_cast<float>(type.soil_rate);
     for (int i = 0; i < 4; ++i) {
-      record.soil_composition_a[i] = static_cast<float>(type.soil_composition[static_cast<std::size_t>(i)]);
+      const auto k = static_cast<std::size_t>(i);
+      record.soil_composition_a[i] = static_cast<float>(type.soil_composition[k]);
+      record.erosion_slopes[i] = static_cast<float>(type.erosion_slopes[k]);
+      record.erosion_thresholds[i] = static_cast<float>(type.erosion_thresholds[k]);
     }
     records.push_back(record);
   }

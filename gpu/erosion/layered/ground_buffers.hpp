@@ -82,6 +82,8 @@ class LayeredGroundBuffers {
   // Sizes and cell sizes of the ground (its arrays empty); the parameters.
   const LayeredGround<float>& shape() const { return shape_; }
   const LayeredParams& params() const { return params_; }
+  // The surface heights (for the water's snapshot of them, water_buffers.hpp).
+  const StorageBuffer& surface_buffer() const { return surface_; }
 
  private:
   void bind() const;

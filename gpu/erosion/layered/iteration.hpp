@@ -1,30 +1,45 @@
 // One iteration of seed 001's layered ground on the GPU, twin of reference/erosion/layered/
-// iteration.hpp: creep, talus, vegetation, weathering (digest 001 §4, steps 2, 3, 10, 11), each
-// process's passes dispatched in turn on the same LayeredGroundBuffers. LayeredIteration() compiles
-// the four processes' programs; step(ground, step, conversions) runs one iteration. Needs a
-// current GlContext.
+// iteration.hpp, in the code's order (digest 001 §4): with water, 1 sources and sinks; 2 creep;
+// 3 talus; with water, 4 the pipe flow, 5 force erosion, 7 dissolution, 9 wetness; 10 vegetation
+// (with the flood death when there is water); 11 weathering — each process's passes dispatched in
+// turn on the same buffers. LayeredIteration(with_water) compiles the programs (the water's only
+// when asked); step(ground, step, conversions, water) runs one iteration, `water` required exactly
+// when built with water (else std::invalid_argument). Needs a current GlContext.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "gpu/erosion/layered/creep.hpp"
+#include "gpu/erosion/layered/force_erosion.hpp"
 #include "gpu/erosion/layered/ground_buffers.hpp"
 #include "gpu/erosion/layered/talus.hpp"
 #include "gpu/erosion/layered/vegetation.hpp"
+#include "gpu/erosion/layered/water.hpp"
+#include "gpu/erosion/layered/water_buffers.hpp"
 #include "gpu/erosion/layered/weathering.hpp"
 
 namespace gt::gpu {
 
 class LayeredIteration {
  public:
-  LayeredIteration();
-  void step(LayeredGroundBuffers& ground, std::uint32_t step, LayeredConversions& conversions) const;
+  explicit LayeredIteration(bool with_water = false);
+  void step(LayeredGroundBuffers& ground, std::uint32_t step, LayeredConversions& conversions,
+            const LayeredWaterBuffers* water = nullptr) const;
 
  private:
+  struct WaterProcesses {
+    LayeredWaterFlow flow;
+    LayeredForceErosion force_erosion;
+    LayeredWaterPass dissolution{"erosion/layered/dissolution.comp"};
+    LayeredWaterPass wetness{"erosion/layered/wetness.comp"};
+  };
+
   LayeredSlopeProcess creep_;
   LayeredSlopeProcess talus_;
   LayeredVegetation vegetation_;
   LayeredWeathering weathering_;
+  std::optional<WaterProcesses> water_;
 };
 
 }  // namespace gt::gpu

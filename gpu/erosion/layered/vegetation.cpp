@@ -6,8 +6,9 @@
 
 namespace gt::gpu {
 
-LayeredVegetation::LayeredVegetation()
-    : grow_(ComputeProgram::load("erosion/layered/vegetation.comp")),
+LayeredVegetation::LayeredVegetation(bool flood)
+    : grow_(ComputeProgram::load("erosion/layered/vegetation.comp",
+                                 flood ? std::vector<std::string>{"LAYERED_FLOOD"} : std::vector<std::string>{})),
       store_(ComputeProgram::load("erosion/layered/vegetation.comp", std::vector<std::string>{"VEGETATION_STORE"})) {}
 
 void LayeredVegetation::step(LayeredGroundBuffers& ground, std::uint32_t step,
@@ -16,6 +17,6 @@ void LayeredVegetation::step(LayeredGroundBuffers& ground, std::uint32_t step,
   ground.dispatch_pass(store_, step);
 }
 
-LayeredVegetation layered_vegetation() { return {}; }
+LayeredVegetation layered_vegetation(bool flood) { return LayeredVegetation(flood); }
 
 }  // namespace gt::gpu

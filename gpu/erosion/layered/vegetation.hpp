@@ -4,7 +4,9 @@
 // into the outflow buffer (scratch) from the old densities, the store pass copies it into the
 // vegetation buffer — the reference's double buffer. step(ground, step, conversions) runs both,
 // drawing rand(0, 1) with the reference's key (seed, cell, step, vegetation_cell_stream); growth
-// converts nothing, so `conversions` stays as it is. Needs a current GlContext.
+// converts nothing, so `conversions` stays as it is. LayeredVegetation(true) compiles the grow pass
+// with LAYERED_FLOOD, the flood death read from the water's wetness (bind the water buffers first).
+// Needs a current GlContext.
 // Units: K_veg in 1/s, Δt in s, depths in m.
 #pragma once
 
@@ -16,7 +18,7 @@ namespace gt::gpu {
 
 class LayeredVegetation {
  public:
-  LayeredVegetation();
+  explicit LayeredVegetation(bool flood = false);
   void step(LayeredGroundBuffers& ground, std::uint32_t step, LayeredConversions& conversions) const;
 
  private:
@@ -24,6 +26,6 @@ class LayeredVegetation {
   ComputeProgram store_;
 };
 
-LayeredVegetation layered_vegetation();
+LayeredVegetation layered_vegetation(bool flood = false);
 
 }  // namespace gt::gpu

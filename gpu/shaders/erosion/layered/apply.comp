@@ -1,8 +1,8 @@
 #version 450
 // Apply pass shared by talus collapse (§3.10) and soil creep (§3.11) of the layered ground: one
 // invocation per column c moves the outflows the compute pass wrote. GPU twin of
-// reference/erosion/layered/transfer.cpp (apply_outflows) and column.cpp (remove_soil,
-// deposit_soil, organize_horizon, fragments), operation for operation in float:
+// reference/erosion/layered/transfer.cpp (apply_outflows), with the column operations of
+// column.glsl, operation for operation in float:
 //   1. remove_soil(c, min(Σ_k out[c][k], thickness of c's topmost non-empty layer in the snapshot));
 //   2. gather out[n_k][k^1] from the neighbours, k = 0..7, each carrying the composition of n_k's
 //      topmost non-empty layer in the snapshot, or the fragments of its bedrock (a conversion);
@@ -11,7 +11,7 @@
 // Column c writes only its own entries of the current half, so no two invocations touch the same
 // word. Per column it writes its conversions (fragments received, bedrock given) for the host to
 // sum in double. Units: metres.
-#include "erosion/layered/layered.glsl"
+#include "erosion/layered/column.glsl"
 
 struct ColumnConversion {
   vec4 fragmented_into;  // sand, gravel, stones, boulders received as broken bedrock, m
@@ -19,115 +19,6 @@ struct ColumnConversion {
   int from_type;         // its bedrock type
 };
 layout(std430, binding = 8) writeonly buffer Conversions { ColumnConversion conversions[]; };
-
-float composition_total(float material[5]) {
-  precise float sum = 0.0;
-  for (int i = 0; i < COMPONENTS; ++i) sum += material[i];
-  return sum;
-}
-
-// Takes the share `fraction` of every component of current soil layer `layer` into `taken`.
-void take_share(int layer, uint c, float fraction, out float taken[5]) {
-  for (int i = 0; i < COMPONENTS; ++i) {
-    uint at = soil_at(CURRENT, layer, i, c);
-    precise float stored = soil[at];
-    precise float part = fraction == 1.0 ? stored : stored * fraction;
-    soil[at] = stored - part;
-    taken[i] = part;
-  }
-}
-
-// Takes up to `left` from soil layer `layer` proportionally into `removed`; a layer thicker than
-// the request meets it whole.
-void take_from_soil_layer(int layer, uint c, inout float left, inout float removed[5]) {
-  float thickness = soil_thickness(CURRENT, layer, c);
-  if (thickness <= 0.0 || left <= 0.0) return;
-  bool whole_layer = left >= thickness;
-  float taken[5];
-  take_share(layer, c, whole_layer ? 1.0 : gt_div(left, thickness), taken);
-  for (int i = 0; i < COMPONENTS; ++i) {
-    precise float sum = removed[i] + taken[i];
-    removed[i] = sum;
-  }
-  precise float rest = left - thickness;
-  left = whole_layer ? rest : 0.0;
-}
-
-// remove_soil: topsoil, subsoil, then the first non-empty bedrock layer, at most what it holds.
-// Returns the bedrock layer taken from (−1 none) and its amount in `rock`.
-int remove_soil(uint c, float amount, out float rock) {
-  float removed[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
-  precise float left = amount;
-  for (int layer = 0; layer < SOIL_LAYERS; ++layer) take_from_soil_layer(layer, c, left, removed);
-  int top = top_nonempty_layer(CURRENT, c);
-  int rock_layer = -1;
-  rock = 0.0;
-  if (left > 0.0 && top >= SOIL_LAYERS) {
-    rock_layer = top - SOIL_LAYERS;
-    uint at = bedrock_at(CURRENT, rock_layer, c);
-    precise float thickness = bedrock[at];
-    rock = min(left, thickness);
-    bedrock[at] = thickness - rock;
-  }
-  precise float total = composition_total(removed) + rock;
-  precise float lowered = surface[c] - total;
-#ifndef GT_MUTANT_EROSION_LAYERED_SURFACE_NOT_LOWERED
-  surface[c] = lowered;
-#endif
-  return rock_layer;
-}
-
-// organize_horizon: when topsoil + needed > max, the share (topsoil + needed − max)/topsoil of
-// every topsoil component moves into the subsoil.
-void organize_horizon(uint c, float needed) {
-  float topsoil = soil_thickness(CURRENT, 0, c);
-  precise float wanted = topsoil + needed;
-  if (topsoil <= 0.0 || wanted <= topsoil_max) return;
-  precise float excess = wanted - topsoil_max;
-  float moved[5];
-  take_share(0, c, clamp(gt_div(excess, topsoil), 0.0, 1.0), moved);
-  for (int i = 0; i < COMPONENTS; ++i) {
-    uint at = soil_at(CURRENT, 1, i, c);
-    precise float sum = soil[at] + moved[i];
-    soil[at] = sum;
-  }
-}
-
-// deposit_soil: reserve room for the whole material, add it to the topsoil, push the excess down.
-void deposit_soil(uint c, float material[5]) {
-  float total = composition_total(material);
-  if (total <= 0.0) return;
-#ifndef GT_MUTANT_EROSION_LAYERED_DEPOSIT_WITHOUT_RESERVE
-  organize_horizon(c, total);
-#endif
-  for (int i = 0; i < COMPONENTS; ++i) {
-    uint at = soil_at(CURRENT, 0, i, c);
-    precise float sum = soil[at] + material[i];
-    soil[at] = sum;
-  }
-#ifndef GT_MUTANT_EROSION_LAYERED_DEPOSIT_WITHOUT_RESERVE
-  organize_horizon(c, 0.0);
-#endif
-  precise float raised = surface[c] + total;
-  surface[c] = raised;
-}
-
-// fragments(type, amount): sand, gravel, stones by K_rock, boulders the remainder.
-void fragments(int type, float amount, out float broken[5]) {
-  precise float given = 0.0;
-  broken[0] = 0.0;
-  for (int size = 0; size < 3; ++size) {
-    precise float part = bedrock_types[type].fragments[size] * amount;
-    broken[size + 1] = part;
-    given += part;
-  }
-  precise float rest = amount - given;
-#ifdef GT_MUTANT_EROSION_LAYERED_FRAGMENTS_WITHOUT_BOULDERS
-  broken[4] = 0.0;
-#else
-  broken[4] = max(rest, 0.0);
-#endif
-}
 
 // What `amount` leaving donor n carries, from the snapshot; bedrock fragments are added to `into`.
 void flux_composition(uint n, float amount, inout vec4 into, out float carried[5]) {

@@ -66,6 +66,8 @@ struct BedrockTypeRecord {
   float repose_tan;
   float soil_rate;              // K_t of bedrock → soil, m/s (§3.16)
   vec4 soil_composition_a;      // K_t,i of org, sand, gravel, stones (boulders: the remainder)
+  vec4 erosion_slopes;          // A^rock row of the type: sand .. boulders (§3.12)
+  vec4 erosion_thresholds;      // B^rock row, m
 };
 
 layout(std430, binding = 1) buffer Surface { float surface[]; };

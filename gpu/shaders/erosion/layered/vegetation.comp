@@ -1,12 +1,15 @@
 #version 450
 // Vegetation growth on the layered ground (digest 001 §3.15), GPU twin of
-// reference/erosion/layered/vegetation.cpp (decisions there: death without organic matter, no flood
-// rule while wetness is 0, q_s normalised by min(K_vd, h_soil), the clamp to [0, 1]), operation for
+// reference/erosion/layered/vegetation.cpp (decisions there: death without organic matter, the flood
+// death, q_s normalised by min(K_vd, h_soil), the clamp to [0, 1]), operation for
 // operation in float. Double-buffered in two passes, as the reference reads only old densities:
 //   grow (default): every column's new density into outflow[8·c] (the outflows as scratch);
 //   with VEGETATION_STORE: vegetation[c] = outflow[8·c].
+// With LAYERED_FLOOD (the ground has water), a column wetter than flood_wetness gets 0 (the flood
+// death, reference vegetation_step's `water`).
 // Units: K_veg in 1/s, Δt in s, depths in m.
 #include "erosion/layered/layered.glsl"
+#include "erosion/layered/water.glsl"
 
 const uint VEGETATION_STREAM = 10u;  // gt::vegetation_cell_stream
 
@@ -55,6 +58,9 @@ float neighbour_vegetation(ivec2 cell, uint c) {
 }
 
 float grown_vegetation(ivec2 cell, uint c) {
+#ifdef LAYERED_FLOOD
+  if (water_state[water_at(CURRENT, WETNESS, c)] > flood_wetness) return 0.0;
+#endif
   if (!(soil[soil_at(CURRENT, 0, 0, c)] > 0.0 || soil[soil_at(CURRENT, 1, 0, c)] > 0.0)) return 0.0;
   float veg = vegetation[c];
   precise float drive = quality(c, veg) - vegetation_equilibrium * veg +

@@ -1,0 +1,149 @@
+// Host side of the water on the layered ground: its parameter block and buffers (see
+// water_buffers.hpp; shaders in gpu/shaders/erosion/layered/).
+#include "gpu/erosion/layered/water_buffers.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+namespace gt::gpu {
+namespace {
+
+static_assert(offsetof(LayeredWaterBlock, breakdown_slopes) == 16);
+static_assert(offsetof(LayeredWaterBlock, breakdown_thresholds) == 80);
+static_assert(offsetof(LayeredWaterBlock, cell_area) == 144);
+static_assert(offsetof(LayeredWaterBlock, sink_row_start) == 164);
+static_assert(offsetof(LayeredWaterBlock, breakdown_code) == 216);
+static_assert(offsetof(LayeredWaterBlock, flood_wetness) == 248);
+static_assert(sizeof(LayeredWaterBlock) == 256);
+
+constexpr GLuint block_binding = 1, state_binding = 10, records_binding = 11;
+// Sections of water.glsl.
+constexpr std::size_t water_section = 0, previous_section = 1, wetness_section = 2, flux_section = 3,
+                      carried_section = 7, surface_section = 14;
+
+int first_sink_row(int height) {
+  for (int y = 0; y < height; ++y) {
+    if (river_sink_row(y, height)) return y;
+  }
+  return height;
+}
+
+LayeredWaterBlock make_block(const LayeredGround<float>& shape, const LayeredParams& params) {
+  LayeredWaterBlock block{};
+  const double area = shape.cell_size_x * shape.cell_size_y;
+  for (int k = 0; k < water_pipe_count; ++k) {
+    block.pipe_coefficient[k] = static_cast<float>(
+        params.time_step * area * params.gravity / layered_neighbour_distance(shape.cell_size_x, shape.cell_size_y, k));
+  }
+  for (std::size_t j = 0; j < fragment_size_count; ++j) {
+    for (std::size_t i = 0; i < fragment_size_count; ++i) {
+      block.breakdown_slopes[j][i] = static_cast<float>(params.breakdown_slopes[j][i]);
+      block.breakdown_thresholds[j][i] = static_cast<float>(params.breakdown_thresholds[j][i]);
+    }
+  }
+  block.cell_area = static_cast<float>(area);
+  block.rain_depth = static_cast<float>(params.time_step * params.rain_rate);
+  block.river_depth = static_cast<float>(params.river_depth);
+  block.river = params.river ? 1 : 0;
+  block.river_source = static_cast<std::int32_t>(river_source_cell(shape.width, shape.height));
+  block.sink_row_start = first_sink_row(shape.height);
+  block.velocity_depth_floor = static_cast<float>(params.velocity_depth_floor);
+  block.depth_ramp = static_cast<float>(params.depth_ramp);
+  block.slope_floor = static_cast<float>(params.slope_floor);
+  const bool thesis_slope = params.slope_form == SlopeForm::thesis;
+  block.slope_scale_x = static_cast<float>(thesis_slope ? 0.5 / shape.cell_size_x : 1.0);
+  block.slope_scale_y = static_cast<float>(thesis_slope ? 0.5 / shape.cell_size_y : 1.0);
+  block.cell_size_x = static_cast<float>(shape.cell_size_x);
+  block.cell_size_y = static_cast<float>(shape.cell_size_y);
+  block.erosion_strength = static_cast<float>(params.erosion_strength);
+  block.organic_capacity = static_cast<float>(params.organic_capacity);
+  block.erosion_rate = static_cast<float>(params.erosion_rate);
+  block.deposition_rate = static_cast<float>(params.deposition_rate);
+  block.vegetation_protection = static_cast<float>(params.vegetation_protection);
+  block.breakdown_code = params.breakdown_form == BreakdownForm::seed001_code ? 1 : 0;
+  block.share_code = params.share_form == ShareForm::seed001_code ? 1 : 0;
+  block.least_share = static_cast<float>(params.least_share);
+  block.transparency_depth = static_cast<float>(params.transparency_depth);
+  block.regolith_depth = static_cast<float>(params.regolith_depth);
+  block.regolith_erosion = static_cast<float>(params.regolith_erosion);
+  block.regolith_deposition = static_cast<float>(params.regolith_deposition);
+  block.drying_factor = static_cast<float>(std::pow(params.drying, params.time_step));
+  block.flood_wetness = static_cast<float>(params.flood_wetness);
+  return block;
+}
+
+void put(std::vector<float>& state, std::size_t section, std::size_t cells, const std::vector<float>& values) {
+  std::copy(values.begin(), values.end(), state.begin() + static_cast<std::ptrdiff_t>(section * cells));
+}
+
+std::vector<float> take(const std::vector<float>& state, std::size_t section, std::size_t cells, std::size_t count) {
+  const auto first = state.begin() + static_cast<std::ptrdiff_t>(section * cells);
+  return {first, first + static_cast<std::ptrdiff_t>(count)};
+}
+
+}  // namespace
+
+LayeredWaterBuffers::LayeredWaterBuffers(const LayeredGroundBuffers& ground, const LayeredWater<float>& water)
+    : cells_(ground.shape().cells()),
+      block_(make_block(ground.shape(), ground.params())),
+      block_buffer_(UniformBuffer::from(block_)),
+      state_(2 * water_sections * cells_ * sizeof(float)),
+      records_(water_record_floats * cells_ * sizeof(float)) {
+  upload(water);
+}
+
+void LayeredWaterBuffers::upload(const LayeredWater<float>& water) {
+  check_layered_water(water, cells_);
+  std::vector<float> state(water_sections * cells_, 0.0f);
+  put(state, water_section, cells_, water.water);
+  put(state, previous_section, cells_, water.previous_water);
+  put(state, wetness_section, cells_, water.wetness);
+  put(state, flux_section, cells_, water.water_flux);
+  put(state, carried_section, cells_, water.carried);
+  state_.upload(state.data(), state.size() * sizeof(float));
+}
+
+LayeredWater<float> LayeredWaterBuffers::download() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const auto state = state_.download<float>(water_sections * cells_);
+  LayeredWater<float> water;
+  water.water = take(state, water_section, cells_, cells_);
+  water.previous_water = take(state, previous_section, cells_, cells_);
+  water.wetness = take(state, wetness_section, cells_, cells_);
+  water.water_flux = take(state, flux_section, cells_, water_pipe_count * cells_);
+  water.carried = take(state, carried_section, cells_, carried_kind_count * cells_);
+  return water;
+}
+
+void LayeredWaterBuffers::bind() const {
+  block_buffer_.bind(block_binding);
+  state_.bind(state_binding);
+  records_.bind(records_binding);
+}
+
+void LayeredWaterBuffers::snapshot() const {
+  const auto half = static_cast<GLsizeiptr>(state_.size_bytes() / 2);
+  glCopyNamedBufferSubData(state_.id(), state_.id(), 0, half, half);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void LayeredWaterBuffers::snapshot_surface(const LayeredGroundBuffers& ground) const {
+  const auto bytes = static_cast<GLsizeiptr>(cells_ * sizeof(float));
+  glCopyNamedBufferSubData(ground.surface_buffer().id(), state_.id(), 0,
+                           static_cast<GLintptr>(surface_section * cells_ * sizeof(float)), bytes);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+std::vector<float> LayeredWaterBuffers::records(std::size_t floats_per_column) const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  return records_.download<float>(floats_per_column * cells_);
+}
+
+LayeredWaterPass::LayeredWaterPass(const std::string& shader) : program_(ComputeProgram::load(shader)) {}
+
+void LayeredWaterPass::step(LayeredGroundBuffers& ground, const LayeredWaterBuffers& water, std::uint32_t step) const {
+  water.bind();
+  ground.dispatch_pass(program_, step);
+}
+
+}  // namespace gt::gpu

@@ -1,0 +1,97 @@
+// The water on seed 001's layered ground on the GPU (digest 001 §3.3-3.5, §3.12-3.15, §3.19): GPU
+// side of core/layered/layered_water.hpp, beside LayeredGroundBuffers.
+//
+// LayeredWaterBuffers(ground, water) validates `water` against the ground's size, builds the
+// std140 LayeredWaterBlock of gpu/shaders/erosion/layered/water.glsl from the ground's parameters
+// (every real the reference<float>'s static_cast<float> of the double), allocates the water state
+// (16 sections of `cells` floats, twice: the state, then the move pass's snapshot) and a scratch of
+// per-column records, and uploads `water`. bind() binds the block (uniform binding 1), the state
+// (10) and the records (11); snapshot() copies the state into its second half; snapshot_surface()
+// copies the ground's surface into SURFACE_BEFORE; records(count) reads the first count·cells
+// record floats back. download() returns the state.
+// LayeredWaterPass(shader) is a pass of one invocation per column that needs nothing but the bound
+// buffers (dissolution.comp, wetness.comp): step(ground, water, step) binds and dispatches it.
+// Needs a current GlContext. Units: m, m³/s.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/layered/layered_water.hpp"
+#include "gpu/buffer.hpp"
+#include "gpu/erosion/layered/ground_buffers.hpp"
+
+namespace gt::gpu {
+
+// Mirror of `LayeredWaterBlock` in water.glsl (std140; offsets checked in water_buffers.cpp).
+struct LayeredWaterBlock {
+  float pipe_coefficient[4];
+  float breakdown_slopes[4][4];
+  float breakdown_thresholds[4][4];
+  float cell_area;
+  float rain_depth;
+  float river_depth;
+  std::int32_t river;
+  std::int32_t river_source;
+  std::int32_t sink_row_start;
+  float velocity_depth_floor;
+  float depth_ramp;
+  float slope_floor;
+  float slope_scale_x;
+  float slope_scale_y;
+  float cell_size_x;
+  float cell_size_y;
+  float erosion_strength;
+  float organic_capacity;
+  float erosion_rate;
+  float deposition_rate;
+  float vegetation_protection;
+  std::int32_t breakdown_code;
+  std::int32_t share_code;
+  float least_share;
+  float transparency_depth;
+  float regolith_depth;
+  float regolith_erosion;
+  float regolith_deposition;
+  float drying_factor;
+  float flood_wetness;
+  float padding;
+};
+
+// Floats per column of the records scratch: the most any water pass writes (force erosion's 24).
+inline constexpr std::size_t water_record_floats = 24;
+// Sections of the water state (water.glsl).
+inline constexpr std::size_t water_sections = 16;
+
+class LayeredWaterBuffers {
+ public:
+  LayeredWaterBuffers(const LayeredGroundBuffers& ground, const LayeredWater<float>& water);
+
+  void upload(const LayeredWater<float>& water);
+  LayeredWater<float> download() const;
+
+  void bind() const;
+  void snapshot() const;
+  void snapshot_surface(const LayeredGroundBuffers& ground) const;
+  std::vector<float> records(std::size_t floats_per_column) const;
+  const LayeredWaterBlock& block() const { return block_; }
+
+ private:
+  std::size_t cells_;
+  LayeredWaterBlock block_;
+  UniformBuffer block_buffer_;
+  StorageBuffer state_;
+  StorageBuffer records_;
+};
+
+class LayeredWaterPass {
+ public:
+  explicit LayeredWaterPass(const std::string& shader);
+  void step(LayeredGroundBuffers& ground, const LayeredWaterBuffers& water, std::uint32_t step) const;
+
+ private:
+  ComputeProgram program_;
+};
+
+}  // namespace gt::gpu

@@ -1,0 +1,68 @@
+// What the water passes of the layered ground share (digest 001 §3.3-3.5, §3.12-3.15, §3.19; CPU
+// twin: core/layered/layered_water.hpp, reference/erosion/layered/{water,force_erosion,dissolution,
+// wetness}.cpp; host: gpu/erosion/layered/water_buffers.cpp): the water's parameter block and its
+// storage buffer.
+//
+// Water buffer layout, sections of `cells` floats (cell c = y·width + x):
+//   WATER, PREVIOUS (w before the step's flow), WETNESS, FLUX + k (pipe k = L, R, T, B), CARRIED + q
+//   (q = 0..4 suspended org .. boulders, 5..6 regolith org, sand), SURFACE_BEFORE (the surface
+//   snapshot force erosion reads), DRAINED (1.0 where the flux pass scaled the outflows); then a second half of the same sections, the snapshot the flow's
+//   move pass reads (copied by the host).
+// Arithmetic as layered.glsl: every float `precise`, divisions through gt_div and roots through
+// gt_sqrt, in the reference<float>'s order, so the twins agree bit for bit. Units: metres, m/s, m³/s.
+#ifndef GT_EROSION_LAYERED_WATER_GLSL
+#define GT_EROSION_LAYERED_WATER_GLSL
+
+#include "erosion/layered/layered.glsl"
+#include "erosion/layered/square_root.glsl"
+
+// Mirrored by LayeredWaterBlock in gpu/erosion/layered/water_buffers.hpp (std140 offsets checked in
+// its .cpp).
+layout(std140, binding = 1) uniform LayeredWaterBlock {
+  vec4 pipe_coefficient;         // P_k = Δt·l_x·l_y·g/l_k for L, R, T, B
+  vec4 breakdown_slopes[4];      // A (eq. 3.8), row j = source size
+  vec4 breakdown_thresholds[4];  // B (eq. 3.9)
+  float cell_area;               // l_x·l_y, m²
+  float rain_depth;              // Δt·rain_rate, m
+  float river_depth;             // m
+  int river;                     // 1: the river's source and sink rows
+  int river_source;              // its source column's cell index
+  int sink_row_start;            // the first sink row
+  float velocity_depth_floor;    // m
+  float depth_ramp;              // K_w, m
+  float slope_floor;
+  float slope_scale_x;           // ½/l_x (thesis) or 1 (seed001_code)
+  float slope_scale_y;
+  float cell_size_x;             // m
+  float cell_size_y;             // m
+  float erosion_strength;        // K_c, s
+  float organic_capacity;
+  float erosion_rate;            // K_e
+  float deposition_rate;         // K_d
+  float vegetation_protection;   // K_wveg
+  int breakdown_code;            // 1: the code's max(a·x − b, 0)
+  int share_code;                // 1: the code's min(V_j, m)·share
+  float least_share;             // K_emin
+  float transparency_depth;      // K_pmin, m
+  float regolith_depth;          // K_r, m
+  float regolith_erosion;        // K_re
+  float regolith_deposition;     // K_rd
+  float drying_factor;           // K_dry^Δt
+  float flood_wetness;           // m·s
+  float water_padding;
+};
+
+layout(std430, binding = 10) buffer LayeredWaterState { float water_state[]; };
+
+const uint WATER = 0u, PREVIOUS = 1u, WETNESS = 2u, FLUX = 3u, CARRIED = 7u, SURFACE_BEFORE = 14u, DRAINED = 15u;
+const uint WATER_SECTIONS = 16u;
+const float NEGLIGIBLE = 5.42101086e-20;  // gt::negligible_amount, 2^-64
+const int PIPES = 4;
+const int CARRIED_KINDS = 7;
+const int REGOLITH = 5;  // kind of the regolith's org; sand follows
+
+uint water_at(bool snapshot, uint section, uint c) {
+  return (snapshot ? WATER_SECTIONS * cell_count() : 0u) + section * cell_count() + c;
+}
+
+#endif

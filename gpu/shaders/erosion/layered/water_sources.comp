@@ -1,0 +1,30 @@
+#version 450
+// Water sources and sinks on the layered ground (digest 001 §3.19), GPU twin of water_sources in
+// reference/erosion/layered/water.cpp: rain w += Δt·rain_rate; with the river, the source column's
+// w = river_depth and every sink row's column loses its water and what it carries. One invocation
+// per column, in place. Per column it writes 8 floats of `source_record` for the host to count in
+// double: the water before the river touched it (the source's and the sinks'), then the 7 carried
+// kinds a sink took. Units: metres.
+#include "erosion/layered/water.glsl"
+
+layout(std430, binding = 11) writeonly buffer SourceRecords { float source_record[]; };
+
+void main() {
+  ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
+  if (!inside_grid(cell, grid_size)) return;
+  uint c = cell_index(cell, grid_size);
+  uint at = water_at(CURRENT, WATER, c);
+  precise float rained = water_state[at] + rain_depth;
+  if (rain_depth > 0.0) water_state[at] = rained;
+  if (river == 0) return;
+  source_record[8u * c] = water_state[at];
+  for (int kind = 0; kind < CARRIED_KINDS; ++kind) source_record[8u * c + 1u + uint(kind)] = 0.0;
+  if (int(c) == river_source) water_state[at] = river_depth;
+  if (cell.y < sink_row_start) return;
+  water_state[at] = 0.0;
+  for (int kind = 0; kind < CARRIED_KINDS; ++kind) {
+    uint carried = water_at(CURRENT, CARRIED + uint(kind), c);
+    source_record[8u * c + 1u + uint(kind)] = water_state[carried];
+    water_state[carried] = 0.0;
+  }
+}
