@@ -73,8 +73,12 @@ Heightmap slope(const nlohmann::json& input) {
   Heightmap field = blank_field(input);
   const double base = json_number(input, "base", 0.0, -1e6, 1e6, "input generator slope");
   const double gradient = json_number(input, "gradient", 0.05, -1e3, 1e3, "input generator slope");
+  const std::string axis = input.value("axis", std::string("x"));
+  if (axis != "x" && axis != "y") throw InputError(fmt::format("input generator slope: axis '{}' is neither x nor y", axis));
   for (int y = 0; y < field.height; ++y) {
-    for (int x = 0; x < field.width; ++x) field.at(x, y) = base + gradient * x * field.cell_size_x;
+    for (int x = 0; x < field.width; ++x) {
+      field.at(x, y) = base + gradient * (axis == "x" ? x * field.cell_size_x : y * field.cell_size_y);
+    }
   }
   return field;
 }
@@ -114,7 +118,7 @@ const std::vector<std::string>& generator_keys(const std::string& name) {
     return std::map<std::string, std::vector<std::string>>{
         {"cone", with({"peak", "radius"})},
         {"step", with({"peak"})},
-        {"slope", with({"base", "gradient"})},
+        {"slope", with({"base", "gradient", "axis"})},
         {"flat", grid},
         {"terrain", {"generator", "width", "height", "cell_size", "algorithm", "params"}},
         {"example_3x3", {"generator"}}};

@@ -6,8 +6,9 @@
 //   cone          "width", "height" (cells, default 128), "cell_size" (m, 1), "peak" (m, 100),
 //                 "radius" (share of the shorter side, 0.4): a right circular cone on a plane.
 //   step          "width", "height", "cell_size", "peak": a cliff of height `peak` at x = width/2.
-//   slope         "width", "height", "cell_size", "base" (m, 0), "gradient" (m/m, 0.05): a plane
-//                 base + gradient·x rising along +x (x in metres from the first column).
+//   slope         "width", "height", "cell_size", "base" (m, 0), "gradient" (m/m, 0.05), "axis" ("x"
+//                 or "y"; x): a plane base + gradient·x (or ·y) rising along +x (+y), x and y in
+//                 metres from the first column (row).
 //   flat          "width", "height", "cell_size": zeros; the sampling grid of generated fields (noise).
 //   terrain       "width", "height", "cell_size", "algorithm" (a noise.* algorithm), "params": the
 //                 terrain that algorithm's double reference synthesises (see terrain.* cases).

@@ -1,7 +1,9 @@
-// The driver's view of seed 001's layered ground (issue 14; digest 001 §3.1, §3.10–3.11, §3.15–3.16, §4):
-// a heightmap given a stated soil–rock profile in every column, then `steps` iterations
-// (reference/erosion/layered/iteration.hpp: creep, talus, vegetation, weathering), in ref<double>
-// and ref<float>, beside the GPU twin, with a ledger per material and the pictures a geologist reads.
+// The driver's view of seed 001's layered ground (issue 14; digest 001 §3.1, §3.3-3.5, §3.10–3.16,
+// §3.19, §4): a heightmap given a stated soil–rock profile in every column, then `steps` iterations
+// (reference/erosion/layered/iteration.hpp: creep, talus, vegetation, weathering and, when water is
+// given — initial_water, rain_rate or the river — sources and sinks, the pipe flow, force erosion,
+// dissolution and wetness), in ref<double> and ref<float>, beside the GPU twin, with a ledger per
+// material and the pictures a geologist reads.
 //
 // The initial profile (the same in every column, hung from the input's surface), from parameters:
 //   soil                 the components' shares (org, sand, gravel, stones, boulders) of topsoil and
@@ -15,17 +17,26 @@
 //
 // Checks (ledgers as volumes, m³; V the total volume of all materials at the start; S steps):
 //   ledger.materials.cpu, .cpu_float   the largest |V_m(end) − V_m(start) − converted into m + converted
-//                        out of m| / V over the materials (5 components, each bedrock type)
+//                        out of m + sunk| / V over the materials (5 components in the ground and in the
+//                        water, suspended or as regolith; each bedrock type); `sunk` what the river's
+//                        sink rows took
 //   ledger.total.cpu, .cpu_float       |ΣV(end) − ΣV(start)| / V: conversions (fragmentation,
 //                        weathering, soil formation) move volume between materials and never create
 //                        or destroy it
 //   ledger.conversions.cpu             |volume converted out of all materials − into them| / V
 //     Bound of all three: S·R·2u (tests/layered_reference_test.cpp's model: each stored thickness
 //     passes through at most R = 36 roundings an iteration, each within u of what the cell holds of the
-//     material, and what moved is at most V), u the unit roundoff of the run's type.
+//     material, and what moved is at most V), u the unit roundoff of the run's type. With water R = 64:
+//     the flow rounds a carried amount 13 times (4 shares sent, their sum, the rest, 4 arrivals and
+//     their sums), force erosion and dissolution a stored amount up to 15 more (erode_component's
+//     take and subtraction per source size, the settling, the deposit).
+//   ledger.water.cpu, .cpu_float       (with water) |W(end) − W(start) − added + sunk| / (W(start) +
+//                        added): rain and the river's rise in, the sinks out; bound S·13·2u (the flow's
+//                        roundings of a depth, the rain's addition)
 //   layers.invalid.cpu                 columns with a negative or non-finite thickness, or a topsoil
 //                        above topsoil_max·(1 + 64u) (two organizes leave it at the maximum within a
-//                        few roundings)
+//                        few roundings), or (with water) a negative or non-finite depth, flux, carried
+//                        amount or wetness
 //   layers.surface.cpu                 the largest |surface − Σ thicknesses − its start value| over
 //                        columns: the surface moves with every layer change; bound S·R·2u·(|surface| +
 //                        Σ thickness), the largest over the columns at the start
@@ -41,7 +52,7 @@
 // Performance: ms an iteration by grid side, CPU and GPU, beside Šťava et al. 2008's published figure.
 // Pictures: the surface material (the top non-empty layer's colour, mixed by composition, green by
 // vegetation), the cross-section along the middle row, topsoil and subsoil thickness and
-// vegetation as fields, the terrain as given and after each backend (field `terrain`, as every
+// vegetation as fields, with water its depth and the wetness as fields, the terrain as given and after each backend (field `terrain`, as every
 // erosion algorithm hands it back), the ledger over the steps.
 #include <algorithm>
 #include <array>
@@ -67,9 +78,11 @@
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
 #include "core/layered/layered_ground.hpp"
+#include "core/layered/layered_water.hpp"
 #include "core/params/layered.hpp"
 #include "gpu/erosion/layered/ground_buffers.hpp"
 #include "gpu/erosion/layered/iteration.hpp"
+#include "gpu/erosion/layered/water_buffers.hpp"
 #include "reference/erosion/layered/column.hpp"
 #include "reference/erosion/layered/iteration.hpp"
 
@@ -77,8 +90,15 @@ namespace gt {
 namespace {
 
 // tests/layered_reference_test.cpp's ledger model: creep and talus round a stored value at most 32
-// times an iteration, weathering 4 more.
+// times an iteration, weathering 4 more; with water, the flow, force erosion and dissolution up to 28
+// more (see the header). A depth of water: 13 roundings an iteration.
 constexpr double roundings_per_step = 36.0;
+constexpr double roundings_per_step_with_water = 64.0;
+constexpr double water_roundings_per_step = 13.0;
+
+double material_roundings(const LayeredParams& params) {
+  return has_water(params) ? roundings_per_step_with_water : roundings_per_step;
+}
 constexpr int ledger_points = 50;            // checkpoints of the ledger plot
 
 using Shares = std::array<double, soil_component_count>;
@@ -86,7 +106,8 @@ using Shares = std::array<double, soil_component_count>;
 const ParamSpecs& case_param_specs() {
   static const ParamSpecs specs = [] {
     ParamSpecs all = layered_param_specs();
-    all.push_back({"steps", ParamKind::integer, 200, 1, 100000, {}, "count", "iterations of creep, talus, vegetation, weathering"});
+    all.push_back({"steps", ParamKind::integer, 200, 1, 100000, {}, "count",
+                   "iterations of creep, talus, vegetation, weathering (and the water's processes when water is given)"});
     all.push_back({"soil", ParamKind::choice, "loam", 0, 0, {"loam", "sand", "scree"}, "",
                    "the initial topsoil's and subsoil's composition"});
     all.push_back({"topsoil_thickness", ParamKind::real, 0.5, 0.0, 1e3, {}, "m", "initial topsoil (at most topsoil_max)"});
@@ -129,19 +150,23 @@ struct LayeredSetup {
   Heightmap surface;
 };
 
-// Every material's volume in one list: the 5 components, then each bedrock type.
-std::vector<double> material_volumes(const LayeredLedger& ledger) {
-  std::vector<double> volumes(ledger.components.begin(), ledger.components.end());
+// Every material's volume in one list: the 5 components (in the ground and in the water), then each
+// bedrock type.
+std::vector<double> material_volumes(const LayeredLedger& ledger, const LayeredWaterLedger& in_water) {
+  std::vector<double> volumes;
+  for (std::size_t i = 0; i < ledger.components.size(); ++i) volumes.push_back(ledger.components[i] + in_water.carried[i]);
   volumes.insert(volumes.end(), ledger.bedrock.begin(), ledger.bedrock.end());
   return volumes;
 }
 
-// Each material's net conversion, m³: into it minus out of it (fragmentation, weathering, soil
-// formation), in material_volumes' order.
+// Each material's net change the ledger accounts for, m³: converted into it minus out of it
+// (fragmentation, weathering, soil formation, force erosion's breakdown), minus what sank, in
+// material_volumes' order.
 std::vector<double> conversion_net(const LayeredConversions& conversions, std::size_t types) {
   std::vector<double> net;
   for (int component = 0; component < soil_component_count; ++component) {
-    net.push_back(conversions.converted_into(component) - conversions.converted_from(component));
+    net.push_back(conversions.converted_into(component) - conversions.converted_from(component) -
+                  conversions.sunk[std::size_t(component)]);
   }
   for (std::size_t type = 0; type < types; ++type) net.push_back(-conversions.bedrock_converted(type));
   return net;
@@ -156,15 +181,19 @@ template <class Real>
 struct LayeredRun {
   LayeredGround<Real> start;                       // as made from the setup, before the first step
   LayeredGround<Real> ground;                      // after the last step
+  std::optional<LayeredWater<Real>> water;         // after the last step, when the setup gives water
   LayeredConversions conversions;
+  std::vector<double> water_volumes;               // per checkpoint, m³ (with water)
+  std::vector<double> water_net;                   // per checkpoint, added − sunk, m³
   std::vector<int> checkpoints;                    // steps done at each ledger point
   std::vector<std::vector<double>> volumes;        // per checkpoint, per material, m³
   std::vector<std::vector<double>> converted;      // per checkpoint, per material, net conversion m³
 };
 
-// Called at each ledger checkpoint with the steps done and the state then.
+// Called at each ledger checkpoint with the steps done and the state then (water: null without).
 template <class Real>
-using CheckpointObserver = std::function<void(int done, const LayeredGround<Real>& ground, const LayeredConversions&)>;
+using CheckpointObserver = std::function<void(int done, const LayeredGround<Real>& ground,
+                                              const LayeredWater<Real>* water, const LayeredConversions&)>;
 
 template <class Real>
 LayeredRun<Real> run_layered(const LayeredSetup& setup, const CheckpointObserver<Real>& observe = {}) {
@@ -172,29 +201,53 @@ LayeredRun<Real> run_layered(const LayeredSetup& setup, const CheckpointObserver
   LayeredRun<Real> run;
   run.start = make_layered_ground<Real>(setup.surface, setup.profile, setup.params, setup.vegetation);
   run.ground = run.start;
+  if (has_water(setup.params)) run.water = make_layered_water<Real>(run.ground.cells(), setup.params.initial_water);
   run.conversions = no_conversions(types);
+  const double area = run.ground.cell_size_x * run.ground.cell_size_y;
   const int every = std::max(1, setup.steps / ledger_points);
   const auto record = [&](int done) {
+    const auto in_water = run.water ? layered_water_ledger(*run.water, area) : LayeredWaterLedger{};
     run.checkpoints.push_back(done);
-    run.volumes.push_back(material_volumes(layered_ledger(run.ground, types)));
+    run.volumes.push_back(material_volumes(layered_ledger(run.ground, types), in_water));
     run.converted.push_back(conversion_net(run.conversions, types));
-    if (observe) observe(done, run.ground, run.conversions);
+    run.water_volumes.push_back(in_water.water);
+    run.water_net.push_back(run.conversions.water_added - run.conversions.water_sunk);
+    if (observe) observe(done, run.ground, run.water ? &*run.water : nullptr, run.conversions);
   };
   record(0);
   for (int step = 0; step < setup.steps; ++step) {
-    reference::layered_iteration(run.ground, setup.params, static_cast<std::uint32_t>(step), run.conversions);
+    reference::layered_iteration(run.ground, setup.params, static_cast<std::uint32_t>(step), run.conversions,
+                                 run.water ? &*run.water : nullptr);
     if ((step + 1) % every == 0 || step + 1 == setup.steps) record(step + 1);
   }
   return run;
 }
 
 template <class Real>
-double ledger_bound(int steps) {
-  return steps * roundings_per_step * 2.0 * std::numeric_limits<Real>::epsilon() / 2.0;
+double ledger_bound(int steps, double roundings) {
+  return steps * roundings * 2.0 * std::numeric_limits<Real>::epsilon() / 2.0;
+}
+
+// ledger.water.<backend>: the water in against the water out (see the header).
+template <class Real>
+void add_water_ledger_check(const LayeredRun<Real>& run, int steps, const std::string& backend, CaseResult& result) {
+  const double start = run.water_volumes.front(), end = run.water_volumes.back(), net = run.water_net.back();
+  const double added = run.conversions.water_added, sunk = run.conversions.water_sunk;
+  const double scale = std::max(start + added, std::numeric_limits<double>::min());
+  result.checks.push_back(bounded_check(
+      "ledger.water." + backend, std::abs(end - start - net) / scale, ledger_bound<Real>(steps, water_roundings_per_step),
+      std::nullopt,
+      fmt::format("|W_end − W_start − added + sunk| / (W_start + added): W {:.6g} → {:.6g} m³, {:.6g} m³ added (rain, "
+                  "the river's rise), {:.6g} m³ sunk; bound S·{}·2u",
+                  start, end, added, sunk, water_roundings_per_step)));
 }
 
 template <class Real>
-void add_ledger_checks(const LayeredRun<Real>& run, int steps, const std::string& backend, CaseResult& result) {
+void add_ledger_checks(const LayeredRun<Real>& run, const LayeredSetup& setup, const std::string& backend,
+                       CaseResult& result) {
+  const int steps = setup.steps;
+  const double roundings = material_roundings(setup.params);
+  if (run.water) add_water_ledger_check(run, steps, backend, result);
   const auto& start = run.volumes.front();
   const auto& end = run.volumes.back();
   const auto& converted = run.converted.back();
@@ -211,16 +264,19 @@ void add_ledger_checks(const LayeredRun<Real>& run, int steps, const std::string
       worst_material = material;
     }
   }
-  const double bound = ledger_bound<Real>(steps);
+  const double bound = ledger_bound<Real>(steps, roundings);
   result.checks.push_back(bounded_check(
       "ledger.materials." + backend, worst, bound, std::nullopt,
-      fmt::format("largest |V_end − V_start − converted| / V over the materials ({}), V = {:.6g} m³; bound S·R·2u "
-                  "with S = {} steps, R = {}",
-                  material_name(worst_material), total_start, steps, roundings_per_step)));
-  result.checks.push_back(bounded_check("ledger.total." + backend, std::abs(total_end - total_start) / total_start, bound,
-                                        std::nullopt,
-                                        fmt::format("|ΣV_end − ΣV_start| / V: {:.6g} m³ against {:.6g} m³", total_end,
-                                                    total_start)));
+      fmt::format("largest |V_end − V_start − converted + sunk| / V over the materials ({}; components in the ground "
+                  "and in the water), V = {:.6g} m³; bound S·R·2u with S = {} steps, R = {}",
+                  material_name(worst_material), total_start, steps, roundings)));
+  double sunk = 0.0;
+  for (double volume : run.conversions.sunk) sunk += volume;
+  result.checks.push_back(bounded_check("ledger.total." + backend,
+                                        std::abs(total_end + sunk - total_start) / total_start, bound, std::nullopt,
+                                        fmt::format("|ΣV_end + sunk − ΣV_start| / V: {:.6g} m³ and {:.6g} m³ sunk "
+                                                    "against {:.6g} m³",
+                                                    total_end, sunk, total_start)));
   if (backend != "cpu") return;
   double from = 0.0, into = 0.0;
   for (int component = 0; component < soil_component_count; ++component) {
@@ -230,13 +286,23 @@ void add_ledger_checks(const LayeredRun<Real>& run, int steps, const std::string
   for (std::size_t type = 0; type < start.size() - soil_component_count; ++type) from += run.conversions.bedrock_converted(type);
   result.checks.push_back(bounded_check(
       "ledger.conversions." + backend, std::abs(from - into) / total_start, bound, std::nullopt,
-      fmt::format("|converted out of all materials − converted into them| / V: {:.6g} m³ out (bedrock fragmented or "
-                  "turned to soil, rock weathered), {:.6g} m³ in",
+      fmt::format("|converted out of all materials − converted into them| / V: {:.6g} m³ out (bedrock fragmented, "
+                  "eroded or turned to soil, rock weathered or broken by water), {:.6g} m³ in",
                   from, into)));
 }
 
+// Whether column c's water is broken: a negative or non-finite depth, flux, carried amount or wetness.
+bool invalid_water(const LayeredWater<double>& water, std::size_t c) {
+  const auto bad = [](double value) { return !std::isfinite(value) || value < 0.0; };
+  bool broken = bad(water.water[c]) || bad(water.wetness[c]);
+  for (int pipe = 0; pipe < water_pipe_count; ++pipe) broken = broken || bad(water.flux_at(pipe, c));
+  for (int kind = 0; kind < carried_kind_count; ++kind) broken = broken || bad(water.carried_at(kind, c));
+  return broken;
+}
+
 // Columns breaking an invariant of the state (see the header).
-std::size_t invalid_columns(const LayeredGround<double>& ground, double topsoil_max) {
+std::size_t invalid_columns(const LayeredGround<double>& ground, const LayeredWater<double>* water,
+                            double topsoil_max) {
   const double allowance = 64.0 * std::numeric_limits<double>::epsilon() / 2.0;
   std::size_t invalid = 0;
   for (std::size_t c = 0; c < ground.cells(); ++c) {
@@ -250,6 +316,7 @@ std::size_t invalid_columns(const LayeredGround<double>& ground, double topsoil_
     for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
       bad = bad || !std::isfinite(ground.bedrock_at(layer, c)) || ground.bedrock_at(layer, c) < 0.0;
     }
+    bad = bad || (water != nullptr && invalid_water(*water, c));
     invalid += bad ? 1 : 0;
   }
   return invalid;
@@ -262,11 +329,14 @@ double column_thickness(const LayeredGround<double>& ground, std::size_t c) {
   return thickness;
 }
 
-void add_state_checks(const LayeredGround<double>& start, const LayeredGround<double>& end, const LayeredSetup& setup,
-                      CaseResult& result) {
+void add_state_checks(const LayeredRun<double>& run, const LayeredSetup& setup, CaseResult& result) {
+  const LayeredGround<double>& start = run.start;
+  const LayeredGround<double>& end = run.ground;
   result.checks.push_back(bounded_check(
-      "layers.invalid.cpu", double(invalid_columns(end, setup.params.topsoil_max)), 0.0, std::nullopt,
-      "columns with a negative or non-finite thickness or surface, or a topsoil above topsoil_max·(1 + 64u)"));
+      "layers.invalid.cpu", double(invalid_columns(end, run.water ? &*run.water : nullptr, setup.params.topsoil_max)),
+      0.0, std::nullopt,
+      "columns with a negative or non-finite thickness or surface, or a topsoil above topsoil_max·(1 + 64u), or a "
+      "negative or non-finite depth, flux, carried amount or wetness"));
   double worst = 0.0, scale = 0.0;
   for (std::size_t c = 0; c < start.cells(); ++c) {
     const double base_start = start.surface[c] - column_thickness(start, c);
@@ -275,7 +345,8 @@ void add_state_checks(const LayeredGround<double>& start, const LayeredGround<do
     scale = std::max(scale, std::abs(start.surface[c]) + column_thickness(start, c));
   }
   result.checks.push_back(bounded_check(
-      "layers.surface.cpu", worst, ledger_bound<double>(setup.steps) * scale, std::nullopt,
+      "layers.surface.cpu", worst, ledger_bound<double>(setup.steps, material_roundings(setup.params)) * scale,
+      std::nullopt,
       "largest change of surface − Σ thicknesses over the columns, m (the surface moves with every layer change)"));
 }
 
@@ -330,13 +401,19 @@ class GpuShadow {
  public:
   explicit GpuShadow(const LayeredSetup& setup)
       : buffers_(make_layered_ground<float>(setup.surface, setup.profile, setup.params, setup.vegetation), setup.params),
-        conversions_(no_conversions(setup.params.bedrock_types.size())) {}
+        iteration_(has_water(setup.params)),
+        conversions_(no_conversions(setup.params.bedrock_types.size())) {
+    if (has_water(setup.params)) {
+      water_.emplace(buffers_, make_layered_water<float>(buffers_.shape().cells(), setup.params.initial_water));
+    }
+  }
 
   // Steps the GPU to `done` iterations and compares with the reference.
-  void compare_at(int done, const LayeredGround<float>& reference, const LayeredConversions& converted) {
+  void compare_at(int done, const LayeredGround<float>& reference, const LayeredWater<float>* reference_water,
+                  const LayeredConversions& converted) {
     stepping_ms_ += gpu_wall_ms([&] {
       for (; steps_ < done; ++steps_) {
-        iteration_.step(buffers_, static_cast<std::uint32_t>(steps_), conversions_);
+        iteration_.step(buffers_, static_cast<std::uint32_t>(steps_), conversions_, water_ ? &*water_ : nullptr);
       }
     });
     state_ = buffers_.download();
@@ -344,6 +421,14 @@ class GpuShadow {
     std::size_t differing = differing_bits(state.surface, reference.surface) + differing_bits(state.soil, reference.soil) +
                             differing_bits(state.bedrock, reference.bedrock) +
                             differing_bits(state.vegetation, reference.vegetation);
+    if (water_ && reference_water) {
+      const LayeredWater<float> water = water_->download();
+      for (const auto member : {&LayeredWater<float>::water, &LayeredWater<float>::previous_water,
+                                &LayeredWater<float>::water_flux, &LayeredWater<float>::carried,
+                                &LayeredWater<float>::wetness}) {
+        differing += differing_bits(water.*member, reference_water->*member);
+      }
+    }
     differing += conversions_differing(converted, reference.cells() * static_cast<std::size_t>(done));
     if (differing > 0 && first_differing_ < 0) first_differing_ = done;
     differing_ += differing;
@@ -359,8 +444,9 @@ class GpuShadow {
     result.timings.gpu_reps = 1;
     result.checks.push_back(bounded_check(
         "parity.state.gpu_vs_float", double(differing_), 0.0, std::nullopt,
-        fmt::format("values (surface, soil components, bedrock, vegetation) differing in any bit from ref<float>'s, "
-                    "plus conversion totals beyond their bound, over {} checkpoints{}",
+        fmt::format("values (surface, soil components, bedrock, vegetation; water, flux, carried material, "
+                    "wetness) differing in any bit from ref<float>'s, plus conversion totals beyond their bound, over "
+                    "{} checkpoints{}",
                     checkpoints_, first_differing_ < 0 ? std::string() : fmt::format("; first at step {}", first_differing_))));
   }
 
@@ -385,6 +471,14 @@ class GpuShadow {
     exact(conversions_.weathered_into, reference.weathered_into);
     exact(conversions_.soil_formed_from, reference.soil_formed_from);
     exact(conversions_.soil_formed_into, reference.soil_formed_into);
+    // Force erosion and the sinks: per-column floats too (tests/layered_water_gpu_test.cpp).
+    exact(conversions_.broken_from, reference.broken_from);
+    exact(conversions_.broken_into, reference.broken_into);
+    exact(conversions_.bedrock_eroded_from, reference.bedrock_eroded_from);
+    exact(conversions_.bedrock_eroded_into, reference.bedrock_eroded_into);
+    exact(conversions_.sunk, reference.sunk);
+    differing += conversions_.water_added == reference.water_added ? 0 : 1;
+    differing += conversions_.water_sunk == reference.water_sunk ? 0 : 1;
     for (std::size_t size = 0; size < reference.fragmented_into.size(); ++size) {
       const double bound = (gamma7 + 2.0 * double(terms + 1) * 0x1p-53) * reference.fragmented_into[size];
       differing += std::abs(conversions_.fragmented_into[size] - reference.fragmented_into[size]) <= bound ? 0 : 1;
@@ -393,6 +487,7 @@ class GpuShadow {
   }
 
   gpu::LayeredGroundBuffers buffers_;
+  std::optional<gpu::LayeredWaterBuffers> water_;
   gpu::LayeredIteration iteration_;
   LayeredConversions conversions_;
   LayeredGround<float> state_;  // as downloaded at the last checkpoint
@@ -523,6 +618,13 @@ void write_terrain_fields(const LayeredSetup& setup, const LayeredGround<double>
 
 void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double>& run, const RunOptions& options,
                     CaseResult& result) {
+  const auto field = [&](auto value) {
+    Grid<double> grid(ground.width, ground.height);
+    grid.cell_size_x = ground.cell_size_x;
+    grid.cell_size_y = ground.cell_size_y;
+    for (std::size_t c = 0; c < ground.cells(); ++c) grid.values[c] = value(c);
+    return grid;
+  };
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
   std::vector<Colour> surface;
@@ -546,13 +648,6 @@ void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double
                    "below, the layers from the surface down to {:.3g} m, true to scale in depth (topsoil, the subsoil "
                    "darker, soft rock red, hard rock grey; colours as the surface material)",
                    ground.height / 2, depth_shown)});
-  const auto field = [&](auto value) {
-    Grid<double> grid(ground.width, ground.height);
-    grid.cell_size_x = ground.cell_size_x;
-    grid.cell_size_y = ground.cell_size_y;
-    for (std::size_t c = 0; c < ground.cells(); ++c) grid.values[c] = value(c);
-    return grid;
-  };
   write_field_files(field([&](std::size_t c) { return ground.soil_thickness(0, c); }),
                     {"topsoil_cpu", "topsoil", "cpu", "m", "topsoil thickness after the run, ref<double>"}, options,
                     result);
@@ -562,6 +657,22 @@ void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double
   write_field_files(field([&](std::size_t c) { return ground.vegetation[c]; }),
                     {"vegetation_cpu", "vegetation", "cpu", "1", "vegetation density after the run, ref<double>"},
                     options, result);
+  if (run.water) {
+    const LayeredWater<double>& water = *run.water;
+    write_field_files(field([&](std::size_t c) { return water.water[c]; }),
+                      {"water_cpu", "water", "cpu", "m", "water depth after the run, ref<double>"}, options, result);
+    write_field_files(field([&](std::size_t c) { return water.wetness[c]; }),
+                      {"wetness_cpu", "wetness", "cpu", "m·s", "wetness after the run (eq. 3.12), ref<double>"}, options,
+                      result);
+    write_field_files(field([&](std::size_t c) {
+                        double carried = 0.0;
+                        for (int kind = 0; kind < carried_kind_count; ++kind) carried += water.carried_at(kind, c);
+                        return carried;
+                      }),
+                      {"carried_cpu", "carried", "cpu", "m",
+                       "material the water carries after the run (suspended and regolith, all sizes), ref<double>"},
+                      options, result);
+  }
   double total = 0.0;
   for (const double volume : run.volumes.front()) total += volume;
   SeriesPlot changes{"each material's volume", "step", "(V − V_start) / V_all", false, false, {}};
@@ -596,16 +707,17 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
   if (options.progress) options.progress->stage("CPU reference (double)");
   LayeredRun<double> run;
   time_cpu(1, [&] { run = run_layered<double>(setup); }, result.timings);
-  add_ledger_checks(run, setup.steps, "cpu", result);
-  add_state_checks(run.start, run.ground, setup, result);
+  add_ledger_checks(run, setup, "cpu", result);
+  add_state_checks(run, setup, result);
   if (expect.is_object() && expect.value("at_rest", false)) add_repose_check(run.ground, setup.params, result);
   std::optional<GpuShadow> shadow;
   if (options.gpu_available) shadow.emplace(setup);
   if (options.progress) options.progress->stage(shadow ? "CPU reference (float) and the GPU beside it" : "CPU reference (float)");
   const LayeredRun<float> single = run_layered<float>(
       setup, shadow ? CheckpointObserver<float>([&](int done, const LayeredGround<float>& ground,
+                                                   const LayeredWater<float>* water,
                                                    const LayeredConversions& conversions) {
-        shadow->compare_at(done, ground, conversions);
+        shadow->compare_at(done, ground, water, conversions);
       })
                     : CheckpointObserver<float>());
   if (shadow) {
@@ -613,7 +725,7 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
   } else {
     result.checks.push_back(skipped_check("parity.gpu", options.gpu_unavailable_reason));
   }
-  add_ledger_checks(single, setup.steps, "cpu_float", result);
+  add_ledger_checks(single, setup, "cpu_float", result);
   double largest = 0.0;
   for (std::size_t c = 0; c < run.ground.cells(); ++c) {
     largest = std::max(largest, std::abs(double(single.ground.surface[c]) - run.ground.surface[c]));
@@ -651,6 +763,18 @@ PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& 
         std::accumulate(setup.profile.topsoil.begin(), setup.profile.topsoil.end(), 0.0),
         std::accumulate(setup.profile.subsoil.begin(), setup.profile.subsoil.end(), 0.0), setup.soil,
         setup.profile.bedrock[0].thickness, setup.profile.bedrock[1].thickness, setup.vegetation));
+    const LayeredParams& params = setup.params;
+    result.notes.push_back(
+        has_water(params)
+            ? fmt::format("water: {} m on every column at the start, rain {} m/s{}; the water processes run each step "
+                          "(pipe flow, force erosion, dissolution with K_r = {} m, wetness and the flood death)",
+                          params.initial_water, params.rain_rate,
+                          params.river ? fmt::format(", the river: {} m held at column ({}, {}), rows y >= {} a sink",
+                                                     params.river_depth, setup.surface.width / 2,
+                                                     setup.surface.height / 16, (15 * setup.surface.height + 15) / 16)
+                                       : std::string(),
+                          params.regolith_depth)
+            : "no water given (initial_water, rain_rate and river all off): the water processes do not run");
     run_layered_case(setup, expect, options, result);
   };
   return prepared;

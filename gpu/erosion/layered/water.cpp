@@ -9,13 +9,13 @@ namespace {
 
 constexpr std::size_t source_record_floats = 8;  // water.comp's record: the water, then 7 carried kinds
 
-// The reference's counting (water_sources): the rain per column, the river's source, then the sink
-// rows in column order.
+// The reference's counting (water_sources): the rain once for all columns, the river's source, then
+// the sink rows in column order.
 void count(const LayeredWaterBuffers& water, const LayeredGround<float>& shape, LayeredConversions& conversions) {
   const LayeredWaterBlock& block = water.block();
   const double area = shape.cell_size_x * shape.cell_size_y;
   if (block.rain_depth > 0.0f) {
-    for (std::size_t c = 0; c < shape.cells(); ++c) conversions.water_added += static_cast<double>(block.rain_depth) * area;
+    conversions.water_added += static_cast<double>(block.rain_depth) * area * static_cast<double>(shape.cells());
   }
   if (block.river == 0) return;
   const auto records = water.records(source_record_floats);

@@ -93,10 +93,9 @@ void water_sources(const LayeredGround<Real>& ground, LayeredWater<Real>& water,
   const double area = ground.cell_size_x * ground.cell_size_y;
   const auto rain = static_cast<Real>(params.time_step * params.rain_rate);
   if (rain > Real(0)) {
-    for (std::size_t c = 0; c < ground.cells(); ++c) {
-      water.water[c] += rain;
-      conversions.water_added += static_cast<double>(rain) * area;
-    }
+    for (std::size_t c = 0; c < ground.cells(); ++c) water.water[c] += rain;
+    // Counted once a step: the cells' equal shares summed one by one would drift by ~cells·u.
+    conversions.water_added += static_cast<double>(rain) * area * static_cast<double>(ground.cells());
   }
   if (!params.river) return;
   const std::size_t source = river_source_cell(ground.width, ground.height);
