@@ -5,15 +5,8 @@
 // dissolution and wetness), in ref<double> and ref<float>, beside the GPU twin, with a ledger per
 // material and the pictures a geologist reads.
 //
-// The initial profile (the same in every column, hung from the input's surface), from parameters:
-//   soil                 the components' shares (org, sand, gravel, stones, boulders) of topsoil and
-//                        subsoil: loam (0.4, 0.3, 0.15, 0.1, 0.05 over 0.1, 0.35, 0.25, 0.2, 0.1),
-//                        sand (pure sand in both), scree (0, 0.1, 0.3, 0.3, 0.3 in both)
-//   topsoil_thickness, subsoil_thickness    m; soft_rock_thickness m of bedrock type 0 (the code's
-//                        soft rock, tan φ 4, the only one that falls), over hard_rock_thickness m of
-//                        type 1 (tan φ 1e7: it never falls; the code makes it 1e6 m, which would
-//                        drown the ledger's precision: it only needs to outlast the relief)
-//   vegetation           the initial density in [0, 1] on every column
+// The initial profile (the same in every column, hung from the input's surface) and its parameters:
+// compare/layered_case.hpp.
 //
 // Checks (ledgers as volumes, m³; V the total volume of all materials at the start; S steps):
 //   ledger.materials.cpu, .cpu_float   the largest |V_m(end) − V_m(start) − converted into m + converted
@@ -71,6 +64,8 @@
 
 #include "compare/algorithm.hpp"
 #include "compare/inputs.hpp"
+#include "compare/layered_case.hpp"
+#include "compare/layered_look.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/field_files.hpp"
 #include "compare/report/images.hpp"
@@ -100,55 +95,6 @@ double material_roundings(const LayeredParams& params) {
   return has_water(params) ? roundings_per_step_with_water : roundings_per_step;
 }
 constexpr int ledger_points = 50;            // checkpoints of the ledger plot
-
-using Shares = std::array<double, soil_component_count>;
-
-const ParamSpecs& case_param_specs() {
-  static const ParamSpecs specs = [] {
-    ParamSpecs all = layered_param_specs();
-    all.push_back({"steps", ParamKind::integer, 200, 1, 100000, {}, "count",
-                   "iterations of creep, talus, vegetation, weathering (and the water's processes when water is given)"});
-    all.push_back({"soil", ParamKind::choice, "loam", 0, 0, {"loam", "sand", "scree"}, "",
-                   "the initial topsoil's and subsoil's composition"});
-    all.push_back({"topsoil_thickness", ParamKind::real, 0.5, 0.0, 1e3, {}, "m", "initial topsoil (at most topsoil_max)"});
-    all.push_back({"subsoil_thickness", ParamKind::real, 1.5, 0.0, 1e4, {}, "m", "initial subsoil"});
-    all.push_back({"soft_rock_thickness", ParamKind::real, 5.0, 0.0, 1e5, {}, "m", "bedrock type 0 under the soil"});
-    all.push_back({"hard_rock_thickness", ParamKind::real, 1000.0, 0.0, 1e6, {}, "m",
-                   "bedrock type 1 under the soft rock (never falls)"});
-    all.push_back({"vegetation", ParamKind::real, 0.0, 0.0, 1.0, {}, "1", "initial vegetation density"});
-    return all;
-  }();
-  return specs;
-}
-
-std::array<Shares, soil_layer_count> soil_shares(const std::string& soil) {
-  if (soil == "sand") return {Shares{0, 1, 0, 0, 0}, Shares{0, 1, 0, 0, 0}};
-  if (soil == "scree") return {Shares{0, 0.1, 0.3, 0.3, 0.3}, Shares{0, 0.1, 0.3, 0.3, 0.3}};
-  return {Shares{0.4, 0.3, 0.15, 0.1, 0.05}, Shares{0.1, 0.35, 0.25, 0.2, 0.1}};
-}
-
-LayeredProfile profile_from(const nlohmann::json& resolved) {
-  const auto shares = soil_shares(resolved.at("soil").get<std::string>());
-  const double topsoil = resolved.at("topsoil_thickness").get<double>();
-  const double subsoil = resolved.at("subsoil_thickness").get<double>();
-  LayeredProfile profile;
-  for (std::size_t component = 0; component < shares[0].size(); ++component) {
-    profile.topsoil[component] = shares[0][component] * topsoil;
-    profile.subsoil[component] = shares[1][component] * subsoil;
-  }
-  profile.bedrock = {{0, resolved.at("soft_rock_thickness").get<double>()},
-                     {1, resolved.at("hard_rock_thickness").get<double>()}};
-  return profile;
-}
-
-struct LayeredSetup {
-  LayeredParams params;
-  LayeredProfile profile;
-  std::string soil;  // loam, sand, scree
-  int steps = 0;
-  double vegetation = 0.0;
-  Heightmap surface;
-};
 
 // Every material's volume in one list: the 5 components (in the ground and in the water), then each
 // bedrock type.
@@ -500,60 +446,7 @@ class GpuShadow {
 
 // ---- pictures -------------------------------------------------------------------------------
 
-using Colour = std::array<float, 3>;
-
-// Component colours: organic dark brown, sand pale yellow, gravel light grey, stones grey,
-// boulders slate; bedrock types soft red sandstone, dark grey, near black.
-constexpr std::array<Colour, soil_component_count> component_colours{
-    Colour{0.32f, 0.22f, 0.12f}, Colour{0.93f, 0.83f, 0.56f}, Colour{0.68f, 0.66f, 0.62f},
-    Colour{0.48f, 0.48f, 0.50f}, Colour{0.32f, 0.34f, 0.40f}};
-constexpr std::array<Colour, 3> bedrock_colours{Colour{0.72f, 0.42f, 0.32f}, Colour{0.36f, 0.36f, 0.36f},
-                                                Colour{0.16f, 0.16f, 0.18f}};
-
-Colour soil_colour(const LayeredGround<double>& ground, int layer, std::size_t c) {
-  const double thickness = ground.soil_thickness(layer, c);
-  Colour mixed{0, 0, 0};
-  for (int component = 0; component < soil_component_count; ++component) {
-    const auto share = float(ground.soil_at(layer, component, c) / thickness);
-    for (int channel = 0; channel < 3; ++channel) mixed[channel] += share * component_colours[component][channel];
-  }
-  return mixed;
-}
-
-Colour bedrock_colour(const LayeredGround<double>& ground, int layer, std::size_t c) {
-  return bedrock_colours[std::size_t(ground.bedrock_type_at(layer, c)) % bedrock_colours.size()];
-}
-
-Colour surface_colour(const LayeredGround<double>& ground, std::size_t c) {
-  const int layer = reference::top_nonempty_layer(ground, c);
-  Colour colour = layer < 0                    ? Colour{1, 1, 1}
-                  : layer < soil_layer_count ? soil_colour(ground, layer, c)
-                                               : bedrock_colour(ground, layer - soil_layer_count, c);
-  const auto green = float(0.6 * ground.vegetation[c]);
-  const Colour leaf{0.20f, 0.55f, 0.15f};
-  for (int channel = 0; channel < 3; ++channel) colour[channel] = (1 - green) * colour[channel] + green * leaf[channel];
-  return colour;
-}
-
-// The colour at depth `depth` m below the surface of column c: the layer holding it (subsoil a
-// little darker than the same mixture in the topsoil).
-Colour colour_at_depth(const LayeredGround<double>& ground, std::size_t c, double depth) {
-  double top = 0.0;
-  for (int layer = 0; layer < soil_layer_count; ++layer) {
-    const double thickness = ground.soil_thickness(layer, c);
-    if (depth < top + thickness) {
-      Colour colour = soil_colour(ground, layer, c);
-      for (float& channel : colour) channel *= layer == 0 ? 1.0f : 0.8f;
-      return colour;
-    }
-    top += thickness;
-  }
-  for (int layer = 0; layer < ground.bedrock_layer_count; ++layer) {
-    top += ground.bedrock_at(layer, c);
-    if (depth < top) return bedrock_colour(ground, layer, c);
-  }
-  return {0, 0, 0};
-}
+using Colour = LayeredColour;
 
 // The middle row: above, the surface's elevation (grey ground under white air, its range stretched
 // to the panel); below, a dark rule, then the layers from the surface down to 1.2 times the deepest
@@ -580,12 +473,12 @@ void write_cross_section(const LayeredGround<double>& ground, const std::filesys
     const double ground_rows = 8.0 + (elevation_rows - 16.0) * (ground.surface[c] - low) / span;
     for (int py = 0; py < elevation_rows; ++py) {
       const bool below = elevation_rows - py <= ground_rows;
-      pixels[std::size_t(py) * width + px] = below ? surface_colour(ground, c) : Colour{1, 1, 1};
+      pixels[std::size_t(py) * width + px] = below ? layered_surface_colour(ground, c) : Colour{1, 1, 1};
     }
     for (int py = elevation_rows; py < elevation_rows + rule_rows; ++py) pixels[std::size_t(py) * width + px] = {0.1f, 0.1f, 0.1f};
     for (int py = 0; py < layer_rows; ++py) {
       const double depth = (py + 0.5) / layer_rows * depth_shown;
-      pixels[std::size_t(elevation_rows + rule_rows + py) * width + px] = colour_at_depth(ground, c, depth);
+      pixels[std::size_t(elevation_rows + rule_rows + py) * width + px] = layered_colour_at_depth(ground, c, depth);
     }
   }
   write_colour_image(width, elevation_rows + rule_rows + layer_rows, pixels, png);
@@ -628,7 +521,7 @@ void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
   std::vector<Colour> surface;
-  for (std::size_t c = 0; c < ground.cells(); ++c) surface.push_back(surface_colour(ground, c));
+  for (std::size_t c = 0; c < ground.cells(); ++c) surface.push_back(layered_surface_colour(ground, c));
   // Each cell a square of pixels, so a small grid is still readable.
   const int scale = std::max(1, 512 / ground.width);
   std::vector<Colour> pixels;
@@ -639,7 +532,7 @@ void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double
   result.artifacts.push_back({result.name + "/surface_material.png", "image",
                               "surface material after the run, ref<double> (a cell a square of pixels): the top non-empty layer's mixture (organic "
                               "dark brown, sand pale yellow, gravel light grey, stones grey, boulders slate; bedrock: "
-                              "soft rock red, hard rock dark grey), greened by vegetation"});
+                              "soft rock red, hard rock dark grey), greened by 35 % of the vegetation density"});
   double depth_shown = 0.0;
   write_cross_section(ground, folder / "cross_section.png", depth_shown);
   result.artifacts.push_back(
@@ -738,23 +631,7 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
 }
 
 PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& input) {
-  if (input.heights.size() == 0) throw InputError("erosion.layered lays its ground on a heightmap: the case needs an input");
-  const auto& valid = input.heights.valid;
-  if (std::find(valid.begin(), valid.end(), std::uint8_t{0}) != valid.end()) {
-    throw InputError("erosion.layered: the input has no-data cells, which the layered ground cannot hold yet; crop it "
-                     "to a window without them");
-  }
-  LayeredSetup setup;
-  setup.params = layered_params_from_json(resolved);
-  setup.soil = resolved.at("soil").get<std::string>();
-  setup.profile = profile_from(resolved);
-  validate_layered_profile(setup.profile, setup.params);
-  setup.steps = static_cast<int>(resolved.at("steps").get<long long>());
-  setup.vegetation = resolved.at("vegetation").get<double>();
-  setup.surface = input.heights;
-  setup.surface.valid.clear();  // every cell valid (a crop of a masked file keeps its all-valid mask)
-  // Refuses a bad surface or a grid beyond memory before the run (the double ground is the larger).
-  validate_layered_inputs(setup.surface, setup.profile, setup.params, setup.vegetation);
+  const LayeredSetup setup = layered_setup(resolved, input.heights);
   PreparedTwin prepared;
   prepared.run = [setup](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     result.notes.push_back(fmt::format(
@@ -804,12 +681,8 @@ std::vector<BenchmarkRow> benchmark_layered(const BenchmarkOptions& options, boo
   for (const int size : options.sizes) {
     const nlohmann::json cone = {{"generator", "cone"}, {"width", size}, {"height", size}, {"cell_size", 1.0},
                                  {"peak", 0.2 * size}, {"noise", 1.0}, {"seed", 7}};
-    LayeredSetup setup;
-    const auto resolved = resolve_params("erosion.layered", case_param_specs(), {{"steps", steps}});
-    setup.params = layered_params_from_json(resolved);
-    setup.profile = profile_from(resolved);
-    setup.steps = steps;
-    setup.surface = load_input(cone, nullptr, {}).heights;
+    const auto resolved = resolve_params("erosion.layered", layered_case_param_specs(), {{"steps", steps}});
+    const LayeredSetup setup = layered_setup(resolved, load_input(cone, nullptr, {}).heights);
     const auto row = [&](const std::string& backend, const std::vector<double>& times, const std::string& device,
                          const std::string& detail) {
       BenchmarkRow timed{.algorithm = "erosion.layered", .backend = backend, .size = size, .iterations = steps,
@@ -855,7 +728,7 @@ Algorithm layered_algorithm() {
           .summary = "seed 001's layered ground: soil–rock layers over bedrock, creep and per-material talus, a ledger "
                      "per material",
           .source = "seed 001 §3.1, §3.10–3.11, §4 (eq. 3.1–3.4)",
-          .params = &case_param_specs(),
+          .params = &layered_case_param_specs(),
           .prepare = prepare_layered,
           .iterates = false,
           .has_field_twin = false,
