@@ -2,12 +2,16 @@
 // on the small probes of datasets/cases/erosion.layered.json: a steep 32×32 cone of loam over soft
 // rock that comes to rest, and a 32×24 bare cliff of soft rock that falls and fragments.
 //
-// both_twins: the same bug in the reference (column.cpp, transfer.cpp, talus.cpp, weathering.cpp)
-// and the shaders (apply.comp, talus_outflow.comp, weathering.comp), killed by checks against what
+// both_twins: the same bug in the reference (column.cpp, transfer.cpp, talus.cpp, weathering.cpp,
+// water.cpp, force_erosion.cpp) and the GPU twin (apply.comp, talus_outflow.comp, weathering.comp,
+// water_move.comp; the host's counting in gpu/erosion/layered/{water,force_erosion}.cpp), killed by
+// checks against what
 // was asked, computed on the host: ledger.materials (each material's volume, conversions counted),
 // ledger.total and ledger.conversions (fragments hold the bedrock they come from), layers.invalid
-// (the topsoil's maximum), layers.surface (the surface moves with the layers) and spec.repose (a
-// resting slope below the repose slope of eq. 3.1, written apart).
+// (the topsoil's maximum), layers.surface (the surface moves with the layers), spec.repose (a
+// resting slope below the repose slope of eq. 3.1, written apart) and ledger.water (the water
+// against rain, river and sinks). The water's mutants run on two more probes: a cone under rain
+// and a plane with the river.
 //
 // one_twin: a bug in the GPU twin alone, killed by parity.state.gpu_vs_float (bit for bit).
 #include "compare/mutants/mutants.hpp"
@@ -17,6 +21,8 @@ namespace gt {
 std::vector<Mutant> layered_mutants() {
   const std::vector<std::string> cone = {"erosion.layered.mutant_probe.cone"};
   const std::vector<std::string> cliff = {"erosion.layered.mutant_probe.cliff"};
+  const std::vector<std::string> rain = {"erosion.layered.mutant_probe.rain"};
+  const std::vector<std::string> river = {"erosion.layered.mutant_probe.river"};
   return {
       {"erosion.layered.gpu_gather_reversed", MutantKind::one_twin,
        "apply.comp sums the arriving fluxes from neighbour 7 down to 0 instead of 0 up to 7: the same terms, other "
@@ -38,6 +44,18 @@ std::vector<Mutant> layered_mutants() {
        cone},
       {"erosion.layered.fragments_without_boulders", MutantKind::both_twins,
        "fallen bedrock breaks into gravel and stones only: the boulders' share is lost", cliff},
+      {"erosion.layered.gpu_drained_keeps_rest", MutantKind::one_twin,
+       "water_move.comp ignores that a column was drained and keeps the rounding residue of q − Σ q·f_k, as the "
+       "reference does not",
+       rain},
+      {"erosion.layered.sediment_stays_behind", MutantKind::both_twins,
+       "the pipe flow sends what the water carries out of each column with the water, but no column gathers it", rain},
+      {"erosion.layered.rain_uncounted", MutantKind::both_twins,
+       "the rain falls on every column, and the ledger is never told", rain},
+      {"erosion.layered.breakdown_uncounted", MutantKind::both_twins,
+       "force erosion breaks larger fragments into smaller suspended ones without counting the conversion", rain},
+      {"erosion.layered.sinks_uncounted", MutantKind::both_twins,
+       "the river's sink rows take the water's sediment out of the ground without counting it", river},
   };
 }
 

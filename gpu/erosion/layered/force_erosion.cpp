@@ -3,6 +3,8 @@
 
 #include <cstddef>
 
+#include "core/mutant.hpp"
+
 namespace gt::gpu {
 namespace {
 
@@ -17,7 +19,7 @@ void count(const std::vector<float>& records, std::size_t cells, double area, La
     for (std::size_t i = 0; i < fragment_size_count; ++i) {
       for (std::size_t j = i + 1; j < fragment_size_count; ++j) {
         const float taken = record[fragment_size_count * j + i];
-        if (!(taken > 0.0f)) continue;
+        if (!(taken > 0.0f) || mutant_active("erosion.layered.breakdown_uncounted")) continue;
         conversions.broken_from[j + 1] += static_cast<double>(taken) * area;
         conversions.broken_into[i + 1] += static_cast<double>(taken) * area;
       }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "core/mutant.hpp"
+
 namespace gt::gpu {
 namespace {
 
@@ -14,7 +16,7 @@ constexpr std::size_t source_record_floats = 8;  // water.comp's record: the wat
 void count(const LayeredWaterBuffers& water, const LayeredGround<float>& shape, LayeredConversions& conversions) {
   const LayeredWaterBlock& block = water.block();
   const double area = shape.cell_size_x * shape.cell_size_y;
-  if (block.rain_depth > 0.0f) {
+  if (block.rain_depth > 0.0f && !mutant_active("erosion.layered.rain_uncounted")) {
     conversions.water_added += static_cast<double>(block.rain_depth) * area * static_cast<double>(shape.cells());
   }
   if (block.river == 0) return;
@@ -26,7 +28,7 @@ void count(const LayeredWaterBuffers& water, const LayeredGround<float>& shape, 
     for (int x = 0; x < shape.width; ++x) {
       const float* record = records.data() + shape.cell(x, y) * source_record_floats;
       conversions.water_sunk += static_cast<double>(record[0]) * area;
-      for (int kind = 0; kind < carried_kind_count; ++kind) {
+      for (int kind = 0; kind < carried_kind_count && !mutant_active("erosion.layered.sinks_uncounted"); ++kind) {
         conversions.sunk[static_cast<std::size_t>(carried_component(kind))] +=
             static_cast<double>(record[1 + kind]) * area;
       }

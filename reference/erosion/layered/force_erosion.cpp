@@ -77,7 +77,7 @@ void erode_into_size(LayeredGround<Real>& ground, LayeredWater<Real>& water, con
     if (request <= Real(0)) continue;
     const Real taken = erode_component(ground, c, source + 1, request, params);
     water.carried_at(suspended_kind(size + 1), c) += taken;
-    if (source != size && taken > Real(0)) {
+    if (source != size && taken > Real(0) && !mutant_active("erosion.layered.breakdown_uncounted")) {
       conversions.broken_from[j + 1] += static_cast<double>(taken) * area;
       conversions.broken_into[i + 1] += static_cast<double>(taken) * area;
     }

@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include "core/mutant.hpp"
+
 namespace gt::reference {
 namespace {
 
@@ -72,12 +74,12 @@ PipeValues<Real> fractions(const LayeredWater<Real>& water, const LayeredParams&
 template <class Real>
 Real moved(const std::vector<Real>& before, std::size_t offset, std::size_t c, const PipeValues<Real>& own,
            bool drained, const std::array<std::optional<std::size_t>, water_pipe_count>& neighbours,
-           const std::vector<PipeValues<Real>>& all_fractions) {
+           const std::vector<PipeValues<Real>>& all_fractions, bool gathers = true) {
   const Real amount = before[offset + c];
   Real sent = 0;
   for (Real f : own) sent += amount * f;
   Real result = drained ? Real(0) : std::max(amount - sent, Real(0));
-  for (int k = 0; k < water_pipe_count; ++k) {
+  for (int k = 0; k < water_pipe_count && gathers; ++k) {
     const auto& n = neighbours[static_cast<std::size_t>(k)];
     if (!n) continue;
     result += before[offset + *n] * all_fractions[*n][static_cast<std::size_t>(k ^ 1)];
@@ -95,7 +97,9 @@ void water_sources(const LayeredGround<Real>& ground, LayeredWater<Real>& water,
   if (rain > Real(0)) {
     for (std::size_t c = 0; c < ground.cells(); ++c) water.water[c] += rain;
     // Counted once a step: the cells' equal shares summed one by one would drift by ~cells·u.
-    conversions.water_added += static_cast<double>(rain) * area * static_cast<double>(ground.cells());
+    if (!mutant_active("erosion.layered.rain_uncounted")) {
+      conversions.water_added += static_cast<double>(rain) * area * static_cast<double>(ground.cells());
+    }
   }
   if (!params.river) return;
   const std::size_t source = river_source_cell(ground.width, ground.height);
@@ -110,8 +114,11 @@ void water_sources(const LayeredGround<Real>& ground, LayeredWater<Real>& water,
       conversions.water_sunk += static_cast<double>(water.water[c]) * area;
       water.water[c] = 0;
       for (int kind = 0; kind < carried_kind_count; ++kind) {
-        conversions.sunk[static_cast<std::size_t>(carried_component(kind))] +=
-            static_cast<double>(water.carried_at(kind, c)) * area;
+        // Mutant: the sinks take the sediment without saying so.
+        if (!mutant_active("erosion.layered.sinks_uncounted")) {
+          conversions.sunk[static_cast<std::size_t>(carried_component(kind))] +=
+              static_cast<double>(water.carried_at(kind, c)) * area;
+        }
         water.carried_at(kind, c) = 0;
       }
     }
@@ -140,6 +147,8 @@ void water_flow(const LayeredGround<Real>& ground, LayeredWater<Real>& water, co
   for (std::size_t c = 0; c < cells; ++c) all_fractions[c] = fractions(water, params, area, c);
   const std::vector<Real> depth_before = water.water;
   const std::vector<Real> carried_before = water.carried;
+  // Mutant: what the water carries leaves with it and never arrives.
+  const bool carried_arrives = !mutant_active("erosion.layered.sediment_stays_behind");
   for (int y = 0; y < ground.height; ++y) {
     for (int x = 0; x < ground.width; ++x) {
       const std::size_t c = ground.cell(x, y);
@@ -147,7 +156,7 @@ void water_flow(const LayeredGround<Real>& ground, LayeredWater<Real>& water, co
       water.water[c] = moved(depth_before, 0, c, all_fractions[c], drained[c] != 0, neighbours, all_fractions);
       for (int kind = 0; kind < carried_kind_count; ++kind) {
         water.carried_at(kind, c) = moved(carried_before, static_cast<std::size_t>(kind) * cells, c, all_fractions[c],
-                                          drained[c] != 0, neighbours, all_fractions);
+                                          drained[c] != 0, neighbours, all_fractions, carried_arrives);
       }
     }
   }

@@ -24,9 +24,16 @@ void move_section(uint section, uint c, float own[4], int neighbours[4], float a
   precise float sent = 0.0;
   for (int k = 0; k < PIPES; ++k) sent += amount * own[k];
   precise float kept = amount - sent;
+#ifdef GT_MUTANT_EROSION_LAYERED_GPU_DRAINED_KEEPS_REST
+  bool drained = false;  // mutant (this twin alone): a drained column keeps its rounding residue
+#else
   bool drained = water_state[water_at(SNAPSHOT, DRAINED, c)] != 0.0;
+#endif
   precise float result = drained ? 0.0 : max(kept, 0.0);
   for (int k = 0; k < PIPES; ++k) {
+#ifdef GT_MUTANT_EROSION_LAYERED_SEDIMENT_STAYS_BEHIND
+    if (section != WATER) break;
+#endif
     if (neighbours[k] < 0) continue;
     result += water_state[water_at(SNAPSHOT, section, uint(neighbours[k]))] * arriving[k];
   }
