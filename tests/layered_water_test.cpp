@@ -16,6 +16,7 @@
 #include "reference/erosion/layered/dissolution.hpp"
 #include "reference/erosion/layered/force_erosion.hpp"
 #include "reference/erosion/layered/iteration.hpp"
+#include "reference/erosion/layered/material_masks.hpp"
 #include "reference/erosion/layered/vegetation.hpp"
 #include "reference/erosion/layered/water.hpp"
 #include "reference/erosion/layered/wetness.hpp"
@@ -329,6 +330,43 @@ TEST(LayeredWaterLedger, TheRiverClosesWithWhatSinks) {
   params.slope_form = gt::SlopeForm::seed001_code;
   params.velocity_depth_floor = 0.05;
   expect_ledger_closes<double>(params, 1e-12);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(LayeredMaterialMasks, ThinLayersShowWhatLiesBelow) {
+  // K_pmin = 0.1 m. Topsoil 0.02 m of org (K_p = 0.8), subsoil 0.03 m of sand (K_p = 0.7), soft
+  // rock below: org 1 − 0.8 = 0.2, sand 0.8·(1 − 0.7) = 0.24, soft rock 0.8·0.7 = 0.56.
+  LayeredParams params;
+  LayeredProfile profile;
+  profile.topsoil = {0.02, 0.0, 0.0, 0.0, 0.0};
+  profile.subsoil = {0.0, 0.03, 0.0, 0.0, 0.0};
+  profile.bedrock = {{0, 3.0}, {1, 10.0}};
+  const auto ground = gt::make_layered_ground<double>(gt::Heightmap(1, 1, 10.0), profile, params);
+  const auto masks = ref::material_masks(ground, params, 0);
+  ASSERT_EQ(masks.size(), 5u + params.bedrock_types.size());
+  EXPECT_NEAR(masks[0], 0.2, 1e-15);
+  EXPECT_NEAR(masks[1], 0.24, 1e-15);
+  EXPECT_NEAR(masks[5], 0.56, 1e-15);
+  EXPECT_EQ(masks[6], 0.0);
+  // A thick loam topsoil hides everything below it: its own composition, summing to 1.
+  const auto thick = gt::make_layered_ground<double>(gt::Heightmap(1, 1, 10.0), loam_profile(), params);
+  const auto loam = ref::material_masks(thick, params, 0);
+  EXPECT_NEAR(loam[0], 0.3, 1e-15);
+  EXPECT_NEAR(loam[2], 0.2, 1e-15);
+  EXPECT_EQ(loam[5], 0.0);
+  double sum = 0.0;
+  for (double mask : loam) sum += mask;
+  EXPECT_NEAR(sum, 1.0, 1e-15);
+  // Bare rock of type 1 shows only itself.
+  profile.topsoil = {};
+  profile.subsoil = {};
+  profile.bedrock = {{0, 0.0}, {1, 10.0}};
+  const auto bare = ref::material_masks(gt::make_layered_ground<double>(gt::Heightmap(1, 1, 10.0), profile, params), params, 0);
+  EXPECT_EQ(bare[6], 1.0);
+  EXPECT_EQ(bare[5], 0.0);
 }
 
 }  // namespace

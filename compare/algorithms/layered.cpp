@@ -26,6 +26,8 @@
 //   ledger.water.cpu, .cpu_float       (with water) |W(end) − W(start) − added + sunk| / (W(start) +
 //                        added): rain and the river's rise in, the sinks out; bound S·13·2u (the flow's
 //                        roundings of a depth, the rain's addition)
+//   spec.courant.cpu     (with water; informative) the pipe flow's Courant number Δt·sqrt(g·w_max)/l
+//                        at its largest; above 1/√2 a note warns that the water oscillates
 //   layers.invalid.cpu                 columns with a negative or non-finite thickness, or a topsoil
 //                        above topsoil_max·(1 + 64u) (two organizes leave it at the maximum within a
 //                        few roundings), or (with water) a negative or non-finite depth, flux, carried
@@ -45,7 +47,8 @@
 // Performance: ms an iteration by grid side, CPU and GPU, beside Šťava et al. 2008's published figure.
 // Pictures: the surface material (the top non-empty layer's colour, mixed by composition, green by
 // vegetation), the cross-section along the middle row, topsoil and subsoil thickness and
-// vegetation as fields, with water its depth and the wetness as fields, the terrain as given and after each backend (field `terrain`, as every
+// vegetation as fields, the material masks with transparency (§3.17) as fields and one picture, with
+// water its depth, the wetness and the carried material as fields, the terrain as given and after each backend (field `terrain`, as every
 // erosion algorithm hands it back), the ledger over the steps.
 #include <algorithm>
 #include <array>
@@ -80,6 +83,7 @@
 #include "gpu/erosion/layered/water_buffers.hpp"
 #include "reference/erosion/layered/column.hpp"
 #include "reference/erosion/layered/iteration.hpp"
+#include "reference/erosion/layered/material_masks.hpp"
 
 namespace gt {
 namespace {
@@ -129,6 +133,7 @@ struct LayeredRun {
   LayeredGround<Real> ground;                      // after the last step
   std::optional<LayeredWater<Real>> water;         // after the last step, when the setup gives water
   LayeredConversions conversions;
+  double largest_courant = 0.0;                    // Δt·sqrt(g·w)/min(l_x, l_y) over the checkpoints
   std::vector<double> water_volumes;               // per checkpoint, m³ (with water)
   std::vector<double> water_net;                   // per checkpoint, added − sunk, m³
   std::vector<int> checkpoints;                    // steps done at each ledger point
@@ -140,6 +145,16 @@ struct LayeredRun {
 template <class Real>
 using CheckpointObserver = std::function<void(int done, const LayeredGround<Real>& ground,
                                               const LayeredWater<Real>* water, const LayeredConversions&)>;
+
+// The pipe model's wave Courant number at the deepest column: Δt·sqrt(g·w_max)/min(l_x, l_y). The
+// flux update is explicit, so shallow-water waves (speed sqrt(g·w)) must cross less than a cell a
+// step: in 2-D, C ≤ 1/√2; beyond it the water oscillates from column to column in a checkerboard.
+template <class Real>
+double courant_number(const LayeredWater<Real>& water, const LayeredParams& params, const LayeredGround<Real>& ground) {
+  double deepest = 0.0;
+  for (Real depth : water.water) deepest = std::max(deepest, static_cast<double>(depth));
+  return params.time_step * std::sqrt(params.gravity * deepest) / std::min(ground.cell_size_x, ground.cell_size_y);
+}
 
 template <class Real>
 LayeredRun<Real> run_layered(const LayeredSetup& setup, const CheckpointObserver<Real>& observe = {}) {
@@ -158,6 +173,7 @@ LayeredRun<Real> run_layered(const LayeredSetup& setup, const CheckpointObserver
     run.converted.push_back(conversion_net(run.conversions, types));
     run.water_volumes.push_back(in_water.water);
     run.water_net.push_back(run.conversions.water_added - run.conversions.water_sunk);
+    if (run.water) run.largest_courant = std::max(run.largest_courant, courant_number(*run.water, setup.params, run.ground));
     if (observe) observe(done, run.ground, run.water ? &*run.water : nullptr, run.conversions);
   };
   record(0);
@@ -509,8 +525,54 @@ void write_terrain_fields(const LayeredSetup& setup, const LayeredGround<double>
   }
 }
 
-void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double>& run, const RunOptions& options,
-                    CaseResult& result) {
+// The material masks (§3.17, reference/erosion/layered/material_masks.hpp) as fields `mask_<material>`
+// and one picture: a panel per material, left to right, each mask from black (0) to the material's
+// colour (1).
+void write_material_masks(const LayeredGround<double>& ground, const LayeredParams& params, const RunOptions& options,
+                          CaseResult& result) {
+  const std::size_t materials = soil_component_count + params.bedrock_types.size();
+  std::vector<Grid<double>> masks(materials, Grid<double>(ground.width, ground.height));
+  for (std::size_t c = 0; c < ground.cells(); ++c) {
+    const auto column = reference::material_masks(ground, params, c);
+    for (std::size_t m = 0; m < materials; ++m) masks[m].values[c] = column[m];
+  }
+  constexpr int gap = 2;
+  const int scale = std::max(1, 240 / std::max(ground.width, ground.height));
+  const int panel = ground.width * scale;
+  const int width = int(materials) * (panel + gap) - gap;
+  std::vector<Colour> pixels(std::size_t(width) * std::size_t(ground.height * scale), Colour{1, 1, 1});
+  for (std::size_t m = 0; m < materials; ++m) {
+    auto& mask = masks[m];
+    mask.cell_size_x = ground.cell_size_x;
+    mask.cell_size_y = ground.cell_size_y;
+    const Colour colour = m < soil_component_count ? layered_component_colour(int(m))
+                                                   : layered_bedrock_colour(int(m - soil_component_count));
+    for (int py = 0; py < ground.height * scale; ++py) {
+      for (int px = 0; px < panel; ++px) {
+        const auto value = float(mask.values[ground.cell(px / scale, py / scale)]);
+        Colour& pixel = pixels[std::size_t(py) * std::size_t(width) + std::size_t(int(m) * (panel + gap) + px)];
+        for (int channel = 0; channel < 3; ++channel) pixel[channel] = value * colour[channel];
+      }
+    }
+    const std::string name = material_name(m);
+    std::string key = "mask_" + name;
+    std::replace(key.begin(), key.end(), ' ', '_');
+    write_field_files(mask, {key, key, "cpu", "1", fmt::format("share of the surface showing {} (§3.17), ref<double>", name)},
+                      options, result);
+  }
+  const auto folder = options.report_dir / result.name;
+  write_colour_image(width, ground.height * scale, pixels, folder / "material_masks.png");
+  std::string order;
+  for (std::size_t m = 0; m < materials; ++m) order += (m ? ", " : "") + material_name(m);
+  result.artifacts.push_back(
+      {result.name + "/material_masks.png", "image",
+       fmt::format("material masks after the run with the thesis's transparency (§3.17: a layer thinner than "
+                   "K_pmin lets the one below show), a panel per material from black (0) to its colour (1): {}",
+                   order)});
+}
+
+void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double>& run, const LayeredParams& params,
+                    const RunOptions& options, CaseResult& result) {
   const auto field = [&](auto value) {
     Grid<double> grid(ground.width, ground.height);
     grid.cell_size_x = ground.cell_size_x;
@@ -533,6 +595,7 @@ void write_pictures(const LayeredGround<double>& ground, const LayeredRun<double
                               "surface material after the run, ref<double> (a cell a square of pixels): the top non-empty layer's mixture (organic "
                               "dark brown, sand pale yellow, gravel light grey, stones grey, boulders slate; bedrock: "
                               "soft rock red, hard rock dark grey), greened by 35 % of the vegetation density"});
+  write_material_masks(ground, params, options, result);
   double depth_shown = 0.0;
   write_cross_section(ground, folder / "cross_section.png", depth_shown);
   result.artifacts.push_back(
@@ -602,6 +665,19 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
   time_cpu(1, [&] { run = run_layered<double>(setup); }, result.timings);
   add_ledger_checks(run, setup, "cpu", result);
   add_state_checks(run, setup, result);
+  if (run.water) {
+    const double stable = 1.0 / std::sqrt(2.0);
+    result.checks.push_back(informative_check(
+        "spec.courant.cpu", run.largest_courant,
+        fmt::format("the pipe flow's wave Courant number Δt·sqrt(g·w_max)/min(l) at its largest over the checkpoints; "
+                    "the explicit flux update is stable for C ≤ 1/√2 = {:.3f}", stable)));
+    if (run.largest_courant > stable) {
+      result.notes.push_back(fmt::format(
+          "warning: the Courant number reached {:.3g} > 1/√2: the water oscillates between columns (a checkerboard); "
+          "a time_step below {:.3g} s keeps it stable at this depth",
+          run.largest_courant, setup.params.time_step * stable / run.largest_courant));
+    }
+  }
   if (expect.is_object() && expect.value("at_rest", false)) add_repose_check(run.ground, setup.params, result);
   std::optional<GpuShadow> shadow;
   if (options.gpu_available) shadow.emplace(setup);
@@ -626,7 +702,7 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
   result.checks.push_back(informative_check("parity.surface.float_vs_double", largest,
                                             "largest |surface_float − surface_double| over the columns, m"));
   if (options.report_dir.empty()) return;
-  write_pictures(run.ground, run, options, result);
+  write_pictures(run.ground, run, setup.params, options, result);
   write_terrain_fields(setup, run.ground, single.ground, shadow ? &shadow->last_state() : nullptr, options, result);
 }
 
@@ -670,53 +746,83 @@ BenchmarkRow published_layered_row() {
   return row;
 }
 
-// `iterations` iterations (creep, talus, vegetation, weathering) on a noisy cone under the default
-// loam profile; the CPU in ref<double>, the GPU as the case runs it (creep and talus: a snapshot
+// `iterations` iterations on a noisy cone under the default loam profile, without water and with
+// rain; the CPU in ref<double>, the GPU as the case runs it (creep and talus: a snapshot
 // copy, an outflow and the apply pass each; vegetation two passes, weathering one; the conversions
 // read back after each process).
 std::vector<BenchmarkRow> benchmark_layered(const BenchmarkOptions& options, bool gpu_available,
                                             const Environment& environment) {
   std::vector<BenchmarkRow> rows{published_layered_row()};
   const int steps = std::max(1, std::min(options.iterations, 4));
+  // The processes without water, then the whole model under rain (backends suffixed "+water").
+  struct Variant {
+    std::string suffix;
+    nlohmann::json overrides;
+    std::string cpu_detail, gpu_detail;
+  };
+  const std::vector<Variant> variants{
+      {"", {{"steps", steps}}, "creep, talus, vegetation, weathering; ref<double>, one thread",
+       "9 passes an iteration (creep and talus: snapshot copy, outflow, apply; vegetation 2; weathering 1) and the "
+       "conversions read back after each process"},
+      {"+water", {{"steps", steps}, {"rain_rate", 0.01}},
+       "the whole model under rain 0.01 m/s (sources, creep, talus, flow, force erosion, dissolution, wetness, "
+       "vegetation, weathering); ref<double>, one thread",
+       "17 passes an iteration (the 9 above; sources 1; flow: flux, snapshot copy, move; force erosion: surface copy "
+       "and its pass; dissolution 1; wetness 1) and the conversions read back after each process"}};
   for (const int size : options.sizes) {
     const nlohmann::json cone = {{"generator", "cone"}, {"width", size}, {"height", size}, {"cell_size", 1.0},
                                  {"peak", 0.2 * size}, {"noise", 1.0}, {"seed", 7}};
-    const auto resolved = resolve_params("erosion.layered", layered_case_param_specs(), {{"steps", steps}});
-    const LayeredSetup setup = layered_setup(resolved, load_input(cone, nullptr, {}).heights);
-    const auto row = [&](const std::string& backend, const std::vector<double>& times, const std::string& device,
-                         const std::string& detail) {
-      BenchmarkRow timed{.algorithm = "erosion.layered", .backend = backend, .size = size, .iterations = steps,
-                         .reps = options.reps, .median_ms = median(times), .device = device, .dimensions = 2};
-      timed.mcell_iterations_per_s = double(size) * size * steps / (timed.median_ms * 1e-3) / 1e6;
-      timed.detail = fmt::format("{:.1f} ms a step; {}", timed.median_ms / steps, detail);
-      return timed;
-    };
-    std::vector<double> cpu_times;
-    for (int rep = 0; rep < options.reps; ++rep) {
-      auto ground = make_layered_ground<double>(setup.surface, setup.profile, setup.params, 0.0);
-      auto conversions = no_conversions(setup.params.bedrock_types.size());
-      cpu_times.push_back(cpu_wall_ms([&] {
-        for (int step = 0; step < steps; ++step) reference::layered_iteration(ground, setup.params, std::uint32_t(step), conversions);
-      }));
+    const Heightmap surface = load_input(cone, nullptr, {}).heights;
+    for (const Variant& variant : variants) {
+      const auto resolved = resolve_params("erosion.layered", layered_case_param_specs(), variant.overrides);
+      const LayeredSetup setup = layered_setup(resolved, surface);
+      const bool wet = has_water(setup.params);
+      const auto row = [&](const std::string& backend, const std::vector<double>& times, const std::string& device,
+                           const std::string& detail) {
+        BenchmarkRow timed{.algorithm = "erosion.layered", .backend = backend + variant.suffix, .size = size,
+                           .iterations = steps, .reps = options.reps, .median_ms = median(times), .device = device,
+                           .dimensions = 2};
+        timed.mcell_iterations_per_s = double(size) * size * steps / (timed.median_ms * 1e-3) / 1e6;
+        timed.detail = fmt::format("{:.1f} ms a step; {}", timed.median_ms / steps, detail);
+        return timed;
+      };
+      std::vector<double> cpu_times;
+      for (int rep = 0; rep < options.reps; ++rep) {
+        auto ground = make_layered_ground<double>(setup.surface, setup.profile, setup.params, 0.0);
+        std::optional<LayeredWater<double>> water;
+        if (wet) water = make_layered_water<double>(ground.cells(), 0.0);
+        auto conversions = no_conversions(setup.params.bedrock_types.size());
+        cpu_times.push_back(cpu_wall_ms([&] {
+          for (int step = 0; step < steps; ++step) {
+            reference::layered_iteration(ground, setup.params, std::uint32_t(step), conversions, water ? &*water : nullptr);
+          }
+        }));
+      }
+      rows.push_back(row("cpu", cpu_times, environment.cpu, variant.cpu_detail));
+      if (!gpu_available) continue;
+      const auto start = make_layered_ground<float>(setup.surface, setup.profile, setup.params, 0.0);
+      const auto start_water = make_layered_water<float>(start.cells(), 0.0);
+      gpu::LayeredGroundBuffers buffers(start, setup.params);
+      std::optional<gpu::LayeredWaterBuffers> water;
+      if (wet) water.emplace(buffers, start_water);
+      const gpu::LayeredIteration iteration(wet);
+      std::vector<double> gpu_times;
+      for (int rep = 0; rep < options.reps; ++rep) {
+        // Every rep from the start ground, as the CPU's: the upload is done before gpu_wall_ms's first
+        // glFinish, so it stays out of the time.
+        if (rep > 0) {
+          buffers.upload(start);
+          if (water) water->upload(start_water);
+        }
+        auto conversions = no_conversions(setup.params.bedrock_types.size());
+        gpu_times.push_back(gpu_wall_ms([&] {
+          for (int step = 0; step < steps; ++step) {
+            iteration.step(buffers, std::uint32_t(step), conversions, water ? &*water : nullptr);
+          }
+        }));
+      }
+      rows.push_back(row("gpu", gpu_times, environment.gl_renderer, variant.gpu_detail));
     }
-    rows.push_back(row("cpu", cpu_times, environment.cpu, "creep, talus, vegetation, weathering; ref<double>, one thread"));
-    if (!gpu_available) continue;
-    const auto start = make_layered_ground<float>(setup.surface, setup.profile, setup.params, 0.0);
-    gpu::LayeredGroundBuffers buffers(start, setup.params);
-    const gpu::LayeredIteration iteration;
-    std::vector<double> gpu_times;
-    for (int rep = 0; rep < options.reps; ++rep) {
-      // Every rep from the start ground, as the CPU's: the upload is done before gpu_wall_ms's first
-      // glFinish, so it stays out of the time.
-      if (rep > 0) buffers.upload(start);
-      auto conversions = no_conversions(setup.params.bedrock_types.size());
-      gpu_times.push_back(gpu_wall_ms([&] {
-        for (int step = 0; step < steps; ++step) iteration.step(buffers, std::uint32_t(step), conversions);
-      }));
-    }
-    rows.push_back(row("gpu", gpu_times, environment.gl_renderer,
-                       "9 passes an iteration (creep and talus: snapshot copy, outflow, apply; vegetation 2; weathering 1) and "
-                       "the conversions read back after each process"));
   }
   return rows;
 }
