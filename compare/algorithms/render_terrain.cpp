@@ -11,6 +11,11 @@
 //                     thermal_* parameters (erosion.thermal's, in physical heights: T = tan α)
 //   erode = pipe      Mei's virtual-pipe erosion (reference/erosion/pipes.hpp) from a dry start
 //                     with the pipe_* parameters (erosion.pipe's hydraulic ones; rain brings water)
+//   erode = layered   seed 001's layered ground (compare/layered_case.hpp: ref<double> for
+//                     layered_steps iterations) with the layered_* parameters (erosion.layered's
+//                     and its profile's: layered_soil, layered_vegetation, layered_rain_rate, ...);
+//                     the heights meshed are the ground's surface after the run. The input must
+//                     have no no-data cells (crop it): the layered ground holds none.
 // Another erosion is one more choice, its parameters prefixed likewise (append_prefixed), and one
 // more branch in eroded().
 //
@@ -18,12 +23,23 @@
 // base is the un-eroded terrain's, so that a before/after pair shares its base and skirt bottoms.
 // Look: terrain (reference/render/phong.hpp's height ramp and rock by slope) with the ramp over the
 // input's heights before erosion, or plain.
-// Drape (terrain look only): drape = <name> reads datasets/real/textures/<name>.png (fetched by
+// Drape (terrain look only): drape = astronaut | grass reads datasets/real/textures/<name>.png (fetched by
 // datasets/fetch.sh; the folder is the build's GT_DATASET_DIR) and lays it over the solid's xz
 // bounding box, west to east and north to south (the surface's extent: the skirts and the base lie
 // within it), image row 0 at the north edge; its colour replaces the height ramp, the rock blend
 // stays. A gray image gives r = g = b, an alpha channel is dropped. A missing or unreadable file is
 // an InputError naming the path; drape = none renders the ramp exactly as before drapes existed.
+// drape = material (erode = layered only; otherwise an InputError naming the remedy) builds the
+// drape in memory instead of reading a file: one texel per cell, row 0 the grid's first (north)
+// row, laid so that texel centre (i + 0.5)/W falls on sample i's vertex (the extent is the solid's
+// xz box widened by half a cell on every side). Its colour is layered_surface_colour of the ground
+// after the run (compare/layered_look.hpp: the top non-empty layer's material, greened by the
+// vegetation), turned toward water blue (0.10, 0.30, 0.62) where the run leaves water:
+//   t = clamp((w - 0.05 m) / (1 m - 0.05 m), 0, 1), colour = (1 - t)·material + t·blue
+// (w the water depth of the cell; the rain's running film, a few cm on the flanks, does not show,
+// ponds a metre deep and more are all water), each channel rounded to round(255·c) bytes like the layered pictures' PNGs. The texture
+// reaches both twins as any drape does (TerrainLook::drape; render_phong.cpp hands the same bytes
+// to the GL twin), so the image checks compare the same picture.
 // Checks: those of run_phong_twins (image.*, determinism.gpu) and the mesh checks of the solid
 // (compare/checks/mesh.hpp, backend "cpu", closed expected): the solid must be watertight,
 // manifold, outward and free of self-intersections; genus, components and volume are informative.
@@ -31,6 +47,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +57,8 @@
 #include "compare/algorithm.hpp"
 #include "compare/checks/image.hpp"
 #include "compare/checks/mesh.hpp"
+#include "compare/layered_case.hpp"
+#include "compare/layered_look.hpp"
 #include "compare/render_case.hpp"
 #include "core/errors.hpp"
 #include "core/params/hydraulic.hpp"
@@ -91,16 +110,19 @@ const ParamSpecs& terrain_specs() {
         {"look", ParamKind::choice, "terrain", 0, 0, {"terrain", "plain"}, "1",
          "terrain: height ramp from the lowest to the highest input height (before erosion, so that a before/after "
          "pair shares its colours), rock by slope (skirts and base are rock); plain: seed 004's one albedo"},
-        {"drape", ParamKind::choice, "none", 0, 0, {"none", "astronaut", "grass"}, "1",
+        {"drape", ParamKind::choice, "none", 0, 0, {"none", "astronaut", "grass", "material"}, "1",
          "terrain look: colour image draped over the surface in plan view (datasets/real/textures/<name>.png, "
-         "west to east, north at the top), replacing the height ramp; none: the ramp"},
+         "west to east, north at the top), replacing the height ramp; material (erode = layered only): the "
+         "layered ground's surface material after the run, a texel a cell, water deeper than 5 cm blued by "
+         "depth; none: the ramp"},
         {"min_covered_share", ParamKind::real, 0.05, 0.0, 1.0, {}, "1",
          "least share of pixels the solid must cover in the reference image (0: not checked)"},
-        {"erode", ParamKind::choice, "none", 0, 0, {"none", "thermal", "pipe"}, "",
+        {"erode", ParamKind::choice, "none", 0, 0, {"none", "thermal", "pipe", "layered"}, "",
          "erosion applied to the heightmap (reference, double) before meshing"},
     };
     append_prefixed(list, thermal_param_specs(), "thermal", {"normalised", "vertical_aspect"});
     append_prefixed(list, hydraulic_param_specs(), "pipe", {});
+    append_prefixed(list, layered_case_param_specs(), "layered", {});
     return list;
   }();
   return specs;
@@ -108,7 +130,8 @@ const ParamSpecs& terrain_specs() {
 
 struct Eroded {
   Heightmap heights;
-  std::string description;  // "" when not eroded
+  std::string description;               // "" when not eroded
+  std::optional<LayeredOutcome> layered;  // the ground (and water) after erode = layered
 };
 
 double largest_change(const Heightmap& before, const Heightmap& after) {
@@ -149,11 +172,31 @@ Eroded pipe_eroded(const Heightmap& input, const nlohmann::json& resolved) {
   return out;
 }
 
+// Seed 001's layered ground (erosion.layered's case setup), ref<double>; the heights are its surface.
+Eroded layered_eroded(const Heightmap& input, const nlohmann::json& resolved) {
+  LayeredSetup setup;
+  try {
+    setup = layered_setup(unprefixed(resolved, "layered"), input);
+  } catch (const InputError& refused) {
+    throw InputError(fmt::format("render.terrain, erode = layered: {}", refused.what()));
+  }
+  Eroded out{input, "", run_layered_reference(setup)};
+  const LayeredGround<double>& ground = out.layered->ground;
+  for (std::size_t c = 0; c < ground.cells(); ++c) out.heights.values[c] = ground.surface[c];
+  out.description = fmt::format("layered ground (reference, double): {} steps of {} s, {} soil, vegetation {}, rain {} "
+                                "m/s{}; largest height change {:.3g} {}",
+                                setup.steps, setup.params.time_step, setup.soil, setup.vegetation,
+                                setup.params.rain_rate, out.layered->water ? "" : " (no water)",
+                                largest_change(input, out.heights), input.vertical_unit);
+  return out;
+}
+
 Eroded eroded(const Heightmap& input, const nlohmann::json& resolved) {
   const std::string erode = resolved.at("erode");
   if (erode == "thermal") return thermally_eroded(input, resolved);
   if (erode == "pipe") return pipe_eroded(input, resolved);
-  return {input, ""};
+  if (erode == "layered") return layered_eroded(input, resolved);
+  return {input, "", {}};
 }
 
 // The base below the eroded terrain lies where the un-eroded terrain's automatic base would (the
@@ -202,6 +245,37 @@ reference::TerrainDrape terrain_drape(const std::string& name, const Mesh& solid
   return drape;
 }
 
+// drape = material: the layered ground's surface colour a texel a cell, blued where water stands
+// (the header's rule), texel centres on the samples' vertices of terrain_solid(heights).
+constexpr double shallowest_water_shown = 0.05;  // m
+constexpr double water_fully_shown = 1.0;        // m
+constexpr LayeredColour water_blue{0.10f, 0.30f, 0.62f};
+
+reference::TerrainDrape material_drape(const LayeredOutcome& outcome, const Heightmap& heights, std::size_t& watery) {
+  const LayeredGround<double>& ground = outcome.ground;
+  reference::TerrainDrape drape{.width = ground.width,
+                                .height = ground.height,
+                                .rgb = {},
+                                .x_west = -0.5 * ground.width * heights.cell_size_x,
+                                .x_east = 0.5 * ground.width * heights.cell_size_x,
+                                .z_north = -0.5 * ground.height * heights.cell_size_y,
+                                .z_south = 0.5 * ground.height * heights.cell_size_y};
+  drape.rgb.reserve(3 * ground.cells());
+  watery = 0;
+  for (std::size_t c = 0; c < ground.cells(); ++c) {
+    LayeredColour colour = layered_surface_colour(ground, c);
+    const double depth = outcome.water ? outcome.water->water[c] : 0.0;
+    const double t =
+        std::clamp((depth - shallowest_water_shown) / (water_fully_shown - shallowest_water_shown), 0.0, 1.0);
+    if (t > 0.0) ++watery;
+    for (int channel = 0; channel < 3; ++channel) {
+      const double value = (1.0 - t) * colour[channel] + t * water_blue[channel];
+      drape.rgb.push_back(std::uint8_t(std::lround(255.0 * std::clamp(value, 0.0, 1.0))));
+    }
+  }
+  return drape;
+}
+
 struct TerrainCase {
   reference::TerrainSolid solid;
   reference::PhongScene scene;
@@ -223,6 +297,11 @@ void run_terrain(const TerrainCase& terrain, const RunOptions& options, CaseResu
 PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& input) {
   if (input.heights.size() == 0) {
     throw InputError("render.terrain meshes a heightmap: give the case a heightmap input ({\"file\": ...})");
+  }
+  const std::string drape = resolved.at("drape");
+  if (drape == "material" && resolved.at("erode") != "layered") {
+    throw InputError("render.terrain: drape = material colours the surface by the layered ground's material, which "
+                     "only erode = layered makes: set erode = layered, or choose another drape");
   }
   Eroded terrain_heights = eroded(input.heights, resolved);
   const double vertical_scale = resolved.at("vertical_scale");
@@ -246,14 +325,20 @@ PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& 
       terrain.scene.terrain.height_high = vertical_scale * high;
     }
   }
-  const std::string drape = resolved.at("drape");
   if (drape != "none") {
     if (!terrain_look) throw InputError("render.terrain: a drape needs look = terrain");
-    terrain.scene.terrain.drape = terrain_drape(drape, solid.mesh);
+    std::size_t watery = 0;
+    terrain.scene.terrain.drape = drape == "material"
+                                      ? material_drape(*terrain_heights.layered, terrain_heights.heights, watery)
+                                      : terrain_drape(drape, solid.mesh);
     const reference::TerrainDrape& placed = *terrain.scene.terrain.drape;
-    terrain.notes.push_back(fmt::format("drape {}.png, {}x{} texels over x [{:.4g}, {:.4g}] m, z [{:.4g}, {:.4g}] m",
-                                        drape, placed.width, placed.height, placed.x_west, placed.x_east,
-                                        placed.z_north, placed.z_south));
+    terrain.notes.push_back(fmt::format("drape {}, {}x{} texels over x [{:.4g}, {:.4g}] m, z [{:.4g}, {:.4g}] m{}",
+                                        drape == "material" ? "material (the layered ground's surface)" : drape + ".png",
+                                        placed.width, placed.height, placed.x_west, placed.x_east, placed.z_north,
+                                        placed.z_south,
+                                        drape == "material" ? fmt::format("; water shown on {} of {} cells", watery,
+                                                                          terrain_heights.heights.size())
+                                                            : ""));
   }
   if (!terrain_heights.description.empty()) terrain.notes.push_back(terrain_heights.description);
   terrain.notes.push_back(fmt::format(
@@ -276,7 +361,7 @@ PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& 
 Algorithm render_terrain_algorithm() {
   return {.name = "render.terrain",
           .summary = "heightmap (optionally eroded) as a closed solid, Phong-shaded: reference rasterizer vs the GL pipeline",
-          .source = "issue 6 (terrain look before/after erosion); seed 004 §2.9 shading; seed 000 §4.4.3 thermal erosion",
+          .source = "issue 6 (terrain look before/after erosion); seed 004 §2.9 shading; seed 000 §4.4.3 thermal erosion; seed 001's layered ground and its surface material (erode = layered, drape = material)",
           .params = &terrain_specs(),
           .prepare = prepare_terrain,
           .iterates = false,
@@ -286,7 +371,9 @@ Algorithm render_terrain_algorithm() {
           // cell, and its checks) and 16 B a pixel (1024² vs 256² image).
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const double pixels = resolved.at("width").get<double>() * resolved.at("height").get<double>();
-            return memory_for(static_cast<double>(input.heights.size()), "cells", 2600) +
+            // erode = layered adds its ground and water in double (erosion.layered's 1000 B a cell).
+            const double cell_bytes = resolved.at("erode") == "layered" ? 3600 : 2600;
+            return memory_for(static_cast<double>(input.heights.size()), "cells", cell_bytes) +
                    memory_for(pixels, "pixels", 120);
           }};
 }
