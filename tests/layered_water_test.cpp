@@ -15,6 +15,7 @@
 #include "reference/erosion/layered/column.hpp"
 #include "reference/erosion/layered/dissolution.hpp"
 #include "reference/erosion/layered/force_erosion.hpp"
+#include "reference/erosion/layered/impact_erosion.hpp"
 #include "reference/erosion/layered/iteration.hpp"
 #include "reference/erosion/layered/material_masks.hpp"
 #include "reference/erosion/layered/vegetation.hpp"
@@ -367,6 +368,70 @@ TEST(LayeredMaterialMasks, ThinLayersShowWhatLiesBelow) {
   const auto bare = ref::material_masks(gt::make_layered_ground<double>(gt::Heightmap(1, 1, 10.0), profile, params), params, 0);
   EXPECT_EQ(bare[6], 1.0);
   EXPECT_EQ(bare[5], 0.0);
+}
+
+}  // namespace
+
+namespace {
+
+// A 3 × 1 strip: column 0 (surface 9 m) holds water flowing toward column 1 (surface 10 m: 0.5 m
+// topsoil 0.2 org + 0.2 sand + 0.1 gravel over 1.5 m subsoil 0.3 org + 0.6 sand + 0.3 gravel +
+// 0.3 stones); column 2 is dry. F_R of column 0 = 2 m³/s, so its net flux F_x = ½·2 = 1 and, at
+// w = w̄ = `depth`, v = 1/(1·depth) toward column 1.
+struct ImpactStrip {
+  LayeredParams params;
+  LayeredGround<double> ground;
+  LayeredWater<double> water = gt::make_layered_water<double>(3, 0.0);
+};
+
+ImpactStrip impact_strip(double depth) {
+  ImpactStrip strip;
+  strip.params.breakdown_slopes = {};  // only the organic request: a worked number by hand
+  LayeredProfile profile;
+  profile.topsoil = {0.2, 0.2, 0.1, 0.0, 0.0};
+  profile.subsoil = {0.3, 0.6, 0.3, 0.3, 0.0};
+  profile.bedrock = {{0, 3.0}, {1, 10.0}};
+  gt::Heightmap surface(3, 1, 10.0);
+  surface.at(0, 0) = 9.0;
+  strip.ground = gt::make_layered_ground<double>(surface, profile, strip.params);
+  strip.water.water[0] = strip.water.previous_water[0] = depth;
+  strip.water.flux_at(1, 0) = 2.0;
+  return strip;
+}
+
+TEST(LayeredImpactErosion, WaterHittingABankErodesWhatItTouchesIntoItsOwnSediment) {
+  // Water 2 m deep (top 11 m): v = 0.5 m/s; it touches the whole topsoil (10 → 9.5 m, A = 0.5 m²)
+  // and the subsoil from 9.5 down to its own bed at 9 m (A = 0.5 m²). S = K_i·v·A·Δt/(l_x·l_y) =
+  // 0.25·0.5·0.5·0.2 = 0.0125 m in each; the organic request K_e·0.12·S = 7.5e-4 m takes
+  // 7.5e-4·max(0.1, 0.2/0.5) = 3e-4 from the topsoil and 7.5e-4·max(0.1, 0.3/1.5) = 1.5e-4 from
+  // the subsoil, which land in column 0's suspended organic matter, not in column 1's water.
+  auto strip = impact_strip(2.0);
+  auto conversions = gt::no_conversions(strip.params.bedrock_types.size());
+  ref::impact_erosion_step(strip.ground, strip.water, strip.params, conversions);
+  EXPECT_NEAR(strip.water.carried_at(gt::suspended_kind(org), 0), 3e-4 + 1.5e-4, 1e-17);
+  EXPECT_EQ(strip.water.carried_at(gt::suspended_kind(org), 1), 0.0);
+  EXPECT_NEAR(strip.ground.soil_at(0, org, 1), 0.2 - 3e-4, 1e-16);
+  EXPECT_NEAR(strip.ground.soil_at(1, org, 1), 0.3 - 1.5e-4, 1e-16);
+  EXPECT_NEAR(strip.ground.surface[1], 10.0 - 4.5e-4, 1e-14);
+  EXPECT_EQ(strip.ground.surface[0], 9.0);  // the water's own bed is force erosion's
+  EXPECT_EQ(strip.ground.surface[2], 10.0);
+}
+
+TEST(LayeredImpactErosion, OnlyTheLayersBelowTheWaterSurfaceAndOnlyWaterMovingTowardThem) {
+  // Water 0.2 m deep (top 9.2 m) reaches only the subsoil between 9 and 9.2 m: v = 1/0.2 = 5 m/s,
+  // A = 0.2 m², S = 0.25·5·0.2·0.2 = 0.05 m, organic 0.5·0.12·0.05·0.2 = 6e-4 from the subsoil.
+  auto strip = impact_strip(0.2);
+  auto conversions = gt::no_conversions(strip.params.bedrock_types.size());
+  ref::impact_erosion_step(strip.ground, strip.water, strip.params, conversions);
+  EXPECT_EQ(strip.ground.soil_at(0, org, 1), 0.2);
+  EXPECT_NEAR(strip.ground.soil_at(1, org, 1), 0.3 - 6e-4, 1e-16);
+  // Water flowing away (F_L instead of F_R) hits nothing.
+  auto away = impact_strip(2.0);
+  away.water.flux_at(1, 0) = 0.0;
+  away.water.flux_at(0, 0) = 2.0;
+  const auto before = away.ground.soil;
+  ref::impact_erosion_step(away.ground, away.water, away.params, conversions);
+  EXPECT_EQ(away.ground.soil, before);
 }
 
 }  // namespace

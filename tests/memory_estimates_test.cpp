@@ -66,6 +66,7 @@ struct MeasuredRun {
   const char* algorithm;
   int side;
   json params;
+  const char* variant = nullptr;  // appended to the test's name when an algorithm is measured twice
 };
 
 class PeakMemory : public ::testing::TestWithParam<MeasuredRun> {};
@@ -101,11 +102,12 @@ INSTANTIATE_TEST_SUITE_P(FieldTwins, PeakMemory,
                                                        {{"iterations", 1}, {"lifetime", 5}, {"ordering", "batch"}}},
                                            MeasuredRun{"erosion.beyer", 768,
                                                        {{"iterations", 1}, {"lifetime", 5}, {"ordering", "batch"}}},
-                                           MeasuredRun{"erosion.layered", 384, {{"steps", 4}}}),
+                                           MeasuredRun{"erosion.layered", 384, {{"steps", 4}}},
+                                           MeasuredRun{"erosion.layered", 384, {{"steps", 4}, {"rain_rate", 0.01}}, "water"}),
                          [](const ::testing::TestParamInfo<MeasuredRun>& info) {
                            std::string name = info.param.algorithm;
                            for (char& c : name) c = (c == '.') ? '_' : c;
-                           return name;
+                           return info.param.variant ? name + "_" + info.param.variant : name;
                          });
 
 }  // namespace

@@ -842,9 +842,14 @@ Algorithm layered_algorithm() {
           .expect_shape = {{"at_rest", true}},
           // The double state (5·2 components, 2 bedrock layers, types, surface, vegetation: ~112 B),
           // its snapshot each step and its start copy, 8 outflows (64 B), the float run's half of all
-          // that, the pictures' grids: under 700 B a cell; 1000 kept.
-          .memory = [](const nlohmann::json&, const LoadedInput& input) {
-            return memory_for(static_cast<double>(input.heights.size()), "cells", 1000);
+          // that, the pictures' grids: under 700 B a cell; 1000 kept. With water, the water's state
+          // (14 values: 112 B in double, 56 in float, on the GPU twice over), the flow's copies of it
+          // and its fractions (~150 B), impact erosion's pipe loads (20 values: 160 B), the material
+          // masks' grids (8 × 8 B): about 700 B more; 1800 kept.
+          .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
+            const bool wet = resolved.value("initial_water", 0.0) > 0.0 || resolved.value("rain_rate", 0.0) > 0.0 ||
+                             resolved.value("river", false);
+            return memory_for(static_cast<double>(input.heights.size()), "cells", wet ? 1800 : 1000);
           }};
 }
 

@@ -54,6 +54,10 @@ std::vector<Mutant> layered_mutants() {
        "the rain falls on every column, and the ledger is never told", rain},
       {"erosion.layered.breakdown_uncounted", MutantKind::both_twins,
        "force erosion breaks larger fragments into smaller suspended ones without counting the conversion", rain},
+      {"erosion.layered.impact_never_delivered", MutantKind::both_twins,
+       "impact erosion takes the bank's material into its pipes toward the water that hit it, and the water never "
+       "receives it",
+       rain},
       {"erosion.layered.sinks_uncounted", MutantKind::both_twins,
        "the river's sink rows take the water's sediment out of the ground without counting it", river},
   };

@@ -203,6 +203,7 @@ void validate_layered_params(const LayeredParams& params) {
   require_positive(params.transparency_depth, "transparency_depth");
   validate_fragment_matrix(params.breakdown_slopes, "breakdown_slopes");
   validate_fragment_matrix(params.breakdown_thresholds, "breakdown_thresholds");
+  require_at_least(params.impact_rate, 0.0, "impact_rate");
   require_at_least(params.regolith_depth, 0.0, "regolith_depth");
   require_at_least(params.drying, 0.0, "drying");
   require(params.drying <= 1.0, fmt::format("drying = {} must be <= 1", params.drying));
@@ -279,6 +280,8 @@ const ParamSpecs& layered_param_specs() {
        "eq. 3.10's min(m·max(K_emin, V_j/V), V_j), or the code's min(V_j, m)·max(K_emin, V_j/V)"},
       {"least_share", ParamKind::real, 0.1, 0.0, 1.0, {}, "1", "K_emin of the surface-only factor"},
       {"transparency_depth", ParamKind::real, 0.1, 1e-6, 100.0, {}, "m", "K_pmin: erosion reaches below thinner layers"},
+      {"impact_rate", ParamKind::real, 0.25, 0.0, 100.0, {}, "1",
+       "K_i: impact strength S = K_i·v·A_contact·Δt/(l_x·l_y) of water hitting a neighbour's layers (§3.14); 0 off"},
       {"regolith_depth", ParamKind::real, 0.01, 0.0, 2.0, {}, "m", "K_r: regolith depth (§3.13); 0 switches it off"},
       {"regolith_erosion", ParamKind::real, 1.0, 0.0, 1.0, {}, "1", "K_re"},
       {"regolith_deposition", ParamKind::real, 1.0, 0.0, 1.0, {}, "1", "K_rd"},
@@ -338,6 +341,7 @@ LayeredParams layered_params_from_json(const nlohmann::json& resolved) {
                             std::pair{"vegetation_protection", &params.vegetation_protection},
                             std::pair{"least_share", &params.least_share},
                             std::pair{"transparency_depth", &params.transparency_depth},
+                            std::pair{"impact_rate", &params.impact_rate},
                             std::pair{"regolith_depth", &params.regolith_depth},
                             std::pair{"regolith_erosion", &params.regolith_erosion},
                             std::pair{"regolith_deposition", &params.regolith_deposition},

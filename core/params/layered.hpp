@@ -152,6 +152,8 @@ struct LayeredParams {
   double transparency_depth = 0.1;    // K_pmin, m
   FragmentMatrix breakdown_slopes = thesis_breakdown_slopes();          // A (eq. 3.8), 1
   FragmentMatrix breakdown_thresholds = thesis_breakdown_thresholds();  // B (eq. 3.9), m
+  // Impact erosion (§3.14): K_i of the impact strength S = K_i·v·A_contact·Δt/(l_x·l_y), m; 0: off.
+  double impact_rate = 0.25;          // K_i (the code's inertial_erosion_constant default)
   // Dissolution (§3.13): regolith of org and sand, at most K_r deep.
   double regolith_depth = 0.01;       // K_r, m (0: off)
   double regolith_erosion = 1.0;      // K_re

@@ -22,6 +22,7 @@ void LayeredIteration::step(LayeredGroundBuffers& ground, std::uint32_t step, La
   if (water != nullptr) {
     water_->flow.flow(ground, *water, step);
     water_->force_erosion.step(ground, *water, step, conversions);
+    water_->impact_erosion.step(ground, *water, step, conversions);
     if (ground.params().regolith_depth > 0.0) water_->dissolution.step(ground, *water, step);
     water_->wetness.step(ground, *water, step);
     water->bind();

@@ -1,8 +1,8 @@
 // One iteration of seed 001's layered ground on the GPU, twin of reference/erosion/layered/
 // iteration.hpp, in the code's order (digest 001 §4): with water, 1 sources and sinks; 2 creep;
-// 3 talus; with water, 4 the pipe flow, 5 force erosion, 7 dissolution, 9 wetness; 10 vegetation
-// (with the flood death when there is water); 11 weathering — each process's passes dispatched in
-// turn on the same buffers. LayeredIteration(with_water) compiles the programs (the water's only
+// 3 talus; with water, 4 the pipe flow, 5 force erosion, 6 impact erosion, 7 dissolution, 9 wetness;
+// 10 vegetation (with the flood death when there is water); 11 weathering — each process's passes
+// dispatched in turn on the same buffers. LayeredIteration(with_water) compiles the programs (the water's only
 // when asked); step(ground, step, conversions, water) runs one iteration, `water` required exactly
 // when built with water (else std::invalid_argument). Needs a current GlContext.
 #pragma once
@@ -13,6 +13,7 @@
 #include "gpu/erosion/layered/creep.hpp"
 #include "gpu/erosion/layered/force_erosion.hpp"
 #include "gpu/erosion/layered/ground_buffers.hpp"
+#include "gpu/erosion/layered/impact_erosion.hpp"
 #include "gpu/erosion/layered/talus.hpp"
 #include "gpu/erosion/layered/vegetation.hpp"
 #include "gpu/erosion/layered/water.hpp"
@@ -31,6 +32,7 @@ class LayeredIteration {
   struct WaterProcesses {
     LayeredWaterFlow flow;
     LayeredForceErosion force_erosion;
+    LayeredImpactErosion impact_erosion;
     LayeredWaterPass dissolution{"erosion/layered/dissolution.comp"};
     LayeredWaterPass wetness{"erosion/layered/wetness.comp"};
   };

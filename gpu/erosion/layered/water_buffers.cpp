@@ -69,6 +69,7 @@ LayeredWaterBlock make_block(const LayeredGround<float>& shape, const LayeredPar
   block.regolith_deposition = static_cast<float>(params.regolith_deposition);
   block.drying_factor = static_cast<float>(std::pow(params.drying, params.time_step));
   block.flood_wetness = static_cast<float>(params.flood_wetness);
+  block.impact_scale = static_cast<float>(params.impact_rate * params.time_step / area);
   return block;
 }
 

@@ -56,11 +56,11 @@ struct LayeredWaterBlock {
   float regolith_deposition;
   float drying_factor;
   float flood_wetness;
-  float padding;
+  float impact_scale;
 };
 
-// Floats per column of the records scratch: the most any water pass writes (force erosion's 24).
-inline constexpr std::size_t water_record_floats = 24;
+// Floats per column of the records scratch: the most any water pass writes (impact erosion's 48).
+inline constexpr std::size_t water_record_floats = 48;
 // Sections of the water state (water.glsl).
 inline constexpr std::size_t water_sections = 16;
 

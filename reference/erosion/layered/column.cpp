@@ -104,22 +104,29 @@ Composition<Real> fragments(const BedrockType& type, Real amount) {
 }
 
 template <class Real>
+Real take_from_layer(LayeredGround<Real>& ground, std::size_t c, int layer, int component, Real request,
+                     const LayeredParams& params) {
+  const Real thickness = ground.soil_thickness(layer, c);
+  Real& stored = ground.soil_at(layer, component, c);
+  const Real before = stored;
+  const Real share = std::max(static_cast<Real>(params.least_share), before / thickness);
+  const Real take = params.share_form == ShareForm::thesis ? std::min(request * share, before)
+                                                           : std::min(before, request) * share;
+  stored = before - take;
+  return take;
+}
+
+template <class Real>
 Real erode_component(LayeredGround<Real>& ground, std::size_t c, int component, Real request,
                      const LayeredParams& params) {
-  const auto least_share = static_cast<Real>(params.least_share);
   const auto transparency_depth = static_cast<Real>(params.transparency_depth);
   Real taken = 0;
   Real left = request;
   for (int layer = 0; layer < soil_layer_count && left > Real(0); ++layer) {
     const Real thickness = ground.soil_thickness(layer, c);
     if (thickness <= Real(0)) continue;
-    Real& stored = ground.soil_at(layer, component, c);
-    const Real before = stored;
-    const Real share = std::max(least_share, before / thickness);
-    const Real take = params.share_form == ShareForm::thesis ? std::min(left * share, before)
-                                                             : std::min(before, left) * share;
-    stored = before - take;
-    taken += take;
+    const Real before = ground.soil_at(layer, component, c);
+    taken += take_from_layer(ground, c, layer, component, left, params);
     left = std::max(left - before, Real(0)) * std::max(Real(1) - thickness / transparency_depth, Real(0));
   }
   ground.surface[c] -= taken;
@@ -156,6 +163,7 @@ ErodedBedrock<Real> erode_bedrock(LayeredGround<Real>& ground, std::size_t c, Re
   template void deposit_soil(LayeredGround<Real>&, std::size_t, const Composition<Real>&, Real);       \
   template Removed<Real> remove_soil(LayeredGround<Real>&, std::size_t, Real);                          \
   template Composition<Real> fragments(const BedrockType&, Real);                                        \
+  template Real take_from_layer(LayeredGround<Real>&, std::size_t, int, int, Real, const LayeredParams&); \
   template Real erode_component(LayeredGround<Real>&, std::size_t, int, Real, const LayeredParams&);     \
   template Real soil_transparency(const LayeredGround<Real>&, std::size_t, const LayeredParams&);        \
   template ErodedBedrock<Real> erode_bedrock(LayeredGround<Real>&, std::size_t, Real);

@@ -77,6 +77,13 @@ Removed<Real> remove_soil(LayeredGround<Real>& ground, std::size_t c, Real amoun
 template <class Real>
 Composition<Real> fragments(const BedrockType& type, Real amount);
 
+// One soil layer's part of erode_component: takes min(m·max(K_emin, V_j/V), V_j) (or the
+// seed001_code share form) of `component` from soil layer `layer` (thickness V > 0) and returns it;
+// the surface is the caller's to lower.
+template <class Real>
+Real take_from_layer(LayeredGround<Real>& ground, std::size_t c, int layer, int component, Real request,
+                     const LayeredParams& params);
+
 template <class Real>
 Real erode_component(LayeredGround<Real>& ground, std::size_t c, int component, Real request,
                      const LayeredParams& params);

@@ -20,20 +20,11 @@ Real flux_or_zero(const LayeredWater<Real>& water, int pipe, const std::optional
 template <class Real>
 Real water_speed(const LayeredGround<Real>& ground, const LayeredWater<Real>& water, const LayeredParams& params,
                  int x, int y) {
-  const std::size_t c = ground.cell(x, y);
-  const auto left = layered_neighbour(ground, params.border, x, y, 0);
-  const auto right = layered_neighbour(ground, params.border, x, y, 1);
-  const auto top = layered_neighbour(ground, params.border, x, y, 2);
-  const auto bottom = layered_neighbour(ground, params.border, x, y, 3);
-  const Real flux_x = Real(0.5) * ((flux_or_zero(water, 1, left) - water.flux_at(0, c)) +
-                                   (water.flux_at(1, c) - flux_or_zero(water, 0, right)));
-  const Real flux_y = Real(0.5) * ((flux_or_zero(water, 2, bottom) - water.flux_at(3, c)) +
-                                   (water.flux_at(2, c) - flux_or_zero(water, 3, top)));
-  const Real mean_depth = std::max(Real(0.5) * (water.water[c] + water.previous_water[c]),
-                                   static_cast<Real>(params.velocity_depth_floor));
-  if (mean_depth <= Real(0)) return 0;
-  const Real speed_x = std::abs(flux_x) / (static_cast<Real>(ground.cell_size_y) * mean_depth);
-  const Real speed_y = std::abs(flux_y) / (static_cast<Real>(ground.cell_size_x) * mean_depth);
+  const NetFlux<Real> flux = net_flux(ground, water, params, x, y);
+  const Real mean = mean_depth(water, params, ground.cell(x, y));
+  if (mean <= Real(0)) return 0;
+  const Real speed_x = std::abs(flux.x) / (static_cast<Real>(ground.cell_size_y) * mean);
+  const Real speed_y = std::abs(flux.y) / (static_cast<Real>(ground.cell_size_x) * mean);
   return std::sqrt(speed_x * speed_x + speed_y * speed_y);
 }
 
@@ -138,6 +129,25 @@ void erode_and_deposit(LayeredGround<Real>& ground, LayeredWater<Real>& water, c
 }  // namespace
 
 template <class Real>
+NetFlux<Real> net_flux(const LayeredGround<Real>& ground, const LayeredWater<Real>& water, const LayeredParams& params,
+                       int x, int y) {
+  const std::size_t c = ground.cell(x, y);
+  const auto left = layered_neighbour(ground, params.border, x, y, 0);
+  const auto right = layered_neighbour(ground, params.border, x, y, 1);
+  const auto top = layered_neighbour(ground, params.border, x, y, 2);
+  const auto bottom = layered_neighbour(ground, params.border, x, y, 3);
+  return {Real(0.5) * ((flux_or_zero(water, 1, left) - water.flux_at(0, c)) +
+                       (water.flux_at(1, c) - flux_or_zero(water, 0, right))),
+          Real(0.5) * ((flux_or_zero(water, 2, bottom) - water.flux_at(3, c)) +
+                       (water.flux_at(2, c) - flux_or_zero(water, 3, top)))};
+}
+
+template <class Real>
+Real mean_depth(const LayeredWater<Real>& water, const LayeredParams& params, std::size_t c) {
+  return std::max(Real(0.5) * (water.water[c] + water.previous_water[c]), static_cast<Real>(params.velocity_depth_floor));
+}
+
+template <class Real>
 Real water_strength(const LayeredGround<Real>& ground, const std::vector<Real>& surface,
                     const LayeredWater<Real>& water, const LayeredParams& params, int x, int y) {
   const std::size_t c = ground.cell(x, y);
@@ -175,6 +185,9 @@ void force_erosion_step(LayeredGround<Real>& ground, LayeredWater<Real>& water, 
   template Real water_strength(const LayeredGround<Real>&, const std::vector<Real>&, const LayeredWater<Real>&, \
                                const LayeredParams&, int, int);                                                \
   template Real breakdown(BreakdownForm, double, double, Real);                                                \
+  template NetFlux<Real> net_flux(const LayeredGround<Real>&, const LayeredWater<Real>&, const LayeredParams&, int, \
+                                  int);                                                                        \
+  template Real mean_depth(const LayeredWater<Real>&, const LayeredParams&, std::size_t);                       \
   template void force_erosion_step(LayeredGround<Real>&, LayeredWater<Real>&, const LayeredParams&,            \
                                    LayeredConversions&);
 GT_LAYERED_FORCE_EROSION_INSTANTIATE(float)

@@ -38,6 +38,20 @@
 
 namespace gt::reference {
 
+// The column's net flux (eq. 2.2's ½-averaged pipe pairs), m³/s: x toward +x (pipe R), y toward +y
+// (pipe T); a missing neighbour's flux is 0.
+template <class Real>
+struct NetFlux {
+  Real x = 0;
+  Real y = 0;
+};
+template <class Real>
+NetFlux<Real> net_flux(const LayeredGround<Real>& ground, const LayeredWater<Real>& water, const LayeredParams& params,
+                       int x, int y);
+// w̄ = max(½(w + w_prev), velocity_depth_floor) of column c, m.
+template <class Real>
+Real mean_depth(const LayeredWater<Real>& water, const LayeredParams& params, std::size_t c);
+
 // x of column (x, y) with neighbour surfaces from `surface` (the snapshot), m.
 template <class Real>
 Real water_strength(const LayeredGround<Real>& ground, const std::vector<Real>& surface,

@@ -4,6 +4,7 @@
 #include "reference/erosion/layered/creep.hpp"
 #include "reference/erosion/layered/dissolution.hpp"
 #include "reference/erosion/layered/force_erosion.hpp"
+#include "reference/erosion/layered/impact_erosion.hpp"
 #include "reference/erosion/layered/talus.hpp"
 #include "reference/erosion/layered/vegetation.hpp"
 #include "reference/erosion/layered/water.hpp"
@@ -21,6 +22,7 @@ void layered_iteration(LayeredGround<Real>& ground, const LayeredParams& params,
   if (water != nullptr) {
     water_flow(ground, *water, params);
     force_erosion_step(ground, *water, params, conversions);
+    impact_erosion_step(ground, *water, params, conversions);
     dissolution_step(ground, *water, params);
     wetness_step(*water, params);
   }

@@ -2,9 +2,9 @@
 // each process on the state the previous one left:
 //   with `water`: 1 sources and sinks (water.hpp); 2 soil creep (creep.hpp); 3 talus collapse
 //   (talus.hpp); with `water`: 4 the pipe flow (water.hpp), 5 force erosion (force_erosion.hpp),
-//   7 dissolution (dissolution.hpp), 9 wetness (wetness.hpp); 10 vegetation (vegetation.hpp, with the
-//   flood death when there is water); 11 weathering (weathering.hpp). Not built yet: 6 impact erosion
-//   and 8 sediment diffusion. Every process draws its random factors with the same `step` counter, on its own
+//   6 impact erosion (impact_erosion.hpp), 7 dissolution (dissolution.hpp), 9 wetness (wetness.hpp);
+//   10 vegetation (vegetation.hpp, with the flood death when there is water); 11 weathering
+//   (weathering.hpp). Not built: 8 sediment diffusion (§3.8, the single-material pipe variant's). Every process draws its random factors with the same `step` counter, on its own
 // streams (core/layered/layered_ground.hpp). GPU twin: gpu/erosion/layered/iteration.hpp. Units:
 // metres, Δt in seconds; conversions in m³.
 #pragma once

@@ -121,6 +121,22 @@ void fragments(int type, float amount, out float broken[5]) {
 // erode_component: force erosion's removal of `component` (§3.12): per non-empty soil layer, top
 // down, min(m·max(K_emin, V_j/V), V_j) (thesis) or min(V_j, m)·max(K_emin, V_j/V) (share_code),
 // then m ← max(m − V_j, 0)·max(1 − V/K_pmin, 0). Returns the amount taken; lowers the surface.
+// take_from_layer: one soil layer's part of erode_component, min(m·max(K_emin, V_j/V), V_j) (or the
+// code's share form) of `component` taken from layer `layer` (thickness V > 0); the surface is the
+// caller's to lower.
+float take_from_layer(uint c, int layer, int component, float request, float least_share, bool share_code) {
+  float thickness = soil_thickness(CURRENT, layer, c);
+  uint at = soil_at(CURRENT, layer, component, c);
+  float before = soil[at];
+  float share = max(least_share, gt_div(before, thickness));
+  precise float wanted = request * share;
+  precise float code_take = min(before, request) * share;
+  float take = share_code ? code_take : min(wanted, before);
+  precise float after = before - take;
+  soil[at] = after;
+  return take;
+}
+
 float erode_component(uint c, int component, float request, float least_share, float transparency_depth,
                       bool share_code) {
   precise float taken = 0.0;
@@ -129,15 +145,8 @@ float erode_component(uint c, int component, float request, float least_share, f
     if (!(left > 0.0)) break;
     float thickness = soil_thickness(CURRENT, layer, c);
     if (thickness <= 0.0) continue;
-    uint at = soil_at(CURRENT, layer, component, c);
-    float before = soil[at];
-    float share = max(least_share, gt_div(before, thickness));
-    precise float wanted = left * share;
-    precise float code_take = min(before, left) * share;
-    float take = share_code ? code_take : min(wanted, before);
-    precise float after = before - take;
-    soil[at] = after;
-    taken += take;
+    float before = soil[soil_at(CURRENT, layer, component, c)];
+    taken += take_from_layer(c, layer, component, left, least_share, share_code);
     precise float passed = max(left - before, 0.0);
     precise float opening = 1.0 - gt_div(thickness, transparency_depth);
     precise float next = passed * max(opening, 0.0);

@@ -14,22 +14,15 @@ layout(std430, binding = 11) writeonly buffer ErosionRecords { float erosion_rec
 
 const uint RECORD = 24u;
 
-float flux_of(int pipe, int n) { return n >= 0 ? water_state[water_at(CURRENT, FLUX + uint(pipe), uint(n))] : 0.0; }
-
 // |v| (eq. 2.2 with the w̄ floor).
 float water_speed(ivec2 cell, uint c) {
-  int left = neighbour(cell, 0), right = neighbour(cell, 1), top = neighbour(cell, 2), bottom = neighbour(cell, 3);
-  int self = int(c);
-  precise float flux_x = 0.5 * ((flux_of(1, left) - flux_of(0, self)) + (flux_of(1, self) - flux_of(0, right)));
-  precise float flux_y = 0.5 * ((flux_of(2, bottom) - flux_of(3, self)) + (flux_of(2, self) - flux_of(3, top)));
-  precise float depths = water_state[water_at(CURRENT, WATER, c)] + water_state[water_at(CURRENT, PREVIOUS, c)];
-  precise float half_depths = 0.5 * depths;
-  float mean_depth = max(half_depths, velocity_depth_floor);
-  if (mean_depth <= 0.0) return 0.0;
-  precise float across_x = cell_size_y * mean_depth;
-  precise float across_y = cell_size_x * mean_depth;
-  float speed_x = gt_div(abs(flux_x), across_x);
-  float speed_y = gt_div(abs(flux_y), across_y);
+  vec2 flux = net_flux(cell, c);
+  float mean = mean_depth(c);
+  if (mean <= 0.0) return 0.0;
+  precise float across_x = cell_size_y * mean;
+  precise float across_y = cell_size_x * mean;
+  float speed_x = gt_div(abs(flux.x), across_x);
+  float speed_y = gt_div(abs(flux.y), across_y);
   precise float squared = speed_x * speed_x + speed_y * speed_y;
   return gt_sqrt(squared);
 }
@@ -57,12 +50,6 @@ float water_strength(ivec2 cell, uint c) {
   precise float protection = 1.0 + vegetation_protection * vegetation[c];
   precise float drive = erosion_strength * sine * speed * ramp;
   return gt_div(drive, protection);
-}
-
-float breakdown(float slope, float threshold, float strength) {
-  precise float thesis = slope * (strength - threshold);
-  precise float code = slope * strength - threshold;
-  return max(breakdown_code != 0 ? code : thesis, 0.0);
 }
 
 float erode(uint c, int component, float request) {

@@ -49,7 +49,7 @@ layout(std140, binding = 1) uniform LayeredWaterBlock {
   float regolith_deposition;     // K_rd
   float drying_factor;           // K_dry^Δt
   float flood_wetness;           // m·s
-  float water_padding;
+  float impact_scale;            // K_i·Δt/(l_x·l_y), 1/m (§3.14)
 };
 
 layout(std430, binding = 10) buffer LayeredWaterState { float water_state[]; };
@@ -63,6 +63,32 @@ const int REGOLITH = 5;  // kind of the regolith's org; sand follows
 
 uint water_at(bool snapshot, uint section, uint c) {
   return (snapshot ? WATER_SECTIONS * cell_count() : 0u) + section * cell_count() + c;
+}
+
+float flux_of(int pipe, int n) { return n >= 0 ? water_state[water_at(CURRENT, FLUX + uint(pipe), uint(n))] : 0.0; }
+
+// The column's net flux (eq. 2.2's ½-averaged pipe pairs; reference net_flux), m³/s: x toward +x,
+// y toward +y; a missing neighbour's flux is 0.
+vec2 net_flux(ivec2 cell, uint c) {
+  int left = neighbour(cell, 0), right = neighbour(cell, 1), top = neighbour(cell, 2), bottom = neighbour(cell, 3);
+  int self = int(c);
+  precise float flux_x = 0.5 * ((flux_of(1, left) - flux_of(0, self)) + (flux_of(1, self) - flux_of(0, right)));
+  precise float flux_y = 0.5 * ((flux_of(2, bottom) - flux_of(3, self)) + (flux_of(2, self) - flux_of(3, top)));
+  return vec2(flux_x, flux_y);
+}
+
+// w̄ = max(½(w + w_prev), velocity_depth_floor) (reference mean_depth), m.
+float mean_depth(uint c) {
+  precise float depths = water_state[water_at(CURRENT, WATER, c)] + water_state[water_at(CURRENT, PREVIOUS, c)];
+  precise float half_depths = 0.5 * depths;
+  return max(half_depths, velocity_depth_floor);
+}
+
+// a(x) of one matrix entry: max(A·(x − B), 0), or max(A·x − B, 0) with breakdown_code.
+float breakdown(float slope, float threshold, float strength) {
+  precise float thesis = slope * (strength - threshold);
+  precise float code = slope * strength - threshold;
+  return max(breakdown_code != 0 ? code : thesis, 0.0);
 }
 
 #endif
