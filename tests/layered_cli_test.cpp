@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <algorithm>
 #include <vector>
 
 #include <gmock/gmock.h>
@@ -30,7 +31,7 @@ TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
       run_groundtruth({"run", "erosion.layered.mutant_probe.*", "--out", out.string()}, folder.path());
   ASSERT_EQ(result.status, 0) << result;
   const auto report = report_of(out);
-  ASSERT_EQ(report["cases"].size(), 2u);
+  ASSERT_EQ(report["cases"].size(), 4u);  // cone, cliff, and the water's: rain, river
   for (const auto& layered : report["cases"]) {
     EXPECT_EQ(layered["status"], "pass") << layered["name"];
     const auto names = check_names(layered);
@@ -39,15 +40,19 @@ TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
       EXPECT_THAT(names, Contains(std::string(expected))) << layered["name"];
     }
     const std::string name = layered["name"];
-    for (const char* file : {"surface_material.png", "cross_section.png", "ledger.png", "topsoil_cpu.npy"}) {
+    for (const char* file : {"surface_material.png", "cross_section.png", "material_masks.png", "ledger.png",
+                             "topsoil_cpu.npy", "mask_org.npy"}) {
       EXPECT_TRUE(fs::exists(out / name / file)) << name << ": " << file;
     }
+    const bool wet = name.find("rain") != std::string::npos || name.find("river") != std::string::npos;
+    EXPECT_EQ(std::find(names.begin(), names.end(), "ledger.water.cpu") != names.end(), wet) << name;
+    EXPECT_EQ(fs::exists(out / name / "water_cpu.npy"), wet) << name;
   }
   EXPECT_THAT(check_names(report["cases"][0]), Contains(std::string("spec.repose.cpu")));
 }
 
-// An ad-hoc run on a DEM written here (a tilted, bumpy 40×30 surface of 5 m cells in a .npy file):
-// the same ledger and layer checks hold.
+// Ad-hoc runs on a DEM written here (a tilted, bumpy 40×30 surface of 5 m cells in a .npy file), dry
+// and under rain: the same ledger and layer checks hold.
 TEST(LayeredCli, AnUnseenDemHoldsTheSameFigures) {
   gt::testing::TemporaryFolder folder;
   const auto dem = folder.path() / "unseen.npy";
@@ -67,18 +72,27 @@ TEST(LayeredCli, AnUnseenDemHoldsTheSameFigures) {
       }
     }
   }
-  const auto out = folder.path() / "out";
-  const auto result = run_groundtruth({"run", "--algorithm", "erosion.layered", "--input", dem.string(),
-                                       "--cell-size", "5", "--set", "steps=50", "--set", "soil=scree", "--out",
-                                       out.string()},
-                                      folder.path());
-  ASSERT_EQ(result.status, 0) << result;
-  const auto report = report_of(out);
-  ASSERT_EQ(report["cases"].size(), 1u);
-  EXPECT_EQ(report["cases"][0]["status"], "pass");
-  const auto names = check_names(report["cases"][0]);
-  for (const char* expected : {"ledger.materials.cpu", "ledger.total.cpu", "layers.invalid.cpu", "layers.surface.cpu"}) {
-    EXPECT_THAT(names, Contains(std::string(expected)));
+  // Dry scree, then loam under rain (the water's processes and its ledger).
+  const struct {
+    const char* name;
+    std::vector<std::string> sets;
+    std::vector<std::string> checks;
+  } runs[] = {{"dry", {"steps=50", "soil=scree"},
+               {"ledger.materials.cpu", "ledger.total.cpu", "layers.invalid.cpu", "layers.surface.cpu"}},
+              {"rain", {"steps=50", "rain_rate=0.01", "vegetation=0.5"},
+               {"ledger.materials.cpu", "ledger.water.cpu", "ledger.water.cpu_float", "layers.invalid.cpu"}}};
+  for (const auto& run : runs) {
+    const auto out = folder.path() / run.name;
+    std::vector<std::string> args{"run", "--algorithm", "erosion.layered", "--input", dem.string(), "--cell-size", "5",
+                                  "--out", out.string()};
+    for (const auto& set : run.sets) args.insert(args.end(), {"--set", set});
+    const auto result = run_groundtruth(args, folder.path());
+    ASSERT_EQ(result.status, 0) << run.name << ": " << result;
+    const auto report = report_of(out);
+    ASSERT_EQ(report["cases"].size(), 1u);
+    EXPECT_EQ(report["cases"][0]["status"], "pass") << run.name;
+    const auto names = check_names(report["cases"][0]);
+    for (const auto& expected : run.checks) EXPECT_THAT(names, Contains(expected)) << run.name;
   }
 }
 

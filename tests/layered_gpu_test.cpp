@@ -54,8 +54,11 @@
 #include "reference/erosion/layered/vegetation.hpp"
 #include "reference/erosion/layered/weathering.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace {
+
+using gt::testing::expect_same_bits;
 
 using gt::LayeredConversions;
 using gt::LayeredGround;
@@ -132,25 +135,11 @@ LayeredGround<float> random_ground(const LayeredParams& params) {
   return ground;
 }
 
-template <class T>
-void expect_same_bits(const char* name, const std::vector<T>& expected, const std::vector<T>& actual,
-                      const std::string& when) {
-  ASSERT_EQ(expected.size(), actual.size()) << when << ": " << name;
-  std::size_t differing = 0, first = 0;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    if (std::memcmp(&expected[i], &actual[i], sizeof(T)) == 0) continue;
-    if (differing++ == 0) first = i;
-  }
-  EXPECT_EQ(differing, 0u) << when << ": " << name << " differs in " << differing << " entries, first at " << first
-                           << " (reference " << expected[first] << ", GPU " << actual[first] << ")";
-}
-
 // The error model's premise: no state value is subnormal.
 void expect_no_subnormals(const LayeredGround<float>& ground, const std::string& when) {
-  for (const auto* values : {&ground.surface, &ground.soil, &ground.bedrock, &ground.vegetation}) {
-    for (float value : *values) {
-      ASSERT_TRUE(value == 0.0f || std::abs(value) >= std::numeric_limits<float>::min()) << when << ": " << value;
-    }
+  for (const auto& [name, values] : {std::pair{"surface", &ground.surface}, std::pair{"soil", &ground.soil},
+                                     std::pair{"bedrock", &ground.bedrock}, std::pair{"vegetation", &ground.vegetation}}) {
+    gt::testing::expect_no_subnormals(name, *values, when);
   }
 }
 

@@ -39,8 +39,12 @@
 #include "reference/erosion/layered/water.hpp"
 #include "reference/erosion/layered/wetness.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace {
+
+using gt::testing::expect_no_subnormals;
+using gt::testing::expect_same_bits;
 
 using gt::LayeredConversions;
 using gt::LayeredGround;
@@ -112,26 +116,6 @@ LayeredWater<float> random_water(std::size_t cells) {
     for (int kind = 0; kind < gt::carried_kind_count; ++kind) water.carried_at(kind, c) = 0.01f * unit(random);
   }
   return water;
-}
-
-template <class T>
-void expect_same_bits(const char* name, const std::vector<T>& expected, const std::vector<T>& actual,
-                      const std::string& when) {
-  ASSERT_EQ(expected.size(), actual.size()) << when << ": " << name;
-  std::size_t differing = 0, first = 0;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    if (std::memcmp(&expected[i], &actual[i], sizeof(T)) == 0) continue;
-    if (differing++ == 0) first = i;
-  }
-  EXPECT_EQ(differing, 0u) << when << ": " << name << " differs in " << differing << " entries, first at " << first
-                           << " (reference " << expected[first] << ", GPU " << actual[first] << ")";
-}
-
-void expect_no_subnormals(const char* name, const std::vector<float>& values, const std::string& when) {
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    ASSERT_TRUE(values[i] == 0.0f || std::abs(values[i]) >= std::numeric_limits<float>::min())
-        << when << ": " << name << "[" << i << "] = " << values[i];
-  }
 }
 
 void expect_same_state(const LayeredGround<float>& ground, const LayeredWater<float>& water,

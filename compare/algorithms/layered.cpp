@@ -831,9 +831,10 @@ std::vector<BenchmarkRow> benchmark_layered(const BenchmarkOptions& options, boo
 
 Algorithm layered_algorithm() {
   return {.name = "erosion.layered",
-          .summary = "seed 001's layered ground: soil–rock layers over bedrock, creep and per-material talus, a ledger "
-                     "per material",
-          .source = "seed 001 §3.1, §3.10–3.11, §4 (eq. 3.1–3.4)",
+          .summary = "seed 001's layered ground: soil–rock layers over bedrock, creep and per-material talus, "
+                     "vegetation and weathering, and with water the pipe flow, force, impact and dissolution erosion; a "
+                     "ledger per material",
+          .source = "seed 001 §3.1, §3.3–3.5, §3.10–3.17, §3.19, §4 (eq. 2.1–2.7, 3.1–3.12)",
           .params = &layered_case_param_specs(),
           .prepare = prepare_layered,
           .iterates = false,

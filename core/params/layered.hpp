@@ -1,7 +1,7 @@
-// Parameters of seed 001's layered ground (digest 001_erosion_terrain.md §3.1, §3.10, §3.11, §5):
-// columns of two soil–rock layers (topsoil, subsoil) of five components over typed bedrock, and the
-// constants of its talus collapse and soil creep. Algorithm family `erosion.layered`. Shared by
-// reference/erosion/layered/* and (later) the GPU twin.
+// Parameters of seed 001's layered ground (digest 001_erosion_terrain.md §3.1, §3.3-3.5, §3.10-3.17,
+// §3.19, §5): columns of two soil–rock layers (topsoil, subsoil) of five components over typed
+// bedrock, and the constants of its processes. Algorithm family `erosion.layered`. Shared by
+// reference/erosion/layered/* and the GPU twin (gpu/erosion/layered/*).
 //
 // Units: lengths and thicknesses in metres (a component "volume" is its thickness over the cell,
 // volume = thickness·l_x·l_y), Δt in seconds, repose angles as tan φ (dimensionless), K_z in m/s.
@@ -34,6 +34,16 @@
 //   - Weathering: K_conv = 0.01·0.1 m/s (the code's 0.01·organification_speed), [K_org, K_1,0, K_2,1,
 //     K_3,2] = [1, 0.2, 0.3, 0.4], reach 4.0 m; per bedrock type the code's soil formation rate
 //     (0.01·0.1·[1, 0.3, 0] m/s) and the composition of the soil it forms.
+//
+// Water (§3.3-3.5, §3.12-3.15, §3.19; reference/erosion/layered/{water,force_erosion,impact_erosion,
+// dissolution,wetness}.hpp), thesis by default, the code's choice a parameter:
+//   - `slope_form`: sin φ of the true slope (central differences over 2l) or the code's un-halved
+//     differences with l = 1; `breakdown_form`: eq. 3.5's a·(x − b) or the code's max(a·x − b, 0);
+//     `share_form`: eq. 3.10's min(m·max(K_emin, V_j/V), V_j) or the code's min(V_j, m)·max(...);
+//     `velocity_depth_floor`: none (0) or the code's 0.05 m; K_e 0.5 (the code 0.1).
+//   - The thesis leaves open and the code gives: K_w 0.45 m, K_c 0.25, organic capacity 0.12,
+//     K_wveg 0.2, K_emin 0.1, K_pmin 0.1 m, the bedrock matrices A^rock, B^rock, K_i 0.25, K_dry 0.5,
+//     a flood at wetness 1.0; A and B are eq. 3.8-3.9. Rain is a rate here (the code's is one shot).
 #pragma once
 
 #include <array>
