@@ -5,6 +5,9 @@
 
 namespace gt::gpu {
 
+LayeredWaterProcesses::LayeredWaterProcesses()
+    : dissolution("erosion/layered/dissolution.comp"), wetness("erosion/layered/wetness.comp") {}
+
 LayeredIteration::LayeredIteration(bool with_water)
     : creep_(layered_creep()), talus_(layered_talus()), vegetation_(layered_vegetation(with_water)),
       weathering_(layered_weathering()) {

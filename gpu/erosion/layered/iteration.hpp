@@ -22,6 +22,16 @@
 
 namespace gt::gpu {
 
+// The water's processes of an iteration (built only for a ground with water).
+struct LayeredWaterProcesses {
+  LayeredWaterProcesses();
+  LayeredWaterFlow flow;
+  LayeredForceErosion force_erosion;
+  LayeredImpactErosion impact_erosion;
+  LayeredWaterPass dissolution;
+  LayeredWaterPass wetness;
+};
+
 class LayeredIteration {
  public:
   explicit LayeredIteration(bool with_water = false);
@@ -29,19 +39,11 @@ class LayeredIteration {
             const LayeredWaterBuffers* water = nullptr) const;
 
  private:
-  struct WaterProcesses {
-    LayeredWaterFlow flow;
-    LayeredForceErosion force_erosion;
-    LayeredImpactErosion impact_erosion;
-    LayeredWaterPass dissolution{"erosion/layered/dissolution.comp"};
-    LayeredWaterPass wetness{"erosion/layered/wetness.comp"};
-  };
-
   LayeredSlopeProcess creep_;
   LayeredSlopeProcess talus_;
   LayeredVegetation vegetation_;
   LayeredWeathering weathering_;
-  std::optional<WaterProcesses> water_;
+  std::optional<LayeredWaterProcesses> water_;
 };
 
 }  // namespace gt::gpu
