@@ -135,7 +135,6 @@ struct LayeredRun {
   LayeredConversions conversions;
   double largest_courant = 0.0;                    // Δt·sqrt(g·w)/min(l_x, l_y) over the checkpoints
   std::vector<double> water_volumes;               // per checkpoint, m³ (with water)
-  std::vector<double> water_net;                   // per checkpoint, added − sunk, m³
   std::vector<int> checkpoints;                    // steps done at each ledger point
   std::vector<std::vector<double>> volumes;        // per checkpoint, per material, m³
   std::vector<std::vector<double>> converted;      // per checkpoint, per material, net conversion m³
@@ -172,7 +171,6 @@ LayeredRun<Real> run_layered(const LayeredSetup& setup, const CheckpointObserver
     run.volumes.push_back(material_volumes(layered_ledger(run.ground, types), in_water));
     run.converted.push_back(conversion_net(run.conversions, types));
     run.water_volumes.push_back(in_water.water);
-    run.water_net.push_back(run.conversions.water_added - run.conversions.water_sunk);
     if (run.water) run.largest_courant = std::max(run.largest_courant, courant_number(*run.water, setup.params, run.ground));
     if (observe) observe(done, run.ground, run.water ? &*run.water : nullptr, run.conversions);
   };
@@ -193,8 +191,8 @@ double ledger_bound(int steps, double roundings) {
 // ledger.water.<backend>: the water in against the water out (see the header).
 template <class Real>
 void add_water_ledger_check(const LayeredRun<Real>& run, int steps, const std::string& backend, CaseResult& result) {
-  const double start = run.water_volumes.front(), end = run.water_volumes.back(), net = run.water_net.back();
-  const double added = run.conversions.water_added, sunk = run.conversions.water_sunk;
+  const double start = run.water_volumes.front(), end = run.water_volumes.back();
+  const double added = run.conversions.water_added, sunk = run.conversions.water_sunk, net = added - sunk;
   const double scale = std::max(start + added, std::numeric_limits<double>::min());
   result.checks.push_back(bounded_check(
       "ledger.water." + backend, std::abs(end - start - net) / scale, ledger_bound<Real>(steps, water_roundings_per_step),
