@@ -8,29 +8,8 @@
 namespace gt::gpu {
 namespace {
 
-constexpr std::size_t record_floats = 48;  // RECORD of impact_erosion.comp
-constexpr std::size_t broken_at = 20, rock_at = 36, rock_type_at = 40;
-
-// The reference's counting (impact_erosion.cpp's count): per column, for each result size i, the
-// larger sizes j broken into it, then the bedrock eroded into it.
-void count(const std::vector<float>& records, std::size_t cells, double area, LayeredConversions& conversions) {
-  for (std::size_t c = 0; c < cells; ++c) {
-    const float* record = records.data() + c * record_floats;
-    for (std::size_t i = 0; i < fragment_size_count; ++i) {
-      for (std::size_t j = i + 1; j < fragment_size_count; ++j) {
-        const float broken = record[broken_at + fragment_size_count * j + i];
-        if (!(broken > 0.0f)) continue;
-        conversions.broken_from[j + 1] += static_cast<double>(broken) * area;
-        conversions.broken_into[i + 1] += static_cast<double>(broken) * area;
-      }
-      const float eroded = record[rock_at + i];
-      if (!(eroded > 0.0f)) continue;
-      conversions.bedrock_eroded_from.at(static_cast<std::size_t>(record[rock_type_at])) +=
-          static_cast<double>(eroded) * area;
-      conversions.bedrock_eroded_into[i + 1] += static_cast<double>(eroded) * area;
-    }
-  }
-}
+// RECORD of impact_erosion.comp: breakdown at [20 + 4j + i], bedrock at [36 + i], one type at [40].
+constexpr ErosionRecordLayout record_layout{48, 20, 36, 40, 0};
 
 }  // namespace
 
@@ -46,8 +25,8 @@ void LayeredImpactErosion::step(LayeredGroundBuffers& ground, const LayeredWater
   ground.dispatch_pass(erode_, step);
   ground.dispatch_pass(gather_, step);
   conversions.fit_types(ground.params().bedrock_types.size());
-  count(water.records(record_floats), ground.shape().cells(), ground.shape().cell_size_x * ground.shape().cell_size_y,
-        conversions);
+  count_erosion_records(water.records(record_layout.floats), ground.shape().cells(),
+                        ground.shape().cell_size_x * ground.shape().cell_size_y, record_layout, true, conversions);
 }
 
 }  // namespace gt::gpu

@@ -140,6 +140,26 @@ std::vector<float> LayeredWaterBuffers::records(std::size_t floats_per_column) c
   return records_.download<float>(floats_per_column * cells_);
 }
 
+void count_erosion_records(const std::vector<float>& records, std::size_t cells, double area,
+                           const ErosionRecordLayout& layout, bool count_breakdown, LayeredConversions& conversions) {
+  for (std::size_t c = 0; c < cells; ++c) {
+    const float* record = records.data() + c * layout.floats;
+    for (std::size_t i = 0; i < fragment_size_count; ++i) {
+      for (std::size_t j = i + 1; j < fragment_size_count && count_breakdown; ++j) {
+        const float broken = record[layout.broken_at + fragment_size_count * j + i];
+        if (!(broken > 0.0f)) continue;
+        conversions.broken_from[j + 1] += static_cast<double>(broken) * area;
+        conversions.broken_into[i + 1] += static_cast<double>(broken) * area;
+      }
+      const float eroded = record[layout.bedrock_at + i];
+      if (!(eroded > 0.0f)) continue;
+      const auto type = static_cast<std::size_t>(record[layout.type_at + layout.type_stride * i]);
+      conversions.bedrock_eroded_from.at(type) += static_cast<double>(eroded) * area;
+      conversions.bedrock_eroded_into[i + 1] += static_cast<double>(eroded) * area;
+    }
+  }
+}
+
 LayeredWaterPass::LayeredWaterPass(const std::string& shader) : program_(ComputeProgram::load(shader)) {}
 
 void LayeredWaterPass::step(LayeredGroundBuffers& ground, const LayeredWaterBuffers& water, std::uint32_t step) const {

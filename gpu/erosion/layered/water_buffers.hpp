@@ -85,6 +85,23 @@ class LayeredWaterBuffers {
   StorageBuffer records_;
 };
 
+// Where an erosion pass (force_erosion.comp, impact_erosion.comp) writes its per-column tally in a
+// record of `floats`: [broken_at + 4j + i] size j broken into size i (i < j), [bedrock_at + i]
+// bedrock eroded into size i, its type at [type_at + type_stride·i] (stride 0: one type a column).
+struct ErosionRecordLayout {
+  std::size_t floats;
+  std::size_t broken_at;
+  std::size_t bedrock_at;
+  std::size_t type_at;
+  std::size_t type_stride;
+};
+
+// Adds the records' tallies to `conversions` in the reference's order — per column, for each result
+// size i, the larger sizes broken into it (when `count_breakdown`), then the bedrock eroded into it —
+// each float times `area` in double.
+void count_erosion_records(const std::vector<float>& records, std::size_t cells, double area,
+                           const ErosionRecordLayout& layout, bool count_breakdown, LayeredConversions& conversions);
+
 class LayeredWaterPass {
  public:
   explicit LayeredWaterPass(const std::string& shader);
