@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -14,21 +15,33 @@
 #include "compare/inputs.hpp"
 #include "compare/peers/peer.hpp"
 #include "compare/result.hpp"
+#include "compare/stepped_case.hpp"
 #include "core/grid.hpp"
 #include "core/memory.hpp"
 #include "core/params.hpp"
 
 namespace gt {
 
+// A case's run, for algorithms that run the whole case themselves (meshes, renders, planets):
+// `expect` is the case's, checks and artifacts go into the result.
+using CaseRun = std::function<void(const nlohmann::json& expect, const RunOptions& options, CaseResult& result)>;
+
+// A generator's twins (noise) and the grid they sample.
+struct GeneratedCase {
+  FieldTwin twin;
+  Heightmap grid;
+};
+
+// The three kinds of case the driver runs: a generated field (compare/field_twin.hpp), an
+// iterative twin stepped by the one runner (compare/stepped_case.hpp), or a custom run.
+enum class CaseKind { generated, stepped, custom };
+
 // An algorithm's twins set up for one input and parameter set.
 struct PreparedTwin {
-  FieldTwin twin;
-  Heightmap input;  // what the twins run on (seed 000's normalised heights, for example)
-  // Algorithms that are not field twins (meshes) run the whole case themselves: set instead of twin.
-  std::function<void(const nlohmann::json& expect, const RunOptions& options, CaseResult& result)> run;
-  // Checks that belong to the algorithm rather than to field twins (spec vectors of its formulas,
+  std::variant<GeneratedCase, SteppedTwin, CaseRun> kind;
+  // Checks that belong to the algorithm rather than to the runner (spec vectors of its formulas,
   // sweeps); they may add artifacts under options.report_dir / result.name.
-  std::function<void(const nlohmann::json& expect, const RunOptions& options, CaseResult& result)> extra_checks;
+  CaseRun extra_checks;
 };
 
 // What an ad-hoc run's --input names: a heightmap (erosion; noise samples on its grid, or on a
@@ -51,14 +64,12 @@ struct Algorithm {
   const ParamSpecs* params = nullptr;
   // `resolved` holds every parameter (defaults filled in, ranges checked).
   std::function<PreparedTwin(const nlohmann::json& resolved, const LoadedInput& input)> prepare;
-  // Whether the algorithm has an `iterations` parameter: the performance table then runs
-  // BenchmarkOptions::iterations of them and counts cell-iterations; otherwise one sample per cell.
-  bool iterates = true;
-  // Whether prepare() gives a field twin (PreparedTwin::twin) rather than its own `run`.
-  bool has_field_twin = true;
+  // Which of PreparedTwin's kinds prepare() gives: a stepped algorithm changes its input over
+  // `iterations` (or steps) and needs one; a generated one samples a grid (a flat one by default).
+  CaseKind kind = CaseKind::stepped;
   AdHocInput ad_hoc_input = AdHocInput::heightmap;
   // The algorithm's own rows of the performance table (cave meshing: voxels and triangles per
-  // second); unset: the generic field-twin timing of compare/benchmark.cpp, or none for `run` cases.
+  // second); unset: the generic timing of compare/benchmark.cpp, or none for custom cases.
   std::function<std::vector<BenchmarkRow>(const BenchmarkOptions& options, bool gpu_available,
                                           const Environment& environment)>
       benchmark = {};

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <fnmatch.h>
+#include <memory>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -97,11 +99,55 @@ Heightmap benchmark_input(int size) {
   return load_input(input, nullptr, {}).heights;
 }
 
-// Field twins: the double reference and the GPU on generated square grids.
+// One backend's work for the generic rows: reset (not timed) before each timed run.
+struct Work {
+  std::function<void()> reset;
+  std::function<void()> run;
+};
+
+// A generated field's whole grid; a stepped twin's iterations from its start state (upload and
+// download excluded).
+Work stepped_work(const SteppedTwin& twin, std::shared_ptr<Stepper> stepper) {
+  return {[stepper, &twin] { stepper->set_state(twin.initial, 0); },
+          [stepper, &twin] { stepper->update(twin.iterations); }};
+}
+
+Work cpu_work(const PreparedTwin& prepared) {
+  if (const auto* generated = std::get_if<GeneratedCase>(&prepared.kind)) {
+    return {[] {}, [generated] { generated->twin.reference_double(generated->grid); }};
+  }
+  const auto& twin = std::get<SteppedTwin>(prepared.kind);
+  return stepped_work(twin, twin.reference_double());
+}
+
+Work gpu_work(const PreparedTwin& prepared) {
+  if (const auto* generated = std::get_if<GeneratedCase>(&prepared.kind)) {
+    auto runner = std::make_shared<GpuFieldRunner>(generated->twin.make_gpu());
+    auto grid = std::make_shared<Grid<float>>(generated->grid.cast<float>());
+    return {[runner, grid] { runner->load(*grid); }, [runner] { runner->run(); }};
+  }
+  const auto& twin = std::get<SteppedTwin>(prepared.kind);
+  return stepped_work(twin, twin.make_gpu());
+}
+
+// The median of `reps` timed runs after one warm-up.
+std::vector<double> timed_runs(const Work& work, int reps, double (*clock)(const std::function<void()>&)) {
+  work.reset();
+  work.run();
+  std::vector<double> times;
+  for (int rep = 0; rep < reps; ++rep) {
+    work.reset();
+    times.push_back(clock(work.run));
+  }
+  return times;
+}
+
+// Generated fields and stepped twins: the double reference and the GPU on generated square grids.
 void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& options, bool gpu_available,
                           const Environment& environment, Progress& progress, std::vector<BenchmarkRow>& rows) {
-  const int iterations = algorithm.iterates ? options.iterations : 1;
-  const nlohmann::json given = algorithm.iterates ? nlohmann::json{{"iterations", iterations}} : nlohmann::json::object();
+  const bool stepped = algorithm.kind == CaseKind::stepped;
+  const int iterations = stepped ? options.iterations : 1;
+  const nlohmann::json given = stepped ? nlohmann::json{{"iterations", iterations}} : nlohmann::json::object();
   const auto params = resolve_params(algorithm.name, *algorithm.params, given);
   for (int size : options.sizes) {
     progress.start_case(static_cast<int>(rows.size()) + 1, fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
@@ -109,12 +155,8 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
     input_grid.heights = benchmark_input(size);
     require_memory(algorithm.memory(params, input_grid), fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
     const PreparedTwin prepared = algorithm.prepare(params, input_grid);
-    std::vector<double> cpu_times;
     progress.stage("cpu");
-    prepared.twin.reference_double(prepared.input);
-    for (int rep = 0; rep < options.reps; ++rep) {
-      cpu_times.push_back(cpu_wall_ms([&] { prepared.twin.reference_double(prepared.input); }));
-    }
+    const auto cpu_times = timed_runs(cpu_work(prepared), options.reps, cpu_wall_ms);
     rows.push_back(row(algorithm.name, "cpu", size, iterations, options.reps, cpu_times, environment.cpu));
     for (const Peer& peer : algorithm.peers) {
       progress.stage("peer");
@@ -122,20 +164,12 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
     }
     if (!gpu_available) continue;
     progress.stage("gpu");
-    const auto input = prepared.input.cast<float>();
-    GpuFieldRunner runner = prepared.twin.make_gpu();
-    runner.load(input);
-    runner.run();
-    std::vector<double> gpu_times;
-    for (int rep = 0; rep < options.reps; ++rep) {
-      runner.load(input);
-      gpu_times.push_back(gpu_wall_ms(runner.run));
-    }
+    const auto gpu_times = timed_runs(gpu_work(prepared), options.reps, gpu_wall_ms);
     rows.push_back(row(algorithm.name, "gpu", size, iterations, options.reps, gpu_times, environment.gl_renderer));
   }
 }
 
-bool has_rows(const Algorithm& algorithm) { return algorithm.benchmark || algorithm.has_field_twin; }
+bool has_rows(const Algorithm& algorithm) { return algorithm.benchmark || algorithm.kind != CaseKind::custom; }
 
 // The algorithms of the table that match the options' patterns, in the table's order.
 std::vector<const Algorithm*> selected_algorithms(const BenchmarkOptions& options) {
@@ -176,7 +210,7 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
       progress.start_case(static_cast<int>(rows.size()) + 1, "benchmark " + algorithm.name);
       const auto own_rows = algorithm.benchmark(options, gpu_available, environment);
       rows.insert(rows.end(), own_rows.begin(), own_rows.end());
-    } else if (algorithm.has_field_twin) {
+    } else if (algorithm.kind != CaseKind::custom) {
       benchmark_field_twin(algorithm, options, gpu_available, environment, progress, rows);
     }
     add_traffic(algorithm, rows.begin() + static_cast<std::ptrdiff_t>(first_row), rows.end());

@@ -181,6 +181,8 @@ void add_case_descriptors(const CaseTerrains& terrains, const nlohmann::json& ex
   if (const auto* truth = find(described, "cpu")) {
     if (const auto* gpu = find(described, "gpu")) {
       result.checks.push_back(descriptor_parity("gpu_vs_double", truth->descriptors, gpu->descriptors));
+    } else if (!options.gpu_available) {
+      result.checks.push_back(skipped_check("parity.descriptors.gpu_vs_double", options.gpu_unavailable_reason));
     }
     if (const auto* cpu_float = find(described, "cpu_float")) {
       Check check = descriptor_parity("float_vs_double", truth->descriptors, cpu_float->descriptors);
@@ -191,7 +193,16 @@ void add_case_descriptors(const CaseTerrains& terrains, const nlohmann::json& ex
     }
     if (fidelity) add_fidelity_checks("cpu", truth->descriptors, result);
   }
-  if (const auto* gpu = find(described, "gpu"); gpu && fidelity) add_fidelity_checks("gpu", gpu->descriptors, result);
+  if (fidelity) {
+    if (const auto* gpu = find(described, "gpu")) {
+      add_fidelity_checks("gpu", gpu->descriptors, result);
+    } else if (!options.gpu_available) {
+      for (const auto& target : fidelity_targets()) {
+        result.checks.push_back(
+            skipped_check(fmt::format("fidelity.{}.gpu", target.descriptor), options.gpu_unavailable_reason));
+      }
+    }
+  }
   attach_descriptor_plot(described, real, options, result);
 }
 

@@ -59,6 +59,9 @@ nlohmann::json descriptor_expect_shape();
 void check_descriptor_expect(const nlohmann::json& expect, const std::string& where);
 
 // Sets result.descriptors, adds the checks above and (with a report folder) descriptors.png.
+// Without a GPU (options.gpu_available false) the GPU's checks are `skip` with
+// options.gpu_unavailable_reason; a case whose GPU runs but gives no terrain to describe (a racing
+// droplet order) has none.
 void add_case_descriptors(const CaseTerrains& terrains, const nlohmann::json& expect, const RunOptions& options,
                           CaseResult& result);
 

@@ -7,6 +7,8 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <type_traits>
+#include <variant>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -70,10 +72,14 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
     spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
     if (ad_hoc.red_channel) spec.input["red_channel"] = true;
     if (ad_hoc.cell_size > 0.0) spec.input["cell_size"] = ad_hoc.cell_size;
-  } else if (!algorithm.iterates) {
+  } else if (algorithm.kind == CaseKind::generated) {
     spec.input = {{"generator", "flat"}, {"width", ad_hoc.width}, {"height", ad_hoc.height}, {"cell_size", ad_hoc.cell_size > 0.0 ? ad_hoc.cell_size : 1.0}};
   } else {
-    throw InputError(fmt::format("{} changes a heightmap: give it one with --input", ad_hoc.algorithm));
+    // Only a generated field samples a grid of --width x --height without an input; anything else
+    // on a flat grid made up for it would run silently on nothing.
+    throw InputError(fmt::format("{} works on a heightmap: give it one with --input (only noise algorithms sample a "
+                                 "grid of their own)",
+                                 ad_hoc.algorithm));
   }
   for (const auto& assignment : ad_hoc.assignments) {
     const auto equals = assignment.find('=');
@@ -124,6 +130,10 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
       job.input = load_input(spec.input, spec.crop, dataset_dir);
       require_memory(algorithm.memory(job.resolved, job.input), spec.algorithm);
       job.prepared = algorithm.prepare(job.resolved, job.input);
+      if (job.prepared.kind.index() != static_cast<std::size_t>(algorithm.kind)) {
+        throw std::logic_error(fmt::format("{}: prepare() gave another kind of case than Algorithm::kind declares",
+                                           spec.algorithm));
+      }
     } catch (const InputError& error) {
       throw InputError(fmt::format("case {}: {}", spec.name, error.what()));
     } catch (const nlohmann::json::exception& error) {
@@ -182,11 +192,15 @@ CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context
   CaseResult result = case_header(job);
   try {
     const PreparedTwin& prepared = job.prepared;
-    if (prepared.run) {
-      prepared.run(job.spec.expect, options, result);
-    } else {
-      run_field_twin(prepared.twin, prepared.input, job.spec.expect, options, result);
-    }
+    const nlohmann::json& expect = job.spec.expect;
+    std::visit(
+        [&](const auto& kind) {
+          using Kind = std::decay_t<decltype(kind)>;
+          if constexpr (std::is_same_v<Kind, GeneratedCase>) run_field_twin(kind.twin, kind.grid, expect, options, result);
+          if constexpr (std::is_same_v<Kind, SteppedTwin>) run_stepped_case(kind, expect, options, result);
+          if constexpr (std::is_same_v<Kind, CaseRun>) kind(expect, options, result);
+        },
+        prepared.kind);
     if (prepared.extra_checks) prepared.extra_checks(job.spec.expect, options, result);
   } catch (const std::exception& error) {
     result.error = error.what();

@@ -1,37 +1,22 @@
-// Running a field algorithm's twins on one input and checking them against each other.
+// Running a generated field's twins on one grid and checking them against each other.
 //
-// A field twin is an algorithm that maps a heightmap to a heightmap: the reference in double
-// (the truth) and in float (the GPU's arithmetic), and the GPU version. run_field_twin runs all
-// three, times the double reference and the GPU, writes the pictures and fields, and adds the
-// checks of DESIGN.md to the case result:
-//   mass.relative_drift.{cpu,cpu_float,gpu}   |Σ after - Σ before| / Σ|before|   (conserving algorithms)
-//   determinism.gpu                           cells differing between two GPU runs
-//   spec.cells.{cpu,gpu}, spec.total.{cpu,gpu}               when the case lists expected values
-// A generator (`generated`: noise) is judged on its whole output, with the bounds it gives:
+// A generated field (noise) samples a function on the input's grid: the reference in double (the
+// truth) and in float (the GPU's arithmetic), and the GPU version. run_field_twin runs all three,
+// times the double reference and the GPU, writes the pictures and fields, and adds the checks of
+// DESIGN.md, judged on the whole output with the bounds the twin gives:
 //   parity.max_abs.gpu_vs_float, parity.rms.gpu_vs_float     (logic bounds)
 //   parity.max_abs.{gpu,float}_vs_double, parity.rms.*       (precision bounds)
-// An iterative twin (`stepping`: erosion) is judged by shadow steps: at 8 checkpoints along the run
-// (every iteration of a shorter run) ref<float>'s state is loaded into the GPU, which takes one and
-// then up to 4 iterations (none for a run of none: load and download alone), compared cell by cell
-// with ref<float> stepped from the same state:
-//   parity.shadow.max_abs.gpu_vs_float         one iteration, max over the checkpoints, relative to
-//                                              the input's height range; bound parity_bounds_same_arithmetic
-//   parity.shadow.max_abs_multi.gpu_vs_float   up to 4 iterations, the same model over their passes
-//   parity.shadow.cells_differing.gpu_vs_float cells differing in any bit after one iteration (informative)
-//   mass.moved_first_iteration.cpu             material the double reference moved in its first
-//                                              iteration against the twin's host spec of that iteration
-// Over a whole run the method amplifies rounding differences by an amount no model gives before the
-// run (ties on a cone's apex break either way), so the end-of-run distances are informative:
-//   parity.{max_abs,rms}.gpu_vs_float, parity.{max_abs,rms}.{gpu,float}_vs_double,
-//   parity.growth_per_iteration.{gpu,float}_vs_double   fitted growth of the distance from
-//                                              ref<double> over the checkpoints (also plotted)
+//   determinism.gpu                                         cells differing between two GPU runs
+//   spec.cells.{cpu,gpu}, spec.total.{cpu,gpu}               when the case lists expected values
 // Without a GL context the GPU checks are `skip` with the reason and the CPU side still runs.
+// Iterative twins are stepped by compare/stepped_case.hpp instead.
 #pragma once
 
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -44,8 +29,8 @@ namespace gt {
 
 // The GPU side keeps its buffers between repetitions: load (upload, not timed), run (all
 // iterations, not synchronised: the caller brackets it with glFinish), result (download).
-// Iterative twins also give step(first, count): `count` iterations from the current state, the
-// first of them numbered `first` (the number of iterations the state has behind it).
+// The droplet eroders also give step(first, count): `count` iterations from the current state, the
+// first of them numbered `first`.
 struct GpuFieldRunner {
   std::function<void(const Grid<float>&)> load;
   std::function<void()> run;
@@ -57,29 +42,12 @@ struct FieldTwin {
   std::function<Grid<double>(const Grid<double>&)> reference_double;
   std::function<Grid<float>(const Grid<float>&)> reference_float;
   std::function<GpuFieldRunner()> make_gpu;  // called only with a current GL context
-  double additions_per_cell = 0.0;           // rounded additions into one height over the run
-  bool conserves_mass = true;
-  // A generator (noise) makes a new field on the input's grid rather than changing the input: its
-  // pictures show the output alone, and its parity bounds are absolute and given here rather than
-  // derived from additions relative to the input's height range.
+  // The parity bounds, absolute: GPU vs ref<float> (logic) and ref<float> and GPU vs ref<double>.
   struct GeneratedField {
-    Bounds logic;      // GPU vs ref<float>
-    Bounds precision;  // ref<float> and GPU vs ref<double>
+    Bounds logic;
+    Bounds precision;
   };
-  std::optional<GeneratedField> generated;
-  // An iterative method that can be stepped from any state (every twin that is not generated):
-  // the references from `state`, which has `first` iterations behind it, run `count` more; the GPU
-  // runner's step() does the same.
-  struct Stepping {
-    int iterations = 0;                    // of the whole run
-    double additions_per_iteration = 0.0;  // rounded additions into one height per iteration
-    std::function<Grid<double>(const Grid<double>& state, int first, int count)> reference_double;
-    std::function<Grid<float>(const Grid<float>& state, int first, int count)> reference_float;
-    // Optional: the heights after the first iteration from `input`, computed on the host in double
-    // from the method's equations, written apart from the twins (a spec of the transfer).
-    std::function<Grid<double>(const Grid<double>& input)> first_iteration_spec;
-  };
-  std::optional<Stepping> stepping;
+  GeneratedField bounds;
 };
 
 struct RunOptions {
@@ -96,7 +64,14 @@ struct RunOptions {
 // tolerance); an algorithm's Algorithm::expect_shape starts from it and adds its own.
 nlohmann::json field_spec_shape();
 
-void run_field_twin(const FieldTwin& twin, const Heightmap& input, const nlohmann::json& expect,
+// spec.cells.<backend> and spec.total.<backend> of `output` when `expect` lists expected cells or a total.
+void add_field_spec_checks(const nlohmann::json& expect, const Grid<double>& output, const std::string& backend,
+                           CaseResult& result);
+
+// The names add_field_spec_checks gives for `expect` and `backend`.
+std::vector<std::string> field_spec_names(const nlohmann::json& expect, const std::string& backend);
+
+void run_field_twin(const FieldTwin& twin, const Heightmap& grid, const nlohmann::json& expect,
                     const RunOptions& options, CaseResult& result);
 
 }  // namespace gt

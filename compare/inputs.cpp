@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -89,14 +90,16 @@ Heightmap slope(const nlohmann::json& input) {
 Heightmap noise_terrain(const nlohmann::json& input) {
   const Heightmap grid = blank_field(input);
   const auto& algorithm = find_algorithm(input.value("algorithm", std::string("noise.hetero_terrain")));
-  if (algorithm.iterates) {
-    throw InputError(fmt::format("input generator terrain: {} is not a noise algorithm", algorithm.name));
+  if (algorithm.kind != CaseKind::generated) {
+    throw InputError(fmt::format("input generator terrain: {} is not a noise algorithm (`groundtruth list` names them: "
+                                 "noise.*)",
+                                 algorithm.name));
   }
   const auto resolved = resolve_params(algorithm.name, *algorithm.params, input.value("params", nlohmann::json::object()));
   LoadedInput sampling_grid;
   sampling_grid.heights = grid;
-  const PreparedTwin prepared = algorithm.prepare(resolved, sampling_grid);
-  return prepared.twin.reference_double(prepared.input);
+  const auto& generated = std::get<GeneratedCase>(algorithm.prepare(resolved, sampling_grid).kind);
+  return generated.twin.reference_double(generated.grid);
 }
 
 Heightmap example_3x3() {

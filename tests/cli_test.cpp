@@ -54,7 +54,6 @@ const std::string volcano = (dataset_dir / "real" / "volcano.json").string();
 // Acceptance bounds of the thermal-erosion issue, the same for every case.
 constexpr double cpu_mass_drift_bound = 1e-12;
 constexpr double gpu_mass_drift_bound = 1e-6;
-constexpr double gpu_parity_bound = 1e-5;
 
 // ---- helpers ---------------------------------------------------------------------------------
 
@@ -117,8 +116,12 @@ void expect_acceptance_bounds(const json& report_case) {
   EXPECT_TRUE(status == "pass" || status == "warn") << "status " << status << ": " << report_case.dump(2);
   expect_check_at_most(report_case, "mass.relative_drift.cpu", cpu_mass_drift_bound);
   expect_check_at_most(report_case, "mass.relative_drift.gpu", gpu_mass_drift_bound);
-  expect_check_at_most(report_case, "parity.max_abs.gpu_vs_float", gpu_parity_bound);
   expect_check_at_most(report_case, "determinism.gpu", 0.0);
+  // The twins' agreement is graded by the shadow step (the GPU loaded with ref<float>'s state),
+  // against the error model's bound; the end of the run is shown, not graded.
+  const json* shadow = find_check(report_case, "parity.shadow.terrain.gpu_vs_float");
+  ASSERT_NE(shadow, nullptr);
+  EXPECT_EQ(shadow->at("status"), "pass") << shadow->dump();
 }
 
 void expect_artifacts_exist(const json& report_case, const fs::path& report_dir) {
@@ -395,7 +398,7 @@ TEST(CliRun, PipeSuiteMeetsTheAcceptanceBounds) {
     // the velocity (compare/algorithms/pipes.cpp); the terrain and the water must always be decided.
     const auto status = status_of_twin_checks(report_case);
     EXPECT_TRUE(status == "pass" || status == "inconclusive") << report_case.dump(2);
-    for (const char* field : {"terrain_change", "water"}) {
+    for (const char* field : {"terrain", "water"}) {
       const json* shadow = find_check(report_case, fmt::format("parity.shadow.{}.gpu_vs_float", field));
       ASSERT_NE(shadow, nullptr) << field;
       EXPECT_EQ(shadow->at("status"), "pass") << shadow->dump();

@@ -121,6 +121,30 @@ TEST_F(Hostile, HeightsBeyondFloatAndCellSizesWithoutLengthAreRefused) {
   expect_case_refused(flat, "cell size 0 x 0 deg is not a length");
 }
 
+// An eroder without an input once ran silently on a flat 256x256 grid, and a terrain generator
+// naming an eroder ended in "internal error: bad_function_call": both are the user's mistake, and
+// are refused by name (exit 2), with nothing written.
+TEST_F(Hostile, AnEroderWithoutAnInputIsRefused) {
+  const std::pair<const char*, const char*> runs[] = {{"erosion.pipe", "steps=2"},
+                                                      {"erosion.thermal", "iterations=2"},
+                                                      {"erosion.layered", "steps=2"},
+                                                      {"erosion.particle", "iterations=2"}};
+  for (const auto& [algorithm, assignment] : runs) {
+    const auto run = gt::testing::run_program(
+        groundtruth, {"run", "--algorithm", algorithm, "--set", assignment, "--out", (work_ / "out").string()},
+        work_.path());
+    EXPECT_EQ(run.status, 2) << run;
+    EXPECT_THAT(run.err, HasSubstr(std::string(algorithm) + " works on a heightmap: give it one with --input")) << run;
+    EXPECT_TRUE(entries_of(work_.path()).empty()) << run;
+  }
+}
+
+TEST_F(Hostile, ATerrainGeneratorNamingAnEroderIsRefused) {
+  json entry = thermal_case("mine.generated_by_an_eroder");
+  entry["input"] = {{"generator", "terrain"}, {"algorithm", "erosion.pipe"}, {"width", 16}, {"height", 16}};
+  expect_case_refused(entry, "input generator terrain: erosion.pipe is not a noise algorithm");
+}
+
 TEST_F(Hostile, NoiseWhoseLatticeIndicesWouldOverflowIsRefused) {
   // The finest of 32 octaves of lacunarity 16 from an origin of 1e9: 1e9·16^31.
   const json entry = {{"name", "mine.noise"},
@@ -153,10 +177,16 @@ TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
   EXPECT_EQ(diff.status, 2) << diff;
   EXPECT_THAT(diff.err, HasSubstr("(30000x30000) needs about")) << diff;
   // Checkpoints: 1000 states of a 512² pipe run are counted before the run starts.
+  const gt::testing::TemporaryFolder cases("gt_hostile_cases");
+  std::ofstream(cases / "checkpoints.json")
+      << json::array({{{"name", "mine.checkpoints"},
+                       {"algorithm", "erosion.pipe"},
+                       {"input", {{"generator", "flat"}, {"width", 512}, {"height", 512}}},
+                       {"params", {{"steps", 1000}, {"checkpoints", 1000}}}}})
+             .dump();
   const auto checkpoints = run_with_address_space_limit(
       four_gibibytes,
-      {"run", "--algorithm", "erosion.pipe", "--size", "512x512", "--set", "steps=1000", "--set", "checkpoints=1000",
-       "--out", (work_ / "out").string()},
+      {"run", "mine.checkpoints", "--cases", (cases / "checkpoints.json").string(), "--out", (work_ / "out").string()},
       work_.path());
   EXPECT_EQ(checkpoints.status, 2) << checkpoints;
   EXPECT_THAT(checkpoints.err, HasSubstr("262144000 cell-checkpoints x 150 B")) << checkpoints;

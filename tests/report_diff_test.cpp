@@ -112,7 +112,7 @@ TEST(ReportDiffCli, AMutantShowsAsARegression) {
                                                    work.path());
   EXPECT_EQ(regression.status, 1) << regression;
   EXPECT_THAT(regression.out, HasSubstr("REGRESSIONS"));
-  EXPECT_THAT(regression.out, HasSubstr(probe + ": parity.shadow.max_abs.gpu_vs_float  pass → fail"));
+  EXPECT_THAT(regression.out, HasSubstr(probe + ": parity.shadow.terrain.gpu_vs_float  pass → fail"));
   const auto same = gt::testing::run_program(groundtruth, {"diff-reports", "base/report.json", "base/report.json"},
                                              work.path());
   EXPECT_EQ(same.status, 0) << same;

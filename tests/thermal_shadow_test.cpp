@@ -1,8 +1,8 @@
 // The shadow-step machinery of the thermal twins (issue 11): the GPU loaded with a mid-run state
 // and stepped equals ref<float> stepped from the same state (within the a-priori bound of
 // parity_bounds_same_arithmetic, 0 on llvmpipe); a run stepped in pieces equals one in one go on
-// both sides; the error model's bounds are positive and finite; run_field_twin's shadow checks pass
-// for the real twins and fail for a GPU that is off; the host specs of the first iteration give
+// both sides; the error model's bounds are positive and finite; the stepped runner's shadow checks
+// pass for the real twins and fail for a GPU that is off; the host specs of the first iteration give
 // the seeds' worked examples.
 #include <cmath>
 #include <filesystem>
@@ -15,7 +15,8 @@
 #include "compare/algorithm.hpp"
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
-#include "compare/field_twin.hpp"
+#include "compare/algorithms/thermal_specs.hpp"
+#include "compare/stepped_case.hpp"
 #include "core/params.hpp"
 #include "core/params/thermal.hpp"
 #include "core/rng.hpp"
@@ -150,17 +151,20 @@ gt::Heightmap centre_peak() {
 
 // The host specs reproduce the worked examples of datasets/cases/erosion.thermal.json.
 TEST(ThermalFirstIterationSpec, GivesTheWorkedExamples) {
-  const auto hydra = prepare("erosion.thermal",
-                             {{"iterations", 1}, {"talus_angle", std::atan(0.25) * 180.0 / std::numbers::pi},
-                              {"neighbourhood", "cardinal"}, {"strength", 1.0}},
-                             centre_peak());
-  const auto hydra_after = hydra.twin.stepping->first_iteration_spec(hydra.input);
+  gt::ThermalParams hydra;
+  hydra.iterations = 1;
+  hydra.talus_angle_deg = std::atan(0.25) * 180.0 / std::numbers::pi;
+  hydra.strength = 1.0;
+  const auto hydra_after = gt::hydra_first_iteration(centre_peak(), gt::thermal_constants(hydra, centre_peak()),
+                                                     Neighbourhood::cardinal);
   EXPECT_NEAR(hydra_after.at(1, 1), 0.625, 1e-12);
   EXPECT_NEAR(hydra_after.at(0, 1), 0.09375, 1e-12);
   EXPECT_EQ(hydra_after.at(0, 0), 0.0);
-  const auto jako = prepare("erosion.thermal_jako", {{"iterations", 1}, {"talus_angle", 35.0}, {"rate", 0.5}},
-                            centre_peak());
-  const auto jako_after = jako.twin.stepping->first_iteration_spec(jako.input);
+  gt::ThermalJakoParams jako;
+  jako.iterations = 1;
+  jako.talus_angle_deg = 35.0;
+  jako.rate = 0.5;
+  const auto jako_after = gt::jako_first_iteration(centre_peak(), gt::thermal_jako_constants(jako, centre_peak()));
   EXPECT_EQ(jako_after.at(1, 1), 0.75);
   EXPECT_EQ(jako_after.at(0, 0), 0.03125);
   EXPECT_EQ(jako_after.at(1, 0), 0.03125);
@@ -184,7 +188,9 @@ const gt::Check& find_check(const gt::CaseResult& result, const std::string& nam
   throw std::runtime_error("no check " + name);
 }
 
-gt::CaseResult run_case(const gt::PreparedTwin& prepared) {
+gt::SteppedTwin& stepped(gt::PreparedTwin& prepared) { return std::get<gt::SteppedTwin>(prepared.kind); }
+
+gt::CaseResult run_case(gt::PreparedTwin prepared) {
   gt::RunOptions options;
   options.cpu_reps = 0;
   options.gpu_reps = 0;
@@ -192,46 +198,55 @@ gt::CaseResult run_case(const gt::PreparedTwin& prepared) {
   options.report_dir = std::filesystem::path(::testing::TempDir()) / "thermal_shadow_test";
   gt::CaseResult result;
   result.name = "thermal_shadow_test";
-  gt::run_field_twin(prepared.twin, prepared.input, nlohmann::json(), options, result);
+  gt::run_stepped_case(stepped(prepared), nlohmann::json(), options, result);
+  prepared.extra_checks(nlohmann::json(), options, result);
   return result;
 }
 
-class ThermalFieldTwinShadow : public gt::testing::GlTest {};
+class ThermalSteppedShadow : public gt::testing::GlTest {};
 
-TEST_F(ThermalFieldTwinShadow, ShadowChecksPassForBothTwins) {
+TEST_F(ThermalSteppedShadow, ShadowChecksPassForBothTwins) {
   for (const char* name : {"erosion.thermal", "erosion.thermal_jako"}) {
     SCOPED_TRACE(name);
     const auto result = run_case(prepare(name, {{"iterations", 12}, {"talus_angle", 35.0}}, small_cone()));
     EXPECT_TRUE(result.error.empty()) << result.error;
-    for (const char* check : {"parity.shadow.max_abs.gpu_vs_float", "parity.shadow.max_abs_multi.gpu_vs_float",
-                              "mass.moved_first_iteration.cpu", "determinism.gpu"}) {
+    for (const char* check : {"parity.shadow.terrain.gpu_vs_float", "parity.shadow.terrain.multi.gpu_vs_float",
+                              "mass.moved_first_iteration.cpu", "mass.relative_drift.gpu", "determinism.gpu"}) {
       EXPECT_EQ(find_check(result, check).status, gt::Outcome::pass) << check << ": " << find_check(result, check).detail;
     }
   }
 }
 
-// The same twin whose GPU result is off by 1 mm in one cell whenever it is read.
-TEST_F(ThermalFieldTwinShadow, ShadowCheckFailsForAGpuThatIsOff) {
+// A GPU stepper whose state is off by 1 mm in one cell whenever it is read.
+class OffByAMillimetre : public gt::Stepper {
+ public:
+  explicit OffByAMillimetre(std::unique_ptr<gt::Stepper> gpu) : gpu_(std::move(gpu)) {}
+  void set_state(const gt::State& state, int done) override { gpu_->set_state(state, done); }
+  void update(int count) override { gpu_->update(count); }
+  gt::State get_state() override {
+    auto state = gpu_->get_state();
+    state.fields[0][5] += 1e-3;
+    return state;
+  }
+
+ private:
+  std::unique_ptr<gt::Stepper> gpu_;
+};
+
+TEST_F(ThermalSteppedShadow, ShadowCheckFailsForAGpuThatIsOff) {
   auto prepared = prepare("erosion.thermal", {{"iterations", 12}, {"talus_angle", 35.0}}, small_cone());
-  const auto make_gpu = prepared.twin.make_gpu;
-  prepared.twin.make_gpu = [make_gpu] {
-    auto runner = make_gpu();
-    runner.result = [result = runner.result] {
-      auto heights = result();
-      heights.values[5] += 1e-3f;
-      return heights;
-    };
-    return runner;
+  const auto make_gpu = stepped(prepared).make_gpu;
+  stepped(prepared).make_gpu = [make_gpu]() -> std::unique_ptr<gt::Stepper> {
+    return std::make_unique<OffByAMillimetre>(make_gpu());
   };
-  EXPECT_EQ(find_check(run_case(prepared), "parity.shadow.max_abs.gpu_vs_float").status, gt::Outcome::fail);
+  EXPECT_EQ(find_check(run_case(prepared), "parity.shadow.terrain.gpu_vs_float").status, gt::Outcome::fail);
 }
 
-TEST(ThermalFieldTwin, RefusesATwinThatIsNeitherGeneratedNorSteppable) {
+TEST(ThermalSteppedTwin, RefusesAStartStateOfAnotherShape) {
   auto prepared = prepare("erosion.thermal", {{"iterations", 2}}, small_cone());
-  prepared.twin.stepping.reset();
+  stepped(prepared).initial.fields.clear();
   gt::CaseResult result;
-  EXPECT_THROW(gt::run_field_twin(prepared.twin, prepared.input, nlohmann::json(), gt::RunOptions{}, result),
-               std::logic_error);
+  EXPECT_THROW(gt::run_stepped_case(stepped(prepared), nlohmann::json(), gt::RunOptions{}, result), std::logic_error);
 }
 
 }  // namespace

@@ -91,10 +91,10 @@ DropletTwin make_twin(const nlohmann::json& resolved, const Heightmap& given) {
 
 PreparedTwin prepare_beyer(const nlohmann::json& resolved, const LoadedInput& input) {
   PreparedTwin prepared;
-  prepared.run = [twin = make_twin(resolved, input.heights)](const nlohmann::json& expect, const RunOptions& options,
+  prepared.kind = CaseRun([twin = make_twin(resolved, input.heights)](const nlohmann::json& expect, const RunOptions& options,
                                                             CaseResult& result) {
     run_droplet_case(twin, expect, options, result);
-  };
+  });
   return prepared;
 }
 
@@ -125,8 +125,7 @@ Algorithm beyer_algorithm() {
           .source = "seed 000 §2.7, eqs. 2.35-2.45 (digest 000 §3.7, Appendix B item 6)",
           .params = &beyer_param_specs(),
           .prepare = prepare_beyer,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .benchmark = benchmark_beyer,
           .expect_shape = descriptor_expect_shape(),
           // As erosion.particle's without colour and flow map: the same grids are kept; measured within

@@ -446,10 +446,10 @@ PreparedTwin prepare_block(Mesher mesher, const nlohmann::json& resolved, const 
     throw InputError("the cave meshes the seed's noise or a volume ({\"volume\": \"file.npy\"}), not a heightmap or a mesh");
   }
   PreparedTwin prepared;
-  prepared.run = [block = block_from_json(mesher, resolved, input), file = input.description](
+  prepared.kind = CaseRun([block = block_from_json(mesher, resolved, input), file = input.description](
                      const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     run_block(block, file, expect, options, result);
-  };
+  });
   return prepared;
 }
 
@@ -546,8 +546,7 @@ std::vector<Algorithm> cave_algorithms() {
        .params = &block_specs(Mesher::tetrahedra),
        .prepare = [](const nlohmann::json& resolved,
                      const LoadedInput& input) { return prepare_block(Mesher::tetrahedra, resolved, input); },
-       .iterates = false,
-       .has_field_twin = false,
+       .kind = CaseKind::custom,
        .ad_hoc_input = AdHocInput::optional_volume,
        .benchmark = benchmark_mesher,
        // Counted in reference/cave/marching_tetrahedra.cpp (meshing only, as the table times it) and
@@ -561,8 +560,7 @@ std::vector<Algorithm> cave_algorithms() {
        .params = &block_specs(Mesher::cubes),
        .prepare = [](const nlohmann::json& resolved,
                      const LoadedInput& input) { return prepare_block(Mesher::cubes, resolved, input); },
-       .iterates = false,
-       .has_field_twin = false,
+       .kind = CaseKind::custom,
        .ad_hoc_input = AdHocInput::optional_volume,
        .memory = block_memory},
   };

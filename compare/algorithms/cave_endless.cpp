@@ -403,9 +403,9 @@ PreparedTwin prepare_path(const nlohmann::json& resolved, const LoadedInput& inp
   Path path = path_from_json(resolved);
   check_path_fits(path);
   PreparedTwin prepared;
-  prepared.run = [path](const nlohmann::json&, const RunOptions& options, CaseResult& result) {
+  prepared.kind = CaseRun([path](const nlohmann::json&, const RunOptions& options, CaseResult& result) {
     run_path(path, options, result);
-  };
+  });
   return prepared;
 }
 
@@ -428,8 +428,7 @@ Algorithm cave_endless_algorithm() {
           .source = "seed 004 digest §2.7",
           .params = &endless_specs(),
           .prepare = prepare_path,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::none,
           .memory = path_memory};
 }

@@ -707,7 +707,7 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
 PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& input) {
   const LayeredSetup setup = layered_setup(resolved, input.heights);
   PreparedTwin prepared;
-  prepared.run = [setup](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+  prepared.kind = CaseRun([setup](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     result.notes.push_back(fmt::format(
         "initial profile in every column, top down: {} m topsoil and {} m subsoil of {}, {} m soft rock (type 0), "
         "{} m hard rock (type 1); vegetation {}",
@@ -727,7 +727,7 @@ PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& 
                           params.regolith_depth)
             : "no water given (initial_water, rain_rate and river all off): the water processes do not run");
     run_layered_case(setup, expect, options, result);
-  };
+  });
   return prepared;
 }
 
@@ -835,8 +835,7 @@ Algorithm layered_algorithm() {
           .source = "seed 001 §3.1, §3.3–3.5, §3.10–3.17, §3.19, §4 (eq. 2.1–2.7, 3.1–3.12)",
           .params = &layered_case_param_specs(),
           .prepare = prepare_layered,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .benchmark = benchmark_layered,
           .expect_shape = {{"at_rest", true}},
           // The double state (5·2 components, 2 bedrock layers, types, surface, vegetation: ~112 B),

@@ -67,9 +67,9 @@ void run_mesh_check(const Mesh& mesh, const nlohmann::json& expect, const RunOpt
 PreparedTwin prepare_mesh_check(const nlohmann::json&, const LoadedInput& input) {
   if (!input.mesh) throw InputError("mesh.check needs a mesh input: {\"mesh\": \"path.off\"}");
   PreparedTwin prepared;
-  prepared.run = [mesh = *input.mesh](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+  prepared.kind = CaseRun([mesh = *input.mesh](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     run_mesh_check(mesh, expect.is_object() ? expect : nlohmann::json::object(), options, result);
-  };
+  });
   return prepared;
 }
 
@@ -86,8 +86,7 @@ Algorithm mesh_check_algorithm() {
           .source = "issue 5: check-mesh; data-sources.md meshes",
           .params = &no_params(),
           .prepare = prepare_mesh_check,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::mesh,
           .expect_shape = {{"watertight", nullptr}, {"closed", nullptr}, {"genus", nullptr}, {"euler", nullptr},
                            {"border_edges", nullptr}, {"self_intersections", nullptr}},

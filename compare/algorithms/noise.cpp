@@ -520,11 +520,9 @@ PreparedTwin prepare_noise(NoiseBasis basis, Fractal fractal, const nlohmann::js
   if (input.size() == 0) throw InputError("a noise case samples the grid of its input: give {\"generator\": \"flat\", ...}");
   check_grid_fits(input.width, input.height, 32, "noise grid");
   const NoiseParams params = noise_params_from_json(basis, fractal, resolved, input.width, input.height);
-  PreparedTwin prepared;
-  prepared.input = input;
-  FieldTwin& twin = prepared.twin;
-  twin.conserves_mass = false;
-  twin.generated = terrain_bounds(params);
+  GeneratedCase generated{.grid = input};
+  FieldTwin& twin = generated.twin;
+  twin.bounds = terrain_bounds(params);
   twin.reference_double = [params, input](const Grid<double>&) {
     return as_terrain(reference::noise_field<double>(params, params.sampling.origin), params, input);
   };
@@ -536,6 +534,7 @@ PreparedTwin prepare_noise(NoiseBasis basis, Fractal fractal, const nlohmann::js
     return GpuFieldRunner{[](const Grid<float>&) {}, [field] { field->run(); },
                           [field, params, input] { return as_terrain(field->result(), params, input); }};
   };
+  PreparedTwin prepared{.kind = std::move(generated)};
   prepared.extra_checks = [params](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     add_distribution_checks(params, reference::noise_field<double>(params, params.sampling.origin), result);
     add_gradient_check(params, result);
@@ -610,7 +609,7 @@ std::vector<Algorithm> noise_algorithms() {
                     .prepare = [entry](const nlohmann::json& resolved, const LoadedInput& input) {
                       return prepare_noise(entry.basis, entry.fractal, resolved, input.heights);
                     },
-                    .iterates = false,
+                    .kind = CaseKind::generated,
                     // Counted in reference/noise/noise_field.cpp and gpu/noise/noise_field.cpp.
                     .traffic = {.cpu = 16.0, .gpu = 4.0},
                     .peers = noise_peers(entry),

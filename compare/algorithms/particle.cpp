@@ -483,13 +483,13 @@ std::vector<BenchmarkRow> benchmark_particle(const BenchmarkOptions& options, bo
 
 PreparedTwin prepare_particle(const nlohmann::json& resolved, const LoadedInput& input) {
   PreparedTwin prepared;
-  prepared.run = [scenario = make_scenario(resolved, input.heights)](const nlohmann::json& expect,
+  prepared.kind = CaseRun([scenario = make_scenario(resolved, input.heights)](const nlohmann::json& expect,
                                                                      const RunOptions& options, CaseResult& result) {
     const Grid<float> eroded = run_droplet_case(scenario.twin, expect, options, result);
     add_droplet_spec(scenario, expect, result);
     if (scenario.colour) add_colour_checks(scenario, options, result);
     if (scenario.flow) add_flow_checks(*scenario.flow, eroded, options, result);
-  };
+  });
   return prepared;
 }
 
@@ -508,8 +508,7 @@ Algorithm particle_algorithm() {
           .source = "seed 000 §4.4.1, Algorithms 4-7, eqs. 4.5-4.6, Appendix A (digest 000 §4.4)",
           .params = &particle_param_specs(),
           .prepare = prepare_particle,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .benchmark = benchmark_particle,
           .expect_shape = particle_expect_shape(),
           // The input and ref<double> with its two side maps (5 doubles), ref<float> with up to 16

@@ -910,9 +910,9 @@ PreparedTwin prepare_planet(const nlohmann::json& resolved, const LoadedInput& i
   std::optional<ReferenceRelief> given;
   if (input.global_grid) given = reference_relief(*input.global_grid, input.description);
   PreparedTwin prepared;
-  prepared.run = [params, given](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+  prepared.kind = CaseRun([params, given](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     run_planet(params, given, expect, options, result);
-  };
+  });
   return prepared;
 }
 
@@ -1015,8 +1015,7 @@ Algorithm planet_algorithm() {
           .source = "seed 002 digest §4.4, §9 (eq. 5.1–5.3, Algorithm 3)",
           .params = &planet_param_specs(),
           .prepare = prepare_planet,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::optional_global_grid,
           .benchmark = benchmark_planet,
           .expect_shape = {{"earth_like", true}},

@@ -313,12 +313,12 @@ PreparedTwin prepare_render(const nlohmann::json& resolved, const LoadedInput& i
   reference::require_visible_from_above(mesh);
   RenderCase render{mesh, resolved.at("width"), resolved.at("height"), resolved.at("subpixel_bits"), tent};
   PreparedTwin prepared;
-  prepared.run = [render = std::move(render), file = tent ? std::string("the probe tent (render_probe.hpp)")
+  prepared.kind = CaseRun([render = std::move(render), file = tent ? std::string("the probe tent (render_probe.hpp)")
                                                           : input.description](const nlohmann::json&,
                                                                                const RunOptions& options,
                                                                                CaseResult& result) {
     run_render(render, file, options, result);
-  };
+  });
   return prepared;
 }
 
@@ -330,8 +330,7 @@ Algorithm render_heightmap_algorithm() {
           .source = "seed 000 §4.3 (digest 000_water_erosion.md), eqs. 4.1–4.4; issue 6",
           .params = &render_specs(),
           .prepare = prepare_render,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::mesh,
           // Measured 54 B a texel (cow, 2048² vs 512²); triangles as render.phong's.
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {

@@ -281,12 +281,12 @@ PreparedTwin prepare_phong(const nlohmann::json& resolved, const LoadedInput& in
   std::string description = input.description;
   PhongCase phong = prepared_case(resolved, input, description);
   PreparedTwin prepared;
-  prepared.run = [phong = std::move(phong), file = std::move(description)](const nlohmann::json&,
+  prepared.kind = CaseRun([phong = std::move(phong), file = std::move(description)](const nlohmann::json&,
                                                                             const RunOptions& options,
                                                                             CaseResult& result) {
     run_phong_twins(phong.scene, phong.subpixel_bits, phong.min_covered_share, file, options, result,
                     phong.quad_spec ? quad_spec(phong.scene) : RenderedImageSpec{});
-  };
+  });
   return prepared;
 }
 
@@ -300,8 +300,7 @@ Algorithm render_phong_algorithm() {
                     "colour strip by solid Perlin noise, moss, bump mapping; issue 6",
           .params = &phong_specs(),
           .prepare = prepare_phong,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::mesh,
           // Measured 79 B a pixel (bunny00, 1024² vs 256²) and 330 B a triangle (bunny00 vs cow);
           // the generated cave is meshed first: as cave.marching_tetrahedra, 6000 B a lattice sample.

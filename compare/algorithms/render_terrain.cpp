@@ -350,9 +350,9 @@ PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& 
   terrain.input = fmt::format("{}{}, solid of {} triangles", input.description,
                               erode == "none" ? "" : ", after " + erode + " erosion", solid.mesh.triangles.size());
   PreparedTwin prepared;
-  prepared.run = [terrain = std::move(terrain)](const nlohmann::json&, const RunOptions& options, CaseResult& result) {
+  prepared.kind = CaseRun([terrain = std::move(terrain)](const nlohmann::json&, const RunOptions& options, CaseResult& result) {
     run_terrain(terrain, options, result);
-  };
+  });
   return prepared;
 }
 
@@ -364,8 +364,7 @@ Algorithm render_terrain_algorithm() {
           .source = "issue 6 (terrain look before/after erosion); seed 004 §2.9 shading; seed 000 §4.4.3 thermal erosion; seed 001's layered ground and its surface material (erode = layered, drape = material)",
           .params = &terrain_specs(),
           .prepare = prepare_terrain,
-          .iterates = false,
-          .has_field_twin = false,
+          .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::heightmap,
           // Measured 2316 B a height cell (1024² vs 256² input: the closed solid, two triangles a
           // cell, and its checks) and 16 B a pixel (1024² vs 256² image).

@@ -1,17 +1,23 @@
 // The driver's view of the two thermal-erosion models: parameters to constants, the three
-// versions (ref<double>, ref<float>, GPU) as steppable field twins, the error model's count of
-// rounded additions, and each model's first iteration written on the host as a spec of the
-// transfer (the ledger mass.moved_first_iteration.cpu of compare/field_twin.cpp).
+// versions (ref<double>, ref<float>, GPU) as stepped twins of one field, terrain (compare/
+// stepped_case.hpp runs them), the error model's count of rounded additions, and each model's
+// first iteration written on the host as a spec of the transfer (mass.moved_first_iteration.cpu).
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/algorithms/thermal_specs.hpp"
 #include "compare/case_descriptors.hpp"
+#include "compare/checks/error_model.hpp"
+#include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/height_stepper.hpp"
 #include "core/errors.hpp"
 #include "core/params/thermal.hpp"
 #include "gpu/erosion/thermal.hpp"
@@ -22,17 +28,6 @@
 namespace gt {
 namespace {
 
-// The GPU object lives as long as the runner's closures.
-GpuFieldRunner field_runner(std::shared_ptr<gpu::ThermalErosion> gpu) {
-  return {[gpu](const Grid<float>& heights) { gpu->load(heights); }, [gpu] { gpu->run(); },
-          [gpu] { return gpu->result(); }, [gpu](int first, int count) { gpu->step(first, count); }};
-}
-
-GpuFieldRunner field_runner(std::shared_ptr<gpu::ThermalJakoErosion> gpu) {
-  return {[gpu](const Grid<float>& heights) { gpu->load(heights); }, [gpu] { gpu->run(); },
-          [gpu] { return gpu->result(); }, [gpu](int, int count) { gpu->step(count); }};
-}
-
 // For the specs below, written here apart from either twin: a pipe's offset to its neighbour, and
 // whether a cell takes part (inside the grid and not masked).
 struct Offset {
@@ -42,10 +37,8 @@ struct Offset {
 
 bool takes_part(const Grid<double>& heights, int x, int y) { return heights.inside(x, y) && heights.is_valid(x, y); }
 
-// Seed 000's first iteration (Algorithms 9-11) on the host in double, visiting each pair of
-// neighbours once (the twins visit each cell's four pipes): requests by Algorithm 10, then across
-// each pipe the smaller of two opposite requests moves (Algorithm 11). Iteration 0 uses the
-// cardinal pipes unless the neighbourhood is diagonal.
+}  // namespace
+
 Grid<double> hydra_first_iteration(const Grid<double>& heights, const ThermalConstants& constants,
                                    Neighbourhood neighbourhood) {
   const bool cardinal = neighbourhood != Neighbourhood::diagonal;
@@ -101,9 +94,6 @@ Grid<double> hydra_first_iteration(const Grid<double>& heights, const ThermalCon
   return after;
 }
 
-// Jákó & Tóth's first iteration (eqs. 2.30-2.34 as decided in reference/erosion/thermal_jako.cpp)
-// on the host in double, sending each outflow to its neighbour as it is computed: A = the lower
-// neighbours beyond T·l, ΔS = rate·H/2 with H the largest drop in A, shared by the drops.
 Grid<double> jako_first_iteration(const Grid<double>& heights, const ThermalConstants& constants) {
   const std::array<Offset, 8> offsets{{{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
   Grid<double> after = heights;
@@ -131,6 +121,9 @@ Grid<double> jako_first_iteration(const Grid<double>& heights, const ThermalCons
   return after;
 }
 
+namespace {
+
+
 // Spec vector of eq. 4.10 when a case asks for it: {"talus_eq_4_10": {"angle", "width",
 // "vertical_aspect", "value"}}; exact in double up to the rounding of tan (a few ulp).
 void add_talus_spec(const nlohmann::json& expect, const RunOptions&, CaseResult& result) {
@@ -146,70 +139,130 @@ void require_heightmap(const Heightmap& input, const char* algorithm) {
   if (input.size() == 0) throw InputError(fmt::format("{} erodes a heightmap: the case needs an input", algorithm));
 }
 
-PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& input) {
-  require_heightmap(input, "erosion.thermal");
+// What the two thermal models share as stepped twins: the state {terrain}, the shadow bound of the
+// same float arithmetic and the mass ledger, both from `additions_per_iteration` rounded additions
+// into a height an iteration (compare/checks/error_model.hpp).
+SteppedTwin thermal_twin(const std::string& algorithm, const Heightmap& input, int iterations,
+                         double additions_per_iteration) {
+  SteppedTwin twin{.algorithm = algorithm,
+                   .fields = {terrain_field(input.vertical_unit)},
+                   .initial = height_state(input),
+                   .iterations = iterations};
+  const FieldTotals totals = field_totals(input);
+  const double range = totals.high > totals.low ? totals.high - totals.low : 1.0;
+  const double magnitude = std::max(std::abs(totals.low), std::abs(totals.high)) / range;
+  twin.shadow_bounds = [=](const State&, int count) {
+    const Bounds bounds = parity_bounds_same_arithmetic(additions_per_iteration * count, magnitude);
+    // Relative to the input's height range: a bug that moves under 1 % of it in one iteration must
+    // still show, so a bound wider than that cannot tell (inconclusive).
+    return std::vector<ShadowBound>{
+        {.strict = bounds.strict * range,
+         .loose = bounds.loose * range,
+         .scale = range,
+         .tellable_share = 0.01,
+         .model = fmt::format("{}; {} additions per cell", bounds.model, additions_per_iteration * count)}};
+  };
+  const double additions = additions_per_iteration * iterations;
+  twin.ledger.push_back({"mass.relative_drift", [=](const LedgerRun& run) {
+    // The float twins round the input to float first: one rounding more.
+    const bool in_double = run.backend == "cpu";
+    const auto bounds = mass_drift_bounds(in_double ? unit_roundoff_double : unit_roundoff_float,
+                                          in_double ? additions : additions + 1.0, totals);
+    return bounded_check("", relative_mass_drift(heights_of<double>(run.initial), heights_of<double>(run.final)),
+                         bounds.strict, bounds.loose, bounds.model);
+  }});
+  return twin;
+}
+
+// The material the double reference moves in its first iteration from the input, against the
+// model's spec of that iteration written on the host (both ½Σ|h1 - h0|). Catches a transfer
+// misapplied in both twins (talus, rate, a side of the exchange), which the twins' agreement cannot.
+CaseRun moved_ledger(const Heightmap& input, int iterations, double additions_per_iteration,
+                     std::function<Grid<double>(const Grid<double>&)> reference_first,
+                     std::function<Grid<double>(const Grid<double>&)> spec_first) {
+  return [=](const nlohmann::json&, const RunOptions&, CaseResult& result) {
+    if (iterations < 1) return;
+    const double moved_spec = moved_material(input, spec_first(input));
+    const double moved_twin = moved_material(input, reference_first(input));
+    const std::string measured = fmt::format("moved {:.9g} where the spec (host, double) moves {:.9g}", moved_twin, moved_spec);
+    if (moved_spec == 0.0) {
+      result.checks.push_back(bounded_check("mass.moved_first_iteration.cpu", moved_twin, 0.0, std::nullopt,
+                                            measured + "; the spec moves nothing, so the twin must not"));
+      return;
+    }
+    const auto bounds = moved_ledger_bounds(additions_per_iteration, field_totals(input), moved_spec);
+    result.checks.push_back(bounded_check("mass.moved_first_iteration.cpu", std::abs(moved_twin - moved_spec) / moved_spec,
+                                          bounds.strict, std::nullopt,
+                                          fmt::format("relative to the spec's: {}; {}", measured, bounds.model)));
+  };
+}
+
+// Both the moved ledger and, when the case asks, eq. 4.10's spec vector.
+CaseRun both(CaseRun first, CaseRun second) {
+  return [=](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
+    first(expect, options, result);
+    second(expect, options, result);
+  };
+}
+
+PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& given) {
+  require_heightmap(given, "erosion.thermal");
   const ThermalParams params = thermal_params_from_json(resolved);
-  PreparedTwin prepared;
-  prepared.input = params.normalised ? normalise_heights(input) : input;
-  const ThermalConstants constants = thermal_constants(params, input);
-  FieldTwin& twin = prepared.twin;
-  twin.reference_double = [=](const Grid<double>& field) {
-    return reference::thermal_erosion(field, constants, params.iterations, params.neighbourhood);
-  };
-  twin.reference_float = [=](const Grid<float>& field) {
-    return reference::thermal_erosion(field, constants, params.iterations, params.neighbourhood);
-  };
-  twin.make_gpu = [=, width = input.width, height = input.height] {
-    return field_runner(std::make_shared<gpu::ThermalErosion>(width, height, constants, params.neighbourhood,
-                                                              params.iterations));
-  };
+  const Heightmap input = params.normalised ? normalise_heights(given) : given;
+  const ThermalConstants constants = thermal_constants(params, given);
+  const Neighbourhood neighbourhood = params.neighbourhood;
   constexpr double additions_per_iteration = 4.0;  // one per pipe (Algorithm 11)
-  twin.additions_per_cell = additions_per_iteration * params.iterations;
-  twin.stepping = FieldTwin::Stepping{
-      .iterations = params.iterations,
-      .additions_per_iteration = additions_per_iteration,
-      .reference_double = [=](const Grid<double>& state, int first, int count) {
-        return reference::thermal_erosion(state, constants, count, params.neighbourhood, first);
-      },
-      .reference_float = [=](const Grid<float>& state, int first, int count) {
-        return reference::thermal_erosion(state, constants, count, params.neighbourhood, first);
-      },
-      .first_iteration_spec = [=](const Grid<double>& heights) {
-        return hydra_first_iteration(heights, constants, params.neighbourhood);
-      }};
-  prepared.extra_checks = add_talus_spec;
-  return prepared;
+  SteppedTwin twin = thermal_twin("erosion.thermal", input, params.iterations, additions_per_iteration);
+  twin.reference_double = [=] {
+    return std::make_unique<HeightStepper<double>>([=](const Grid<double>& heights, int first, int count) {
+      return reference::thermal_erosion(heights, constants, count, neighbourhood, first);
+    });
+  };
+  twin.reference_float = [=] {
+    return std::make_unique<HeightStepper<float>>([=](const Grid<float>& heights, int first, int count) {
+      return reference::thermal_erosion(heights, constants, count, neighbourhood, first);
+    });
+  };
+  twin.make_gpu = [=, width = input.width, height = input.height]() -> std::unique_ptr<Stepper> {
+    auto gpu = std::make_shared<gpu::ThermalErosion>(width, height, constants, neighbourhood, params.iterations);
+    return std::make_unique<GpuHeightStepper>([gpu](const Grid<float>& heights) { gpu->load(heights); },
+                                              [gpu](int first, int count) { gpu->step(first, count); },
+                                              [gpu] { return gpu->result(); });
+  };
+  const CaseRun moved = moved_ledger(
+      input, params.iterations, additions_per_iteration,
+      [=](const Grid<double>& heights) { return reference::thermal_erosion(heights, constants, 1, neighbourhood, 0); },
+      [=](const Grid<double>& heights) { return hydra_first_iteration(heights, constants, neighbourhood); });
+  return {.kind = std::move(twin), .extra_checks = both(moved, add_talus_spec)};
 }
 
 PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightmap& input) {
   require_heightmap(input, "erosion.thermal_jako");
   const ThermalJakoParams params = thermal_jako_params_from_json(resolved);
   const ThermalConstants constants = thermal_jako_constants(params, input);
-  PreparedTwin prepared;
-  prepared.input = input;
-  FieldTwin& twin = prepared.twin;
-  twin.reference_double = [=](const Grid<double>& field) {
-    return reference::thermal_jako_erosion(field, constants, params.iterations);
-  };
-  twin.reference_float = [=](const Grid<float>& field) {
-    return reference::thermal_jako_erosion(field, constants, params.iterations);
-  };
-  twin.make_gpu = [=, width = input.width, height = input.height] {
-    return field_runner(std::make_shared<gpu::ThermalJakoErosion>(width, height, constants, params.iterations));
-  };
   constexpr double additions_per_iteration = 16.0;  // 8 outflows subtracted, 8 inflows added
-  twin.additions_per_cell = additions_per_iteration * params.iterations;
-  twin.stepping = FieldTwin::Stepping{
-      .iterations = params.iterations,
-      .additions_per_iteration = additions_per_iteration,
-      .reference_double = [=](const Grid<double>& state, int, int count) {
-        return reference::thermal_jako_erosion(state, constants, count);
-      },
-      .reference_float = [=](const Grid<float>& state, int, int count) {
-        return reference::thermal_jako_erosion(state, constants, count);
-      },
-      .first_iteration_spec = [=](const Grid<double>& heights) { return jako_first_iteration(heights, constants); }};
-  return prepared;
+  SteppedTwin twin = thermal_twin("erosion.thermal_jako", input, params.iterations, additions_per_iteration);
+  twin.reference_double = [=] {
+    return std::make_unique<HeightStepper<double>>([=](const Grid<double>& heights, int, int count) {
+      return reference::thermal_jako_erosion(heights, constants, count);
+    });
+  };
+  twin.reference_float = [=] {
+    return std::make_unique<HeightStepper<float>>([=](const Grid<float>& heights, int, int count) {
+      return reference::thermal_jako_erosion(heights, constants, count);
+    });
+  };
+  twin.make_gpu = [=, width = input.width, height = input.height]() -> std::unique_ptr<Stepper> {
+    auto gpu = std::make_shared<gpu::ThermalJakoErosion>(width, height, constants, params.iterations);
+    return std::make_unique<GpuHeightStepper>([gpu](const Grid<float>& heights) { gpu->load(heights); },
+                                              [gpu](int, int count) { gpu->step(count); },
+                                              [gpu] { return gpu->result(); });
+  };
+  const CaseRun moved = moved_ledger(
+      input, params.iterations, additions_per_iteration,
+      [=](const Grid<double>& heights) { return reference::thermal_jako_erosion(heights, constants, 1); },
+      [=](const Grid<double>& heights) { return jako_first_iteration(heights, constants); });
+  return {.kind = std::move(twin), .extra_checks = moved};
 }
 
 // The field's spec vectors plus add_talus_spec's eq. 4.10 vector.

@@ -1,0 +1,509 @@
+// The one runner of iterative twins; see stepped_case.hpp.
+#include "compare/stepped_case.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "compare/case_descriptors.hpp"
+#include "compare/checks/field.hpp"
+#include "compare/checks/threshold.hpp"
+#include "compare/field_files.hpp"
+#include "compare/report/images.hpp"
+#include "compare/report/plots.hpp"
+#include "compare/timing.hpp"
+#include "core/errors.hpp"
+#include "gpu/timing.hpp"
+
+namespace gt {
+namespace {
+
+void report_stage(const RunOptions& options, const std::string& what) {
+  if (options.progress != nullptr) options.progress->stage(what);
+}
+
+// The iterations after which a run's state is kept: the shadow starts, then the end of the run.
+std::vector<int> path_marks(const SteppedTwin& twin) {
+  std::vector<int> marks = shadow_starts(twin.iterations, twin.checkpoints);
+  if (marks.back() != twin.iterations) marks.push_back(twin.iterations);
+  return marks;
+}
+
+// The shadow step's first part (one iteration, none when the run has none) and its whole length.
+int shadow_first(const SteppedTwin& twin, int start) { return std::min(1, twin.iterations - start); }
+int shadow_length(const SteppedTwin& twin, int start) { return std::min(twin.shadow_length, twin.iterations - start); }
+
+// Distances of one field over its components and valid cells: the worst |a − b| (NaN or infinite
+// counts as infinite), the RMS and the values differing in any bit.
+struct Distance {
+  double max_abs = 0.0;
+  double rms = 0.0;
+  std::size_t differing = 0;
+};
+
+Distance distance(const SteppedTwin& twin, std::size_t field, const State& a, const State& b) {
+  Distance d;
+  double squares = 0.0;
+  std::size_t counted = 0;
+  for (int k = 0; k < twin.fields[field].components; ++k) {
+    const auto difference =
+        field_difference(component_grid(twin.fields, a, field, k), component_grid(twin.fields, b, field, k));
+    const double worst = std::isnan(difference.max_abs) ? std::numeric_limits<double>::infinity() : difference.max_abs;
+    d.max_abs = std::max(d.max_abs, worst);
+    const std::size_t cells = std::max<std::size_t>(1, a.grid.cells());
+    squares += difference.rms * difference.rms * static_cast<double>(cells);
+    counted += cells;
+    d.differing += difference.differing_bits;
+  }
+  d.rms = std::sqrt(squares / static_cast<double>(std::max<std::size_t>(1, counted)));
+  return d;
+}
+
+// A run from the start state through the marks: the states there (or only the last), its ledger.
+struct BackendRun {
+  std::vector<State> path;
+  std::vector<LedgerRecord> ledger;
+  const State& final() const { return path.back(); }
+};
+
+// Walks `stepper` from the start state through the marks; `at_mark(i, state)` sees each state, and
+// the path keeps them all or, with keep_path = false, the last alone.
+BackendRun walk(Stepper& stepper, const SteppedTwin& twin, bool keep_path,
+                const std::function<void(std::size_t, const State&)>& at_mark = {}) {
+  BackendRun run;
+  stepper.set_state(twin.initial, 0);
+  int done = 0;
+  const auto marks = path_marks(twin);
+  for (std::size_t i = 0; i < marks.size(); ++i) {
+    stepper.update(marks[i] - done);
+    done = marks[i];
+    State state = stepper.get_state();
+    if (at_mark) at_mark(i, state);
+    if (keep_path || i + 1 == marks.size()) run.path.push_back(std::move(state));
+  }
+  run.ledger = stepper.ledger();
+  return run;
+}
+
+// Median time of `reps` whole runs from the start state (the stepper already warm).
+double timed_runs(Stepper& stepper, const SteppedTwin& twin, int reps, double (*clock)(const std::function<void()>&)) {
+  std::vector<double> times;
+  for (int rep = 0; rep < reps; ++rep) {
+    stepper.set_state(twin.initial, 0);
+    times.push_back(clock([&] { stepper.update(twin.iterations); }));
+  }
+  return median(times);
+}
+
+// ref<double> through the marks, timed (its walk is the warm-up, or with time_walks the one run).
+BackendRun run_double(const SteppedTwin& twin, const RunOptions& options, CaseResult& result) {
+  report_stage(options, "cpu reference (double)");
+  auto stepper = twin.reference_double();
+  if (twin.time_walks) {
+    BackendRun run;
+    result.timings.cpu_ms = cpu_wall_ms([&] { run = walk(*stepper, twin, true); });
+    result.timings.cpu_reps = 1;
+    return run;
+  }
+  BackendRun run = walk(*stepper, twin, true);
+  if (options.cpu_reps > 0) {
+    result.timings.cpu_ms = timed_runs(*stepper, twin, options.cpu_reps, cpu_wall_ms);
+    result.timings.cpu_reps = options.cpu_reps;
+  }
+  return run;
+}
+
+// Every value of every field, compared bit for bit.
+std::size_t differing_values(const State& a, const State& b) {
+  std::size_t differing = 0;
+  for (std::size_t f = 0; f < a.fields.size(); ++f) {
+    for (std::size_t i = 0; i < a.fields[f].size(); ++i) {
+      const double x = a.fields[f][i], y = b.fields[f][i];
+      if (std::memcmp(&x, &y, sizeof x) != 0) ++differing;
+    }
+  }
+  return differing;
+}
+
+// The worst shadow distance of one field over the checkpoints, against its bound there.
+struct ShadowWorst {
+  double distance = 0.0;
+  ShadowBound bound;
+  double ratio = -1.0;
+  int checkpoint = 0;
+  std::size_t differing = 0;
+  int count = 0;      // iterations of the longest such shadow step
+  double scale = 0.0;  // the field's largest own size over the checkpoints
+};
+
+void keep_worst(ShadowWorst& worst, const Distance& d, const ShadowBound& bound, int checkpoint, int count) {
+  worst.differing += d.differing;
+  worst.count = std::max(worst.count, count);
+  worst.scale = std::max(worst.scale, bound.scale);
+  const double limit = bound.loose.value_or(bound.strict);
+  const double ratio = !std::isfinite(d.max_abs) || (limit <= 0.0 && d.max_abs > 0.0)
+                           ? std::numeric_limits<double>::infinity()
+                           : (limit > 0.0 ? d.max_abs / limit : 0.0);
+  if (ratio > worst.ratio) {
+    worst.distance = d.max_abs;
+    worst.bound = bound;
+    worst.ratio = ratio;
+    worst.checkpoint = checkpoint;
+  }
+}
+
+// What the GPU half measures: its run, its distance from ref<double> at each mark (per field), the
+// worst shadow steps per field (one iteration and shadow_length).
+struct GpuRun {
+  BackendRun run;
+  std::vector<std::vector<double>> from_double;  // [mark][field]
+  std::vector<ShadowWorst> one, multi;
+};
+
+// From ref<float>'s state at each checkpoint the GPU and a fresh ref<float> step side by side;
+// the distances are kept, the states dropped.
+void shadow_steps(const SteppedTwin& twin, const BackendRun& float_run, Stepper& gpu, GpuRun& measured) {
+  const auto starts = shadow_starts(twin.iterations, twin.checkpoints);
+  auto reference = twin.reference_float();
+  measured.one.assign(twin.fields.size(), {});
+  measured.multi.assign(twin.fields.size(), {});
+  const auto compare = [&](std::vector<ShadowWorst>& worst, const State& from, int start, int count) {
+    const State expected = reference->get_state();
+    const State got = gpu.get_state();
+    const std::vector<ShadowBound> bounds = twin.shadow_bounds(from, count);
+    if (bounds.size() != twin.fields.size()) {
+      throw std::logic_error(fmt::format("{}: {} shadow bounds for {} declared fields", twin.algorithm, bounds.size(),
+                                         twin.fields.size()));
+    }
+    for (std::size_t f = 0; f < twin.fields.size(); ++f) {
+      keep_worst(worst[f], distance(twin, f, expected, got), bounds[f], start, count);
+    }
+  };
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const State& from = float_run.path[k];
+    const int first = shadow_first(twin, starts[k]);
+    const int length = shadow_length(twin, starts[k]);
+    for (Stepper* stepper : {reference.get(), &gpu}) {
+      stepper->set_state(from, starts[k]);
+      stepper->update(first);
+    }
+    compare(measured.one, from, starts[k], first);
+    for (Stepper* stepper : {reference.get(), &gpu}) stepper->update(length - first);
+    compare(measured.multi, from, starts[k], length);
+  }
+}
+
+// The GPU through the marks (measured against ref<double> there), a second run in one go
+// (determinism), the shadow steps, then the timed runs.
+GpuRun run_gpu(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run, const RunOptions& options,
+               CaseResult& result) {
+  report_stage(options, "gpu");
+  auto stepper = twin.make_gpu();
+  GpuRun measured;
+  measured.run = walk(*stepper, twin, false, [&](std::size_t i, const State& state) {
+    std::vector<double> distances;
+    for (std::size_t f = 0; f < twin.fields.size(); ++f) distances.push_back(distance(twin, f, truth.path[i], state).max_abs);
+    measured.from_double.push_back(std::move(distances));
+  });
+  stepper->set_state(twin.initial, 0);
+  stepper->update(twin.iterations);
+  result.checks.push_back(bounded_check(
+      "determinism.gpu", static_cast<double>(differing_values(measured.run.final(), stepper->get_state())), 0.0,
+      std::nullopt,
+      "values of any field whose bits differ between two GPU runs of the same start state (the first stepped through "
+      "the checkpoints, the second in one go)"));
+  report_stage(options, "gpu shadow steps");
+  shadow_steps(twin, float_run, *stepper, measured);
+  const int reps = twin.time_walks ? 1 : options.gpu_reps;
+  if (reps == 0) return measured;
+  auto timed = twin.make_timed_gpu ? twin.make_timed_gpu() : std::move(stepper);
+  timed->set_state(twin.initial, 0);
+  if (!twin.time_walks) timed->update(twin.iterations);  // warm-up
+  result.timings.gpu_ms = timed_runs(*timed, twin, reps, gpu_wall_ms);
+  result.timings.gpu_reps = reps;
+  return measured;
+}
+
+Check shadow_check(const std::string& name, const ShadowWorst& worst, const std::string& unit, const std::string& from) {
+  const std::string exact = worst.differing == 0 ? "bit for bit at every checkpoint; "
+                                                 : fmt::format("{} values differ in some bit; ", worst.differing);
+  const std::string detail = fmt::format(
+      "{}{}, {} iteration(s) beside it: max |gpu - ref<float>| in {}, worst against its bound at the checkpoint after "
+      "iteration {}; {}",
+      exact, from, worst.count, unit, worst.checkpoint, worst.bound.model);
+  if (!worst.bound.graded) {
+    return informative_check(name, worst.distance,
+                             detail + fmt::format("; the model's bound there, {:.3g}, is too wide to grade", worst.bound.strict));
+  }
+  // Whether the bound can tell is judged against the field's largest size over the run's
+  // checkpoints (a dry start has no water to measure a share of).
+  return decisive_check(name, worst.distance, worst.bound.strict, worst.bound.loose, worst.scale,
+                        worst.bound.tellable_share, detail);
+}
+
+void add_shadow_checks(const SteppedTwin& twin, const GpuRun& gpu, CaseResult& result) {
+  const auto starts = shadow_starts(twin.iterations, twin.checkpoints);
+  const std::string from = fmt::format("GPU loaded with ref<float>'s state at {} checkpoints (after iterations {})",
+                                       starts.size(), fmt::join(starts, ", "));
+  for (std::size_t f = 0; f < twin.fields.size(); ++f) {
+    const FieldDecl& field = twin.fields[f];
+    result.checks.push_back(shadow_check(fmt::format("parity.shadow.{}.gpu_vs_float", field.name), gpu.one[f], field.unit, from));
+    result.checks.push_back(
+        shadow_check(fmt::format("parity.shadow.{}.multi.gpu_vs_float", field.name), gpu.multi[f], field.unit, from));
+  }
+}
+
+// exp of the least-squares slope of ln y over x, over the points with 0 < y < inf: the factor by
+// which y grows per unit of x. Empty with fewer than two such points at different x.
+std::optional<double> fitted_growth(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<std::pair<double, double>> points;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (y[i] > 0.0 && std::isfinite(y[i])) points.emplace_back(x[i], std::log(y[i]));
+  }
+  if (points.size() < 2) return std::nullopt;
+  double mean_x = 0.0, mean_y = 0.0;
+  for (const auto& [px, py] : points) mean_x += px, mean_y += py;
+  mean_x /= static_cast<double>(points.size());
+  mean_y /= static_cast<double>(points.size());
+  double sxy = 0.0, sxx = 0.0;
+  for (const auto& [px, py] : points) sxy += (px - mean_x) * (py - mean_y), sxx += (px - mean_x) * (px - mean_x);
+  if (sxx == 0.0) return std::nullopt;
+  return std::exp(sxy / sxx);
+}
+
+const std::string end_of_run_detail =
+    "at the end of the run; informative: over a run the method amplifies rounding differences by an amount not known "
+    "before it (verdicts: parity.shadow.*)";
+
+void add_end_pair(const SteppedTwin& twin, std::size_t f, const std::string& pair, const State& a, const State& b,
+                  CaseResult& result) {
+  const FieldDecl& field = twin.fields[f];
+  const Distance d = distance(twin, f, a, b);
+  const std::string exact = d.differing == 0 ? "bit-exact; " : fmt::format("{} values differ; ", d.differing);
+  result.checks.push_back(informative_check(fmt::format("parity.{}.max_abs.{}", field.name, pair), d.max_abs,
+                                            fmt::format("{}max |difference| in {} {}", exact, field.unit, end_of_run_detail)));
+  result.checks.push_back(informative_check(fmt::format("parity.{}.rms.{}", field.name, pair), d.rms,
+                                            fmt::format("RMS of the difference in {} {}", field.unit, end_of_run_detail)));
+}
+
+// Whole-run distances and how fast the float runs leave ref<double>, field by field, with a plot.
+void add_divergence(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run, const GpuRun* gpu,
+                    const RunOptions& options, CaseResult& result) {
+  constexpr double plotted_zero = 1e-18;
+  const auto marks = path_marks(twin);
+  SeriesPlot plot{.title = "Distance from ref<double> along the run",
+                  .x_label = "iteration",
+                  .y_label = "max |· - ref<double>| in the field's unit (exact zeros at 1e-18)",
+                  .log_y = true};
+  for (std::size_t f = 0; f < twin.fields.size(); ++f) {
+    const std::string& name = twin.fields[f].name;
+    add_end_pair(twin, f, "float_vs_double", truth.final(), float_run.final(), result);
+    if (gpu) {
+      add_end_pair(twin, f, "gpu_vs_float", float_run.final(), gpu->run.final(), result);
+      add_end_pair(twin, f, "gpu_vs_double", truth.final(), gpu->run.final(), result);
+    }
+    // The distance at mark i of a backend, from ref<double>.
+    const auto add_series = [&](const std::string& label, const std::string& backend,
+                                const std::function<double(std::size_t)>& at, bool dashed) {
+      Series series{.label = name + " " + label, .dashed = dashed, .group = name};
+      std::vector<double> distances;
+      for (std::size_t i = 0; i < marks.size(); ++i) {
+        const double d = at(i);
+        series.x.push_back(marks[i]);
+        series.y.push_back(std::max(d, plotted_zero));
+        distances.push_back(d);
+      }
+      const std::string check = fmt::format("parity.{}.growth_per_iteration.{}_vs_double", name, backend);
+      if (const auto growth = fitted_growth(series.x, distances)) {
+        result.checks.push_back(informative_check(
+            check, *growth,
+            fmt::format("factor per iteration of max |{} - ref<double>|, least squares of its log over {} checkpoints "
+                        "(iterations {}); informative",
+                        label, marks.size(), fmt::join(marks, ", "))));
+      } else {
+        result.checks.push_back(not_applicable_check(
+            check, "fewer than two checkpoints at which the distance is finite and above 0: no growth to fit"));
+      }
+      plot.series.push_back(std::move(series));
+    };
+    if (gpu) add_series("GPU", "gpu", [&](std::size_t i) { return gpu->from_double[i][f]; }, false);
+    add_series("ref<float>", "float",
+               [&](std::size_t i) { return distance(twin, f, truth.path[i], float_run.path[i]).max_abs; }, true);
+  }
+  attach_plot({plot}, options.report_dir, "parity.png",
+              "distance from ref<double> at the checkpoints, each field: GPU (solid), ref<float> (dashed)", result);
+}
+
+void add_ledger_checks(const SteppedTwin& twin, const BackendRun& run, const std::string& backend, CaseResult& result) {
+  for (const LedgerTerm& term : twin.ledger) {
+    Check check = term.evaluate({twin.initial, run.final(), run.ledger, backend});
+    check.name = term.check + "." + backend;
+    result.checks.push_back(std::move(check));
+  }
+}
+
+void add_artifact(CaseResult& result, const std::string& file, const std::string& caption) {
+  result.artifacts.push_back({result.name + "/" + file, "image", caption});
+}
+
+// The shown field before and after, the change and the GPU's difference from ref<float>, on the
+// input's colour scale; every other field at the end of ref<double>'s run.
+void write_pictures(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run,
+                    const BackendRun* gpu, const std::filesystem::path& folder, CaseResult& result) {
+  const std::size_t shown = twin.shown_field;
+  const std::string& unit = twin.fields[shown].unit;
+  const Grid<double> before = component_grid(twin.fields, twin.initial, shown, 0);
+  const Grid<double> after = component_grid(twin.fields, truth.final(), shown, 0);
+  const auto totals = field_totals(before);
+  const double exaggeration = write_height_image(before, totals.low, totals.high, folder / "before.png");
+  add_artifact(result, "before.png", "input");
+  write_height_image(after, totals.low, totals.high, folder / "after_cpu.png", exaggeration);
+  add_artifact(result, "after_cpu.png", "after, CPU reference (double)");
+  const auto change = write_difference_image(before, after, folder / "change_cpu.png");
+  add_artifact(result, "change_cpu.png",
+               fmt::format("after - before, CPU (red gain, blue loss; ±{:.3g} {})", change.scale_used, unit));
+  if (gpu) {
+    const Grid<double> gpu_after = component_grid(twin.fields, gpu->final(), shown, 0);
+    write_height_image(gpu_after, totals.low, totals.high, folder / "after_gpu.png", exaggeration);
+    add_artifact(result, "after_gpu.png", "after, GPU");
+    const auto disagreement = write_difference_image(component_grid(twin.fields, float_run.final(), shown, 0), gpu_after,
+                                                     folder / "gpu_vs_float.png");
+    add_artifact(result, "gpu_vs_float.png",
+                 fmt::format("GPU - reference (float) (±{:.3g} {})", disagreement.scale_used, unit));
+  }
+  for (std::size_t f = 0; f < twin.fields.size(); ++f) {
+    if (f == shown) continue;
+    const FieldDecl& field = twin.fields[f];
+    for (int k = 0; k < field.components; ++k) {
+      const Grid<double> values = component_grid(twin.fields, truth.final(), f, k);
+      const std::string label = component_label(field, k);
+      const auto drawn = write_difference_image(twin.initial.grid.blank(0.0, field.unit), values, folder / (label + "_cpu.png"));
+      add_artifact(result, label + "_cpu.png",
+                   fmt::format("{}, end of ref<double>'s run: white 0, red positive, blue negative, full at ±{:.3g} {}",
+                               field.meaning, drawn.scale_used, field.unit));
+    }
+  }
+}
+
+// Every component of every field, for the input and each backend's end state.
+void write_fields(const SteppedTwin& twin, const State& state, const std::string& backend, const std::string& when,
+                  const RunOptions& options, CaseResult& result) {
+  for (std::size_t f = 0; f < twin.fields.size(); ++f) {
+    const FieldDecl& field = twin.fields[f];
+    for (int k = 0; k < field.components; ++k) {
+      const std::string label = component_label(field, k);
+      write_field_files(component_grid(twin.fields, state, f, k),
+                        {fmt::format("{}_{}", label, backend), label, backend, field.unit,
+                         fmt::format("{}, {}", field.meaning, when)},
+                        options, result);
+    }
+  }
+}
+
+void write_artifacts(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run,
+                     const BackendRun* gpu, const RunOptions& options, CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  report_stage(options, "pictures");
+  const auto folder = options.report_dir / result.name;
+  std::filesystem::create_directories(folder);
+  write_pictures(twin, truth, float_run, gpu, folder, result);
+  write_fields(twin, twin.initial, "input", "the start state", options, result);
+  write_fields(twin, truth.final(), "cpu", "after the run, ref<double>", options, result);
+  write_fields(twin, float_run.final(), "cpu_float", "after the run, ref<float>", options, result);
+  if (gpu) write_fields(twin, gpu->final(), "gpu", "after the run, GPU", options, result);
+}
+
+void add_descriptors(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run,
+                     const BackendRun* gpu, const nlohmann::json& expect, const RunOptions& options,
+                     CaseResult& result) {
+  if (!case_describes_terrain(result)) return;
+  report_stage(options, "terrain descriptors");
+  const std::size_t shown = twin.shown_field;
+  const Grid<double> input = component_grid(twin.fields, twin.initial, shown, 0);
+  const Grid<double> cpu = component_grid(twin.fields, truth.final(), shown, 0);
+  const Grid<double> cpu_float = component_grid(twin.fields, float_run.final(), shown, 0);
+  const std::optional<Grid<double>> gpu_terrain =
+      gpu ? std::optional<Grid<double>>(component_grid(twin.fields, gpu->final(), shown, 0)) : std::nullopt;
+  add_case_descriptors({&input, &cpu, &cpu_float, gpu_terrain ? &*gpu_terrain : nullptr}, expect, options, result);
+}
+
+}  // namespace
+
+std::vector<int> shadow_starts(int iterations, int checkpoints) {
+  std::vector<int> starts;
+  const int count = std::clamp(iterations, 1, std::max(1, checkpoints));
+  for (int k = 0; k < count; ++k) {
+    starts.push_back(static_cast<int>(static_cast<long long>(k) * iterations / count));
+  }
+  return starts;
+}
+
+std::vector<std::string> gpu_check_names(const SteppedTwin& twin, const nlohmann::json& expect) {
+  std::vector<std::string> names = {"determinism.gpu"};
+  for (const LedgerTerm& term : twin.ledger) names.push_back(term.check + ".gpu");
+  for (const FieldDecl& field : twin.fields) {
+    names.push_back(fmt::format("parity.shadow.{}.gpu_vs_float", field.name));
+    names.push_back(fmt::format("parity.shadow.{}.multi.gpu_vs_float", field.name));
+  }
+  for (const auto& name : field_spec_names(expect, "gpu")) names.push_back(name);
+  for (const FieldDecl& field : twin.fields) {
+    for (const char* pair : {"gpu_vs_float", "gpu_vs_double"}) {
+      names.push_back(fmt::format("parity.{}.max_abs.{}", field.name, pair));
+      names.push_back(fmt::format("parity.{}.rms.{}", field.name, pair));
+    }
+    names.push_back(fmt::format("parity.{}.growth_per_iteration.gpu_vs_double", field.name));
+  }
+  return names;
+}
+
+void run_stepped_case(const SteppedTwin& twin, const nlohmann::json& expect, const RunOptions& options,
+                      CaseResult& result) {
+  check_state_decl(twin.fields, twin.algorithm);
+  check_state_shape(twin.fields, twin.initial, twin.algorithm + " start state");
+  result.width = twin.initial.grid.width;
+  result.height = twin.initial.grid.height;
+  const BackendRun truth = run_double(twin, options, result);
+  report_stage(options, "cpu reference (float)");
+  const BackendRun float_run = walk(*twin.reference_float(), twin, true);
+  std::optional<GpuRun> gpu;
+  std::string unavailable = options.gpu_unavailable_reason;
+  if (options.gpu_available) {
+    try {
+      gpu = run_gpu(twin, truth, float_run, options, result);
+    } catch (const std::exception& error) {
+      result.error = fmt::format("GPU twin failed: {}", error.what());
+      unavailable = result.error;
+      std::erase_if(result.checks, [](const Check& check) { return check.name == "determinism.gpu"; });
+    }
+  }
+  const BackendRun* gpu_run = gpu ? &gpu->run : nullptr;
+  add_ledger_checks(twin, truth, "cpu", result);
+  add_ledger_checks(twin, float_run, "cpu_float", result);
+  const std::size_t shown = twin.shown_field;
+  add_field_spec_checks(expect, component_grid(twin.fields, truth.final(), shown, 0), "cpu", result);
+  if (gpu) {
+    add_ledger_checks(twin, gpu->run, "gpu", result);
+    add_shadow_checks(twin, *gpu, result);
+    add_field_spec_checks(expect, component_grid(twin.fields, gpu->run.final(), shown, 0), "gpu", result);
+  } else {
+    for (const auto& name : gpu_check_names(twin, expect)) result.checks.push_back(skipped_check(name, unavailable));
+  }
+  add_divergence(twin, truth, float_run, gpu ? &*gpu : nullptr, options, result);
+  if (twin.plot_ledger) {
+    LedgerRecords records = {{"cpu", truth.ledger}, {"cpu_float", float_run.ledger}};
+    if (gpu) records.emplace_back("gpu", gpu->run.ledger);
+    twin.plot_ledger(records, options, result);
+  }
+  write_artifacts(twin, truth, float_run, gpu_run, options, result);
+  RunOptions described = options;
+  described.gpu_unavailable_reason = unavailable;
+  add_descriptors(twin, truth, float_run, gpu_run, expect, described, result);
+}
+
+}  // namespace gt

@@ -1,0 +1,130 @@
+// Every stepped algorithm of the registry against the stepper protocol (compare/stepper.hpp,
+// compare/stepped_case.hpp): its declared state has unique plain names, units and meanings; a run
+// exports every component of every declared field for the input and each backend; a run without a
+// GPU has `skip` for exactly the checks that a run with one adds, by the same names, and nothing else
+// differs. A new stepped algorithm joins these tests by its registry row alone.
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "compare/algorithm.hpp"
+#include "compare/inputs.hpp"
+#include "compare/stepped_case.hpp"
+#include "core/params.hpp"
+#include "tests/support/gl_test.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> stepped_algorithms() {
+  std::vector<std::string> names;
+  for (const gt::Algorithm& algorithm : gt::algorithms()) {
+    if (algorithm.kind == gt::CaseKind::stepped) names.push_back(algorithm.name);
+  }
+  return names;
+}
+
+// The algorithm's defaults on a small noisy cone, with a short run where it has a count to shorten.
+gt::PreparedTwin prepare(const std::string& name) {
+  const gt::Algorithm& algorithm = gt::find_algorithm(name);
+  nlohmann::json given = nlohmann::json::object();
+  for (const gt::ParamSpec& spec : *algorithm.params) {
+    if (spec.name == "iterations" || spec.name == "steps") given[spec.name] = 6;
+  }
+  const nlohmann::json cone = {{"generator", "cone"}, {"width", 20}, {"height", 16}, {"cell_size", 1.0},
+                               {"peak", 8.0},         {"noise", 0.3}, {"seed", 3}};
+  return algorithm.prepare(gt::resolve_params(name, *algorithm.params, given), gt::load_input(cone, nullptr, {}));
+}
+
+gt::CaseResult run(const std::string& name, bool gpu_available) {
+  gt::PreparedTwin prepared = prepare(name);
+  gt::RunOptions options;
+  options.cpu_reps = 0;
+  options.gpu_reps = 0;
+  options.gpu_available = gpu_available;
+  options.gpu_unavailable_reason = "no GL context (stepped_protocol_test)";
+  options.report_dir = fs::path(::testing::TempDir()) / "stepped_protocol_test" / (gpu_available ? "gpu" : "cpu");
+  gt::CaseResult result;
+  result.name = name;
+  result.algorithm = name;
+  gt::run_stepped_case(std::get<gt::SteppedTwin>(prepared.kind), nlohmann::json::object(), options, result);
+  if (prepared.extra_checks) prepared.extra_checks(nlohmann::json::object(), options, result);
+  return result;
+}
+
+class SteppedProtocol : public gt::testing::GlTestWithParam<std::string> {};
+
+TEST_P(SteppedProtocol, DeclaresEachFieldOnceWithAUnitAndAMeaning) {
+  const auto prepared = prepare(GetParam());
+  const auto& twin = std::get<gt::SteppedTwin>(prepared.kind);
+  ASSERT_FALSE(twin.fields.empty());
+  std::set<std::string> names;
+  for (const gt::FieldDecl& field : twin.fields) {
+    EXPECT_TRUE(names.insert(field.name).second) << field.name << " declared twice";
+    EXPECT_FALSE(field.unit.empty()) << field.name;
+    EXPECT_FALSE(field.meaning.empty()) << field.name;
+    EXPECT_GE(field.components, 1) << field.name;
+  }
+  EXPECT_NO_THROW(gt::check_state_decl(twin.fields, GetParam()));
+  EXPECT_NO_THROW(gt::check_state_shape(twin.fields, twin.initial, GetParam()));
+}
+
+TEST_P(SteppedProtocol, ExportsEveryDeclaredFieldForEveryBackend) {
+  const auto result = run(GetParam(), true);
+  ASSERT_TRUE(result.error.empty()) << result.error;
+  std::set<std::string> artifacts;
+  for (const auto& artifact : result.artifacts) artifacts.insert(artifact.path);
+  const auto prepared = prepare(GetParam());
+  const auto& twin = std::get<gt::SteppedTwin>(prepared.kind);
+  const fs::path folder = fs::path(::testing::TempDir()) / "stepped_protocol_test" / "gpu";
+  for (const gt::FieldDecl& field : twin.fields) {
+    for (int k = 0; k < field.components; ++k) {
+      for (const char* backend : {"input", "cpu", "cpu_float", "gpu"}) {
+        for (const char* extension : {".npy", ".exr"}) {
+          const std::string path = result.name + "/" + gt::component_label(field, k) + "_" + backend + extension;
+          EXPECT_TRUE(artifacts.contains(path)) << path << " is not among the artifacts";
+          EXPECT_TRUE(fs::is_regular_file(folder / path)) << path;
+        }
+      }
+    }
+  }
+}
+
+TEST_P(SteppedProtocol, ACpuOnlyRunSkipsExactlyTheChecksTheGpuRunAdds) {
+  const auto with_gpu = run(GetParam(), true);
+  const auto without = run(GetParam(), false);
+  ASSERT_TRUE(with_gpu.error.empty()) << with_gpu.error;
+  ASSERT_TRUE(without.error.empty()) << without.error;
+  std::set<std::string> gpu_run, skipped, ran;
+  for (const auto& check : with_gpu.checks) {
+    EXPECT_NE(check.status, gt::Outcome::skip) << check.name << ": " << check.detail;
+    EXPECT_TRUE(gpu_run.insert(check.name).second) << check.name << " twice in the GPU run";
+  }
+  for (const auto& check : without.checks) {
+    auto& into = check.status == gt::Outcome::skip ? skipped : ran;
+    EXPECT_TRUE(into.insert(check.name).second) << check.name << " twice in the CPU-only run";
+    if (check.status == gt::Outcome::skip) EXPECT_EQ(check.detail, "no GL context (stepped_protocol_test)");
+  }
+  std::set<std::string> added_by_gpu;
+  std::set_difference(gpu_run.begin(), gpu_run.end(), ran.begin(), ran.end(),
+                      std::inserter(added_by_gpu, added_by_gpu.begin()));
+  EXPECT_EQ(skipped, added_by_gpu);
+  EXPECT_TRUE(std::includes(gpu_run.begin(), gpu_run.end(), ran.begin(), ran.end()))
+      << "the CPU-only run has a check the GPU run lacks";
+  EXPECT_FALSE(skipped.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, SteppedProtocol, ::testing::ValuesIn(stepped_algorithms()),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '.', '_');
+                           return name;
+                         });
+
+}  // namespace
