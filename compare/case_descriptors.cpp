@@ -163,6 +163,14 @@ void attach_descriptor_plot(const std::vector<Described>& described, const RealT
 
 }  // namespace
 
+std::vector<std::string> descriptor_gpu_check_names(const nlohmann::json& expect) {
+  std::vector<std::string> names = {"parity.descriptors.gpu_vs_double"};
+  if (wants_fidelity(expect)) {
+    for (const auto& target : fidelity_targets()) names.push_back(fmt::format("fidelity.{}.gpu", target.descriptor));
+  }
+  return names;
+}
+
 void add_case_descriptors(const CaseTerrains& terrains, const nlohmann::json& expect, const RunOptions& options,
                           CaseResult& result) {
   const auto described = describe_all(terrains, result);
@@ -181,8 +189,6 @@ void add_case_descriptors(const CaseTerrains& terrains, const nlohmann::json& ex
   if (const auto* truth = find(described, "cpu")) {
     if (const auto* gpu = find(described, "gpu")) {
       result.checks.push_back(descriptor_parity("gpu_vs_double", truth->descriptors, gpu->descriptors));
-    } else if (!options.gpu_available) {
-      result.checks.push_back(skipped_check("parity.descriptors.gpu_vs_double", options.gpu_unavailable_reason));
     }
     if (const auto* cpu_float = find(described, "cpu_float")) {
       Check check = descriptor_parity("float_vs_double", truth->descriptors, cpu_float->descriptors);
@@ -193,16 +199,7 @@ void add_case_descriptors(const CaseTerrains& terrains, const nlohmann::json& ex
     }
     if (fidelity) add_fidelity_checks("cpu", truth->descriptors, result);
   }
-  if (fidelity) {
-    if (const auto* gpu = find(described, "gpu")) {
-      add_fidelity_checks("gpu", gpu->descriptors, result);
-    } else if (!options.gpu_available) {
-      for (const auto& target : fidelity_targets()) {
-        result.checks.push_back(
-            skipped_check(fmt::format("fidelity.{}.gpu", target.descriptor), options.gpu_unavailable_reason));
-      }
-    }
-  }
+  if (const auto* gpu = find(described, "gpu"); gpu && fidelity) add_fidelity_checks("gpu", gpu->descriptors, result);
   attach_descriptor_plot(described, real, options, result);
 }
 

@@ -55,13 +55,14 @@ bool case_describes_terrain(const CaseResult& result);
 // The keys of "expect" this adds: {"fidelity": true|false}.
 nlohmann::json descriptor_expect_shape();
 
+// The checks add_case_descriptors makes of a GPU terrain, by name: a caller whose GPU half did not
+// run adds them as `skip`.
+std::vector<std::string> descriptor_gpu_check_names(const nlohmann::json& expect);
+
 // Throws InputError when expect.fidelity is present and not true or false (`where` names the case).
 void check_descriptor_expect(const nlohmann::json& expect, const std::string& where);
 
 // Sets result.descriptors, adds the checks above and (with a report folder) descriptors.png.
-// Without a GPU (options.gpu_available false) the GPU's checks are `skip` with
-// options.gpu_unavailable_reason; a case whose GPU runs but gives no terrain to describe (a racing
-// droplet order) has none.
 void add_case_descriptors(const CaseTerrains& terrains, const nlohmann::json& expect, const RunOptions& options,
                           CaseResult& result);
 

@@ -338,6 +338,23 @@ void add_batch_distance(const DropletTwin& twin, const Grid<double>& truth, cons
                                             "correlation of the batch change with the sequential one"));
 }
 
+// The checks add_gpu_checks makes, by name: a CPU-only run has them as `skip`.
+std::vector<std::string> gpu_check_names(const DropletTwin& twin) {
+  if (twin.setup.ordering == DropletOrdering::race) {
+    std::vector<std::string> names = {"race.erosion_correlation.gpu_vs_float", "race.relative_rms.gpu_vs_float",
+                                      "race.material_moved_ratio.gpu_vs_float"};
+    for (const int spacing : race_spacings) {
+      names.push_back(fmt::format("race.relative_rms.spacing_{}.gpu_vs_float", spacing));
+    }
+    return names;
+  }
+  std::vector<std::string> names = {"determinism.gpu"};
+  if (twin.setup.ordering == DropletOrdering::disjoint) names.emplace_back("parity.shadow.max_abs.gpu_vs_float");
+  names.emplace_back("parity.shadow.cells_differing.gpu_vs_float");
+  names.emplace_back("parity.cells_differing.gpu_vs_float");
+  return names;
+}
+
 void add_gpu_checks(const DropletTwin& twin, const FloatRun& float_run, const RunOptions& options,
                     CaseResult& result, std::optional<Grid<float>>& gpu_heights) {
   GpuFieldRunner gpu = twin.make_gpu(twin.setup);
@@ -502,9 +519,7 @@ Grid<float> run_droplet_case(const DropletTwin& twin, const nlohmann::json& expe
     if (options.progress) options.progress->stage("GPU");
     add_gpu_checks(twin, float_run, options, result, gpu_heights);
   } else {
-    for (const char* name : {"parity.gpu", "determinism.gpu"}) {
-      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
-    }
+    for (const auto& name : gpu_check_names(twin)) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
   }
   write_pictures(twin, truth, gpu_heights, float_run.run.heights, options, result);
   if (options.progress) options.progress->stage("terrain descriptors");

@@ -191,10 +191,11 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& grid, const nlohmann
     const Grid<double> cpu_float = runs.cpu_float.cast<double>();
     const std::optional<Grid<double>> gpu_heights =
         gpu ? std::optional<Grid<double>>(gpu->first.cast<double>()) : std::nullopt;
-    RunOptions described = options;
-    described.gpu_unavailable_reason = unavailable;
-    add_case_descriptors({nullptr, &runs.cpu, &cpu_float, gpu_heights ? &*gpu_heights : nullptr}, expect, described,
+    add_case_descriptors({nullptr, &runs.cpu, &cpu_float, gpu_heights ? &*gpu_heights : nullptr}, expect, options,
                          result);
+    if (!gpu) {
+      for (const auto& name : descriptor_gpu_check_names(expect)) result.checks.push_back(skipped_check(name, unavailable));
+    }
   }
 }
 

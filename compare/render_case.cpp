@@ -64,6 +64,15 @@ OIIO::ImageBuf run_gpu(const reference::PhongScene& scene, const RunOptions& opt
   return rgb8_buffer(first.width, first.height, first.rgb);
 }
 
+}  // namespace
+
+std::vector<std::string> image_check_names() {
+  return {"image.psnr.gpu_vs_cpu", "image.share_beyond_tolerance_outside_edges.gpu_vs_cpu", "image.max_abs.gpu_vs_cpu",
+          "image.rms.gpu_vs_cpu", "image.share_beyond_tolerance.gpu_vs_cpu"};
+}
+
+namespace {
+
 void add_image_checks(const ImageDifference& plain, const NeighbourhoodComparison& tolerant, CaseResult& result) {
   result.checks.push_back(bounded_check(
       "image.psnr.gpu_vs_cpu", -plain.psnr_db, -phong_min_psnr_db, std::nullopt,
@@ -163,9 +172,8 @@ void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, doub
                                      scene.mesh.triangles.size()));
   const OIIO::ImageBuf cpu = run_reference(scene, subpixel_bits, min_covered_share, options, result, spec);
   if (!options.gpu_available) {
-    for (const char* name : {"image.gpu_vs_cpu", "determinism.gpu"}) {
-      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
-    }
+    for (const auto& name : image_check_names()) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    result.checks.push_back(skipped_check("determinism.gpu", options.gpu_unavailable_reason));
     compare_images_and_picture(cpu, nullptr, options, result);
     return;
   }

@@ -57,6 +57,10 @@ using RenderedImageSpec =
 void compare_rendered_images(int width, int height, const std::vector<std::uint8_t>& cpu_rgb,
                              const std::vector<std::uint8_t>* gpu_rgb, const RunOptions& options, CaseResult& result);
 
+// The image.* checks compare_rendered_images makes of a GPU image, by name: a caller without one
+// adds them as `skip`.
+std::vector<std::string> image_check_names();
+
 void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
                      const std::string& input, const RunOptions& options, CaseResult& result,
                      const RenderedImageSpec& spec = {});

@@ -431,6 +431,10 @@ void add_descriptors(const SteppedTwin& twin, const BackendRun& truth, const Bac
   const std::optional<Grid<double>> gpu_terrain =
       gpu ? std::optional<Grid<double>>(component_grid(twin.fields, gpu->final(), shown, 0)) : std::nullopt;
   add_case_descriptors({&input, &cpu, &cpu_float, gpu_terrain ? &*gpu_terrain : nullptr}, expect, options, result);
+  if (gpu) return;
+  for (const auto& name : descriptor_gpu_check_names(expect)) {
+    result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+  }
 }
 
 }  // namespace

@@ -1,18 +1,23 @@
 // Every stepped algorithm of the registry against the stepper protocol (compare/stepper.hpp,
 // compare/stepped_case.hpp): its declared state has unique plain names, units and meanings; a run
-// exports every component of every declared field for the input and each backend; a run without a
-// GPU has `skip` for exactly the checks that a run with one adds, by the same names, and nothing else
-// differs. A new stepped algorithm joins these tests by its registry row alone.
+// exports every component of every declared field for the input and each backend. And every
+// eroder, stepped or custom: a run without a GPU has `skip` for exactly the checks that a run with
+// one adds, by the same names, and nothing else differs (dEQP's checkSupport: the harness says
+// what did not run, under the name it would have had). A new algorithm joins these tests by its
+// registry row alone.
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <functional>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/field_twin.hpp"
 #include "compare/inputs.hpp"
 #include "compare/stepped_case.hpp"
 #include "core/params.hpp"
@@ -22,12 +27,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> stepped_algorithms() {
+std::vector<std::string> algorithms_where(const std::function<bool(const gt::Algorithm&)>& wanted) {
   std::vector<std::string> names;
   for (const gt::Algorithm& algorithm : gt::algorithms()) {
-    if (algorithm.kind == gt::CaseKind::stepped) names.push_back(algorithm.name);
+    if (wanted(algorithm)) names.push_back(algorithm.name);
   }
   return names;
+}
+
+std::vector<std::string> stepped_algorithms() {
+  return algorithms_where([](const gt::Algorithm& algorithm) { return algorithm.kind == gt::CaseKind::stepped; });
+}
+
+std::vector<std::string> eroders() {
+  return algorithms_where([](const gt::Algorithm& algorithm) { return algorithm.name.rfind("erosion.", 0) == 0; });
 }
 
 // The algorithm's defaults on a small noisy cone, with a short run where it has a count to shorten.
@@ -53,12 +66,21 @@ gt::CaseResult run(const std::string& name, bool gpu_available) {
   gt::CaseResult result;
   result.name = name;
   result.algorithm = name;
-  gt::run_stepped_case(std::get<gt::SteppedTwin>(prepared.kind), nlohmann::json::object(), options, result);
-  if (prepared.extra_checks) prepared.extra_checks(nlohmann::json::object(), options, result);
+  const nlohmann::json expect = nlohmann::json::object();
+  std::visit(
+      [&](const auto& kind) {
+        using Kind = std::decay_t<decltype(kind)>;
+        if constexpr (std::is_same_v<Kind, gt::GeneratedCase>) gt::run_field_twin(kind.twin, kind.grid, expect, options, result);
+        if constexpr (std::is_same_v<Kind, gt::SteppedTwin>) gt::run_stepped_case(kind, expect, options, result);
+        if constexpr (std::is_same_v<Kind, gt::CaseRun>) kind(expect, options, result);
+      },
+      prepared.kind);
+  if (prepared.extra_checks) prepared.extra_checks(expect, options, result);
   return result;
 }
 
 class SteppedProtocol : public gt::testing::GlTestWithParam<std::string> {};
+class GpuSkips : public gt::testing::GlTestWithParam<std::string> {};
 
 TEST_P(SteppedProtocol, DeclaresEachFieldOnceWithAUnitAndAMeaning) {
   const auto prepared = prepare(GetParam());
@@ -96,7 +118,7 @@ TEST_P(SteppedProtocol, ExportsEveryDeclaredFieldForEveryBackend) {
   }
 }
 
-TEST_P(SteppedProtocol, ACpuOnlyRunSkipsExactlyTheChecksTheGpuRunAdds) {
+TEST_P(GpuSkips, ACpuOnlyRunSkipsExactlyTheChecksTheGpuRunAdds) {
   const auto with_gpu = run(GetParam(), true);
   const auto without = run(GetParam(), false);
   ASSERT_TRUE(with_gpu.error.empty()) << with_gpu.error;
@@ -120,11 +142,13 @@ TEST_P(SteppedProtocol, ACpuOnlyRunSkipsExactlyTheChecksTheGpuRunAdds) {
   EXPECT_FALSE(skipped.empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, SteppedProtocol, ::testing::ValuesIn(stepped_algorithms()),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '.', '_');
-                           return name;
-                         });
+std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string name = info.param;
+  std::replace(name.begin(), name.end(), '.', '_');
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, SteppedProtocol, ::testing::ValuesIn(stepped_algorithms()), test_name);
+INSTANTIATE_TEST_SUITE_P(Eroders, GpuSkips, ::testing::ValuesIn(eroders()), test_name);
 
 }  // namespace

@@ -43,7 +43,7 @@ gt::CaseResult case_of(const std::string& name, std::vector<gt::Check> checks) {
 }
 
 TEST(Outcomes, SkippedGpuHalfIsNeverAPass) {
-  const auto result = case_of("a", {check_of("mass.cpu", Outcome::pass), check_of("parity.gpu", Outcome::skip)});
+  const auto result = case_of("a", {check_of("mass.cpu", Outcome::pass), check_of("parity.shadow.terrain.gpu_vs_float", Outcome::skip)});
   EXPECT_EQ(result.status, Outcome::skip);
   EXPECT_EQ(case_of("a", {check_of("x", Outcome::warn), check_of("y", Outcome::inconclusive)}).status,
             Outcome::inconclusive);

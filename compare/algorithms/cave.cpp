@@ -367,12 +367,14 @@ void repeat_float_vs_double_as_gpu(CaseResult& result) {
 // CGAL and OpenMesh checks.
 void run_gpu_half(const Block& block, const BlockMeshes& meshes, const RunOptions& options, CaseResult& result) {
   if (block.mesher == Mesher::cubes) {
-    result.checks.push_back(not_applicable_check("parity.gpu", "the seed's marching cubes has no GPU twin: it is kept on the "
-                                                        "CPU as the variant whose holes the checks must catch"));
+    result.notes.push_back("no GPU twin, on purpose: the seed's marching cubes is kept on the CPU as the variant whose "
+                           "holes the checks must catch");
     return;
   }
   if (!options.gpu_available) {
-    for (const char* name : {"mesh.gpu", "parity.gpu_vs_float", "parity.gpu_vs_double", "determinism.gpu"}) {
+    // The GPU mesh's mesh.* checks are skipped where the CPU's are made (run_block).
+    for (const char* name : {"parity.topology.gpu_vs_float", "parity.max_abs.gpu_vs_float", "parity.topology.gpu_vs_double",
+                             "parity.hausdorff.gpu_vs_double", "parity.vertex_model.gpu_vs_double", "determinism.gpu"}) {
       result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
     }
     return;
@@ -420,6 +422,9 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   if (auto volume = volume_check(block, meshes, report)) cpu_checks.push_back(std::move(*volume));
   result.checks.insert(result.checks.begin() + static_cast<std::ptrdiff_t>(cpu_checks_at), cpu_checks.begin(),
                        cpu_checks.end());
+  if (block.mesher == Mesher::tetrahedra && !options.gpu_available) {
+    skip_as_other_backend(result, "mesh.", ".cpu", ".gpu", options.gpu_unavailable_reason);
+  }
 }
 
 Block block_from_json(Mesher mesher, const nlohmann::json& resolved, const LoadedInput& input) {

@@ -390,7 +390,11 @@ void run_path(const Path& path, const RunOptions& options, CaseResult& result) {
                           options, result);
   add_ring_checks(path, chunks, options, result);
   if (!options.gpu_available) {
-    for (const char* name : {"seams.gpu", "parity.gpu_vs_float"}) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    skip_as_other_backend(result, "mesh.", ".union_cpu", ".union_gpu", options.gpu_unavailable_reason);
+    skip_as_other_backend(result, "seams.", ".cpu", ".gpu", options.gpu_unavailable_reason);
+    for (const char* name : {"parity.topology.gpu_vs_float", "parity.max_abs.gpu_vs_float"}) {
+      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    }
     return;
   }
   add_gpu_checks(path, reference_path<float>(path), options, result);

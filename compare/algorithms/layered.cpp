@@ -690,7 +690,7 @@ void run_layered_case(const LayeredSetup& setup, const nlohmann::json& expect, c
   if (shadow) {
     shadow->add_checks(result);
   } else {
-    result.checks.push_back(skipped_check("parity.gpu", options.gpu_unavailable_reason));
+    result.checks.push_back(skipped_check("parity.state.gpu_vs_float", options.gpu_unavailable_reason));
   }
   add_ledger_checks(single, setup, "cpu_float", result);
   double largest = 0.0;

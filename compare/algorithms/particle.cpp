@@ -335,7 +335,13 @@ void add_colour_checks(const ParticleScenario& scenario, const RunOptions& optio
     write_colour_fields(truth.colour, input, "cpu", "after the run, ref<double> (sequential)", options, result);
   }
   if (!options.gpu_available) {
-    result.checks.push_back(skipped_check("parity.colour", options.gpu_unavailable_reason));
+    const bool race = c.ordering == DropletOrdering::race;
+    for (const char* name : race ? std::vector<const char*>{"race.colour_channels_differing.gpu_vs_float",
+                                                            "race.colour_psnr_db.gpu_vs_float"}
+                                 : std::vector<const char*>{"parity.colour.channels_differing.gpu_vs_float",
+                                                            "parity.side_maps.cells_differing.gpu_vs_float"}) {
+      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    }
     return;
   }
   gpu::ParticleErosion gpu(input.width, input.height, c, true);
@@ -404,7 +410,12 @@ void add_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, const
                                 "linear image (sRGB)"});
   }
   if (!options.gpu_available) {
-    result.checks.push_back(skipped_check("parity.flow", options.gpu_unavailable_reason));
+    const bool race = flow.ordering == DropletOrdering::race;
+    for (const char* name : race ? std::vector<const char*>{"race.flow.cells_differing.gpu_vs_float",
+                                                            "race.flow.max_abs.gpu_vs_float"}
+                                 : std::vector<const char*>{"parity.flow.cells_differing.gpu_vs_float"}) {
+      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    }
     return;
   }
   gpu::FlowMap gpu(eroded.width, eroded.height, flow);

@@ -449,6 +449,19 @@ void add_determinism_check(gpu::PlanetGenerator& generator, const RunOptions& op
 }
 
 // Returns the GPU's own centroids (3 per region), which the Voronoi search runs on.
+// The checks add_gpu_checks and add_voronoi_checks make, by name: a CPU-only run has them as `skip`.
+std::vector<std::string> gpu_check_names() {
+  std::vector<std::string> names = {"parity.offsets.gpu_vs_float", "parity.positions.gpu_vs_float",
+                                    "parity.plates.gpu_vs_cpu",    "parity.plate_cycles.gpu_vs_cpu",
+                                    "parity.edges.gpu_vs_cpu"};
+  for (const char* check : {"unassigned", "empty_plates", "disconnected_plates", "edge_definition"}) {
+    names.push_back(fmt::format("partition.{}.gpu", check));
+  }
+  for (const char* field : {"noise", "collision", "elevation"}) names.push_back(fmt::format("parity.{}.gpu_vs_float", field));
+  names.insert(names.end(), {"determinism.gpu", "parity.voronoi.gpu_vs_cpu", "voronoi.misses_3x3.gpu"});
+  return names;
+}
+
 std::vector<float> add_gpu_checks(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& truth,
                                   const Planet<float>& single, const RunOptions& options, CaseResult& result) {
   if (options.progress) options.progress->stage("GPU");
@@ -548,7 +561,8 @@ void add_render_checks(const CubeSphere& sphere, const Planet<double>& truth, co
   const auto cpu = reference::render_planet(mesh, camera, truth.regions.positions, truth.elevation.smoothed);
   if (!options.gpu_available) {
     compare_rendered_images(camera.width, camera.height, cpu.image.rgb, nullptr, options, result);
-    result.checks.push_back(skipped_check("image.gpu_vs_cpu", options.gpu_unavailable_reason));
+    for (const auto& name : image_check_names()) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
+    result.checks.push_back(skipped_check("image.region_agreement.gpu_vs_cpu", options.gpu_unavailable_reason));
     return;
   }
   const reference::Matrix4 view_projection =
@@ -895,7 +909,7 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
   write_maps(params, planet, nearest, options, result);
   add_render_checks(sphere, truth, single, options, result);
   if (!options.gpu_available) {
-    result.checks.push_back(skipped_check("parity.gpu", options.gpu_unavailable_reason));
+    for (const auto& name : gpu_check_names()) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
     return;
   }
   const auto gpu_positions = add_gpu_checks(sphere, twins, truth, single, options, result);

@@ -290,7 +290,9 @@ void run_render(const RenderCase& render, const std::string& file, const RunOpti
   result.notes.push_back(fmt::format("aspect ratios (eq. 4.3): d_xy = {:.6g}, d_z = {:.6g}", cpu.d_xy, cpu.d_z));
   if (render.tent) add_tent_checks(cpu.heights, cpu.covered, "cpu", result);
   if (!options.gpu_available) {
-    for (const char* name : {"parity.gpu_vs_cpu", "determinism.gpu"}) {
+    for (const char* name : {"parity.coverage_share.cpu", "parity.coverage_share.gpu", "parity.interior_max_abs.gpu_vs_cpu",
+                             "parity.interior_model.gpu_vs_cpu", "parity.silhouette_shift.gpu_vs_cpu",
+                             "parity.silhouette_texels.gpu_vs_cpu", "determinism.gpu"}) {
       result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
     }
     write_pictures(cpu, nullptr, options, result);

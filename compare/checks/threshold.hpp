@@ -63,4 +63,18 @@ inline Check skipped_check(std::string name, std::string reason) {
   return check;
 }
 
+// For every check of `result` whose name starts with `prefix` and ends with `from` (a backend the
+// case ran: ".cpu"), the same check of the backend that did not run (`to`: ".gpu") as `skip`: for
+// checks the two backends make alike (a mesh's watertightness), whose set depends on the input.
+inline void skip_as_other_backend(CaseResult& result, const std::string& prefix, const std::string& from,
+                                  const std::string& to, const std::string& reason) {
+  std::vector<Check> skipped;
+  for (const Check& check : result.checks) {
+    const std::string& name = check.name;
+    if (name.rfind(prefix, 0) != 0 || name.size() < from.size() || name.compare(name.size() - from.size(), from.size(), from) != 0) continue;
+    skipped.push_back(skipped_check(name.substr(0, name.size() - from.size()) + to, reason));
+  }
+  result.checks.insert(result.checks.end(), skipped.begin(), skipped.end());
+}
+
 }  // namespace gt
