@@ -4,7 +4,8 @@
 // Conventions: immutable storage of a fixed byte size made with DSA (glCreateBuffers,
 // glNamedBufferStorage with GL_DYNAMIC_STORAGE_BIT), so contents change only through upload().
 // Move-only RAII; a current GlContext is needed. Element types must be trivially copyable and
-// laid out like their GLSL block (each parameter struct static_asserts its own offsets).
+// laid out like their GLSL block (each parameter struct is checked against the linked programs
+// with GlProgram::check_block, shader_program.hpp).
 // Sizes are checked: a zero-byte buffer, or an upload/download past the end, throws
 // std::invalid_argument / std::out_of_range. download() waits for the GPU (glGetNamedBufferSubData);
 // shaders that wrote the buffer must be followed by the matching glMemoryBarrier first.

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <mutex>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -186,10 +187,17 @@ StageSource load_stage(GLenum stage, const std::filesystem::path& root, const st
           describe(display_path(root / relative_path), all_defines)};
 }
 
+// A linked program, its description for messages and its stages' expanded sources.
+struct LinkedProgram {
+  GLuint id;
+  std::string description;
+  std::string source;
+};
+
 // Compiles the stages and links them into a program; the shaders are deleted whether linking
 // succeeds or not. A link log is located in the stage's files when there is one stage; with
 // several it names them and is shown as the driver wrote it.
-GLuint build_program(const std::vector<StageSource>& stages) {
+LinkedProgram build_program(const std::vector<StageSource>& stages) {
   std::vector<GLuint> shaders;
   const auto delete_shaders = [&shaders] {
     for (GLuint shader : shaders) glDeleteShader(shader);
@@ -205,22 +213,77 @@ GLuint build_program(const std::vector<StageSource>& stages) {
   glLinkProgram(id);
   for (GLuint shader : shaders) glDetachShader(id, shader);
   delete_shaders();
+  std::vector<std::string> names;
+  for (const auto& stage : stages) names.push_back(stage.description);
   GLint linked = GL_FALSE;
   glGetProgramiv(id, GL_LINK_STATUS, &linked);
   if (!linked) {
     const std::string raw_log = info_log(id, glGetProgramiv, glGetProgramInfoLog);
     const std::string log = stages.size() == 1 ? stages.front().expanded.locate_info_log(raw_log) : raw_log;
-    std::vector<std::string> names;
-    for (const auto& stage : stages) names.push_back(stage.description);
     glDeleteProgram(id);
     throw std::runtime_error(fmt::format("linking {} failed:\n{}", fmt::join(names, " + "), log));
   }
-  return id;
+  std::string source;
+  for (const auto& stage : stages) source += stage.expanded.source;
+  return {id, fmt::format("{}", fmt::join(names, " + ")), std::move(source)};
 }
 
 int group_count(int size, int local_size) { return (size + local_size - 1) / local_size; }
 
+// One property of a program resource (glGetProgramResourceiv).
+GLint resource_property(GLuint program, GLenum interface, GLuint index, GLenum property) {
+  GLint value = -1;
+  glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &value);
+  return value;
+}
+
+bool contains_word(const std::string& text, const std::string& word) {
+  if (word.empty()) return false;
+  return std::regex_search(text, std::regex("\\b" + word + "\\b"));
+}
+
+// The text between the braces of `uniform NAME {` or `buffer NAME {` in `source` (nested braces
+// matched), or nullopt when the source declares no such block.
+std::optional<std::string> block_body(const std::string& source, const std::string& block_name) {
+  std::smatch match;
+  if (!std::regex_search(source, match, std::regex("\\b(uniform|buffer)\\s+" + block_name + "\\s*\\{"))) {
+    return std::nullopt;
+  }
+  const auto begin = static_cast<std::size_t>(match.position(0) + match.length(0));
+  int depth = 1;
+  for (std::size_t at = begin; at < source.size(); ++at) {
+    if (source[at] == '{') ++depth;
+    if (source[at] == '}' && --depth == 0) return source.substr(begin, at - begin);
+  }
+  return source.substr(begin);
+}
+
+// Whether `member` ("a", "a[0]", "a.b", "a[0].b") is declared in the source text: its first part
+// inside the block's braces, each later part (a struct field) anywhere in the source.
+bool declared_in_source(const std::string& source, const std::string& body, const std::string& member) {
+  static const std::regex part_pattern(R"(([A-Za-z_][A-Za-z0-9_]*)(\[[0-9]*\])*)");
+  std::size_t begin = 0;
+  bool first = true;
+  while (begin <= member.size()) {
+    const std::size_t end = std::min(member.find('.', begin), member.size());
+    const std::string part = member.substr(begin, end - begin);
+    std::smatch match;
+    if (!std::regex_match(part, match, part_pattern)) return false;
+    if (!contains_word(first ? body : source, match[1].str())) return false;
+    first = false;
+    begin = end + 1;
+  }
+  return true;
+}
+
 }  // namespace
+
+BlockLayout nested_layout(const std::string& prefix, std::size_t offset, const BlockLayout& members) {
+  BlockLayout nested;
+  nested.reserve(members.size());
+  for (const auto& member : members) nested.push_back({prefix + member.name, offset + member.offset});
+  return nested;
+}
 
 std::map<std::string, std::string> compiled_shader_digests() {
   const std::lock_guard lock(digests_mutex);
@@ -265,15 +328,21 @@ ComputeProgram ComputeProgram::load(const std::string& relative_path, const std:
 
 ComputeProgram ComputeProgram::load_from(const std::filesystem::path& root, const std::string& relative_path,
                                          const std::vector<std::string>& defines) {
-  return ComputeProgram(build_program({load_stage(GL_COMPUTE_SHADER, root, relative_path, defines)}));
+  auto linked = build_program({load_stage(GL_COMPUTE_SHADER, root, relative_path, defines)});
+  return ComputeProgram(linked.id, std::move(linked.description), std::move(linked.source));
 }
 
-GlProgram::GlProgram(GlProgram&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+GlProgram::GlProgram(GlProgram&& other) noexcept
+    : id_(std::exchange(other.id_, 0)),
+      description_(std::move(other.description_)),
+      source_(std::move(other.source_)) {}
 
 GlProgram& GlProgram::operator=(GlProgram&& other) noexcept {
   if (this != &other) {
     if (id_ != 0) glDeleteProgram(id_);
     id_ = std::exchange(other.id_, 0);
+    description_ = std::move(other.description_);
+    source_ = std::move(other.source_);
   }
   return *this;
 }
@@ -286,7 +355,57 @@ void GlProgram::use() const { glUseProgram(id_); }
 
 GLint GlProgram::uniform(const char* name) const { return glGetUniformLocation(id_, name); }
 
-ComputeProgram::ComputeProgram(GLuint id) : GlProgram(id) {
+void GlProgram::check_block(const char* block_name, std::size_t size, const BlockLayout& members) const {
+  GLenum block_interface = GL_UNIFORM_BLOCK, member_interface = GL_UNIFORM;
+  GLuint block = glGetProgramResourceIndex(id_, block_interface, block_name);
+  if (block == GL_INVALID_INDEX) {
+    block_interface = GL_SHADER_STORAGE_BLOCK;
+    member_interface = GL_BUFFER_VARIABLE;
+    block = glGetProgramResourceIndex(id_, block_interface, block_name);
+  }
+  if (block == GL_INVALID_INDEX) {
+    throw std::runtime_error(fmt::format("{}: the C++ mirror of block {} has no counterpart: the program has no active "
+                                         "uniform or shader storage block of that name",
+                                         description_, block_name));
+  }
+  std::vector<std::string> mismatches;
+  const auto glsl_size = resource_property(id_, block_interface, block, GL_BUFFER_DATA_SIZE);
+  if (glsl_size < 0 || static_cast<std::size_t>(glsl_size) != size) {
+    mismatches.push_back(fmt::format("block size: C++ {} bytes, GLSL {} bytes", size, glsl_size));
+  }
+  const auto body = block_body(source_, block_name);
+  for (const auto& member : members) {
+    const GLuint index = glGetProgramResourceIndex(id_, member_interface, member.name.c_str());
+    if (index == GL_INVALID_INDEX) {
+      // A block with an instance name prefixes its members with the block name.
+      const std::string prefix = std::string(block_name) + ".";
+      const std::string declared =
+          member.name.starts_with(prefix) ? member.name.substr(prefix.size()) : member.name;
+      if (body && declared_in_source(source_, *body, declared)) continue;  // declared, not active
+      mismatches.push_back(fmt::format("member {}: C++ offset {}, no such member in the GLSL block", member.name,
+                                       member.offset));
+      continue;
+    }
+    if (resource_property(id_, member_interface, index, GL_BLOCK_INDEX) != static_cast<GLint>(block)) {
+      mismatches.push_back(fmt::format("member {}: C++ offset {}, but in GLSL it is not a member of this block",
+                                       member.name, member.offset));
+      continue;
+    }
+    const auto glsl_offset = resource_property(id_, member_interface, index, GL_OFFSET);
+    if (glsl_offset < 0 || static_cast<std::size_t>(glsl_offset) != member.offset) {
+      mismatches.push_back(
+          fmt::format("member {}: C++ offset {}, GLSL offset {}", member.name, member.offset, glsl_offset));
+    }
+  }
+  if (!mismatches.empty()) {
+    throw std::runtime_error(fmt::format("{}: the C++ mirror of {} block {} does not match the GLSL layout: {}",
+                                         description_, block_interface == GL_UNIFORM_BLOCK ? "uniform" : "storage",
+                                         block_name, fmt::join(mismatches, "; ")));
+  }
+}
+
+ComputeProgram::ComputeProgram(GLuint id, std::string description, std::string source)
+    : GlProgram(id, std::move(description), std::move(source)) {
   glGetProgramiv(id, GL_COMPUTE_WORK_GROUP_SIZE, local_size_.data());
 }
 
@@ -310,8 +429,9 @@ GraphicsProgram GraphicsProgram::load(const std::string& vertex_path, const std:
 
 GraphicsProgram GraphicsProgram::load_from(const std::filesystem::path& root, const std::string& vertex_path,
                                            const std::string& fragment_path, const std::vector<std::string>& defines) {
-  return GraphicsProgram(build_program({load_stage(GL_VERTEX_SHADER, root, vertex_path, defines),
-                                        load_stage(GL_FRAGMENT_SHADER, root, fragment_path, defines)}));
+  auto linked = build_program({load_stage(GL_VERTEX_SHADER, root, vertex_path, defines),
+                               load_stage(GL_FRAGMENT_SHADER, root, fragment_path, defines)});
+  return GraphicsProgram(linked.id, std::move(linked.description), std::move(linked.source));
 }
 
 }  // namespace gt

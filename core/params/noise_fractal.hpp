@@ -36,7 +36,8 @@ struct FractalParams {
 inline constexpr double max_fractal_octaves = 32.0;
 
 // What the twins compute with. FractalTerms<float> has the layout of the GLSL struct GtFractalTerms
-// (gpu/shaders/noise/fractal.glsl) under std140 and std430: 7 scalars at offsets 0, 4, ..., 24.
+// (gpu/shaders/noise/fractal.glsl) under std140 and std430: 7 scalars at offsets 0, 4, ..., 24
+// (checked against the linked programs through gpu/noise/fractal_terms_layout.hpp).
 template <class Real>
 struct FractalTerms {
   int whole_octaves;       // n = floor(octaves)
@@ -47,10 +48,6 @@ struct FractalTerms {
   Real fbm_normalisation;  // 1 / (Σ_{k<n} gain^k + r·gain^n)
   Real offset;
 };
-
-static_assert(offsetof(FractalTerms<float>, remainder) == 4);
-static_assert(offsetof(FractalTerms<float>, offset) == 24);
-static_assert(sizeof(FractalTerms<float>) == 28);
 
 // 1 / (Σ_{k<n} gain^k + r·gain^n), in double.
 inline double fbm_normalisation(const FractalParams& params) {

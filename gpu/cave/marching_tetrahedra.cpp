@@ -56,14 +56,21 @@ struct CaveBlock {
   std::uint32_t linear_placement;
   std::uint32_t padding[3];
 };
-static_assert(offsetof(CaveBlock, sample_counts) == 16);
-static_assert(offsetof(CaveBlock, cube_counts) == 32);
-static_assert(offsetof(CaveBlock, first_cube) == 48);
-static_assert(offsetof(CaveBlock, threshold) == 52);
-static_assert(offsetof(CaveBlock, world_to_noise) == 56);
-static_assert(offsetof(CaveBlock, kernel_radius_squared) == 60);
-static_assert(offsetof(CaveBlock, linear_placement) == 64);
-static_assert(sizeof(CaveBlock) == 80);
+
+// A program of cave_block.glsl, its CaveBlock checked against the mirror.
+ComputeProgram cave_program(const char* shader) {
+  ComputeProgram program = ComputeProgram::load(shader);
+  program.check_block("CaveBlock", sizeof(CaveBlock),
+                      {{"lattice_origin", offsetof(CaveBlock, lattice_origin)},
+                       {"sample_counts", offsetof(CaveBlock, sample_counts)},
+                       {"cube_counts", offsetof(CaveBlock, cube_counts)},
+                       {"first_cube", offsetof(CaveBlock, first_cube)},
+                       {"threshold", offsetof(CaveBlock, threshold)},
+                       {"world_to_noise", offsetof(CaveBlock, world_to_noise)},
+                       {"kernel_radius_squared", offsetof(CaveBlock, kernel_radius_squared)},
+                       {"linear_placement", offsetof(CaveBlock, linear_placement)}});
+  return program;
+}
 
 constexpr int local_size = 256;  // local_size_x of density.comp, count.comp and emit.comp
 constexpr GLuint block_binding = 0, cube_cases_binding = 0, density_binding = 1, triangle_offsets_binding = 2, vertex_offsets_binding = 3,
@@ -212,7 +219,7 @@ std::uint32_t read_uint(const StorageBuffer& buffer, std::size_t index) {
 
 MarchingTetrahedra::NoisePass MarchingTetrahedra::noise_pass(std::uint32_t seed) {
   return {StorageBuffer::from(doubled_permutation(seeded_permutation(seed))),
-          ComputeProgram::load("cave/density.comp")};
+          cave_program("cave/density.comp")};
 }
 
 MarchingTetrahedra::MarchingTetrahedra(const CaveParams& params, EdgePlacement placement)
@@ -241,8 +248,8 @@ MarchingTetrahedra::MarchingTetrahedra(const CaveParams& block, EdgePlacement pl
                                       storage_block_limit_)),
       cube_rock_(limited_storage(cube_total_ * sizeof(std::uint32_t), "per-cube rock corners", storage_block_limit_)),
       cube_cases_(cube_cases_bytes),
-      count_program_(ComputeProgram::load("cave/count.comp")),
-      emit_program_(ComputeProgram::load("cave/emit.comp")),
+      count_program_(cave_program("cave/count.comp")),
+      emit_program_(cave_program("cave/emit.comp")),
       scan_(cube_total_ + 1) {
   const ComputeProgram cube_cases_program = ComputeProgram::load("cave/cube_cases.comp");
   cube_cases_.bind(cube_cases_binding);

@@ -45,22 +45,6 @@ struct BeyerBlock {
   float quantum;
   float inverse_quantum;
 };
-static_assert(offsetof(BeyerBlock, head) == 0);
-static_assert(offsetof(BeyerBlock, seed) == 24);
-static_assert(offsetof(BeyerBlock, printed_speed) == 28);
-static_assert(offsetof(BeyerBlock, inertia) == 32);
-static_assert(offsetof(BeyerBlock, capacity_factor) == 36);
-static_assert(offsetof(BeyerBlock, min_slope) == 40);
-static_assert(offsetof(BeyerBlock, deposition) == 44);
-static_assert(offsetof(BeyerBlock, erosion) == 48);
-static_assert(offsetof(BeyerBlock, gravity) == 52);
-static_assert(offsetof(BeyerBlock, evaporation) == 56);
-static_assert(offsetof(BeyerBlock, radius) == 60);
-static_assert(offsetof(BeyerBlock, initial_speed) == 64);
-static_assert(offsetof(BeyerBlock, initial_water) == 68);
-static_assert(offsetof(BeyerBlock, quantum) == 72);
-static_assert(offsetof(BeyerBlock, inverse_quantum) == 76);
-static_assert(sizeof(BeyerBlock) == 80);
 
 enum Binding : GLuint { block_binding = 0, heights_binding = 1, valid_binding = 2, delta_binding = 3 };
 
@@ -71,9 +55,31 @@ std::vector<std::string> ordering_defines(const BeyerConstants& constants) {
   return {};
 }
 
+// A program of beyer_block.glsl, its BeyerBlock checked against the mirror.
+ComputeProgram beyer_program(const char* shader, const BeyerConstants& constants) {
+  ComputeProgram program = ComputeProgram::load(shader, ordering_defines(constants));
+  program.check_block(
+      "BeyerBlock", sizeof(BeyerBlock),
+      droplet_block_layout(offsetof(BeyerBlock, head), {{"seed", offsetof(BeyerBlock, seed)},
+                                                        {"printed_speed", offsetof(BeyerBlock, printed_speed)},
+                                                        {"inertia", offsetof(BeyerBlock, inertia)},
+                                                        {"capacity_factor", offsetof(BeyerBlock, capacity_factor)},
+                                                        {"min_slope", offsetof(BeyerBlock, min_slope)},
+                                                        {"deposition", offsetof(BeyerBlock, deposition)},
+                                                        {"erosion", offsetof(BeyerBlock, erosion)},
+                                                        {"gravity", offsetof(BeyerBlock, gravity)},
+                                                        {"evaporation", offsetof(BeyerBlock, evaporation)},
+                                                        {"radius", offsetof(BeyerBlock, radius)},
+                                                        {"initial_speed", offsetof(BeyerBlock, initial_speed)},
+                                                        {"initial_water", offsetof(BeyerBlock, initial_water)},
+                                                        {"quantum", offsetof(BeyerBlock, quantum)},
+                                                        {"inverse_quantum", offsetof(BeyerBlock, inverse_quantum)}}));
+  return program;
+}
+
 std::optional<ComputeProgram> apply_program(const BeyerConstants& constants) {
   if (!is_batch(constants)) return std::nullopt;
-  return ComputeProgram::load("erosion/beyer_apply.comp", ordering_defines(constants));
+  return beyer_program("erosion/beyer_apply.comp", constants);
 }
 
 // Each constant rounded to float once from double, as the reference does.
@@ -113,7 +119,7 @@ BeyerErosion::BeyerErosion(int width, int height, const BeyerConstants& constant
       droplets_x_(droplet_count(width, spacing_)),
       droplets_y_(droplet_count(height, spacing_)),
       layout_(empty_layout(width, height)),
-      droplets_program_(ComputeProgram::load("erosion/beyer_droplets.comp", ordering_defines(constants))),
+      droplets_program_(beyer_program("erosion/beyer_droplets.comp", constants)),
       apply_program_(apply_program(constants)),
       offset_location_(required_uniform(droplets_program_, "beyer_droplets.comp", "pass_offset")),
       pass_number_location_(required_uniform(droplets_program_, "beyer_droplets.comp", "pass_number")),

@@ -1,10 +1,21 @@
 #include "gpu/erosion/droplet_host.hpp"
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace gt::gpu {
+
+BlockLayout droplet_block_layout(std::size_t head_offset, const BlockLayout& members) {
+  BlockLayout layout = nested_layout("", head_offset,
+                                     {{"grid_size", offsetof(DropletBlockHead, grid_size)},
+                                      {"droplet_grid", offsetof(DropletBlockHead, droplet_grid)},
+                                      {"droplet_spacing", offsetof(DropletBlockHead, droplet_spacing)},
+                                      {"lifetime", offsetof(DropletBlockHead, lifetime)}});
+  layout.insert(layout.end(), members.begin(), members.end());
+  return layout;
+}
 
 int checked_droplet_spacing(int spacing, const char* eroder) {
   if (spacing < 1) throw std::invalid_argument(std::string(eroder) + ": spacing must be at least 1");

@@ -24,7 +24,11 @@ struct DropletBlockHead {
   std::int32_t droplet_spacing;  // S
   std::int32_t lifetime;         // steps of one droplet
 };
-static_assert(sizeof(DropletBlockHead) == 24);
+
+// The layout of a droplet block's mirror whose DropletBlockHead sits at `head_offset`: the head's
+// four members (the GLSL block declares them one by one), then `members` (for
+// GlProgram::check_block).
+BlockLayout droplet_block_layout(std::size_t head_offset, const BlockLayout& members);
 
 // local_size_x/y of the droplet shaders.
 constexpr int droplet_local_size = 8;

@@ -30,21 +30,27 @@ struct FlowBlock {
   float no_limit;
   float batch_powers[32];  // vec4[8]
 };
-static_assert(offsetof(FlowBlock, head) == 0);
-static_assert(offsetof(FlowBlock, interpolated_flow) == 24);
-static_assert(offsetof(FlowBlock, acceleration) == 28);
-static_assert(offsetof(FlowBlock, max_velocity) == 32);
-static_assert(offsetof(FlowBlock, drag) == 36);
-static_assert(offsetof(FlowBlock, flow_factor) == 40);
-static_assert(offsetof(FlowBlock, no_limit) == 44);
-static_assert(offsetof(FlowBlock, batch_powers) == 48);
-static_assert(sizeof(FlowBlock) == 176);
 
 enum Binding : GLuint { block_binding = 0, heights_binding = 1, valid_binding = 2, flow_binding = 3, plugged_binding = 4 };
 
 std::vector<std::string> program_defines(const FlowConstants& constants) {
   if (constants.ordering == DropletOrdering::batch) return {"FLOW_BATCH"};
   return {};
+}
+
+// A program of flow_map_block.glsl, its FlowBlock checked against the mirror.
+ComputeProgram flow_program(const char* shader, const FlowConstants& constants) {
+  ComputeProgram program = ComputeProgram::load(shader, program_defines(constants));
+  program.check_block(
+      "FlowBlock", sizeof(FlowBlock),
+      droplet_block_layout(offsetof(FlowBlock, head), {{"interpolated_flow", offsetof(FlowBlock, interpolated_flow)},
+                                                       {"acceleration", offsetof(FlowBlock, acceleration)},
+                                                       {"max_velocity", offsetof(FlowBlock, max_velocity)},
+                                                       {"drag", offsetof(FlowBlock, drag)},
+                                                       {"flow_factor", offsetof(FlowBlock, flow_factor)},
+                                                       {"no_limit", offsetof(FlowBlock, no_limit)},
+                                                       {"batch_powers", offsetof(FlowBlock, batch_powers)}}));
+  return program;
 }
 
 FlowBlock make_block(const FlowConstants& constants, int width, int height) {
@@ -69,8 +75,8 @@ FlowMap::FlowMap(int width, int height, const FlowConstants& constants)
       droplets_x_(droplet_count(width, spacing_)),
       droplets_y_(droplet_count(height, spacing_)),
       layout_(empty_layout(width, height)),
-      droplets_program_(ComputeProgram::load("erosion/flow_map_droplets.comp", program_defines(constants))),
-      plug_program_(ComputeProgram::load("erosion/flow_map_plug.comp", program_defines(constants))),
+      droplets_program_(flow_program("erosion/flow_map_droplets.comp", constants)),
+      plug_program_(flow_program("erosion/flow_map_plug.comp", constants)),
       offset_location_(required_uniform(droplets_program_, "flow_map_droplets.comp", "pass_offset")),
       block_(UniformBuffer::from(make_block(constants, width, height))),
       heights_(cell_count(width, height) * sizeof(float)),

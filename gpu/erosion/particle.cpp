@@ -46,20 +46,6 @@ struct ParticleBlock {
   std::uint32_t interpolated_colour;
   std::uint32_t tail_padding[2];  // the std140 block's size rounded up to 16 bytes
 };
-static_assert(offsetof(ParticleBlock, head) == 0);
-static_assert(offsetof(ParticleBlock, interpolated_erosion) == 24);
-static_assert(offsetof(ParticleBlock, acceleration) == 28);
-static_assert(offsetof(ParticleBlock, bite) == 32);
-static_assert(offsetof(ParticleBlock, release) == 36);
-static_assert(offsetof(ParticleBlock, max_velocity) == 40);
-static_assert(offsetof(ParticleBlock, drag) == 44);
-static_assert(offsetof(ParticleBlock, capacity_factor) == 48);
-static_assert(offsetof(ParticleBlock, max_jump) == 52);
-static_assert(offsetof(ParticleBlock, quantum) == 56);
-static_assert(offsetof(ParticleBlock, inverse_quantum) == 60);
-static_assert(offsetof(ParticleBlock, colour_mixing) == 64);
-static_assert(offsetof(ParticleBlock, interpolated_colour) == 68);
-static_assert(sizeof(ParticleBlock) == 80);
 
 enum Binding : GLuint {
   block_binding = 0,
@@ -82,9 +68,29 @@ std::vector<std::string> program_defines(const ParticleConstants& constants, boo
   return defines;
 }
 
+// A program of particle_block.glsl, its ParticleBlock checked against the mirror.
+ComputeProgram particle_program(const char* shader, const ParticleConstants& constants, bool transport_colour) {
+  ComputeProgram program = ComputeProgram::load(shader, program_defines(constants, transport_colour));
+  program.check_block("ParticleBlock", sizeof(ParticleBlock),
+                      droplet_block_layout(offsetof(ParticleBlock, head),
+                                           {{"interpolated_erosion", offsetof(ParticleBlock, interpolated_erosion)},
+                                            {"acceleration", offsetof(ParticleBlock, acceleration)},
+                                            {"bite", offsetof(ParticleBlock, bite)},
+                                            {"release", offsetof(ParticleBlock, release)},
+                                            {"max_velocity", offsetof(ParticleBlock, max_velocity)},
+                                            {"drag", offsetof(ParticleBlock, drag)},
+                                            {"capacity_factor", offsetof(ParticleBlock, capacity_factor)},
+                                            {"max_jump", offsetof(ParticleBlock, max_jump)},
+                                            {"quantum", offsetof(ParticleBlock, quantum)},
+                                            {"inverse_quantum", offsetof(ParticleBlock, inverse_quantum)},
+                                            {"colour_mixing", offsetof(ParticleBlock, colour_mixing)},
+                                            {"interpolated_colour", offsetof(ParticleBlock, interpolated_colour)}}));
+  return program;
+}
+
 std::optional<ComputeProgram> apply_program(const ParticleConstants& constants, bool transport_colour) {
   if (!is_batch(constants)) return std::nullopt;
-  return ComputeProgram::load("erosion/particle_apply.comp", program_defines(constants, transport_colour));
+  return particle_program("erosion/particle_apply.comp", constants, transport_colour);
 }
 
 // Each constant rounded to float once from double, as the reference does.
@@ -134,8 +140,7 @@ ParticleErosion::ParticleErosion(int width, int height, const ParticleConstants&
       droplets_x_(droplet_count(width, spacing_)),
       droplets_y_(droplet_count(height, spacing_)),
       layout_(empty_layout(width, height)),
-      droplets_program_(
-          ComputeProgram::load("erosion/particle_droplets.comp", program_defines(constants, transport_colour))),
+      droplets_program_(particle_program("erosion/particle_droplets.comp", constants, transport_colour)),
       apply_program_(apply_program(constants, transport_colour)),
       offset_location_(required_uniform(droplets_program_, "particle_droplets.comp", "pass_offset")),
       block_(UniformBuffer::from(make_block(constants, width, height))),

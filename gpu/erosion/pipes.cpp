@@ -59,8 +59,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <map>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
@@ -128,21 +130,6 @@ struct PipeBlock {
   float thermal_rate;
   std::uint32_t tail_padding[3];
 };
-static_assert(offsetof(PipeBlock, flux_gain) == 0);
-static_assert(offsetof(PipeBlock, slope_span_x) == 32);
-static_assert(offsetof(PipeBlock, slope_span_y) == 40);
-static_assert(offsetof(PipeBlock, grid_size) == 48);
-static_assert(offsetof(PipeBlock, area_per_time) == 56);
-static_assert(offsetof(PipeBlock, min_tilt_sine) == 92);
-static_assert(offsetof(PipeBlock, evaporation_kept) == 108);
-static_assert(offsetof(PipeBlock, boundary_open) == 112);
-static_assert(offsetof(PipeBlock, regolith_depth) == 120);
-static_assert(offsetof(PipeBlock, diffusion_weight) == 132);
-static_assert(offsetof(PipeBlock, diagonal_share) == 136);
-static_assert(offsetof(PipeBlock, talus_limit_cardinal) == 144);
-static_assert(offsetof(PipeBlock, talus_limit_diagonal) == 160);
-static_assert(offsetof(PipeBlock, thermal_rate) == 176);
-static_assert(sizeof(PipeBlock) == 192);
 
 // Mirror of `CellConstants` (std430).
 struct CellConstants {
@@ -151,7 +138,46 @@ struct CellConstants {
   std::uint32_t flags;
   std::uint32_t unused;
 };
-static_assert(sizeof(CellConstants) == 16);
+
+// A program of pipes_block.glsl, its PipeBlock and its Cells records checked against the mirrors.
+ComputeProgram pipe_program(const char* shader, const std::vector<std::string>& defines = {}) {
+  ComputeProgram program = ComputeProgram::load(shader, defines);
+  program.check_block("PipeBlock", sizeof(PipeBlock),
+                      {{"flux_gain", offsetof(PipeBlock, flux_gain)},
+                       {"slope_span_x", offsetof(PipeBlock, slope_span_x)},
+                       {"slope_span_y", offsetof(PipeBlock, slope_span_y)},
+                       {"grid_size", offsetof(PipeBlock, grid_size)},
+                       {"area_per_time", offsetof(PipeBlock, area_per_time)},
+                       {"volume_to_depth", offsetof(PipeBlock, volume_to_depth)},
+                       {"depth_floor", offsetof(PipeBlock, depth_floor)},
+                       {"length_x", offsetof(PipeBlock, length_x)},
+                       {"length_y", offsetof(PipeBlock, length_y)},
+                       {"capacity_constant", offsetof(PipeBlock, capacity_constant)},
+                       {"depth_ramp", offsetof(PipeBlock, depth_ramp)},
+                       {"dissolving", offsetof(PipeBlock, dissolving)},
+                       {"deposition", offsetof(PipeBlock, deposition)},
+                       {"min_tilt_sine", offsetof(PipeBlock, min_tilt_sine)},
+                       {"backtrace_x", offsetof(PipeBlock, backtrace_x)},
+                       {"backtrace_y", offsetof(PipeBlock, backtrace_y)},
+                       {"reach", offsetof(PipeBlock, reach)},
+                       {"evaporation_kept", offsetof(PipeBlock, evaporation_kept)},
+                       {"boundary_open", offsetof(PipeBlock, boundary_open)},
+                       {"source_cell_count", offsetof(PipeBlock, source_cell_count)},
+                       {"regolith_depth", offsetof(PipeBlock, regolith_depth)},
+                       {"regolith_dissolving", offsetof(PipeBlock, regolith_dissolving)},
+                       {"regolith_deposition", offsetof(PipeBlock, regolith_deposition)},
+                       {"diffusion_weight", offsetof(PipeBlock, diffusion_weight)},
+                       {"diagonal_share", offsetof(PipeBlock, diagonal_share)},
+                       {"talus_limit_cardinal", offsetof(PipeBlock, talus_limit_cardinal)},
+                       {"talus_limit_diagonal", offsetof(PipeBlock, talus_limit_diagonal)},
+                       {"thermal_rate", offsetof(PipeBlock, thermal_rate)}});
+  program.check_block("Cells", sizeof(CellConstants),
+                      {{"cells[0].base", offsetof(CellConstants, base)},
+                       {"cells[0].rain", offsetof(CellConstants, rain)},
+                       {"cells[0].flags", offsetof(CellConstants, flags)},
+                       {"cells[0].unused", offsetof(CellConstants, unused)}});
+  return program;
+}
 
 [[noreturn]] void refuse(const std::string& what) { throw InputError(fmt::format("{}: {}", algorithm_name, what)); }
 
@@ -329,10 +355,10 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
       keep_ledger_(keep_ledger),
       rain_depth_(rain_depths(initial.terrain, constants, forcing.rain_map)),
       source_depths_(source_depths(initial.terrain, constants, forcing.sources)),
-      water_program_(ComputeProgram::load("erosion/pipes_water.comp")),
-      outflow_program_(ComputeProgram::load("erosion/pipes_outflow.comp", pipe_defines(constants))),
-      flow_program_(ComputeProgram::load("erosion/pipes_flow.comp", stage_defines(constants))),
-      sediment_program_(ComputeProgram::load("erosion/pipes_sediment.comp", stage_defines(constants))),
+      water_program_(pipe_program("erosion/pipes_water.comp")),
+      outflow_program_(pipe_program("erosion/pipes_outflow.comp", pipe_defines(constants))),
+      flow_program_(pipe_program("erosion/pipes_flow.comp", stage_defines(constants))),
+      sediment_program_(pipe_program("erosion/pipes_sediment.comp", stage_defines(constants))),
       block_(sizeof(PipeBlock)),
       cells_(16),
       delta_(16),
@@ -354,11 +380,11 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
   layout_ = terrain;
   layout_.values.clear();
   if (has_diffusion(constants_)) {
-    diffusion_program_.emplace(ComputeProgram::load("erosion/pipes_diffusion.comp", stage_defines(constants_)));
+    diffusion_program_.emplace(pipe_program("erosion/pipes_diffusion.comp", stage_defines(constants_)));
   }
   if (constants_.thermal_step) {
-    thermal_outflow_program_.emplace(ComputeProgram::load("erosion/pipes_thermal_outflow.comp"));
-    thermal_gather_program_.emplace(ComputeProgram::load("erosion/pipes_thermal_gather.comp"));
+    thermal_outflow_program_.emplace(pipe_program("erosion/pipes_thermal_outflow.comp"));
+    thermal_gather_program_.emplace(pipe_program("erosion/pipes_thermal_gather.comp"));
   }
 
   // Sources grouped by cell, each cell's in the order given: {cell, first, count, 0}.
@@ -373,7 +399,7 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
     grouped_depths.insert(grouped_depths.end(), depths.begin(), depths.end());
   }
   source_cell_count_ = by_cell.size();
-  if (source_cell_count_ > 0) sources_program_.emplace(ComputeProgram::load("erosion/pipes_sources.comp"));
+  if (source_cell_count_ > 0) sources_program_.emplace(pipe_program("erosion/pipes_sources.comp"));
   block_.upload(block_for(constants_, width_, height_, source_cell_count_));
   source_cells_ = buffer_of(source_cells);
   source_list_ = buffer_of(grouped_depths);

@@ -26,13 +26,19 @@ struct ThermalBlock {
   float request_factor;
   std::uint32_t clamp_unit;
 };
-static_assert(offsetof(ThermalBlock, talus_limit) == 0);
-static_assert(offsetof(ThermalBlock, pipe_dx) == 16);
-static_assert(offsetof(ThermalBlock, pipe_dy) == 32);
-static_assert(offsetof(ThermalBlock, grid_size) == 48);
-static_assert(offsetof(ThermalBlock, request_factor) == 56);
-static_assert(offsetof(ThermalBlock, clamp_unit) == 60);
-static_assert(sizeof(ThermalBlock) == 64);
+
+// A program of thermal_block.glsl, its ThermalBlock checked against the mirror.
+ComputeProgram thermal_program(const char* shader) {
+  ComputeProgram program = ComputeProgram::load(shader);
+  program.check_block("ThermalBlock", sizeof(ThermalBlock),
+                      {{"talus_limit", offsetof(ThermalBlock, talus_limit)},
+                       {"pipe_dx", offsetof(ThermalBlock, pipe_dx)},
+                       {"pipe_dy", offsetof(ThermalBlock, pipe_dy)},
+                       {"grid_size", offsetof(ThermalBlock, grid_size)},
+                       {"request_factor", offsetof(ThermalBlock, request_factor)},
+                       {"clamp_unit", offsetof(ThermalBlock, clamp_unit)}});
+  return program;
+}
 
 constexpr int local_size = 16;  // local_size_x/y of thermal_block.glsl
 constexpr GLuint block_binding = 0, requests_binding = 3;  // heights: see HeightfieldBuffers
@@ -77,8 +83,8 @@ ThermalErosion::ThermalErosion(int width, int height, const ThermalConstants& co
                                int iterations)
     : neighbourhood_(neighbourhood),
       iterations_(iterations),
-      requests_program_(ComputeProgram::load("erosion/thermal_requests.comp")),
-      transfer_program_(ComputeProgram::load("erosion/thermal_transfer.comp")),
+      requests_program_(thermal_program("erosion/thermal_requests.comp")),
+      transfer_program_(thermal_program("erosion/thermal_transfer.comp")),
       cardinal_block_(block_buffer(make_block(constants, true, width, height))),
       diagonal_block_(block_buffer(make_block(constants, false, width, height))),
       requests_(static_cast<std::size_t>(width) * height * 4 * sizeof(float)),

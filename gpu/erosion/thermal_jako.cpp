@@ -25,11 +25,17 @@ struct ThermalJakoBlock {
   float rate;
   float padding;
 };
-static_assert(offsetof(ThermalJakoBlock, talus_limit_cardinal) == 0);
-static_assert(offsetof(ThermalJakoBlock, talus_limit_diagonal) == 16);
-static_assert(offsetof(ThermalJakoBlock, grid_size) == 32);
-static_assert(offsetof(ThermalJakoBlock, rate) == 40);
-static_assert(sizeof(ThermalJakoBlock) == 48);
+
+// A program of thermal_jako_block.glsl, its ThermalJakoBlock checked against the mirror.
+ComputeProgram thermal_jako_program(const char* shader) {
+  ComputeProgram program = ComputeProgram::load(shader);
+  program.check_block("ThermalJakoBlock", sizeof(ThermalJakoBlock),
+                      {{"talus_limit_cardinal", offsetof(ThermalJakoBlock, talus_limit_cardinal)},
+                       {"talus_limit_diagonal", offsetof(ThermalJakoBlock, talus_limit_diagonal)},
+                       {"grid_size", offsetof(ThermalJakoBlock, grid_size)},
+                       {"rate", offsetof(ThermalJakoBlock, rate)}});
+  return program;
+}
 
 constexpr int local_size = 16;  // local_size_x/y of thermal_jako_block.glsl
 constexpr GLuint block_binding = 0, outflows_binding = 3;  // heights: see HeightfieldBuffers
@@ -64,8 +70,8 @@ UniformBuffer block_buffer(const ThermalConstants& constants, int width, int hei
 
 ThermalJakoErosion::ThermalJakoErosion(int width, int height, const ThermalConstants& constants, int iterations)
     : iterations_(iterations),
-      outflow_program_(ComputeProgram::load("erosion/thermal_jako_outflow.comp")),
-      gather_program_(ComputeProgram::load("erosion/thermal_jako_gather.comp")),
+      outflow_program_(thermal_jako_program("erosion/thermal_jako_outflow.comp")),
+      gather_program_(thermal_jako_program("erosion/thermal_jako_gather.comp")),
       block_(block_buffer(constants, width, height)),
       outflows_(static_cast<std::size_t>(width) * height * 8 * sizeof(float)),
       heights_(width, height) {}

@@ -14,6 +14,7 @@
 
 #include "core/noise/permutation.hpp"
 #include "core/params/noise_fractal.hpp"
+#include "gpu/noise/fractal_terms_layout.hpp"
 
 namespace gt::gpu {
 namespace {
@@ -28,11 +29,6 @@ struct NoiseFieldBlock {
   FractalTerms<float> fractal_terms;
   float padding;
 };
-static_assert(offsetof(NoiseFieldBlock, grid_size) == 16);
-static_assert(offsetof(NoiseFieldBlock, step) == 24);
-static_assert(offsetof(NoiseFieldBlock, kernel_radius_squared) == 28);
-static_assert(offsetof(NoiseFieldBlock, fractal_terms) == 32);
-static_assert(sizeof(NoiseFieldBlock) == 64);
 
 constexpr int local_size = 16;  // local_size_x/y of noise_field.comp
 constexpr GLuint block_binding = 0, values_binding = 1, permutation_binding = 5;
@@ -67,6 +63,24 @@ std::vector<std::string> function_defines(const NoiseParams& params) {
   }
 }
 
+// noise_field.comp for `params`, its NoiseFieldBlock checked against the mirror. Without a fractal
+// the GLSL block has no fractal_terms and ends where they would begin.
+ComputeProgram noise_field_program(const NoiseParams& params) {
+  ComputeProgram program = ComputeProgram::load("noise/noise_field.comp", function_defines(params));
+  BlockLayout layout = {{"origin", offsetof(NoiseFieldBlock, origin)},
+                        {"grid_size", offsetof(NoiseFieldBlock, grid_size)},
+                        {"step", offsetof(NoiseFieldBlock, step)},
+                        {"kernel_radius_squared", offsetof(NoiseFieldBlock, kernel_radius_squared)}};
+  const bool fractal = params.fractal != Fractal::none;
+  if (fractal) {
+    const auto terms = fractal_terms_layout("fractal_terms", offsetof(NoiseFieldBlock, fractal_terms));
+    layout.insert(layout.end(), terms.begin(), terms.end());
+  }
+  program.check_block("NoiseFieldBlock", fractal ? sizeof(NoiseFieldBlock) : offsetof(NoiseFieldBlock, fractal_terms),
+                      layout);
+  return program;
+}
+
 UniformBuffer block_buffer(const NoiseParams& params) {
   NoiseFieldBlock block{};
   const auto origin = reduced_origin(params);
@@ -83,7 +97,7 @@ UniformBuffer block_buffer(const NoiseParams& params) {
 
 NoiseField::NoiseField(const NoiseParams& params)
     : sampling_(params.sampling),
-      program_(ComputeProgram::load("noise/noise_field.comp", function_defines(params))),
+      program_(noise_field_program(params)),
       block_(block_buffer(params)),
       permutation_(StorageBuffer::from(doubled_permutation(seeded_permutation(params.seed)))),
       values_(static_cast<std::size_t>(params.sampling.width) * params.sampling.height * sizeof(float)) {

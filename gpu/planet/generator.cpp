@@ -20,6 +20,7 @@
 #include "core/mutant.hpp"
 #include "core/noise/permutation.hpp"
 #include "core/params/noise_fractal.hpp"
+#include "gpu/noise/fractal_terms_layout.hpp"
 
 namespace gt::gpu {
 namespace {
@@ -45,10 +46,6 @@ struct PlanetBlock {
   FractalTerms<float> fractal_terms;
   float padding_end;
 };
-static_assert(offsetof(PlanetBlock, region_count) == 288);
-static_assert(offsetof(PlanetBlock, perlin_strength) == 336);
-static_assert(offsetof(PlanetBlock, fractal_terms) == 352);
-static_assert(sizeof(PlanetBlock) == 384);
 
 // Mirror of `PlateRecord` in planet.glsl (std430).
 struct PlateRecord {
@@ -59,9 +56,6 @@ struct PlateRecord {
   std::int32_t expansions;
   std::int32_t seed_region;
 };
-static_assert(offsetof(PlateRecord, shift) == 16);
-static_assert(offsetof(PlateRecord, base) == 32);
-static_assert(sizeof(PlateRecord) == 48);
 
 constexpr int region_local_size = 256, plate_local_size = 64;
 constexpr int stalled_cycle_limit = 16384;
@@ -123,8 +117,35 @@ std::vector<std::string> program_defines(const PlanetParams& params) {
   return defines;
 }
 
+// The pass `name` (planet/NAME.comp), its PlanetBlock and its PlateRecord checked against their mirrors.
 ComputeProgram planet_program(const char* name, const PlanetParams& params) {
-  return ComputeProgram::load(fmt::format("planet/{}.comp", name), program_defines(params));
+  ComputeProgram program = ComputeProgram::load(fmt::format("planet/{}.comp", name), program_defines(params));
+  BlockLayout layout = {{"face_rows", offsetof(PlanetBlock, face_rows)},
+                        {"region_count", offsetof(PlanetBlock, region_count)},
+                        {"plate_count", offsetof(PlanetBlock, plate_count)},
+                        {"seed", offsetof(PlanetBlock, seed)},
+                        {"resolution", offsetof(PlanetBlock, resolution)},
+                        {"jitter", offsetof(PlanetBlock, jitter)},
+                        {"warp_angle", offsetof(PlanetBlock, warp_angle)},
+                        {"tan_warp_angle", offsetof(PlanetBlock, tan_warp_angle)},
+                        {"rate_low", offsetof(PlanetBlock, rate_low)},
+                        {"rate_high", offsetof(PlanetBlock, rate_high)},
+                        {"elevation_range", offsetof(PlanetBlock, elevation_range)},
+                        {"collision_strength", offsetof(PlanetBlock, collision_strength)},
+                        {"perlin_frequency", offsetof(PlanetBlock, perlin_frequency)},
+                        {"perlin_strength", offsetof(PlanetBlock, perlin_strength)},
+                        {"ocean_share", offsetof(PlanetBlock, ocean_share)}};
+  const auto terms = fractal_terms_layout("fractal_terms", offsetof(PlanetBlock, fractal_terms));
+  layout.insert(layout.end(), terms.begin(), terms.end());
+  program.check_block("PlanetBlock", sizeof(PlanetBlock), layout);
+  program.check_block("Plates", sizeof(PlateRecord),
+                      {{"plates[0].centre", offsetof(PlateRecord, centre)},
+                       {"plates[0].shift", offsetof(PlateRecord, shift)},
+                       {"plates[0].base", offsetof(PlateRecord, base)},
+                       {"plates[0].rate", offsetof(PlateRecord, rate)},
+                       {"plates[0].expansions", offsetof(PlateRecord, expansions)},
+                       {"plates[0].seed_region", offsetof(PlateRecord, seed_region)}});
+  return program;
 }
 
 UniformBuffer block_buffer(const PlanetParams& params) {

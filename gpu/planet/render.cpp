@@ -54,6 +54,7 @@ PlanetRenderer::PlanetRenderer(const Mesh& mesh, const std::array<double, 16>& v
       neighbours_(StorageBuffer::from(sphere.neighbour_table())),
       positions_(centroid_buffer(sphere, positions, elevation)),
       elevation_(StorageBuffer::from(elevation)) {
+  check_voronoi_block(program_);
   std::array<float, 16> matrix{};
   for (std::size_t k = 0; k < matrix.size(); ++k) matrix[k] = static_cast<float>(view_projection[k]);
   glProgramUniformMatrix4fv(program_.id(), 0, 1, GL_TRUE, matrix.data());

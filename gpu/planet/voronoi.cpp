@@ -19,14 +19,14 @@ struct VoronoiBlock {
   float warp_angle;
   float tan_warp_angle;
 };
-static_assert(offsetof(VoronoiBlock, resolution) == 288);
-static_assert(sizeof(VoronoiBlock) == 304);
 
 constexpr int local_size = 64;
 
 ComputeProgram voronoi_program(int rings) {
   if (rings < 1 || rings > 2) throw std::invalid_argument(fmt::format("Voronoi search of {} rings: 1 or 2", rings));
-  return ComputeProgram::load("planet/voronoi.comp", {fmt::format("SEARCH_RINGS={}", rings)});
+  ComputeProgram program = ComputeProgram::load("planet/voronoi.comp", {fmt::format("SEARCH_RINGS={}", rings)});
+  check_voronoi_block(program);
+  return program;
 }
 
 }  // namespace
@@ -37,6 +37,15 @@ std::vector<float> padded_xyz(const std::vector<float>& xyz) {
     for (std::size_t axis = 0; axis < 3; ++axis) result[4 * item + axis] = xyz[3 * item + axis];
   }
   return result;
+}
+
+void check_voronoi_block(const GlProgram& program) {
+  program.check_block("VoronoiBlock", sizeof(VoronoiBlock),
+                      {{"face_rows", offsetof(VoronoiBlock, face_rows)},
+                       {"resolution", offsetof(VoronoiBlock, resolution)},
+                       {"direction_count", offsetof(VoronoiBlock, direction_count)},
+                       {"warp_angle", offsetof(VoronoiBlock, warp_angle)},
+                       {"tan_warp_angle", offsetof(VoronoiBlock, tan_warp_angle)}});
 }
 
 UniformBuffer voronoi_block(int resolution, std::size_t direction_count) {

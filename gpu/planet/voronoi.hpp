@@ -23,6 +23,9 @@ namespace gt::gpu {
 // The std140 block of planet/voronoi_search.glsl (binding 0): the face matrices, R, θ and tan θ
 // rounded to float once, and the number of queries (voronoi.comp's; 0 for the renderer).
 UniformBuffer voronoi_block(int resolution, std::size_t direction_count);
+// Checks a program's VoronoiBlock (voronoi.comp's, the renderer's) against voronoi_block's C++
+// mirror (GlProgram::check_block: std::runtime_error on a mismatch).
+void check_voronoi_block(const GlProgram& program);
 
 // x, y, z per item -> x, y, z, 0 per item: std430 vec4s, as the shaders read positions.
 std::vector<float> padded_xyz(const std::vector<float>& xyz);

@@ -38,16 +38,32 @@ struct PhongLookBlock {
   float drape_z_north;
   float drape_inverse_depth;  // 1/(z_south - z_north)
 };
-static_assert(offsetof(PhongLookBlock, bump_frequency) == 16);
-static_assert(offsetof(PhongLookBlock, up) == 32);
-static_assert(offsetof(PhongLookBlock, rock_start_cos) == 44);
-static_assert(offsetof(PhongLookBlock, rock) == 48);
-static_assert(offsetof(PhongLookBlock, inverse_rock_width) == 60);
-static_assert(offsetof(PhongLookBlock, strip_size) == 64);
-static_assert(offsetof(PhongLookBlock, colour_octave_limit) == 68);
-static_assert(offsetof(PhongLookBlock, drape_width) == 72);
-static_assert(offsetof(PhongLookBlock, drape_inverse_depth) == 92);
-static_assert(sizeof(PhongLookBlock) == 96);
+
+// The program's PhongLookBlock (instance `look`: members are named "PhongLookBlock.member") against
+// its mirror.
+void check_look_block(const GraphicsProgram& program) {
+  program.check_block("PhongLookBlock", sizeof(PhongLookBlock),
+                      {{"PhongLookBlock.colour_frequency", offsetof(PhongLookBlock, colour_frequency)},
+                       {"PhongLookBlock.colour_reference_height", offsetof(PhongLookBlock, colour_reference_height)},
+                       {"PhongLookBlock.colour_octaves_per_unit", offsetof(PhongLookBlock, colour_octaves_per_unit)},
+                       {"PhongLookBlock.bump_slope", offsetof(PhongLookBlock, bump_slope)},
+                       {"PhongLookBlock.bump_frequency", offsetof(PhongLookBlock, bump_frequency)},
+                       {"PhongLookBlock.moss", offsetof(PhongLookBlock, moss)},
+                       {"PhongLookBlock.height_low", offsetof(PhongLookBlock, height_low)},
+                       {"PhongLookBlock.inverse_height_range", offsetof(PhongLookBlock, inverse_height_range)},
+                       {"PhongLookBlock.up", offsetof(PhongLookBlock, up)},
+                       {"PhongLookBlock.rock_start_cos", offsetof(PhongLookBlock, rock_start_cos)},
+                       {"PhongLookBlock.rock", offsetof(PhongLookBlock, rock)},
+                       {"PhongLookBlock.inverse_rock_width", offsetof(PhongLookBlock, inverse_rock_width)},
+                       {"PhongLookBlock.strip_size", offsetof(PhongLookBlock, strip_size)},
+                       {"PhongLookBlock.colour_octave_limit", offsetof(PhongLookBlock, colour_octave_limit)},
+                       {"PhongLookBlock.drape_width", offsetof(PhongLookBlock, drape_width)},
+                       {"PhongLookBlock.drape_height", offsetof(PhongLookBlock, drape_height)},
+                       {"PhongLookBlock.drape_x_west", offsetof(PhongLookBlock, drape_x_west)},
+                       {"PhongLookBlock.drape_inverse_width", offsetof(PhongLookBlock, drape_inverse_width)},
+                       {"PhongLookBlock.drape_z_north", offsetof(PhongLookBlock, drape_z_north)},
+                       {"PhongLookBlock.drape_inverse_depth", offsetof(PhongLookBlock, drape_inverse_depth)}});
+}
 
 constexpr GLuint look_block_binding = 0, strip_binding = 6, permutation_binding = 5, drape_binding = 7;
 
@@ -179,6 +195,7 @@ PhongRenderer::PhongRenderer(const PhongDraw& draw)
       indices_(StorageBuffer::from(draw.mesh.triangles)) {
   set_uniforms(program_.id(), draw);
   if (look_ != PhongLook::plain) {
+    check_look_block(program_);
     strip_.emplace(StorageBuffer::from(strip_texels(draw)));
     look_block_.emplace(UniformBuffer::from(look_block(draw)));
   }

@@ -16,12 +16,12 @@
 // shader source, the look picks it at compile time with the define GT_PHONG_LOOK (0 plain, 1 cave,
 // 2 terrain), so the plain program is the pre-look shader token for token after preprocessing.
 // cave and terrain read gpu/shaders/render/phong_look.glsl: a std140 block PhongLookBlock
-// (uniform binding 0, mirrored below with static_asserts) and the strip (colour strip or height
-// ramp) as a storage buffer of vec4 (binding 6); the cave look also binds the permutation buffer
-// (binding 5) of its improved Perlin bump and the texture of Gustavson's Perlin noise (unit 0) of
-// its colour, both of seeded_permutation(noise_seed). The host derives, in double and rounded to
-// float once: bump slope a·s, the terrain's 1/(high - low), cos(rock_start) and
-// 1/(cos(rock_start) - cos(rock_full)), the drape's 1/(x_east - x_west) and 1/(z_south - z_north).
+// (uniform binding 0, mirrored in phong.cpp and checked against the linked program) and the strip
+// (colour strip or height ramp) as a storage buffer of vec4 (binding 6); the cave look also binds
+// the permutation buffer (binding 5) of its improved Perlin bump and the texture of Gustavson's
+// Perlin noise (unit 0) of its colour, both of seeded_permutation(noise_seed). The host derives, in
+// double and rounded to float once: bump slope a·s, the terrain's 1/(high - low), cos(rock_start)
+// and 1/(cos(rock_start) - cos(rock_full)), the drape's 1/(x_east - x_west) and 1/(z_south - z_north).
 // A terrain drape (PhongTerrainLook::drape) adds the define GT_TERRAIN_DRAPE (without one the
 // terrain program is unchanged) and a storage buffer (binding 7) of one uint per texel, RGBA8
 // packed as unpackUnorm4x8 reads it (r in the low byte, alpha 255), row-major, row 0 at v = 0; the

@@ -13,7 +13,7 @@ constexpr ErosionRecordLayout record_layout{24, 0, 16, 20, 1};
 
 }  // namespace
 
-LayeredForceErosion::LayeredForceErosion() : program_(ComputeProgram::load("erosion/layered/force_erosion.comp")) {}
+LayeredForceErosion::LayeredForceErosion() : program_(layered_water_program("erosion/layered/force_erosion.comp")) {}
 
 void LayeredForceErosion::step(LayeredGroundBuffers& ground, const LayeredWaterBuffers& water, std::uint32_t step,
                                LayeredConversions& conversions) const {

@@ -6,29 +6,11 @@
 #include <algorithm>
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace gt::gpu {
 namespace {
-
-static_assert(offsetof(LayeredBlock, repose_tan_a) == 0);
-static_assert(offsetof(LayeredBlock, distance) == 16);
-static_assert(offsetof(LayeredBlock, grid_size) == 48);
-static_assert(offsetof(LayeredBlock, bedrock_layer_count) == 56);
-static_assert(offsetof(LayeredBlock, periodic) == 60);
-static_assert(offsetof(LayeredBlock, repose_boulders) == 64);
-static_assert(offsetof(LayeredBlock, creep_denominator_floor) == 92);
-static_assert(offsetof(LayeredBlock, random_base) == 96);
-static_assert(offsetof(LayeredBlock, seed) == 104);
-static_assert(offsetof(LayeredBlock, step_number) == 108);
-static_assert(offsetof(LayeredBlock, talus_thesis_amount) == 112);
-static_assert(offsetof(LayeredBlock, creep_floored) == 124);
-static_assert(offsetof(LayeredBlock, vegetation_quality_a) == 128);
-static_assert(offsetof(LayeredBlock, weathering_shares) == 144);
-static_assert(offsetof(LayeredBlock, vegetation_quality_boulders) == 160);
-static_assert(offsetof(LayeredBlock, vegetation_code) == 188);
-static_assert(offsetof(LayeredBlock, weathering_reach) == 196);
-static_assert(sizeof(LayeredBlock) == 208);
 
 // Mirror of `BedrockTypeRecord` (std430: a vec4, two floats, three vec4 from 32; 80 bytes).
 struct BedrockTypeRecord {
@@ -40,10 +22,6 @@ struct BedrockTypeRecord {
   float erosion_slopes[4];
   float erosion_thresholds[4];
 };
-static_assert(offsetof(BedrockTypeRecord, soil_rate) == 20);
-static_assert(offsetof(BedrockTypeRecord, soil_composition_a) == 32);
-static_assert(offsetof(BedrockTypeRecord, erosion_thresholds) == 64);
-static_assert(sizeof(BedrockTypeRecord) == 80);
 
 // Mirror of `ColumnConversion` in apply.comp (std430: a vec4, a float, an int, padded to 32 bytes).
 struct ColumnConversion {
@@ -52,7 +30,18 @@ struct ColumnConversion {
   std::int32_t from_type;
   std::int32_t padding[2];
 };
-static_assert(sizeof(ColumnConversion) == 32);
+
+// apply.comp: a program of layered.glsl whose Conversions records are also checked.
+ComputeProgram apply_program(bool clear_vegetation) {
+  ComputeProgram program = layered_program(
+      "erosion/layered/apply.comp",
+      clear_vegetation ? std::vector<std::string>{"LAYERED_CLEAR_VEGETATION"} : std::vector<std::string>{});
+  program.check_block("Conversions", sizeof(ColumnConversion),
+                      {{"conversions[0].fragmented_into", offsetof(ColumnConversion, fragmented_into)},
+                       {"conversions[0].fragmented_from", offsetof(ColumnConversion, fragmented_from)},
+                       {"conversions[0].from_type", offsetof(ColumnConversion, from_type)}});
+  return program;
+}
 
 constexpr int local_size = 16;  // local_size_x/y of layered.glsl
 // Bindings of layered.glsl and apply.comp: the block, then the storage buffers.
@@ -140,6 +129,53 @@ std::size_t bytes_of(const std::vector<T>& values) {
 }
 
 }  // namespace
+
+ComputeProgram layered_program(const std::string& shader, const std::vector<std::string>& defines) {
+  ComputeProgram program = ComputeProgram::load(shader, defines);
+  program.check_block("LayeredBlock", sizeof(LayeredBlock),
+                      {{"repose_tan_a", offsetof(LayeredBlock, repose_tan_a)},
+                       {"distance_a", offsetof(LayeredBlock, distance)},
+                       {"distance_b", offsetof(LayeredBlock, distance) + 4 * sizeof(float)},
+                       {"grid_size", offsetof(LayeredBlock, grid_size)},
+                       {"bedrock_layer_count", offsetof(LayeredBlock, bedrock_layer_count)},
+                       {"periodic", offsetof(LayeredBlock, periodic)},
+                       {"repose_boulders", offsetof(LayeredBlock, repose_boulders)},
+                       {"time_step", offsetof(LayeredBlock, time_step)},
+                       {"vegetation_repose", offsetof(LayeredBlock, vegetation_repose)},
+                       {"depth_factor", offsetof(LayeredBlock, depth_factor)},
+                       {"topsoil_max", offsetof(LayeredBlock, topsoil_max)},
+                       {"creep_rate", offsetof(LayeredBlock, creep_rate)},
+                       {"critical_slope", offsetof(LayeredBlock, critical_slope)},
+                       {"creep_denominator_floor", offsetof(LayeredBlock, creep_denominator_floor)},
+                       {"random_base", offsetof(LayeredBlock, random_base)},
+                       {"random_span", offsetof(LayeredBlock, random_span)},
+                       {"seed", offsetof(LayeredBlock, seed)},
+                       {"step_number", offsetof(LayeredBlock, step_number)},
+                       {"talus_thesis_amount", offsetof(LayeredBlock, talus_thesis_amount)},
+                       {"talus_random", offsetof(LayeredBlock, talus_random)},
+                       {"creep_random", offsetof(LayeredBlock, creep_random)},
+                       {"creep_floored", offsetof(LayeredBlock, creep_floored)},
+                       {"vegetation_quality_a", offsetof(LayeredBlock, vegetation_quality_a)},
+                       {"weathering_shares", offsetof(LayeredBlock, weathering_shares)},
+                       {"vegetation_quality_boulders", offsetof(LayeredBlock, vegetation_quality_boulders)},
+                       {"vegetation_rate", offsetof(LayeredBlock, vegetation_rate)},
+                       {"vegetation_equilibrium", offsetof(LayeredBlock, vegetation_equilibrium)},
+                       {"vegetation_neighbours", offsetof(LayeredBlock, vegetation_neighbours)},
+                       {"root_depth", offsetof(LayeredBlock, root_depth)},
+                       {"root_depth_deep", offsetof(LayeredBlock, root_depth_deep)},
+                       {"vegetation_base", offsetof(LayeredBlock, vegetation_base)},
+                       {"vegetation_code", offsetof(LayeredBlock, vegetation_code)},
+                       {"weathering_rate", offsetof(LayeredBlock, weathering_rate)},
+                       {"weathering_reach", offsetof(LayeredBlock, weathering_reach)}});
+  program.check_block("BedrockTypes", sizeof(BedrockTypeRecord),
+                      {{"bedrock_types[0].fragments", offsetof(BedrockTypeRecord, fragments)},
+                       {"bedrock_types[0].repose_tan", offsetof(BedrockTypeRecord, repose_tan)},
+                       {"bedrock_types[0].soil_rate", offsetof(BedrockTypeRecord, soil_rate)},
+                       {"bedrock_types[0].soil_composition_a", offsetof(BedrockTypeRecord, soil_composition_a)},
+                       {"bedrock_types[0].erosion_slopes", offsetof(BedrockTypeRecord, erosion_slopes)},
+                       {"bedrock_types[0].erosion_thresholds", offsetof(BedrockTypeRecord, erosion_thresholds)}});
+  return program;
+}
 
 LayeredGroundBuffers::LayeredGroundBuffers(const LayeredGround<float>& ground, const LayeredParams& params)
     : params_(params),
@@ -235,10 +271,7 @@ void LayeredGroundBuffers::add_conversions(LayeredConversions& conversions) cons
 }
 
 LayeredSlopeProcess::LayeredSlopeProcess(const std::string& outflow_shader, bool clear_vegetation)
-    : outflow_(ComputeProgram::load(outflow_shader)),
-      apply_(ComputeProgram::load("erosion/layered/apply.comp",
-                                  clear_vegetation ? std::vector<std::string>{"LAYERED_CLEAR_VEGETATION"}
-                                                   : std::vector<std::string>{})) {}
+    : outflow_(layered_program(outflow_shader)), apply_(apply_program(clear_vegetation)) {}
 
 void LayeredSlopeProcess::step(LayeredGroundBuffers& ground, std::uint32_t step,
                                LayeredConversions& conversions) const {

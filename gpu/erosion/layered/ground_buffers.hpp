@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/layered/layered_ground.hpp"
 #include "core/params/layered.hpp"
@@ -26,8 +27,9 @@
 
 namespace gt::gpu {
 
-// Mirror of `LayeredBlock` in gpu/shaders/erosion/layered/layered.glsl (std140; offsets checked in
-// ground_buffers.cpp). Every real is the reference<float>'s static_cast<float> of the double.
+// Mirror of `LayeredBlock` in gpu/shaders/erosion/layered/layered.glsl (std140; checked against
+// each program by layered_program). Every real is the reference<float>'s static_cast<float> of the
+// double.
 struct LayeredBlock {
   float repose_tan_a[4];
   float distance[8];
@@ -64,6 +66,11 @@ struct LayeredBlock {
   float weathering_reach;
   std::int32_t padding[2];
 };
+
+// A program of layered.glsl (`shader` under the shader root, with `defines`), its LayeredBlock and
+// BedrockTypes records checked against their C++ mirrors (GlProgram::check_block: std::runtime_error
+// on a mismatch). Every layered pass loads its programs through this or layered_water_program.
+ComputeProgram layered_program(const std::string& shader, const std::vector<std::string>& defines = {});
 
 class LayeredGroundBuffers {
  public:

@@ -14,8 +14,9 @@ constexpr ErosionRecordLayout record_layout{48, 20, 36, 40, 0};
 }  // namespace
 
 LayeredImpactErosion::LayeredImpactErosion()
-    : erode_(ComputeProgram::load("erosion/layered/impact_erosion.comp")),
-      gather_(ComputeProgram::load("erosion/layered/impact_erosion.comp", std::vector<std::string>{"IMPACT_GATHER"})) {}
+    : erode_(layered_water_program("erosion/layered/impact_erosion.comp")),
+      gather_(layered_water_program("erosion/layered/impact_erosion.comp",
+                                    std::vector<std::string>{"IMPACT_GATHER"})) {}
 
 void LayeredImpactErosion::step(LayeredGroundBuffers& ground, const LayeredWaterBuffers& water, std::uint32_t step,
                                 LayeredConversions& conversions) const {

@@ -4,12 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "gpu/erosion/layered/water_buffers.hpp"
+
 namespace gt::gpu {
 
 LayeredVegetation::LayeredVegetation(bool flood)
-    : grow_(ComputeProgram::load("erosion/layered/vegetation.comp",
-                                 flood ? std::vector<std::string>{"LAYERED_FLOOD"} : std::vector<std::string>{})),
-      store_(ComputeProgram::load("erosion/layered/vegetation.comp", std::vector<std::string>{"VEGETATION_STORE"})) {}
+    : grow_(layered_water_program("erosion/layered/vegetation.comp",
+                                  flood ? std::vector<std::string>{"LAYERED_FLOOD"} : std::vector<std::string>{})),
+      store_(layered_water_program("erosion/layered/vegetation.comp", std::vector<std::string>{"VEGETATION_STORE"})) {}
 
 void LayeredVegetation::step(LayeredGroundBuffers& ground, std::uint32_t step,
                              LayeredConversions& /*conversions*/) const {

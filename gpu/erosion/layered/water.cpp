@@ -39,9 +39,9 @@ void count(const LayeredWaterBuffers& water, const LayeredGround<float>& shape, 
 }  // namespace
 
 LayeredWaterFlow::LayeredWaterFlow()
-    : sources_(ComputeProgram::load("erosion/layered/water_sources.comp")),
-      flux_(ComputeProgram::load("erosion/layered/water_flux.comp")),
-      move_(ComputeProgram::load("erosion/layered/water_move.comp")) {}
+    : sources_(layered_water_program("erosion/layered/water_sources.comp")),
+      flux_(layered_water_program("erosion/layered/water_flux.comp")),
+      move_(layered_water_program("erosion/layered/water_move.comp")) {}
 
 void LayeredWaterFlow::sources(LayeredGroundBuffers& ground, const LayeredWaterBuffers& water, std::uint32_t step,
                                LayeredConversions& conversions) const {

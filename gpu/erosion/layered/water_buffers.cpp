@@ -4,17 +4,11 @@
 
 #include <cmath>
 #include <cstddef>
+#include <string>
+#include <vector>
 
 namespace gt::gpu {
 namespace {
-
-static_assert(offsetof(LayeredWaterBlock, breakdown_slopes) == 16);
-static_assert(offsetof(LayeredWaterBlock, breakdown_thresholds) == 80);
-static_assert(offsetof(LayeredWaterBlock, cell_area) == 144);
-static_assert(offsetof(LayeredWaterBlock, sink_row_start) == 164);
-static_assert(offsetof(LayeredWaterBlock, breakdown_code) == 216);
-static_assert(offsetof(LayeredWaterBlock, flood_wetness) == 248);
-static_assert(sizeof(LayeredWaterBlock) == 256);
 
 constexpr GLuint block_binding = 1, state_binding = 10, records_binding = 11;
 // Sections of water.glsl.
@@ -160,7 +154,44 @@ void count_erosion_records(const std::vector<float>& records, std::size_t cells,
   }
 }
 
-LayeredWaterPass::LayeredWaterPass(const std::string& shader) : program_(ComputeProgram::load(shader)) {}
+ComputeProgram layered_water_program(const std::string& shader, const std::vector<std::string>& defines) {
+  ComputeProgram program = layered_program(shader, defines);
+  program.check_block("LayeredWaterBlock", sizeof(LayeredWaterBlock),
+                      {{"pipe_coefficient", offsetof(LayeredWaterBlock, pipe_coefficient)},
+                       {"breakdown_slopes", offsetof(LayeredWaterBlock, breakdown_slopes)},
+                       {"breakdown_thresholds", offsetof(LayeredWaterBlock, breakdown_thresholds)},
+                       {"cell_area", offsetof(LayeredWaterBlock, cell_area)},
+                       {"rain_depth", offsetof(LayeredWaterBlock, rain_depth)},
+                       {"river_depth", offsetof(LayeredWaterBlock, river_depth)},
+                       {"river", offsetof(LayeredWaterBlock, river)},
+                       {"river_source", offsetof(LayeredWaterBlock, river_source)},
+                       {"sink_row_start", offsetof(LayeredWaterBlock, sink_row_start)},
+                       {"velocity_depth_floor", offsetof(LayeredWaterBlock, velocity_depth_floor)},
+                       {"depth_ramp", offsetof(LayeredWaterBlock, depth_ramp)},
+                       {"slope_floor", offsetof(LayeredWaterBlock, slope_floor)},
+                       {"slope_scale_x", offsetof(LayeredWaterBlock, slope_scale_x)},
+                       {"slope_scale_y", offsetof(LayeredWaterBlock, slope_scale_y)},
+                       {"cell_size_x", offsetof(LayeredWaterBlock, cell_size_x)},
+                       {"cell_size_y", offsetof(LayeredWaterBlock, cell_size_y)},
+                       {"erosion_strength", offsetof(LayeredWaterBlock, erosion_strength)},
+                       {"organic_capacity", offsetof(LayeredWaterBlock, organic_capacity)},
+                       {"erosion_rate", offsetof(LayeredWaterBlock, erosion_rate)},
+                       {"deposition_rate", offsetof(LayeredWaterBlock, deposition_rate)},
+                       {"vegetation_protection", offsetof(LayeredWaterBlock, vegetation_protection)},
+                       {"breakdown_code", offsetof(LayeredWaterBlock, breakdown_code)},
+                       {"share_code", offsetof(LayeredWaterBlock, share_code)},
+                       {"least_share", offsetof(LayeredWaterBlock, least_share)},
+                       {"transparency_depth", offsetof(LayeredWaterBlock, transparency_depth)},
+                       {"regolith_depth", offsetof(LayeredWaterBlock, regolith_depth)},
+                       {"regolith_erosion", offsetof(LayeredWaterBlock, regolith_erosion)},
+                       {"regolith_deposition", offsetof(LayeredWaterBlock, regolith_deposition)},
+                       {"drying_factor", offsetof(LayeredWaterBlock, drying_factor)},
+                       {"flood_wetness", offsetof(LayeredWaterBlock, flood_wetness)},
+                       {"impact_scale", offsetof(LayeredWaterBlock, impact_scale)}});
+  return program;
+}
+
+LayeredWaterPass::LayeredWaterPass(const std::string& shader) : program_(layered_water_program(shader)) {}
 
 void LayeredWaterPass::step(LayeredGroundBuffers& ground, const LayeredWaterBuffers& water, std::uint32_t step) const {
   water.bind();

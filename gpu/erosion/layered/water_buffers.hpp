@@ -24,7 +24,8 @@
 
 namespace gt::gpu {
 
-// Mirror of `LayeredWaterBlock` in water.glsl (std140; offsets checked in water_buffers.cpp).
+// Mirror of `LayeredWaterBlock` in water.glsl (std140; checked against each program by
+// layered_water_program).
 struct LayeredWaterBlock {
   float pipe_coefficient[4];
   float breakdown_slopes[4][4];
@@ -101,6 +102,10 @@ struct ErosionRecordLayout {
 // each float times `area` in double.
 void count_erosion_records(const std::vector<float>& records, std::size_t cells, double area,
                            const ErosionRecordLayout& layout, bool count_breakdown, LayeredConversions& conversions);
+
+// A program of water.glsl (`shader`, with `defines`): layered_program's checks, and its
+// LayeredWaterBlock checked against the C++ mirror (std::runtime_error on a mismatch).
+ComputeProgram layered_water_program(const std::string& shader, const std::vector<std::string>& defines = {});
 
 class LayeredWaterPass {
  public:

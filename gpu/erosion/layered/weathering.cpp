@@ -35,7 +35,7 @@ void count(const std::vector<float>& records, std::size_t cells, double area, La
 
 }  // namespace
 
-LayeredWeathering::LayeredWeathering() : program_(ComputeProgram::load("erosion/layered/weathering.comp")) {}
+LayeredWeathering::LayeredWeathering() : program_(layered_program("erosion/layered/weathering.comp")) {}
 
 void LayeredWeathering::step(LayeredGroundBuffers& ground, std::uint32_t step, LayeredConversions& conversions) const {
   const std::size_t cells = ground.shape().cells();
