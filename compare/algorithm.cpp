@@ -1,5 +1,7 @@
 #include "compare/algorithm.hpp"
 
+#include <variant>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -33,6 +35,41 @@ const Algorithm& find_algorithm(const std::string& name) {
   throw InputError(fmt::format("unknown algorithm '{}'; known: {}", name, fmt::join(names, ", ")));
 }
 
+namespace {
+
+const char* kind_name(CaseKind kind) {
+  switch (kind) {
+    case CaseKind::generated: return "generated";
+    case CaseKind::stepped: return "stepped";
+    case CaseKind::custom: return "custom";
+  }
+  return "?";
+}
+
+nlohmann::json field_json(const FieldDecl& field) {
+  return {{"name", field.name},
+          {"unit", field.unit},
+          {"meaning", field.meaning},
+          {"extent", extent_name(field.extent)},
+          {"components", field.components},
+          {"component_names", field.component_names},
+          {"conserved", field.conserved},
+          {"standard_name", field.standard_name}};
+}
+
+// A stepped algorithm's declared state at its default parameters, read off a case prepared on a
+// flat 4 x 4 grid (nothing is stepped): some declarations depend on parameters (the pipes' count).
+nlohmann::json state_json(const Algorithm& algorithm) {
+  LoadedInput probe;
+  probe.heights = Heightmap(4, 4, 1.0);
+  const PreparedTwin prepared = algorithm.prepare(resolve_params(algorithm.name, *algorithm.params, {}), probe);
+  nlohmann::json fields = nlohmann::json::array();
+  for (const FieldDecl& field : std::get<SteppedTwin>(prepared.kind).fields) fields.push_back(field_json(field));
+  return fields;
+}
+
+}  // namespace
+
 nlohmann::json algorithm_json(const Algorithm& algorithm) {
   nlohmann::json params = nlohmann::json::array();
   for (const auto& spec : *algorithm.params) params.push_back(to_json(spec));
@@ -41,8 +78,10 @@ nlohmann::json algorithm_json(const Algorithm& algorithm) {
                       : algorithm.ad_hoc_input == AdHocInput::optional_volume ? "optional_volume"
                       : algorithm.ad_hoc_input == AdHocInput::optional_global_grid ? "optional_global_grid"
                                                                               : "none";
-  return {{"name", algorithm.name}, {"summary", algorithm.summary}, {"source", algorithm.source},
-          {"input", input},         {"params", params}};
+  nlohmann::json json = {{"name", algorithm.name}, {"summary", algorithm.summary}, {"source", algorithm.source},
+                         {"input", input},         {"kind", kind_name(algorithm.kind)}, {"params", params}};
+  if (algorithm.kind == CaseKind::stepped) json["state"] = state_json(algorithm);
+  return json;
 }
 
 }  // namespace gt

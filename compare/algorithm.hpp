@@ -93,7 +93,10 @@ const std::vector<Algorithm>& algorithms();
 const Algorithm& find_algorithm(const std::string& name);
 
 // What `groundtruth list --json` and the Python module say of an algorithm: {"name", "summary",
-// "source", "input" (heightmap, mesh, optional_volume, optional_global_grid or none), "params": [core/params.hpp to_json]}.
+// "source", "input" (heightmap, mesh, optional_volume, optional_global_grid or none), "kind"
+// (generated, stepped or custom), "params": [core/params.hpp to_json]}, and for a stepped one
+// "state": its declared fields at the default parameters ({"name", "unit", "meaning", "extent",
+// "components", "component_names", "conserved", "standard_name"}: compare/stepper.hpp).
 nlohmann::json algorithm_json(const Algorithm& algorithm);
 
 // Defined by each file of compare/algorithms/.

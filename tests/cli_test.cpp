@@ -599,7 +599,7 @@ class CliGeoTiff : public ::testing::Test {
     EXPECT_NE(input.find("30x30 m"), std::string::npos) << "ModelPixelScale not honoured: " << input;
     EXPECT_EQ(report_case.at("width"), geotiff_width);
     EXPECT_EQ(report_case.at("height"), geotiff_height);
-    for (const char* field : {"cpu.exr", "gpu.exr"}) {
+    for (const char* field : {"terrain_cpu.exr", "terrain_gpu.exr"}) {
       SCOPED_TRACE(field);
       const FloatImage image = read_float_image(work_ / folder / report_case.at("name").get<std::string>() / field);
       ASSERT_EQ(image.width, geotiff_width);
@@ -629,7 +629,7 @@ class CliGeoTiff : public ::testing::Test {
 
   // ... and erosion moved material somewhere.
   void expect_terrain_changed(const std::string& folder, const std::string& name) {
-    const FloatImage image = read_float_image(work_ / folder / name / "cpu.exr");
+    const FloatImage image = read_float_image(work_ / folder / name / "terrain_cpu.exr");
     ASSERT_EQ(image.pixels.size(), heights_.size());
     double largest_change = 0.0;
     for (std::size_t i = 0; i < heights_.size(); ++i) {
@@ -767,7 +767,7 @@ TEST(CliRun, RgbPngIsRefusedUnlessItsRedChannelIsAskedFor) {
   EXPECT_EQ(report_case.at("status"), "pass") << report_case.dump(2);
   EXPECT_EQ(report_case.at("width"), width);
   EXPECT_EQ(report_case.at("height"), height);
-  const FloatImage result = read_float_image(out / "adhoc.erosion.thermal.colour" / "cpu.exr");
+  const FloatImage result = read_float_image(out / "adhoc.erosion.thermal.colour" / "terrain_cpu.exr");
   ASSERT_EQ(result.pixels.size(), static_cast<std::size_t>(width) * height);
   for (std::size_t i = 0; i < result.pixels.size(); ++i) {
     ASSERT_NEAR(result.pixels[i], rgb[3 * i] / 255.0, 1e-6) << "cell " << i;

@@ -282,6 +282,7 @@ Algorithm thermal_algorithm() {
           .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
             return prepare_thermal(resolved, input.heights);
           },
+          .kind = CaseKind::stepped,
           // Counted in reference/erosion/thermal.cpp and gpu/erosion/thermal.cpp.
           .traffic = {.cpu = 88.0, .gpu = 52.0},
           .expect_shape = talus_spec_shape(),
@@ -299,6 +300,7 @@ Algorithm thermal_jako_algorithm() {
           .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
             return prepare_thermal_jako(resolved, input.heights);
           },
+          .kind = CaseKind::stepped,
           // Counted in reference/erosion/thermal_jako.cpp and gpu/erosion/thermal_jako.cpp.
           .traffic = {.cpu = 152.0, .gpu = 84.0},
           .expect_shape = field_spec_shape(),

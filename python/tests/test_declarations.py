@@ -41,3 +41,21 @@ def test_an_unknown_algorithm_is_refused_with_the_command_lines_message(tmp_path
     with pytest.raises(groundtruth.InputError) as refused:
         groundtruth.run("erosion.nope", size=(8, 8))
     assert str(refused.value) == cli
+
+
+def test_stepped_algorithms_declare_their_state_once_with_units():
+    """The state the stepped runner compares, exports and pictures, as the command line lists it."""
+    stepped = {a["name"]: a for a in groundtruth.algorithms() if a["kind"] == "stepped"}
+    assert {"erosion.thermal", "erosion.thermal_jako", "erosion.pipe"} <= set(stepped)
+    for name, algorithm in stepped.items():
+        fields = algorithm["state"]
+        assert fields, name
+        assert len({f["name"] for f in fields}) == len(fields), name
+        for field in fields:
+            assert field["unit"] and field["meaning"], (name, field)
+            assert field["components"] >= 1, (name, field)
+    water = next(f for f in stepped["erosion.pipe"]["state"] if f["name"] == "water")
+    assert (water["unit"], water["standard_name"]) == ("m", "surface_water__depth")
+    outflow = next(f for f in stepped["erosion.pipe"]["state"] if f["name"] == "outflow")
+    assert outflow["extent"] == "cell x pipe" and outflow["component_names"] == ["L", "R", "T", "B"]
+    assert all("state" not in a for a in groundtruth.algorithms() if a["kind"] != "stepped")

@@ -1,6 +1,6 @@
 // Buffers, parameters and sample access of Beyer's particle (droplet) erosion (seed 000 §2.7,
 // digest 000 §3.7): beyer_droplets.comp and beyer_apply.comp. The uniform block is mirrored by
-// BeyerBlock in gpu/erosion/beyer.cpp, whose static_asserts check the std140 offsets.
+// BeyerBlock in gpu/erosion/beyer.cpp, whose offsets are checked against this block when the program links (GlProgram::check_block).
 //
 // Heights are samples at integer points (sample (i, j) = cell (i, j), row-major), in the caller's
 // units; positions in texels. A droplet only reads and changes samples inside the grid and valid

@@ -1,6 +1,6 @@
 // Buffers, parameters and texel access of seed 000's flow map (§4.7; digest 000 §4.7):
 // flow_map_droplets.comp and flow_map_plug.comp. The uniform block is mirrored by FlowBlock in
-// gpu/erosion/flow_map.cpp, whose static_asserts check the std140 offsets.
+// gpu/erosion/flow_map.cpp, whose offsets are checked against this block when the program links (GlProgram::check_block).
 //
 // Heights are read only; a texel off the grid or masked (valid == 0) reads 0 and takes no flow. The
 // concentration lives in `flow` (race, disjoint: floats written in place, eq. 4.12) or, with

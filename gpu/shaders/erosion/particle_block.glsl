@@ -1,6 +1,6 @@
 // Buffers, parameters and texel access of seed 000's particle (droplet) erosion (digest 000 §4.4,
 // Appendix A): particle_droplets.comp and particle_apply.comp. The uniform block is mirrored by
-// ParticleBlock in gpu/erosion/particle.cpp, whose static_asserts check the std140 offsets.
+// ParticleBlock in gpu/erosion/particle.cpp, whose offsets are checked against this block when the program links (GlProgram::check_block).
 //
 // Texel access emulates Hydra's r32f image: load() of a cell off the grid or masked (valid == 0)
 // returns 0, store() there is ignored (GLSL's out-of-bounds imageLoad/imageStore; masked cells

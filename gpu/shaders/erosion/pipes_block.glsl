@@ -1,6 +1,6 @@
 // Buffers, parameters and helpers of the virtual-pipe erosion (Mei 2007) shaders pipes_*.comp.
-// The uniform block is mirrored by PipeBlock in gpu/erosion/pipes.cpp, whose static_asserts check
-// the std140 offsets. The algorithm, its decisions and the float-trap storage are described at the
+// The uniform block is mirrored by PipeBlock in gpu/erosion/pipes.cpp, whose offsets are checked
+// against this block when the program links (GlProgram::check_block). The algorithm, its decisions and the float-trap storage are described at the
 // top of gpu/erosion/pipes.cpp; the CPU reference is reference/erosion/pipes.cpp.
 //
 // Pipes 0-3 are L, R, T, B: (-1,0), (1,0), (0,1), (0,-1); with PIPES_8 also the diagonals 4-7, TL,

@@ -1,6 +1,6 @@
 // Buffers and parameters of seed 000's thermal erosion (thermal_requests.comp and
 // thermal_transfer.comp). The uniform block is mirrored by ThermalBlock in gpu/erosion/thermal.cpp,
-// whose static_asserts check the std140 offsets.
+// whose offsets are checked against this block when the program links (GlProgram::check_block).
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(std140, binding = 0) uniform ThermalBlock {

@@ -6,7 +6,7 @@
 // Included by render/phong.frag when GT_PHONG_LOOK is 1 (cave) or 2 (terrain).
 //
 // Inputs (host: gpu/render/phong.cpp):
-//   PhongLookBlock  std140, uniform binding 0, mirrored there with static_asserts
+//   PhongLookBlock  std140, uniform binding 0, mirrored there, checked at link (GlProgram::check_block)
 //   strip           storage buffer binding 6: the cave's colour strip or the terrain's height ramp,
 //                   one vec4 (rgb, 1) per entry, look.strip_size entries
 //   cave only: the permutation buffer (binding 5, noise/permutation.glsl) of the improved Perlin
