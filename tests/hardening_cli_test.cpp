@@ -169,7 +169,7 @@ TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
        (work_ / "out").string()},
       work_.path());
   EXPECT_EQ(pipe.status, 2) << pipe;
-  EXPECT_THAT(pipe.err, HasSubstr("erosion.pipe needs about 216.4 GiB (64000000 cells x 1230 B")) << pipe;
+  EXPECT_THAT(pipe.err, HasSubstr("erosion.pipe needs about 245.0 GiB (64000000 cells x 1230 B")) << pipe;
   EXPECT_THAT(pipe.err, HasSubstr("ulimit -v")) << pipe;
   // A 66-byte PNG declaring 30000² 16-bit pixels: diff-image weighs both images before reading.
   const std::string declared = (hostile_data / "declares_30000.png").string();
@@ -189,7 +189,7 @@ TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
       {"run", "mine.checkpoints", "--cases", (cases / "checkpoints.json").string(), "--out", (work_ / "out").string()},
       work_.path());
   EXPECT_EQ(checkpoints.status, 2) << checkpoints;
-  EXPECT_THAT(checkpoints.err, HasSubstr("262144000 cell-checkpoints x 150 B")) << checkpoints;
+  EXPECT_THAT(checkpoints.err, HasSubstr("262144000 cell-checkpoints x 180 B")) << checkpoints;
   EXPECT_TRUE(fs::is_empty(work_.path()));
 }
 

@@ -637,12 +637,16 @@ Algorithm pipe_algorithm() {
           // and gpu/erosion/pipes.cpp, at the benchmark's parameters (4 pipes, flux transport).
           .traffic = {.cpu = 607.0, .gpu = 308.0},
           .expect_shape = field_spec_shape(),
-          // Measured on 1024² (both backends, report included): 959 B a cell with 1 checkpoint, and
-          // 133 B a cell for each further one (the states kept for shadow steps and ref<double>).
+          // Measured on 1024² (both backends, report included): 959 B a cell with 1 checkpoint; each
+          // further one keeps ref<double>'s and ref<float>'s states there, 6 + pipes doubles a cell
+          // each: 160 B a cell with 4 pipes, as measured (the peak RSS of 256² runs with 8 and 64
+          // checkpoints), rounded up by 20 B.
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const double cells = static_cast<double>(input.heights.size());
+            const double pipes = resolved.at("pipes").get<std::string>() == "8" ? 8.0 : 4.0;
             return memory_for(cells, "cells", 1100 + descriptor_bytes_per_cell) +
-                   memory_for(cells * resolved.at("checkpoints").get<double>(), "cell-checkpoints", 150);
+                   memory_for(cells * resolved.at("checkpoints").get<double>(), "cell-checkpoints",
+                              2.0 * 8.0 * (6.0 + pipes) + 20.0);
           }};
 }
 
