@@ -98,7 +98,8 @@ Heightmap noise_terrain(const nlohmann::json& input) {
   const auto resolved = resolve_params(algorithm.name, *algorithm.params, input.value("params", nlohmann::json::object()));
   LoadedInput sampling_grid;
   sampling_grid.heights = grid;
-  const auto& generated = std::get<GeneratedCase>(algorithm.prepare(resolved, sampling_grid).kind);
+  const PreparedTwin prepared = algorithm.prepare(resolved, sampling_grid);
+  const auto& generated = std::get<GeneratedCase>(prepared.kind);
   return generated.twin.reference_double(generated.grid);
 }
 
