@@ -25,14 +25,6 @@ std::string component_label(const FieldDecl& field, int component) {
   return field.name + "_" + part;
 }
 
-State blank_state(const StateDecl& decl, const StateGrid& grid, double fill) {
-  State state{grid, {}};
-  for (const FieldDecl& field : decl) {
-    state.fields.emplace_back(grid.cells() * static_cast<std::size_t>(field.components), fill);
-  }
-  return state;
-}
-
 Grid<double> component_grid(const StateDecl& decl, const State& state, std::size_t field, int component) {
   const FieldDecl& declared = decl.at(field);
   Grid<double> grid = state.grid.blank(0.0, declared.unit);

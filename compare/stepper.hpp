@@ -85,9 +85,6 @@ struct State {
   std::vector<std::vector<double>> fields;  // in declaration order, grid.cells()·components each
 };
 
-// A state of the declared shape with every value `fill`.
-State blank_state(const StateDecl& decl, const StateGrid& grid, double fill = 0.0);
-
 // Component k of field `field` as a grid in the field's unit.
 Grid<double> component_grid(const StateDecl& decl, const State& state, std::size_t field, int component);
 
