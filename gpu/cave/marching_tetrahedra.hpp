@@ -1,7 +1,7 @@
-// Marching tetrahedra of the endless cave on the GPU (seed 004 digest §2.6, issue 5), twin of
-// reference/cave/marching_tetrahedra.hpp: the same mesh triangle by triangle, the same vertex
-// numbering and edge keys, the same position bits (on llvmpipe; see gpu/shaders/cave/lattice.glsl
-// for the division on other GPUs).
+// Marching tetrahedra of the endless cave on the GPU (seed 004 digest §2.6), GPU twin.
+//
+// The same mesh as the reference triangle by triangle, the same vertex numbering and edge keys, the
+// same position bits (on llvmpipe; see gpu/shaders/cave/lattice.glsl for the division on other GPUs).
 //
 // Two sources of the density, one mesher (the source is a constructor argument; every later pass
 // is shared):
@@ -10,7 +10,7 @@
 //     solid, scale, threshold, kernel, seed); the twin of marching_tetrahedra<float> applied to
 //     cave_density<float>(params).
 //   MarchingTetrahedra(density, threshold, solid, lattice_origin[, placement]): any scalar volume
-//     (issue 5; e.g. core/io/volume_io.hpp's, converted to float). Its samples are uploaded into
+//     (e.g. core/io/volume_io.hpp's, converted to float). Its samples are uploaded into
 //     the density buffer once, sample (0, 0, 0) at global lattice point lattice_origin, and run()
 //     skips the density pass; the twin of marching_tetrahedra<float>(density, threshold, solid,
 //     lattice_origin, placement). density.origin and density.spacing are ignored, as by the
@@ -27,17 +27,33 @@
 // Between 3 and 4 it reads the two totals back to size the outputs (a wait for the GPU); after 4
 // it does not synchronise (bracket with glFinish to time it). Outputs larger than
 // GL_MAX_SHADER_STORAGE_BLOCK_SIZE (a 256³ block's 457 MB of triangles on llvmpipe's 128 MiB) are
-// emitted in chunks of cubes, each through windows of the output buffers (glBindBufferRange). result() downloads the mesh:
-// positions in global lattice coordinates (world units), triangles counter-clockwise seen from the
-// air, edge_keys one per vertex. An all-air or all-rock block (open) gives an empty mesh.
+// emitted in chunks of cubes, each through windows of the output buffers (glBindBufferRange).
+// result() downloads the mesh: positions in global lattice coordinates (world units), triangles
+// counter-clockwise seen from the air, edge_keys one per vertex. An all-air or all-rock block
+// (open) gives an empty mesh.
 //
 // The placement mirrors reference::EdgePlacement (CaveParams has no field for it): linear, the
 // seed's "shifting along the edge", or midpoint, its first version.
-// Throws gt::InputError for a block below 1 cell (2 samples) per axis (which the reference meshes
-// as nothing, or a cap), a block (pad included) outside the edge keys' range or, for an uploaded
-// volume, a non-finite sample (both as the reference); std::invalid_argument for a volume whose values are not nx·ny·nz samples;
-// std::runtime_error when a per-sample or per-cube buffer would exceed
-// GL_MAX_SHADER_STORAGE_BLOCK_SIZE (about 320³ cells). Needs a current GlContext.
+// move_to(origin): the same block shape at another lattice origin (the endless cave's slabs): rewrites
+//   the parameter block only, no recompilation or reallocation. The noise is computed at the new
+//   origin; an uploaded volume keeps its samples, placed there.
+// limit_output_windows(bytes): emits outputs through windows of at most `bytes` each instead of the
+//   driver's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (tests split small blocks this way).
+//
+// Inputs:  params (CaveParams: origin, size, solid, scale, threshold, kernel, seed) or a scalar volume
+//          (Volume<float>, threshold, solid, lattice_origin); placement. Needs a current GlContext.
+// Outputs: result(): TriangleMesh<float> with positions, triangles and edge_keys (above).
+// Units:   world units (global lattice coordinates).
+// Throws:  gt::InputError for a block below 1 cell (2 samples) per axis (which the reference meshes
+//          as nothing, or a cap), a block (pad included) outside the edge keys' range or, for an
+//          uploaded volume, a non-finite sample (both as the reference), and a block with more cubes
+//          than 32-bit triangle offsets allow (move_to() like the constructor); std::invalid_argument
+//          for a volume whose values are not nx·ny·nz samples, and from limit_output_windows() when a
+//          window could not hold one cube's worst case; std::runtime_error when a per-sample or per-cube
+//          buffer would exceed GL_MAX_SHADER_STORAGE_BLOCK_SIZE (about 320³ cells), and when a shader
+//          does not compile or link or its block does not match the C++ mirror.
+// Twin:    reference/cave/marching_tetrahedra.hpp (marching_tetrahedra<float>; with the seed's cave,
+//          applied to reference/cave/density.hpp's cave_density<float>(params)).
 #pragma once
 
 #include <array>

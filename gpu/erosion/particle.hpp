@@ -1,27 +1,39 @@
-// Particle (droplet) water erosion of seed 000 (Hydra, digest 000 §4.4, Appendix A, Algorithms
-// 4-7), GPU twin of reference/erosion/particle.hpp.
+// Particle (droplet) water erosion of seed 000 (Hydra; digest 000 §4.4, Appendix A, Algorithms 4-7), GPU twin.
 //
-// ParticleErosion(width, height, constants) compiles gpu/shaders/erosion/particle_droplets.comp
-// (and particle_apply.comp for the batch ordering) and allocates the buffers; load() uploads a
-// float heightfield and its mask (masked cells read as 0 and are never written, as cells off the
-// grid); run() dispatches constants.iterations outer iterations, each spacing² passes of one
-// droplet per spacing x spacing block (Algorithm 7), without synchronisation (bracket with glFinish
-// to time it); step(count) dispatches `count` outer iterations from the current state; result()
-// downloads. Orderings as core/params/particle.hpp: race and disjoint run the droplets of a pass in
-// place on one height buffer; batch freezes the heights during a pass and applies the droplets'
-// fixed-point delta when it ends. Positions in texels, heights in the caller's units.
+// ParticleErosion(width, height, constants, transport_colour = false) compiles
+//   gpu/shaders/erosion/particle_droplets.comp (and particle_apply.comp for the batch ordering) and
+//   allocates the buffers.
+// load(heights) uploads a float heightfield and its mask and zeroes the side maps.
+// load_colour(colour) uploads the colour map to transport (after each load(); needs transport_colour).
+// run() dispatches constants.iterations outer iterations, each spacing² passes of one droplet per
+//   spacing x spacing block (Algorithm 7), without synchronisation (bracket with glFinish to time it);
+//   step(count) dispatches `count` outer iterations from the current state.
+// result(), colour_result(), eroded_at_droplet(), deposited_at_droplet() download.
+// Orderings as core/params/particle.hpp: race and disjoint run the droplets of a pass in place on one
+// height buffer; batch freezes the heights during a pass and applies the droplets' fixed-point delta
+// when it ends.
+// Colour (§4.5): constructed with transport_colour = true, the kernel is compiled with PARTICLE_COLOUR
+// and transports the colour map given by load_colour(). Constructed without it the kernel holds no
+// colour code. Batch: colour frozen during a pass, the deposits' weighted mean applied at its end
+// (gpu/shaders/erosion/particle_apply.comp). Buffer bindings: 0 parameter block, 1 heights, 2 valid,
+// 3 batch delta, 4 eroded_at_droplet, 5 deposited_at_droplet, 6 colour (vec4), 7 batch colour sums
+// (5 int per cell).
 //
-// Side maps: eroded_at_droplet() / deposited_at_droplet() download what the droplets eroded and
-// deposited at the texel they stood on, summed over the run since the last load() (no contrast):
-// float sums (race, disjoint) or int32 counts of quanta returned as float(count)·quantum (batch).
-// Colour (§4.5): constructed with transport_colour = true, the kernel is compiled with
-// PARTICLE_COLOUR and transports the colour map given by load_colour() (after each load(); run()
-// and step() refuse to run without it); colour_result() downloads it. Constructed without it the
-// kernel holds no colour code and load_colour() / colour_result() are refused. Batch: colour frozen
-// during a pass, the deposits' weighted mean applied at its end (gpu/shaders/erosion/
-// particle_apply.comp). Buffer bindings: 0 parameter block, 1 heights, 2 valid, 3 batch delta,
-// 4 eroded_at_droplet, 5 deposited_at_droplet, 6 colour (vec4), 7 batch colour sums (5 int per cell).
-// Needs a current GlContext.
+// Inputs:  width, height and constants (core/params/particle.hpp); heights: Grid<float> of that size
+//          with its mask (Grid::valid, empty = all valid; masked cells read as 0 and are never
+//          written, as cells off the grid); colour: ColourMap<float> (RGBA per texel, linear: the same
+//          type as reference::ColourMap<float>) of the same size. Needs a current GlContext.
+// Outputs: the heights and the transported colour, with the geometry, units and mask of the last load;
+//          side maps: what the droplets eroded and deposited at the texel they stood on, summed over
+//          the run since the last load() (no contrast): float sums (race, disjoint) or int32 counts of
+//          quanta returned as float(count)·quantum (batch).
+// Units:   positions in texels, heights in the caller's units.
+// Throws:  std::invalid_argument for a spacing below 1, a batch ordering without a quantum > 0 and a
+//          load or load_colour of another size; std::logic_error for load_colour() or colour_result()
+//          without transport_colour, and for run() or step() with transport_colour but no load_colour()
+//          since the last load(); std::runtime_error when a shader does not compile or link, lacks
+//          pass_offset, or its block does not match the C++ mirror.
+// Twin:    reference/erosion/particle.hpp.
 #pragma once
 
 #include <array>

@@ -24,7 +24,7 @@
 // seed 001's code), DIFFUSION_WATER. seed 001's code tilt (tilt_differences) needs no define: it is
 // the spans of the tilt's differences in the parameter block, 1 instead of l and 2l.
 //
-// The float trap (issue 3) and its solution. ref<float> stores b as a float: an erosion amount a
+// The float trap and its solution. ref<float> stores b as a float: an erosion amount a
 // below half the float spacing of b (2^-15 m = 3.05e-5 m between floats at 500 m, so a < 1.5e-5 m)
 // leaves b unchanged while s gains a, so material is created (and destroyed by deposition). Here
 // the terrain is
@@ -200,7 +200,7 @@ std::vector<std::pair<std::size_t, float>> source_depths(const Grid<double>& ter
                                                          const std::vector<PointSource>& sources) {
   std::vector<std::pair<std::size_t, float>> depths;
   for (const auto& source : sources) {
-    // Mutant erosion.pipe.source_over_length (issue 11): the volume divided by l_x, not l_x·l_y.
+    // Mutant erosion.pipe.source_over_length: the volume divided by l_x, not l_x·l_y.
     const double area = mutant_active("erosion.pipe.source_over_length") ? constants.length_x : constants.cell_area;
     const double depth = source.rate * constants.time_step / area;
     depths.emplace_back(terrain.index(source.x, source.y), static_cast<float>(depth));

@@ -1,16 +1,48 @@
-// Hydraulic erosion with virtual pipes (Mei, Decaudin, Hu 2007), GPU twin of
-// reference/erosion/pipes.hpp: the same stages over 4 or 8 pipes (with seed 001's regolith and
-// sediment diffusion and Jákó & Tóth's thermal step when the constants ask for them), the same
-// float operations in the same order, the same boundary and 0/0 rules (listed in
-// reference/erosion/pipes.cpp), on compute shaders gpu/shaders/erosion/pipes_*.comp. Needs a
-// current GlContext.
+// Hydraulic erosion with virtual pipes (Mei, Decaudin, Hu 2007; digest 000 §3.4), GPU twin.
 //
-// The one deliberate difference from ref<float> — the float trap (issue 3): the terrain is stored
-// as the initial height b0 (float, never written) plus a float change Δb that starts at 0, and
-// height differences are formed as (b0_a − b0_b) + (Δb_a − Δb_b). An erosion amount far below the
-// float spacing of b (3e-5 m at 500 m) then still lands in Δb, so material is conserved to the
-// rounding of Δb and s, not of b; ref<float>, which stores b, creates or destroys material there.
-// See gpu/erosion/pipes.cpp for the passes, the buffers and the ledger.
+// The same stages as the reference over 4 or 8 pipes (with seed 001's regolith and sediment
+// diffusion and Jákó & Tóth's thermal step when the constants ask for them), the same float
+// operations in the same order, the same boundary and 0/0 rules (listed in
+// reference/erosion/pipes.cpp), on compute shaders gpu/shaders/erosion/pipes_*.comp. See
+// gpu/erosion/pipes.cpp for the passes, the buffers and the ledger.
+// PipeErosion(initial, constants, forcing = {}, keep_ledger = true): uploads `initial` (each value
+//   rounded to float once), the forcing and the constants. No-data cells hold no water, sediment,
+//   regolith, flux or velocity. keep_ledger = true: every step() downloads the state, appends a
+//   PipeLedgerEntry summed in double exactly as the reference's (the same float quantities, the same
+//   compensated sums and order) and checks the state. keep_ledger = false: steps download nothing
+//   (for timing); the ledger keeps entry 0 only.
+// upload(state): starts over from `state` (below).
+// step(), run(steps): one step is passes_per_step() dispatches (not synchronised: the caller
+//   brackets timing with glFinish).
+// state(), ledger(), passes_per_step(), steps_done(): below.
+//
+// Inputs:  initial, state: PipeState<double> (terrain b, water d, sediment s, regolith, flux,
+//          velocity); constants from pipe_constants(); forcing: rain map and point sources. Needs a
+//          current GlContext.
+// Outputs: state(): downloaded (waits for the GPU); terrain reconstructed in double as b0 + Δb (an
+//          exact sum unless |Δb| < 2^-29·|b0|, then within 2^-53 of b). ledger(): entry 0 describes the
+//          initial state, entry n the state after step n (only with keep_ledger).
+//          passes_per_step(): compute dispatches per step: 4, +1 with point sources, +1 with sediment
+//          diffusion, +2 with the thermal step.
+// Units:   as the reference: b, d, s in metres, flux in m³/s, velocity in m/s; ledger volumes in m³.
+// Throws:  InputError, the reference's messages: the constructor refuses grids of another size than
+//          the terrain, a mask without a valid cell, non-finite values (also after rounding to float),
+//          negative water, sediment, regolith or flux on valid cells, a diagonal flux other than 0 with
+//          4 pipes, a rain map of another size or with negative or non-finite rates, and sources off
+//          the grid, on no-data cells or with a negative or non-finite rate; upload() refuses the same
+//          and a state whose grid, cell size or mask differs from the constructor's (the rain and the
+//          pipes' borders were derived from those); step() with keep_ledger on NaN, infinities and
+//          negative water/sediment/regolith/flux, naming the step and cell. std::runtime_error when a
+//          shader does not compile or link or its block does not match the C++ mirror.
+// Twin:    reference/erosion/pipes.hpp.
+// Decisions: the one deliberate difference from ref<float>, the float trap: the terrain is stored as
+//          the initial height b0 (float, never written) plus a float change Δb that starts at 0, and
+//          height differences are formed as (b0_a − b0_b) + (Δb_a − Δb_b). An erosion amount far below
+//          the float spacing of b (3e-5 m at 500 m) then still lands in Δb, so material is conserved to
+//          the rounding of Δb and s, not of b; ref<float>, which stores b, creates or destroys material
+//          there. upload() makes the terrain's floats the base b0 and starts Δb at 0, the ledger at
+//          entry 0 and steps_done() at 0, as if constructed from the state, with the same constants,
+//          forcing and compiled passes; the driver's shadow steps load ref<float>'s state this way.
 #pragma once
 
 #include <cstddef>

@@ -1,12 +1,21 @@
-// Thermal erosion of seed 000 (Hydra), GPU twin of reference/erosion/thermal.hpp.
+// Thermal erosion of seed 000 (Hydra; digest 000 §4.6, Algorithms 9-11), GPU twin.
 //
 // ThermalErosion(width, height, constants, neighbourhood, iterations) compiles
-// gpu/shaders/erosion/thermal_requests.comp and thermal_transfer.comp and allocates the buffers;
-// load() uploads a float heightfield (mask honoured as in the reference), run() dispatches all
-// iterations (two passes each, no synchronisation: bracket with glFinish to time it), step(first,
-// count) dispatches `count` iterations from the current state numbered from `first` (the number
-// picks an alternating run's pipes; run() is step(0, iterations)), result() downloads.
-// Needs a current GlContext.
+//   gpu/shaders/erosion/thermal_requests.comp and thermal_transfer.comp and allocates the buffers.
+// load(heights) uploads a float heightfield (mask honoured as in the reference).
+// run() dispatches all iterations (two passes each, no synchronisation: bracket with glFinish to time
+//   it); step(first, count) dispatches `count` iterations from the current state numbered from
+//   `first` (the number picks an alternating run's pipes; run() is step(0, iterations)).
+// result() downloads.
+//
+// Inputs:  width, height, constants (core/params/thermal.hpp), neighbourhood, iterations; heights:
+//          Grid<float> of that size with its mask. Needs a current GlContext.
+// Outputs: result(): the heights with the geometry, units and mask of the last load.
+// Units:   heights and lengths in the units of `constants`, as the reference.
+// Throws:  std::invalid_argument for a load of another size (gpu/heightfield_buffers.hpp);
+//          std::runtime_error when a shader does not compile or link or its block does not match the
+//          C++ mirror.
+// Twin:    reference/erosion/thermal.hpp.
 #pragma once
 
 #include "core/grid.hpp"

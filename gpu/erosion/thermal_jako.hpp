@@ -1,9 +1,18 @@
-// Thermal erosion of Jákó & Tóth 2011, GPU twin of reference/erosion/thermal_jako.hpp.
+// Thermal erosion of Jákó & Tóth 2011 (digest 000 §3.6, eqs. 2.30-2.34), GPU twin.
 //
 // ThermalJakoErosion(width, height, constants, iterations) compiles
-// gpu/shaders/erosion/thermal_jako_outflow.comp and thermal_jako_gather.comp; load() uploads,
-// run() dispatches all iterations (not synchronised), step(count) `count` of them from the current
-// state (run() is step(iterations)), result() downloads. Needs a current GlContext.
+//   gpu/shaders/erosion/thermal_jako_outflow.comp and thermal_jako_gather.comp.
+// load(heights) uploads; run() dispatches all iterations (not synchronised); step(count) `count` of
+//   them from the current state (run() is step(iterations)); result() downloads.
+//
+// Inputs:  width, height, constants (thermal_jako_constants()), iterations; heights: Grid<float> of
+//          that size with its mask. Needs a current GlContext.
+// Outputs: result(): the heights with the geometry, units and mask of the last load.
+// Units:   heights and lengths in metres; rate dimensionless.
+// Throws:  std::invalid_argument for a load of another size (gpu/heightfield_buffers.hpp);
+//          std::runtime_error when a shader does not compile or link or its block does not match the
+//          C++ mirror.
+// Twin:    reference/erosion/thermal_jako.hpp.
 #pragma once
 
 #include "core/grid.hpp"

@@ -1,8 +1,8 @@
-// Seed 002's "Earth-like" planet generator on the GPU (digest 002 §4.4, §9): the twin of
-// reference/planet/{jitter,plates,elevation}.hpp, following the step-by-step spec of
-// core/params/planet.hpp with the synchronous plate rule and Jacobi (or no) smoothing. The
-// legacy plate rule and legacy smoothing are sequential and CPU only: the constructor refuses them.
+// Seed 002's "Earth-like" planet generator on the GPU (digest 002 §4.4, §9), GPU twin.
 //
+// Follows the step-by-step spec of core/params/planet.hpp with the synchronous plate rule and Jacobi
+// (or no) smoothing. The legacy plate rule and legacy smoothing are sequential and CPU only: the
+// constructor refuses them.
 // Passes (gpu/shaders/planet/, one invocation per region unless said; buffers and shared helpers
 // in planet.glsl):
 //   1   jitter.comp              offsets and positions
@@ -17,15 +17,26 @@
 //   8   elevation_collision.comp E1
 //   9   elevation_smooth.comp    E2
 // The neighbour table is CubeSphere's, uploaded once (§9.1).
+// PlanetGenerator(sphere, params) compiles the passes and uploads the neighbour table.
+// jitter() and grow_plates() run their steps and download.
+// elevation(positions, partition) uploads given positions (3 per region) and partition (plate and
+//   is_edge) and runs steps 4–9 (the driver's shadow parity: the GPU fed the reference's state).
+// run() runs steps 1–9 on the GPU with no download between steps (it reads one counter per
+//   plate-growth cycle; bracket it with glFinish to time it), after which elevation_result() and
+//   partition_result() download its output.
+// run_jitter(), run_plate_growth(), run_elevation(): the steps of run() one at a time (for timing
+//   each; each needs the ones before it to have run): step 1, steps 2–3 (reads one counter per
+//   cycle), steps 4–9.
 //
-// API: jitter() and grow_plates() run their steps and download; elevation(positions, partition)
-// uploads given positions (3 per region) and partition (plate and is_edge) and runs steps 4–9 (the
-// driver's shadow parity: the GPU fed the reference's state); run() runs steps 1–9 on the GPU with
-// no download between steps (it reads one counter per plate-growth cycle; bracket it with glFinish
-// to time it), after which elevation_result() and partition_result() download its output.
-// Throws gt::InputError for a legacy mode or for plates outside 1..6R², std::invalid_argument for
-// inputs of the wrong size, std::runtime_error if plate growth stalls (see generator.cpp).
-// Needs a current GlContext.
+// Inputs:  sphere (CubeSphere of the params' resolution), params (PlanetParams); positions, partition.
+//          Needs a current GlContext.
+// Outputs: JitteredRegions<float>, PlatePartition, PlanetElevation<float> (core/planet/planet_state.hpp).
+// Units:   as the reference: offsets in cells, positions dimensionless, elevations in generator units.
+// Throws:  gt::InputError for a legacy mode, a resolution other than the cube sphere's or plates
+//          outside 1..6R²; std::invalid_argument for inputs of the wrong size; std::runtime_error if
+//          plate growth stalls (see generator.cpp) and when a shader does not compile or link or a
+//          block does not match its C++ mirror.
+// Twin:    reference/planet/jitter.hpp, plates.hpp and elevation.hpp.
 #pragma once
 
 #include <array>

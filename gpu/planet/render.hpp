@@ -1,14 +1,24 @@
-// The planet drawn as the seed's demo draws it (digest 002 §4.3), on the GL pipeline: GPU twin of
-// reference/planet/render.hpp. The cube-sphere mesh through the reference's P·V (rounded to float
-// once), each fragment the region nearest its direction by Algorithm 1's 5×5 search and that
-// region's elevation in the palette (gpu/shaders/planet/render.{vert,frag}).
+// The planet drawn as the seed's demo draws it (digest 002 §4.3), on the GL pipeline, GPU twin.
 //
+// The cube-sphere mesh through the reference's P·V (rounded to float once), each fragment the region
+// nearest its direction by Algorithm 1's 5×5 search and that region's elevation in the palette
+// (gpu/shaders/planet/render.{vert,frag}).
 // PlanetRenderer(mesh, view_projection, sphere, positions, elevation, width, height) uploads the
-// mesh, the neighbour table, the centroids (3 per region) and the elevations (1 per region) and
-// makes an RGBA32F target (gpu/render/offscreen_target.hpp: depth LESS, no culling). run() clears
-// and draws (not synchronised: bracket with glFinish to time it). image() downloads: RGB8 rows top
-// first (each channel round(255·c), as the reference quantises) and the region per pixel (−1 where
-// nothing is drawn). Needs a current GlContext; std::invalid_argument for inputs of the wrong size.
+//   mesh, the neighbour table, the centroids and the elevations and makes an RGBA32F target
+//   (gpu/render/offscreen_target.hpp: depth LESS, no culling).
+// run() clears and draws (not synchronised: bracket with glFinish to time it).
+// image() downloads.
+//
+// Inputs:  mesh (the cube sphere's), view_projection (row-major P·V in double), sphere, positions
+//          (3 per region), elevation (1 per region), width and height in pixels. Needs a current
+//          GlContext.
+// Outputs: PlanetPixels: RGB8 rows top first (each channel round(255·c), as the reference quantises)
+//          and the region per pixel (−1 where nothing is drawn).
+// Units:   elevations in generator units; positions dimensionless.
+// Throws:  std::invalid_argument for inputs of the wrong size; std::runtime_error when a side lies
+//          outside [1, GL_MAX_TEXTURE_SIZE], the framebuffer is incomplete, or a shader does not
+//          compile or link or its block does not match the C++ mirror.
+// Twin:    reference/planet/render.hpp.
 #pragma once
 
 #include <array>

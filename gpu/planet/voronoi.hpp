@@ -1,13 +1,25 @@
-// The spherical Voronoi of seed 002's region centroids on the GPU (digest 002 §2.8, Algorithm 1):
-// for each query direction, the nearest centroid among the 3×3 (rings = 1, the seed's shader) or
-// 5×5 (rings = 2, its thesis) block of cells around the cell holding the direction, through the
-// cube sphere's neighbour table. Twin of reference/planet/voronoi.hpp (exact, by k-d tree).
-// Shader: gpu/shaders/planet/voronoi.comp. Needs a current GlContext.
+// The spherical Voronoi of seed 002's region centroids on the GPU (digest 002 §2.8, Algorithm 1), GPU twin.
 //
-// PlanetVoronoi(sphere, rings) compiles the pass and uploads the neighbour table;
-// labels(positions, directions) uploads positions (3 per region, unit length) and directions and
-// returns one region per direction. Throws std::invalid_argument for rings outside 1..2 or
-// positions of the wrong size.
+// For each query direction, the nearest centroid among the 3×3 (rings = 1, the seed's shader) or 5×5
+// (rings = 2, its thesis) block of cells around the cell holding the direction, through the cube
+// sphere's neighbour table. Shader: gpu/shaders/planet/voronoi.comp.
+// PlanetVoronoi(sphere, rings) compiles the pass and uploads the neighbour table.
+// labels(positions, directions) uploads positions and directions and returns one region per direction.
+// voronoi_block(resolution, direction_count) -> the std140 block of planet/voronoi_search.glsl
+//   (binding 0): the face matrices, R, θ and tan θ rounded to float once, and the number of queries
+//   (voronoi.comp's; 0 for the renderer).
+// check_voronoi_block(program): checks a program's VoronoiBlock (voronoi.comp's, the renderer's)
+//   against voronoi_block's C++ mirror.
+// padded_xyz(xyz): x, y, z per item -> x, y, z, 0 per item: std430 vec4s, as the shaders read positions.
+//
+// Inputs:  sphere, rings; positions (3 per region, unit length), directions (unit length). Needs a
+//          current GlContext.
+// Outputs: one region per direction.
+// Units:   positions and directions dimensionless (unit sphere).
+// Throws:  std::invalid_argument for rings outside 1..2 or positions of the wrong size;
+//          std::runtime_error (GlProgram::check_block) on a block mismatch and when the shader does not
+//          compile or link.
+// Twin:    reference/planet/voronoi.hpp (exact, by k-d tree).
 #pragma once
 
 #include <cstdint>

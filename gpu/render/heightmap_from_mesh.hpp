@@ -1,17 +1,25 @@
-// Seed 000's heightmap from a mesh (digest 000_water_erosion.md §4.3, eqs. 4.1–4.4) on the GL
-// pipeline, GPU twin of reference/render/heightmap_from_mesh.hpp (same mapping, rows, coverage and
-// decisions; read them there).
+// Seed 000's heightmap from a mesh (digest 000_water_erosion.md §4.3, eqs. 4.1–4.4) on the GL pipeline, GPU twin.
 //
+// Same mapping, rows, coverage and decisions as the reference; read them there.
 // HeightmapFromMesh(mesh, width, height) compiles gpu/shaders/render/heightmap_from_mesh.vert and
-// .frag, uploads the mesh (positions minus the bounding-box centre, rounded to float once; the
-// index buffer as it is) and makes a framebuffer of an R32F colour texture and a
-// DEPTH_COMPONENT32F depth texture of width x height texels. run() clears colour to 0 and depth to
-// 1 and draws every triangle with the depth test LESS and no culling (no synchronisation: bracket
-// with glFinish to time it); result() downloads both textures, flips GL's bottom-first rows to the
-// grid's top-first ones and marks texels whose depth is < 1 as covered. Needs a current GlContext;
-// throws gt::InputError for a mesh without triangles or without extent in x or y, and
-// std::runtime_error when the framebuffer is incomplete or a side exceeds GL_MAX_TEXTURE_SIZE.
+//   .frag, uploads the mesh (positions minus the bounding-box centre, rounded to float once; the index
+//   buffer as it is) and makes a framebuffer of an R32F colour texture and a DEPTH_COMPONENT32F depth
+//   texture of width x height texels.
+// run() clears colour to 0 and depth to 1 and draws every triangle with the depth test LESS and no
+//   culling (no synchronisation: bracket with glFinish to time it).
+// result() downloads both textures, flips GL's bottom-first rows to the grid's top-first ones and
+//   marks texels whose depth is < 1 as covered.
 // subpixel_bits() is GL_SUBPIXEL_BITS, what the reference must snap to.
+//
+// Inputs:  mesh (double positions, uint32 triangles), width and height in texels. Needs a current
+//          GlContext.
+// Outputs: MeshHeightmap: heights (1 - z' where covered, 0 elsewhere; row 0 = largest y) and covered
+//          (1 where a fragment passed the depth test).
+// Units:   heights dimensionless, as the reference.
+// Throws:  gt::InputError for a mesh without triangles or without extent in x or y, and
+//          std::runtime_error when the framebuffer is incomplete or a side exceeds GL_MAX_TEXTURE_SIZE,
+//          or when a shader does not compile or link.
+// Twin:    reference/render/heightmap_from_mesh.hpp.
 #pragma once
 
 #include <array>

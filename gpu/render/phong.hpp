@@ -1,20 +1,20 @@
-// Seed 004's Phong look (digest 004_cave.md §2.9) on a mesh through a perspective camera on the GL
-// pipeline, GPU twin of reference/render/phong.hpp (camera conventions, shading formula and its
-// decisions are documented there; gpu/shaders/render/phong.{vert,frag} write the formula again).
+// Seed 004's Phong look (digest 004_cave.md §2.9) on a mesh through a perspective camera on the GL pipeline, GPU twin.
 //
-// PhongRenderer(scene) takes what the reference computed once on the CPU (PhongDraw: the mesh, its
-// per-vertex normals, P·V in double, the eye, the albedo and the light power) and rounds it to float:
-// positions and normals into one vertex buffer, P·V, eye, albedo and light power into uniforms. It
-// makes a framebuffer of an RGBA8 colour texture and a DEPTH_COMPONENT32F depth texture. run()
-// clears colour to 0 and depth to 1 and draws every triangle with the depth test LESS and no
-// culling (no synchronisation: bracket with glFinish to time it); image() downloads the colour
-// texture and returns RGB8, rows top first (alpha dropped). Needs a current GlContext; throws
-// std::invalid_argument when normals and positions differ in count, std::runtime_error when a
-// side exceeds GL_MAX_TEXTURE_SIZE or the framebuffer is incomplete.
+// Camera conventions, shading formula and its decisions are documented in the reference;
+// gpu/shaders/render/phong.{vert,frag} write the formula again.
+// PhongRenderer(draw) takes what the reference computed once on the CPU (PhongDraw: the mesh, its
+//   per-vertex normals, P·V in double, the eye, the albedo and the light power) and rounds it to
+//   float: positions and normals into one vertex buffer, P·V, eye, albedo and light power into
+//   uniforms. It makes a framebuffer of an RGBA8 colour texture and a DEPTH_COMPONENT32F depth texture.
+// run() clears colour to 0 and depth to 1 and draws every triangle with the depth test LESS and no
+//   culling (no synchronisation: bracket with glFinish to time it).
+// image() downloads the colour texture and returns RGB8, rows top first (alpha dropped).
+// PhongCaveLook, PhongTerrainLook, PhongTerrainDrape: the fields of reference::CaveLook, TerrainLook
+//   and TerrainDrape.
 //
 // Looks (PhongDraw::look; formulas in reference/render/phong.hpp "Looks" and cave_look.hpp): one
 // shader source, the look picks it at compile time with the define GT_PHONG_LOOK (0 plain, 1 cave,
-// 2 terrain), so the plain program is the pre-look shader token for token after preprocessing.
+// 2 terrain), so the plain program holds no look code after preprocessing.
 // cave and terrain read gpu/shaders/render/phong_look.glsl: a std140 block PhongLookBlock
 // (uniform binding 0, mirrored in phong.cpp and checked against the linked program) and the strip
 // (colour strip or height ramp) as a storage buffer of vec4 (binding 6); the cave look also binds
@@ -23,12 +23,22 @@
 // double and rounded to float once: bump slope a·s, the terrain's 1/(high - low), cos(rock_start)
 // and 1/(cos(rock_start) - cos(rock_full)), the drape's 1/(x_east - x_west) and 1/(z_south - z_north).
 // A terrain drape (PhongTerrainLook::drape) adds the define GT_TERRAIN_DRAPE (without one the
-// terrain program is unchanged) and a storage buffer (binding 7) of one uint per texel, RGBA8
+// terrain program holds no drape code) and a storage buffer (binding 7) of one uint per texel, RGBA8
 // packed as unpackUnorm4x8 reads it (r in the low byte, alpha 255), row-major, row 0 at v = 0; the
 // shader reads its four texels by index and blends them in arithmetic, never through a sampler.
-// std::invalid_argument for an empty strip (cave, terrain), for a terrain look without
-// height_low < height_high and 0 <= rock_start < rock_full <= 180, and for a drape without
-// 3·width·height bytes, x_west < x_east and z_north < z_south.
+//
+// Inputs:  PhongDraw: mesh, normals (one per vertex), view_projection (row-major P·V), eye, albedo,
+//          light power, image size in pixels, look with its cave or terrain fields. Needs a current
+//          GlContext.
+// Outputs: Rgb8Pixels: 3 bytes per pixel, row-major, row 0 at the top.
+// Units:   as the reference: positions in the mesh's unit; colours in [0, 1] before quantising.
+// Throws:  std::invalid_argument when normals and positions differ in count, for an empty strip (cave,
+//          terrain), for a terrain look without height_low < height_high and 0 <= rock_start <
+//          rock_full <= 180, and for a drape without 3·width·height bytes, x_west < x_east and
+//          z_north < z_south; std::runtime_error when a side exceeds GL_MAX_TEXTURE_SIZE or the
+//          framebuffer is incomplete, or when a shader does not compile or link or PhongLookBlock does
+//          not match its mirror.
+// Twin:    reference/render/phong.hpp and reference/render/cave_look.hpp.
 #pragma once
 
 #include <array>

@@ -45,7 +45,7 @@ template <class Real>
 CaveMeshBuilder<Real>::CaveMeshBuilder(const char* algorithm, const Volume<Real>& density, Real threshold, bool solid,
                                        const std::array<std::int64_t, 3>& lattice_origin, EdgePlacement placement)
     : density_(density),
-      // Issue 11's both-twins mutant: the threshold's sign flipped (gpu/shaders/cave/lattice.glsl alike).
+      // The both-twins mutant threshold_negated: the threshold's sign flipped (gpu/shaders/cave/lattice.glsl alike).
       threshold_(mutant_active("cave.marching_tetrahedra.threshold_negated") ? -threshold : threshold),
       solid_(solid),
       lattice_origin_(lattice_origin),
@@ -135,7 +135,7 @@ std::array<Real, 3> CaveMeshBuilder<Real>::vertex_position(const LatticePoint& l
     const auto margin = static_cast<Real>(edge_margin(
         {lattice_origin_[0] + lower[0], lattice_origin_[1] + lower[1], lattice_origin_[2] + lower[2]}, direction));
     t = std::clamp((threshold_ - lower_value) / (upper_value - lower_value), margin, Real(1) - margin);
-    // Issue 11's both-twins mutant: t measured from the upper end (gpu/shaders/cave/lattice.glsl alike).
+    // The both-twins mutant vertex_wrong_end: t measured from the upper end (gpu/shaders/cave/lattice.glsl alike).
     if (mutant_active("cave.marching_tetrahedra.vertex_wrong_end")) t = Real(1) - t;
   }
   const LatticePoint step = corner_offset(direction);

@@ -1,12 +1,18 @@
-// What the two cave meshers (marching_tetrahedra.hpp, marching_cubes.hpp; seed 004 digest
-// §2.5–2.7) share: the walk over the lattice's cubes, the optional air pad, the rock test, where a
-// vertex sits on its edge, and the welding of vertices by global lattice edge key. The GPU twin
-// must reproduce every rule below; marching_tetrahedra.hpp states them as one specification.
+// What the two cave meshers share (seed 004 digest §2.5–2.7): cube walk, optional air pad, rock test, vertex, welding.
+//
+// The meshers: marching_tetrahedra.hpp and marching_cubes.hpp. The GPU twin must reproduce every
+// rule below; marching_tetrahedra.hpp states them as one specification.
+// CaveMeshBuilder(algorithm, density, threshold, solid, lattice_origin, placement): first_cube() and
+//   cube_counts() (the cube walk), rock_corners(cube) (bit c set iff corner c of the cube with lower
+//   corner `cube` is rock), add_triangle(cube, edges) (appends the triangle through the vertices on
+//   the three given edges of the cube), take_mesh().
+// for_each_cube(builder, visit) -> calls visit(cube) for every cube of the builder in output order
+//   (x fastest, then y, then z).
+// corner_offset(corner) -> (dx, dy, dz) of corner c.
 //
 // Local sample (x, y, z) of the density is global lattice point lattice_origin + (x, y, z); world
 // positions are global lattice coordinates (spacing 1; the meshers ignore density.origin and
 // density.spacing, which for the cave are the same lattice).
-//
 // Cube corners: corner c = dx + 2·dy + 4·dz sits at the cube's lower corner + (dx, dy, dz).
 // Cubes: named by their lower corner in local sample coordinates, from `first` to `first + count
 // - 1` per axis, visited x fastest, then y, then z. Open: first 0, count n - 1 (no cube when an
@@ -26,10 +32,6 @@
 // one value is below the threshold and the other not, so v_b ≠ v_a and 0 <= t <= 1 (rounding is
 // monotonic); t = 0 or 1 when a value equals the threshold exactly, which the clamp to [δ, 1 - δ]
 // keeps off the lattice points (otherwise: zero-area triangles and touching faces).
-// Pad decision: the cap of a solid block crosses every edge to the pad at its midpoint, half a
-// lattice unit outside the block's faces, independent of the values: simple, exact in float, and
-// the same on both twins. (Treating the pad as a value such as threshold + 1 would move the cap
-// with the boundary values and put vertices at t = 0 for infinite values.)
 // Welding: the first time a triangle uses an edge, the edge gets the next vertex index and its key
 // lattice_edge_key(global a, d-bits) goes to edge_keys; later uses share that index. Vertices are
 // therefore numbered in order of first use over the triangles in output order, corner by corner.
@@ -37,7 +39,21 @@
 // builder keeps the vertex indices of two z slabs of lower points, 7 directions each, and drops
 // the older slab when the walk moves up a layer. Memory is two slabs, time constant per lookup:
 // the cost per voxel does not grow with the block (a global hash map's did, by cache misses).
-// Cubes must therefore arrive in non-decreasing z, as for_each_cube gives them.
+//
+// Inputs:  density (Volume<Real>), threshold, solid (pad with air), lattice_origin (global lattice
+//          coordinates of sample (0, 0, 0)), placement (linear or midpoint); `algorithm` names the
+//          mesher in messages. Cubes must arrive at add_triangle in non-decreasing z, as for_each_cube
+//          gives them.
+// Outputs: the welded TriangleMesh<Real> with edge_keys (take_mesh).
+// Units:   world units (global lattice coordinates, spacing 1).
+// Throws:  InputError from the constructor for a non-finite sample or a block whose lattice points
+//          (pad included) lie outside the edge keys' range (core/params/cave.hpp); std::logic_error from
+//          add_triangle when a cube comes with a lower z than an earlier one.
+// Twin:    gpu/shaders/cave/lattice.glsl and cave_block.glsl (the GPU mesher gpu/cave/marching_tetrahedra.hpp).
+// Decisions: pad: the cap of a solid block crosses every edge to the pad at its midpoint, half a
+//   lattice unit outside the block's faces, independent of the values: simple, exact in float, and
+//   the same on both twins. (Treating the pad as a value such as threshold + 1 would move the cap
+//   with the boundary values and put vertices at t = 0 for infinite values.)
 #pragma once
 
 #include <array>

@@ -15,7 +15,7 @@ namespace {
 
 using CaseTable = std::array<TetCase, 16>;
 
-// The table the walk reads: tet_case_table, or under one of issue 11's both-twins mutants the
+// The table the walk reads: tet_case_table, or under one of the both-twins mutants the
 // table with its bug (the GPU twin makes the same change in gpu/shaders/cave/tetrahedra.glsl).
 CaseTable walked_case_table() {
   CaseTable table = tet_case_table;

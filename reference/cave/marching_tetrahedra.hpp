@@ -1,14 +1,11 @@
-// Marching tetrahedra on the cave's lattice (seed 004, digest §2.6; Kuhn decomposition and the
-// oriented case table of the digest's "Re-implementation table"), CPU reference of the GPU mesher.
+// Marching tetrahedra on the cave's lattice (seed 004, digest §2.6), CPU reference.
 //
-// marching_tetrahedra<Real>(density, threshold, solid, lattice_origin[, placement])
-//   -> TriangleMesh<Real>: indexed, welded by lattice edge key (edge_keys filled), triangles wound
-//   counter-clockwise seen from the air, i.e. their normals point from rock into air (+∇f).
-//   lattice_origin: global lattice coordinates of density sample (0, 0, 0); positions are global
-//   lattice coordinates (world units of the cave). solid: pad with air (closed mesh); otherwise an
-//   open chunk whose boundary lies on the block's faces. placement: linear (the seed's "shifting
-//   along the edge", default) or midpoint (the seed's first version, Fig. 3.5).
-//   Throws InputError for non-finite samples or a block outside the edge-key range.
+// Kuhn decomposition and the oriented case table of the digest's "Re-implementation table".
+// marching_tetrahedra<Real>(density, threshold, solid, lattice_origin[, placement]) -> TriangleMesh<Real>
+// kuhn_tetrahedra, tet_edges, tet_case_table: the Kuhn decomposition and the digest's oriented case
+//   table for a positively oriented tet (bit v set iff vertex v is rock): codes 1, 2, 4, 8 one
+//   triangle, 3, 5, 6 a quad split along its first vertex; code 15 - w is the polygon of w reversed,
+//   (p0, p1, ..., pk) -> (p0, pk, ..., p1), split the same way.
 //
 // Output specification (the GPU twin reproduces it exactly; cube walk, pad, rock test, vertex
 // position and welding as in lattice_cubes.hpp):
@@ -29,12 +26,22 @@
 //      position_c = Real(a_c) + t·Real(d_c) (exact for d_c = 0 and the product exact for d_c = 1,
 //      so a fused multiply-add changes nothing).
 //
-// Counts (decision on ties): the digest's 3828 triangles on 12³ cells and 60,292 on the 30³ big
-// cube (§2.6, §2.7) count samples exactly at the threshold as rock and divide by the scale. The
-// seed's lattice has many samples that are zero or zero up to rounding (93 exact zeros in the big
-// cube), so the tie rule matters: with rock iff f < threshold (volume.hpp) and the reciprocal
-// (density.hpp) the counts are 3790 and 60,290 (tests/marching_tetrahedra_test.cpp reproduces the
-// digest's numbers with its conventions).
+// Inputs:  density (Volume<Real>); threshold; lattice_origin: global lattice coordinates of density
+//          sample (0, 0, 0); solid: pad with air (closed mesh), otherwise an open chunk whose boundary
+//          lies on the block's faces; placement: linear (the seed's "shifting along the edge",
+//          default) or midpoint (the seed's first version, Fig. 3.5).
+// Outputs: TriangleMesh<Real>: indexed, welded by lattice edge key (edge_keys filled), triangles wound
+//          counter-clockwise seen from the air, i.e. their normals point from rock into air (+∇f);
+//          positions are global lattice coordinates.
+// Units:   world units of the cave (global lattice coordinates).
+// Throws:  InputError for non-finite samples or a block outside the edge-key range.
+// Twin:    gpu/cave/marching_tetrahedra.hpp (MarchingTetrahedra) with gpu/shaders/cave/*.comp and *.glsl.
+// Decisions: counts (ties): the digest's 3828 triangles on 12³ cells and 60,292 on the 30³ big cube
+//   (§2.6, §2.7) count samples exactly at the threshold as rock and divide by the scale. The seed's
+//   lattice has many samples that are zero or zero up to rounding (93 exact zeros in the big cube), so
+//   the tie rule matters: with rock iff f < threshold (volume.hpp) and the reciprocal (density.hpp)
+//   the counts are 3790 and 60,290 (tests/marching_tetrahedra_test.cpp reproduces the digest's numbers
+//   with its conventions).
 #pragma once
 
 #include <array>

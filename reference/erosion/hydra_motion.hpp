@@ -1,7 +1,21 @@
-// Droplet motion that seed 000's particle erosion (reference/erosion/particle.cpp) and its flow map
-// (reference/erosion/flow_map.cpp) share (digest 000 Appendix A): Algorithm 4's acceleration along
-// one axis as upstream nests it, and erode4's 4 texel centres around a droplet with their bilinear
-// weights. Positions in texels; heights in the caller's units.
+// Droplet motion that seed 000's particle erosion and its flow map share (digest 000 Appendix A), CPU reference.
+//
+// accelerate_axis(velocity, height, ahead, behind, acceleration, max_jump) -> the new velocity component:
+//   Algorithm 4 as upstream nests it, the component along an axis accelerated towards the lower side
+//   along the motion (from rest the negative side); no acceleration when that drop exceeds `max_jump`
+//   (the flow map passes the largest Real: no limit).
+// corners_around(pos_x, pos_y) -> Corners: erode4's 4 texel centres around a droplet with their
+//   bilinear weights: the corner cell ivec2(pos - 0.5) by truncation (as upstream, so within half a
+//   texel of x = 0 or y = 0 the weights leave [0, 1]), then +x, +y, +xy, with the weights
+//   (1-fx)(1-fy), fx(1-fy), (1-fx)fy, fx·fy.
+//
+// Inputs:  a droplet's velocity component and position; `ahead` and `behind` the neighbours' heights
+//          at +1 and -1 along the axis.
+// Outputs: the velocity component; the four texels and their weights.
+// Units:   positions in texels; heights in the caller's units.
+// Throws:  nothing.
+// Twin:    gpu/shaders/erosion/hydra_motion.glsl (included by particle_block.glsl and flow_map_block.glsl);
+//          the users: reference/erosion/particle.cpp and reference/erosion/flow_map.cpp.
 #pragma once
 
 namespace gt::reference {

@@ -22,7 +22,7 @@
 //     products) with factor f_col·w: C = C·(1 - factor) + col·factor, no height condition; without
 //     interpolate_colour C(ipos) = C(ipos)·(1 - f_col) + f_col·col. (1 - f_col) and (1 - factor)
 //     are rounded once, the operations in this order in both twins.
-// Decisions of this project (issue 12): the droplets of one pass run in row-major order of their
+// Decisions of this project: the droplets of one pass run in row-major order of their
 // blocks (the truth), or in batch ordering against the pass's frozen heights with integer quanta
 // (core/params/particle.hpp). Units: texels and steps; heights in the units of the constants.
 // Batch ordering and colour: the colour is frozen during the pass like the heights (pick-ups read

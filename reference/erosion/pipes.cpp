@@ -188,7 +188,7 @@ std::vector<std::pair<std::size_t, Real>> source_depths(const Grid<Real>& terrai
                                                         const std::vector<PointSource>& sources) {
   std::vector<std::pair<std::size_t, Real>> depths;
   for (const auto& source : sources) {
-    // Mutant erosion.pipe.source_over_length (issue 11): the volume divided by l_x, not l_x·l_y.
+    // Mutant erosion.pipe.source_over_length: the volume divided by l_x, not l_x·l_y.
     const double area = mutant_active("erosion.pipe.source_over_length") ? constants.length_x : constants.cell_area;
     depths.emplace_back(terrain.index(source.x, source.y), static_cast<Real>(source.rate * constants.time_step / area));
   }
@@ -345,7 +345,7 @@ void PipeErosion<Real>::add_water() {
   auto& water = state_.water.values;
   const double area = constants_.cell_area;
   water_before_flow_ = water;  // d, for what the additions add
-  const bool half_rain = mutant_active("erosion.pipe.half_rain");  // issue 11's mutant: half the rain added
+  const bool half_rain = mutant_active("erosion.pipe.half_rain");  // mutant: half the rain added
   for (std::size_t cell = 0; cell < water.size(); ++cell) {
     if (!state_.terrain.is_valid(cell)) continue;
     water[cell] = water[cell] + (half_rain ? Real(0.5) * rain_depth_[cell] : rain_depth_[cell]);
@@ -475,7 +475,7 @@ void PipeErosion<Real>::erode_and_deposit() {
   const Real depth_ramp = static_cast<Real>(constants_.depth_ramp);
   const Real dissolving = static_cast<Real>(constants_.dissolving_fraction);
   const Real deposition = static_cast<Real>(constants_.deposition_fraction);
-  // Mutant erosion.pipe.sediment_gain_doubled (issue 11): the sediment gains twice what the bed loses.
+  // Mutant erosion.pipe.sediment_gain_doubled: the sediment gains twice what the bed loses.
   const bool sediment_gain_doubled = mutant_active("erosion.pipe.sediment_gain_doubled");
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
@@ -620,7 +620,7 @@ void PipeErosion<Real>::diffuse(std::vector<Real>& field) {
 
 template <class Real>
 void PipeErosion<Real>::evaporate() {
-  // Mutant erosion.pipe.double_evaporation (issue 11): d·(1 − 2·K_e·Δt).
+  // Mutant erosion.pipe.double_evaporation: d·(1 − 2·K_e·Δt).
   const Real kept = static_cast<Real>(mutant_active("erosion.pipe.double_evaporation")
                                           ? 2.0 * constants_.evaporation_kept - 1.0
                                           : constants_.evaporation_kept);

@@ -1,19 +1,29 @@
-// Hydraulic erosion with virtual pipes (Mei, Decaudin, Hu 2007), CPU reference.
+// Hydraulic erosion with virtual pipes (Mei, Decaudin, Hu 2007; digest 000 §3.4, eqs. 2.10-2.25), CPU reference.
 //
 // PipeErosion<Real>(initial, constants, forcing) advances a PipeState (core/params/hydraulic.hpp)
 // by steps of Δt and keeps a water and material ledger in double, one entry per step:
-//   initial    terrain b, water d, sediment s, outflow flux f, velocity; all in metres, m³/s, m/s.
-//              No-data cells of the terrain's mask are walls or sinks (see pipes.cpp) and hold no
-//              water, sediment, flux or velocity: the constructor sets those to 0 there.
-//   constants  from pipe_constants() (core/params/hydraulic.hpp), 4 or 8 pipes among them.
-//   forcing    rain map (m/s) and point sources (m³/s).
+//   step(), run(steps)  one step / `steps` steps; state() the current state; ledger() entry 0 for the
+//                       initial state, entry n for the state after step n.
 // Real = double is the truth; Real = float repeats the GPU's arithmetic operation by operation.
 //
-// The float trap (issue 3): an erosion or deposition amount below half the float spacing of the
-// terrain height (2^-24·|b|: 3.05e-5 m at 500 m) is lost from the terrain while the sediment keeps
-// all of it, so ref<float> creates or destroys material at high base heights. The float reference
-// shows this honestly (its ledger reports the drift); the GPU twin is to avoid it (heights relative
-// to a base, or compensated storage), not this reference.
+// Inputs:  initial    terrain b, water d, sediment s, outflow flux f, velocity. No-data cells of the
+//                     terrain's mask are walls or sinks (see pipes.cpp) and hold no water, sediment,
+//                     flux or velocity: the constructor sets those to 0 there.
+//          constants  from pipe_constants() (core/params/hydraulic.hpp), 4 or 8 pipes among them.
+//          forcing    rain map and point sources.
+// Outputs: state() and ledger() (core/params/hydraulic.hpp's PipeLedgerEntry).
+// Units:   b, d, s in metres, flux in m³/s, velocity in m/s; rain map in m/s, point sources in m³/s;
+//          ledger volumes in m³.
+// Throws:  InputError ("erosion.pipe: ..."): the constructor for the inputs listed at it (those of
+//          check_pipe_input); step() naming the step and the cell when a value turns NaN or infinite or
+//          water or sediment turns negative (the state is then that of the failed step).
+// Twin:    gpu/erosion/pipes.hpp (PipeErosion) with gpu/shaders/erosion/pipes_*.comp, pipes_block.glsl and
+//          pipes_thermal.glsl.
+// Decisions: the float trap: an erosion or deposition amount below half the float spacing of the
+//          terrain height (2^-24·|b|: 3.05e-5 m at 500 m) is lost from the terrain while the sediment
+//          keeps all of it, so ref<float> creates or destroys material at high base heights. The float
+//          reference shows this honestly (its ledger reports the drift); the GPU twin is to avoid it
+//          (heights relative to a base, or compensated storage), not this reference.
 #pragma once
 
 #include <vector>

@@ -1,10 +1,18 @@
-// Thermal erosion of Jákó & Tóth 2011 (digest 000 §3.6), CPU reference.
+// Thermal erosion of Jákó & Tóth 2011 (digest 000 §3.6, eqs. 2.30-2.34), CPU reference.
 //
 // thermal_jako_erosion(heights, constants, iterations) -> eroded heights
-//   heights     Grid<Real> in metres; cells with valid == 0 take no part.
-//   constants   thermal_jako_constants(): talus slope T = tan(angle), neighbour distances,
-//               request_factor = rate = Δt·C_t·R of eq. 2.32.
 // Real = double is the truth; Real = float repeats the shader's arithmetic operation by operation.
+//
+// Inputs:  heights     Grid<Real> on the 8-neighbourhood pipe system; cells with valid == 0 take no part.
+//          constants   thermal_jako_constants(): talus slope T = tan(angle), neighbour distances,
+//                      request_factor = rate = Δt·C_t·R of eq. 2.32.
+//          iterations  the number of iterations (two synchronous passes each: outflow, gather).
+// Outputs: the heights after the iterations, with the input's geometry, units and mask.
+// Units:   heights and lengths in metres; rate dimensionless in [0, 1].
+// Throws:  nothing.
+// Twin:    gpu/erosion/thermal_jako.hpp (ThermalJakoErosion) with gpu/shaders/erosion/thermal_jako_outflow.comp,
+//          thermal_jako_gather.comp and thermal_jako_block.glsl.
+// Decisions: in reference/erosion/thermal_jako.cpp (H over the set A, height differences in eq. 2.34).
 #pragma once
 
 #include "core/grid.hpp"

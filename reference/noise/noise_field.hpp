@@ -1,10 +1,20 @@
-// A noise function or fractal sum sampled on a grid, CPU reference of gpu/noise/noise_field.cpp.
+// A noise function or fractal sum sampled on a grid (every function of core/params/noise.hpp), CPU reference.
 //
 // noise_field<Real>(params, origin) -> Grid<Real> of params.sampling.width x height
 //   sample (i, j) at origin + (i·step, j·step, 0, 0), each coordinate computed in Real as
-//   Real(origin_c) + Real(i)·Real(step) (two roundings in float, as the shader does);
-//   `origin` is params.sampling.origin or reduced_origin(params) (core/params/noise.hpp).
+//   Real(origin_c) + Real(i)·Real(step) (two roundings in float, as the shader does).
+// noise_at(params, point) -> the function at one point, in double (spec vectors, error models).
+// noise_gradient_at(params, point) -> its analytic gradient at one point, in double, for the functions
+//   that have one (simplex2, simplex3, perlin3 without a fractal sum); std::nullopt otherwise.
 // Real = double is the truth; Real = float repeats the shader's arithmetic.
+//
+// Inputs:  params (NoiseParams: basis, fractal sum, seed, sampling grid); `origin` is
+//          params.sampling.origin or reduced_origin(params) (core/params/noise.hpp).
+// Outputs: the grid of values (row j, column i); a value; a gradient.
+// Units:   coordinates in noise units (one lattice cell = 1); values dimensionless.
+// Throws:  std::invalid_argument from fractal_terms for fractal octaves outside [1, 32], lacunarity <= 0
+//          or gain < 0.
+// Twin:    gpu/noise/noise_field.hpp (NoiseField) with gpu/shaders/noise/noise_field.comp.
 #pragma once
 
 #include <array>

@@ -71,7 +71,7 @@ constexpr GradientChoices gradient_choices(int second_x) {
 }
 
 constexpr GradientChoices perlin_choices = gradient_choices(14);
-// Mutant noise.perlin3.grad_select (issue 11, both twins): 13 where 14 belongs, a typo that moves
+// Mutant noise.perlin3.grad_select (both twins): 13 where 14 belongs, a typo that moves
 // two of Perlin's 16 gradients.
 constexpr GradientChoices grad_select_mutant_choices = gradient_choices(13);
 

@@ -84,7 +84,7 @@ struct Variant<4> {
   static constexpr double scale = 27.0;
 };
 
-// grad3's entry for a hash. Mutant noise.simplex3.grad3_swapped (issue 11, both twins): the
+// grad3's entry for a hash. Mutant noise.simplex3.grad3_swapped (both twins): the
 // table's first two entries exchanged, a transcription slip.
 std::uint32_t grad3_index(std::uint32_t hash) {
   const std::uint32_t index = hash % 12;

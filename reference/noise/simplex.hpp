@@ -1,7 +1,6 @@
-// Simplex noise in 2, 3 and 4 dimensions, CPU reference (seed 004, digest §2.2.3-2.2.4: Eshelman's
-// port of Gustavson 2005, the code the Endless Cave thesis calls as raw_noise_3d), with the analytic
-// gradient in 2-D and 3-D.
+// Simplex noise in 2, 3 and 4 dimensions, gradients in 2-D and 3-D (seed 004, digest §2.2.3-2.2.4), CPU reference.
 //
+// Eshelman's port of Gustavson 2005, the code the Endless Cave thesis calls as raw_noise_3d.
 // simplex2(perm, x, y)                  kernel radius² 0.5, scale 70
 // simplex3(perm, x, y, z, r2)           r2 = 0.6 as the seed (slightly discontinuous across
 //                                       simplex faces, digest §2.2.5) or 0.5 (Gustavson's
@@ -9,14 +8,20 @@
 // simplex4(perm, x, y, z, w, r2)        the same choice of r2, scale 27
 // simplex2_gradient -> {value, d/dx, d/dy}; simplex3_gradient -> {value, d/dx, d/dy, d/dz}; the
 // value is bit for bit the one simplex2/simplex3 return.
-//
-// Units: coordinates in noise units (one lattice cell = 1; seed 004 divides world units by 10
-// before calling, digest §2.2.2); values are dimensionless and stay inside [-1, 1] (largest found:
-// 0.998 in 2-D, 0.979 / 0.992 in 3-D / 4-D with r2 = 0.6, only 0.416 / 0.430 with r2 = 0.5, since
-// the scales were fitted to 0.6); derivatives are per noise unit. The lattice is hashed with `& 255`, so the noise has period 256 on every lattice
-// axis. Coordinates must keep |x + skew| below 2^31 (the cell index is an int).
+// SimplexLattice simplex_lattice2/3/4: skew and unskew factors (below).
 // Real = double is the truth; Real = float repeats gpu/shaders/noise/simplex.glsl operation by
 // operation (the constants below are rounded once from these decimals, as the shader's literals).
+//
+// Inputs:  perm (core/noise/permutation.hpp); coordinates in noise units. The lattice is hashed with
+//          `& 255`, so the noise has period 256 on every lattice axis. Coordinates must keep
+//          |x + skew| below 2^31 (the cell index is an int).
+// Outputs: values dimensionless, inside [-1, 1] (largest found: 0.998 in 2-D, 0.979 / 0.992 in
+//          3-D / 4-D with r2 = 0.6, only 0.416 / 0.430 with r2 = 0.5, since the scales were fitted to
+//          0.6); derivatives per noise unit.
+// Units:   coordinates in noise units (one lattice cell = 1; seed 004 divides world units by 10
+//          before calling, digest §2.2.2).
+// Throws:  nothing.
+// Twin:    gpu/shaders/noise/simplex.glsl (with permutation.glsl).
 #pragma once
 
 #include <array>

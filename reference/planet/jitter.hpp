@@ -1,7 +1,7 @@
-// Step 1 of seed 002's Earth-like generator (digest 002 §4.4.1, eq. 5.1; §9.3 step 1), CPU
-// reference: each region's jittered offset in its cell and its centroid on the unit sphere.
-// GLSL twin: gpu/shaders/planet/jitter.comp. Spec and RNG streams: core/params/planet.hpp.
+// Step 1 of seed 002's Earth-like generator (digest 002 §4.4.1, eq. 5.1; §9.3 step 1), CPU reference.
 //
+// Each region's jittered offset in its cell and its centroid on the unit sphere. Spec and RNG
+// streams: core/params/planet.hpp.
 // jitter_regions(sphere, params) -> offsets (a, b per region, in [0, 1]) and positions (x, y, z
 // per region, unit length).
 //   offset = 0.5 + (U − 0.5)·j per axis;
@@ -9,7 +9,14 @@
 //   u = 2a − 1, v = 1 − 2b; w = P_face·(f(u), f(v), 1) with f(t) = tan(θt)/tan θ (eq. 3.5, 4.3);
 //   position = w·(1/sqrt(w·w)).
 // Real = double is the truth; Real = float repeats the shader's operations in that order (tan θ
-// rounded to float once). Units: offsets in cells, positions dimensionless.
+// rounded to float once).
+//
+// Inputs:  the cube sphere (R cells along a face's edge) and the planet's parameters (jitter j, seed).
+// Outputs: JitteredRegions (core/planet/planet_state.hpp): offsets and positions.
+// Units:   offsets in cells, positions dimensionless.
+// Throws:  nothing.
+// Twin:    gpu/planet/generator.hpp (PlanetGenerator::jitter) with gpu/shaders/planet/jitter.comp and
+//          planet.glsl.
 #pragma once
 
 #include <vector>

@@ -1,14 +1,19 @@
-// Spherical Voronoi of the region centroids (digest 002 §2.8, §9.3 step 11), CPU reference: for each
-// direction, the region whose centroid is nearest, exactly (up to double rounding of the
+// Spherical Voronoi of the region centroids (digest 002 §2.8, §9.3 step 11), CPU reference.
+//
+// For each direction, the region whose centroid is nearest, exactly (up to double rounding of the
 // distances), by CGAL's k-d tree (dD Spatial Searching, exact with ε = 0). On the unit sphere the
 // nearest centroid in Euclidean (chord) distance is the nearest in great-circle distance, so the
-// 3-D search answers the spherical question. GPU twin: gpu/shaders/planet/voronoi.comp, which
-// searches the cell grid as Algorithm 1 does.
-//
+// 3-D search answers the spherical question.
 // VoronoiSearch(positions).nearest(direction) -> the nearest region, its chord distance and the
 // second-nearest distance (a tie when they are equal within rounding); the tree is built once.
 // nearest_sites(positions, directions) -> the same for many directions.
-// Inputs: positions 3 per region (unit length), directions of unit length. Units: chord lengths.
+//
+// Inputs:  positions 3 per region (unit length), directions of unit length.
+// Outputs: NearestSite per direction (second_distance +inf with a single region).
+// Units:   chord lengths.
+// Throws:  nothing.
+// Twin:    gpu/planet/voronoi.hpp (PlanetVoronoi) with gpu/shaders/planet/voronoi.comp and
+//          voronoi_search.glsl, which searches the cell grid as Algorithm 1 does.
 #pragma once
 
 #include <cstdint>

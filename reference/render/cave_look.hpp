@@ -1,8 +1,14 @@
-// Seed 004's cave look (digest 004_cave.md §2.9) for the Phong twin (phong.hpp, look = cave), CPU
-// reference in double: the colour strip indexed by solid noise with a height-dependent frequency,
-// the moss tint on upward normals and bump mapping by the analytic noise gradient; plus the scene
-// of a camera inside a block of the seed's cave (cave_scene). GPU twin:
-// gpu/shaders/render/phong_look.glsl (host: gpu/render/phong.hpp).
+// Seed 004's cave look (digest 004_cave.md §2.9) for the Phong twin (phong.hpp, look = cave), CPU reference in double.
+//
+// The colour strip indexed by solid noise with a height-dependent frequency, the moss tint on upward
+// normals and bump mapping by the analytic noise gradient; plus the scene of a camera inside a block
+// of the seed's cave (cave_scene).
+// sampled_strip(stops), seed_colour_strip(), strip_colour(strip, s) -> the colour strip and its lookup (1.)
+// cave_shade(look, p) -> shade(p) = 0.5 + 0.5·N(p), the strip coordinate (2.)
+// cave_albedo(look, p, n) -> the strip colour at shade(p) plus the moss on an upward unit normal (1.–3.)
+// cave_bump_height(look, p), cave_bump_gradient(look, p) -> b(p) and ∇b(p) of the bump height field (4.)
+// cave_bumped_normal(look, p, n) -> n' of 4. for a unit normal
+// cave_scene(block, camera, look, light_power) -> PhongScene of a camera inside a block (below the struct)
 //
 // Per fragment, with p the interpolated world position (world units, +y up) and n the unit normal
 // facing the viewer (phong.hpp: normalised, flipped when it points away, v when it is zero):
@@ -64,6 +70,20 @@
 // Both noises use seeded_permutation(noise_seed) (0: Perlin's table, the seed's). Valid while
 // f0·2^(limit + 1)·|p| < 2^23 (the texture noise's range, perlin_texture.hpp): |p| < 262,144 world
 // units at the defaults, beyond the cave's own lattice limit of 2^19 only by a factor of two.
+//
+// Inputs:  p world positions; n unit normals facing the viewer; CaveLook (the strip, 256 RGB entries
+//          in [0, 1]; f0, y0, rate, limit; bump a and s; moss; noise_seed); strip stops at positions
+//          in [0, 1], increasing, the first at 0 and the last at 1; cave_scene: the block's CaveParams,
+//          a Camera (phong.hpp) and the light power.
+// Outputs: colours (channels in [0, 1] for the strip), shades, heights, gradients, normals, a PhongScene.
+// Units:   world units (+y up); frequencies in noise cells per world unit; rate in octaves per world
+//          unit; colours dimensionless.
+// Throws:  InputError: sampled_strip for fewer than two stops, a first stop not at 0 or a last not at 1,
+//          or positions that do not increase; strip_colour for an empty strip; cave_scene as stated at
+//          it, and for a light power that is not positive and finite, a block too large to check
+//          (core/params/cave.hpp) and what marching_tetrahedra and phong_scene refuse.
+// Twin:    gpu/shaders/render/phong_look.glsl (host: gpu/render/phong.hpp), with
+//          gpu/shaders/noise/perlin_texture.glsl.
 #pragma once
 
 #include <array>
@@ -118,7 +138,7 @@ Vec3 cave_bump_gradient(const CaveLook& look, const Vec3& p);
 // n' of 4. above for a unit `facing_normal`.
 Vec3 cave_bumped_normal(const CaveLook& look, const Vec3& p, const Vec3& facing_normal);
 
-// A camera inside a block of the seed's cave (issue 6's cave cases).
+// A camera inside a block of the seed's cave (render.phong's generated cave, compare/algorithms/render_phong.cpp).
 //
 // cave_scene(block, camera, look, light_power) meshes `block` (CaveParams: the seed's density,
 // marching_tetrahedra<double> in reference/cave, welded, wound into the air) and gives its vertices

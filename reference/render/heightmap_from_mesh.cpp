@@ -25,7 +25,7 @@ Box box_of(const Mesh& mesh) {
 
 // Eq. 4.2 applied to every vertex: (s_x(x - c_x), s_y(y - c_y), 0.5 - s_z(z - c_z), 1), with z'
 // also as the one attribute the fragment shader reads. Mutant render.heightmap_from_mesh.lowest_surface
-// (issue 11, in both twins): the depth is 1 - z', the box seen from below, so the lowest surface wins.
+// (in both twins): the depth is 1 - z', the box seen from below, so the lowest surface wins.
 RasterInput project_from_above(const Mesh& mesh, const Box& box, const std::array<double, 3>& scale) {
   RasterInput input;
   input.attribute_count = 1;
@@ -73,7 +73,7 @@ MeshHeightmap heightmap_from_mesh(const Mesh& mesh, int width, int height, int s
 
   MeshHeightmap result{texel_grid<double>(width, height, box), texel_grid<std::uint8_t>(width, height, box),
                        scale[0] / scale[1], scale[0] / scale[2]};
-  // Mutant render.heightmap_from_mesh.rows_flipped (issue 11, in both twins): grid row r is GL row r.
+  // Mutant render.heightmap_from_mesh.rows_flipped (in both twins): grid row r is GL row r.
   const bool flipped = mutant_active("render.heightmap_from_mesh.rows_flipped");
   for (int row = 0; row < height; ++row) {
     const int gl_row = flipped ? row : height - 1 - row;

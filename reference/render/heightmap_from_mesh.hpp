@@ -1,14 +1,10 @@
-// Heightmap from a mesh (seed 000, digest 000_water_erosion.md §4.3, eqs. 4.1–4.4): the mesh
-// rendered orthographically from above (along its local -z) by the reference rasterizer, keeping
-// the highest surface. Slow by design; the GPU twin is gpu/render/heightmap_from_mesh.hpp.
+// Heightmap from a mesh (seed 000, digest 000_water_erosion.md §4.3, eqs. 4.1–4.4), CPU reference.
 //
-// heightmap_from_mesh(mesh, width, height, subpixel_bits = 8)
-//   mesh            double positions (any unit), uint32 triangles; face orientation is ignored
-//                   (the seed renders without culling)
-//   width, height   texels of the heightmap
-//   subpixel_bits   GL_SUBPIXEL_BITS of the GL implementation to match (see rasterizer.hpp)
-// Returns heights in [0, 1] (dimensionless; vertical_unit "1"), the coverage mask and the aspect
-// ratios of eq. 4.3.
+// The mesh rendered orthographically from above (along its local -z) by the reference rasterizer,
+// keeping the highest surface. Slow by design.
+// heightmap_from_mesh(mesh, width, height, subpixel_bits = 8) -> MeshHeightmap
+// require_visible_from_above(mesh): the refusal heightmap_from_mesh makes, available before any work
+//   (the driver's bad input).
 //
 // The mapping (eqs. 4.1, 4.2): the bounding box of all vertex positions (Blender's bound_box) goes
 // to x, y ∈ [-1, 1] with s_x = 2/Δx, s_y = 2/Δy and to z' = 0.5 - s_z·(z - c_z) ∈ [0, 1], s_z = 1/Δz
@@ -16,6 +12,20 @@
 // highest surface, and the fragment writes red = 1 - z' (eq. 4.4: top 1, bottom 0) with z'
 // interpolated over the triangle. Colour is cleared to 0 (uncovered texels are 0, as the seed's
 // fresh texture) and depth to 1 (the seed clears to 2.0, which GL clamps to 1).
+//
+// Inputs:  mesh            double positions (any unit), uint32 triangles; face orientation is ignored
+//                          (the seed renders without culling)
+//          width, height   texels of the heightmap
+//          subpixel_bits   GL_SUBPIXEL_BITS of the GL implementation to match (see rasterizer.hpp)
+// Outputs: heights in [0, 1] (1 - z' where covered, 0 elsewhere; row 0 = largest y), the coverage mask
+//          (1 where a surface was drawn) and the aspect ratios of eq. 4.3: d_xy = s_x/s_y = Δy/Δx,
+//          d_z = s_x/s_z = 2Δz/Δx.
+// Units:   heights dimensionless (vertical_unit "1"); cell sizes in the mesh's unit (below).
+// Throws:  InputError when the mesh has no triangles or no extent in x or y (nothing is seen from
+//          above); std::invalid_argument from the rasterizer for width or height outside [1, 16384] or
+//          subpixel_bits outside [0, 16].
+// Twin:    gpu/render/heightmap_from_mesh.hpp (HeightmapFromMesh) with
+//          gpu/shaders/render/heightmap_from_mesh.{vert,frag}.
 // Decisions where the seed is vague:
 //   - Coverage: a texel is covered when a fragment passed the depth test, i.e. its depth is < 1. A
 //     surface exactly at the bottom of the box (z' = 1, depth 1) fails LESS against the cleared 1

@@ -51,8 +51,8 @@ void require_valid(const Camera& camera) {
 }
 
 // The unit normal facing the viewer: the normalised interpolated normal, flipped when it points away
-// from the eye (two-sided), v when it is exactly zero. Mutant render.phong.facing_reversed (issue 11,
-// in both twins): flipped when it points towards the eye instead.
+// from the eye (two-sided), v when it is exactly zero. Mutant render.phong.facing_reversed (in
+// both twins): flipped when it points towards the eye instead.
 Vec3 facing_normal(const Vec3& position, const Vec3& normal, const Vec3& eye) {
   const Vec3 v = normalised(eye - position);
   Vec3 n = dot(normal, normal) > 0.0 ? normalised(normal) : v;
@@ -61,7 +61,7 @@ Vec3 facing_normal(const Vec3& position, const Vec3& normal, const Vec3& eye) {
   return n;
 }
 
-// The seed's constants (digest §2.9): K_a = 0.1 and exponent 5, or the mutants' (issue 11, in both
+// The seed's constants (digest §2.9): K_a = 0.1 and exponent 5, or the mutants' (in both
 // twins): render.phong.no_ambient drops the ambient term, render.phong.specular_exponent uses 10.
 double ambient() { return mutant_active("render.phong.no_ambient") ? 0.0 : 0.1; }
 double specular_exponent() { return mutant_active("render.phong.specular_exponent") ? 10.0 : 5.0; }
@@ -160,7 +160,7 @@ RasterInput clip_input(const PhongScene& scene) {
   return input;
 }
 
-// GL's bottom-first colour buffer to top-first RGB8. Mutant render.phong.vertical_flip (issue 11, in
+// GL's bottom-first colour buffer to top-first RGB8. Mutant render.phong.vertical_flip (in
 // both twins): rows read bottom first, the picture upside down.
 }  // namespace
 

@@ -1,6 +1,17 @@
-// Seed 004's Phong look (digest 004_cave.md §2.9) on a mesh seen through a perspective camera, by
-// the reference rasterizer (rasterizer.hpp) in double. Slow by design; the GPU twin is
-// gpu/render/phong.hpp, which draws the same PhongScene (same normals, same matrix rounded to float).
+// Seed 004's Phong look (digest 004_cave.md §2.9) on a mesh through a perspective camera, CPU reference in double.
+//
+// view_matrix(camera), projection_matrix(camera), multiply(a, b), transform_point(m, p) -> the camera's
+//   matrices (conventions below); orbit_camera(mesh, azimuth, elevation, fov_y, width, height) -> Camera.
+// vertex_normals(mesh) -> the area-weighted vertex normals (see Decisions).
+// phong_scene(mesh, camera[, look]) -> PhongScene, everything both twins draw, computed once on the CPU;
+//   with `look` selected; for terrain, terrain = terrain_look(mesh) (+y up).
+// terrain_look(mesh, up), terrain_height_ramp(), drape_colour(drape, u, v), terrain_albedo(look, p, n):
+//   the terrain look and its colour drape (below).
+// phong_colour(p, n, eye, albedo, power), phong_lit(...), shade_fragment(scene, p, n): one fragment
+//   (the shading formula below, clamped to [0, 1]; phong_lit for a unit normal used as it is).
+// render_phong(scene, subpixel_bits = 8) -> Rgb8Image; quantised_top_first(target), quantise_unorm8(c):
+//   a target as 8-bit levels, rows top first.
+// Drawn by the reference rasterizer (rasterizer.hpp) in double. Slow by design.
 //
 // Camera conventions (right-handed world, OpenGL clip space):
 //   view_matrix        gluLookAt: the camera sits at `eye`, looks along -z_eye towards `target`,
@@ -24,23 +35,12 @@
 //       interpolated normal is exactly zero (only next to vertices whose faces have no area)
 //   r = reflect(-l, n) = 2(n·l)n - l
 //   colour = albedo·(0.1 + E·max(0, n·l)) + 0.3·E·max(0, r·v)^5, each channel clamped to [0, 1]
-// (with l = v, r·v = 2(n·v)² - 1: the digest's closed form). Decisions:
-//   - light_power = D², the squared distance from the eye to the box centre, so E = 1 there
-//     (surfaces nearer the eye get more, up to (2.5/1.5)² with orbit_camera, and clamp).
-//   - In the plain look albedo is one colour for the whole mesh; the cave and terrain looks make it
-//     per fragment (see "Looks").
-//   - Vertex normals are the area-weighted average of the adjacent face normals (the sum of the
-//     faces' cross products, normalised; zero when that sum is zero), computed once here and given to
-//     both twins as a vertex attribute, so the twins differ only in rasterization and shading
-//     arithmetic.
-//   - The background is 0; the output is what GL writes to an RGBA8 target: round(255·c) per
-//     channel, alpha dropped; rows top first (as in a PNG), i.e. GL row height - 1 - y.
+// (with l = v, r·v = 2(n·v)² - 1: the digest's closed form).
 // Depth test LESS against a cleared depth of 1, no culling, triangles in index order.
 // render_phong also counts the covered pixels (depth < 1 after the draw): Rgb8Image::covered_pixels.
 //
-// Looks (issue 6: one render twin, the look is a parameter, PhongScene::look):
-//   plain    the formula above with the one albedo (seed 004's Phong; bit for bit the look this
-//            twin had before looks existed).
+// Looks (one render twin, the look is a parameter, PhongScene::look):
+//   plain    the formula above with the one albedo (seed 004's Phong).
 //   cave     seed 004's full look: colour strip indexed by solid noise with a height-dependent
 //            frequency, moss on upward normals, bump mapping by the analytic noise gradient
 //            (cave_look.hpp documents it and the fix of the seed's frequency formula).
@@ -64,7 +64,7 @@
 //   0.55 (0.62, 0.56, 0.36) dry grass       0.78 (0.50, 0.42, 0.34) bare earth
 //   0.90 (0.60, 0.58, 0.56) scree           1.00 (0.96, 0.96, 0.98) snow
 // rock = (0.42, 0.40, 0.38).
-// Colour drape (optional, TerrainLook::drape; issue 6): an RGB8 image laid over the terrain in plan
+// Colour drape (optional, TerrainLook::drape): an RGB8 image laid over the terrain in plan
 // view, projected along world y whatever `up` is (meant for up = +y, the terrain solid's). u runs
 // along +x (east) from x_west (u = 0) to x_east (u = 1), v along +z (south) from z_north (v = 0) to
 // z_south (v = 1); image row 0 is v = 0 (north, the top of the picture as stored), column 0 u = 0.
@@ -80,10 +80,36 @@
 // skirts and the base stay rock. terrain_look(mesh, up) takes height_low/high from the mesh's extent
 // along `up` (for a terrain solid with a base below the surface, set height_low to the lowest
 // surface height instead, so the base does not stretch the ramp).
-// Throws InputError for a mesh without triangles or without extent, for a drape whose sides lie
-// outside [1, 16384], whose bytes are not 3·W·H or whose extent is empty, and for an unusable camera
-// (eye at the target, up along the view direction, fov_y outside (0, 180) degrees, not
-// 0 < near < far, sides outside [1, 16384]).
+//
+// Inputs:  mesh (positions in any unit, uint32 triangles), camera (Camera: eye, target, up, fov_y,
+//          near, far, image size), look parameters (CaveLook, TerrainLook with an optional drape).
+// Outputs: matrices, normals, the scene, fragment colours with channels in [0, 1], and Rgb8Image
+//          (3 bytes per pixel, row 0 at the top, covered_pixels).
+// Units:   positions, near and far in the mesh's unit; angles in degrees; colours in [0, 1], bytes
+//          round(255·c).
+// Throws:  InputError for a mesh without triangles or without extent, for a drape whose sides lie
+//          outside [1, 16384], whose bytes are not 3·W·H or whose extent is empty, and for an unusable
+//          camera (eye at the target, up along the view direction, fov_y outside (0, 180) degrees, not
+//          0 < near < far, sides outside [1, 16384]); terrain_look also when `up` is not a unit vector
+//          within 1e-9 or the mesh has no extent along it; render_phong also for an unusable look (an
+//          empty strip or entries outside [0, 1], a cave colour frequency <= 0, an octave limit outside
+//          [0, 60], a negative or non-finite bump amplitude or frequency, non-finite look values, a
+//          terrain up not of unit length, no height_low < height_high, no 0 <= rock_start_deg <
+//          rock_full_deg <= 180); render_phong std::invalid_argument for subpixel_bits outside [0, 16]
+//          (rasterizer.hpp).
+// Twin:    gpu/render/phong.hpp (PhongRenderer), which draws the same PhongScene (same normals, same
+//          matrix rounded to float), with gpu/shaders/render/phong.{vert,frag} and phong_look.glsl.
+// Decisions:
+//   - light_power = D², the squared distance from the eye to the box centre, so E = 1 there
+//     (surfaces nearer the eye get more, up to (2.5/1.5)² with orbit_camera, and clamp).
+//   - In the plain look albedo is one colour for the whole mesh; the cave and terrain looks make it
+//     per fragment (see "Looks").
+//   - Vertex normals are the area-weighted average of the adjacent face normals (the sum of the
+//     faces' cross products, normalised; zero when that sum is zero), computed once here and given to
+//     both twins as a vertex attribute, so the twins differ only in rasterization and shading
+//     arithmetic.
+//   - The background is 0; the output is what GL writes to an RGBA8 target: round(255·c) per
+//     channel, alpha dropped; rows top first (as in a PNG), i.e. GL row height - 1 - y.
 #pragma once
 
 #include <array>

@@ -79,7 +79,7 @@ T edge(T ax, T ay, T bx, T by, T px, T py) {
 }
 
 // Whether pixel centres exactly on the edge a -> b of a counter-clockwise triangle belong to it.
-// Mutant render.heightmap_from_mesh.right_edges_owned (issue 11, this reference only): right edges
+// Mutant render.heightmap_from_mesh.right_edges_owned (this reference only): right edges
 // own their centres instead of left ones.
 bool owns_edge(const WindowVertex& a, const WindowVertex& b, TieRule rule) {
   const std::int64_t dx = b.snapped_x - a.snapped_x, dy = b.snapped_y - a.snapped_y;

@@ -1,14 +1,9 @@
-// An exact CPU triangle rasterizer in double that follows OpenGL's rules (GL 4.5 core §13–14), the
-// reference every rendering twin (issue 6) is compared against. Slow by design.
+// An exact CPU triangle rasterizer in double that follows OpenGL's rules (GL 4.5 core §13–14), CPU reference.
 //
-// rasterize(input, shade, target, settings)
-//   input.clip_positions  one homogeneous clip-space position per vertex: what the vertex shader
-//                         writes to gl_Position (a camera matrix times the world position)
-//   input.attributes      `attribute_count` doubles per vertex (the vertex shader's outputs)
-//   input.triangles       three vertex indices each; both windings are drawn (no culling)
-//   shade(attributes, colour)  the fragment shader: gets the perspective-correctly interpolated
-//                         attributes, writes target.channels colour values
-//   target                colour and depth buffers, read (depth test) and written
+// The reference every rendering twin is compared against. Slow by design.
+// rasterize(input, shade, target, settings = {})
+// RasterTarget(width, height, channels, clear_colour = 0, clear_depth = 1): buffers cleared to
+//   clear_colour (every channel) and clear_depth (clamped to [0, 1], as glClearDepth does).
 //
 // Pipeline and conventions, in GL's order:
 //   1. Clipping: each triangle is clipped in homogeneous coordinates against the six planes
@@ -35,8 +30,23 @@
 //      to [0, 1], attributes a = Σ(λ_k a_k / w_k) / Σ(λ_k / w_k) (perspective-correct).
 //   5. Depth test LESS (z_w < stored depth), then depth and colour are written. Triangles are
 //      drawn in index order, so among equal depths the first triangle wins, as in GL.
-// Throws std::invalid_argument for buffer sizes outside [1, 16384], subpixel_bits outside [0, 16],
-// an index out of range or a wrong attribute count.
+//
+// Inputs:  input.clip_positions  one homogeneous clip-space position per vertex: what the vertex shader
+//                                writes to gl_Position (a camera matrix times the world position)
+//          input.attributes      `attribute_count` doubles per vertex (the vertex shader's outputs)
+//          input.triangles       three vertex indices each; both windings are drawn (no culling)
+//          shade(attributes, colour)  the fragment shader: gets the perspective-correctly interpolated
+//                                attributes, writes target.channels colour values
+//          target                colour and depth buffers, read (depth test) and written
+//          settings              subpixel_bits (GL_SUBPIXEL_BITS, 8 as llvmpipe and NVIDIA's drivers)
+//                                and tie_rule
+// Outputs: target's colour (channels per pixel, row-major, row 0 = bottom) and depth (window depth in
+//          [0, 1]), written where fragments pass the depth test.
+// Units:   clip coordinates in, window pixels and depth in [0, 1]; attributes as the caller gives them.
+// Throws:  std::invalid_argument for buffer sizes outside [1, 16384], subpixel_bits outside [0, 16],
+//          an index out of range or a wrong attribute count.
+// Twin:    none: it stands for GL's own rasterization, which the GPU twins use (gpu/render/
+//          offscreen_target.hpp); the rendering references draw through it.
 #pragma once
 
 #include <array>

@@ -1,17 +1,9 @@
-// A heightmap as a closed solid: the terrain surface, vertical skirts along the boundary of its
-// valid region and a flat base below it, as one watertight, consistently oriented triangle mesh
-// (issue 6: terrain before and after erosion, rendered by the Phong twins; `groundtruth render`).
+// A heightmap as a closed solid: surface, skirts and base as one watertight triangle mesh, CPU reference.
 //
-// terrain_solid(heights, options) -> TerrainSolid
-//   heights   Grid<double> (core/grid.hpp): values are heights in `vertical_unit`, cell centres
-//             cell_size_x and cell_size_y apart in `horizontal_unit`; an optional validity mask
-//             (0 = no data). Both units should be metres (the readers of core/io give metres) so
-//             that the solid is not distorted; the function does not convert units.
-//   options   vertical_scale  multiplies every height (vertical exaggeration; 1 keeps them)
-//             base_depth      how far the base lies below the lowest surface vertex, in the
-//                             mesh's unit; 0 chooses it (see "Base" below)
-// Returns the mesh and what was decided: the base height, the counts of surface, base and skirt
-// triangles, and the quads dropped to keep the surface manifold.
+// The terrain surface, vertical skirts along the boundary of its valid region and a flat base below
+// it, as one watertight, consistently oriented triangle mesh (terrain before and after erosion,
+// rendered by the Phong twins; `groundtruth render`).
+// terrain_solid(heights, options = {}) -> TerrainSolid
 //
 // World coordinates (right-handed, y up, which is what reference/render/phong.hpp's orbit camera
 // expects: it orbits around +y):
@@ -48,10 +40,23 @@
 //   - base_y): the prisms between the piecewise-linear surface and the base.
 // Order: surface vertices (row-major over used samples), then base vertices in the same order;
 // surface triangles (row-major over quads), base triangles likewise, then the walls.
-// Throws InputError for: a non-positive or non-finite cell size, vertical_scale or base_depth out
-// of range (vertical_scale > 0 and finite, base_depth >= 0 and finite), a NaN or infinite valid
-// height, no quad of four valid samples (all masked, a single row or column, or no 2×2 valid
-// block), and more vertices than 32-bit indices address.
+//
+// Inputs:  heights   Grid<double> (core/grid.hpp): values are heights in `vertical_unit`, cell centres
+//                    cell_size_x and cell_size_y apart in `horizontal_unit`; an optional validity mask
+//                    (0 = no data).
+//          options   vertical_scale  multiplies every height (vertical exaggeration; 1 keeps them)
+//                    base_depth      how far the base lies below the lowest surface vertex, in the
+//                                    mesh's unit; 0 chooses it (see "Base" above)
+// Outputs: the mesh and what was decided: the base height, the counts of surface, base and skirt
+//          triangles, and the quads dropped to keep the surface manifold.
+// Units:   both units should be metres (the readers of core/io give metres) so that the solid is not
+//          distorted; the function does not convert units.
+// Throws:  InputError for: a non-positive or non-finite cell size, vertical_scale or base_depth out
+//          of range (vertical_scale > 0 and finite, base_depth >= 0 and finite), values or a mask that
+//          do not match the grid's size, a NaN or infinite valid height, no quad of four valid samples
+//          (all masked, a single row or column, or no 2×2 valid block), a base depth that vanishes
+//          below the heights' magnitude in double, and more vertices than 32-bit indices address.
+// Twin:    none: the solid is built once on the CPU and both Phong twins draw it (phong.hpp).
 #pragma once
 
 #include <cstddef>

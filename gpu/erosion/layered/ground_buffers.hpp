@@ -1,19 +1,30 @@
-// The layered ground of seed 001 (digest 001 §3.1) on the GPU, and the compute-then-apply step its
-// talus collapse (§3.10) and soil creep (§3.11) share. GPU side of core/layered/layered_ground.hpp
-// and reference/erosion/layered/transfer.hpp (apply_outflows).
+// The layered ground of seed 001 (digest 001 §3.1) on the GPU, and the compute-then-apply step of talus and creep.
 //
+// GPU side of core/layered/layered_ground.hpp; the apply step is shared by talus collapse (§3.10) and
+// soil creep (§3.11).
 // LayeredGroundBuffers(ground, params) allocates one storage buffer per array of LayeredGround<float>
-// (soil and bedrock twice as long: the current state, then the step's snapshot), the bedrock types,
-// the 8 outflows per column, the per-column conversions and the std140 parameter block of
-// gpu/shaders/erosion/layered/layered.glsl, and uploads `ground`. compute_then_apply(outflow,
-// apply, step, conversions) runs one step: snapshot copy, the process's outflow pass, the apply
-// pass (gpu/shaders/erosion/layered/apply.comp), then adds the step's fragmentation to
-// `conversions` (m³; per-column floats summed here in double in column order). download() returns
-// the current state.
-// LayeredSlopeProcess(outflow_shader, clear_vegetation) is one such process (talus.hpp, creep.hpp
-// make them): its outflow program and the apply program, with LAYERED_CLEAR_VEGETATION when asked.
+//   (soil and bedrock twice as long: the current state, then the step's snapshot), the bedrock types,
+//   the 8 outflows per column, the per-column conversions and the std140 parameter block of
+//   gpu/shaders/erosion/layered/layered.glsl, and uploads `ground`.
+// upload(ground) replaces the state; download() returns the current state.
+// compute_then_apply(outflow, apply, step, conversions) runs one step: snapshot copy, the process's
+//   outflow pass, the apply pass (gpu/shaders/erosion/layered/apply.comp), then adds the step's
+//   fragmentation to `conversions`.
 // dispatch_pass(pass, step) runs one pass of a local process (vegetation.hpp, weathering.hpp).
-// Needs a current GlContext. Units: metres.
+// LayeredSlopeProcess(outflow_shader, clear_vegetation) is one such process (talus.hpp, creep.hpp
+//   make them): its outflow program and the apply program, with LAYERED_CLEAR_VEGETATION when asked.
+// layered_program(shader, defines) -> a program of layered.glsl with its blocks checked.
+//
+// Inputs:  ground (LayeredGround<float>) and params (LayeredParams). Needs a current GlContext.
+// Outputs: the ground on the GPU; download(); conversions (per-column floats summed here in double in
+//          column order).
+// Units:   metres; conversions in m³.
+// Throws:  InputError from the constructor for invalid params or ground (validate_layered_params,
+//          check_layered_ground) and from upload() for an invalid ground; std::invalid_argument from
+//          upload() for a ground of another size or bedrock layer count; std::runtime_error when a
+//          shader does not compile or link or its LayeredBlock, BedrockTypes or Conversions records do
+//          not match their C++ mirrors.
+// Twin:    reference/erosion/layered/transfer.hpp (apply_outflows); the state: core/layered/layered_ground.hpp.
 #pragma once
 
 #include <cstdint>

@@ -1,10 +1,20 @@
-// One iteration of seed 001's layered ground on the GPU, twin of reference/erosion/layered/
-// iteration.hpp, in the code's order (digest 001 §4): with water, 1 sources and sinks; 2 creep;
-// 3 talus; with water, 4 the pipe flow, 5 force erosion, 6 impact erosion, 7 dissolution, 9 wetness;
-// 10 vegetation (with the flood death when there is water); 11 weathering — each process's passes
-// dispatched in turn on the same buffers. LayeredIteration(with_water) compiles the programs (the water's only
-// when asked); step(ground, step, conversions, water) runs one iteration, `water` required exactly
-// when built with water (else std::invalid_argument). Needs a current GlContext.
+// One iteration of seed 001's layered ground on the GPU in the code's order (digest 001 §4), GPU twin.
+//
+// with water, 1 sources and sinks; 2 creep; 3 talus; with water, 4 the pipe flow, 5 force erosion,
+// 6 impact erosion, 7 dissolution, 9 wetness; 10 vegetation (with the flood death when there is
+// water); 11 weathering — each process's passes dispatched in turn on the same buffers.
+// LayeredIteration(with_water = false) compiles the programs (the water's only when asked:
+//   LayeredWaterProcesses).
+// step(ground, step, conversions, water = nullptr) runs one iteration.
+//
+// Inputs:  ground (LayeredGroundBuffers), step, water (LayeredWaterBuffers), required exactly when
+//          built with water. Needs a current GlContext.
+// Outputs: the GPU state after the iteration; `conversions` gains what the processes converted.
+// Units:   metres, Δt in seconds; conversions in m³.
+// Throws:  std::invalid_argument from step() when `water` is given without water processes or missing
+//          with them; std::runtime_error when a shader does not compile or link or a block does not
+//          match its C++ mirror.
+// Twin:    reference/erosion/layered/iteration.hpp.
 #pragma once
 
 #include <cstdint>

@@ -1,13 +1,20 @@
-// Vegetation growth on the layered ground (digest 001 §3.15), GPU twin of
-// reference/erosion/layered/vegetation.hpp (decisions there). LayeredVegetation compiles
-// gpu/shaders/erosion/layered/vegetation.comp twice: the grow pass writes every column's new density
-// into the outflow buffer (scratch) from the old densities, the store pass copies it into the
-// vegetation buffer — the reference's double buffer. step(ground, step, conversions) runs both,
-// drawing rand(0, 1) with the reference's key (seed, cell, step, vegetation_cell_stream); growth
-// converts nothing, so `conversions` stays as it is. LayeredVegetation(true) compiles the grow pass
-// with LAYERED_FLOOD, the flood death read from the water's wetness (bind the water buffers first).
-// Needs a current GlContext.
-// Units: K_veg in 1/s, Δt in s, depths in m.
+// Vegetation growth on the layered ground (digest 001 §3.15), GPU twin.
+//
+// LayeredVegetation(flood = false) (or layered_vegetation(flood)) compiles
+//   gpu/shaders/erosion/layered/vegetation.comp twice: the grow pass writes every column's new density
+//   into the outflow buffer (scratch) from the old densities, the store pass copies it into the
+//   vegetation buffer — the reference's double buffer. LayeredVegetation(true) compiles the grow pass
+//   with LAYERED_FLOOD, the flood death read from the water's wetness (bind the water buffers first).
+// step(ground, step, conversions) runs both, drawing rand(0, 1) with the reference's key (seed, cell,
+//   step, vegetation_cell_stream).
+//
+// Inputs:  ground (LayeredGroundBuffers), step; with flood, the water buffers bound. Needs a current
+//          GlContext.
+// Outputs: the densities after the step; growth converts nothing, so `conversions` stays as it is.
+// Units:   K_veg in 1/s, Δt in s, depths in m.
+// Throws:  std::runtime_error when a shader does not compile or link or a block does not match its C++
+//          mirror.
+// Twin:    reference/erosion/layered/vegetation.hpp (decisions there).
 #pragma once
 
 #include <cstdint>

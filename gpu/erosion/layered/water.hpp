@@ -1,10 +1,18 @@
-// Water sources, sinks and the pipe flow on the layered ground on the GPU (digest 001 §3.3, §3.7,
-// §3.19), twin of reference/erosion/layered/water.hpp (decisions there).
-// LayeredWaterFlow() compiles water_sources.comp, water_flux.comp and water_move.comp;
+// Water sources, sinks and the pipe flow on the layered ground (digest 001 §3.3, §3.7, §3.19), GPU twin.
+//
+// LayeredWaterFlow() compiles gpu/shaders/erosion/layered/water_sources.comp, water_flux.comp and
+//   water_move.comp.
 // sources(ground, water, step, conversions) runs the sources pass and counts what the rain and the
-// river added and what the sinks took (m³, per column in column order, as the reference);
-// flow(ground, water, step) runs the flux pass, the snapshot copy and the move pass. Needs a
-// current GlContext.
+//   river added and what the sinks took.
+// flow(ground, water, step) runs the flux pass, the snapshot copy and the move pass.
+//
+// Inputs:  ground (LayeredGroundBuffers), water (LayeredWaterBuffers), step. Needs a current GlContext.
+// Outputs: the water state after the passes; `conversions` gains the water added and sunk and what the
+//          sinks took (per column in column order, as the reference).
+// Units:   m, m/s, m³/s; conversions in m³.
+// Throws:  std::runtime_error when a shader does not compile or link or a block does not match its
+//          C++ mirror (layered_water_program).
+// Twin:    reference/erosion/layered/water.hpp (decisions there).
 #pragma once
 
 #include <cstdint>

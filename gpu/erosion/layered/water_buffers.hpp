@@ -1,17 +1,30 @@
-// The water on seed 001's layered ground on the GPU (digest 001 §3.3-3.5, §3.12-3.15, §3.19): GPU
-// side of core/layered/layered_water.hpp, beside LayeredGroundBuffers.
+// The layered ground's water on the GPU (seed 001, digest 001 §3.3-3.5, §3.12-3.15, §3.19) and its one-pass processes.
 //
-// LayeredWaterBuffers(ground, water) validates `water` against the ground's size, builds the
-// std140 LayeredWaterBlock of gpu/shaders/erosion/layered/water.glsl from the ground's parameters
-// (every real the reference<float>'s static_cast<float> of the double), allocates the water state
-// (16 sections of `cells` floats, twice: the state, then the move pass's snapshot) and a scratch of
-// per-column records, and uploads `water`. bind() binds the block (uniform binding 1), the state
-// (10) and the records (11); snapshot() copies the state into its second half; snapshot_surface()
-// copies the ground's surface into SURFACE_BEFORE; records(count) reads the first count·cells
-// record floats back. download() returns the state.
+// GPU side of core/layered/layered_water.hpp, beside LayeredGroundBuffers.
+// LayeredWaterBuffers(ground, water) validates `water` against the ground's size, builds the std140
+//   LayeredWaterBlock of gpu/shaders/erosion/layered/water.glsl from the ground's parameters (every
+//   real the reference<float>'s static_cast<float> of the double), allocates the water state (16
+//   sections of `cells` floats, twice: the state, then the move pass's snapshot) and a scratch of
+//   per-column records, and uploads `water`.
+// upload(water), download(); bind() binds the block (uniform binding 1), the state (10) and the
+//   records (11); snapshot() copies the state into its second half; snapshot_surface() copies the
+//   ground's surface into SURFACE_BEFORE; records(count) reads the first count·cells record floats
+//   back.
+// count_erosion_records(records, cells, area, layout, count_breakdown, conversions): adds an erosion
+//   pass's tallies to `conversions`.
+// layered_water_program(shader, defines) -> a program of water.glsl with its blocks checked.
 // LayeredWaterPass(shader) is a pass of one invocation per column that needs nothing but the bound
-// buffers (dissolution.comp, wetness.comp): step(ground, water, step) binds and dispatches it.
-// Needs a current GlContext. Units: m, m³/s.
+//   buffers (dissolution.comp, wetness.comp): step(ground, water, step) binds and dispatches it.
+//
+// Inputs:  ground (LayeredGroundBuffers), water (LayeredWater<float>). Needs a current GlContext.
+// Outputs: the water state on the GPU; download(); records; conversions.
+// Units:   m, m³/s; conversions in m³.
+// Throws:  InputError ("erosion.layered: ...") from the constructor and upload() for water of another
+//          size than the ground or with non-finite or negative depths, fluxes, carried amounts or
+//          wetness (check_layered_water); std::runtime_error when a shader does not compile or link or
+//          its LayeredWaterBlock does not match the C++ mirror.
+// Twin:    the state: core/layered/layered_water.hpp; the passes: reference/erosion/layered/dissolution.hpp
+//          (dissolution.comp) and wetness.hpp (wetness.comp).
 #pragma once
 
 #include <cstdint>

@@ -8,6 +8,9 @@
 // cube_counts - 1 per axis (solid: first -1, count samples + 1; open: first 0, count samples - 1),
 // index x fastest, then y, then z: the reference's output order.
 // Guarded: several cave programs include it.
+// Inputs:  declares CaveBlock (uniform binding 0).
+// Outputs: sample and cube addressing for the cave passes.
+// Twin:    reference/cave/lattice_cubes.hpp; host: gpu/cave/marching_tetrahedra.cpp.
 #ifndef GT_CAVE_BLOCK_GLSL
 #define GT_CAVE_BLOCK_GLSL
 

@@ -5,6 +5,10 @@
 // this cube, cave/tetrahedra.glsl), both looked up in the cube-case tables (cave/cube_cases.glsl).
 // Invocation cube_counts.w writes zero counts: the exclusive scans then leave the totals in that
 // last element.
+// Inputs:  CaveBlock (uniform binding 0), density (1) (cave/lattice.glsl), the cube-case tables (storage
+//          binding 0, cave/cube_cases.glsl).
+// Outputs: triangle_counts (2), vertex_counts (3), cube_rock (5).
+// Twin:    reference/cave/marching_tetrahedra.hpp (the triangles and vertices each cube adds).
 layout(local_size_x = 256) in;
 
 #include "cave/linear_dispatch.glsl"

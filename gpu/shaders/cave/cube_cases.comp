@@ -2,6 +2,9 @@
 // Pass 0 of the GPU marching tetrahedra, once per mesher: fills the cube-case tables of
 // cave/cube_cases.glsl by walking each rock pattern (one invocation per pattern) and, in the
 // first eight invocations, the own-edge sets of the ownership rule (cave/tetrahedra.glsl).
+// Inputs:  none but the invocation index (the rock pattern).
+// Outputs: the cube-case tables (storage binding 0, cave/cube_cases.glsl).
+// Twin:    reference/cave/marching_tetrahedra.hpp (the walk of a cube, spec 2-4).
 layout(local_size_x = 256) in;
 
 #include "cave/cube_cases.glsl"

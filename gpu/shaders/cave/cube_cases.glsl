@@ -10,6 +10,9 @@
 // so the rank of an own edge among the owner's first meetings is
 // |case_met_before[rock, edge] ∩ owned_edges[first_on]|.
 // Guarded: included by the cube-case, count and emit passes.
+// Inputs:  declares the cube-case tables (storage binding 0, std430).
+// Outputs: the lookups of the count and emit passes.
+// Twin:    reference/cave/marching_tetrahedra.hpp (the walk it tabulates).
 #ifndef GT_CAVE_CUBE_CASES_GLSL
 #define GT_CAVE_CUBE_CASES_GLSL
 

@@ -11,6 +11,11 @@
 // GL_MAX_SHADER_STORAGE_BLOCK_SIZE are emitted chunk by chunk (gpu/cave/marching_tetrahedra.cpp).
 // A cube writes only its own triangles and the vertices it owns, which lie in its chunk's windows;
 // the vertex numbers it writes into triangles stay global.
+// Inputs:  CaveBlock (uniform binding 0), density (1), the cube-case tables (storage binding 0),
+//          triangle_offsets (2), vertex_offsets (3), cube_rock (5); the uniforms first_emitted_cube,
+//          end_emitted_cube, triangle_base, vertex_base.
+// Outputs: triangles (4), positions (6), edge_keys (7).
+// Twin:    reference/cave/marching_tetrahedra.hpp (the output specification).
 layout(local_size_x = 256) in;
 
 uniform uint first_emitted_cube;

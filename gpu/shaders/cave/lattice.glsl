@@ -14,6 +14,9 @@
 // Edge key (core/params/cave.hpp): direction | (x + 2^19) << 3 | (y + 2^19) << 23 | (z + 2^19) << 43
 // as (low word, high word).
 // Guarded: several cave programs include it.
+// Inputs:  declares density (storage binding 1, read only); CaveBlock (cave/cave_block.glsl).
+// Outputs: the rock test, the vertex position on an edge, the edge key.
+// Twin:    reference/cave/lattice_cubes.hpp (lattice_cubes.cpp).
 #ifndef GT_CAVE_LATTICE_GLSL
 #define GT_CAVE_LATTICE_GLSL
 
@@ -25,8 +28,8 @@ ivec3 corner_offset(int corner) { return ivec3(corner & 1, (corner >> 1) & 1, co
 
 bool is_pad(ivec3 point) { return any(lessThan(point, ivec3(0))) || any(greaterThanEqual(point, sample_counts.xyz)); }
 
-// The threshold the mesher compares with (the block's, or under the both-twins mutant of issue 11
-// its negation, as reference/cave/lattice_cubes.cpp does).
+// The threshold the mesher compares with (the block's, or its negation under the both-twins mutant
+// threshold_negated, as reference/cave/lattice_cubes.cpp does).
 float rock_threshold() {
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_THRESHOLD_NEGATED
   return -threshold;
@@ -37,7 +40,7 @@ float rock_threshold() {
 
 bool is_rock(ivec3 point) {
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_THRESHOLD_INCLUSIVE
-  return !is_pad(point) && density[sample_index(point)] <= rock_threshold();  // mutant (issue 11, GPU only)
+  return !is_pad(point) && density[sample_index(point)] <= rock_threshold();  // mutant (GPU only)
 #else
   return !is_pad(point) && density[sample_index(point)] < rock_threshold();
 #endif
@@ -67,13 +70,13 @@ float edge_parameter(ivec3 lower, ivec3 step) {
   precise float lower_value = density[sample_index(lower)];
   precise float upper_value = density[sample_index(upper)];
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_T_FROM_UPPER
-  precise float t = (rock_threshold() - upper_value) / (lower_value - upper_value);  // mutant (issue 11, GPU only)
+  precise float t = (rock_threshold() - upper_value) / (lower_value - upper_value);  // mutant (GPU only)
 #else
   precise float t = (rock_threshold() - lower_value) / (upper_value - lower_value);
 #endif
   float margin = edge_margin(lattice_origin.xyz + lower, step);
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_VERTEX_WRONG_END
-  return 1.0 - clamp(t, margin, 1.0 - margin);  // mutant (issue 11, both twins): measured from the upper end
+  return 1.0 - clamp(t, margin, 1.0 - margin);  // mutant (both twins): measured from the upper end
 #else
   return clamp(t, margin, 1.0 - margin);
 #endif

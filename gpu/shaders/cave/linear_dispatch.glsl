@@ -4,6 +4,9 @@
 // 256³-cube blocks (16.8M items) fit. Items past the end belong to the last row's spare groups:
 // callers compare the index with their item count. Local size: x only (y = z = 1).
 // Guarded: several cave programs include it.
+// Inputs:  gl_WorkGroupID, gl_NumWorkGroups.
+// Outputs: linear_workgroup(), linear_invocation().
+// Twin:    none: dispatch arithmetic (host: gpu/cave/linear_dispatch.hpp).
 #ifndef GT_CAVE_LINEAR_DISPATCH_GLSL
 #define GT_CAVE_LINEAR_DISPATCH_GLSL
 

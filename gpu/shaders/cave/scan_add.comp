@@ -1,6 +1,9 @@
 #version 450
 // Second half of one level of the exclusive scan: adds to every value the scanned sum of the
 // blocks before its block (block_sums, scanned by the next level), one invocation per value.
+// Inputs:  values (binding 0), block_sums (1), the uniform value_count.
+// Outputs: values (0), in place.
+// Twin:    none: the scan has no reference of its own (host: gpu/cave/exclusive_scan.cpp).
 layout(local_size_x = 256) in;
 
 #include "cave/linear_dispatch.glsl"

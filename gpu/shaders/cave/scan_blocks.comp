@@ -6,6 +6,9 @@
 // down-sweep, then each invocation writes its 4 results. Integer sums: the same bits in any order.
 // Values past value_count read as 0 and are not written; the host scans the block sums with the
 // next level and adds them back with scan_add.comp.
+// Inputs:  values (binding 0), the uniform value_count.
+// Outputs: values (0), in place; block_sums (1).
+// Twin:    none: the scan has no reference of its own (host: gpu/cave/exclusive_scan.cpp).
 layout(local_size_x = 256) in;
 
 #include "cave/linear_dispatch.glsl"

@@ -22,6 +22,9 @@
 // walk first meets them (cave/cube_cases.glsl). Nothing is stored per edge or per corner.
 // Edge sets: 64-bit masks held as two words (uvec2), bit 8·lower + upper.
 // Guarded: included by the cube-case, count and emit passes.
+// Inputs:  the rock bits of a cube's corners; the lattice of cave/lattice.glsl.
+// Outputs: tet_code, tet_triangle_count, corner_edge and the ownership rule.
+// Twin:    reference/cave/marching_tetrahedra.hpp (the output specification, spec 2-5).
 #ifndef GT_CAVE_TETRAHEDRA_GLSL
 #define GT_CAVE_TETRAHEDRA_GLSL
 
@@ -29,7 +32,7 @@
 
 // Cube corners of tetrahedron t: [4t .. 4t + 3].
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_KUHN_VERTEX
-// Mutant (issue 11, GPU only): T0 written with corner 5 for 3, a second copy of T1's corners, so
+// Mutant (GPU only): T0 written with corner 5 for 3, a second copy of T1's corners, so
 // the cube is not tiled (every corner pair still nests: all buffers stay in range).
 const int KUHN_TETRAHEDRA[24] = int[24](0, 1, 5, 7, 0, 5, 1, 7, 0, 3, 2, 7, 0, 2, 6, 7, 0, 4, 5, 7, 0, 6, 4, 7);
 #else
@@ -45,7 +48,7 @@ const int TET_TRIANGLE_COUNT[16] = int[16](0, 1, 1, 2, 1, 2, 2, 1, 1, 2, 2, 1, 2
 const int TET_TRIANGLE_EDGES[96] = int[96](
     0, 0, 0, 0, 0, 0,   // 0: all air
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_CASE_FLIPPED
-    0, 2, 1, 0, 0, 0,   // 1, mutant (issue 11, GPU only): wound the other way
+    0, 2, 1, 0, 0, 0,   // 1, mutant (GPU only): wound the other way
 #else
     0, 1, 2, 0, 0, 0,   // 1
 #endif
@@ -64,7 +67,7 @@ const int TET_TRIANGLE_EDGES[96] = int[96](
     0, 2, 1, 0, 0, 0,   // 14 = 15 - 1
     0, 0, 0, 0, 0, 0);  // 15: all rock
 
-// Mutants of issue 11 in both twins (the reference applies the same change to its table,
+// Mutants in both twins (the reference applies the same change to its table,
 // reference/cave/marching_tetrahedra.cpp): the table as the walk reads it.
 int walked_triangle_count(uint code) {
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_QUAD_HALF

@@ -1,7 +1,10 @@
-// GLSL twin of core/rng.hpp: counter-based random numbers, bit for bit the same as the C++ side
+// Counter-based random numbers, bit for bit the same as the C++ side
 // (tests/rng_parity_test.cpp checks it). Only 32-bit unsigned integer arithmetic, which wraps
 // modulo 2^32 in GLSL as uint32_t does in C++. uniform01 keeps the top 24 bits, so the float in
 // [0, 1) is exact. Guarded, so several included files may include it.
+// Inputs:  seed, counters and stream (uint).
+// Outputs: hash32, random_u32, uniform01.
+// Twin:    core/rng.hpp.
 #ifndef GT_COMMON_RNG_GLSL
 #define GT_COMMON_RNG_GLSL
 

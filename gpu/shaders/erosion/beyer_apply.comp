@@ -3,9 +3,11 @@
 // core/params/droplets.hpp): each valid cell adds what the pass's droplets moved into or out of it,
 // h = h + float(delta) · quantum (float(delta) rounded to nearest, the product exact as quantum is a
 // power of two, the sum rounded once), and clears its delta for the next pass. Masked cells and
-// their delta (never written) are left alone. Heights in the caller's units. CPU reference:
-// reference/erosion/beyer.cpp (PassTerrain::apply). Mutants (compare/mutants/beyer.cpp): none in
-// this file.
+// their delta (never written) are left alone. Heights in the caller's units.
+// Mutants (compare/mutants/beyer.cpp): none in this file.
+// Inputs:  BeyerBlock (uniform binding 0), valid (2), delta (3): beyer_block.glsl.
+// Outputs: heights (1) of the valid cells; delta (3) cleared.
+// Twin:    reference/erosion/beyer.cpp (PassTerrain::apply).
 #ifndef BEYER_BATCH
 #error beyer_apply.comp runs in the batch ordering only: compile it with BEYER_BATCH
 #endif

@@ -12,6 +12,11 @@
 // BEYER_BATCH (batch) the droplets only read `heights` and add what they move, as integer counts
 // of `quantum`, into `delta` with atomicAdd; beyer_apply.comp adds delta·quantum to the heights
 // when the pass ends and clears it.
+// Inputs:  declares BeyerBlock (uniform binding 0), heights (1), valid (2), delta (3, BEYER_BATCH);
+//          local size 8 x 8.
+// Outputs: the sample access (open_cell, load_height, store_height, add_quanta, quanta) the two
+//          passes use.
+// Twin:    reference/erosion/beyer.cpp (its terrain access); host: gpu/erosion/beyer.cpp.
 #ifndef BEYER_BLOCK_GLSL
 #define BEYER_BLOCK_GLSL
 

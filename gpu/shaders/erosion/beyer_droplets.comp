@@ -7,7 +7,7 @@
 // 2.37); dh = h(p_new) - h(p) (eq. 2.38); uphill the deposit min(dh, s) at p, else with the capacity
 // C = c_c·max(-dh, c_min)·v·w (eq. 2.39) the deposit c_d·(s - C) at p (eq. 2.40) or the erosion
 // min(c_e·(C - s), -dh) (eq. 2.41) with the brush of eq. 2.42 around p; the speed (eq. 2.44) and the
-// evaporation (eq. 2.45). CPU reference: reference/erosion/beyer.cpp.
+// evaporation (eq. 2.45).
 //
 // Decisions, shared with the reference:
 //   - Samples at integer points: a position's cell is ivec2(floor(p)), its offsets (u, v) = p - cell;
@@ -34,6 +34,10 @@
 // at the new cell) in this shader only; SEDIMENT_NOT_TAKEN_ON_EROSION (material destroyed) and
 // UPHILL_DEPOSIT_UNBOUNDED (uphill deposit dh, the droplet's sediment clamped at 0: material
 // created) in both twins.
+// Inputs:  BeyerBlock (uniform binding 0), heights (1), valid (2) (beyer_block.glsl); the uniforms
+//          pass_offset and pass_number.
+// Outputs: heights (1) in place (race, disjoint), or the quanta added into delta (3) (BEYER_BATCH).
+// Twin:    reference/erosion/beyer.cpp.
 #include "common/grid.glsl"
 #include "common/rng.glsl"
 #include "erosion/beyer_block.glsl"

@@ -7,6 +7,10 @@
 // FLOW_BATCH, in `flow_weights` (ints: each visit's weight in units of 2^-10, by atomicAdd) that
 // flow_map_plug.comp turns into F = 1 - Π batch_powers[i] over the set bits i. The plug pass writes
 // `plugged`.
+// Inputs:  declares FlowBlock (uniform binding 0), heights (1), valid (2), flow or flow_weights (3),
+//          plugged (4).
+// Outputs: the texel access (open_cell, load_height) the two passes use.
+// Twin:    reference/erosion/flow_map.cpp; host: gpu/erosion/flow_map.cpp.
 #ifndef FLOW_MAP_BLOCK_GLSL
 #define FLOW_MAP_BLOCK_GLSL
 

@@ -8,9 +8,12 @@
 // Eq. 4.12: F = F·(1 - factor) + factor in place (race, disjoint: racing on purpose, as upstream's
 // imageLoad/imageStore), factor = f_c·w over erode4's corners (interpolated_flow) or f_c at the
 // droplet's texel; FLOW_BATCH: the weight's count of 2^-10 (roundEven(w·1024)) added with atomicAdd.
-// CPU reference: reference/erosion/flow_map.cpp, whose comment gives the decisions.
 // All arithmetic `precise`, in the reference's order. Units: texels, texels per step.
 // Mutants (compare/mutants/particle.cpp): FLOW_CORNER_WEIGHTS_SWAPPED (GPU only).
+// Inputs:  FlowBlock (uniform binding 0), heights (1, read only), valid (2) (flow_map_block.glsl);
+//          the uniform pass_offset.
+// Outputs: flow (3) in place (race, disjoint), or flow_weights (3) by atomicAdd (FLOW_BATCH).
+// Twin:    reference/erosion/flow_map.cpp, whose comment gives the decisions.
 #include "common/grid.glsl"
 #include "erosion/flow_map_block.glsl"
 

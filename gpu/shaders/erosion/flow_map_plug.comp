@@ -4,7 +4,11 @@
 // and masked: 0), ((below + left) + right + above) / 4, read from the map before the pass, once;
 // others keep theirs; masked texels get 0. With FLOW_BATCH the concentration of a texel is first made
 // from its weight count n: 1 - Π batch_powers[i] over n's set bits i, ascending (n <= 0: 0).
-// CPU reference: reference/erosion/flow_map.cpp. Mutants: none in this file.
+// Mutants: none in this file.
+// Inputs:  FlowBlock (uniform binding 0), valid (2), flow (3) or, with FLOW_BATCH, flow_weights (3)
+//          (flow_map_block.glsl).
+// Outputs: plugged (4): the concentration after the plug pass.
+// Twin:    reference/erosion/flow_map.cpp.
 #include "common/grid.glsl"
 #include "erosion/flow_map_block.glsl"
 

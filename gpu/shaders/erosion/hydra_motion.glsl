@@ -1,7 +1,11 @@
 // Droplet motion that seed 000's particle erosion (particle_droplets.comp) and its flow map
-// (flow_map_droplets.comp) share (digest 000 Appendix A); CPU twin: reference/erosion/hydra_motion.hpp.
+// (flow_map_droplets.comp) share (digest 000 Appendix A).
 // Positions in texels, heights in the caller's units. All arithmetic `precise`, in the reference's
 // order.
+// Inputs:  a droplet's velocity component, height and neighbours' heights; its position.
+// Outputs: the accelerated velocity component; the 4 texels around the droplet and their bilinear
+//          weights.
+// Twin:    reference/erosion/hydra_motion.hpp.
 #ifndef HYDRA_MOTION_GLSL
 #define HYDRA_MOTION_GLSL
 

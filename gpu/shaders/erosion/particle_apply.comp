@@ -7,8 +7,12 @@
 // each valid cell with deposits also takes the weighted mean of its colour (weight 1) and the pass's
 // colour deposits, per channel C = (C + float(Σ factor·col)·2^-20) / (1 + float(Σ factor)·2^-20)
 // (numerator and denominator each rounded as written, then one division), and clears its 5 sums.
-// CPU reference: reference/erosion/particle.cpp (ColourDelta in reference/erosion/droplets.hpp).
 // Mutants (compare/mutants/particle.cpp): none in this file.
+// Inputs:  ParticleBlock (uniform binding 0), valid (2), delta (3); with PARTICLE_COLOUR colour (6)
+//          and colour_sums (7) (particle_block.glsl).
+// Outputs: heights (1) of the valid cells, delta (3) cleared; with PARTICLE_COLOUR colour (6) and
+//          colour_sums (7) cleared.
+// Twin:    reference/erosion/particle.cpp (ColourDelta in reference/erosion/droplets.hpp).
 #ifndef PARTICLE_BATCH
 #error particle_apply.comp runs in the batch ordering only: compile it with PARTICLE_BATCH
 #endif

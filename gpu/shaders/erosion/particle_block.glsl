@@ -19,6 +19,11 @@
 // masked: (0, 0, 0, 0), writes lost). Batch: frozen during the pass; the deposits collect in
 // `colour_sums`, 5 ints per cell (Σ factor, Σ factor·r, ·g, ·b, ·a in units of 2^-20) by
 // atomicAdd, and particle_apply.comp sets C = (C + Σ factor·col·2^-20) / (1 + Σ factor·2^-20).
+// Inputs:  declares ParticleBlock (uniform binding 0), heights (1), valid (2), delta (3), the side
+//          maps (4, 5), colour (6) and colour_sums (7); local size 8 x 8.
+// Outputs: the texel access (open_cell, load_height, store_height, mark_eroded, mark_deposited, the
+//          colour's load, store and add) the two passes use.
+// Twin:    reference/erosion/particle.cpp (its texel access); host: gpu/erosion/particle.cpp.
 #ifndef PARTICLE_BLOCK_GLSL
 #define PARTICLE_BLOCK_GLSL
 

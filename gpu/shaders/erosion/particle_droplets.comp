@@ -11,7 +11,6 @@
 // its start texel's; on erosion (inside h > min_h, after it) col = f_col·C(ipos) + (1 - f_col)·col;
 // on deposition (after the height) colorize4 over erode4's corners with factor f_col·w,
 // C = C·(1 - factor) + col·factor, or without interpolation C(ipos) = C(ipos)·(1 - f_col) + f_col·col.
-// CPU reference: reference/erosion/particle.cpp.
 //
 // Decisions, shared with the reference:
 //   - Texels: ipos = ivec2(pos) and erode4's corner ivec2(pos - 0.5) truncate toward zero, as
@@ -39,6 +38,12 @@
 // Mutants (compare/mutants/particle.cpp): FALL_THROUGH_ACCELERATION, DEPOSIT_BESIDE,
 // CORNER_WEIGHTS_SWAPPED, COLOUR_MIXING_REVERSED, COLOUR_DEPOSIT_UNWEIGHTED (GPU only),
 // RESCALED_VELOCITY, KEPT_SEDIMENT_ON_DEPOSIT, UNBOUNDED_EROSION, COLOUR_KEPT_WHOLE (both twins).
+// Inputs:  ParticleBlock (uniform binding 0), heights (1), valid (2), with PARTICLE_COLOUR colour (6)
+//          (particle_block.glsl); the uniform pass_offset.
+// Outputs: heights (1) in place, or delta (3) by atomicAdd (PARTICLE_BATCH); the side maps
+//          eroded_at_droplet (4) and deposited_at_droplet (5); colour (6) in place, or colour_sums (7)
+//          (PARTICLE_COLOUR with PARTICLE_BATCH).
+// Twin:    reference/erosion/particle.cpp.
 #include "common/grid.glsl"
 #include "erosion/particle_block.glsl"
 

@@ -1,18 +1,24 @@
 // Buffers, parameters and helpers of the virtual-pipe erosion (Mei 2007) shaders pipes_*.comp.
 // The uniform block is mirrored by PipeBlock in gpu/erosion/pipes.cpp, whose offsets are checked
-// against this block when the program links (GlProgram::check_block). The algorithm, its decisions and the float-trap storage are described at the
-// top of gpu/erosion/pipes.cpp; the CPU reference is reference/erosion/pipes.cpp.
+// against this block when the program links (GlProgram::check_block). The algorithm, its decisions
+// and the float-trap storage are described at the top of gpu/erosion/pipes.cpp.
 //
 // Pipes 0-3 are L, R, T, B: (-1,0), (1,0), (0,1), (0,-1); with PIPES_8 also the diagonals 4-7, TL,
 // BR, TR, BL: (-1,1), (1,-1), (1,1), (-1,-1); pipe k and k ^ 1 are opposite. Per-pipe values are
 // two vec4 (`vec4 v[2]`, pipe k in v[k / 4][k % 4]); the buffers outflow, sent and regolith_sent
-// hold pipe_groups vec4 per cell (1 with 4 pipes, so their 4-pipe layout is unchanged).
+// hold pipe_groups vec4 per cell (1 with 4 pipes, 2 with 8).
 // Terrain = base + change: `cells[i].base` is the initial height b0 (float, never written) and
 // `delta` the change Δb (starts at 0), so height differences are formed as
 // (b0_a - b0_b) + (Δb_a - Δb_b) and an erosion amount far below the float spacing of b0 is kept.
 // Every arithmetic result is `precise` (no fused multiply-add, no reassociation), and max/min/clamp
 // are written as std::max/std::min/std::clamp evaluate them (NaN handling included), so the float
 // reference repeats the shaders operation by operation.
+// Inputs:  declares PipeBlock (uniform binding 0) and the buffers cells (1), delta (2), delta_next (3),
+//          water (4), outflow (5), velocity (6), sediment (7), staying (8), sent (9), regolith (12),
+//          regolith_staying (13), regolith_sent (14), thermal_outflows (15).
+// Outputs: the pipe helpers (pipe offsets, exterior, terrain_difference, ref_max/ref_min) the
+//          pipes_*.comp passes use.
+// Twin:    reference/erosion/pipes.cpp; host: gpu/erosion/pipes.cpp.
 #ifndef PIPES_BLOCK_GLSL
 #define PIPES_BLOCK_GLSL
 
@@ -68,7 +74,7 @@ struct CellConstants {
 layout(std430, binding = 1) readonly buffer Cells { CellConstants cells[]; };
 layout(std430, binding = 2) buffer Delta { float delta[]; };            // Δb, current
 layout(std430, binding = 3) buffer DeltaNext { float delta_next[]; };   // Δb, next (ping-pong)
-layout(std430, binding = 4) buffer Water { vec4 water[]; };             // d, d_A, d_B, unused
+layout(std430, binding = 4) buffer Water { vec4 water[]; };             // d, d_A, d_B, drained (1: K < 1)
 layout(std430, binding = 5) buffer Outflow { vec4 outflow[]; };         // f per pipe, m³/s (pipe_groups per cell)
 layout(std430, binding = 6) buffer Velocity { vec2 velocity[]; };       // u, v, m/s
 layout(std430, binding = 7) buffer Sediment { float sediment[]; };      // s, m

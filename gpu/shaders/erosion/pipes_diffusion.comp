@@ -10,8 +10,11 @@
 //   water weighting (DIFFUSION_WATER, the seed's code): σ_k = ½d_k / (d + ½Σ d_n) with the depths
 //     d_B after the flow (water[].z); nothing moves when that sum is 0.
 // Reads s and r of the neighbours, so it writes the next values into the `staying` buffers, which
-// the host then swaps with s and r. CPU reference: reference/erosion/pipes.cpp
-// (diffusion_shares, diffuse).
+// the host then swaps with s and r.
+// Inputs:  PipeBlock (uniform binding 0), cells (1), water (4: d_B), sediment (7), regolith (12)
+//          (pipes_block.glsl).
+// Outputs: staying (8) and regolith_staying (13): the diffused s and r.
+// Twin:    reference/erosion/pipes.cpp (diffusion_shares, diffuse).
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/grid.glsl"
 #include "erosion/pipes_block.glsl"

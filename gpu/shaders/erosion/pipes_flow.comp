@@ -13,9 +13,13 @@
 //               rest `staying`), or the sediment kept after the exterior pipes' share
 //               (semi-Lagrangian: `staying`, and what left in sent.x); the regolith likewise
 // Reads neighbours' Δb (the tilt) and fluxes; writes its own d_B, velocity, Δb into the next
-// buffer, staying and sent. TRANSPORT_FLUX selects the flux form. CPU reference:
-// reference/erosion/pipes.cpp (update_water_depth, update_velocity, erode_and_deposit,
-// carried_shares, transport_*).
+// buffer, staying and sent. TRANSPORT_FLUX selects the flux form.
+// Inputs:  PipeBlock (uniform binding 0), cells (1), delta (2), water (4: d_A, drained), outflow (5),
+//          sediment (7), regolith (12) (pipes_block.glsl).
+// Outputs: water (4: d_B), delta_next (3), velocity (6), staying (8), sent (9), regolith_staying (13),
+//          regolith_sent (14).
+// Twin:    reference/erosion/pipes.cpp (update_water_depth, update_velocity, erode_and_deposit,
+//          carried_shares, transport_*).
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/grid.glsl"
 #include "erosion/pipes_block.glsl"
@@ -122,7 +126,7 @@ void main() {
     twice_flow_y = twice_flow_y + diagonal_share.y * diagonal_outflow(out_flux[1], in_flux[1], 1);
   }
 #ifdef GT_MUTANT_EROSION_PIPE_GPU_VELOCITY_WITHOUT_HALF
-  precise float flow_x = twice_flow_x;  // issue 11's mutant: ΔW_X without its ½
+  precise float flow_x = twice_flow_x;  // mutant: ΔW_X without its ½
 #else
   precise float flow_x = 0.5 * twice_flow_x;
 #endif
@@ -145,7 +149,7 @@ void main() {
   }
   precise float changed = delta[index] - moved;
 #ifdef GT_MUTANT_EROSION_PIPE_SEDIMENT_GAIN_DOUBLED
-  precise float carried = suspended + 2.0 * moved;  // issue 11's mutant: s gains twice what b loses
+  precise float carried = suspended + 2.0 * moved;  // mutant: s gains twice what b loses
 #else
   precise float carried = suspended + moved;
 #endif

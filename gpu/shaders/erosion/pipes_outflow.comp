@@ -6,7 +6,10 @@
 // the base + change storage (see pipes_block.glsl). Exterior pipes: closed = no flux; open = a dry
 // cell at the cell's own terrain height, Δh = d_A. Each cell writes only its own fluxes and reads
 // its old ones and its neighbours' d_A, so updating in place is synchronous.
-// CPU reference: reference/erosion/pipes.cpp (update_outflow).
+// Inputs:  PipeBlock (uniform binding 0), cells (1), delta (2), water (4: d_A), outflow (5: last
+//          step's fluxes) (pipes_block.glsl).
+// Outputs: outflow (5) in place; water (4).w, the drained flag (1 when K < 1).
+// Twin:    reference/erosion/pipes.cpp (update_outflow).
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/grid.glsl"
 #include "erosion/pipes_block.glsl"
@@ -23,7 +26,7 @@ void main() {
     bool outside = exterior(flags, k);
     if (outside && boundary_open == 0u) continue;
 #ifdef GT_MUTANT_EROSION_PIPE_GPU_DROPS_BOTTOM_PIPE
-    if (k == pipe_bottom) continue;  // issue 11's mutant: the B pipe never carries water
+    if (k == pipe_bottom) continue;  // mutant: the B pipe never carries water
 #endif
     precise float head;
     if (outside) {

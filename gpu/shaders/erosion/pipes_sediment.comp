@@ -6,8 +6,10 @@
 //     no-data cell reading the cell itself; weights ceil(p) - p and p - floor(p);
 //   the regolith (REGOLITH, seed 001 §3.9) the same way, from its own buffers;
 //   evaporation d = d_B·(1 - K_e·Δt) (the diffusion pass, when there is one, reads d_B, not d).
-// CPU reference: reference/erosion/pipes.cpp (transport_*, gather_sent, backtraced_sediment,
-// evaporate).
+// Inputs:  PipeBlock (uniform binding 0), cells (1), water (4: d_B), velocity (6), staying (8),
+//          sent (9), regolith_staying (13), regolith_sent (14) (pipes_block.glsl).
+// Outputs: sediment (7), regolith (12), water (4: d after evaporation).
+// Twin:    reference/erosion/pipes.cpp (transport_*, gather_sent, backtraced_sediment, evaporate).
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/grid.glsl"
 #include "erosion/pipes_block.glsl"
@@ -21,7 +23,7 @@ float gathered(ivec2 cell, uint index, uint flags, int carried) {
     if (exterior(flags, k)) continue;
     uint slot = pipe_slot(neighbour_index(cell, k), k);
 #ifdef GT_MUTANT_EROSION_PIPE_GPU_GATHER_WRONG_PIPE
-    int from = k % 4;  // issue 11's mutant: the neighbour's pipe k, not the one towards this cell
+    int from = k % 4;  // mutant: the neighbour's pipe k, not the one towards this cell
 #else
     int from = opposite(k) % 4;
 #endif
@@ -92,7 +94,7 @@ void main() {
 #else
   vec2 speed = velocity[index];
 #ifdef GT_MUTANT_EROSION_PIPE_GPU_BACKTRACE_DOWNSTREAM
-  precise float displacement_x = speed.x * backtrace_x;  // issue 11's mutant: traced downstream along x
+  precise float displacement_x = speed.x * backtrace_x;  // mutant: traced downstream along x
 #else
   precise float displacement_x = -speed.x * backtrace_x;
 #endif
@@ -106,7 +108,7 @@ void main() {
 #endif
 
 #ifdef GT_MUTANT_EROSION_PIPE_DOUBLE_EVAPORATION
-  precise float evaporated = water[index].z * (2.0 * evaporation_kept - 1.0);  // issue 11's mutant: 2·K_e
+  precise float evaporated = water[index].z * (2.0 * evaporation_kept - 1.0);  // mutant: 2·K_e
 #else
   precise float evaporated = water[index].z * evaporation_kept;
 #endif

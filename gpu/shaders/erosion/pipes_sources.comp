@@ -3,6 +3,10 @@
 // rate·Δt/(l_x·l_y) are added to d_A one after the other in the order the sources were given, as
 // the reference adds them (reference/erosion/pipes.cpp, add_water). One invocation per cell, so no
 // two invocations write the same cell.
+// Inputs:  PipeBlock (uniform binding 0) (pipes_block.glsl), source_cells (10: cell, first, count),
+//          source_depths (11), water (4: d_A).
+// Outputs: water (4: d_A) of the cells with sources.
+// Twin:    reference/erosion/pipes.cpp (add_water).
 layout(local_size_x = 64, local_size_y = 1) in;
 #include "common/grid.glsl"
 #include "erosion/pipes_block.glsl"

@@ -1,5 +1,8 @@
 // The 8-neighbour pipes of the pipe erosion's thermal step (pipes_thermal_*.comp), as
 // gpu/shaders/erosion/thermal_jako_block.glsl numbers them.
+// Inputs:  PipeBlock's talus limits and the thermal_outflows buffer (15) of pipes_block.glsl.
+// Outputs: thermal_opposite, thermal_talus_limit, thermal_pipe_open, thermal_outflow.
+// Twin:    reference/erosion/thermal_jako.cpp (its pipes), as used by reference/erosion/pipes.cpp.
 #ifndef PIPES_THERMAL_GLSL
 #define PIPES_THERMAL_GLSL
 

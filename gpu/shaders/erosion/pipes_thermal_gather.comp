@@ -3,6 +3,10 @@
 // its neighbours send it, in the reference's order (reference/erosion/thermal_jako.cpp,
 // gathered_height), written to the next Δb buffer. The same numbers leave one cell and reach the
 // other, so material is conserved to the rounding of Δb.
+// Inputs:  PipeBlock (uniform binding 0), cells (1), delta (2), thermal_outflows (15)
+//          (pipes_block.glsl, pipes_thermal.glsl).
+// Outputs: delta_next (3): the next Δb.
+// Twin:    reference/erosion/thermal_jako.cpp (gathered_height), in reference/erosion/pipes.cpp's step 8.
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/grid.glsl"
 #include "erosion/pipes_block.glsl"

@@ -4,7 +4,10 @@
 // the terrain b = b0 + Δb, with every height difference formed as terrain_difference() (see
 // pipes_block.glsl) so that it keeps the precision of the relief at a high base. What each cell
 // sends down each of its 8 pipes (Jákó's order: (-1,0) (0,1) (1,0) (0,-1), then the diagonals
-// (-1,-1) (-1,1) (1,1) (1,-1)). CPU reference: reference/erosion/thermal_jako.cpp (cell_outflows).
+// (-1,-1) (-1,1) (1,1) (1,-1)).
+// Inputs:  PipeBlock (uniform binding 0), cells (1: b0, flags), delta (2) (pipes_block.glsl).
+// Outputs: thermal_outflows (15): 8 per cell, two vec4.
+// Twin:    reference/erosion/thermal_jako.cpp (cell_outflows), in reference/erosion/pipes.cpp's step 8.
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/grid.glsl"
 #include "erosion/pipes_block.glsl"

@@ -1,6 +1,10 @@
 // Buffers and parameters of seed 000's thermal erosion (thermal_requests.comp and
 // thermal_transfer.comp). The uniform block is mirrored by ThermalBlock in gpu/erosion/thermal.cpp,
 // whose offsets are checked against this block when the program links (GlProgram::check_block).
+// Inputs:  declares ThermalBlock (uniform binding 0), heights (1, read only), valid (2), requests
+//          (3), next_heights (4, write only).
+// Outputs: the block and buffers of the two passes.
+// Twin:    reference/erosion/thermal.cpp; host: gpu/erosion/thermal.cpp.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(std140, binding = 0) uniform ThermalBlock {

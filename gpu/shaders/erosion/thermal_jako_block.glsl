@@ -1,8 +1,13 @@
 // Buffers and parameters of Jákó & Tóth's thermal erosion (thermal_jako_outflow.comp and
 // thermal_jako_gather.comp). The uniform block is mirrored by ThermalJakoBlock in
-// gpu/erosion/thermal_jako.cpp, whose offsets are checked against this block when the program links (GlProgram::check_block).
+// gpu/erosion/thermal_jako.cpp, whose offsets are checked against this block when the program links
+// (GlProgram::check_block).
 // Pipes 0-3 are (-1,0) (0,1) (1,0) (0,-1), pipes 4-7 the diagonals (-1,-1) (-1,1) (1,1) (1,-1);
 // outflows of a cell are stored as two vec4: pipes 0-3, then 4-7.
+// Inputs:  declares ThermalJakoBlock (uniform binding 0), heights (1, read only), valid (2), outflows
+//          (3), next_heights (4, write only).
+// Outputs: the block, buffers and outflow(index, k) of the two passes.
+// Twin:    reference/erosion/thermal_jako.cpp; host: gpu/erosion/thermal_jako.cpp.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(std140, binding = 0) uniform ThermalJakoBlock {

@@ -1,8 +1,11 @@
 #version 450
 // Gather pass of Jákó & Tóth's thermal erosion (digest 000 §3.6): a cell loses what it sends and
-// gains what its neighbours send to it, the same numbers, so material is conserved. CPU reference:
-// reference/erosion/thermal_jako.cpp.
+// gains what its neighbours send to it, the same numbers, so material is conserved.
 // Mutants (compare/mutants/thermal.cpp): SWAPPED_INFLOW (GPU only), FIRST_OUTFLOW_KEPT (both twins).
+// Inputs:  ThermalJakoBlock (uniform binding 0), heights (1), valid (2), outflows (3)
+//          (thermal_jako_block.glsl).
+// Outputs: next_heights (4).
+// Twin:    reference/erosion/thermal_jako.cpp.
 #include "common/grid.glsl"
 #include "erosion/thermal_jako_block.glsl"
 

@@ -1,8 +1,11 @@
 #version 450
 // Outflow pass of Jákó & Tóth's thermal erosion (digest 000 §3.6, eqs. 2.30-2.34): what each cell
-// sends down each of its 8 pipes. CPU reference and decisions: reference/erosion/thermal_jako.cpp.
+// sends down each of its 8 pipes. Decisions: reference/erosion/thermal_jako.cpp.
 // All arithmetic is `precise` so that no multiply-add is fused: ref<float> repeats it exactly.
 // Mutants (compare/mutants/thermal.cpp): DROPPED_DIRECTION (GPU only), UNHALVED_TRANSFER (both twins).
+// Inputs:  ThermalJakoBlock (uniform binding 0), heights (1), valid (2) (thermal_jako_block.glsl).
+// Outputs: outflows (3): 8 per cell, two vec4.
+// Twin:    reference/erosion/thermal_jako.cpp.
 #include "common/grid.glsl"
 #include "erosion/thermal_jako_block.glsl"
 

@@ -1,9 +1,12 @@
 #version 450
 // Pass A of seed 000's thermal erosion (digest 000 §4.6, Algorithms 9-10): each cell's request
-// per pipe: negative = material this cell offers, positive = material it asks for. The CPU
-// reference is reference/erosion/thermal.cpp; decisions (0/0, borders, masks) are listed there.
+// per pipe: negative = material this cell offers, positive = material it asks for. Decisions
+// (0/0, borders, masks) are listed in the reference.
 // All arithmetic is `precise` so that no multiply-add is fused: ref<float> repeats it exactly.
 // Mutants (compare/mutants/thermal.cpp): DEMAND_TOTAL_THREE_PIPES (GPU only), DOUBLED_RATE (both twins).
+// Inputs:  ThermalBlock (uniform binding 0), heights (1), valid (2) (thermal_block.glsl).
+// Outputs: requests (3): one vec4 per cell, a request per pipe.
+// Twin:    reference/erosion/thermal.cpp.
 #include "common/grid.glsl"
 #include "erosion/thermal_block.glsl"
 

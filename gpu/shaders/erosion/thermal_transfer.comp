@@ -1,8 +1,11 @@
 #version 450
 // Pass B of seed 000's thermal erosion (digest 000 §4.6, Algorithm 11): across each pipe the two
 // cells hold requests of opposite sign and the smaller magnitude moves; both ends compute the
-// same minimum, so material is conserved. CPU reference: reference/erosion/thermal.cpp.
+// same minimum, so material is conserved.
 // Mutants (compare/mutants/thermal.cpp): SWAPPED_GATHER (GPU only), UNCONSERVED_TRANSFER (both twins).
+// Inputs:  ThermalBlock (uniform binding 0), heights (1), valid (2), requests (3) (thermal_block.glsl).
+// Outputs: next_heights (4).
+// Twin:    reference/erosion/thermal.cpp.
 #include "common/grid.glsl"
 #include "erosion/thermal_block.glsl"
 

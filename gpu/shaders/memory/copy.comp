@@ -4,6 +4,9 @@
 // does no arithmetic. A vec4 rather than a float per invocation: on llvmpipe, a float copy is
 // bound by the cost of an invocation, not by memory, and read 2 GB/s where kernels moving more
 // bytes per invocation went faster.
+// Inputs:  source (binding 0), the uniform vector_count.
+// Outputs: target (binding 1).
+// Twin:    none: a bandwidth probe, not an algorithm (host: gpu/memory/copy_bandwidth.cpp).
 layout(local_size_x = 256) in;
 
 #include "cave/linear_dispatch.glsl"

@@ -9,6 +9,9 @@
 //   #include "noise/fractal.glsl"
 // The parameters come as a GtFractalTerms, derived on the host in double by
 // gt::fractal_terms<float>(FractalParams) (core/params/noise_fractal.hpp), whose layout it mirrors.
+// Inputs:  FRACTAL_BASIS(q) (defined by the including shader) and a GtFractalTerms; a point p.
+// Outputs: gt_fbm, gt_ridged_multifractal, gt_hetero_terrain at p.
+// Twin:    reference/noise/fractal.hpp.
 #ifndef GT_NOISE_FRACTAL_GLSL
 #define GT_NOISE_FRACTAL_GLSL
 

@@ -3,7 +3,12 @@
 // origin + (i·step, j·step, 0, 0) in noise units. The host chooses the function with the define
 // NOISE_VALUE(p) (p a vec4; e.g. gt_simplex3(p.xyz, kernel_radius_squared)) and, for fractal sums,
 // FRACTAL_BASIS(q) (e.g. gt_perlin3(q)) with NOISE_VALUE(p) = gt_fbm(p.xyz, fractal_terms).
-// CPU references: reference/noise/noise_field.cpp.
+// Sample (i, j) is values[j·width + i].
+// Inputs:  NoiseFieldBlock (uniform binding 0: grid size, origin, step, kernel_radius_squared and,
+//          for fractal sums, fractal_terms), the permutation (binding 5, noise/permutation.glsl), for
+//          perlin3_texture the texture on unit 0 (noise/perlin_texture.glsl).
+// Outputs: values (binding 1).
+// Twin:    reference/noise/noise_field.cpp (host: gpu/noise/noise_field.cpp).
 layout(local_size_x = 16, local_size_y = 16) in;
 
 #include "common/grid.glsl"

@@ -1,17 +1,19 @@
-// Improved Perlin noise in 3-D (Perlin 2002; digest 002 §4.4.3), GLSL twin of
-// reference/noise/perlin.cpp: the same float operations in the same order (see the formulas and
-// decisions there). Needs the permutation storage buffer of noise/permutation.glsl (binding 5,
-// the table twice: 512 entries).
+// Improved Perlin noise in 3-D (Perlin 2002; digest 002 §4.4.3): the same float operations in the
+// same order as the reference (see the formulas and decisions there). Needs the permutation
+// storage buffer of noise/permutation.glsl (binding 5, the table twice: 512 entries).
 //
 // gt_perlin3(p) -> noise value; gt_perlin3_gradient(p) -> (value, d/dx, d/dy, d/dz).
 // Also used by noise/perlin_texture.glsl: gt_perlin_fade, gt_perlin_lerp.
 // Coordinates in lattice units, |p| < 2^31; period 256.
+// Inputs:  p in lattice units; the permutation buffer (binding 5, noise/permutation.glsl).
+// Outputs: gt_perlin3, gt_perlin3_gradient, gt_perlin_fade, gt_perlin_lerp.
+// Twin:    reference/noise/perlin.cpp.
 #ifndef GT_NOISE_PERLIN_GLSL
 #define GT_NOISE_PERLIN_GLSL
 
 #include "noise/permutation.glsl"
 
-// fade(t) = ((t·t)·t)·(t·(t·6 − 15) + 10). Mutants (issue 11): GPU_SMOOTHSTEP_FADE (this twin
+// fade(t) = ((t·t)·t)·(t·(t·6 − 15) + 10). Mutants: GPU_SMOOTHSTEP_FADE (this twin
 // alone) has Perlin 1985's 3t² − 2t³; FADE_SQUARE (both twins) t² where t³ belongs.
 float gt_perlin_fade(float t) {
 #if defined(GT_MUTANT_NOISE_PERLIN3_GPU_SMOOTHSTEP_FADE)

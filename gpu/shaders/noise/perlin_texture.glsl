@@ -1,11 +1,14 @@
 // Gustavson's 2004 texture-based Perlin noise, the noise of seed 004's fragment shader (digest 004
-// §2.1), GLSL twin of reference/noise/perlin_texture.cpp: the 2004 code with its mix() and dot()
-// written out in the reference's operation order, every intermediate precise (hazards: there).
+// §2.1): the 2004 code with its mix() and dot() written out in the reference's operation order,
+// every intermediate precise (hazards: in the reference).
 //
 // gt_perlin3_texture(p) -> noise value; p in lattice units, |p| < 2^23; period 256.
 // Texture: gt_perlin_texture on texture unit 0 (layout binding), the 256x256 GL_RGBA8 table of
 // core/noise/perlin_texture_table.hpp with GL_NEAREST min/mag filters and GL_REPEAT wrap, no
 // mipmaps (gt::gpu::PerlinTexture). texture() reads level 0 in every stage: the texture has one level.
+// Inputs:  p in lattice units; the texture gt_perlin_texture (unit 0).
+// Outputs: gt_perlin3_texture(p).
+// Twin:    reference/noise/perlin_texture.cpp.
 #ifndef GT_NOISE_PERLIN_TEXTURE_GLSL
 #define GT_NOISE_PERLIN_TEXTURE_GLSL
 

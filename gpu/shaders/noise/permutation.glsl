@@ -2,6 +2,9 @@
 // uploads doubled_permutation(table), 512 uints (the 256-entry table twice), so that
 // perm[i + step + perm[j ...]] with i <= 255, step <= 1 and a looked-up entry <= 255 needs no wrap.
 // Guarded: several noise files include it.
+// Inputs:  declares perm (storage binding 5, read only): the doubled table, 512 uints.
+// Outputs: the table for the lattice noises.
+// Twin:    core/noise/permutation.hpp (doubled_permutation).
 #ifndef GT_NOISE_PERMUTATION_GLSL
 #define GT_NOISE_PERMUTATION_GLSL
 

@@ -1,5 +1,5 @@
-// Simplex noise in 2, 3 and 4 dimensions with the analytic gradient in 2-D and 3-D, GLSL twin of
-// reference/noise/simplex.cpp (seed 004 digest §2.2.3-2.2.4: Eshelman's port of Gustavson 2005).
+// Simplex noise in 2, 3 and 4 dimensions with the analytic gradient in 2-D and 3-D (seed 004 digest
+// §2.2.3-2.2.4: Eshelman's port of Gustavson 2005).
 //
 // float gt_simplex2(vec2 p)                                  kernel radius² 0.5, scale 70
 // float gt_simplex3(vec3 p, float kernel_radius_squared)     0.6 (seed 004) or 0.5, scale 32
@@ -19,6 +19,9 @@
 // The constants are the floats nearest to the exact values (the C++ side rounds the same decimals
 // once; tests/simplex_test.cpp checks that the literals here equal those floats).
 // Guarded: included by several programs.
+// Inputs:  p in noise units, kernel_radius_squared; the permutation buffer (binding 5).
+// Outputs: the values and gradients listed above.
+// Twin:    reference/noise/simplex.cpp.
 #ifndef GT_NOISE_SIMPLEX_GLSL
 #define GT_NOISE_SIMPLEX_GLSL
 
@@ -150,7 +153,7 @@ float gt_simplex_corner(vec4 g, vec4 d, float kernel_radius_squared) {
   return value;
 }
 
-// Mutant hooks (issue 11; compare/mutants/noise.cpp). GT_MUTANT_NOISE_SIMPLEX3_GRAD3_SWAPPED is
+// Mutant hooks (compare/mutants/noise.cpp). GT_MUTANT_NOISE_SIMPLEX3_GRAD3_SWAPPED is
 // also in the reference (both twins); the others are this twin's alone.
 // grad3's entry for a hash; the mutant exchanges the table's first two entries.
 uint gt_simplex_grad3_index(uint hash) {

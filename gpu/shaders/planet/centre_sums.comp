@@ -3,6 +3,9 @@
 // plate's sum (centre `mean`, the thesis) or only edge regions do (PLANET_CENTRE_EDGE_SUM, the
 // code), in the order-independent fixed point of planet/fixed_point.glsl. Needs centre_sums
 // cleared to 0 by the host.
+// Inputs:  PlanetBlock (uniform binding 0), positions (2), plate (3), is_edge (6) (planet.glsl).
+// Outputs: centre_sums (9): 6 uints per plate, by atomicAdd.
+// Twin:    reference/planet/elevation.cpp (plate_centres' sums, in double there).
 layout(local_size_x = 256) in;
 
 #include "planet/planet.glsl"

@@ -11,6 +11,10 @@
 //     pressure = sqrt(dot3(v, v))·dot3(v, q − p) + sqrt(dot3(v_q, v_q))·dot3(v_q, p − q).
 // Both are bit-symmetric: pressure(i, n) = pressure(n, i) (normalise(−x) = −normalise(x), and the
 // two terms swap places in a commutative addition).
+// Inputs:  PlanetBlock (uniform binding 0), neighbours (0), positions (2), plate (3), is_edge (6),
+//          plates (7: shifts), noisy (10: E0) (planet.glsl).
+// Outputs: collided (11): E1.
+// Twin:    reference/planet/elevation.cpp (planet_elevation's E1, pressure).
 layout(local_size_x = 256) in;
 
 #include "planet/planet.glsl"

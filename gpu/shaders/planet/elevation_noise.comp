@@ -6,6 +6,10 @@
 //   E0(i) = b_plate(i)                     (without noise)
 // f·pos componentwise, then S times the fbm, then the base added. No division or square root: the
 // same bits as the reference on a device that honours `precise`.
+// Inputs:  PlanetBlock (uniform binding 0: S, f, fractal terms), positions (2), plate (3), plates (7:
+//          base), the permutation (5) (planet.glsl).
+// Outputs: noisy (10): E0.
+// Twin:    reference/planet/elevation.cpp (planet_elevation's E0).
 layout(local_size_x = 256) in;
 
 #include "planet/planet.glsl"

@@ -5,6 +5,9 @@
 // the sum from E1(i), then the neighbours added in table order, then one division by the float
 // count (7 + 1 or 8 + 1). Without PLANET_SMOOTHS (smoothing off, or only with collisions and
 // collisions off): E2 = E1. Reads `collided`, writes `smoothed` (a Jacobi step).
+// Inputs:  PlanetBlock (uniform binding 0), neighbours (0), collided (11: E1) (planet.glsl).
+// Outputs: smoothed (12): E2.
+// Twin:    reference/planet/elevation.cpp (planet_elevation's E2, smoothed_elevation).
 layout(local_size_x = 256) in;
 
 #include "planet/planet.glsl"

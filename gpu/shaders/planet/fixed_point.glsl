@@ -13,6 +13,9 @@
 // conversion of `low` <= 2^7 integer units (2^−33), the conversion of `high` and the addition
 // <= 2^−24·|sum| each.
 // A plate's sums occupy centre_sums[6k .. 6k + 5]: (low, high) for x, y, z.
+// Inputs:  centre_sums (binding 9, planet.glsl); a position.
+// Outputs: the atomic adds into a plate's sums and the float sums read back.
+// Twin:    reference/planet/elevation.cpp (plate_centres, which sums in double; core/params/planet.hpp).
 #ifndef GT_PLANET_FIXED_POINT_GLSL
 #define GT_PLANET_FIXED_POINT_GLSL
 

@@ -8,7 +8,10 @@
 //   position = w·(1/sqrt(dot3(w, w)))
 // θ and tan θ come rounded once to float. The offsets are exact twins (no division, no builtin);
 // the positions differ from the reference by GLSL's tan (sin/cos-based, implementation-defined
-// precision) and division. Writes offsets (2 per region) and positions (xyz, w = 0).
+// precision) and division.
+// Inputs:  PlanetBlock (uniform binding 0: R, j, the face matrices, θ, tan θ, seed) (planet.glsl).
+// Outputs: offsets (1): 2 per region; positions (2): xyz, w = 0.
+// Twin:    reference/planet/jitter.cpp.
 layout(local_size_x = 256) in;
 
 #include "planet/planet.glsl"

@@ -11,6 +11,12 @@
 // - vector sums and differences componentwise.
 // Layout (§9.4): std430, vec3 padded to vec4. Units: positions on the unit sphere; elevations in
 // generator units.
+// Inputs:  declares PlanetBlock (uniform binding 0) and the storage buffers neighbours (0), offsets
+//          (1), positions (2), plate (3), plate_next (4), is_edge (6), plates (7), assigned_count (8),
+//          centre_sums (9), noisy (10), collided (11), smoothed (12); the permutation (5) through
+//          noise/perlin.glsl.
+// Outputs: U(k, step, stream), dot3, normalise and the vector helpers for the passes.
+// Twin:    reference/planet/*.cpp (Real = float); host: gpu/planet/generator.cpp.
 #ifndef GT_PLANET_PLANET_GLSL
 #define GT_PLANET_PLANET_GLSL
 

@@ -5,6 +5,10 @@
 // plates as they were before the sub-step (a Jacobi step: reads `plate`, writes `plate_next`, the
 // host swaps them). Regions with a plate keep it. Each claim adds 1 to assigned_count, which the
 // host reads after a cycle to stop when it reaches N. Integers only: the twins agree exactly.
+// Inputs:  PlanetBlock (uniform binding 0), neighbours (0), plate (3), plates (7: expansions) (planet.glsl);
+//          the uniform sub_step.
+// Outputs: plate_next (4); assigned_count (8) by atomicAdd.
+// Twin:    reference/planet/plates.cpp (grow_plates, synchronous rule).
 layout(local_size_x = 256) in;
 
 #include "planet/planet.glsl"

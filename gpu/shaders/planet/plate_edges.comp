@@ -1,6 +1,9 @@
 #version 450
 // Step 3 (§4.4.2, §9.3 step 3; core/params/planet.hpp), twin of reference::edge_regions:
 // is_edge(i) = 1 when some valid neighbour has another plate, else 0.
+// Inputs:  PlanetBlock (uniform binding 0), neighbours (0), plate (3) (planet.glsl).
+// Outputs: is_edge (6).
+// Twin:    reference/planet/plates.cpp (edge_regions).
 layout(local_size_x = 256) in;
 
 #include "planet/planet.glsl"

@@ -3,6 +3,9 @@
 // plate k grows in cycle c, twin of reference::plate_expansions:
 //   whole = floor(rate_k), expansions(k, c) = whole + (U(k, c, expansion) < rate_k − whole ? 1 : 0)
 // (rate_k − whole is exact). Writes plates[k].expansions for the cycle `cycle`.
+// Inputs:  PlanetBlock (uniform binding 0), plates (7: rates) (planet.glsl); the uniform cycle.
+// Outputs: plates[k].expansions (7).
+// Twin:    reference/planet/plates.cpp (plate_expansions).
 layout(local_size_x = 64) in;
 
 #include "planet/planet.glsl"

@@ -9,7 +9,10 @@
 //   b = e_r·(2·U(k, 0, elevation) − 1), or with PLANET_BIMODAL_BASES: oceanic when
 //   U(k, 1, elevation) < ocean_share, b = −(e_r·(0.5 + 0.5·U(k, 0, elevation))), else
 //   b = (0.25·e_r)·U(k, 0, elevation) (0.25·e_r is exact).
-// Writes plates[k].centre, .shift, .base.
+// One invocation per plate.
+// Inputs:  PlanetBlock (uniform binding 0), centre_sums (9) (planet.glsl, planet/fixed_point.glsl).
+// Outputs: plates[k].centre, .shift, .base (7).
+// Twin:    reference/planet/elevation.cpp (plate_motion).
 layout(local_size_x = 64) in;
 
 #include "planet/planet.glsl"

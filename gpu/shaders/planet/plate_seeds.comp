@@ -5,8 +5,11 @@
 //   rate_k = max(lo + (hi − lo)·U(k, 0, rate), 1/256)   (erratum 9, floored so every plate grows)
 //   seed_k = random_u32(seed, k, attempt, plate_seed) % N for attempt = 0, 1, ... until the region
 //            has no plate yet; after 64 attempts the first free region in index order.
-// Needs `plate` cleared to −1 by the host. Writes plate[seed_k] = k, plates[k].rate, .seed_region,
-// and assigned_count = the seeds placed (P).
+// Needs `plate` cleared to −1 by the host.
+// Inputs:  PlanetBlock (uniform binding 0: rate bounds, P, N, seed) (planet.glsl); plate (3), cleared.
+// Outputs: plate[seed_k] = k (3), plates[k].rate, .seed_region (7), and assigned_count (8) = the seeds
+//          placed (P).
+// Twin:    reference/planet/plates.cpp (plate_rates, plate_seeds).
 layout(local_size_x = 1) in;
 
 #include "planet/planet.glsl"

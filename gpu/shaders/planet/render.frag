@@ -5,8 +5,11 @@
 // searches 3×3), coloured in the elevation palette:
 //   base (107, 193, 255)/255 below sea level (e < 0), else (255, 189, 97)/255, times
 //   clamp(1 − |e|/4, 0, 1).
-// Output: rgb the colour, alpha the region + 1 (the target is RGBA32F, cleared to 0: alpha 0 where
-// nothing is drawn). Twin: reference/planet/render.cpp. Host: gpu/planet/render.cpp.
+// Inputs:  world_position from the vertex stage; VoronoiBlock (uniform binding 0), neighbours (0),
+//          positions (1) (planet/voronoi_search.glsl); elevation (4): one per region.
+// Outputs: colour (location 0): rgb the colour, alpha the region + 1 (the target is RGBA32F, cleared
+//          to 0: alpha 0 where nothing is drawn).
+// Twin:    reference/planet/render.cpp; host: gpu/planet/render.cpp.
 
 #include "planet/voronoi_search.glsl"
 

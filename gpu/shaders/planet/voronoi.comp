@@ -1,7 +1,10 @@
 #version 450
 // Spherical Voronoi of the region centroids by Algorithm 1's cell-grid search
-// (planet/voronoi_search.glsl), per query direction; twin of reference::nearest_sites (an exact
-// k-d tree search). Host: gpu/planet/voronoi.cpp.
+// (planet/voronoi_search.glsl), per query direction. Host: gpu/planet/voronoi.cpp.
+// Inputs:  VoronoiBlock (uniform binding 0), neighbours (0), positions (1) (voronoi_search.glsl);
+//          directions (2).
+// Outputs: labels (3): one region per direction.
+// Twin:    reference/planet/voronoi.cpp (nearest_sites: an exact k-d tree search).
 layout(local_size_x = 64) in;
 
 #include "planet/voronoi_search.glsl"

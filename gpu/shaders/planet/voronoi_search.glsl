@@ -7,8 +7,12 @@
 //      8 neighbours and, with SEARCH_RINGS 2, their neighbours: the 3×3 or 5×5 block of Algorithm 1
 //      (the seed's shader searches 3×3, its thesis 5×5), found through the shared neighbour table,
 //      so across cube edges and corners without the wrap arithmetic (§9.1).
-// Host: gpu/planet/voronoi.cpp (voronoi_block). Twin: reference/planet/voronoi.hpp (exact).
+// Host: gpu/planet/voronoi.cpp (voronoi_block).
 // Units: unit-sphere positions; distances as squared chords.
+// Inputs:  declares VoronoiBlock (uniform binding 0: face matrices, R, θ, tan θ, query count),
+//          neighbours (0), positions (1); a direction.
+// Outputs: the nearest region of the direction.
+// Twin:    reference/planet/voronoi.hpp (exact).
 #ifndef GT_PLANET_VORONOI_SEARCH_GLSL
 #define GT_PLANET_VORONOI_SEARCH_GLSL
 

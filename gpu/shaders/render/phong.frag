@@ -9,16 +9,20 @@
 //
 // Looks (reference/render/phong.hpp "Looks"): GT_PHONG_LOOK, defined by the host
 // (gpu/render/phong.cpp), picks how albedo and n are made before the Phong terms:
-//   0 plain    the uniform albedo and n (the shader as it was before looks: the #if blocks vanish)
+//   0 plain    the uniform albedo and n (the #if blocks vanish)
 //   1 cave     albedo from the colour strip and moss, n bumped (render/phong_look.glsl)
 //   2 terrain  albedo from the height ramp (or, with GT_TERRAIN_DRAPE, the colour drape) and the
 //              slope (render/phong_look.glsl)
+// Inputs:  world_position, vertex_normal from the vertex stage; eye, albedo, light_power (uniform
+//          locations 1-3); for the cave and terrain looks, phong_look.glsl's inputs.
+// Outputs: colour (location 0).
+// Twin:    reference/render/phong.cpp (and cave_look.cpp for the cave look).
 
 #ifndef GT_PHONG_LOOK
 #define GT_PHONG_LOOK 0
 #endif
 
-// The seed's K_a = 0.1 and exponent 5, or the mutants' (issue 11, compare/mutants/render.cpp):
+// The seed's K_a = 0.1 and exponent 5, or the mutants' (compare/mutants/render.cpp):
 // render.phong.no_ambient (both twins) drops the ambient term; render.phong.specular_exponent (both
 // twins) and render.phong.specular_exponent_gpu (this shader only) use the exponent 10.
 #ifdef GT_MUTANT_RENDER_PHONG_NO_AMBIENT

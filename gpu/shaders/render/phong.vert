@@ -4,6 +4,9 @@
 // transpose = GL_TRUE from its row-major array. The world position and the CPU's vertex normal
 // (area-weighted; the noise gradient's for the cave's own meshes) go to the fragment stage,
 // interpolated perspective-correctly (GL's default). The same for every look (GT_PHONG_LOOK).
+// Inputs:  position (location 0), normal (location 1), view_projection (uniform location 0).
+// Outputs: gl_Position; world_position, vertex_normal.
+// Twin:    reference/render/phong.cpp.
 
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
@@ -15,7 +18,7 @@ out vec3 vertex_normal;
 void main() {
   gl_Position = view_projection * vec4(position, 1.0);
 #ifdef GT_MUTANT_RENDER_PHONG_VERTICAL_FLIP
-  gl_Position.y = -gl_Position.y;  // mutant (both twins, issue 11): the picture upside down
+  gl_Position.y = -gl_Position.y;  // mutant (both twins): the picture upside down
 #endif
   world_position = position;
   vertex_normal = normal;

@@ -5,7 +5,7 @@
 // reference/render/cave_look.hpp and phong.hpp; the operation order follows the reference.
 // Included by render/phong.frag when GT_PHONG_LOOK is 1 (cave) or 2 (terrain).
 //
-// Inputs (host: gpu/render/phong.cpp):
+// Inputs:  (host: gpu/render/phong.cpp)
 //   PhongLookBlock  std140, uniform binding 0, mirrored there, checked at link (GlProgram::check_block)
 //   strip           storage buffer binding 6: the cave's colour strip or the terrain's height ramp,
 //                   one vec4 (rgb, 1) per entry, look.strip_size entries
@@ -14,6 +14,8 @@
 //   terrain with GT_TERRAIN_DRAPE defined: the drape, storage buffer binding 7, one uint per texel
 //   (RGBA8 as unpackUnorm4x8 reads it), row-major, row 0 at v = 0 (north); its colour replaces the
 //   height ramp's (reference/render/phong.hpp "Colour drape").
+// Outputs: the look's albedo and shading normal for phong.frag.
+// Twin:    reference/render/cave_look.cpp (cave) and reference/render/phong.cpp (terrain).
 #ifndef GT_RENDER_PHONG_LOOK_GLSL
 #define GT_RENDER_PHONG_LOOK_GLSL
 
@@ -87,7 +89,7 @@ float gt_cave_shade(vec3 p) {
 vec3 gt_cave_albedo(vec3 p, vec3 n) {
   vec3 albedo = gt_strip_colour(gt_cave_shade(p));
 #ifdef GT_MUTANT_RENDER_PHONG_CAVE_MOSS_THRESHOLD_GPU
-  if (n.y > 0.5) {  // mutant (this shader only, issue 11): moss only on normals steeper than 60° from up
+  if (n.y > 0.5) {  // mutant (this shader only): moss only on normals steeper than 60° from up
 #else
   if (n.y > 0.0) {
 #endif
@@ -156,7 +158,7 @@ vec3 gt_terrain_albedo(vec3 p, vec3 n) {
 #else
   precise float h = clamp((gt_terrain_height(p) - look.height_low) * look.inverse_height_range, 0.0, 1.0);
 #ifdef GT_MUTANT_RENDER_TERRAIN_RAMP_REVERSED_GPU
-  h = 1.0 - h;  // mutant (this shader only, issue 11): the height ramp read from the top, snow at the foot
+  h = 1.0 - h;  // mutant (this shader only): the height ramp read from the top, snow at the foot
 #endif
   vec3 ground = gt_strip_colour(h);
 #endif

@@ -2,6 +2,10 @@
 // Test shader of tests/perlin_fractal_test.cpp (NoiseGlsl.PerlinAndFractalCompile): includes every
 // Perlin and fractal GLSL file and uses each function, so that compiling and linking it checks them.
 // Element i of `values` gets the functions' sum at a point that depends on i; nothing reads it.
+// Inputs:  the permutation (binding 5), the uniform terms (GtFractalTerms), the texture (unit 0).
+// Outputs: values (binding 0).
+// Twin:    none: a compile test (reference/noise/perlin.hpp, perlin_texture.hpp, fractal.hpp are the
+//          twins of the files it includes).
 layout(local_size_x = 64, local_size_y = 1) in;
 
 #include "noise/perlin.glsl"

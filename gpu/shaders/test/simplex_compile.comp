@@ -3,6 +3,10 @@
 // noise/simplex.glsl, so that loading it compiles them all. At points[i] (i < count) it writes 10
 // floats from results[10·i]: gt_simplex2, gt_simplex2_gradient (3), gt_simplex3,
 // gt_simplex3_gradient (4), gt_simplex4; 3-D and 4-D with kernel_radius_squared.
+// Inputs:  points (binding 0), the permutation (binding 5), the uniforms count and
+//          kernel_radius_squared.
+// Outputs: results (binding 1): 10 floats per point.
+// Twin:    reference/noise/simplex.hpp, compared by tests/simplex_test.cpp.
 #include "noise/simplex.glsl"
 
 layout(local_size_x = 64, local_size_y = 1) in;

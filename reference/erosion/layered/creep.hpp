@@ -1,5 +1,7 @@
 // Soil creep on the layered ground (digest 001 §3.11, Roering et al. 1999, eq. 3.4), CPU reference.
 //
+// creep_outflows(ground, params, step) -> Outflows: every column's creep outflow to each neighbour,
+//   from `ground` as it is.
 // creep_step(ground, params, step, conversions): one step, compute-then-apply like talus.
 //   Compute, for every column c from one snapshot, on c's topmost non-empty soil layer (bedrock
 //   does not creep; no soil, no creep), thickness V, organic thickness V_org:
@@ -8,6 +10,16 @@
 //   - Δmaterial = Δt·(V_org/V)·Σ_k q_k·rand_c(0.9, 1)/2 (eq. 3.4; rand off: 1), clamped to V, split
 //     to the neighbours ∝ q_k (the code's split; the thesis says "as talus").
 //   Apply: apply_outflows (transfer.hpp) without touching vegetation (creep does not).
+//
+// Inputs:  ground (LayeredGround<Real>) and params (LayeredParams), both valid (validate_layered_params,
+//          check_layered_ground) and not checked here, as talus_step (talus.hpp); step, the counter of
+//          the random draws.
+// Outputs: the ground after the step. Creep converts nothing; `conversions` is passed for the common
+//          step protocol and stays as it is.
+// Units:   metres; K_z a height rate (m/s) at unit slope, q_k in m/s, Δt in seconds.
+// Throws:  nothing.
+// Twin:    gpu/erosion/layered/creep.hpp (layered_creep) with gpu/shaders/erosion/layered/creep_outflow.comp
+//          and apply.comp.
 // Decisions:
 //   - Units: the thesis writes eq. 3.4 with l = 1 m; K_z is taken as a height rate (m/s) at unit
 //     slope, so q_k is in m/s and Δmaterial in metres.

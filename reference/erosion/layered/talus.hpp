@@ -16,9 +16,23 @@
 //   Apply: apply_outflows (transfer.hpp): remove, carry the layer's composition (bedrock breaks into
 //   fragments by K_rock, counted in `conversions`), deposit with reserve-then-deposit; donor and
 //   receiver lose their vegetation.
+// soil_repose(ground, params, c) -> tan φ_min of column c's soil layers (eq. 3.1 with the depth
+//   factor); +∞ when the soil is empty.
+// talus_outflows(ground, params, step) -> Outflows: every column's talus outflow to each neighbour,
+//   from `ground` as it is.
+//
+// Inputs:  ground and params, which must be valid (validate_layered_params, check_layered_ground:
+//          make_layered_ground's grounds are, and the steps keep them so); they are not checked every
+//          step, so that what a bug does to the state reaches the comparison's layers.* checks.
+//          step: the random draws' counter.
+// Outputs: the ground after the step; `conversions` gains the bedrock fragmentation.
+// Units:   metres, Δt in seconds; conversions in m³.
+// Throws:  nothing.
+// Twin:    gpu/erosion/layered/talus.hpp (layered_talus) with gpu/shaders/erosion/layered/talus_outflow.comp
+//          and apply.comp.
 // Decisions where the thesis is vague: one layer per step (the thesis's simplification); Δh is
-// measured between surface heights; the random factor is 1 when `talus_random` is off; borders as
-// LayeredParams::border. Units: metres, Δt in seconds.
+//   measured between surface heights; the random factor is 1 when `talus_random` is off; borders as
+//   LayeredParams::border.
 #pragma once
 
 #include <cstdint>

@@ -1,14 +1,12 @@
-// Water on seed 001's layered ground, CPU reference: sources and sinks (digest 001 §3.19, §3.3) and
-// the virtual-pipe flow that moves the water and everything it carries (§3.3, §3.7; steps 1 and 4
-// of §4).
+// Water sources, sinks and pipe flow on seed 001's layered ground (digest 001 §3.3, §3.7, §3.19), CPU reference.
 //
-// water_sources(ground, water, params, conversions), per column:
+// water_sources(ground, water, params, conversions), per column (step 1 of §4):
 //   rain: w ← w + Δt·rain_rate (the thesis's "add a constant to every column"; the code's rain is a
 //   one-shot operator, made a rate here so that rain falls through a run). River (the code's river
 //   mode): the source column (W/2, H/16) gets w ← river_depth; every column of a sink row
-//   (y ≥ 15H/16) loses its water and what the water carries. Counted in m³: water_added (rain, and
-//   the river's rise), water_sunk (the sinks, and the river's fall), sunk[i] per component.
-// water_flow(ground, water, params, conversions), two passes:
+//   (y ≥ 15H/16) loses its water and what the water carries.
+// water_flow(ground, water, params), two passes (step 4 of §4), moving the water and everything it
+// carries:
 //   1. outflow, per column from the state as it stands (w, h): for pipe k to neighbour n,
 //      F_k ← max(0, F_k + P_k·((h + w) − (h_n + w_n))) with P_k = Δt·l_x·l_y·g/l_k (steps 1-4 of
 //      §3.3 with A = l_x·l_y, the cell's area, and l_k the distance to the neighbour: l_x or l_y);
@@ -17,16 +15,24 @@
 //   2. move: the donor's fraction through pipe k is f_k = Δt·F_k/(l_x·l_y·w) (0 when w = 0; §3.3
 //      [code]); water and each carried kind q move alike (§3.7): q' = kept + Σ_k q_{n_k}·f_{n_k, k^1},
 //      sums in pipe order, with kept = max(q − Σ_k q·f_k, 0), or 0 when step 6 scaled the column's
-//      outflows (it is drained). Decisions: the max(…, 0) guards the rounding of Σ_k f_k ≤ 1; a
-//      drained column keeps nothing, not the rounding residue of q − Σ_k q·f_k (≈ 2^-24·q), which
-//      would halve its exponent's distance to the subnormals every step it drains and leave dust that
-//      a GPU may flush to zero. Either rounding costs at most a few ulps of q, within the ledger's
-//      bound. previous_water ← w before the move (w^{t−Δt} of
-//      eq. 2.2's w̄).
-// Decision (thesis vs code): every column's flux is updated, also a dry one (the code skips dry
-// columns and keeps their flux); with w = 0 step 6 scales it to 0, so dry columns send nothing in
-// both. Regolith moves with the water like the sediment (thesis and code agree).
-// Units: m, m/s, m³/s; conversions in m³.
+//      outflows (it is drained). previous_water ← w before the move (w^{t−Δt} of eq. 2.2's w̄).
+//
+// Inputs:  ground (its surface h, read only), water (LayeredWater<Real>: w, fluxes, carried kinds),
+//          params (rain_rate, the river, Δt, g, cell sizes).
+// Outputs: water changed in place; water_sources counts in `conversions` (m³): water_added (rain, and
+//          the river's rise), water_sunk (the sinks, and the river's fall), sunk[i] per component.
+// Units:   m, m/s, m³/s; conversions in m³.
+// Throws:  nothing.
+// Twin:    gpu/erosion/layered/water.hpp (LayeredWaterFlow) with gpu/shaders/erosion/layered/water_sources.comp,
+//          water_flux.comp and water_move.comp.
+// Decisions:
+//   - The max(…, 0) of the move guards the rounding of Σ_k f_k ≤ 1; a drained column keeps nothing,
+//     not the rounding residue of q − Σ_k q·f_k (≈ 2^-24·q), which would halve its exponent's
+//     distance to the subnormals every step it drains and leave dust that a GPU may flush to zero.
+//     Either rounding costs at most a few ulps of q, within the ledger's bound.
+//   - Thesis vs code: every column's flux is updated, also a dry one (the code skips dry columns and
+//     keeps their flux); with w = 0 step 6 scales it to 0, so dry columns send nothing in both.
+//     Regolith moves with the water like the sediment (thesis and code agree).
 #pragma once
 
 #include "core/layered/layered_ground.hpp"

@@ -11,6 +11,11 @@
 // Column c writes only its own entries of the current half, so no two invocations touch the same
 // word. Per column it writes its conversions (fragments received, bedrock given) for the host to
 // sum in double. Units: metres.
+// Inputs:  LayeredBlock (uniform binding 0), the snapshot half of soil (2) and bedrock (3),
+//          bedrock_type (4), bedrock_types (6), outflow (7) (layered.glsl).
+// Outputs: column c's current half of surface (1), soil (2) and bedrock (3); vegetation (5) with
+//          LAYERED_CLEAR_VEGETATION; conversions (8), one record per column.
+// Twin:    reference/erosion/layered/transfer.cpp (apply_outflows).
 #include "erosion/layered/column.glsl"
 
 struct ColumnConversion {

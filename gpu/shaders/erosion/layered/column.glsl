@@ -4,6 +4,10 @@
 // erosion's erode_component (eq. 3.10 with the transparency rule), soil_transparency and
 // erode_bedrock. Each works on column c's current half and keeps the surface in step. Guarded:
 // several passes include it. Units: metres.
+// Inputs:  column c of the layered.glsl state (LayeredBlock, surface, soil, bedrock, bedrock_type,
+//          bedrock_types), current half.
+// Outputs: the column operations, which change that column in place.
+// Twin:    reference/erosion/layered/column.cpp (column.hpp).
 #ifndef GT_EROSION_LAYERED_COLUMN_GLSL
 #define GT_EROSION_LAYERED_COLUMN_GLSL
 

@@ -4,6 +4,10 @@
 // reference/erosion/layered/creep.cpp (column_outflow; decisions there: K_z a height rate at unit
 // slope, the singular law's limit moves the whole layer ∝ slope), operation for operation in float.
 // Units: metres, K_z in m/s, Δt in seconds.
+// Inputs:  LayeredBlock (uniform binding 0), surface (1), soil (2) and the rest of the current
+//          state (layered.glsl).
+// Outputs: outflow (7): 8 per column, to neighbour k, m.
+// Twin:    reference/erosion/layered/creep.cpp (column_outflow).
 #include "erosion/layered/layered.glsl"
 
 // Roering's q_k = K_z·s_k/D_k towards each lower neighbour; where D_k ≤ 0 (the singular law at

@@ -4,6 +4,10 @@
 // toward r_max = min(w, K_r), half from organic matter and half from sand (erode_component), or
 // K_rd of its excess settles with its composition. One invocation per column, in place (the host
 // skips the pass when K_r = 0). Units: metres.
+// Inputs:  the ground state of layered.glsl (LayeredBlock 0, surface 1, soil 2, bedrock 3), the
+//          LayeredWaterBlock (uniform binding 1) and the water state (10) of water.glsl.
+// Outputs: the column's soil and surface, and its regolith in the water state (10), in place.
+// Twin:    reference/erosion/layered/dissolution.cpp.
 #include "erosion/layered/column.glsl"
 #include "erosion/layered/water.glsl"
 

@@ -3,6 +3,9 @@
 // change of a repose threshold can switch a whole flux on or off, so the shaders divide with gt_div
 // and repeat the CPU's IEEE float division bit for bit. Checked against the CPU by
 // tests/layered_gpu_test.cpp through division_probe.comp. Guarded: several files include it.
+// Inputs:  a, b (float).
+// Outputs: gt_div(a, b), the IEEE float quotient rounded to nearest even.
+// Twin:    the CPU's float division a / b (as the layered references divide).
 #ifndef GT_EROSION_LAYERED_DIVISION_GLSL
 #define GT_EROSION_LAYERED_DIVISION_GLSL
 

@@ -7,6 +7,12 @@
 // Per column it writes 24 floats of `erosion_record` for the host to count in double: [4j + i] the
 // size j broken into size i (i < j), [16 + i] bedrock eroded into size i, [20 + i] its bedrock type.
 // Units: m, m/s, m³/s.
+// Inputs:  the ground state of layered.glsl (LayeredBlock 0, soil 2, bedrock 3, bedrock_type 4,
+//          vegetation 5, bedrock_types 6), LayeredWaterBlock (uniform binding 1) and the water state
+//          (10: depths, fluxes, carried sediment, SURFACE_BEFORE) of water.glsl.
+// Outputs: the column's layers and surface, its carried sediment in the water state (10), and
+//          erosion_record (11): 24 floats per column.
+// Twin:    reference/erosion/layered/force_erosion.cpp.
 #include "erosion/layered/column.glsl"
 #include "erosion/layered/water.glsl"
 

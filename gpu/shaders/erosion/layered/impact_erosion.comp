@@ -11,6 +11,12 @@
 //     bedrock eroded into size i, [40] that bedrock's type (−1 none);
 //   with IMPACT_GATHER: column n adds its neighbours' loads toward it to its suspended sediment.
 // Units: m, m/s, m³/s.
+// Inputs:  the ground state of layered.glsl (LayeredBlock 0, surface 1, soil 2, bedrock 3,
+//          bedrock_types 6), LayeredWaterBlock (uniform binding 1) and the water state (10: depths,
+//          fluxes, SURFACE_BEFORE) of water.glsl; with IMPACT_GATHER, impact_record (11).
+// Outputs: pass 1: the column's layers and surface, impact_record (11): 48 floats per column;
+//          IMPACT_GATHER: the suspended sediment in the water state (10).
+// Twin:    reference/erosion/layered/impact_erosion.cpp.
 #include "erosion/layered/column.glsl"
 #include "erosion/layered/water.glsl"
 

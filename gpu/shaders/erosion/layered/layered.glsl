@@ -13,6 +13,12 @@
 // Arithmetic: every float `precise` (no fused multiply-add) in the reference<float>'s order;
 // divisions through gt_div, rounded to nearest like the CPU's, so the twins agree bit for bit.
 // Units: metres.
+// Inputs:  declares LayeredBlock (uniform binding 0) and the state buffers surface (1), soil (2),
+//          bedrock (3), bedrock_type (4, read only), vegetation (5), bedrock_types (6, read only),
+//          outflow (7); local size 16 x 16.
+// Outputs: the helpers above (soil_at, bedrock_at, neighbours, the random factor, thicknesses, the
+//          topmost non-empty layer, the availability clamp) for the passes that include it.
+// Twin:    core/layered/layered_ground.hpp, reference/erosion/layered/column.cpp and transfer.cpp.
 #ifndef GT_EROSION_LAYERED_GLSL
 #define GT_EROSION_LAYERED_GLSL
 

@@ -4,6 +4,9 @@
 // CPU's std::sqrt(float) bit for bit takes gt_sqrt, as it divides with gt_div (division.glsl).
 // Checked against the CPU by tests/layered_gpu_test.cpp through square_root_probe.comp. Guarded:
 // several files may include it.
+// Inputs:  x (float).
+// Outputs: gt_sqrt(x), the float square root rounded to nearest even.
+// Twin:    the CPU's std::sqrt(float).
 #ifndef GT_EROSION_LAYERED_SQUARE_ROOT_GLSL
 #define GT_EROSION_LAYERED_SQUARE_ROOT_GLSL
 

@@ -3,6 +3,10 @@
 // each column's outflow to its 8 neighbours, from the current state. GPU twin of
 // reference/erosion/layered/talus.cpp (column_outflow; decisions there), operation for operation in
 // float. Units: metres, Δt in seconds.
+// Inputs:  LayeredBlock (uniform binding 0), surface (1), soil (2), bedrock (3), vegetation (5),
+//          bedrock_types (6) (layered.glsl), current half.
+// Outputs: outflow (7): 8 per column, to neighbour k, m.
+// Twin:    reference/erosion/layered/talus.cpp (column_outflow).
 #include "erosion/layered/layered.glsl"
 
 // (Σ_i tan φ_i·V_i)/V of soil layer `layer` (eq. 3.1 without the vegetation factor).

@@ -8,6 +8,11 @@
 // With LAYERED_FLOOD (the ground has water), a column wetter than flood_wetness gets 0 (the flood
 // death, reference vegetation_step's `water`).
 // Units: K_veg in 1/s, Δt in s, depths in m.
+// Inputs:  LayeredBlock (uniform binding 0), soil (2), vegetation (5) (layered.glsl); with
+//          LAYERED_FLOOD the wetness in the water state (10) of water.glsl; VEGETATION_STORE:
+//          outflow (7).
+// Outputs: grow: outflow[8·c] (7) the new density; VEGETATION_STORE: vegetation (5).
+// Twin:    reference/erosion/layered/vegetation.cpp.
 #include "erosion/layered/layered.glsl"
 #include "erosion/layered/water.glsl"
 

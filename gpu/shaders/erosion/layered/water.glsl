@@ -10,6 +10,10 @@
 //   move pass reads (copied by the host).
 // Arithmetic as layered.glsl: every float `precise`, divisions through gt_div and roots through
 // gt_sqrt, in the reference<float>'s order, so the twins agree bit for bit. Units: metres, m/s, m³/s.
+// Inputs:  declares LayeredWaterBlock (uniform binding 1) and the water state water_state (10).
+// Outputs: the section indexing of the water state for the water passes.
+// Twin:    core/layered/layered_water.hpp; reference/erosion/layered/water.cpp, force_erosion.cpp,
+//          dissolution.cpp, wetness.cpp.
 #ifndef GT_EROSION_LAYERED_WATER_GLSL
 #define GT_EROSION_LAYERED_WATER_GLSL
 

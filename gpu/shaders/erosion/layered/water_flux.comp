@@ -4,6 +4,10 @@
 // neighbour (0 to none), then scaled by l_x·l_y·w/ΔV when ΔV = Δt·ΣF exceeds what the column holds (DRAINED records it).
 // One invocation per column; it reads its own old flux and its neighbours' w and h (which no
 // invocation writes here) and writes its own flux, so the pass runs in place. Units: m, m³/s.
+// Inputs:  LayeredBlock (uniform binding 0) and surface (1) of layered.glsl; LayeredWaterBlock
+//          (uniform binding 1) and the water state (10: w, fluxes) of water.glsl.
+// Outputs: the fluxes and DRAINED in the water state (10).
+// Twin:    reference/erosion/layered/water.cpp (outflows).
 #include "erosion/layered/water.glsl"
 
 void main() {

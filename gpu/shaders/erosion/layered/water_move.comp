@@ -5,6 +5,10 @@
 // kept + Σ_k q_{n_k}·f_{n_k, k^1} with kept = max(q − Σ_k q·f_k, 0), or 0 for a drained column,
 // reading the snapshot half (copied by the host after pass 1); PREVIOUS ← w before the move. One invocation per column, writing only its own words.
 // Units: m.
+// Inputs:  LayeredWaterBlock (uniform binding 1) and the water state (10), its snapshot half
+//          (water.glsl).
+// Outputs: water, carried kinds and PREVIOUS in the current half of the water state (10).
+// Twin:    reference/erosion/layered/water.cpp (fractions, moved).
 #include "erosion/layered/water.glsl"
 
 void fractions(uint c, out float fraction[4]) {

@@ -5,6 +5,10 @@
 // per column, in place. Per column it writes 8 floats of `source_record` for the host to count in
 // double: the water before the river touched it (the source's and the sinks'), then the 7 carried
 // kinds a sink took. Units: metres.
+// Inputs:  LayeredBlock (uniform binding 0), LayeredWaterBlock (uniform binding 1) and the water state
+//          (10) (water.glsl).
+// Outputs: the water state (10) in place; source_record (11): 8 floats per column.
+// Twin:    reference/erosion/layered/water.cpp (water_sources).
 #include "erosion/layered/water.glsl"
 
 layout(std430, binding = 11) writeonly buffer SourceRecords { float source_record[]; };

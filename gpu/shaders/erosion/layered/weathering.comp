@@ -7,6 +7,10 @@
 //   [0..3] topsoil a_0..a_3, [4..7] subsoil a_0..a_3 (sand → org, ..., boulders → stones), m;
 //   [8] bedrock turned into soil, m; [9] its type (as a float); [10..14] the parts of org .. boulders, m.
 // Units: metres, Δt in seconds, K_conv and K_t in m/s.
+// Inputs:  LayeredBlock (uniform binding 0), soil (2), bedrock (3), bedrock_type (4), vegetation (5),
+//          bedrock_types (6) (layered.glsl).
+// Outputs: soil (2) and bedrock (3) in place; weathering_record (9): 16 floats per column.
+// Twin:    reference/erosion/layered/weathering.cpp.
 #include "erosion/layered/layered.glsl"
 
 layout(std430, binding = 9) writeonly buffer WeatheringRecords { float weathering_record[]; };

@@ -3,6 +3,10 @@
 // reference/erosion/layered/wetness.cpp: wet + Δt·w under water, wet·K_dry^Δt when dry (the factor
 // from the host, rounded once from double as the reference's). One invocation per column, in place.
 // Units: m·s.
+// Inputs:  LayeredBlock (uniform binding 0: Δt), LayeredWaterBlock (uniform binding 1: K_dry^Δt) and
+//          the water state (10: w, wetness) (water.glsl).
+// Outputs: WETNESS in the water state (10), in place.
+// Twin:    reference/erosion/layered/wetness.cpp.
 #include "erosion/layered/water.glsl"
 
 void main() {
