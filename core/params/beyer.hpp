@@ -25,7 +25,7 @@
 #include <cstdint>
 
 #include "core/grid.hpp"
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 #include "core/params/droplets.hpp"
 
 namespace gt {
@@ -63,7 +63,17 @@ struct BeyerConstants {
 // `disjoint`.
 int beyer_reach(const BeyerConstants& constants);
 
+// The parameters of an erosion.beyer case: the kernel's constants, batch ordering by default (the
+// kernel's own default is race), and whether the case normalises the heights.
+struct BeyerParams {
+  BeyerConstants kernel{.ordering = DropletOrdering::batch};
+  bool normalised = true;
+};
+
+// The declarations (core/param_table.hpp), their ParamSpecs, and the struct from resolve_params' output.
+const ParamTable<BeyerParams>& beyer_param_table();
 const ParamSpecs& beyer_param_specs();
+BeyerParams beyer_params_from_json(const nlohmann::json& resolved);
 
 // Constants from resolved parameters for `heights` (already normalised when the case asks for it;
 // the quantum is taken from them). Throws InputError when `disjoint` is asked with a spacing that

@@ -1,4 +1,4 @@
-// Cave block parameters (declarations, ranges, JSON) and lattice edge keys; see cave.hpp.
+// Cave block parameters (table, ranges, JSON) and lattice edge keys; see cave.hpp.
 //
 // Ranges: origin within ±500,000 and size up to 512 cells keep every lower edge endpoint, padding
 // included (origin - 1 .. origin + size), inside the keys' ±2^19; 512³ cells is also about the
@@ -33,37 +33,42 @@ bool key_holds(std::int64_t coordinate) {
 
 }  // namespace
 
-const ParamSpecs& cave_param_specs() {
-  static const ParamSpecs specs = [] {
-    ParamSpecs declared = {
-        {"scale", ParamKind::real, 10.0, 1e-3, 1e6, {}, "world unit",
-         "world units per noise unit (the seed's SCALE_FACTOR): density = simplex3(p / scale)"},
-        {"threshold", ParamKind::real, 0.0, -1.0, 1.0, {}, "1", "rock where the density is below it (TRESHOLD)"},
-        {"kernel", ParamKind::real, 0.6, 0.5, 0.6, {}, "noise unit²",
-         "simplex kernel radius²: 0.6 as seed 004 (slightly discontinuous), 0.5 corrected"},
-        {"seed", ParamKind::integer, 0, 0, 4294967295.0, {}, "1",
-         "permutation: 0 = Perlin's reference table (the seed's), otherwise a shuffle by the counter RNG"},
-        {"solid", ParamKind::boolean, true, 0, 0, {}, "",
-         "pad the block with air so the rock is capped at its faces and the mesh is closed; false: open chunk"},
+const ParamTable<CaveParams>& cave_param_table() {
+  using P = CaveParams;
+  static const ParamTable<P> table = [] {
+    ParamTable<P> rows = {
+        real_param("scale", &P::scale, 1e-3, 1e6, "world unit",
+                   "world units per noise unit (the seed's SCALE_FACTOR): density = simplex3(p / scale)"),
+        real_param("threshold", &P::threshold, -1.0, 1.0, "1", "rock where the density is below it (TRESHOLD)"),
+        real_param("kernel", &P::kernel_radius_squared, 0.5, 0.6, "noise unit²",
+                   "simplex kernel radius²: 0.6 as seed 004 (slightly discontinuous), 0.5 corrected"),
+        integer_param("seed", &P::seed, 0, 4294967295.0, "1",
+                      "permutation: 0 = Perlin's reference table (the seed's), otherwise a shuffle by the counter RNG"),
+        boolean_param("solid", &P::solid,
+                      "pad the block with air so the rock is capped at its faces and the mesh is closed; false: open "
+                      "chunk"),
     };
-    for (const char* name : origin_names) {
-      declared.push_back({name, ParamKind::integer, 0, -500000, 500000, {}, "lattice unit",
-                          "lattice coordinate of the block's first sample (1 lattice unit = 1 world unit)"});
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      rows.push_back(integer_param(origin_names[axis], element(&P::origin, axis), -500000, 500000, "lattice unit",
+                                   "lattice coordinate of the block's first sample (1 lattice unit = 1 world unit)"));
     }
-    for (const char* name : size_names) {
-      declared.push_back({name, ParamKind::integer, 30, 1, 512, {}, "count",
-                          "cells along the axis (the seed's BIG_CUBE_SIZE; samples = cells + 1)"});
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      rows.push_back(integer_param(size_names[axis], element(&P::size, axis), 1, 512, "count",
+                                   "cells along the axis (the seed's BIG_CUBE_SIZE; samples = cells + 1)"));
     }
-    return declared;
+    return rows;
   }();
+  return table;
+}
+
+const ParamSpecs& cave_param_specs() {
+  static const ParamSpecs specs = param_specs(cave_param_table());
   return specs;
 }
 
-namespace {
-
 // The density samples simplex3 at p / scale: every sample of the block, its pad and up to 2000
 // slabs of an endless path beyond it must stay within the noise's largest lattice coordinate.
-void check_noise_coordinates(const CaveParams& params) {
+void require_noise_range(const CaveParams& params) {
   constexpr double largest_path = 2002.0;  // slabs (at most 2000) and the pad
   double largest = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
@@ -78,20 +83,9 @@ void check_noise_coordinates(const CaveParams& params) {
   }
 }
 
-}  // namespace
-
 CaveParams cave_params_from_json(const nlohmann::json& resolved) {
-  CaveParams params;
-  params.scale = resolved.at("scale").get<double>();
-  params.threshold = resolved.at("threshold").get<double>();
-  params.kernel_radius_squared = resolved.at("kernel").get<double>();
-  params.seed = resolved.at("seed").get<std::uint32_t>();
-  params.solid = resolved.at("solid").get<bool>();
-  for (int axis = 0; axis < 3; ++axis) {
-    params.origin[axis] = resolved.at(origin_names[axis]).get<int>();
-    params.size[axis] = resolved.at(size_names[axis]).get<int>();
-  }
-  check_noise_coordinates(params);
+  const CaveParams params = params_from_json(cave_param_table(), resolved);
+  require_noise_range(params);
   return params;
 }
 

@@ -21,7 +21,7 @@
 #include <array>
 #include <cstdint>
 
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 
 namespace gt {
 
@@ -35,8 +35,16 @@ struct CaveParams {
   bool solid = true;                    // pad with air: rock capped at the block's faces, mesh closed
 };
 
+// The declarations (core/param_table.hpp), their ParamSpecs, and the struct from resolve_params'
+// output, checked by require_noise_range.
+const ParamTable<CaveParams>& cave_param_table();
 const ParamSpecs& cave_param_specs();
 CaveParams cave_params_from_json(const nlohmann::json& resolved);
+
+// Throws InputError when the density would sample simplex noise beyond largest_lattice_coordinate
+// (the twins' lattice indices overflow 32 bits) anywhere in the block, its pad or up to 2000 slabs
+// of an endless path beyond it.
+void require_noise_range(const CaveParams& params);
 
 // Lattice coordinates an edge key can hold: lattice_coordinate_min <= c <= lattice_coordinate_max.
 inline constexpr std::int64_t lattice_coordinate_min = -(std::int64_t{1} << 19);

@@ -1,28 +1,13 @@
+// Names of the droplet orderings and the batch quantum (see droplets.hpp).
 #include "core/params/droplets.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include <fmt/format.h>
-
-#include "core/errors.hpp"
-
 namespace gt {
 
 const char* droplet_ordering_name(DropletOrdering ordering) {
-  switch (ordering) {
-    case DropletOrdering::race: return "race";
-    case DropletOrdering::disjoint: return "disjoint";
-    case DropletOrdering::batch: return "batch";
-  }
-  return "?";
-}
-
-DropletOrdering droplet_ordering_from_name(const std::string& name) {
-  for (auto candidate : {DropletOrdering::race, DropletOrdering::disjoint, DropletOrdering::batch}) {
-    if (name == droplet_ordering_name(candidate)) return candidate;
-  }
-  throw InputError(fmt::format("unknown droplet ordering '{}'; known: race, disjoint, batch", name));
+  return choice_name(droplet_ordering_choices, ordering);
 }
 
 DropletOrdering reference_ordering(DropletOrdering ordering) {

@@ -15,17 +15,18 @@
 //             bit at any spacing. The droplet carries its sediment as an integer count of quanta.
 #pragma once
 
-#include <string>
+#include "core/param_table.hpp"
 
 namespace gt {
 
 enum class DropletOrdering { race, disjoint, batch };
 
-// "race", "disjoint", "batch": the names of an `ordering` parameter.
-const char* droplet_ordering_name(DropletOrdering ordering);
+// The names of an `ordering` parameter.
+inline constexpr Choice<DropletOrdering> droplet_ordering_choices[] = {
+    {"race", DropletOrdering::race}, {"disjoint", DropletOrdering::disjoint}, {"batch", DropletOrdering::batch}};
 
-// The ordering named `name` (one of droplet_ordering_name's).
-DropletOrdering droplet_ordering_from_name(const std::string& name);
+// "race", "disjoint" or "batch".
+const char* droplet_ordering_name(DropletOrdering ordering);
 
 // The ordering the CPU references run for a GPU `ordering`: batch as batch, race and disjoint as the
 // sequential truth (their `race` ordering, droplets one after the other).

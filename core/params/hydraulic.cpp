@@ -17,43 +17,21 @@ void require(bool condition, const std::string& what) {
   if (!condition) throw InputError(fmt::format("{}: {}", algorithm_name, what));
 }
 
-void require_non_negative(double value, const char* name) {
-  require(std::isfinite(value) && value >= 0.0, fmt::format("{} = {} must be finite and >= 0", name, value));
-}
+constexpr Choice<SedimentTransport> transport_choices[] = {{"semi_lagrangian", SedimentTransport::semi_lagrangian},
+                                                           {"flux", SedimentTransport::flux}};
+constexpr Choice<PipeBoundary> boundary_choices[] = {{"closed", PipeBoundary::closed}, {"open", PipeBoundary::open}};
+constexpr Choice<DiffusionWeighting> weighting_choices[] = {{"uniform", DiffusionWeighting::uniform},
+                                                            {"water", DiffusionWeighting::water}};
+constexpr Choice<TiltDifferences> tilt_choices[] = {{"central", TiltDifferences::central},
+                                                    {"seed001_code", TiltDifferences::seed001_code}};
+constexpr Choice<int> pipe_count_choices[] = {{"4", 4}, {"8", 8}};
 
 }  // namespace
 
-const char* sediment_transport_name(SedimentTransport transport) {
-  switch (transport) {
-    case SedimentTransport::semi_lagrangian: return "semi_lagrangian";
-    case SedimentTransport::flux: return "flux";
-  }
-  return "?";
-}
-
-const char* pipe_boundary_name(PipeBoundary boundary) {
-  switch (boundary) {
-    case PipeBoundary::closed: return "closed";
-    case PipeBoundary::open: return "open";
-  }
-  return "?";
-}
-
-const char* diffusion_weighting_name(DiffusionWeighting weighting) {
-  switch (weighting) {
-    case DiffusionWeighting::uniform: return "uniform";
-    case DiffusionWeighting::water: return "water";
-  }
-  return "?";
-}
-
-const char* tilt_differences_name(TiltDifferences differences) {
-  switch (differences) {
-    case TiltDifferences::central: return "central";
-    case TiltDifferences::seed001_code: return "seed001_code";
-  }
-  return "?";
-}
+const char* sediment_transport_name(SedimentTransport transport) { return choice_name(transport_choices, transport); }
+const char* pipe_boundary_name(PipeBoundary boundary) { return choice_name(boundary_choices, boundary); }
+const char* diffusion_weighting_name(DiffusionWeighting weighting) { return choice_name(weighting_choices, weighting); }
+const char* tilt_differences_name(TiltDifferences differences) { return choice_name(tilt_choices, differences); }
 
 double tilt_span(TiltDifferences differences, int sides, double length) {
   return differences == TiltDifferences::central ? sides * length : 1.0;
@@ -64,121 +42,66 @@ const char* pipe_name(int pipe) {
   return names.at(static_cast<std::size_t>(pipe));
 }
 
-const ParamSpecs& hydraulic_param_specs() {
-  static const ParamSpecs specs = {
-      {"steps", ParamKind::integer, 200, 0, 1000000, {}, "count", "time steps of Δt"},
-      {"time_step", ParamKind::real, 0.05, 1e-6, 3600.0, {}, "s", "Δt"},
-      {"gravity", ParamKind::real, 9.81, 0.0, 100.0, {}, "m/s²", "g of the pipe acceleration g·Δh/l"},
-      {"pipe_area", ParamKind::real, 0.0, 0.0, 1e8, {}, "m²", "pipe cross-section A; 0 = cell area l_x·l_y"},
-      {"rain_rate", ParamKind::real, 0.0, 0.0, 1.0, {}, "m/s", "uniform rain added as Δt·rate per step"},
-      {"evaporation_rate", ParamKind::real, 0.0, 0.0, 1e3, {}, "1/s", "K_e: d ← d·(1 − K_e·Δt); K_e·Δt ≤ 1"},
-      {"capacity", ParamKind::real, 0.1, 0.0, 1e3, {}, "s", "K_c of the capacity C = K_c·sin α·|v|·l(d)"},
-      {"min_tilt_sine", ParamKind::real, 0.05, 0.0, 1.0, {}, "1", "lower bound of sin α (flat ground still erodes)"},
-      {"tilt_differences", ParamKind::choice, "central", 0, 0, {"central", "seed001_code"}, "",
-       "seed 001 §3.5: sin α from central differences over 2l, or its code's raw |b(x−1) − b(x+1)| (as if l = 1, "
-       "not halved)"},
-      {"depth_ramp", ParamKind::real, 0.0, 0.0, 1e3, {}, "m",
-       "K_w of the depth ramp l(d) = min(1, d/K_w) (Jákó 2011, seed 001); 0 = no ramp"},
-      {"dissolving_rate", ParamKind::real, 0.5, 0.0, 1e3, {}, "1/s",
-       "K_s: a step closes min(1, K_s·Δt) of the gap C − s by erosion"},
-      {"deposition_rate", ParamKind::real, 0.5, 0.0, 1e3, {}, "1/s",
-       "K_d: a step closes min(1, K_d·Δt) of the gap s − C by deposition"},
-      {"velocity_depth_floor", ParamKind::real, 1e-3, 1e-9, 10.0, {}, "m",
-       "lower bound of the mean depth d̄ that divides the flux into a velocity"},
-      {"pipes", ParamKind::choice, "4", 0, 0, {"4", "8"}, "count",
-       "virtual pipes per cell: 4 (L, R, T, B; Mei) or 8 (and the diagonals, length sqrt(l_x² + l_y²))"},
-      {"transport", ParamKind::choice, "flux", 0, 0, {"semi_lagrangian", "flux"}, "",
-       "sediment transport: Mei's semi-Lagrangian backtrace (not conservative) or with the pipe outflows"},
-      {"boundary", ParamKind::choice, "closed", 0, 0, {"closed", "open"}, "",
-       "grid border and no-data cells: closed walls or open (water and sediment leave and are counted)"},
-      {"sediment_diffusion", ParamKind::real, 0.0, 0.0, 0.25, {}, "1",
-       "seed 001 §3.8: share w of the sediment (and regolith) sent to each neighbour per step; 0 = off"},
-      {"diffusion_weighting", ParamKind::choice, "uniform", 0, 0, {"uniform", "water"}, "",
-       "seed 001 §3.8: the thesis's uniform w, or its code's weights by water depth (w only switches it on)"},
-      {"regolith_depth", ParamKind::real, 0.0, 0.0, 10.0, {}, "m",
-       "seed 001 §3.9: K_r, the largest regolith thickness r_max = min(d, K_r); 0 = no regolith layer"},
-      {"regolith_dissolving_rate", ParamKind::real, 20.0, 0.0, 1e6, {}, "1/s",
-       "K_re: a step closes min(1, K_re·Δt) of the gap r_max − r"},
-      {"regolith_deposition_rate", ParamKind::real, 20.0, 0.0, 1e6, {}, "1/s",
-       "K_rd: a step closes min(1, K_rd·Δt) of the gap r − r_max"},
-      {"regolith_diffusion", ParamKind::boolean, true, 0, 0, {}, "",
-       "seed 001 §3.9: the regolith is diffused like the sediment (the thesis); false = its code (not diffused)"},
-      {"thermal_step", ParamKind::boolean, false, 0, 0, {}, "",
-       "Jákó & Tóth 2011's combined step: one iteration of their thermal erosion after each pipe step"},
-      {"thermal_talus_angle", ParamKind::real, 30.0, 0.0, 89.0, {}, "degree", "talus angle of the thermal step"},
-      {"thermal_rate", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "Jákó's rate Δt·C_t·R of the thermal step"},
+const ParamTable<HydraulicParams>& hydraulic_param_table() {
+  using P = HydraulicParams;
+  static const ParamTable<P> table = {
+      integer_param("steps", &P::steps, 0, 1000000, "count", "time steps of Δt"),
+      real_param("time_step", &P::time_step, 1e-6, 3600.0, "s", "Δt"),
+      real_param("gravity", &P::gravity, 0.0, 100.0, "m/s²", "g of the pipe acceleration g·Δh/l"),
+      real_param("pipe_area", &P::pipe_area, 0.0, 1e8, "m²", "pipe cross-section A; 0 = cell area l_x·l_y"),
+      real_param("rain_rate", &P::rain_rate, 0.0, 1.0, "m/s", "uniform rain added as Δt·rate per step"),
+      real_param("evaporation_rate", &P::evaporation_rate, 0.0, 1e3, "1/s", "K_e: d ← d·(1 − K_e·Δt); K_e·Δt ≤ 1"),
+      real_param("capacity", &P::capacity, 0.0, 1e3, "s", "K_c of the capacity C = K_c·sin α·|v|·l(d)"),
+      real_param("min_tilt_sine", &P::min_tilt_sine, 0.0, 1.0, "1", "lower bound of sin α (flat ground still erodes)"),
+      choice_param("tilt_differences", &P::tilt_differences, tilt_choices, "",
+                   "seed 001 §3.5: sin α from central differences over 2l, or its code's raw |b(x−1) − b(x+1)| (as if "
+                   "l = 1, not halved)"),
+      real_param("depth_ramp", &P::depth_ramp, 0.0, 1e3, "m",
+                 "K_w of the depth ramp l(d) = min(1, d/K_w) (Jákó 2011, seed 001); 0 = no ramp"),
+      real_param("dissolving_rate", &P::dissolving_rate, 0.0, 1e3, "1/s",
+                 "K_s: a step closes min(1, K_s·Δt) of the gap C − s by erosion"),
+      real_param("deposition_rate", &P::deposition_rate, 0.0, 1e3, "1/s",
+                 "K_d: a step closes min(1, K_d·Δt) of the gap s − C by deposition"),
+      real_param("velocity_depth_floor", &P::velocity_depth_floor, 1e-9, 10.0, "m",
+                 "lower bound of the mean depth d̄ that divides the flux into a velocity"),
+      choice_param("pipes", &P::pipe_count, pipe_count_choices, "count",
+                   "virtual pipes per cell: 4 (L, R, T, B; Mei) or 8 (and the diagonals, length sqrt(l_x² + l_y²))"),
+      choice_param("transport", &P::transport, transport_choices, "",
+                   "sediment transport: Mei's semi-Lagrangian backtrace (not conservative) or with the pipe outflows"),
+      choice_param("boundary", &P::boundary, boundary_choices, "",
+                   "grid border and no-data cells: closed walls or open (water and sediment leave and are counted)"),
+      real_param("sediment_diffusion", &P::sediment_diffusion, 0.0, 0.25, "1",
+                 "seed 001 §3.8: share w of the sediment (and regolith) sent to each neighbour per step; 0 = off"),
+      choice_param("diffusion_weighting", &P::diffusion_weighting, weighting_choices, "",
+                   "seed 001 §3.8: the thesis's uniform w, or its code's weights by water depth (w only switches it on)"),
+      real_param("regolith_depth", &P::regolith_depth, 0.0, 10.0, "m",
+                 "seed 001 §3.9: K_r, the largest regolith thickness r_max = min(d, K_r); 0 = no regolith layer"),
+      real_param("regolith_dissolving_rate", &P::regolith_dissolving_rate, 0.0, 1e6, "1/s",
+                 "K_re: a step closes min(1, K_re·Δt) of the gap r_max − r"),
+      real_param("regolith_deposition_rate", &P::regolith_deposition_rate, 0.0, 1e6, "1/s",
+                 "K_rd: a step closes min(1, K_rd·Δt) of the gap r − r_max"),
+      boolean_param("regolith_diffusion", &P::regolith_diffusion,
+                    "seed 001 §3.9: the regolith is diffused like the sediment (the thesis); false = its code (not "
+                    "diffused)"),
+      boolean_param("thermal_step", &P::thermal_step,
+                    "Jákó & Tóth 2011's combined step: one iteration of their thermal erosion after each pipe step"),
+      real_param("thermal_talus_angle", &P::thermal_talus_angle, 0.0, 89.0, "degree", "talus angle of the thermal step"),
+      real_param("thermal_rate", &P::thermal_rate, 0.0, 1.0, "1", "Jákó's rate Δt·C_t·R of the thermal step"),
   };
+  return table;
+}
+
+const ParamSpecs& hydraulic_param_specs() {
+  static const ParamSpecs specs = param_specs(hydraulic_param_table());
   return specs;
 }
 
 HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved) {
-  HydraulicParams params;
-  params.steps = resolved.at("steps").get<int>();
-  params.time_step = resolved.at("time_step").get<double>();
-  params.gravity = resolved.at("gravity").get<double>();
-  params.pipe_area = resolved.at("pipe_area").get<double>();
-  params.rain_rate = resolved.at("rain_rate").get<double>();
-  params.evaporation_rate = resolved.at("evaporation_rate").get<double>();
-  params.capacity = resolved.at("capacity").get<double>();
-  params.min_tilt_sine = resolved.at("min_tilt_sine").get<double>();
-  params.tilt_differences = resolved.at("tilt_differences").get<std::string>() ==
-                                    tilt_differences_name(TiltDifferences::seed001_code)
-                                ? TiltDifferences::seed001_code
-                                : TiltDifferences::central;
-  params.depth_ramp = resolved.at("depth_ramp").get<double>();
-  params.dissolving_rate = resolved.at("dissolving_rate").get<double>();
-  params.deposition_rate = resolved.at("deposition_rate").get<double>();
-  params.velocity_depth_floor = resolved.at("velocity_depth_floor").get<double>();
-  params.pipe_count = resolved.at("pipes").get<std::string>() == "8" ? 8 : 4;
-  const auto transport = resolved.at("transport").get<std::string>();
-  params.transport =
-      transport == sediment_transport_name(SedimentTransport::flux) ? SedimentTransport::flux
-                                                                    : SedimentTransport::semi_lagrangian;
-  const auto boundary = resolved.at("boundary").get<std::string>();
-  params.boundary = boundary == pipe_boundary_name(PipeBoundary::open) ? PipeBoundary::open : PipeBoundary::closed;
-  params.sediment_diffusion = resolved.at("sediment_diffusion").get<double>();
-  params.diffusion_weighting = resolved.at("diffusion_weighting").get<std::string>() ==
-                                       diffusion_weighting_name(DiffusionWeighting::water)
-                                   ? DiffusionWeighting::water
-                                   : DiffusionWeighting::uniform;
-  params.regolith_depth = resolved.at("regolith_depth").get<double>();
-  params.regolith_dissolving_rate = resolved.at("regolith_dissolving_rate").get<double>();
-  params.regolith_deposition_rate = resolved.at("regolith_deposition_rate").get<double>();
-  params.regolith_diffusion = resolved.at("regolith_diffusion").get<bool>();
-  params.thermal_step = resolved.at("thermal_step").get<bool>();
-  params.thermal_talus_angle = resolved.at("thermal_talus_angle").get<double>();
-  params.thermal_rate = resolved.at("thermal_rate").get<double>();
-  return params;
+  return params_from_json(hydraulic_param_table(), resolved);
 }
 
 PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& terrain) {
-  require(std::isfinite(params.time_step) && params.time_step > 0.0,
-          fmt::format("time_step Δt = {} s must be finite and > 0", params.time_step));
-  require_non_negative(params.gravity, "gravity");
-  require_non_negative(params.pipe_area, "pipe_area");
-  require_non_negative(params.rain_rate, "rain_rate");
-  require_non_negative(params.evaporation_rate, "evaporation_rate");
-  require_non_negative(params.capacity, "capacity");
-  require_non_negative(params.min_tilt_sine, "min_tilt_sine");
-  require_non_negative(params.depth_ramp, "depth_ramp");
-  require_non_negative(params.dissolving_rate, "dissolving_rate");
-  require_non_negative(params.deposition_rate, "deposition_rate");
-  require(std::isfinite(params.velocity_depth_floor) && params.velocity_depth_floor > 0.0,
-          fmt::format("velocity_depth_floor = {} m must be finite and > 0", params.velocity_depth_floor));
-  require(params.pipe_count == 4 || params.pipe_count == 8,
-          fmt::format("pipes = {} must be 4 or 8", params.pipe_count));
-  require_non_negative(params.sediment_diffusion, "sediment_diffusion");
-  require(params.sediment_diffusion <= 0.25,
-          fmt::format("sediment_diffusion = {} must be <= 1/4 (four neighbours get w each)", params.sediment_diffusion));
-  require_non_negative(params.regolith_depth, "regolith_depth");
-  require_non_negative(params.regolith_dissolving_rate, "regolith_dissolving_rate");
-  require_non_negative(params.regolith_deposition_rate, "regolith_deposition_rate");
-  require(std::isfinite(params.thermal_talus_angle) && params.thermal_talus_angle >= 0.0 &&
-              params.thermal_talus_angle < 90.0,
-          fmt::format("thermal_talus_angle = {} degrees must be in [0, 90)", params.thermal_talus_angle));
-  require(std::isfinite(params.thermal_rate) && params.thermal_rate >= 0.0 && params.thermal_rate <= 1.0,
-          fmt::format("thermal_rate = {} must be in [0, 1]", params.thermal_rate));
-  require(params.min_tilt_sine <= 1.0, fmt::format("min_tilt_sine = {} must be <= 1", params.min_tilt_sine));
+  check_param_ranges(algorithm_name, hydraulic_param_table(), params);
   const double evaporated_share = params.evaporation_rate * params.time_step;
   require(evaporated_share <= 1.0,
           fmt::format("evaporation_rate·time_step = {}·{} = {} exceeds 1 (more than all the water per step)",

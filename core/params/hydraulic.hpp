@@ -39,7 +39,7 @@
 #include <vector>
 
 #include "core/grid.hpp"
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 #include "core/params/thermal.hpp"
 #include "core/sum.hpp"
 
@@ -100,6 +100,8 @@ struct HydraulicParams {
   double thermal_rate = 0.5;            // Jákó's rate = Δt·C_t·R per iteration, in [0, 1]
 };
 
+// The declarations (core/param_table.hpp), their ParamSpecs, and the struct from resolve_params' output.
+const ParamTable<HydraulicParams>& hydraulic_param_table();
 const ParamSpecs& hydraulic_param_specs();
 HydraulicParams hydraulic_params_from_json(const nlohmann::json& resolved);
 
@@ -149,8 +151,9 @@ struct PipeConstants {
 };
 
 // Constants for `params` on the grid of `terrain` (its cell sizes). Throws InputError for values a
-// struct built in code can hold but the JSON ranges refuse (Δt ≤ 0, negative rates, a depth floor
-// ≤ 0, non-finite values, a pipe count other than 4 or 8) and for K_e·Δt > 1.
+// struct built in code can hold but the declared ranges refuse (check_param_ranges: Δt ≤ 0,
+// negative rates, non-finite values, a pipe count other than 4 or 8, ...), for K_e·Δt > 1 and for
+// a cell size ≤ 0.
 PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& terrain);
 
 // What the tilt divides a height difference across `sides` (1: one-sided, 2: central) cells of size

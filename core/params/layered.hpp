@@ -52,7 +52,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 
 namespace gt {
 
@@ -71,15 +71,8 @@ enum class SlopeForm { thesis, seed001_code };
 enum class BreakdownForm { thesis, seed001_code };
 enum class ShareForm { thesis, seed001_code };
 
-// "thesis", "seed001_code"; "singular", "seed001_code"; "closed", "periodic".
-const char* talus_amount_name(TalusAmount amount);
-const char* creep_denominator_name(CreepDenominator denominator);
+// "closed", "periodic": the names of the `border` parameter.
 const char* layered_border_name(LayeredBorder border);
-// "thesis", "seed001_code" (each of the four).
-const char* vegetation_quality_name(VegetationQuality quality);
-const char* slope_form_name(SlopeForm form);
-const char* breakdown_form_name(BreakdownForm form);
-const char* share_form_name(ShareForm form);
 
 using FragmentMatrix = std::array<std::array<double, fragment_size_count>, fragment_size_count>;
 // Eq. 3.8 and 3.9: row = source size j, column = result size i (sand .. boulders); lower triangular.
@@ -176,15 +169,19 @@ struct LayeredParams {
 // Whether any water is given: initial_water > 0, rain_rate > 0 or the river.
 bool has_water(const LayeredParams& params);
 
-// Throws InputError ("erosion.layered: ...") naming the first bad value: non-finite numbers, Δt ≤ 0,
-// a repose tan ≤ 0 (angle outside (0°, 90°)), K_sveg < 0, K_depth outside [1, 1.5], topsoil
-// maximum ≤ 0, no bedrock type, fragment shares outside [0, 1] or not summing to 1 (±1e-9),
-// negative hardness, K_z < 0, S_c ≤ 0, a denominator floor outside (0, 1].
+// Throws InputError ("erosion.layered: ...") naming the first bad value: a scalar outside its
+// declared range (check_param_ranges over layered_param_table()), no bedrock type, a bedrock type's
+// repose tan ≤ 0 (angle outside (0°, 90°)), its fragment or soil shares outside [0, 1] or not
+// summing to 1 (±1e-9), negative hardness or rates, a breakdown matrix with negative entries or
+// above its diagonal.
 void validate_layered_params(const LayeredParams& params);
 
-// The scalar parameters (everything but the bedrock types) with names, ranges and units.
+// The scalar parameters (everything but the bedrock types and the breakdown matrices): the
+// declarations (core/param_table.hpp) and their ParamSpecs.
+const ParamTable<LayeredParams>& layered_param_table();
 const ParamSpecs& layered_param_specs();
-// From resolve_params(..., layered_param_specs(), ...); the bedrock types keep their defaults.
+// From resolve_params(..., layered_param_specs(), ...); the bedrock types and matrices keep their
+// defaults.
 LayeredParams layered_params_from_json(const nlohmann::json& resolved);
 // [{"repose_tan": 4.0, "fragments": [0, 0.2, 0.3, 0.5], "hardness": 1}, ...]; validated as above.
 // Optional "soil_rate" and "soil_composition" (5 shares; §3.16) default to BedrockType's (type 0's).

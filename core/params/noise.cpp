@@ -1,3 +1,4 @@
+// Parameter tables of the noise algorithms and the origin reduction and lattice range (see noise.hpp).
 #include "core/params/noise.hpp"
 
 #include <algorithm>
@@ -38,23 +39,69 @@ std::array<double, 4> reduced_simplex_origin(const std::array<double, 4>& origin
   return reduced;
 }
 
-ParamSpec real_spec(std::string name, double fallback, double min, double max, std::string unit, std::string text) {
-  return {std::move(name), ParamKind::real, fallback, min, max, {}, std::move(unit), std::move(text)};
+constexpr Choice<NoiseBasis> fractal_basis_choices[] = {{"perlin3", NoiseBasis::perlin3},
+                                                        {"simplex3", NoiseBasis::simplex3}};
+constexpr const char* origin_names[] = {"origin_x", "origin_y", "origin_z", "origin_w"};
+
+// Where the samples lie: the permutation, the step and the origin on each of `dimension` axes.
+ParamTable<NoiseParams> sampling_rows(int dimension) {
+  using P = NoiseParams;
+  ParamTable<P> rows = {
+      integer_param("seed", &P::seed, 0, 4294967295.0, "1",
+                    "permutation: 0 = Perlin's reference table, otherwise a shuffle by the counter RNG"),
+      nested(&P::sampling, real_param("step", &NoiseSampling::step, 1e-9, 1e6, "noise unit",
+                                      "distance between neighbouring samples")),
+      boolean_param("reduce_origin", &P::reduce_origin,
+                    "move the origin by a period of the noise (in double) before the float twins see it"),
+  };
+  for (int axis = 0; axis < dimension; ++axis) {
+    rows.push_back(nested(&P::sampling, real_param(origin_names[axis], element(&NoiseSampling::origin, axis), -1e9,
+                                                   1e9, "noise unit", "noise-space position of sample (0, 0)")));
+  }
+  return rows;
 }
 
-ParamSpecs sampling_specs(int dimension) {
-  ParamSpecs specs = {
-      {"seed", ParamKind::integer, 0, 0, 4294967295.0, {}, "1",
-       "permutation: 0 = Perlin's reference table, otherwise a shuffle by the counter RNG"},
-      real_spec("step", 0.05, 1e-9, 1e6, "noise unit", "distance between neighbouring samples"),
-      {"reduce_origin", ParamKind::boolean, false, 0, 0, {}, "",
-       "move the origin by a period of the noise (in double) before the float twins see it"},
+// The octaves of a fractal sum: hetero_terrain has no gain, fbm no H and offset.
+ParamTable<FractalParams> octave_rows(Fractal fractal) {
+  using F = FractalParams;
+  ParamTable<F> rows = {
+      real_param("octaves", &F::octaves, 1.0, max_fractal_octaves, "count",
+                 fractal == Fractal::ridged ? "octaves summed (whole part)"
+                                            : "octaves summed; a fraction adds part of one more"),
+      real_param("lacunarity", &F::lacunarity, 1e-3, 16.0, "1", "frequency ratio of successive octaves"),
   };
-  const char* axes[] = {"origin_x", "origin_y", "origin_z", "origin_w"};
-  for (int axis = 0; axis < dimension; ++axis) {
-    specs.push_back(real_spec(axes[axis], 0.0, -1e9, 1e9, "noise unit", "noise-space position of sample (0, 0)"));
+  if (fractal != Fractal::hetero_terrain) {
+    rows.push_back(real_param("gain", &F::gain, 0.0, 16.0, "1",
+                              fractal == Fractal::fbm ? "amplitude ratio of successive octaves"
+                                                      : "weight feedback gain (Blender's ridged default 2)"));
   }
-  return specs;
+  if (fractal != Fractal::fbm) {
+    rows.push_back(real_param("H", &F::H, 0.0, 4.0, "1", "fractal increment: octave k weighted lacunarity^(-H·k)"));
+    rows.push_back(real_param("offset", &F::offset, -4.0, 4.0, "1", "added to the basis noise"));
+  }
+  return rows;
+}
+
+ParamTable<NoiseParams> fractal_rows(Fractal fractal) {
+  using P = NoiseParams;
+  ParamTable<P> rows = sampling_rows(3);
+  rows.push_back(choice_param("basis", &P::basis, fractal_basis_choices, "", "the noise summed"));
+  rows.push_back(real_param("kernel", &P::kernel_radius_squared, 0.5, 0.6, "noise unit²",
+                            "kernel radius² of a simplex3 basis"));
+  for (auto& row : nested(&P::fractal_params, octave_rows(fractal))) rows.push_back(std::move(row));
+  rows.push_back(real_param("amplitude", &P::amplitude, -1e6, 1e6, "m",
+                            "height = base + amplitude·value (terrain synthesis)"));
+  rows.push_back(real_param("base", &P::base, -1e6, 1e6, "m", "height = base + amplitude·value"));
+  return rows;
+}
+
+ParamTable<NoiseParams> function_rows(NoiseBasis basis) {
+  ParamTable<NoiseParams> rows = sampling_rows(noise_dimension(basis));
+  if (basis == NoiseBasis::simplex3 || basis == NoiseBasis::simplex4) {
+    rows.push_back(real_param("kernel", &NoiseParams::kernel_radius_squared, 0.5, 0.6, "noise unit²",
+                              "kernel radius²: 0.6 as seed 004 (slightly discontinuous), 0.5 corrected"));
+  }
+  return rows;
 }
 
 }  // namespace
@@ -78,36 +125,27 @@ const char* noise_basis_name(NoiseBasis basis) {
   return "?";
 }
 
+ParamTable<NoiseParams> noise_param_table(NoiseBasis basis, Fractal fractal) {
+  return fractal == Fractal::none ? function_rows(basis) : fractal_rows(fractal);
+}
+
+NoiseParams noise_defaults(NoiseBasis basis, Fractal fractal) {
+  NoiseParams defaults;
+  defaults.basis = fractal == Fractal::none ? basis : NoiseBasis::perlin3;
+  defaults.fractal = fractal;
+  auto& octaves = defaults.fractal_params;
+  if (fractal == Fractal::none) octaves.octaves = 1.0;
+  if (fractal == Fractal::hetero_terrain) octaves.octaves = octaves.lacunarity = 3.0;
+  if (fractal == Fractal::ridged) octaves.gain = 2.0;
+  return defaults;
+}
+
 ParamSpecs noise_param_specs(NoiseBasis basis) {
-  ParamSpecs specs = sampling_specs(noise_dimension(basis));
-  if (basis == NoiseBasis::simplex3 || basis == NoiseBasis::simplex4) {
-    specs.push_back(real_spec("kernel", 0.6, 0.5, 0.6, "noise unit²",
-                              "kernel radius²: 0.6 as seed 004 (slightly discontinuous), 0.5 corrected"));
-  }
-  return specs;
+  return param_specs(noise_param_table(basis, Fractal::none), noise_defaults(basis, Fractal::none));
 }
 
 ParamSpecs fractal_param_specs(Fractal fractal) {
-  ParamSpecs specs = sampling_specs(3);
-  const bool hetero = fractal == Fractal::hetero_terrain;
-  specs.push_back({"basis", ParamKind::choice, "perlin3", 0, 0, {"perlin3", "simplex3"}, "", "the noise summed"});
-  specs.push_back(real_spec("kernel", 0.6, 0.5, 0.6, "noise unit²", "kernel radius² of a simplex3 basis"));
-  specs.push_back(real_spec("octaves", hetero ? 3.0 : 6.0, 1.0, max_fractal_octaves, "count",
-                            fractal == Fractal::ridged ? "octaves summed (whole part)"
-                                                       : "octaves summed; a fraction adds part of one more"));
-  specs.push_back(real_spec("lacunarity", hetero ? 3.0 : 2.0, 1e-3, 16.0, "1", "frequency ratio of successive octaves"));
-  if (fractal != Fractal::hetero_terrain) {
-    specs.push_back(real_spec("gain", fractal == Fractal::fbm ? 0.5 : 2.0, 0.0, 16.0, "1",
-                              fractal == Fractal::fbm ? "amplitude ratio of successive octaves"
-                                                      : "weight feedback gain (Blender's ridged default 2)"));
-  }
-  if (fractal != Fractal::fbm) {
-    specs.push_back(real_spec("H", 1.0, 0.0, 4.0, "1", "fractal increment: octave k weighted lacunarity^(-H·k)"));
-    specs.push_back(real_spec("offset", 1.0, -4.0, 4.0, "1", "added to the basis noise"));
-  }
-  specs.push_back(real_spec("amplitude", 1.0, -1e6, 1e6, "m", "height = base + amplitude·value (terrain synthesis)"));
-  specs.push_back(real_spec("base", 0.0, -1e6, 1e6, "m", "height = base + amplitude·value"));
-  return specs;
+  return param_specs(noise_param_table(NoiseBasis::perlin3, fractal), noise_defaults(NoiseBasis::perlin3, fractal));
 }
 
 namespace {
@@ -135,28 +173,10 @@ void check_lattice_range(const NoiseParams& params) {
 
 NoiseParams noise_params_from_json(NoiseBasis basis, Fractal fractal, const nlohmann::json& resolved, int width,
                                    int height) {
-  NoiseParams params;
-  params.fractal = fractal;
-  params.basis = fractal == Fractal::none ? basis
-                 : resolved.at("basis") == "simplex3" ? NoiseBasis::simplex3
-                                                      : NoiseBasis::perlin3;
-  params.seed = resolved.at("seed").get<std::uint32_t>();
-  params.kernel_radius_squared = resolved.value("kernel", 0.6);
-  params.reduce_origin = resolved.at("reduce_origin").get<bool>();
-  auto& fractal_params = params.fractal_params;
-  fractal_params.octaves = resolved.value("octaves", 1.0);
-  fractal_params.lacunarity = resolved.value("lacunarity", 2.0);
-  fractal_params.gain = resolved.value("gain", fractal_params.gain);
-  fractal_params.H = resolved.value("H", fractal_params.H);
-  fractal_params.offset = resolved.value("offset", fractal_params.offset);
-  params.amplitude = resolved.value("amplitude", 1.0);
-  params.base = resolved.value("base", 0.0);
+  NoiseParams params = params_from_json(noise_param_table(basis, fractal), resolved, noise_defaults(basis, fractal));
   params.sampling.width = width;
   params.sampling.height = height;
-  params.sampling.step = resolved.at("step").get<double>();
-  const char* axes[] = {"origin_x", "origin_y", "origin_z", "origin_w"};
-  for (int axis = 0; axis < 4; ++axis) params.sampling.origin[axis] = resolved.value(axes[axis], 0.0);
-  const double lacunarity = fractal_params.lacunarity;
+  const double lacunarity = params.fractal_params.lacunarity;
   if (params.reduce_origin && fractal != Fractal::none && lacunarity != std::floor(lacunarity)) {
     throw InputError(fmt::format("reduce_origin needs an integer lacunarity (got {}): only then is every octave "
                                  "periodic with the same shift",

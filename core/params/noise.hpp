@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 #include "core/params/noise_fractal.hpp"
 
 namespace gt {
@@ -49,7 +49,14 @@ struct NoiseParams {
   NoiseSampling sampling;
 };
 
-// Declarations for the single-function algorithms (noise.simplex2 ...) and the fractal ones.
+// The declarations (core/param_table.hpp) of a single function (fractal none: noise.simplex2 ...)
+// or of a fractal sum (noise.fbm ..., whose basis is a parameter), and each variant's defaults: the
+// struct's, but a single function sums one octave, a fractal sums perlin3, hetero_terrain takes 3
+// octaves of lacunarity 3 and ridged a gain of 2 (Blender's).
+ParamTable<NoiseParams> noise_param_table(NoiseBasis basis, Fractal fractal);
+NoiseParams noise_defaults(NoiseBasis basis, Fractal fractal);
+
+// Their ParamSpecs for the single-function algorithms and the fractal ones.
 ParamSpecs noise_param_specs(NoiseBasis basis);
 ParamSpecs fractal_param_specs(Fractal fractal);
 

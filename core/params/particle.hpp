@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/grid.hpp"
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 #include "core/params/droplets.hpp"
 
 namespace gt {
@@ -79,7 +79,37 @@ std::array<double, 31> flow_batch_powers(double factor);
 // neighbour reads and one for the bilinear corners. Spacing must exceed twice this for `disjoint`.
 int droplet_reach(int lifetime);
 
+// The parameters of an erosion.particle case: the UI values of §4.4.1 (add-on 1a1a8c9), which
+// particle_constants maps to the kernel's, and the case's pictures, colour map and flow map.
+struct ParticleParams {
+  int iterations = 10;
+  int lifetime = 50;
+  int spacing = 4;
+  double acceleration = 0.5;
+  double erosion_strength = 0.25;     // bite
+  double deposition_strength = 0.25;  // release
+  double max_velocity = 2.0;
+  double drag = 0.2;                  // the kernel's drag is 1 - drag
+  double capacity_factor = 0.01;
+  double max_jump = 0.1;
+  bool interpolate = true;
+  double colour_mixing = 0.2;
+  bool interpolate_colour = true;
+  DropletOrdering ordering = DropletOrdering::batch;
+  double erosion_contrast = 20.0;
+  double deposition_contrast = 15.0;
+  std::string colour = "none";
+  bool flow_map = true;
+  int flow_spacing = 8;
+  double flow_contrast = 0.5;
+  bool interpolate_flow = true;
+  bool normalised = true;
+};
+
+// The declarations (core/param_table.hpp), their ParamSpecs, and the struct from resolve_params' output.
+const ParamTable<ParticleParams>& particle_param_table();
 const ParamSpecs& particle_param_specs();
+ParticleParams particle_params_from_json(const nlohmann::json& resolved);
 
 // Constants from resolved parameters (UI values mapped as §4.4.1 says) for `heights` (already
 // normalised when the case asks for it; the quantum is taken from them). Throws InputError when

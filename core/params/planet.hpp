@@ -72,7 +72,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 
 namespace gt {
 
@@ -131,8 +131,10 @@ struct PlateRateBounds {
 };
 PlateRateBounds plate_rate_bounds(const PlanetParams& params);
 
+// The declarations (core/param_table.hpp), their ParamSpecs, and the struct from resolve_params'
+// output, which throws InputError when plates exceed 6R².
+const ParamTable<PlanetParams>& planet_param_table();
 const ParamSpecs& planet_param_specs();
-// Throws InputError when plates exceed 6R².
 PlanetParams planet_params_from_json(const nlohmann::json& resolved);
 
 const char* plate_rule_name(PlateRule rule);

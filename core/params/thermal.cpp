@@ -1,3 +1,4 @@
+// Parameter tables and per-run constants of the two thermal-erosion models (see thermal.hpp).
 #include "core/params/thermal.hpp"
 
 #include <algorithm>
@@ -8,6 +9,10 @@
 namespace gt {
 namespace {
 
+constexpr Choice<Neighbourhood> neighbourhood_choices[] = {{"cardinal", Neighbourhood::cardinal},
+                                                           {"diagonal", Neighbourhood::diagonal},
+                                                           {"alternating", Neighbourhood::alternating}};
+
 // Range of valid heights; a field with no valid cell counts as flat at 0.
 std::pair<double, double> height_range(const Heightmap& heights) {
   const auto [low, high] = valid_range(heights);
@@ -16,60 +21,51 @@ std::pair<double, double> height_range(const Heightmap& heights) {
 
 }  // namespace
 
-const char* neighbourhood_name(Neighbourhood neighbourhood) {
-  switch (neighbourhood) {
-    case Neighbourhood::cardinal: return "cardinal";
-    case Neighbourhood::diagonal: return "diagonal";
-    case Neighbourhood::alternating: return "alternating";
-  }
-  return "?";
+const char* neighbourhood_name(Neighbourhood neighbourhood) { return choice_name(neighbourhood_choices, neighbourhood); }
+
+const ParamTable<ThermalParams>& thermal_param_table() {
+  using P = ThermalParams;
+  static const ParamTable<P> table = {
+      integer_param("iterations", &P::iterations, 0, 100000, "count", "iterations (two passes each); odd counts allowed"),
+      real_param("talus_angle", &P::talus_angle_deg, 0.0, 85.0, "degree", "talus angle α; Hydra's UI range 0..85"),
+      real_param("strength", &P::strength, 0.0, 2.0, "1", "Hydra's strength; request factor f_s = strength/2"),
+      choice_param("neighbourhood", &P::neighbourhood, neighbourhood_choices, "",
+                   "cardinal, diagonal (distance sqrt(lx²+ly²)), or alternating (even iterations cardinal, odd diagonal)"),
+      boolean_param("normalised", &P::normalised,
+                    "seed 000's [0,1] heights with T from eq. 4.10 instead of physical heights with T = tan α"),
+      real_param("vertical_aspect", &P::vertical_aspect, 0.0, 1e6, "1",
+                 "d_z of eq. 4.3 for normalised heights; 0 derives it from the grid (2·range/extent_x)"),
+  };
+  return table;
+}
+
+const ParamTable<ThermalJakoParams>& thermal_jako_param_table() {
+  using P = ThermalJakoParams;
+  static const ParamTable<P> table = {
+      integer_param("iterations", &P::iterations, 0, 100000, "count", "iterations (outflow + gather each)"),
+      real_param("talus_angle", &P::talus_angle_deg, 0.0, 85.0, "degree", "talus angle: tan = C_a·R + C_i of eq. 2.33"),
+      real_param("rate", &P::rate, 0.0, 1.0, "1",
+                 "Δt·C_t·R of eq. 2.32: the share of half the largest excess difference moved per iteration"),
+  };
+  return table;
 }
 
 const ParamSpecs& thermal_param_specs() {
-  static const ParamSpecs specs = {
-      {"iterations", ParamKind::integer, 100, 0, 100000, {}, "count", "iterations (two passes each); odd counts allowed"},
-      {"talus_angle", ParamKind::real, 45.0, 0.0, 85.0, {}, "degree", "talus angle α; Hydra's UI range 0..85"},
-      {"strength", ParamKind::real, 1.0, 0.0, 2.0, {}, "1", "Hydra's strength; request factor f_s = strength/2"},
-      {"neighbourhood", ParamKind::choice, "alternating", 0, 0, {"cardinal", "diagonal", "alternating"}, "",
-       "cardinal, diagonal (distance sqrt(lx²+ly²)), or alternating (even iterations cardinal, odd diagonal)"},
-      {"normalised", ParamKind::boolean, false, 0, 0, {}, "",
-       "seed 000's [0,1] heights with T from eq. 4.10 instead of physical heights with T = tan α"},
-      {"vertical_aspect", ParamKind::real, 0.0, 0.0, 1e6, {}, "1",
-       "d_z of eq. 4.3 for normalised heights; 0 derives it from the grid (2·range/extent_x)"},
-  };
+  static const ParamSpecs specs = param_specs(thermal_param_table());
   return specs;
 }
 
 const ParamSpecs& thermal_jako_param_specs() {
-  static const ParamSpecs specs = {
-      {"iterations", ParamKind::integer, 100, 0, 100000, {}, "count", "iterations (outflow + gather each)"},
-      {"talus_angle", ParamKind::real, 30.0, 0.0, 85.0, {}, "degree", "talus angle: tan = C_a·R + C_i of eq. 2.33"},
-      {"rate", ParamKind::real, 0.5, 0.0, 1.0, {}, "1",
-       "Δt·C_t·R of eq. 2.32: the share of half the largest excess difference moved per iteration"},
-  };
+  static const ParamSpecs specs = param_specs(thermal_jako_param_table());
   return specs;
 }
 
 ThermalParams thermal_params_from_json(const nlohmann::json& resolved) {
-  ThermalParams params;
-  params.iterations = resolved.at("iterations").get<int>();
-  params.talus_angle_deg = resolved.at("talus_angle").get<double>();
-  params.strength = resolved.at("strength").get<double>();
-  const auto neighbourhood = resolved.at("neighbourhood").get<std::string>();
-  for (auto candidate : {Neighbourhood::cardinal, Neighbourhood::diagonal, Neighbourhood::alternating}) {
-    if (neighbourhood == neighbourhood_name(candidate)) params.neighbourhood = candidate;
-  }
-  params.normalised = resolved.at("normalised").get<bool>();
-  params.vertical_aspect = resolved.at("vertical_aspect").get<double>();
-  return params;
+  return params_from_json(thermal_param_table(), resolved);
 }
 
 ThermalJakoParams thermal_jako_params_from_json(const nlohmann::json& resolved) {
-  ThermalJakoParams params;
-  params.iterations = resolved.at("iterations").get<int>();
-  params.talus_angle_deg = resolved.at("talus_angle").get<double>();
-  params.rate = resolved.at("rate").get<double>();
-  return params;
+  return params_from_json(thermal_jako_param_table(), resolved);
 }
 
 double talus_threshold_eq_4_10(double angle_deg, int width, double vertical_aspect) {

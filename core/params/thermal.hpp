@@ -12,7 +12,7 @@
 #pragma once
 
 #include "core/grid.hpp"
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 
 namespace gt {
 
@@ -36,6 +36,10 @@ struct ThermalJakoParams {
   double rate = 0.5;
 };
 
+// The declarations (core/param_table.hpp), their ParamSpecs, and the structs from resolve_params'
+// output.
+const ParamTable<ThermalParams>& thermal_param_table();
+const ParamTable<ThermalJakoParams>& thermal_jako_param_table();
 const ParamSpecs& thermal_param_specs();
 const ParamSpecs& thermal_jako_param_specs();
 ThermalParams thermal_params_from_json(const nlohmann::json& resolved);
