@@ -1,6 +1,7 @@
 #include "compare/benchmark.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <fnmatch.h>
 #include <memory>
 #include <variant>
@@ -142,6 +143,23 @@ std::vector<double> timed_runs(const Work& work, int reps, double (*clock)(const
   return times;
 }
 
+}  // namespace
+
+std::vector<double> time_stepped_cpu(const SteppedTwin& twin, int reps) {
+  return timed_runs(stepped_work(twin, twin.reference_double()), reps, cpu_wall_ms);
+}
+
+bool within_table_sizes(double cells, const BenchmarkOptions& options) {
+  const int largest = options.sizes.empty() ? 0 : *std::max_element(options.sizes.begin(), options.sizes.end());
+  return cells <= 4.0 * static_cast<double>(largest) * static_cast<double>(largest);
+}
+
+std::vector<double> time_stepped_gpu(const SteppedTwin& twin, int reps) {
+  return timed_runs(stepped_work(twin, twin.make_gpu()), reps, gpu_wall_ms);
+}
+
+namespace {
+
 // Generated fields and stepped twins: the double reference and the GPU on generated square grids.
 void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& options, bool gpu_available,
                           const Environment& environment, Progress& progress, std::vector<BenchmarkRow>& rows) {
@@ -150,7 +168,9 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
   const nlohmann::json given = stepped ? nlohmann::json{{"iterations", iterations}} : nlohmann::json::object();
   const auto params = resolve_params(algorithm.name, *algorithm.params, given);
   for (int size : options.sizes) {
-    progress.start_case(static_cast<int>(rows.size()) + 1, fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
+    const auto started = std::chrono::steady_clock::now();
+    const std::string step = fmt::format("benchmark {} {}x{}", algorithm.name, size, size);
+    progress.start_case(step);
     LoadedInput input_grid;
     input_grid.heights = benchmark_input(size);
     require_memory(algorithm.memory(params, input_grid), fmt::format("benchmark {} {}x{}", algorithm.name, size, size));
@@ -162,10 +182,12 @@ void benchmark_field_twin(const Algorithm& algorithm, const BenchmarkOptions& op
       progress.stage("peer");
       rows.push_back(peer_row(peer, algorithm.name, params, size, options.reps, environment));
     }
-    if (!gpu_available) continue;
-    progress.stage("gpu");
-    const auto gpu_times = timed_runs(gpu_work(prepared), options.reps, gpu_wall_ms);
-    rows.push_back(row(algorithm.name, "gpu", size, iterations, options.reps, gpu_times, environment.gl_renderer));
+    if (gpu_available) {
+      progress.stage("gpu");
+      const auto gpu_times = timed_runs(gpu_work(prepared), options.reps, gpu_wall_ms);
+      rows.push_back(row(algorithm.name, "gpu", size, iterations, options.reps, gpu_times, environment.gl_renderer));
+    }
+    progress.end_case(step, std::nullopt, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
   }
 }
 
@@ -198,18 +220,24 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
                                          const Environment& environment) {
   const auto selected = selected_algorithms(options);
   std::vector<BenchmarkRow> rows;
-  std::size_t expected_rows = 1;  // the probe, then CPU, GPU and each peer at each size
-  for (const Algorithm* algorithm : selected) expected_rows += (2 + algorithm->peers.size()) * options.sizes.size();
-  Progress progress(static_cast<int>(expected_rows), options.quiet);
-  progress.start_case(1, "benchmark memory.copy (the bandwidth floor)");
-  benchmark_bandwidth(options, gpu_available, environment, rows);
+  std::size_t steps = 1;  // the probe, then each algorithm's own table or each of its sizes
+  for (const Algorithm* algorithm : selected) steps += algorithm->benchmark ? 1 : options.sizes.size();
+  Progress progress(static_cast<int>(steps), options.quiet);
+  const auto timed_step = [&](const std::string& step, const auto& work) {
+    const auto started = std::chrono::steady_clock::now();
+    progress.start_case(step);
+    work();
+    progress.end_case(step, std::nullopt, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+  };
+  timed_step("benchmark memory.copy (the bandwidth floor)", [&] { benchmark_bandwidth(options, gpu_available, environment, rows); });
   for (const Algorithm* selected_algorithm : selected) {
     const Algorithm& algorithm = *selected_algorithm;
     const std::size_t first_row = rows.size();
     if (algorithm.benchmark) {
-      progress.start_case(static_cast<int>(rows.size()) + 1, "benchmark " + algorithm.name);
-      const auto own_rows = algorithm.benchmark(options, gpu_available, environment);
-      rows.insert(rows.end(), own_rows.begin(), own_rows.end());
+      timed_step("benchmark " + algorithm.name, [&] {
+        const auto own_rows = algorithm.benchmark(options, gpu_available, environment);
+        rows.insert(rows.end(), own_rows.begin(), own_rows.end());
+      });
     } else if (algorithm.kind != CaseKind::custom) {
       benchmark_field_twin(algorithm, options, gpu_available, environment, progress, rows);
     }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "compare/result.hpp"
+#include "compare/stepped_case.hpp"
 
 namespace gt {
 
@@ -26,7 +27,18 @@ struct BenchmarkOptions {
   bool quiet = false;  // no progress lines (--quiet)
 };
 
+// Whether an algorithm's own row of `cells` cells (voxels, samples of a sphere) belongs to a table of
+// `options.sizes`: at most four times the cells of its largest 2-D grid. The full table (2048²)
+// holds every cave block up to 256³; the report's (256²) the 32³ and 64³ blocks.
+bool within_table_sizes(double cells, const BenchmarkOptions& options);
+
 // Throws InputError when a pattern matches no algorithm that has rows in the table.
+// The times (ms) of `reps` runs of a stepped twin's iterations from its start state after a warm-up
+// run, on ref<double> (steady clock) and on the GPU (glFinish and a steady clock; needs a current GL
+// context): the generic rows' measurements, for an algorithm's own rows.
+std::vector<double> time_stepped_cpu(const SteppedTwin& twin, int reps);
+std::vector<double> time_stepped_gpu(const SteppedTwin& twin, int reps);
+
 std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool gpu_available,
                                          const Environment& environment);
 

@@ -157,7 +157,7 @@ void attach_descriptor_plot(const std::vector<Described>& described, const RealT
     if (entry.key != "cpu_float") shown.push_back({entry.label, &entry.descriptors});
   }
   if (real.descriptors) shown.push_back({real.name, &*real.descriptors});
-  attach_plot(descriptor_panels(shown), options.report_dir, "descriptors.png",
+  attach_plot(descriptor_panels(shown), options, "descriptors.png",
               "terrain descriptors: before, after and a real DEM (hypsometry, slope, power spectrum, Horton)", result);
 }
 

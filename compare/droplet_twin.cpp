@@ -1,17 +1,19 @@
-// Runs a droplet eroder's twins on one case and checks them; see droplet_twin.hpp.
+// A droplet eroder as a stepped twin; see droplet_twin.hpp.
 #include "compare/droplet_twin.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <filesystem>
+#include <limits>
+#include <utility>
 
 #include <fmt/format.h>
 
-#include "compare/case_descriptors.hpp"
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/field_files.hpp"
+#include "compare/steppers/height.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
@@ -26,33 +28,59 @@ using reference::DropletRun;
 
 namespace {
 
-// Shadow steps: up to 8 checkpoints spread over the run, one iteration from each.
-constexpr int shadow_checkpoints = 8;
 // Race mode: at least this many GPU runs against the one sequential truth (issue 12).
 constexpr int race_runs = 5;
 // Race mode: the spacings whose distance from the truth the case measures (one iteration each).
 constexpr int race_spacings[] = {16, 8, 4, 2, 1};
 
+const char* const gpu_books_no_ledger =
+    "the GPU twin books no droplet ledger (what the droplets carry away stays on the device); its terrain is held to "
+    "ref<float>'s by parity.shadow.terrain.gpu_vs_float";
+
+// The ledger's members by name, as a stepper's records carry them (the counts as doubles: exact
+// below 2^53), summed over a run's parts; largest_cell_delta_quanta is their maximum instead.
+constexpr std::pair<const char*, double DropletLedger::*> ledger_amounts[] = {
+    {"eroded", &DropletLedger::eroded},
+    {"deposited", &DropletLedger::deposited},
+    {"eroded_outside", &DropletLedger::eroded_outside},
+    {"deposited_outside", &DropletLedger::deposited_outside},
+    {"clamp_created", &DropletLedger::clamp_created},
+    {"sediment_at_end", &DropletLedger::sediment_at_end},
+    {"sediment_left", &DropletLedger::sediment_left},
+    {"apply_rounding", &DropletLedger::apply_rounding}};
+constexpr std::pair<const char*, long long DropletLedger::*> ledger_counts[] = {
+    {"droplets", &DropletLedger::droplets},
+    {"droplets_left", &DropletLedger::droplets_left},
+    {"steps", &DropletLedger::steps},
+    {"eroded_quanta", &DropletLedger::eroded_quanta},
+    {"deposited_quanta", &DropletLedger::deposited_quanta},
+    {"eroded_outside_quanta", &DropletLedger::eroded_outside_quanta},
+    {"deposited_outside_quanta", &DropletLedger::deposited_outside_quanta},
+    {"clamp_created_quanta", &DropletLedger::clamp_created_quanta},
+    {"sediment_end_quanta", &DropletLedger::sediment_end_quanta},
+    {"applied_quanta", &DropletLedger::applied_quanta}};
+
 void add_ledgers(DropletLedger& total, const DropletLedger& part) {
-  total.eroded += part.eroded;
-  total.deposited += part.deposited;
-  total.eroded_outside += part.eroded_outside;
-  total.deposited_outside += part.deposited_outside;
-  total.clamp_created += part.clamp_created;
-  total.sediment_at_end += part.sediment_at_end;
-  total.sediment_left += part.sediment_left;
-  total.apply_rounding += part.apply_rounding;
-  total.droplets += part.droplets;
-  total.droplets_left += part.droplets_left;
-  total.steps += part.steps;
-  total.eroded_quanta += part.eroded_quanta;
-  total.deposited_quanta += part.deposited_quanta;
-  total.eroded_outside_quanta += part.eroded_outside_quanta;
-  total.deposited_outside_quanta += part.deposited_outside_quanta;
-  total.clamp_created_quanta += part.clamp_created_quanta;
-  total.sediment_end_quanta += part.sediment_end_quanta;
-  total.applied_quanta += part.applied_quanta;
+  for (const auto& [name, member] : ledger_amounts) total.*member += part.*member;
+  for (const auto& [name, member] : ledger_counts) total.*member += part.*member;
   total.largest_cell_delta_quanta = std::max(total.largest_cell_delta_quanta, part.largest_cell_delta_quanta);
+}
+
+// A record of the ledger so far and the terrain's total (in the twin's heights) after `step`.
+LedgerRecord record_of(int step, const DropletLedger& ledger, double terrain) {
+  LedgerRecord record{.step = step, .totals = {{"terrain", terrain}}};
+  for (const auto& [name, member] : ledger_amounts) record.totals[name] = ledger.*member;
+  for (const auto& [name, member] : ledger_counts) record.totals[name] = static_cast<double>(ledger.*member);
+  record.totals["largest_cell_delta_quanta"] = static_cast<double>(ledger.largest_cell_delta_quanta);
+  return record;
+}
+
+DropletLedger ledger_of(const LedgerRecord& record) {
+  DropletLedger ledger;
+  for (const auto& [name, member] : ledger_amounts) ledger.*member = record.totals.at(name);
+  for (const auto& [name, member] : ledger_counts) ledger.*member = static_cast<long long>(record.totals.at(name));
+  ledger.largest_cell_delta_quanta = static_cast<long long>(record.totals.at("largest_cell_delta_quanta"));
+  return ledger;
 }
 
 template <class Real>
@@ -64,75 +92,165 @@ double terrain_sum(const Grid<Real>& heights) {
   return sum.value();
 }
 
-// The ledger's residual: what is left of Σ after + taken away - created - Σ before.
+// A reference as a stepper: loading a state starts a new ledger, and each update adds a record of
+// the ledger so far and the terrain's total.
 template <class Real>
-double ledger_residual(const Grid<Real>& before, const Grid<Real>& after, const DropletLedger& l) {
-  CompensatedSum sum;
-  for (const double term : {terrain_sum(after), l.sediment_at_end, l.sediment_left, l.deposited_outside,
-                            -terrain_sum(before), -l.eroded_outside, -l.clamp_created, -l.apply_rounding}) {
-    sum.add(term);
+class ReferenceStepper : public Stepper {
+ public:
+  using Run = std::function<DropletRun<Real>(const Grid<Real>& heights, int first, int count)>;
+  ReferenceStepper(Run run, HeightScale own) : run_(std::move(run)), own_(own) {}
+  void set_state(const State& state, int done) override {
+    heights_ = own_.twin_heights<Real>(state);
+    done_ = done;
+    ledger_ = {};
+    records_ = {record_of(0, ledger_, terrain_sum(heights_))};
   }
-  return sum.value();
+  void update(int count) override {
+    DropletRun<Real> run = run_(heights_, done_, count);
+    heights_ = std::move(run.heights);
+    add_ledgers(ledger_, run.ledger);
+    done_ += count;
+    records_.push_back(record_of(records_.back().step + count, ledger_, terrain_sum(heights_)));
+  }
+  State get_state() override { return own_.state_of(heights_); }
+  std::vector<LedgerRecord> ledger() override { return records_; }
+
+ private:
+  Run run_;
+  HeightScale own_;
+  Grid<Real> heights_;
+  int done_ = 0;
+  DropletLedger ledger_;
+  std::vector<LedgerRecord> records_;
+};
+
+class GpuStepper : public Stepper {
+ public:
+  GpuStepper(DropletGpu gpu, HeightScale own) : gpu_(std::move(gpu)), own_(own) {}
+  void set_state(const State& state, int done) override { gpu_.load(own_.twin_heights<float>(state), done); }
+  void update(int count) override { gpu_.step(count); }
+  State get_state() override { return own_.state_of(gpu_.result()); }
+
+ private:
+  DropletGpu gpu_;
+  HeightScale own_;
+};
+
+// The setup of the truth: the case's spacing, the droplets one after the other.
+DropletSetup sequential(const DropletTwin& twin) { return {twin.setup.spacing, DropletOrdering::race}; }
+
+// A height range as the twins see it (1 for a flat input).
+double twin_range(const FieldTotals& totals) { return totals.high > totals.low ? totals.high - totals.low : 1.0; }
+
+// The input's height range in the state's unit.
+double own_range(const DropletTwin& twin) { return twin_range(field_totals(twin.input)) * twin.own.scale; }
+
+ShadowBound disjoint_bound(const DropletTwin& twin, int count) {
+  const FieldTotals totals = field_totals(twin.input);
+  const double range = twin_range(totals);
+  const double additions = twin.writes_per_cell_per_step * twin.lifetime * twin.setup.spacing * twin.setup.spacing;
+  const Bounds bounds =
+      parity_bounds_same_arithmetic(additions * count, std::max(std::abs(totals.low), std::abs(totals.high)) / range);
+  const double own = range * twin.own.scale;
+  return {.strict = bounds.strict * own,
+          .loose = bounds.loose * own,
+          .scale = own,
+          .model = fmt::format("disjoint droplets: {} additions per cell and iteration ({} per step of the one droplet "
+                               "per pass that reaches it); {}",
+                               additions, twin.writes_per_cell_per_step, bounds.model)};
+}
+
+// The terrain's bound after `count` iterations, by ordering (see droplet_twin.hpp).
+ShadowBound shadow_bound(const DropletTwin& twin, int count) {
+  switch (twin.setup.ordering) {
+    case DropletOrdering::batch:
+      return {.scale = own_range(twin),
+              .model = "batch droplets: order-independent integer arithmetic on the state frozen at each pass's "
+                       "start, every bit equal"};
+    case DropletOrdering::disjoint:
+      return disjoint_bound(twin, count);
+    case DropletOrdering::race:
+      break;
+  }
+  return {.strict = std::numeric_limits<double>::infinity(),
+          .scale = own_range(twin),
+          .graded = false,
+          .model = "race droplets: the GPU's droplets of a pass race for cells where ref<float> runs them one after "
+                   "the other; no model bounds the distance (race.* report it)"};
 }
 
 // The droplet steps a run can take at most: every droplet it releases (spacing² passes of
 // ceil(W/S)·ceil(H/S) droplets per iteration) living its whole lifetime.
 double most_droplet_steps(const DropletTwin& twin) {
   const double spacing = twin.setup.spacing;
-  const double droplets_per_pass =
-      std::ceil(twin.input.width / spacing) * std::ceil(twin.input.height / spacing);
+  const double droplets_per_pass = std::ceil(twin.input.width / spacing) * std::ceil(twin.input.height / spacing);
   return double(twin.iterations) * spacing * spacing * droplets_per_pass * double(twin.lifetime);
 }
 
-// The ledger's closure checks of one reference run.
-template <class Real>
-void add_ledger_checks(const DropletTwin& twin, const Grid<Real>& before, const DropletRun<Real>& run,
-                       const std::string& backend, CaseResult& result) {
-  const DropletLedger& l = run.ledger;
-  const FieldTotals totals = field_totals(before);
+// The ledger's residual: what is left of Σ after + taken away - created - Σ before.
+double ledger_residual(double before, double after, const DropletLedger& l) {
+  CompensatedSum sum;
+  for (const double term : {after, l.sediment_at_end, l.sediment_left, l.deposited_outside, -before,
+                            -l.eroded_outside, -l.clamp_created, -l.apply_rounding}) {
+    sum.add(term);
+  }
+  return sum.value();
+}
+
+// ledger.closure of one reference's run, relative to Σ|before| of the heights it started from.
+Check ledger_closure(const DropletTwin& twin, const LedgerRun& run) {
+  if (run.records.empty()) return not_applicable_check("", gpu_books_no_ledger);
+  const bool in_float = run.backend != "cpu";
+  const FieldTotals totals = in_float ? field_totals(twin.input.cast<float>()) : field_totals(twin.input);
   const double scale = std::max(totals.sum_abs, 1e-300);
-  const double residual = std::abs(ledger_residual(before, run.heights, l)) / scale;
-  const bool is_float = sizeof(Real) == sizeof(float);
-  const bool batch = is_float && twin.setup.ordering == DropletOrdering::batch;
-  if (!is_float || batch) {
+  const double residual = std::abs(ledger_residual(run.records.front().totals.at("terrain"),
+                                                   run.records.back().totals.at("terrain"),
+                                                   ledger_of(run.records.back()))) /
+                          scale;
+  if (!in_float || twin.setup.ordering == DropletOrdering::batch) {
     // Double: each event rounds once in double (≤ u of its amount, amounts ≤ the height range) and the
     // ledger's sums are compensated; 1e-12 of Σ|before| leaves room for 10⁴ events per cell at u.
     // Batch float: the terrain changes by integer quanta, exactly counted, and the rounding of
     // heights + delta is measured per cell in double: only the double sums remain.
-    result.checks.push_back(bounded_check(
-        "ledger.closure." + backend, residual, 1e-12, std::nullopt,
-        "|Σ after + sediment taken away + deposited outside - eroded outside - clamp - apply rounding - Σ before| "
-        "/ Σ|before|; double roundings only"));
-  } else {
-    // Float, sequential: every stored height rounds once (≤ u·M, M the largest |height| of the
-    // input, which the eroders' bounds keep the heights within) and so does every update of the
-    // carried sediment: at most twin.roundings_per_step of them per droplet step, and at most
-    // lifetime steps for each droplet the run releases (known before it runs). Worst case all add
-    // up (loose); strict: a random walk.
-    const double magnitude = std::max(std::abs(totals.low), std::abs(totals.high));
-    const double roundings = twin.roundings_per_step * most_droplet_steps(twin);
-    const double per_rounding = unit_roundoff_float * magnitude / scale;
-    result.checks.push_back(bounded_check(
-        "ledger.closure." + backend, residual, 6.0 / std::sqrt(3.0) * std::sqrt(roundings) * per_rounding,
-        roundings * per_rounding,
-        fmt::format("as ledger.closure.cpu, in float: {} roundings of at most u·{:.3g} ({} per droplet step), "
-                    "random walk (strict) and worst case (loose)",
-                    roundings, magnitude, twin.roundings_per_step)));
+    return bounded_check("", residual, 1e-12, std::nullopt,
+                         "|Σ after + sediment taken away + deposited outside - eroded outside - clamp - apply rounding "
+                         "- Σ before| / Σ|before|; double roundings only");
   }
-  if (batch) {
-    const long long quanta = l.applied_quanta + l.sediment_end_quanta + l.deposited_outside_quanta -
-                             l.eroded_outside_quanta - l.clamp_created_quanta;
-    result.checks.push_back(bounded_check(
-        "ledger.quanta." + backend, static_cast<double>(std::llabs(quanta)), 0.0, std::nullopt,
-        "batch ordering in integer quanta: terrain change + sediment taken away + deposited outside - eroded "
-        "outside - clamp = 0 exactly"));
-    result.checks.push_back(informative_check(
-        "batch.largest_cell_delta_quanta", static_cast<double>(l.largest_cell_delta_quanta),
-        "the largest change of one cell in one pass, in quanta; the GPU's counters hold 2^31 - 1"));
-  }
+  // Float, sequential: every stored height rounds once (≤ u·M, M the largest |height| of the input,
+  // which the eroders' bounds keep the heights within) and so does every update of the carried
+  // sediment: at most roundings_per_step of them per droplet step, and at most lifetime steps for
+  // each droplet the run releases (known before it runs). Worst case all add up (loose); strict: a
+  // random walk.
+  const double magnitude = std::max(std::abs(totals.low), std::abs(totals.high));
+  const double roundings = twin.roundings_per_step * most_droplet_steps(twin);
+  const double per_rounding = unit_roundoff_float * magnitude / scale;
+  return bounded_check("", residual, 6.0 / std::sqrt(3.0) * std::sqrt(roundings) * per_rounding,
+                       roundings * per_rounding,
+                       fmt::format("as ledger.closure.cpu, in float: {} roundings of at most u·{:.3g} ({} per droplet "
+                                   "step), random walk (strict) and worst case (loose)",
+                                   roundings, magnitude, twin.roundings_per_step));
 }
 
-void add_ledger_notes(const DropletLedger& l, CaseResult& result) {
+Check ledger_quanta(const LedgerRun& run) {
+  if (run.backend == "cpu") {
+    return not_applicable_check("", "ref<double> runs the droplets one after the other (the truth): it counts no quanta");
+  }
+  if (run.records.empty()) return not_applicable_check("", gpu_books_no_ledger);
+  const DropletLedger l = ledger_of(run.records.back());
+  const long long quanta = l.applied_quanta + l.sediment_end_quanta + l.deposited_outside_quanta -
+                           l.eroded_outside_quanta - l.clamp_created_quanta;
+  return bounded_check("", static_cast<double>(std::llabs(quanta)), 0.0, std::nullopt,
+                       "batch ordering in integer quanta: terrain change + sediment taken away + deposited outside - "
+                       "eroded outside - clamp = 0 exactly");
+}
+
+std::vector<LedgerTerm> ledger_terms(const std::shared_ptr<const DropletTwin>& twin) {
+  std::vector<LedgerTerm> terms = {{"ledger.closure", [twin](const LedgerRun& run) { return ledger_closure(*twin, run); }}};
+  if (twin->setup.ordering == DropletOrdering::batch) terms.push_back({"ledger.quanta", ledger_quanta});
+  return terms;
+}
+
+void add_ledger_note(const DropletLedger& l, CaseResult& result) {
   result.notes.push_back(fmt::format(
       "droplet ledger (ref<double>): {} droplets, {} steps, {} left across x or y <= 0; eroded {:.6g} (what the stores "
       "removed: negative where the clamp raised a texel), deposited "
@@ -140,77 +258,6 @@ void add_ledger_notes(const DropletLedger& l, CaseResult& result) {
       "outside and {:.6g} by the clamp at 0; lost {:.6g} in deposits outside",
       l.droplets, l.steps, l.droplets_left, l.eroded, l.deposited, l.sediment_at_end, l.sediment_left,
       l.eroded_outside, l.clamp_created, l.deposited_outside));
-}
-
-// ref<float> one iteration at a time, keeping the states the shadow steps start from.
-struct FloatRun {
-  DropletRun<float> run;
-  std::vector<int> checkpoints;            // iterations after which a shadow step starts
-  std::vector<Grid<float>> states;         // the state at each checkpoint
-  std::vector<Grid<float>> states_after;   // and one iteration later
-};
-
-std::vector<int> shadow_starts(int iterations) {
-  std::vector<int> starts;
-  const int count = std::min(iterations, shadow_checkpoints);
-  for (int k = 0; k < count; ++k) starts.push_back(static_cast<int>(static_cast<long long>(k) * iterations / count));
-  return starts;
-}
-
-FloatRun run_float(const DropletTwin& twin) {
-  FloatRun out;
-  out.checkpoints = shadow_starts(twin.iterations);
-  Grid<float> state = twin.input.cast<float>();
-  out.run.heights = state;
-  std::size_t next = 0;
-  for (int iteration = 0; iteration < twin.iterations; ++iteration) {
-    const bool checkpoint = next < out.checkpoints.size() && out.checkpoints[next] == iteration;
-    if (checkpoint) out.states.push_back(state);
-    auto step = twin.reference_float(state, 1, twin.setup);
-    add_ledgers(out.run.ledger, step.ledger);
-    state = std::move(step.heights);
-    if (checkpoint) {
-      out.states_after.push_back(state);
-      ++next;
-    }
-  }
-  out.run.heights = std::move(state);
-  return out;
-}
-
-// GPU vs ref<float> from shared states: batch bit for bit; disjoint within the model of the same
-// float operations (a cell is touched by one droplet per pass, at most writes_per_cell_per_step
-// times a step, so at most lifetime·spacing² times an iteration).
-void add_shadow_parity(const DropletTwin& twin, const FloatRun& float_run, GpuFieldRunner& gpu,
-                       CaseResult& result) {
-  double worst_abs = 0.0;
-  std::size_t worst_cells = 0;
-  for (std::size_t k = 0; k < float_run.states.size(); ++k) {
-    gpu.load(float_run.states[k]);
-    gpu.step(0, 1);
-    const FieldDifference difference = field_difference(float_run.states_after[k], gpu.result());
-    worst_abs = std::max(worst_abs, std::isnan(difference.max_abs) ? INFINITY : difference.max_abs);
-    worst_cells = std::max(worst_cells, difference.differing_bits);
-  }
-  const FieldTotals totals = field_totals(twin.input);
-  const double range = std::max(totals.high - totals.low, 1e-300);
-  const std::string where = fmt::format("{} checkpoints, one iteration each", float_run.states.size());
-  if (twin.setup.ordering == DropletOrdering::batch) {
-    result.checks.push_back(bounded_check("parity.shadow.cells_differing.gpu_vs_float", double(worst_cells), 0.0,
-                                          std::nullopt,
-                                          "batch ordering is order-independent integer arithmetic on one frozen "
-                                          "state: every bit equal; " + where));
-    return;
-  }
-  const double additions = twin.writes_per_cell_per_step * twin.lifetime * twin.setup.spacing * twin.setup.spacing;
-  const Bounds bounds = parity_bounds_same_arithmetic(additions, std::max(std::abs(totals.low), std::abs(totals.high)) / range);
-  result.checks.push_back(bounded_check("parity.shadow.max_abs.gpu_vs_float", worst_abs / range, bounds.strict,
-                                        bounds.loose,
-                                        fmt::format("{}; {} additions per cell and iteration ({} per step of the one "
-                                                    "droplet per pass that reaches it); {}",
-                                                    where, additions, twin.writes_per_cell_per_step, bounds.model)));
-  result.checks.push_back(informative_check("parity.shadow.cells_differing.gpu_vs_float", double(worst_cells),
-                                            "cells differing in any bit (0 where division and sqrt round correctly)"));
 }
 
 // Erosion and deposition of a run: after - before, in double.
@@ -269,19 +316,45 @@ struct Spread {
   }
 };
 
-// Race ordering: GPU runs against the sequential ref<float>, reported over the runs; the distance
-// of one iteration from the truth at each spacing, plotted.
-void add_race_statistics(const DropletTwin& twin, const FloatRun& float_run, const RunOptions& options,
+// A whole GPU run of `setup` from the input.
+Grid<float> gpu_run(const DropletTwin& twin, DropletSetup setup, int iterations) {
+  DropletGpu gpu = twin.make_gpu(setup);
+  gpu.load(twin.input.cast<float>(), 0);
+  gpu.step(iterations);
+  return gpu.result();
+}
+
+// The distance of one racing iteration from the sequential truth at each spacing, plotted.
+void add_race_by_spacing(const DropletTwin& twin, const RunOptions& options, CaseResult& result) {
+  Series distance{"GPU race vs sequential ref<float>", {}, {}, false, ""};
+  for (const int spacing : race_spacings) {
+    const DropletSetup at_spacing{spacing, DropletOrdering::race};
+    const auto truth = twin.reference_float(twin.input.cast<float>(), 0, 1, at_spacing);
+    const double value = relative_rms(height_change(twin.input, truth.heights),
+                                      height_change(twin.input, gpu_run(twin, at_spacing, 1)));
+    result.checks.push_back(informative_check(
+        fmt::format("race.relative_rms.spacing_{}.gpu_vs_float", spacing), value,
+        fmt::format("one iteration at spacing {}: rms distance of the race from the sequential truth over the "
+                    "truth's rms change",
+                    spacing)));
+    distance.x.push_back(spacing);
+    distance.y.push_back(value);
+  }
+  attach_plot({SeriesPlot{"race distance by spacing, one iteration", "spacing (texels)",
+                          "rms(GPU - sequential) / rms(sequential change)", true, false, {distance}, {}}},
+              options, "race_by_spacing.png",
+              "how far racing droplets land from the sequential truth as spacing shrinks", result);
+}
+
+// Race ordering: GPU runs against the sequential ref<float>'s end `truth`, reported over the runs.
+void add_race_statistics(const DropletTwin& twin, const Grid<float>& truth, const RunOptions& options,
                          CaseResult& result) {
-  const Grid<double> truth_change = height_change(twin.input, float_run.run.heights);
+  const Grid<double> truth_change = height_change(twin.input, truth);
   const double truth_moved = absolute_total(truth_change);
   Spread correlation_spread, rms_spread, moved_spread;
   const int runs = std::max(race_runs, options.gpu_reps);
-  GpuFieldRunner gpu = twin.make_gpu(twin.setup);
   for (int run = 0; run < runs; ++run) {
-    gpu.load(twin.input.cast<float>());
-    gpu.run();
-    const Grid<double> change = height_change(twin.input, gpu.result());
+    const Grid<double> change = height_change(twin.input, gpu_run(twin, twin.setup, twin.iterations));
     correlation_spread.add(correlation(truth_change, change), runs);
     rms_spread.add(relative_rms(truth_change, change), runs);
     moved_spread.add(truth_moved > 0 ? absolute_total(change) / truth_moved : std::nan(""), runs);
@@ -300,35 +373,14 @@ void add_race_statistics(const DropletTwin& twin, const FloatRun& float_run, con
   result.checks.push_back(informative_check(
       "race.material_moved_ratio.gpu_vs_float", moved_spread.mean,
       "Σ|change| of the GPU over that of the sequential ref<float>, " + spread_text(moved_spread)));
-
-  Series distance{"GPU race vs sequential ref<float>", {}, {}, false, ""};
-  for (const int spacing : race_spacings) {
-    const DropletSetup at_spacing{spacing, DropletOrdering::race};
-    const auto sequential = twin.reference_float(twin.input.cast<float>(), 1, at_spacing);
-    GpuFieldRunner raced = twin.make_gpu(at_spacing);
-    raced.load(twin.input.cast<float>());
-    raced.step(0, 1);
-    const double value = relative_rms(height_change(twin.input, sequential.heights),
-                                      height_change(twin.input, raced.result()));
-    result.checks.push_back(informative_check(
-        fmt::format("race.relative_rms.spacing_{}.gpu_vs_float", spacing), value,
-        fmt::format("one iteration at spacing {}: rms distance of the race from the sequential truth over the "
-                    "truth's rms change",
-                    spacing)));
-    distance.x.push_back(spacing);
-    distance.y.push_back(value);
-  }
-  attach_plot({SeriesPlot{"race distance by spacing, one iteration", "spacing (texels)",
-                          "rms(GPU - sequential) / rms(sequential change)", true, false, {distance}, {}}},
-              options.report_dir, "race_by_spacing.png",
-              "how far racing droplets land from the sequential truth as spacing shrinks", result);
+  add_race_by_spacing(twin, options, result);
 }
 
-// Batch ordering: how far its result lands from the sequential truth (ref<double>).
-void add_batch_distance(const DropletTwin& twin, const Grid<double>& truth, const Grid<float>& batch,
-                        CaseResult& result) {
-  const Grid<double> truth_change = height_change(twin.input, truth);
-  const Grid<double> batch_change = height_change(twin.input, batch);
+// Batch ordering: how far its result lands from the sequential truth (ref<double>), and ref<float>'s
+// largest change of a cell in a pass.
+void add_batch_checks(const DropletTwin& twin, const std::vector<BackendEnd>& ends, CaseResult& result) {
+  const Grid<double> truth_change = height_change(twin.input, twin.own.twin_heights<double>(ends[0].final));
+  const Grid<double> batch_change = height_change(twin.input, twin.own.twin_heights<float>(ends[1].final));
   result.checks.push_back(informative_check(
       "batch.relative_rms_vs_sequential", relative_rms(truth_change, batch_change),
       "rms of (batch ref<float> change - sequential ref<double> change) over the sequential change's rms: what "
@@ -336,68 +388,25 @@ void add_batch_distance(const DropletTwin& twin, const Grid<double>& truth, cons
   result.checks.push_back(informative_check("batch.erosion_correlation_vs_sequential",
                                             correlation(truth_change, batch_change),
                                             "correlation of the batch change with the sequential one"));
+  result.checks.push_back(informative_check(
+      "batch.largest_cell_delta_quanta", static_cast<double>(ledger_of(ends[1].records.back()).largest_cell_delta_quanta),
+      "the largest change of one cell in one pass, in quanta; the GPU's counters hold 2^31 - 1"));
 }
 
-// The checks add_gpu_checks makes, by name: a CPU-only run has them as `skip`.
-std::vector<std::string> gpu_check_names(const DropletTwin& twin) {
-  if (twin.setup.ordering == DropletOrdering::race) {
-    std::vector<std::string> names = {"race.erosion_correlation.gpu_vs_float", "race.relative_rms.gpu_vs_float",
-                                      "race.material_moved_ratio.gpu_vs_float"};
-    for (const int spacing : race_spacings) {
-      names.push_back(fmt::format("race.relative_rms.spacing_{}.gpu_vs_float", spacing));
-    }
-    return names;
-  }
-  std::vector<std::string> names = {"determinism.gpu"};
-  if (twin.setup.ordering == DropletOrdering::disjoint) names.emplace_back("parity.shadow.max_abs.gpu_vs_float");
-  names.emplace_back("parity.shadow.cells_differing.gpu_vs_float");
-  names.emplace_back("parity.cells_differing.gpu_vs_float");
-  return names;
+// Batch: the whole run, GPU against ref<float>, every bit equal.
+void add_whole_run_parity(const BackendEnd& float_end, const BackendEnd& gpu_end, CaseResult& result) {
+  const FieldDifference whole = field_difference(heights_of<double>(float_end.final), heights_of<double>(gpu_end.final));
+  result.checks.push_back(bounded_check("parity.cells_differing.gpu_vs_float", double(whole.differing_bits), 0.0,
+                                        std::nullopt,
+                                        "the whole run, GPU against ref<float> in batch ordering: every bit equal"));
 }
 
-void add_gpu_checks(const DropletTwin& twin, const FloatRun& float_run, const RunOptions& options,
-                    CaseResult& result, std::optional<Grid<float>>& gpu_heights) {
-  GpuFieldRunner gpu = twin.make_gpu(twin.setup);
-  const Grid<float> input = twin.input.cast<float>();
-  std::vector<double> times;
-  for (int rep = 0; rep < std::max(1, options.gpu_reps); ++rep) {
-    gpu.load(input);  // the upload is not timed
-    times.push_back(gpu_wall_ms([&] { gpu.run(); }));
-  }
-  result.timings.gpu_ms = median(times);
-  result.timings.gpu_reps = static_cast<int>(times.size());
-  gpu.load(input);
-  gpu.run();
-  gpu_heights = gpu.result();
-  if (twin.setup.ordering == DropletOrdering::race) {
-    add_race_statistics(twin, float_run, options, result);
-    return;
-  }
-  gpu.load(input);
-  gpu.run();
-  result.checks.push_back(bounded_check("determinism.gpu", double(field_difference(*gpu_heights, gpu.result()).differing_bits),
-                                        0.0, std::nullopt,
-                                        "cells differing in any bit between two GPU runs (no droplets share a "
-                                        "texel, or their changes add as integers)"));
-  add_shadow_parity(twin, float_run, gpu, result);
-  const FieldDifference whole = field_difference(float_run.run.heights, *gpu_heights);
-  if (twin.setup.ordering == DropletOrdering::batch) {
-    result.checks.push_back(bounded_check("parity.cells_differing.gpu_vs_float", double(whole.differing_bits), 0.0,
-                                          std::nullopt, "the whole run, GPU against ref<float> in batch ordering: "
-                                                        "every bit equal"));
-  } else {
-    result.checks.push_back(informative_check("parity.cells_differing.gpu_vs_float", double(whole.differing_bits),
-                                              "the whole run against the sequential ref<float>: droplets never meet, "
-                                              "so only rounding can differ"));
-  }
-}
-
-// The 99th percentile of |b - a| over cells valid in both: the colour scale of a change picture,
-// so that a few cells of extreme change (a crater's rim) do not wash out the rest.
-double robust_scale(const Grid<double>& a, const Grid<double>& b) {
+// The 99th percentile of |b| over valid cells: the colour scale of a side map, so that a few cells
+// of extreme change (a crater's rim) do not wash out the rest.
+double robust_scale(const Grid<double>& map) {
   std::vector<double> magnitudes;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a.is_valid(i) && b.is_valid(i) && b.values[i] != a.values[i]) magnitudes.push_back(std::abs(b.values[i] - a.values[i]));
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    if (map.is_valid(i) && map.values[i] != 0.0) magnitudes.push_back(std::abs(map.values[i]));
   }
   if (magnitudes.empty()) return 0.0;
   const auto at = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(magnitudes.size() - 1));
@@ -405,81 +414,67 @@ double robust_scale(const Grid<double>& a, const Grid<double>& b) {
   return *at;
 }
 
-void write_pictures(const DropletTwin& twin, const DropletRun<double>& truth,
-                    const std::optional<Grid<float>>& gpu_heights, const Grid<float>& float_heights,
-                    const RunOptions& options, CaseResult& result) {
-  if (options.report_dir.empty()) return;
-  const auto folder = options.report_dir / result.name;
-  const auto add = [&](const std::string& file, const std::string& caption) {
-    result.artifacts.push_back({result.name + "/" + file, "image", caption});
-  };
-  const auto& before = twin.input;
-  const FieldTotals totals = field_totals(before);
-  const double exaggeration = write_height_image(before, totals.low, totals.high, folder / "before.png");
-  add("before.png", "terrain before");
-  write_height_image(truth.heights, totals.low, totals.high, folder / "after_cpu.png", exaggeration);
-  add("after_cpu.png", "terrain after, ref<double> (sequential droplets)");
-  const auto change = write_difference_image(before, truth.heights, folder / "erosion_cpu.png",
-                                             robust_scale(before, truth.heights));
-  add("erosion_cpu.png", fmt::format("after - before, ref<double>: blue eroded, red deposited, full colour at {:.3g} "
-                                     "(99th percentile of |change|; max {:.3g})",
-                                     change.scale_used, change.max_abs));
-  Grid<double> zero = before;
-  std::fill(zero.values.begin(), zero.values.end(), 0.0);
-  // With a contrast c, full red at 1/c: the picture is Hydra's min(1, c·amount).
-  const auto add_side_map = [&](const Grid<double>& map, double contrast, const std::string& file,
-                                const std::string& what) {
-    const double scale = contrast > 0.0 ? 1.0 / contrast : robust_scale(zero, map);
-    write_difference_image(zero, map, folder / file, scale);
-    add(file, contrast > 0.0 ? fmt::format("{} with its contrast {} (full red at {:.3g})", what, contrast, scale)
-                             : fmt::format("{}, full red at {:.3g} (99th percentile)", what, scale));
-  };
-  add_side_map(truth.eroded_at_droplet, twin.erosion_contrast, "depth_cpu.png",
-               "Hydra's depth map: erosion at the droplet's texel");
-  add_side_map(truth.deposited_at_droplet, twin.deposition_contrast, "sediment_cpu.png",
-               "Hydra's sediment map: deposition at the droplet's texel");
-  if (twin.setup.ordering == DropletOrdering::batch) {
-    const auto batch = write_difference_image(truth.heights, float_heights.cast<double>(), folder / "batch_vs_sequential.png");
-    add("batch_vs_sequential.png", fmt::format("batch ref<float> - sequential ref<double>: max {:.3g}", batch.max_abs));
-  }
-  if (!gpu_heights) return;
-  const auto gpu = write_difference_image(truth.heights, gpu_heights->cast<double>(), folder / "gpu_vs_cpu.png");
-  add("gpu_vs_cpu.png", fmt::format("GPU - ref<double>: max {:.3g}", gpu.max_abs));
+void add_artifact(CaseResult& result, const std::string& file, const std::string& caption) {
+  result.artifacts.push_back({result.name + "/" + file, "image", caption});
 }
 
-// The terrain before and after (ref<double>, ref<float>, GPU) and Hydra's depth and sediment maps
-// of the truth, in the input's own units, as field files.
-template <class OwnUnits>
-void write_droplet_fields(const DropletTwin& twin, const Grid<double>& input, const DropletRun<double>& truth,
-                          const Grid<double>& float_heights, const OwnUnits& own_units,
-                          const std::optional<Grid<float>>& gpu_heights, const RunOptions& options,
-                          CaseResult& result) {
-  const std::string unit = input.vertical_unit;
-  write_field_files(input, {"input", "terrain", "input", unit, "terrain before"}, options, result);
-  write_field_files(own_units(truth.heights), {"cpu", "terrain", "cpu", unit, "terrain after, ref<double> (sequential "
-                                                                                "droplets)"},
-                    options, result);
-  write_field_files(float_heights,
-                    {"cpu_float", "terrain", "cpu_float", unit, "terrain after, ref<float> (the case's ordering)"},
-                    options, result);
-  const auto amounts = [&](Grid<double> map) {  // amounts scale as heights, without the offset
-    for (double& amount : map.values) amount *= twin.height_scale;
-    map.vertical_unit = unit;
-    return map;
-  };
-  write_field_files(amounts(truth.eroded_at_droplet),
-                    {"eroded_at_droplet_cpu", "eroded_at_droplet", "cpu", unit,
-                     "what the droplets standing on each texel eroded over the run (Hydra's depth map before its "
-                     "contrast), ref<double>"},
-                    options, result);
-  write_field_files(amounts(truth.deposited_at_droplet),
-                    {"deposited_at_droplet_cpu", "deposited_at_droplet", "cpu", unit,
-                     "what the droplets standing on each texel deposited over the run (Hydra's sediment map before "
-                     "its contrast), ref<double>"},
-                    options, result);
-  if (!gpu_heights) return;
-  write_field_files(own_units(gpu_heights->cast<double>()), {"gpu", "terrain", "gpu", unit, "terrain after, GPU"},
-                    options, result);
+// One of Hydra's side maps of the truth: with a contrast c, full red at 1/c (Hydra's
+// min(1, c·amount)); and its field file in the state's unit (amounts scale as heights, without the
+// offset).
+void write_side_map(const DropletTwin& twin, Grid<double> map, double contrast, const std::string& picture,
+                    const std::string& field, const std::string& what, const RunOptions& options, CaseResult& result) {
+  const std::filesystem::path folder = options.report_dir / result.name;
+  Grid<double> zero = map;
+  std::fill(zero.values.begin(), zero.values.end(), 0.0);
+  const double scale = contrast > 0.0 ? 1.0 / contrast : robust_scale(map);
+  write_difference_image(zero, map, folder / picture, scale);
+  add_artifact(result, picture,
+               contrast > 0.0 ? fmt::format("{} with its contrast {} (full red at {:.3g})", what, contrast, scale)
+                              : fmt::format("{}, full red at {:.3g} (99th percentile)", what, scale));
+  for (double& amount : map.values) amount *= twin.own.scale;
+  map.vertical_unit = twin.unit;
+  write_field_files(map, {field + "_cpu", field, "cpu", twin.unit, what + " over the run, ref<double>"}, options, result);
+}
+
+// Hydra's depth and sediment maps of ref<double>'s run (one more run: they are not state) and, in
+// batch ordering, the batch result against the truth.
+void write_pictures(const DropletTwin& twin, const std::vector<BackendEnd>& ends, const RunOptions& options,
+                    CaseResult& result) {
+  if (options.report_dir.empty()) return;
+  const DropletRun<double> truth = twin.reference_double(twin.input, 0, twin.iterations, sequential(twin));
+  write_side_map(twin, truth.eroded_at_droplet, twin.erosion_contrast, "depth_cpu.png", "eroded_at_droplet",
+                 "Hydra's depth map: what the droplets standing on each texel eroded", options, result);
+  write_side_map(twin, truth.deposited_at_droplet, twin.deposition_contrast, "sediment_cpu.png",
+                 "deposited_at_droplet", "Hydra's sediment map: what the droplets standing on each texel deposited",
+                 options, result);
+  if (twin.setup.ordering != DropletOrdering::batch) return;
+  const auto batch = write_difference_image(heights_of<double>(ends[0].final), heights_of<double>(ends[1].final),
+                                            options.report_dir / result.name / "batch_vs_sequential.png");
+  add_artifact(result, "batch_vs_sequential.png",
+               fmt::format("batch ref<float> - sequential ref<double>: max {:.3g} {}", batch.max_abs, twin.unit));
+}
+
+void finish(const DropletTwin& twin, const std::vector<BackendEnd>& ends, const RunOptions& options,
+            CaseResult& result) {
+  result.notes.insert(result.notes.end(), twin.notes.begin(), twin.notes.end());
+  add_ledger_note(ledger_of(ends[0].records.back()), result);
+  if (twin.setup.ordering == DropletOrdering::batch) add_batch_checks(twin, ends, result);
+  write_pictures(twin, ends, options, result);
+  if (ends.size() < 3) return;
+  if (twin.setup.ordering == DropletOrdering::batch) add_whole_run_parity(ends[1], ends[2], result);
+  if (twin.setup.ordering == DropletOrdering::race) {
+    add_race_statistics(twin, twin.own.twin_heights<float>(ends[1].final), options, result);
+  }
+}
+
+// The checks finish adds with a GPU alone, by name.
+std::vector<std::string> finish_gpu_checks(const DropletTwin& twin) {
+  if (twin.setup.ordering == DropletOrdering::batch) return {"parity.cells_differing.gpu_vs_float"};
+  if (twin.setup.ordering == DropletOrdering::disjoint) return {};
+  std::vector<std::string> names = {"race.erosion_correlation.gpu_vs_float", "race.relative_rms.gpu_vs_float",
+                                    "race.material_moved_ratio.gpu_vs_float"};
+  for (const int spacing : race_spacings) names.push_back(fmt::format("race.relative_rms.spacing_{}.gpu_vs_float", spacing));
+  return names;
 }
 
 BenchmarkRow iteration_row(const std::string& algorithm, const std::string& backend, int size, int reps,
@@ -494,66 +489,60 @@ BenchmarkRow iteration_row(const std::string& algorithm, const std::string& back
 
 }  // namespace
 
-Grid<float> run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, const RunOptions& options,
-                             CaseResult& result) {
-  result.width = twin.input.width;
-  result.height = twin.input.height;
-  for (const auto& note : twin.notes) result.notes.push_back(note);
-  if (!options.report_dir.empty()) std::filesystem::create_directories(options.report_dir / result.name);
-
-  if (options.progress) options.progress->stage("CPU reference (double, sequential)");
-  DropletRun<double> truth;
-  const DropletSetup sequential{twin.setup.spacing, DropletOrdering::race};
-  time_cpu(std::max(1, options.cpu_reps), [&] { truth = twin.reference_double(twin.input, twin.iterations, sequential); },
-           result.timings);
-  add_ledger_checks(twin, twin.input, truth, "cpu", result);
-  add_ledger_notes(truth.ledger, result);
-
-  if (options.progress) options.progress->stage("CPU reference (float)");
-  const FloatRun float_run = run_float(twin);
-  add_ledger_checks(twin, twin.input.cast<float>(), float_run.run, "cpu_float", result);
-  if (twin.setup.ordering == DropletOrdering::batch) add_batch_distance(twin, truth.heights, float_run.run.heights, result);
-
-  std::optional<Grid<float>> gpu_heights;
-  if (options.gpu_available) {
-    if (options.progress) options.progress->stage("GPU");
-    add_gpu_checks(twin, float_run, options, result, gpu_heights);
-  } else {
-    for (const auto& name : gpu_check_names(twin)) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
-  }
-  write_pictures(twin, truth, gpu_heights, float_run.run.heights, options, result);
-  if (options.progress) options.progress->stage("terrain descriptors");
-  const auto own_units = [&](Grid<double> heights) {
-    for (double& height : heights.values) height = height * twin.height_scale + twin.height_offset;
-    if (!twin.height_unit.empty()) heights.vertical_unit = twin.height_unit;
-    return heights;
-  };
-  const Grid<double> input = own_units(twin.input);
-  const Grid<double> truth_heights = own_units(truth.heights);
-  const Grid<double> float_as_double = own_units(float_run.run.heights.cast<double>());
-  write_droplet_fields(twin, input, truth, float_as_double, own_units, gpu_heights, options, result);
-  // The GPU's terrain is judged against ref<float> (bit for bit, or by the race figures); against
-  // ref<double> a droplet's discrete path parts at the first rounding that moves its texel, so the
-  // descriptors' GPU-to-double parity would grade that chaos: the descriptors show the references.
-  add_case_descriptors({&input, &truth_heights, &float_as_double, nullptr},
-                       expect, options, result);
-  return float_run.run.heights;
-}
-
 void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise) {
+  twin.initial = height_state(given);
+  twin.unit = given.vertical_unit.empty() ? "m" : given.vertical_unit;
   if (!normalise) {
     twin.input = given;
     return;
   }
   twin.input = normalise_heights(given);
   const auto [low, high] = valid_range(given);
-  twin.height_scale = high > low ? high - low : 1.0;
-  twin.height_offset = low > high ? 0.0 : low;
-  twin.height_unit = given.vertical_unit;
+  twin.own = {.scale = high > low ? high - low : 1.0, .offset = low > high ? 0.0 : low};
   twin.notes.push_back(fmt::format(
       "heights normalised to [0, 1] as seed 000 does ((h - {:.6g})/{:.6g}); the kernel works in texels, so the cell "
-      "size does not enter; the terrain descriptors are measured in the input's own heights",
-      twin.height_offset, twin.height_scale));
+      "size does not enter; the state, its files, pictures and terrain descriptors are in the input's own heights",
+      twin.own.offset, twin.own.scale));
+}
+
+SteppedTwin droplet_stepped_twin(std::shared_ptr<const DropletTwin> twin) {
+  SteppedTwin stepped{.algorithm = twin->algorithm,
+                      .fields = {terrain_field(twin->unit)},
+                      .initial = twin->initial,
+                      .iterations = twin->iterations};
+  stepped.reference_double = [twin]() -> std::unique_ptr<Stepper> {
+    return std::make_unique<ReferenceStepper<double>>(
+        [twin](const Grid<double>& heights, int first, int count) {
+          return twin->reference_double(heights, first, count, sequential(*twin));
+        },
+        twin->own);
+  };
+  stepped.reference_float = [twin]() -> std::unique_ptr<Stepper> {
+    return std::make_unique<ReferenceStepper<float>>(
+        [twin](const Grid<float>& heights, int first, int count) {
+          return twin->reference_float(heights, first, count, twin->setup);
+        },
+        twin->own);
+  };
+  stepped.make_gpu = [twin]() -> std::unique_ptr<Stepper> {
+    return std::make_unique<GpuStepper>(twin->make_gpu(twin->setup), twin->own);
+  };
+  if (twin->setup.ordering == DropletOrdering::race) stepped.gpu_nondeterminism = "the GPU's droplets of a pass race for cells";
+  stepped.gpu_not_described =
+      "the GPU is held to ref<float> (bit for bit, within rounding or by the race figures); against ref<double> a "
+      "droplet's discrete path parts from the truth's at the first rounding that moves its texel (and batch and race "
+      "order the droplets otherwise), so the descriptors' GPU-to-double parity would grade that";
+  stepped.shadow_bounds = [twin](const State&, int count) { return std::vector<ShadowBound>{shadow_bound(*twin, count)}; };
+  stepped.ledger = ledger_terms(twin);
+  stepped.finish = [twin](const std::vector<BackendEnd>& ends, const nlohmann::json&, const RunOptions& options,
+                          CaseResult& result) { finish(*twin, ends, options, result); };
+  stepped.finish_gpu_checks = [twin](const nlohmann::json&) { return finish_gpu_checks(*twin); };
+  return stepped;
+}
+
+MemoryEstimate droplet_checkpoint_memory(double cells, int iterations) {
+  const auto marks = static_cast<double>(shadow_starts(iterations, SteppedTwin{}.checkpoints).size() + 1);
+  return memory_for(cells * marks, "cell-checkpoints", 2.0 * sizeof(double));
 }
 
 std::vector<BenchmarkRow> droplet_benchmark_rows(const DropletTwin& twin, int reps, bool gpu_available,
@@ -562,9 +551,9 @@ std::vector<BenchmarkRow> droplet_benchmark_rows(const DropletTwin& twin, int re
   const int size = twin.input.width;
   long long steps = 0;
   std::vector<double> cpu_times;
-  const DropletSetup sequential{twin.setup.spacing, DropletOrdering::race};
   for (int rep = 0; rep < reps; ++rep) {
-    cpu_times.push_back(cpu_wall_ms([&] { steps = twin.reference_double(twin.input, 1, sequential).ledger.steps; }));
+    cpu_times.push_back(
+        cpu_wall_ms([&] { steps = twin.reference_double(twin.input, 0, 1, sequential(twin)).ledger.steps; }));
   }
   rows.push_back(iteration_row(twin.algorithm, "cpu", size, reps, median(cpu_times), double(steps), environment.cpu,
                                "ref<double>, sequential droplets"));
@@ -573,12 +562,12 @@ std::vector<BenchmarkRow> droplet_benchmark_rows(const DropletTwin& twin, int re
   const int passes = twin.setup.spacing * twin.setup.spacing;
   for (const DropletOrdering ordering : {DropletOrdering::race, DropletOrdering::batch}) {
     const DropletSetup setup{twin.setup.spacing, ordering};
-    const auto gpu_steps = twin.reference_float(input, 1, setup).ledger.steps;
-    GpuFieldRunner gpu = twin.make_gpu(setup);
+    const auto gpu_steps = twin.reference_float(input, 0, 1, setup).ledger.steps;
+    DropletGpu gpu = twin.make_gpu(setup);
     std::vector<double> times;
     for (int rep = 0; rep < reps; ++rep) {
-      gpu.load(input);  // the upload is not timed
-      times.push_back(gpu_wall_ms([&] { gpu.step(0, 1); }));
+      gpu.load(input, 0);  // the upload is not timed
+      times.push_back(gpu_wall_ms([&] { gpu.step(1); }));
     }
     rows.push_back(iteration_row(twin.algorithm, "gpu", size, reps, median(times), double(gpu_steps),
                                  environment.gl_renderer,

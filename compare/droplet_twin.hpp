@@ -1,34 +1,53 @@
-// Running a droplet eroder's twins on one input and checking them (erosion.particle: Hydra's
-// kernel; erosion.beyer: Beyer 2015). Droplets are not a field twin: the GPU may race, so what the
-// twins can promise depends on the ordering of the droplets of a pass (core/params/droplets.hpp).
+// A droplet eroder (erosion.particle: Hydra's kernel; erosion.beyer: Beyer 2015) as a stepped twin
+// that compare/stepped_case.hpp runs. What the twins can promise depends on the ordering of the
+// droplets of a pass (core/params/droplets.hpp); this file says it in the runner's terms.
 //
-// run_droplet_case runs ref<double> in sequential ordering (the truth), ref<float> and the GPU in
-// the case's ordering, and adds:
-//   ledger.closure.{cpu,cpu_float}     the droplet ledger of reference/erosion/droplets.hpp: terrain
-//                                      after + sediment the droplets took away + deposits lost outside
-//                                      - erosion credited outside - clamp - apply rounding = terrain
-//                                      before, relative to Σ|before|
-//   ledger.quanta.cpu_float            batch: the same identity in integer quanta, exactly 0
-//   parity.shadow.*.gpu_vs_float       disjoint, batch: the GPU loaded with ref<float>'s state at up
-//                                      to 8 checkpoints, stepped one iteration beside it
-//   parity.cells_differing.gpu_vs_float  batch: the whole run, bit for bit (disjoint: informative)
-//   determinism.gpu                    disjoint, batch: two GPU runs, bit for bit
-//   race.*                             race: the GPU against the sequential ref<float> over 5 or more
-//                                      runs, reported, not bounded (no error model gives a race's
-//                                      distance before the run), and by spacing 16..1
-//   batch.*_vs_sequential              batch: how far the batch result lands from the sequential truth
-// and the pictures: the terrain before and after, the change, the side maps, the GPU's difference.
+// State: {terrain}, in the input's own heights and vertical unit (m where it names none). The twins
+//   see h_twin = (h − offset)/scale (seed 000's normalisation when the case asks; scale 1, offset 0
+//   otherwise) and their steppers convert. The side maps (what the droplets standing on a texel
+//   eroded and deposited) are not state: no droplet reads them, so a step resumes from the terrain
+//   alone; they are drawn from a run of ref<double>.
+// Steppers: ref<double> runs the droplets of a pass one after the other (the sequential truth),
+//   ref<float> and the GPU in the case's ordering; the droplets of an iteration are numbered by the
+//   iteration (Beyer's random directions), so a shadow step from a checkpoint draws what the walk
+//   draws.
+// Shadow bound of the terrain, per ordering:
+//   batch     0: order-independent integer arithmetic on the state frozen at a pass's start
+//   disjoint  same float operations in the same order at every cell: parity_bounds_same_arithmetic
+//             of writes_per_cell_per_step·lifetime·spacing² additions an iteration, relative to the
+//             input's height range (a bound over 1 % of the range is inconclusive)
+//   race      none (informative): the GPU's droplets of a pass race for cells; determinism.gpu is
+//             not applicable and the GPU's terrain is not described beside ref<double>'s
+// Ledger terms, <term>.{cpu,cpu_float,gpu} (the GPU books no droplet ledger: not applicable there):
+//   ledger.closure   |Σ after + sediment taken away + deposited outside − eroded outside − clamp −
+//                    apply rounding − Σ before| / Σ|before|, in the twin's heights. Bound 1e-12 in
+//                    double and in batch float (the terrain changes by exactly counted quanta);
+//                    sequential float: roundings_per_step roundings of at most u·max|h| for every
+//                    droplet step the run can take, random walk (strict) and worst case (loose)
+//   ledger.quanta    batch: the same identity in integer quanta, exactly 0 (ref<double> counts none)
+// Own checks (SteppedTwin::finish), the GPU's skipped by name without one:
+//   batch.largest_cell_delta_quanta           ref<float>'s largest change of a cell in a pass
+//   batch.{relative_rms,erosion_correlation}_vs_sequential   batch ref<float> against the truth
+//   parity.cells_differing.gpu_vs_float       batch: the whole run, GPU against ref<float>, bound 0
+//   race.*                                    race: the GPU against the sequential ref<float> over 5
+//                                             or more runs, and by spacing 16..1 (reported: no error
+//                                             model gives a race's distance before the run)
+// Pictures and files beside the runner's: Hydra's depth and sediment maps of ref<double>'s run
+// (depth_cpu.png, sediment_cpu.png, eroded_at_droplet_cpu, deposited_at_droplet_cpu), the batch
+// result against the truth (batch_vs_sequential.png), the race by spacing (race_by_spacing.png).
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "compare/field_twin.hpp"
 #include "compare/result.hpp"
+#include "compare/stepped_case.hpp"
 #include "core/grid.hpp"
+#include "core/memory.hpp"
 #include "core/params/droplets.hpp"
 #include "reference/erosion/droplets.hpp"
 
@@ -41,45 +60,79 @@ struct DropletSetup {
   DropletOrdering ordering = DropletOrdering::batch;
 };
 
+// The GPU eroder of one setup: load heights with `done` iterations behind them (the droplets are
+// numbered on from there), step `count` iterations (not synchronised), download.
+struct DropletGpu {
+  std::function<void(const Grid<float>& heights, int done)> load;
+  std::function<void(int count)> step;
+  std::function<Grid<float>()> result;
+};
+
+// The twins' heights against a state's: h_twin = (h − offset)/scale.
+struct HeightScale {
+  double scale = 1.0;
+  double offset = 0.0;
+
+  // (h − offset)/scale in double on valid cells, as normalise_heights computes it, rounded once to
+  // Real; 0 on the others (the twins never read them).
+  template <class Real>
+  Grid<Real> twin_heights(const State& state) const {
+    Grid<Real> heights = state.grid.blank<Real>(Real(0), "1");
+    for (std::size_t i = 0; i < heights.size(); ++i) {
+      if (heights.is_valid(i)) heights.values[i] = static_cast<Real>((state.fields.at(0)[i] - offset) / scale);
+    }
+    return heights;
+  }
+  // h·scale + offset in double. A float comes back from twin_heights<float> as it was (the double
+  // roundings are far below its spacing unless it lies within about 1e-16·offset/scale of 0).
+  template <class Real>
+  State state_of(const Grid<Real>& heights) const {
+    State state{StateGrid::of(heights), {std::vector<double>(heights.size())}};
+    for (std::size_t i = 0; i < heights.size(); ++i) {
+      state.fields[0][i] = static_cast<double>(heights.values[i]) * scale + offset;
+    }
+    return state;
+  }
+};
+
 struct DropletTwin {
   std::string algorithm;  // e.g. erosion.particle
+  State initial;          // the input in its own heights
+  std::string unit;       // their vertical unit
   Heightmap input;        // as the twins see it (normalised when the case asks)
+  HeightScale own;        // the twins' heights against the state's
   DropletSetup setup;     // the case's
   int iterations = 0;
   int lifetime = 0;
   // Float roundings per droplet step that can move material between the terrain and the sediment
-  // (stores and sediment updates): the float ledger's error model.
+  // (stores and sediment updates): the sequential float ledger's error model.
   double roundings_per_step = 0.0;
-  // Writes one droplet step can make to one cell at most: the disjoint parity's error model.
+  // Writes one droplet step can make to one cell at most: the disjoint shadow step's error model.
   double writes_per_cell_per_step = 0.0;
-  // The references from `heights` for `iterations` outer iterations; race and disjoint run the
-  // droplets of a pass one after the other (the sequential truth).
-  std::function<reference::DropletRun<double>(const Grid<double>& heights, int iterations, DropletSetup setup)>
+  // The references: `count` iterations from `heights`, the first numbered `first`; race and
+  // disjoint run the droplets of a pass one after the other (the sequential truth).
+  std::function<reference::DropletRun<double>(const Grid<double>& heights, int first, int count, DropletSetup setup)>
       reference_double;
-  std::function<reference::DropletRun<float>(const Grid<float>& heights, int iterations, DropletSetup setup)>
+  std::function<reference::DropletRun<float>(const Grid<float>& heights, int first, int count, DropletSetup setup)>
       reference_float;
-  // The GPU twin (called only with a current GL context); its step(first, count) runs `count`
-  // outer iterations.
-  std::function<GpuFieldRunner(DropletSetup setup)> make_gpu;
+  std::function<DropletGpu(DropletSetup setup)> make_gpu;  // called only with a current GL context
   std::vector<std::string> notes;  // decisions taken for the user, said in the output
   // Hydra's contrasts of its depth and sediment maps (§4.4.1: c_E, c_D): the pictures show
   // min(1, c·amount) as the add-on writes them; 0 draws the raw maps at their 99th percentile.
   double erosion_contrast = 0.0;
   double deposition_contrast = 0.0;
-  // The input's own heights from the twins' (h_own = h·height_scale + height_offset): the terrain
-  // descriptors are measured in the input's units, not in the normalised [0, 1] the kernel sees.
-  double height_scale = 1.0;
-  double height_offset = 0.0;
-  std::string height_unit;  // the input's vertical unit, when normalised
 };
 
-// The twins' input with normalised heights when `normalise` (seed 000's (h - min)/(max - min)),
-// and the scale and offset that undo it for the descriptors, with a note saying so.
+// The start state, the twins' input (normalised when `normalise`: seed 000's (h - min)/(max - min),
+// with a note saying so) and the scale between them.
 void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise);
 
-// Returns ref<float>'s terrain after the run (in the case's ordering): what a flow map is drawn on.
-Grid<float> run_droplet_case(const DropletTwin& twin, const nlohmann::json& expect, const RunOptions& options,
-                             CaseResult& result);
+// The eroder as the runner's twin: its state, steppers, shadow bounds, ledger terms and own checks.
+SteppedTwin droplet_stepped_twin(std::shared_ptr<const DropletTwin> twin);
+
+// What the runner keeps of a case of `iterations` on `cells` cells: ref<double>'s and ref<float>'s
+// states (a double a cell each) at every shadow start and at the end.
+MemoryEstimate droplet_checkpoint_memory(double cells, int iterations);
 
 // Performance rows for one grid side: ref<double> (sequential) and, with a GPU, its race and batch
 // orderings, one outer iteration per timed run, the median of `reps`, in cell-iterations and droplet

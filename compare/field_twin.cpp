@@ -122,7 +122,7 @@ void write_artifacts(const ReferenceRuns& runs, const std::optional<GpuOutputs>&
   report_stage(options, "pictures");
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
-  write_pictures(runs.cpu, gpu, folder, result);
+  if (options.pictures) write_pictures(runs.cpu, gpu, folder, result);
   write_field_files(runs.cpu, {"cpu", "value", "cpu", "1", "CPU reference (double)"}, options, result);
   write_field_files(runs.cpu_float.cast<double>(), {"cpu_float", "value", "cpu_float", "1", "CPU reference (float)"},
                     options, result);
@@ -186,7 +186,7 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& grid, const nlohmann
     for (const auto& name : field_spec_names(expect, "gpu")) result.checks.push_back(skipped_check(name, unavailable));
   }
   write_artifacts(runs, gpu, options, result);
-  if (case_describes_terrain(result)) {
+  if (case_describes_terrain(result) && options.descriptors) {
     report_stage(options, "terrain descriptors");
     const Grid<double> cpu_float = runs.cpu_float.cast<double>();
     const std::optional<Grid<double>> gpu_heights =

@@ -29,13 +29,10 @@ namespace gt {
 
 // The GPU side keeps its buffers between repetitions: load (upload, not timed), run (all
 // iterations, not synchronised: the caller brackets it with glFinish), result (download).
-// The droplet eroders also give step(first, count): `count` iterations from the current state, the
-// first of them numbered `first`.
 struct GpuFieldRunner {
   std::function<void(const Grid<float>&)> load;
   std::function<void()> run;
   std::function<Grid<float>()> result;
-  std::function<void(int first, int count)> step;  // empty for generators
 };
 
 struct FieldTwin {
@@ -53,11 +50,17 @@ struct FieldTwin {
 struct RunOptions {
   int cpu_reps = 3;
   int gpu_reps = 5;
+  // States along a stepped run the shadow steps start from (--checkpoints); 0: the algorithm's own.
+  int checkpoints = 0;
   bool gpu_available = false;
   std::string gpu_unavailable_reason;
   std::filesystem::path report_dir;  // artifacts go to report_dir / case name /
   std::filesystem::path dataset_dir; // datasets/: the real DEM that case descriptors are shown beside
   Progress* progress = nullptr;
+  // A cheap run (the Python module's pictures=False, descriptors=False): the runners draw no
+  // pictures of the fields and compute no terrain descriptors; checks and field files stay.
+  bool pictures = true;
+  bool descriptors = true;
 };
 
 // The "expect" keys run_field_twin reads (spec vectors of the field: expected cells, their total, a

@@ -12,7 +12,7 @@
 //                        drown the ledger's precision: it only needs to outlast the relief)
 //   vegetation           the initial density in [0, 1] on every column
 //   steps                iterations (reference/erosion/layered/iteration.hpp)
-// layered_setup(resolved, surface) throws InputError for a surface with no-data cells (the layered
+// layered_setup(params or resolved, surface) throws InputError for a surface with no-data cells (the layered
 // ground holds none; the message names the remedy, a crop), a bad profile, parameters or surface,
 // and a grid whose state does not fit in memory (validate_layered_inputs).
 // run_layered_reference(setup) runs ref<double> from the setup's start and returns the ground and
@@ -27,7 +27,7 @@
 #include "core/grid.hpp"
 #include "core/layered/layered_ground.hpp"
 #include "core/layered/layered_water.hpp"
-#include "core/params.hpp"
+#include "core/param_table.hpp"
 #include "core/params/layered.hpp"
 
 namespace gt {
@@ -41,7 +41,23 @@ struct LayeredSetup {
   Heightmap surface;
 };
 
+// A case's parameters: erosion.layered's and the initial profile's (see above).
+struct LayeredCaseParams {
+  LayeredParams layered;
+  int steps = 200;
+  std::string soil = "loam";
+  double topsoil_thickness = 0.5;
+  double subsoil_thickness = 1.5;
+  double soft_rock_thickness = 5.0;
+  double hard_rock_thickness = 1000.0;
+  double vegetation = 0.0;
+};
+
+// The declarations (core/param_table.hpp: erosion.layered's, then the profile's) and their ParamSpecs.
+const ParamTable<LayeredCaseParams>& layered_case_param_table();
 const ParamSpecs& layered_case_param_specs();
+LayeredSetup layered_setup(const LayeredCaseParams& params, const Heightmap& surface);
+// The same from resolve_params(..., layered_case_param_specs(), ...).
 LayeredSetup layered_setup(const nlohmann::json& resolved, const Heightmap& surface);
 
 struct LayeredOutcome {

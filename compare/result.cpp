@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 namespace gt {
 
 namespace {
@@ -82,6 +84,16 @@ bool MutationReport::passed() const {
     if (!baseline.clean) return false;
   }
   return killed() == static_cast<int>(mutants.size());
+}
+
+std::vector<std::string> failing_checks(const CaseResult& result) {
+  std::vector<std::string> failing;
+  for (const Check& check : result.checks) {
+    if (!is_failure(check.status)) continue;
+    failing.push_back(fmt::format("{} = {:.6g}{}", check.name, check.value,
+                                  check.threshold ? fmt::format(" (bound {:.6g})", *check.threshold) : ""));
+  }
+  return failing;
 }
 
 }  // namespace gt

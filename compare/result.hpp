@@ -77,6 +77,8 @@ struct CaseResult {
   nlohmann::json descriptors;
   std::string error;          // set when status == error
   double seconds = 0.0;       // wall time of the whole case (twins, checks, pictures); balances shards
+  std::string tier;           // the suite tier its case file declares (compare/cases.hpp); empty: ad hoc
+  std::optional<double> expected_seconds;  // what it was expected to take (compare/case_seconds.hpp)
   // When the case was run again (--retries): the attempts before the last, whose results these are.
   struct Attempt {
     Outcome status = Outcome::fail;
@@ -188,10 +190,16 @@ struct Report {
   std::string baseline_file;               // --baseline, and what changed against it
   std::optional<ReportDiff> baseline_diff;
   std::optional<ShardInfo> shard;          // --shard K/N: which part of the selection this report holds
+  // What a tiered run left out and how to run it (compare/cases.hpp Tier), e.g. "tier report: ...";
+  // empty when nothing was left out by a tier.
+  std::string scope;
 };
 
 // Outcome of a whole case from its checks (and the expectation list).
 Outcome case_outcome(const CaseResult& result);
+
+// The case's failed and errored checks as "name = value (bound b)", in check order.
+std::vector<std::string> failing_checks(const CaseResult& result);
 
 // Whether a case failed in a way nobody expected: it errored, a check failed that the expectation
 // list does not name with that outcome, or it was flaky and is not on the flake list.

@@ -19,6 +19,7 @@
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
+#include "core/memory.hpp"
 #include "gpu/timing.hpp"
 
 namespace gt {
@@ -150,7 +151,8 @@ void keep_worst(ShadowWorst& worst, const Distance& d, const ShadowBound& bound,
   const double ratio = !std::isfinite(d.max_abs) || (limit <= 0.0 && d.max_abs > 0.0)
                            ? std::numeric_limits<double>::infinity()
                            : (limit > 0.0 ? d.max_abs / limit : 0.0);
-  if (ratio > worst.ratio) {
+  // Ties (no bound: every ratio 0 or infinite) keep the largest distance.
+  if (ratio > worst.ratio || (ratio == worst.ratio && d.max_abs > worst.distance)) {
     worst.distance = d.max_abs;
     worst.bound = bound;
     worst.ratio = ratio;
@@ -212,14 +214,24 @@ GpuRun run_gpu(const SteppedTwin& twin, const BackendRun& truth, const BackendRu
     measured.from_double.push_back(std::move(distances));
   });
   stepper->set_state(twin.initial, 0);
-  stepper->update(twin.iterations);
-  result.checks.push_back(bounded_check(
-      "determinism.gpu", static_cast<double>(differing_values(measured.run.final(), stepper->get_state())), 0.0,
-      std::nullopt,
-      "values of any field whose bits differ between two GPU runs of the same start state (the first stepped through "
-      "the checkpoints, the second in one go)"));
+  const double one_go_ms = gpu_wall_ms([&] { stepper->update(twin.iterations); });
+  const auto differing = static_cast<double>(differing_values(measured.run.final(), stepper->get_state()));
+  if (!twin.gpu_nondeterminism.empty()) {
+    result.checks.push_back(not_applicable_check(
+        "determinism.gpu", fmt::format("{} ({} values differ between two runs)", twin.gpu_nondeterminism, differing)));
+  } else {
+    result.checks.push_back(bounded_check(
+        "determinism.gpu", differing, 0.0, std::nullopt,
+        "values of any field whose bits differ between two GPU runs of the same start state (the first stepped "
+        "through the checkpoints, the second in one go)"));
+  }
   report_stage(options, "gpu shadow steps");
   shadow_steps(twin, float_run, *stepper, measured);
+  if (twin.time_walks && !twin.make_timed_gpu) {
+    result.timings.gpu_ms = one_go_ms;
+    result.timings.gpu_reps = 1;
+    return measured;
+  }
   const int reps = twin.time_walks ? 1 : options.gpu_reps;
   if (reps == 0) return measured;
   auto timed = twin.make_timed_gpu ? twin.make_timed_gpu() : std::move(stepper);
@@ -286,8 +298,15 @@ void add_end_pair(const SteppedTwin& twin, std::size_t f, const std::string& pai
   const FieldDecl& field = twin.fields[f];
   const Distance d = distance(twin, f, a, b);
   const std::string exact = d.differing == 0 ? "bit-exact; " : fmt::format("{} values differ; ", d.differing);
-  result.checks.push_back(informative_check(fmt::format("parity.{}.max_abs.{}", field.name, pair), d.max_abs,
-                                            fmt::format("{}max |difference| in {} {}", exact, field.unit, end_of_run_detail)));
+  const std::string name = fmt::format("parity.{}.max_abs.{}", field.name, pair);
+  if (twin.gpu_bit_exact && pair == "gpu_vs_float") {
+    result.checks.push_back(bounded_check(
+        name, d.max_abs, 0.0, std::nullopt,
+        fmt::format("{}max |difference| in {} at the end of the run; a bit-exact twin: bound 0", exact, field.unit)));
+  } else {
+    result.checks.push_back(informative_check(
+        name, d.max_abs, fmt::format("{}max |difference| in {} {}", exact, field.unit, end_of_run_detail)));
+  }
   result.checks.push_back(informative_check(fmt::format("parity.{}.rms.{}", field.name, pair), d.rms,
                                             fmt::format("RMS of the difference in {} {}", field.unit, end_of_run_detail)));
 }
@@ -336,7 +355,7 @@ void add_divergence(const SteppedTwin& twin, const BackendRun& truth, const Back
     add_series("ref<float>", "float",
                [&](std::size_t i) { return distance(twin, f, truth.path[i], float_run.path[i]).max_abs; }, true);
   }
-  attach_plot({plot}, options.report_dir, "parity.png",
+  attach_plot({plot}, options, "parity.png",
               "distance from ref<double> at the checkpoints, each field: GPU (solid), ref<float> (dashed)", result);
 }
 
@@ -412,7 +431,7 @@ void write_artifacts(const SteppedTwin& twin, const BackendRun& truth, const Bac
   report_stage(options, "pictures");
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
-  write_pictures(twin, truth, float_run, gpu, folder, result);
+  if (options.pictures) write_pictures(twin, truth, float_run, gpu, folder, result);
   write_fields(twin, twin.initial, "input", "the start state", options, result);
   write_fields(twin, truth.final(), "cpu", "after the run, ref<double>", options, result);
   write_fields(twin, float_run.final(), "cpu_float", "after the run, ref<float>", options, result);
@@ -422,19 +441,30 @@ void write_artifacts(const SteppedTwin& twin, const BackendRun& truth, const Bac
 void add_descriptors(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run,
                      const BackendRun* gpu, const nlohmann::json& expect, const RunOptions& options,
                      CaseResult& result) {
-  if (!case_describes_terrain(result)) return;
+  if (!case_describes_terrain(result) || !options.descriptors) return;
   report_stage(options, "terrain descriptors");
   const std::size_t shown = twin.shown_field;
   const Grid<double> input = component_grid(twin.fields, twin.initial, shown, 0);
   const Grid<double> cpu = component_grid(twin.fields, truth.final(), shown, 0);
   const Grid<double> cpu_float = component_grid(twin.fields, float_run.final(), shown, 0);
+  const bool described = twin.gpu_not_described.empty();
+  if (!described) result.notes.push_back("terrain descriptors of the references alone: " + twin.gpu_not_described);
   const std::optional<Grid<double>> gpu_terrain =
-      gpu ? std::optional<Grid<double>>(component_grid(twin.fields, gpu->final(), shown, 0)) : std::nullopt;
+      gpu && described ? std::optional<Grid<double>>(component_grid(twin.fields, gpu->final(), shown, 0)) : std::nullopt;
   add_case_descriptors({&input, &cpu, &cpu_float, gpu_terrain ? &*gpu_terrain : nullptr}, expect, options, result);
-  if (gpu) return;
+  if (gpu || !described) return;
   for (const auto& name : descriptor_gpu_check_names(expect)) {
     result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
   }
+}
+
+// ref<double>'s and ref<float>'s states at every mark, kept for the divergence and the shadow starts.
+MemoryEstimate kept_states_memory(const SteppedTwin& twin) {
+  double values = 0.0;
+  for (const FieldDecl& field : twin.fields) values += field.components;
+  const double states = 2.0 * static_cast<double>(path_marks(twin).size());
+  return memory_for(static_cast<double>(twin.initial.grid.cells()) * states, "states' cells",
+                    values * sizeof(double));
 }
 
 }  // namespace
@@ -456,6 +486,9 @@ std::vector<std::string> gpu_check_names(const SteppedTwin& twin, const nlohmann
     names.push_back(fmt::format("parity.shadow.{}.multi.gpu_vs_float", field.name));
   }
   for (const auto& name : field_spec_names(expect, "gpu")) names.push_back(name);
+  if (twin.finish_gpu_checks) {
+    for (const auto& name : twin.finish_gpu_checks(expect)) names.push_back(name);
+  }
   for (const FieldDecl& field : twin.fields) {
     for (const char* pair : {"gpu_vs_float", "gpu_vs_double"}) {
       names.push_back(fmt::format("parity.{}.max_abs.{}", field.name, pair));
@@ -466,10 +499,13 @@ std::vector<std::string> gpu_check_names(const SteppedTwin& twin, const nlohmann
   return names;
 }
 
-void run_stepped_case(const SteppedTwin& twin, const nlohmann::json& expect, const RunOptions& options,
+void run_stepped_case(const SteppedTwin& given, const nlohmann::json& expect, const RunOptions& options,
                       CaseResult& result) {
-  check_state_decl(twin.fields, twin.algorithm);
-  check_state_shape(twin.fields, twin.initial, twin.algorithm + " start state");
+  check_state_decl(given.fields, given.algorithm);
+  check_state_shape(given.fields, given.initial, given.algorithm + " start state");
+  SteppedTwin twin = given;
+  if (options.checkpoints > 0) twin.checkpoints = options.checkpoints;
+  require_memory(kept_states_memory(twin), result.name);
   result.width = twin.initial.grid.width;
   result.height = twin.initial.grid.height;
   const BackendRun truth = run_double(twin, options, result);
@@ -499,10 +535,10 @@ void run_stepped_case(const SteppedTwin& twin, const nlohmann::json& expect, con
     for (const auto& name : gpu_check_names(twin, expect)) result.checks.push_back(skipped_check(name, unavailable));
   }
   add_divergence(twin, truth, float_run, gpu ? &*gpu : nullptr, options, result);
-  if (twin.plot_ledger) {
-    LedgerRecords records = {{"cpu", truth.ledger}, {"cpu_float", float_run.ledger}};
-    if (gpu) records.emplace_back("gpu", gpu->run.ledger);
-    twin.plot_ledger(records, options, result);
+  if (twin.finish) {
+    std::vector<BackendEnd> ends = {{"cpu", truth.final(), truth.ledger}, {"cpu_float", float_run.final(), float_run.ledger}};
+    if (gpu) ends.push_back({"gpu", gpu->run.final(), gpu->run.ledger});
+    twin.finish(ends, expect, options, result);
   }
   write_artifacts(twin, truth, float_run, gpu_run, options, result);
   RunOptions described = options;

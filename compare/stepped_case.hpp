@@ -25,9 +25,10 @@
 //                                         (the "expect" keys of field_spec_shape)
 // Without a GPU every check the GPU half makes is there by the same name as `skip` with the reason
 // (gpu_check_names): the harness, not each algorithm, decides what is skipped.
-// Schedule: the shadow steps start after k·N/C iterations, k = 0..C−1 (C = checkpoints, every
-// iteration of a run of fewer; 0 alone for a run of none, whose shadow is a load and a download);
-// the runs keep their states there and at the end.
+// Schedule: the shadow steps start after k·N/C iterations, k = 0..C−1 (C = checkpoints: the run's
+// --checkpoints, else the algorithm's; every iteration of a run of fewer; 0 alone for a run of none,
+// whose shadow is a load and a download); the runs keep their states there and at the end, and the
+// memory they need is estimated before the first step (InputError when it is not there).
 // Files: every component of every field for the input and each backend, <f>_<backend>.exr/.npy;
 // pictures of the shown field before and after, its change and the GPU's difference, and each
 // other field at the end of ref<double>'s run; the divergence plot.
@@ -74,8 +75,12 @@ struct LedgerTerm {
   std::function<Check(const LedgerRun& run)> evaluate;
 };
 
-// Each backend's ledger records by backend name, for an algorithm's own plots of them.
-using LedgerRecords = std::vector<std::pair<std::string, std::vector<LedgerRecord>>>;
+// One backend's end of run, for the algorithm's own checks and pictures.
+struct BackendEnd {
+  std::string backend;  // cpu, cpu_float or gpu
+  const State& final;
+  const std::vector<LedgerRecord>& records;  // the stepper's ledger() after the run
+};
 
 struct SteppedTwin {
   std::string algorithm;
@@ -90,13 +95,30 @@ struct SteppedTwin {
   // The GPU stepper that is timed, where it differs (one that keeps no ledger); unset: make_gpu.
   std::function<std::unique_ptr<Stepper>()> make_timed_gpu;
   // A slow model (minutes a run): ref<double>'s walk through the checkpoints is its one timed run,
-  // and the GPU takes one timed run; otherwise RunOptions' cpu_reps and gpu_reps.
+  // and the GPU's run in one go (determinism's second run, or make_timed_gpu's) its one; otherwise
+  // RunOptions' cpu_reps and gpu_reps.
   bool time_walks = false;
+  // Why two GPU runs of one state may differ (droplets racing for a cell); empty: they may not, and
+  // determinism.gpu grades it (bound 0). Where it is set determinism.gpu is not applicable.
+  std::string gpu_nondeterminism;
+  // The GPU does ref<float>'s float operations in the same order (a bit-exact twin): the whole run's
+  // parity.<f>.max_abs.gpu_vs_float is graded, bound 0, as every shadow step is; otherwise it is
+  // informative (rounding differences grow along a run by an amount no model gives before it).
+  bool gpu_bit_exact = false;
+  // Why the GPU's end of run is not described beside ref<double>'s (it runs another model than the
+  // truth, and parity.descriptors.gpu_vs_double would grade that); empty: it is, and that check grades
+  // it. Where it is set the descriptors show the references alone, and a note says why.
+  std::string gpu_not_described;
   // The bounds after `count` iterations from `from` (ref<float>'s state), one per declared field.
   std::function<std::vector<ShadowBound>(const State& from, int count)> shadow_bounds;
   std::vector<LedgerTerm> ledger;
-  // Optional: the algorithm's pictures of the backends' ledgers (attach_plot).
-  std::function<void(const LedgerRecords& records, const RunOptions& options, CaseResult& result)> plot_ledger;
+  // Optional: the algorithm's own checks and pictures of the backends' ends (ends[0] ref<double>,
+  // ends[1] ref<float>, ends[2] the GPU when it ran). A check it adds for the GPU alone is named in
+  // finish_gpu_checks, so that a run without a GPU has it as `skip` by the same name.
+  std::function<void(const std::vector<BackendEnd>& ends, const nlohmann::json& expect, const RunOptions& options,
+                     CaseResult& result)>
+      finish;
+  std::function<std::vector<std::string>(const nlohmann::json& expect)> finish_gpu_checks;
   std::size_t shown_field = 0;  // drawn before and after, held to spec vectors, described as terrain
 };
 

@@ -335,4 +335,29 @@ TEST_F(BeyerGpuRandom, CompassDirectionsAreNumberedAsTheReferenceNumbersThem) {
   EXPECT_EQ(gt::field_difference(reference.heights, gpu.result()).differing_bits, 0u);
 }
 
+// A state resumed after one iteration numbers its droplets from there (the stepper protocol's
+// set_state(state, 1)): the reference from iteration 1 ends where two iterations in one go end,
+// bit for bit. The number matters (on the plateau an iteration numbered 1 draws other directions
+// than one numbered 0), and the GPU loaded with one iteration behind its heights draws as the
+// reference does.
+TEST_F(BeyerGpuRandom, AStateResumedMidRunDrawsWhatTheWholeRunDraws) {
+  const Grid<float> field = plateau_with_bowl();
+  auto constants = terrain_constants(DropletOrdering::batch);
+  constants.spacing = 5;
+  constants.seed = 12345;
+  const auto whole = gt::reference::beyer_erosion(field, constants, 2, DropletOrdering::batch);
+  const auto first = gt::reference::beyer_erosion(field, constants, 1, DropletOrdering::batch);
+  const auto resumed = gt::reference::beyer_erosion(first.heights, constants, 1, DropletOrdering::batch, 1);
+  EXPECT_EQ(gt::field_difference(whole.heights, resumed.heights).differing_bits, 0u);
+  const auto numbered_1 = gt::reference::beyer_erosion(field, constants, 1, DropletOrdering::batch, 1);
+  EXPECT_GT(gt::field_difference(first.heights, numbered_1.heights).differing_bits, 0u);
+  gt::gpu::BeyerErosion gpu(field.width, field.height, constants);
+  gpu.load(field, 1);
+  gpu.step(1);
+  EXPECT_EQ(gt::field_difference(numbered_1.heights, gpu.result()).differing_bits, 0u);
+  gpu.load(first.heights, 1);
+  gpu.step(1);
+  EXPECT_EQ(gt::field_difference(whole.heights, gpu.result()).differing_bits, 0u);
+}
+
 }  // namespace

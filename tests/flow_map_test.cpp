@@ -120,8 +120,12 @@ TEST(FlowMapParams, DisjointNeedsTheFlowSpacingThatKeepsDropletsApart) {
   gt::ParticleConstants erosion;
   erosion.lifetime = 10;
   erosion.ordering = DropletOrdering::disjoint;
-  nlohmann::json resolved = {{"flow_map", true}, {"flow_spacing", 24}, {"flow_contrast", 0.5},
-                             {"interpolate_flow", true}};
+  // flow_constants reads resolve_params' output: every parameter, the unnamed ones at their defaults.
+  const auto resolved_with = [](const nlohmann::json& given) {
+    return gt::resolve_params("erosion.particle", gt::particle_param_specs(), given);
+  };
+  nlohmann::json resolved = resolved_with(
+      {{"flow_map", true}, {"flow_spacing", 24}, {"flow_contrast", 0.5}, {"interpolate_flow", true}});
   EXPECT_THROW(gt::flow_constants(resolved, erosion), gt::InputError);
   resolved["flow_spacing"] = 25;
   EXPECT_EQ(gt::flow_constants(resolved, erosion)->spacing, 25);

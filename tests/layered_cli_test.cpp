@@ -36,12 +36,13 @@ TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
     EXPECT_EQ(layered["status"], "pass") << layered["name"];
     const auto names = check_names(layered);
     for (const char* expected : {"ledger.materials.cpu", "ledger.total.cpu", "ledger.conversions.cpu",
-                                 "ledger.materials.cpu_float", "layers.invalid.cpu", "layers.surface.cpu"}) {
+                                 "ledger.materials.cpu_float", "layers.invalid.cpu", "layers.surface.cpu",
+                                 "ledger.materials.gpu", "parity.shadow.soil.gpu_vs_float"}) {
       EXPECT_THAT(names, Contains(std::string(expected))) << layered["name"];
     }
     const std::string name = layered["name"];
     for (const char* file : {"surface_material.png", "cross_section.png", "material_masks.png", "ledger.png",
-                             "topsoil_cpu.npy", "mask_org.npy"}) {
+                             "soil_topsoil_org_cpu.npy", "mask_org.npy"}) {
       EXPECT_TRUE(fs::exists(out / name / file)) << name << ": " << file;
     }
     const bool wet = name.find("rain") != std::string::npos || name.find("river") != std::string::npos;

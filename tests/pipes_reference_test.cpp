@@ -946,7 +946,8 @@ TEST(PipesReference, PipeCountIsFourOrEight) {
   const auto terrain = bowl(6, 5);
   auto six = quiet_params(1);
   six.pipe_count = 6;
-  EXPECT_NE(refusal([&] { gt::pipe_constants(six, terrain); }).find("pipes = 6 must be 4 or 8"), std::string::npos);
+  EXPECT_NE(refusal([&] { gt::pipe_constants(six, terrain); }).find("pipes = \"6\" is unknown; expected one of 4, 8"),
+            std::string::npos);
   // A 4-pipe run holds no diagonal flux: a state that has some is refused, not silently dropped.
   const auto dry = field(6, 5, 1.0, 1.0, [](int, int) { return 0.0; });
   auto diagonal_flux = wet_state<double>(terrain, dry);

@@ -3,12 +3,14 @@
 // exports every component of every declared field for the input and each backend. And every
 // eroder, stepped or custom: a run without a GPU has `skip` for exactly the checks that a run with
 // one adds, by the same names, and nothing else differs (dEQP's checkSupport: the harness says
-// what did not run, under the name it would have had). A new algorithm joins these tests by its
-// registry row alone.
+// what did not run, under the name it would have had); the droplet eroders so in each ordering,
+// whose GPU-only checks differ (race statistics, colour and flow map). A new algorithm joins these
+// tests by its registry row alone.
 #include <algorithm>
 #include <filesystem>
-#include <set>
 #include <functional>
+#include <ostream>
+#include <set>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -39,14 +41,38 @@ std::vector<std::string> stepped_algorithms() {
   return algorithms_where([](const gt::Algorithm& algorithm) { return algorithm.kind == gt::CaseKind::stepped; });
 }
 
-std::vector<std::string> eroders() {
-  return algorithms_where([](const gt::Algorithm& algorithm) { return algorithm.name.rfind("erosion.", 0) == 0; });
+// An algorithm with parameters beside its defaults, named for the test by `label`.
+struct Variant {
+  std::string algorithm;
+  nlohmann::json params = nlohmann::json::object();
+  std::string label;
+};
+
+void PrintTo(const Variant& variant, std::ostream* out) { *out << variant.algorithm << " " << variant.params.dump(); }
+
+std::vector<Variant> eroders() {
+  std::vector<Variant> variants;
+  for (const std::string& name : algorithms_where(
+           [](const gt::Algorithm& algorithm) { return algorithm.name.rfind("erosion.", 0) == 0; })) {
+    variants.push_back({name});
+  }
+  return variants;
 }
 
-// The algorithm's defaults on a small noisy cone, with a short run where it has a count to shorten.
-gt::PreparedTwin prepare(const std::string& name) {
+// The droplet eroders in their other orderings (the defaults are batch): race with the colour and
+// flow map, disjoint with droplets kept apart on the small cone.
+std::vector<Variant> droplet_orderings() {
+  return {{"erosion.particle", {{"ordering", "race"}, {"colour", "astronaut"}}, "race_colour"},
+          {"erosion.particle", {{"ordering", "disjoint"}, {"lifetime", 5}, {"spacing", 15}, {"flow_spacing", 15}}, "disjoint"},
+          {"erosion.beyer", {{"ordering", "race"}}, "race"},
+          {"erosion.beyer", {{"ordering", "disjoint"}, {"lifetime", 5}, {"radius", 2.0}, {"spacing", 19}}, "disjoint"}};
+}
+
+// The algorithm's defaults (and `params`) on a small noisy cone, with a short run where it has a
+// count to shorten.
+gt::PreparedTwin prepare(const std::string& name, const nlohmann::json& params = nlohmann::json::object()) {
   const gt::Algorithm& algorithm = gt::find_algorithm(name);
-  nlohmann::json given = nlohmann::json::object();
+  nlohmann::json given = params;
   for (const gt::ParamSpec& spec : *algorithm.params) {
     if (spec.name == "iterations" || spec.name == "steps") given[spec.name] = 6;
   }
@@ -55,8 +81,8 @@ gt::PreparedTwin prepare(const std::string& name) {
   return algorithm.prepare(gt::resolve_params(name, *algorithm.params, given), gt::load_input(cone, nullptr, {}));
 }
 
-gt::CaseResult run(const std::string& name, bool gpu_available) {
-  gt::PreparedTwin prepared = prepare(name);
+gt::CaseResult run(const std::string& name, bool gpu_available, const nlohmann::json& params = nlohmann::json::object()) {
+  gt::PreparedTwin prepared = prepare(name, params);
   gt::RunOptions options;
   options.cpu_reps = 0;
   options.gpu_reps = 0;
@@ -80,7 +106,7 @@ gt::CaseResult run(const std::string& name, bool gpu_available) {
 }
 
 class SteppedProtocol : public gt::testing::GlTestWithParam<std::string> {};
-class GpuSkips : public gt::testing::GlTestWithParam<std::string> {};
+class GpuSkips : public gt::testing::GlTestWithParam<Variant> {};
 
 TEST_P(SteppedProtocol, DeclaresEachFieldOnceWithAUnitAndAMeaning) {
   const auto prepared = prepare(GetParam());
@@ -119,8 +145,9 @@ TEST_P(SteppedProtocol, ExportsEveryDeclaredFieldForEveryBackend) {
 }
 
 TEST_P(GpuSkips, ACpuOnlyRunSkipsExactlyTheChecksTheGpuRunAdds) {
-  const auto with_gpu = run(GetParam(), true);
-  const auto without = run(GetParam(), false);
+  const Variant& variant = GetParam();
+  const auto with_gpu = run(variant.algorithm, true, variant.params);
+  const auto without = run(variant.algorithm, false, variant.params);
   ASSERT_TRUE(with_gpu.error.empty()) << with_gpu.error;
   ASSERT_TRUE(without.error.empty()) << without.error;
   std::set<std::string> gpu_run, skipped, ran;
@@ -148,7 +175,14 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
   return name;
 }
 
+std::string variant_name(const ::testing::TestParamInfo<Variant>& info) {
+  std::string name = info.param.algorithm + (info.param.label.empty() ? "" : "_" + info.param.label);
+  std::replace(name.begin(), name.end(), '.', '_');
+  return name;
+}
+
 INSTANTIATE_TEST_SUITE_P(Registry, SteppedProtocol, ::testing::ValuesIn(stepped_algorithms()), test_name);
-INSTANTIATE_TEST_SUITE_P(Eroders, GpuSkips, ::testing::ValuesIn(eroders()), test_name);
+INSTANTIATE_TEST_SUITE_P(Eroders, GpuSkips, ::testing::ValuesIn(eroders()), variant_name);
+INSTANTIATE_TEST_SUITE_P(DropletOrderings, GpuSkips, ::testing::ValuesIn(droplet_orderings()), variant_name);
 
 }  // namespace

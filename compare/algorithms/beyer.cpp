@@ -1,8 +1,21 @@
-// The driver's view of Beyer 2015's droplet erosion (seed 000 §2.7): parameters to constants and
-// the twins (reference/erosion/beyer.hpp, gpu/erosion/beyer.hpp) as a droplet twin
-// (compare/droplet_twin.hpp: ledger, orderings, race statistics, pictures, performance rows). The
-// brush weights of eq. 2.42 (Fig. 2.10) and a hand-derived step are the spec vectors of
-// tests/beyer_test.cpp.
+// `erosion.beyer`: Beyer 2015's droplet erosion (seed 000 §2.7, eqs. 2.35-2.45; digest 000 §3.7,
+// Appendix B item 6): droplets with inertia, a capacity, evaporation and a radius brush (eq. 2.42).
+// Parameters to constants (core/params/beyer.hpp), the twins (reference/erosion/beyer.hpp,
+// gpu/erosion/beyer.hpp) as a droplet twin that the stepped runner runs (compare/droplet_twin.hpp:
+// state, orderings, shadow bounds, ledger, race statistics, pictures) and the performance rows.
+//
+// Inputs:  a heightmap, normalised to [0, 1] as seed 000 does unless `normalised` is off.
+// Outputs: the state {terrain} of each twin in the input's own heights; Hydra-style depth and
+//          sediment maps of ref<double>'s run.
+// Units:   heights in the input's vertical unit (the twins' normalised heights are dimensionless);
+//          positions, speeds and the brush radius in samples (the cell size does not enter).
+// Decisions: the droplets of a pass are ordered as `ordering` says (core/params/droplets.hpp) and
+//          ref<double> runs them one after the other (the truth). A droplet's random directions are
+//          numbered by its iteration, pass and block, so a state resumed after `done` iterations
+//          draws them on from there (the references' first_iteration, the GPU's load).
+// Checks: the runner's and the droplet twin's; the brush weights of eq. 2.42 (Fig. 2.10) and a
+//          hand-derived step are the spec vectors of tests/beyer_test.cpp.
+// Mutants: compare/mutants/beyer.cpp.
 #include <cmath>
 #include <memory>
 
@@ -20,10 +33,10 @@
 namespace gt {
 namespace {
 
-// The GPU object lives as long as the runner's closures.
-GpuFieldRunner beyer_runner(std::shared_ptr<gpu::BeyerErosion> gpu) {
-  return {[gpu](const Grid<float>& heights) { gpu->load(heights); }, [gpu] { gpu->run(); },
-          [gpu] { return gpu->result(); }, [gpu](int, int count) { gpu->step(count); }};
+// The GPU object lives as long as the closures.
+DropletGpu beyer_gpu(std::shared_ptr<gpu::BeyerErosion> gpu) {
+  return {[gpu](const Grid<float>& heights, int done) { gpu->load(heights, done); },
+          [gpu](int count) { gpu->step(count); }, [gpu] { return gpu->result(); }};
 }
 
 BeyerConstants with_setup(BeyerConstants constants, DropletSetup setup) {
@@ -38,10 +51,11 @@ double brush_samples(const BeyerConstants& constants) {
   return side * side;
 }
 
-DropletTwin beyer_twin(const Heightmap& input, const BeyerConstants& constants) {
+// The twins on `given` (normalised when asked); `constants` are those of the twins' heights.
+DropletTwin beyer_twin(const Heightmap& given, bool normalised, const BeyerConstants& constants) {
   DropletTwin twin;
   twin.algorithm = "erosion.beyer";
-  twin.input = input;
+  set_droplet_input(twin, given, normalised);
   twin.setup = {constants.spacing, constants.ordering};
   twin.iterations = constants.iterations;
   twin.lifetime = constants.lifetime;
@@ -49,16 +63,16 @@ DropletTwin beyer_twin(const Heightmap& input, const BeyerConstants& constants) 
   // samples (a store each, one sediment update): each sample, a distinct cell, written once.
   twin.roundings_per_step = 2.0 * brush_samples(constants);
   twin.writes_per_cell_per_step = 1.0;
-  twin.reference_double = [constants](const Grid<double>& heights, int iterations, DropletSetup setup) {
-    return reference::beyer_erosion(heights, with_setup(constants, setup), iterations,
-                                    reference_ordering(setup.ordering));
+  twin.reference_double = [constants](const Grid<double>& heights, int first, int count, DropletSetup setup) {
+    return reference::beyer_erosion(heights, with_setup(constants, setup), count, reference_ordering(setup.ordering),
+                                    first);
   };
-  twin.reference_float = [constants](const Grid<float>& heights, int iterations, DropletSetup setup) {
-    return reference::beyer_erosion(heights, with_setup(constants, setup), iterations,
-                                    reference_ordering(setup.ordering));
+  twin.reference_float = [constants](const Grid<float>& heights, int first, int count, DropletSetup setup) {
+    return reference::beyer_erosion(heights, with_setup(constants, setup), count, reference_ordering(setup.ordering),
+                                    first);
   };
-  twin.make_gpu = [constants, width = input.width, height = input.height](DropletSetup setup) {
-    return beyer_runner(std::make_shared<gpu::BeyerErosion>(width, height, with_setup(constants, setup)));
+  twin.make_gpu = [constants, width = given.width, height = given.height](DropletSetup setup) {
+    return beyer_gpu(std::make_shared<gpu::BeyerErosion>(width, height, with_setup(constants, setup)));
   };
   return twin;
 }
@@ -70,8 +84,7 @@ DropletTwin make_twin(const nlohmann::json& resolved, const Heightmap& given) {
   const bool normalised = resolved.at("normalised").get<bool>();
   const Heightmap input = normalised ? normalise_heights(given) : given;
   const BeyerConstants c = beyer_constants(resolved, input);
-  DropletTwin twin = beyer_twin(input, c);
-  set_droplet_input(twin, given, normalised);
+  DropletTwin twin = beyer_twin(given, normalised, c);
   if (given.has_mask()) {
     twin.notes.push_back("a droplet whose cell touches a no-data sample has left the map: it ends and its sediment "
                          "leaves with it; the brush skips no-data samples");
@@ -90,12 +103,7 @@ DropletTwin make_twin(const nlohmann::json& resolved, const Heightmap& given) {
 }
 
 PreparedTwin prepare_beyer(const nlohmann::json& resolved, const LoadedInput& input) {
-  PreparedTwin prepared;
-  prepared.kind = CaseRun([twin = make_twin(resolved, input.heights)](const nlohmann::json& expect, const RunOptions& options,
-                                                            CaseResult& result) {
-    run_droplet_case(twin, expect, options, result);
-  });
-  return prepared;
+  return {.kind = droplet_stepped_twin(std::make_shared<const DropletTwin>(make_twin(resolved, input.heights)))};
 }
 
 // A noisy cone normalised to [0, 1] with the defaults at spacing 4, up to 1024² (as Hydra's rows).
@@ -109,7 +117,7 @@ std::vector<BenchmarkRow> benchmark_beyer(const BenchmarkOptions& options, bool 
                                   {"peak", 30.0}, {"noise", 1.0}, {"seed", 7}};
     const Heightmap field = normalise_heights(load_input(input, nullptr, {}).heights);
     const auto resolved = resolve_params("erosion.beyer", beyer_param_specs(), {{"iterations", 1}});
-    for (auto& row : droplet_benchmark_rows(beyer_twin(field, beyer_constants(resolved, field)), options.reps,
+    for (auto& row : droplet_benchmark_rows(beyer_twin(field, false, beyer_constants(resolved, field)), options.reps,
                                             gpu_available, environment)) {
       rows.push_back(std::move(row));
     }
@@ -125,13 +133,15 @@ Algorithm beyer_algorithm() {
           .source = "seed 000 §2.7, eqs. 2.35-2.45 (digest 000 §3.7, Appendix B item 6)",
           .params = &beyer_param_specs(),
           .prepare = prepare_beyer,
-          .kind = CaseKind::custom,
+          .kind = CaseKind::stepped,
           .benchmark = benchmark_beyer,
           .expect_shape = descriptor_expect_shape(),
           // As erosion.particle's without colour and flow map: the same grids are kept; measured within
           // this by tests/memory_estimates_test.cpp at 768².
-          .memory = [](const nlohmann::json&, const LoadedInput& input) {
-            return memory_for(static_cast<double>(input.heights.size()), "cells", 300 + descriptor_bytes_per_cell);
+          .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
+            const double cells = static_cast<double>(input.heights.size());
+            return memory_for(cells, "cells", 300 + descriptor_bytes_per_cell) +
+                   droplet_checkpoint_memory(cells, resolved.at("iterations").get<int>());
           }};
 }
 

@@ -42,6 +42,8 @@
 // threshold and solid apply, the noise parameters do not, ref<float> and the GPU mesh the samples
 // rounded to float, and there are no normal checks (they compare two ways of differentiating the
 // noise).
+#include "compare/algorithms/cave.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <future>
@@ -80,21 +82,16 @@ struct Block {
   CaveParams params;  // with a volume: origin and solid apply, size is the volume's, the noise fields do not
   std::shared_ptr<const Volume<double>> volume;  // a density read from a file; null: the seed's noise
   Mesher mesher = Mesher::tetrahedra;
-  EdgePlacement placement = EdgePlacement::linear;
-  std::string mesh_format = "ply";
+  EdgePlacement placement;  // the case's (CaveMeshParams)
+  std::string mesh_format;
 };
 
+constexpr Choice<EdgePlacement> placement_choices[] = {{"linear", EdgePlacement::linear},
+                                                       {"midpoint", EdgePlacement::midpoint}};
+
 const ParamSpecs& block_specs(Mesher mesher) {
-  static const auto make = [](const char* default_placement) {
-    ParamSpecs specs = cave_param_specs();
-    specs.push_back({"placement", ParamKind::choice, default_placement, 0, 0, {"linear", "midpoint"}, "",
-                     "vertex on a crossing edge: linear interpolation (the seed's final version) or the midpoint"});
-    specs.push_back({"mesh_format", ParamKind::choice, "ply", 0, 0, {"ply", "obj", "off"}, "",
-                     "file format of the meshes written beside the report"});
-    return specs;
-  };
-  static const ParamSpecs tetrahedra = make("linear");
-  static const ParamSpecs cubes = make("midpoint");
+  static const ParamSpecs tetrahedra = param_specs(cave_mesh_param_table());
+  static const ParamSpecs cubes = param_specs(cave_mesh_param_table(), cave_mesh_defaults_for_cubes());
   return mesher == Mesher::tetrahedra ? tetrahedra : cubes;
 }
 
@@ -428,15 +425,17 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
 }
 
 Block block_from_json(Mesher mesher, const nlohmann::json& resolved, const LoadedInput& input) {
+  const auto given = params_from_json(cave_mesh_param_table(), resolved);
   Block block;
-  block.params = cave_params_from_json(resolved);
+  block.params = given.block;
+  require_noise_range(block.params);
   if (input.volume) {
     block.volume = std::make_shared<const Volume<double>>(*input.volume);
     block.params.size = {input.volume->nx - 1, input.volume->ny - 1, input.volume->nz - 1};
   }
   block.mesher = mesher;
-  block.placement = resolved.at("placement") == "linear" ? EdgePlacement::linear : EdgePlacement::midpoint;
-  block.mesh_format = resolved.at("mesh_format");
+  block.placement = given.placement;
+  block.mesh_format = given.mesh_format;
   const std::array<std::int64_t, 3> samples = {block.params.size[0] + 1, block.params.size[1] + 1,
                                                block.params.size[2] + 1};
   if (!lattice_range_fits(lattice_origin(block.params), samples, block.params.solid)) {
@@ -493,6 +492,7 @@ std::vector<BenchmarkRow> benchmark_mesher(const BenchmarkOptions& options, bool
                                            const Environment& environment) {
   std::vector<BenchmarkRow> rows;
   for (const int side : benchmark_sides) {
+    if (!within_table_sizes(std::pow(double(side), 3), options)) continue;
     CaveParams params;
     params.size = {side, side, side};
     const auto density = reference::cave_density<double>(params);
@@ -535,13 +535,30 @@ MemoryEstimate block_memory(const nlohmann::json& resolved, const LoadedInput& i
   if (input.volume) {
     samples = static_cast<double>(input.volume->values.size());
   } else {
-    const double padding = resolved.at("solid").get<bool>() ? 2.0 : 0.0;
-    for (const char* axis : {"size_x", "size_y", "size_z"}) samples *= resolved.at(axis).get<double>() + 1.0 + padding;
+    const CaveParams block = params_from_json(cave_mesh_param_table(), resolved).block;
+    const double padding = block.solid ? 2.0 : 0.0;
+    for (const int cells : block.size) samples *= cells + 1.0 + padding;
   }
   return memory_for(samples, "lattice samples", 6000);
 }
 
 }  // namespace
+
+CaveMeshParams cave_mesh_defaults_for_cubes() { return {.placement = EdgePlacement::midpoint}; }
+
+const ParamTable<CaveMeshParams>& cave_mesh_param_table() {
+  using C = CaveMeshParams;
+  static const ParamTable<C> table = [] {
+    ParamTable<C> rows = nested(&C::block, cave_param_table());
+    rows.push_back(choice_param("placement", &C::placement, placement_choices, "",
+                                "vertex on a crossing edge: linear interpolation (the seed's final version) or the "
+                                "midpoint"));
+    rows.push_back(choice_param("mesh_format", &C::mesh_format, {"ply", "obj", "off"}, "",
+                                "file format of the meshes written beside the report"));
+    return rows;
+  }();
+  return table;
+}
 
 std::vector<Algorithm> cave_algorithms() {
   return {

@@ -28,6 +28,8 @@
 //                          seed's "places with visibly missing data"): `warn` above 0, not a
 //                          failure: it is the seed's budget, not a meshing error
 //   ring.high_water_bytes, ring.triangles_held   informative; plot of the path.
+#include "compare/algorithms/cave.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -56,42 +58,30 @@ namespace {
 
 constexpr std::size_t bytes_per_soup_vertex = 2 * 3 * sizeof(float);  // position and normal
 
+// The path of a case (CaveEndlessParams), its direction as an axis and a sign.
 struct Path {
   CaveParams big_cube;
-  int slabs = 20;
-  int axis = 0;  // the direction of flight
-  int sign = 1;
-  std::size_t max_vertices = 200000;
+  int slabs;
+  int axis;  // the direction of flight
+  int sign;
+  std::size_t max_vertices;  // a multiple of 3
 };
 
 const ParamSpecs& endless_specs() {
-  static const ParamSpecs specs = [] {
-    ParamSpecs declared = cave_param_specs();
-    // The endless cave is made of open chunks: its default is the one value it accepts, so that
-    // an ad-hoc run without --set runs.
-    for (auto& spec : declared) {
-      if (spec.name == "solid") spec.default_value = false;
-    }
-    declared.push_back({"slabs", ParamKind::integer, 20, 1, 2000, {}, "count",
-                        "slabs appended along the path, one per lattice unit of flight"});
-    declared.push_back({"direction", ParamKind::choice, "+x", 0, 0, {"+x", "-x", "+y", "-y", "+z", "-z"}, "",
-                        "the camera's straight flight: the face slabs are added on"});
-    declared.push_back({"max_vertices", ParamKind::integer, 200000, 3, 1e9, {}, "soup vertex",
-                        "ring-buffer capacity (the seed's MAX_VERTICES; rounded down to a multiple of 3)"});
-    return declared;
-  }();
+  static const ParamSpecs specs = param_specs(cave_endless_param_table());
   return specs;
 }
 
 Path path_from_json(const nlohmann::json& resolved) {
+  const auto given = params_from_json(cave_endless_param_table(), resolved);
   Path path;
-  path.big_cube = cave_params_from_json(resolved);
+  path.big_cube = given.big_cube;
+  require_noise_range(path.big_cube);
   if (path.big_cube.solid) throw InputError("cave.endless is made of open chunks: set solid=false");
-  path.slabs = resolved.at("slabs");
-  const std::string direction = resolved.at("direction");
-  path.sign = direction[0] == '+' ? 1 : -1;
-  path.axis = direction[1] - 'x';
-  path.max_vertices = resolved.at("max_vertices").get<std::size_t>() / 3 * 3;
+  path.slabs = given.slabs;
+  path.sign = given.direction[0] == '+' ? 1 : -1;
+  path.axis = given.direction[1] - 'x';
+  path.max_vertices = given.max_vertices / 3 * 3;
   return path;
 }
 
@@ -341,7 +331,7 @@ void add_ring_checks(const Path& path, const std::vector<Mesh>& chunks, const Ru
     missing.y.push_back(double(steps[step].window_missing));
   }
   plot.series = {generated, held, missing};
-  attach_plot({plot}, options.report_dir, "ring.png",
+  attach_plot({plot}, options, "ring.png",
               "triangles generated, held by the ring buffer and missing from the window", result);
 }
 
@@ -417,14 +407,30 @@ PreparedTwin prepare_path(const nlohmann::json& resolved, const LoadedInput& inp
 // slabs of 31²), both backends; the ring buffer is simulated by counts and costs nothing. Slabs
 // are sized by the block's largest face, whichever the direction.
 MemoryEstimate path_memory(const nlohmann::json& resolved, const LoadedInput&) {
-  const double x = resolved.at("size_x").get<double>() + 1.0;
-  const double y = resolved.at("size_y").get<double>() + 1.0;
-  const double z = resolved.at("size_z").get<double>() + 1.0;
-  const double slab_samples = resolved.at("slabs").get<double>() * std::max({x * y, y * z, x * z});
+  const auto given = params_from_json(cave_endless_param_table(), resolved);
+  const double x = given.big_cube.size[0] + 1.0;
+  const double y = given.big_cube.size[1] + 1.0;
+  const double z = given.big_cube.size[2] + 1.0;
+  const double slab_samples = given.slabs * std::max({x * y, y * z, x * z});
   return memory_for(x * y * z, "samples of the big cube", 2000) + memory_for(slab_samples, "slab samples", 1500);
 }
 
 }  // namespace
+
+const ParamTable<CaveEndlessParams>& cave_endless_param_table() {
+  using C = CaveEndlessParams;
+  static const ParamTable<C> table = [] {
+    ParamTable<C> rows = nested(&C::big_cube, cave_param_table());
+    rows.push_back(integer_param("slabs", &C::slabs, 1, 2000, "count",
+                                 "slabs appended along the path, one per lattice unit of flight"));
+    rows.push_back(choice_param("direction", &C::direction, {"+x", "-x", "+y", "-y", "+z", "-z"}, "",
+                                "the camera's straight flight: the face slabs are added on"));
+    rows.push_back(integer_param("max_vertices", &C::max_vertices, 3, 1e9, "soup vertex",
+                                 "ring-buffer capacity (the seed's MAX_VERTICES; rounded down to a multiple of 3)"));
+    return rows;
+  }();
+  return table;
+}
 
 Algorithm cave_endless_algorithm() {
   return {.name = "cave.endless",

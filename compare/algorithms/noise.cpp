@@ -512,7 +512,7 @@ void add_walk(const NoiseParams& params, const nlohmann::json& expect, const Run
   if (options.gpu_available) plot.series.push_back(series(reduced, &WalkPoint::gpu_error, "GPU, origin reduced", false));
   plot.series.push_back(series(plain, &WalkPoint::bound, "error model", true));
   plot.series.push_back(series(reduced, &WalkPoint::bound, "error model, origin reduced", true));
-  attach_plot({plot}, options.report_dir, "walk.png", "largest error vs double along the walk away from the origin",
+  attach_plot({plot}, options, "walk.png", "largest error vs double along the walk away from the origin",
               result);
 }
 

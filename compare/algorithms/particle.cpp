@@ -1,15 +1,43 @@
-// The driver's view of seed 000's particle (droplet) erosion: parameters to constants, the twins
-// (reference/erosion/particle.hpp, gpu/erosion/particle.hpp) as a droplet twin
-// (compare/droplet_twin.hpp: ledger, orderings, race statistics, pictures), the hand-derived
-// droplets of a case (spec.droplet.*) and the performance rows beside the thesis's Table 5.1.
+// `erosion.particle`: seed 000's particle (droplet) water erosion, Hydra's kernel (§4.4.1,
+// Algorithms 4-7, eqs. 4.5-4.6, Appendix A; digest 000 §4.4), with its colour transport (§4.5,
+// Algorithm 8, eq. 4.9) and flow map (§4.7, eqs. 4.12-4.13): parameters to constants
+// (core/params/particle.hpp), the twins (reference/erosion/particle.hpp, gpu/erosion/particle.hpp)
+// as a droplet twin that the stepped runner runs (compare/droplet_twin.hpp: state, orderings, shadow
+// bounds, ledger, race statistics), the hand-derived droplets of a case and the performance rows
+// beside the thesis's Table 5.1.
+//
+// Inputs:  a heightmap, normalised to [0, 1] as seed 000 does unless `normalised` is off; with
+//          `colour`, a bundled texture resampled bilinearly to the grid and sRGB-decoded.
+// Outputs: the state {terrain} of each twin in the input's own heights; Hydra's depth and sediment
+//          maps of ref<double>'s run; the transported colour; the flow map of the eroded terrain.
+// Units:   heights in the input's vertical unit (the twins' normalised heights are dimensionless);
+//          positions in texels (the cell size does not enter); colour linear RGBA; flow 0..1.
+// Decisions: the droplets of a pass are ordered as `ordering` says (core/params/droplets.hpp) and
+//          ref<double> runs them one after the other (the truth). No iteration number enters
+//          Hydra's kernel (a droplet starts at every texel each iteration), so a state resumes
+//          from its heights alone. The colour and the flow map are whole-run checks beside the
+//          stepped state: no droplet's path reads them back into the terrain.
+// Checks, beside the runner's and the droplet twin's:
+//   spec.droplet.{positions,sediment,cells}.cpu  the case's hand-derived droplet ("expect": "droplet"),
+//                                       ref<double>, within the case's tolerance
+//   colour.created.{cpu,cpu_float}      no colour channel leaves the range it started in (blends are
+//                                       convex combinations); colour.psnr_db.float_vs_double shown
+//   parity.colour.channels_differing.gpu_vs_float, parity.side_maps.cells_differing.gpu_vs_float
+//                                       batch and disjoint: colour and side maps bit for bit; race:
+//                                       race.colour_channels_differing, race.colour_psnr_db reported
+//   flow.max_abs.float_vs_double, parity.flow.cells_differing.gpu_vs_float   the flow map each twin
+//                                       draws on ref<float>'s eroded terrain (race: race.flow.* reported)
+// Mutants: compare/mutants/particle.cpp.
 #include <algorithm>
 #include <cmath>
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
@@ -34,10 +62,10 @@
 namespace gt {
 namespace {
 
-// The GPU object lives as long as the runner's closures.
-GpuFieldRunner particle_runner(std::shared_ptr<gpu::ParticleErosion> gpu) {
-  return {[gpu](const Grid<float>& heights) { gpu->load(heights); }, [gpu] { gpu->run(); },
-          [gpu] { return gpu->result(); }, [gpu](int, int count) { gpu->step(count); }};
+// The GPU object lives as long as the closures.
+DropletGpu particle_gpu(std::shared_ptr<gpu::ParticleErosion> gpu) {
+  return {[gpu](const Grid<float>& heights, int) { gpu->load(heights); }, [gpu](int count) { gpu->step(count); },
+          [gpu] { return gpu->result(); }};
 }
 
 ParticleConstants with_setup(ParticleConstants constants, DropletSetup setup) {
@@ -46,10 +74,11 @@ ParticleConstants with_setup(ParticleConstants constants, DropletSetup setup) {
   return constants;
 }
 
-DropletTwin particle_twin(const Heightmap& input, const ParticleConstants& constants) {
+// The twins on `given` (normalised when asked); `constants` are those of the twins' heights.
+DropletTwin particle_twin(const Heightmap& given, bool normalised, const ParticleConstants& constants) {
   DropletTwin twin;
   twin.algorithm = "erosion.particle";
-  twin.input = input;
+  set_droplet_input(twin, given, normalised);
   twin.setup = {constants.spacing, constants.ordering};
   twin.iterations = constants.iterations;
   twin.lifetime = constants.lifetime;
@@ -57,16 +86,15 @@ DropletTwin particle_twin(const Heightmap& input, const ParticleConstants& const
   // A step erodes (each of 4 distinct corners, or the texel, once) or deposits (at the texel):
   // one write to a cell at most.
   twin.writes_per_cell_per_step = 1.0;
-  twin.reference_double = [constants](const Grid<double>& heights, int iterations, DropletSetup setup) {
-    return reference::particle_erosion(heights, with_setup(constants, setup), iterations,
-                                       reference_ordering(setup.ordering));
+  // Hydra's iterations are alike: the first iteration's number does not enter.
+  twin.reference_double = [constants](const Grid<double>& heights, int, int count, DropletSetup setup) {
+    return reference::particle_erosion(heights, with_setup(constants, setup), count, reference_ordering(setup.ordering));
   };
-  twin.reference_float = [constants](const Grid<float>& heights, int iterations, DropletSetup setup) {
-    return reference::particle_erosion(heights, with_setup(constants, setup), iterations,
-                                       reference_ordering(setup.ordering));
+  twin.reference_float = [constants](const Grid<float>& heights, int, int count, DropletSetup setup) {
+    return reference::particle_erosion(heights, with_setup(constants, setup), count, reference_ordering(setup.ordering));
   };
-  twin.make_gpu = [constants, width = input.width, height = input.height](DropletSetup setup) {
-    return particle_runner(std::make_shared<gpu::ParticleErosion>(width, height, with_setup(constants, setup)));
+  twin.make_gpu = [constants, width = given.width, height = given.height](DropletSetup setup) {
+    return particle_gpu(std::make_shared<gpu::ParticleErosion>(width, height, with_setup(constants, setup)));
   };
   return twin;
 }
@@ -129,8 +157,7 @@ ParticleScenario make_scenario(const nlohmann::json& resolved, const Heightmap& 
   const Heightmap input = normalised ? normalise_heights(given) : given;
   ParticleScenario scenario{{}, particle_constants(resolved, input)};
   const auto& c = scenario.constants;
-  scenario.twin = particle_twin(input, c);
-  set_droplet_input(scenario.twin, given, normalised);
+  scenario.twin = particle_twin(given, normalised, c);
   scenario.twin.erosion_contrast = resolved.at("erosion_contrast");
   scenario.twin.deposition_contrast = resolved.at("deposition_contrast");
   auto& notes = scenario.twin.notes;
@@ -303,10 +330,49 @@ void write_colour_fields(const reference::ColourMap<Real>& colour, const Grid<do
   }
 }
 
+// The GPU's colour of the whole run against ref<float>'s (`float_run`, from `colour`): bit for bit
+// in batch and disjoint orderings, with the side maps; a race's distance reported.
+void add_gpu_colour_checks(const ParticleScenario& scenario, const reference::ColourMap<float>& colour,
+                           const reference::DropletRun<float>& float_run, const RunOptions& options,
+                           CaseResult& result) {
+  const auto& c = scenario.constants;
+  const auto& input = scenario.twin.input;
+  gpu::ParticleErosion gpu(input.width, input.height, c, true);
+  gpu.load(input.cast<float>());
+  gpu.load_colour(colour);
+  gpu.run();
+  const auto gpu_colour = gpu.colour_result();
+  write_colour_fields(gpu_colour, input, "gpu", "after the run, GPU", options, result);
+  const double differing = double(channels_differing(float_run.colour, gpu_colour));
+  if (c.ordering == DropletOrdering::race) {
+    result.checks.push_back(informative_check(
+        "race.colour_channels_differing.gpu_vs_float", differing,
+        "colour channels the racing GPU leaves different from the sequential ref<float>"));
+    result.checks.push_back(informative_check("race.colour_psnr_db.gpu_vs_float",
+                                              colour_psnr(float_run.colour, gpu_colour),
+                                              "PSNR of the racing GPU's colour against the sequential ref<float>'s, "
+                                              "RGB, peak 1"));
+    return;
+  }
+  result.checks.push_back(bounded_check("parity.colour.channels_differing.gpu_vs_float", differing, 0.0, std::nullopt,
+                                        "the whole run's colour, GPU against ref<float>: every bit equal"));
+  const double side_maps = double(field_difference(float_run.eroded_at_droplet, gpu.eroded_at_droplet()).differing_bits +
+                                  field_difference(float_run.deposited_at_droplet, gpu.deposited_at_droplet()).differing_bits);
+  result.checks.push_back(bounded_check("parity.side_maps.cells_differing.gpu_vs_float", side_maps, 0.0, std::nullopt,
+                                        "Hydra's depth and sediment maps (before their contrasts), GPU against "
+                                        "ref<float>: every bit equal"));
+}
+
+std::vector<std::string> colour_gpu_checks(DropletOrdering ordering) {
+  if (ordering == DropletOrdering::race) {
+    return {"race.colour_channels_differing.gpu_vs_float", "race.colour_psnr_db.gpu_vs_float"};
+  }
+  return {"parity.colour.channels_differing.gpu_vs_float", "parity.side_maps.cells_differing.gpu_vs_float"};
+}
+
 // Colour transport (§4.5) of a case that asks for it, on the whole run: the sequential truth creates
-// no colour; the GPU's colour and side maps equal ref<float>'s bit for bit in batch and disjoint
-// orderings; a race's colour distance is reported.
-void add_colour_checks(const ParticleScenario& scenario, const RunOptions& options, CaseResult& result) {
+// no colour; with `gpu`, the GPU's colour against ref<float>'s.
+void add_colour_checks(const ParticleScenario& scenario, bool gpu, const RunOptions& options, CaseResult& result) {
   const auto& c = scenario.constants;
   const auto& colour = *scenario.colour;
   const auto& input = scenario.twin.input;
@@ -334,40 +400,7 @@ void add_colour_checks(const ParticleScenario& scenario, const RunOptions& optio
     write_colour_fields(colour, input, "input", "before the droplets", options, result);
     write_colour_fields(truth.colour, input, "cpu", "after the run, ref<double> (sequential)", options, result);
   }
-  if (!options.gpu_available) {
-    const bool race = c.ordering == DropletOrdering::race;
-    for (const char* name : race ? std::vector<const char*>{"race.colour_channels_differing.gpu_vs_float",
-                                                            "race.colour_psnr_db.gpu_vs_float"}
-                                 : std::vector<const char*>{"parity.colour.channels_differing.gpu_vs_float",
-                                                            "parity.side_maps.cells_differing.gpu_vs_float"}) {
-      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
-    }
-    return;
-  }
-  gpu::ParticleErosion gpu(input.width, input.height, c, true);
-  gpu.load(input.cast<float>());
-  gpu.load_colour(colour_float);
-  gpu.run();
-  const auto gpu_colour = gpu.colour_result();
-  write_colour_fields(gpu_colour, input, "gpu", "after the run, GPU", options, result);
-  const double differing = double(channels_differing(float_run.colour, gpu_colour));
-  if (c.ordering == DropletOrdering::race) {
-    result.checks.push_back(informative_check(
-        "race.colour_channels_differing.gpu_vs_float", differing,
-        "colour channels the racing GPU leaves different from the sequential ref<float>"));
-    result.checks.push_back(informative_check("race.colour_psnr_db.gpu_vs_float",
-                                              colour_psnr(float_run.colour, gpu_colour),
-                                              "PSNR of the racing GPU's colour against the sequential ref<float>'s, "
-                                              "RGB, peak 1"));
-    return;
-  }
-  result.checks.push_back(bounded_check("parity.colour.channels_differing.gpu_vs_float", differing, 0.0, std::nullopt,
-                                        "the whole run's colour, GPU against ref<float>: every bit equal"));
-  const double side_maps = double(field_difference(float_run.eroded_at_droplet, gpu.eroded_at_droplet()).differing_bits +
-                                  field_difference(float_run.deposited_at_droplet, gpu.deposited_at_droplet()).differing_bits);
-  result.checks.push_back(bounded_check("parity.side_maps.cells_differing.gpu_vs_float", side_maps, 0.0, std::nullopt,
-                                        "Hydra's depth and sediment maps (before their contrasts), GPU against "
-                                        "ref<float>: every bit equal"));
+  if (gpu) add_gpu_colour_checks(scenario, colour_float, float_run, options, result);
 }
 
 // The flow map as a grey colour map (R = G = B = F, linear), for write_colour_image.
@@ -382,10 +415,43 @@ reference::ColourMap<Real> flow_as_colour(const Grid<Real>& flow) {
   return grey;
 }
 
+// The GPU's flow map of `eroded` against ref<float>'s (`float_map`): bit for bit in batch and
+// disjoint orderings; a race's distance from the sequential map reported.
+void add_gpu_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, const Grid<float>& float_map,
+                         const RunOptions& options, CaseResult& result) {
+  gpu::FlowMap gpu(eroded.width, eroded.height, flow);
+  gpu.load(eroded);
+  gpu.run();
+  const Grid<float> gpu_flow = gpu.result();
+  const FieldDifference difference = field_difference(float_map, gpu_flow);
+  if (flow.ordering == DropletOrdering::race) {
+    result.checks.push_back(informative_check("race.flow.cells_differing.gpu_vs_float", double(difference.differing_bits),
+                                              "flow map texels the racing GPU leaves different from the sequential "
+                                              "ref<float> (paths crossing in a pass overwrite each other)"));
+    result.checks.push_back(informative_check("race.flow.max_abs.gpu_vs_float", difference.max_abs,
+                                              "largest concentration difference, racing GPU against ref<float>"));
+  } else {
+    result.checks.push_back(bounded_check(
+        "parity.flow.cells_differing.gpu_vs_float", double(difference.differing_bits), 0.0, std::nullopt,
+        "the flow map after the plug pass, GPU against ref<float> on the same heights: every bit equal (disjoint: no "
+        "two droplets of a pass touch a common texel; batch: integer weight counts)"));
+  }
+  if (!options.report_dir.empty()) {
+    write_colour_image(flow_as_colour(gpu_flow), options.report_dir / result.name / "flow_gpu.png");
+    write_field_files(gpu_flow.cast<double>(), {"flow_gpu", "flow", "gpu", "1", "flow map (§4.7), GPU"}, options,
+                      result);
+    result.artifacts.push_back({result.name + "/flow_gpu.png", "image", "flow map, GPU (as flow_cpu.png)"});
+  }
+}
+
+std::vector<std::string> flow_gpu_checks(DropletOrdering ordering) {
+  if (ordering == DropletOrdering::race) return {"race.flow.cells_differing.gpu_vs_float", "race.flow.max_abs.gpu_vs_float"};
+  return {"parity.flow.cells_differing.gpu_vs_float"};
+}
+
 // The flow map (§4.7) of the eroded terrain `eroded` (ref<float>'s: every twin reads the same
-// heights, so the flow kernels are compared alone): the GPU equals ref<float> bit for bit in batch
-// and disjoint orderings; a race's distance from the sequential map is reported.
-void add_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, const RunOptions& options,
+// heights, so the flow kernels are compared alone), drawn by both references and, with `gpu`, the GPU.
+void add_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, bool gpu, const RunOptions& options,
                      CaseResult& result) {
   FlowConstants sequential = flow;
   sequential.ordering = DropletOrdering::race;
@@ -409,38 +475,7 @@ void add_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, const
                                 "flow map, ref<double> (sequential): concentration 0 black to 1 white, shown as a "
                                 "linear image (sRGB)"});
   }
-  if (!options.gpu_available) {
-    const bool race = flow.ordering == DropletOrdering::race;
-    for (const char* name : race ? std::vector<const char*>{"race.flow.cells_differing.gpu_vs_float",
-                                                            "race.flow.max_abs.gpu_vs_float"}
-                                 : std::vector<const char*>{"parity.flow.cells_differing.gpu_vs_float"}) {
-      result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
-    }
-    return;
-  }
-  gpu::FlowMap gpu(eroded.width, eroded.height, flow);
-  gpu.load(eroded);
-  gpu.run();
-  const Grid<float> gpu_flow = gpu.result();
-  const FieldDifference difference = field_difference(float_run.concentration, gpu_flow);
-  if (flow.ordering == DropletOrdering::race) {
-    result.checks.push_back(informative_check("race.flow.cells_differing.gpu_vs_float", double(difference.differing_bits),
-                                              "flow map texels the racing GPU leaves different from the sequential "
-                                              "ref<float> (paths crossing in a pass overwrite each other)"));
-    result.checks.push_back(informative_check("race.flow.max_abs.gpu_vs_float", difference.max_abs,
-                                              "largest concentration difference, racing GPU against ref<float>"));
-  } else {
-    result.checks.push_back(bounded_check(
-        "parity.flow.cells_differing.gpu_vs_float", double(difference.differing_bits), 0.0, std::nullopt,
-        "the flow map after the plug pass, GPU against ref<float> on the same heights: every bit equal (disjoint: no "
-        "two droplets of a pass touch a common texel; batch: integer weight counts)"));
-  }
-  if (!options.report_dir.empty()) {
-    write_colour_image(flow_as_colour(gpu_flow), options.report_dir / result.name / "flow_gpu.png");
-    write_field_files(gpu_flow.cast<double>(), {"flow_gpu", "flow", "gpu", "1", "flow map (§4.7), GPU"}, options,
-                      result);
-    result.artifacts.push_back({result.name + "/flow_gpu.png", "image", "flow map, GPU (as flow_cpu.png)"});
-  }
+  if (gpu) add_gpu_flow_checks(flow, eroded, float_run.concentration, options, result);
 }
 
 // Hydra's Table 5.1 (digest 000 §6.2): total time of 50 iterations at spacing 4, lifetime 50.
@@ -479,8 +514,8 @@ std::vector<BenchmarkRow> benchmark_particle(const BenchmarkOptions& options, bo
                                   {"peak", 30.0}, {"noise", 1.0}, {"seed", 7}};
     const Heightmap field = normalise_heights(load_input(input, nullptr, {}).heights);
     const auto resolved = resolve_params("erosion.particle", particle_param_specs(), {{"iterations", 1}});
-    for (auto& row : droplet_benchmark_rows(particle_twin(field, particle_constants(resolved, field)), options.reps,
-                                            gpu_available, environment)) {
+    for (auto& row : droplet_benchmark_rows(particle_twin(field, false, particle_constants(resolved, field)),
+                                            options.reps, gpu_available, environment)) {
       rows.push_back(std::move(row));
     }
   }
@@ -492,16 +527,34 @@ std::vector<BenchmarkRow> benchmark_particle(const BenchmarkOptions& options, bo
   return rows;
 }
 
+// The droplet twin's own finish, then the colour and flow checks of a case that asks for them.
+SteppedTwin particle_stepped_twin(const std::shared_ptr<const ParticleScenario>& scenario) {
+  SteppedTwin twin = droplet_stepped_twin({scenario, &scenario->twin});
+  twin.finish = [droplets = twin.finish, scenario](const std::vector<BackendEnd>& ends, const nlohmann::json& expect,
+                                                   const RunOptions& options, CaseResult& result) {
+    droplets(ends, expect, options, result);
+    const bool gpu = ends.size() > 2;
+    if (scenario->colour) add_colour_checks(*scenario, gpu, options, result);
+    if (scenario->flow) {
+      add_flow_checks(*scenario->flow, scenario->twin.own.twin_heights<float>(ends[1].final), gpu, options, result);
+    }
+  };
+  twin.finish_gpu_checks = [droplets = twin.finish_gpu_checks, scenario](const nlohmann::json& expect) {
+    std::vector<std::string> names = droplets(expect);
+    const DropletOrdering ordering = scenario->constants.ordering;
+    if (scenario->colour) std::ranges::copy(colour_gpu_checks(ordering), std::back_inserter(names));
+    if (scenario->flow) std::ranges::copy(flow_gpu_checks(ordering), std::back_inserter(names));
+    return names;
+  };
+  return twin;
+}
+
 PreparedTwin prepare_particle(const nlohmann::json& resolved, const LoadedInput& input) {
-  PreparedTwin prepared;
-  prepared.kind = CaseRun([scenario = make_scenario(resolved, input.heights)](const nlohmann::json& expect,
-                                                                     const RunOptions& options, CaseResult& result) {
-    const Grid<float> eroded = run_droplet_case(scenario.twin, expect, options, result);
-    add_droplet_spec(scenario, expect, result);
-    if (scenario.colour) add_colour_checks(scenario, options, result);
-    if (scenario.flow) add_flow_checks(*scenario.flow, eroded, options, result);
-  });
-  return prepared;
+  const auto scenario = std::make_shared<const ParticleScenario>(make_scenario(resolved, input.heights));
+  return {.kind = particle_stepped_twin(scenario),
+          .extra_checks = [scenario](const nlohmann::json& expect, const RunOptions&, CaseResult& result) {
+            add_droplet_spec(*scenario, expect, result);
+          }};
 }
 
 nlohmann::json particle_expect_shape() {
@@ -519,22 +572,24 @@ Algorithm particle_algorithm() {
           .source = "seed 000 §4.4.1, Algorithms 4-7, eqs. 4.5-4.6, Appendix A (digest 000 §4.4)",
           .params = &particle_param_specs(),
           .prepare = prepare_particle,
-          .kind = CaseKind::custom,
+          .kind = CaseKind::stepped,
           .benchmark = benchmark_particle,
           .expect_shape = particle_expect_shape(),
-          // The input and ref<double> with its two side maps (5 doubles), ref<float> with up to 16
-          // checkpoint states and the GPU's copies (about 30 floats), the difference and change maps
-          // of the checks (6 doubles), the descriptors. Colour adds the map in double three times
-          // (input, truth, copies) and in float four times (ref<float>, the GPU's upload, result and
-          // its sums): about 200 B a cell. The flow map: the eroded heights in double, ref<double>'s
-          // map and its copy of the heights, ref<float>'s, the GPU's 4 buffers and download, the
-          // grey pictures' RGBA maps (4 doubles): about 100 B a cell. Measured within this by
-          // tests/memory_estimates_test.cpp at 768² without colour (the colour share is estimated).
+          // The input, ref<double>'s run with its two side maps (5 doubles), the GPU's copies,
+          // the difference and change maps of the checks (6 doubles), the descriptors, and the
+          // runner's states at its checkpoints (droplet_checkpoint_memory). Colour adds the map in
+          // double three times (input, truth, copies) and in float four times (ref<float>, the GPU's
+          // upload, result and its sums): about 200 B a cell. The flow map: the eroded heights in
+          // double, ref<double>'s map and its copy of the heights, ref<float>'s, the GPU's 4 buffers
+          // and download, the grey pictures' RGBA maps (4 doubles): about 100 B a cell. Measured
+          // within this by tests/memory_estimates_test.cpp at 768² without colour (the colour share
+          // is estimated).
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const double colour = resolved.at("colour") == "none" ? 0.0 : 200.0;
             const double flow = resolved.at("flow_map").get<bool>() ? 100.0 : 0.0;
-            return memory_for(static_cast<double>(input.heights.size()), "cells",
-                              300 + colour + flow + descriptor_bytes_per_cell);
+            const double cells = static_cast<double>(input.heights.size());
+            return memory_for(cells, "cells", 300 + colour + flow + descriptor_bytes_per_cell) +
+                   droplet_checkpoint_memory(cells, resolved.at("iterations").get<int>());
           }};
 }
 

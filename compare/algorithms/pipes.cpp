@@ -3,7 +3,7 @@
 // CPU reference in double (the truth) and in float, and by the GPU twin, each with its per-step
 // water and material ledger (core/params/hydraulic.hpp).
 //
-// Scenario parameters (besides hydraulic_param_specs()):
+// Scenario parameters (besides hydraulic_param_table(); PipeCaseParams in pipes.hpp):
 //   initial_water  dry; depth: initial_depth metres on every valid cell (seed 001's one-shot "set
 //                  water level", 0.1 m); sea_level: cells below sea_level start filled up to it
 //                  (topobathy: the sea is there from the start; with closed borders it stays, with
@@ -59,6 +59,8 @@
 // ledger's volumes (water, rain and sources in, evaporated, out through the borders).
 // Timings: one whole run each (ref<double>'s walk through the checkpoints; the GPU without ledger
 // downloads, bracketed by glFinish).
+#include "compare/algorithms/pipes.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -76,6 +78,7 @@
 #include "compare/checks/pipe_error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/report/plots.hpp"
+#include "compare/steppers/pipe.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
 #include "core/params/hydraulic.hpp"
@@ -93,27 +96,12 @@ constexpr double cpu_material_bound = 1e-12;
 constexpr double gpu_material_bound = 1e-6;
 constexpr double drift_floor = 1e-18;  // log plots: exact zeros drawn here
 
+constexpr Choice<InitialWater> initial_water_choices[] = {
+    {"dry", InitialWater::dry}, {"depth", InitialWater::depth}, {"sea_level", InitialWater::sea_level}};
+constexpr Choice<RainMap> rain_map_choices[] = {{"none", RainMap::none}, {"orographic", RainMap::orographic}};
+
 const ParamSpecs& pipe_specs() {
-  static const ParamSpecs specs = [] {
-    ParamSpecs all = hydraulic_param_specs();
-    const ParamSpecs scenario = {
-        {"initial_water", ParamKind::choice, "depth", 0, 0, {"dry", "depth", "sea_level"}, "",
-         "dry; depth: initial_depth on every cell (seed 001's set water level); sea_level: fill up to sea_level"},
-        {"initial_depth", ParamKind::real, 0.1, 0.0, 1e3, {}, "m", "water depth of initial_water = depth"},
-        {"sea_level", ParamKind::real, 0.0, -1e4, 1e4, {}, "m", "initial_water = sea_level fills cells below it"},
-        {"rain_map", ParamKind::choice, "none", 0, 0, {"none", "orographic"}, "",
-         "orographic: rain_map_rate·(b − b_min)/(b_max − b_min) more rain on high ground"},
-        {"rain_map_rate", ParamKind::real, 0.0, 0.0, 1.0, {}, "m/s", "the orographic rain on the highest cell"},
-        {"source_rate", ParamKind::real, 0.0, 0.0, 1e6, {}, "m³/s", "one point source; 0 = none"},
-        {"source_x", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "the source's column as a share of the width"},
-        {"source_y", ParamKind::real, 0.5, 0.0, 1.0, {}, "1", "the source's row as a share of the height"},
-        {"checkpoints", ParamKind::integer, 16, 1, 1000, {}, "count",
-         "states along the run from which the GPU takes shadow steps beside ref<float>, and at which it is "
-         "compared with ref<double>"},
-    };
-    all.insert(all.end(), scenario.begin(), scenario.end());
-    return all;
-  }();
+  static const ParamSpecs specs = param_specs(pipe_case_param_table());
   return specs;
 }
 
@@ -126,29 +114,30 @@ struct PipeScenario {
   std::vector<std::string> notes;
 };
 
-void set_initial_water(const nlohmann::json& resolved, PipeScenario& scenario) {
+void set_initial_water(const PipeCaseParams& given, PipeScenario& scenario) {
   auto& state = scenario.initial;
-  const auto mode = resolved.at("initial_water").get<std::string>();
-  const double depth = resolved.at("initial_depth");
-  const double sea_level = resolved.at("sea_level");
   for (std::size_t cell = 0; cell < state.terrain.size(); ++cell) {
     if (!state.terrain.is_valid(cell)) continue;
-    if (mode == "depth") state.water.values[cell] = depth;
-    if (mode == "sea_level") state.water.values[cell] = std::max(0.0, sea_level - state.terrain.values[cell]);
+    if (given.initial_water == InitialWater::depth) state.water.values[cell] = given.initial_depth;
+    if (given.initial_water == InitialWater::sea_level) {
+      state.water.values[cell] = std::max(0.0, given.sea_level - state.terrain.values[cell]);
+    }
   }
-  if (mode == "depth") scenario.notes.push_back(fmt::format("initial water: {} m on every valid cell", depth));
-  if (mode == "sea_level") {
+  if (given.initial_water == InitialWater::depth) {
+    scenario.notes.push_back(fmt::format("initial water: {} m on every valid cell", given.initial_depth));
+  }
+  if (given.initial_water == InitialWater::sea_level) {
     scenario.notes.push_back(fmt::format("initial water: cells below {} m filled up to it (the sea from the start)",
-                                         sea_level));
+                                         given.sea_level));
   }
 }
 
-void set_forcing(const nlohmann::json& resolved, PipeScenario& scenario) {
+void set_forcing(const PipeCaseParams& given, PipeScenario& scenario) {
   const auto& terrain = scenario.initial.terrain;
-  if (resolved.at("rain_map") == "orographic") {
+  if (given.rain_map == RainMap::orographic) {
     const FieldTotals totals = field_totals(terrain);
     const double range = totals.high - totals.low;
-    const double rate = resolved.at("rain_map_rate");
+    const double rate = given.rain_map_rate;
     Grid<double> rain = terrain;
     for (std::size_t cell = 0; cell < rain.size(); ++cell) {
       rain.values[cell] = terrain.is_valid(cell) && range > 0.0 ? rate * (terrain.values[cell] - totals.low) / range : 0.0;
@@ -157,15 +146,14 @@ void set_forcing(const nlohmann::json& resolved, PipeScenario& scenario) {
     scenario.notes.push_back(fmt::format("orographic rain map: 0 to {} m/s from {:.4g} m to {:.4g} m", rate,
                                          totals.low, totals.high));
   }
-  const double source_rate = resolved.at("source_rate");
-  if (source_rate > 0.0) {
-    const int x = static_cast<int>(std::lround(resolved.at("source_x").get<double>() * (terrain.width - 1)));
-    const int y = static_cast<int>(std::lround(resolved.at("source_y").get<double>() * (terrain.height - 1)));
+  if (given.source_rate > 0.0) {
+    const int x = static_cast<int>(std::lround(given.source_x * (terrain.width - 1)));
+    const int y = static_cast<int>(std::lround(given.source_y * (terrain.height - 1)));
     if (!terrain.is_valid(x, y)) {
       throw InputError(fmt::format("erosion.pipe: the point source at cell (x={}, y={}) lies on a no-data cell", x, y));
     }
-    scenario.forcing.sources.push_back({x, y, source_rate});
-    scenario.notes.push_back(fmt::format("point source: {} m³/s at cell (x={}, y={})", source_rate, x, y));
+    scenario.forcing.sources.push_back({x, y, given.source_rate});
+    scenario.notes.push_back(fmt::format("point source: {} m³/s at cell (x={}, y={})", given.source_rate, x, y));
   }
 }
 
@@ -173,143 +161,16 @@ PipeScenario make_scenario(const nlohmann::json& resolved, const Heightmap& inpu
   if (input.size() == 0) throw InputError("erosion.pipe erodes a heightmap: the case needs an input");
   if (count_valid(input) == 0) throw InputError("erosion.pipe: the terrain's mask covers every cell");
   check_finite(input, "erosion.pipe: terrain");
+  const auto given = params_from_json(pipe_case_param_table(), resolved);
   PipeScenario scenario;
-  scenario.params = hydraulic_params_from_json(resolved);
+  scenario.params = given.hydraulic;
   scenario.constants = pipe_constants(scenario.params, input);
   scenario.initial = dry_pipe_state(input);
-  scenario.checkpoints = std::min(resolved.at("checkpoints").get<int>(), std::max(scenario.params.steps, 1));
-  set_initial_water(resolved, scenario);
-  set_forcing(resolved, scenario);
+  scenario.checkpoints = std::min(given.checkpoints, std::max(scenario.params.steps, 1));
+  set_initial_water(given, scenario);
+  set_forcing(given, scenario);
   return scenario;
 }
-
-// The state as the runner sees it: each field of PipeState, outflow with a component per pipe in use.
-StateDecl pipe_fields(const PipeConstants& constants) {
-  std::vector<std::string> pipes;
-  for (int pipe = 0; pipe < constants.pipe_count; ++pipe) pipes.emplace_back(pipe_name(pipe));
-  return {{.name = "terrain", .unit = "m", .meaning = "terrain height b", .conserved = true,
-           .standard_name = "topographic__elevation"},
-          {.name = "water", .unit = "m", .meaning = "water depth d", .conserved = true,
-           .standard_name = "surface_water__depth"},
-          {.name = "sediment", .unit = "m", .meaning = "suspended sediment s, as material over the cell", .conserved = true},
-          {.name = "regolith", .unit = "m", .meaning = "loosened bed material r (seed 001 §3.9)", .conserved = true},
-          {.name = "velocity_x", .unit = "m/s", .meaning = "water velocity u, +x"},
-          {.name = "velocity_y", .unit = "m/s", .meaning = "water velocity v, +y"},
-          {.name = "outflow",
-           .unit = "m³/s",
-           .meaning = "flux f through each pipe (L, R, T, B, then the diagonals)",
-           .extent = Extent::cell_pipe,
-           .components = constants.pipe_count,
-           .component_names = pipes}};
-}
-
-// PipeState's grids in the order pipe_fields declares them (outflow, last, apart).
-template <class Real>
-std::array<const Grid<Real>*, 6> pipe_grids(const PipeState<Real>& pipe) {
-  return {&pipe.terrain, &pipe.water, &pipe.sediment, &pipe.regolith, &pipe.velocity_x, &pipe.velocity_y};
-}
-
-template <class Real>
-std::array<Grid<Real>*, 6> pipe_grids(PipeState<Real>& pipe) {
-  return {&pipe.terrain, &pipe.water, &pipe.sediment, &pipe.regolith, &pipe.velocity_x, &pipe.velocity_y};
-}
-
-template <class Real>
-State state_of(const PipeState<Real>& pipe, int pipes) {
-  State state{StateGrid::of(pipe.terrain), {}};
-  for (const Grid<Real>* grid : pipe_grids(pipe)) state.fields.emplace_back(grid->values.begin(), grid->values.end());
-  std::vector<double> outflow;
-  outflow.reserve(pipe.outflow.size() * static_cast<std::size_t>(pipes));
-  for (const auto& cell : pipe.outflow) outflow.insert(outflow.end(), cell.begin(), cell.begin() + pipes);
-  state.fields.push_back(std::move(outflow));
-  return state;
-}
-
-template <class Real>
-PipeState<Real> pipe_state_of(const State& state, int pipes) {
-  PipeState<Real> pipe;
-  std::size_t f = 0;
-  for (Grid<Real>* grid : pipe_grids(pipe)) {
-    *grid = state.grid.blank<Real>(Real(0), "m");
-    grid->values.assign(state.fields[f].begin(), state.fields[f].end());
-    ++f;
-  }
-  pipe.outflow.assign(state.grid.cells(), {});
-  const auto& outflow = state.fields[f];
-  for (std::size_t cell = 0; cell < pipe.outflow.size(); ++cell) {
-    for (int k = 0; k < pipes; ++k) pipe.outflow[cell][k] = static_cast<Real>(outflow[cell * pipes + k]);
-  }
-  return pipe;
-}
-
-// The ledger's totals by name, the same as PipeLedgerEntry's members.
-constexpr std::pair<const char*, double PipeLedgerEntry::*> ledger_totals[] = {
-    {"water", &PipeLedgerEntry::water},
-    {"terrain", &PipeLedgerEntry::terrain},
-    {"sediment", &PipeLedgerEntry::sediment},
-    {"regolith", &PipeLedgerEntry::regolith},
-    {"rain_in", &PipeLedgerEntry::rain_in},
-    {"source_in", &PipeLedgerEntry::source_in},
-    {"water_added", &PipeLedgerEntry::water_added},
-    {"evaporated", &PipeLedgerEntry::evaporated},
-    {"boundary_out_water", &PipeLedgerEntry::boundary_out_water},
-    {"boundary_out_sediment", &PipeLedgerEntry::boundary_out_sediment},
-    {"boundary_out_regolith", &PipeLedgerEntry::boundary_out_regolith},
-    {"max_cfl", &PipeLedgerEntry::max_cfl}};
-
-std::vector<LedgerRecord> records_of(const std::vector<PipeLedgerEntry>& ledger) {
-  std::vector<LedgerRecord> records;
-  for (const auto& entry : ledger) {
-    LedgerRecord record{.step = entry.step};
-    for (const auto& [name, member] : ledger_totals) record.totals[name] = entry.*member;
-    records.push_back(std::move(record));
-  }
-  return records;
-}
-
-std::vector<PipeLedgerEntry> entries_of(const std::vector<LedgerRecord>& records) {
-  std::vector<PipeLedgerEntry> ledger;
-  for (const auto& record : records) {
-    PipeLedgerEntry entry{.step = record.step};
-    for (const auto& [name, member] : ledger_totals) entry.*member = record.totals.at(name);
-    ledger.push_back(entry);
-  }
-  return ledger;
-}
-
-// ref<Real> as a stepper: loading a state starts a new run (and ledger) from it.
-template <class Real>
-class PipeReferenceStepper : public Stepper {
- public:
-  explicit PipeReferenceStepper(const PipeScenario& scenario) : scenario_(scenario) {}
-  void set_state(const State& state, int) override {
-    erosion_.emplace(pipe_state_of<Real>(state, pipes()), scenario_.constants, scenario_.forcing);
-  }
-  void update(int count) override { erosion_->run(count); }
-  State get_state() override { return state_of(erosion_->state(), pipes()); }
-  std::vector<LedgerRecord> ledger() override { return records_of(erosion_->ledger()); }
-
- private:
-  int pipes() const { return scenario_.constants.pipe_count; }
-  const PipeScenario& scenario_;
-  std::optional<reference::PipeErosion<Real>> erosion_;
-};
-
-// The GPU twin as a stepper; keep_ledger = false for timing (no downloads between steps).
-class PipeGpuStepper : public Stepper {
- public:
-  PipeGpuStepper(const PipeScenario& scenario, bool keep_ledger)
-      : pipes_(scenario.constants.pipe_count),
-        erosion_(scenario.initial, scenario.constants, scenario.forcing, keep_ledger) {}
-  void set_state(const State& state, int) override { erosion_.upload(pipe_state_of<double>(state, pipes_)); }
-  void update(int count) override { erosion_.run(count); }
-  State get_state() override { return state_of(erosion_.state(), pipes_); }
-  std::vector<LedgerRecord> ledger() override { return records_of(erosion_.ledger()); }
-
- private:
-  int pipes_;
-  gpu::PipeErosion erosion_;
-};
 
 // The ledger's yardsticks: the water handled up to an entry, and the material present at the start.
 double water_handled(const PipeLedgerEntry& entry, const PipeLedgerEntry& initial) {
@@ -476,19 +337,19 @@ Series ledger_series(const std::string& label, const std::vector<double>& steps,
 }
 
 // The ledger error of every backend over the steps, and ref<double>'s volumes.
-void plot_ledgers(const LedgerRecords& records, double material, const RunOptions& options, CaseResult& result) {
+void plot_ledgers(const std::vector<BackendEnd>& ends, double material, const RunOptions& options, CaseResult& result) {
   SeriesPlot error_plot{.title = "Ledger error over the steps",
                         .x_label = "step",
                         .y_label = "relative error (exact zeros at 1e-18)",
                         .log_y = true};
-  for (const auto& [backend, backend_records] : records) {
-    const LedgerErrors error = ledger_errors(entries_of(backend_records), material);
-    error_plot.series.push_back(ledger_series("water balance " + backend, error.steps, error.water, false, backend));
-    error_plot.series.push_back(ledger_series("material drift " + backend, error.steps, error.material, true, backend));
+  for (const BackendEnd& end : ends) {
+    const LedgerErrors error = ledger_errors(entries_of(end.records), material);
+    error_plot.series.push_back(ledger_series("water balance " + end.backend, error.steps, error.water, false, end.backend));
+    error_plot.series.push_back(ledger_series("material drift " + end.backend, error.steps, error.material, true, end.backend));
   }
   SeriesPlot volume_plot{.title = "Water ledger (ref<double>)", .x_label = "step", .y_label = "m³"};
   std::vector<double> steps, water, inflow, evaporated, out;
-  for (const auto& entry : entries_of(records.front().second)) {
+  for (const auto& entry : entries_of(ends.front().records)) {
     steps.push_back(entry.step);
     water.push_back(entry.water);
     inflow.push_back(entry.rain_in + entry.source_in);
@@ -497,9 +358,9 @@ void plot_ledgers(const LedgerRecords& records, double material, const RunOption
   }
   volume_plot.series = {ledger_series("water held W_t", steps, water), ledger_series("rain and sources in", steps, inflow),
                         ledger_series("evaporated", steps, evaporated), ledger_series("out through borders", steps, out)};
-  attach_plot({error_plot}, options.report_dir, "ledger_error.png",
+  attach_plot({error_plot}, options, "ledger_error.png",
               "water balance (solid) and material drift (dashed), relative", result);
-  attach_plot({volume_plot}, options.report_dir, "ledger_volumes.png", "water held and what came in and went out, m³",
+  attach_plot({volume_plot}, options, "ledger_volumes.png", "water held and what came in and went out, m³",
               result);
 }
 
@@ -546,19 +407,20 @@ PreparedTwin prepare_pipe(const nlohmann::json& resolved, const LoadedInput& inp
   const PipeConstants& constants = scenario->constants;
   SteppedTwin twin{.algorithm = "erosion.pipe",
                    .fields = pipe_fields(constants),
-                   .initial = state_of(scenario->initial, constants.pipe_count),
+                   .initial = pipe_state(scenario->initial, constants.pipe_count),
                    .iterations = scenario->params.steps,
                    .checkpoints = scenario->checkpoints,
                    .time_walks = true};
-  twin.reference_double = [scenario] { return std::make_unique<PipeReferenceStepper<double>>(*scenario); };
-  twin.reference_float = [scenario] { return std::make_unique<PipeReferenceStepper<float>>(*scenario); };
-  twin.make_gpu = [scenario] { return std::make_unique<PipeGpuStepper>(*scenario, true); };
-  twin.make_timed_gpu = [scenario] { return std::make_unique<PipeGpuStepper>(*scenario, false); };
+  twin.reference_double = [scenario] { return pipe_reference_stepper<double>(scenario->constants, scenario->forcing); };
+  twin.reference_float = [scenario] { return pipe_reference_stepper<float>(scenario->constants, scenario->forcing); };
+  twin.make_gpu = [scenario] { return pipe_gpu_stepper(scenario->initial, scenario->constants, scenario->forcing, true); };
+  twin.make_timed_gpu = [scenario] { return pipe_gpu_stepper(scenario->initial, scenario->constants, scenario->forcing, false); };
   twin.shadow_bounds = [constants](const State& from, int steps) { return pipe_field_bounds(from, steps, constants); };
   twin.ledger = pipe_ledger_terms(*scenario);
-  twin.plot_ledger = [scenario, material = material_present(scenario->initial)](
-                         const LedgerRecords& records, const RunOptions& options, CaseResult& result) {
-    plot_ledgers(records, material, options, result);
+  twin.finish = [material = material_present(scenario->initial)](const std::vector<BackendEnd>& ends,
+                                                                   const nlohmann::json&, const RunOptions& options,
+                                                                   CaseResult& result) {
+    plot_ledgers(ends, material, options, result);
   };
   return {.kind = std::move(twin), .extra_checks = wave_number_check(*scenario)};
 }
@@ -625,6 +487,32 @@ std::vector<BenchmarkRow> benchmark_pipes(const BenchmarkOptions& options, bool 
 
 }  // namespace
 
+const ParamTable<PipeCaseParams>& pipe_case_param_table() {
+  using C = PipeCaseParams;
+  static const ParamTable<C> table = [] {
+    ParamTable<C> rows = nested(&C::hydraulic, hydraulic_param_table());
+    const ParamTable<C> scenario = {
+        choice_param("initial_water", &C::initial_water, initial_water_choices, "",
+                     "dry; depth: initial_depth on every cell (seed 001's set water level); "
+                     "sea_level: fill up to sea_level"),
+        real_param("initial_depth", &C::initial_depth, 0.0, 1e3, "m", "water depth of initial_water = depth"),
+        real_param("sea_level", &C::sea_level, -1e4, 1e4, "m", "initial_water = sea_level fills cells below it"),
+        choice_param("rain_map", &C::rain_map, rain_map_choices, "",
+                     "orographic: rain_map_rate·(b − b_min)/(b_max − b_min) more rain on high ground"),
+        real_param("rain_map_rate", &C::rain_map_rate, 0.0, 1.0, "m/s", "the orographic rain on the highest cell"),
+        real_param("source_rate", &C::source_rate, 0.0, 1e6, "m³/s", "one point source; 0 = none"),
+        real_param("source_x", &C::source_x, 0.0, 1.0, "1", "the source's column as a share of the width"),
+        real_param("source_y", &C::source_y, 0.0, 1.0, "1", "the source's row as a share of the height"),
+        integer_param("checkpoints", &C::checkpoints, 1, 1000, "count",
+                      "states along the run from which the GPU takes shadow steps beside ref<float>, "
+                      "and at which it is compared with ref<double>"),
+    };
+    rows.insert(rows.end(), scenario.begin(), scenario.end());
+    return rows;
+  }();
+  return table;
+}
+
 Algorithm pipe_algorithm() {
   return {.name = "erosion.pipe",
           .summary = "virtual-pipe hydraulic erosion with a water and material ledger (Mei 2007; seed 001's variant)",
@@ -643,10 +531,10 @@ Algorithm pipe_algorithm() {
           // checkpoints), rounded up by 20 B.
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const double cells = static_cast<double>(input.heights.size());
-            const double pipes = resolved.at("pipes").get<std::string>() == "8" ? 8.0 : 4.0;
+            const auto given = params_from_json(pipe_case_param_table(), resolved);
             return memory_for(cells, "cells", 1100 + descriptor_bytes_per_cell) +
-                   memory_for(cells * resolved.at("checkpoints").get<double>(), "cell-checkpoints",
-                              2.0 * 8.0 * (6.0 + pipes) + 20.0);
+                   memory_for(cells * given.checkpoints, "cell-checkpoints",
+                              2.0 * 8.0 * (6.0 + given.hydraulic.pipe_count) + 20.0);
           }};
 }
 

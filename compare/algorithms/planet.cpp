@@ -674,7 +674,7 @@ void plot_relief(const GlobalRelief& planet, const std::optional<ReferenceRelief
   SeriesPlot histogram{"elevation histograms", "elevation / largest |elevation|", "area density", false, false,
                        {density(planet, "planet")}};
   if (earth) histogram.series.push_back(density(earth->relief, earth->name));
-  attach_plot({hypsometry, histogram}, options.report_dir, "hypsometry.png",
+  attach_plot({hypsometry, histogram}, options, "hypsometry.png",
               earth ? fmt::format("hypsometric curves and histograms of the planet and {}, each scaled by its largest "
                                   "|elevation|",
                                   earth->name)
@@ -728,7 +728,7 @@ void add_spectrum_checks(const CubeSphere& sphere, const Planet<double>& planet,
   SeriesPlot plot{"spherical power spectra", "degree l", "share of the variance at degree l", true, true,
                   {shares(spectrum, "planet")}};
   if (earth) plot.series.push_back(shares(earth->spectrum, earth->name));
-  attach_plot({plot}, options.report_dir, "spectrum.png",
+  attach_plot({plot}, options, "spectrum.png",
               fmt::format("angular power spectra (HEALPix nside {}), each degree's share of the variance; the exponent "
                           "is fitted over l = {}..{}",
                           spectrum_nside, spectrum_low_degree, high_degree),
@@ -935,8 +935,8 @@ PreparedTwin prepare_planet(const nlohmann::json& resolved, const LoadedInput& i
 // fills, the GPU's downloads, the Voronoi maps); rounded up to 1000 B.
 // A global grid the case gives is read (its own estimate, core/io/global_grid.cpp) before this.
 MemoryEstimate planet_memory(const nlohmann::json& resolved, const LoadedInput&) {
-  const double resolution = resolved.at("resolution").get<double>();
-  return memory_for(6.0 * resolution * resolution, "regions", 1000);
+  const PlanetParams params = params_from_json(planet_param_table(), resolved);
+  return memory_for(params.region_count(), "regions", 1000);
 }
 
 // ---- performance ----------------------------------------------------------------------------
@@ -1013,6 +1013,7 @@ std::vector<BenchmarkRow> benchmark_planet(const BenchmarkOptions& options, bool
                                            const Environment& environment) {
   std::vector<BenchmarkRow> rows = published_planet_rows();
   for (const int resolution : benchmark_resolutions) {
+    if (!within_table_sizes(6.0 * resolution * resolution, options)) continue;  // the cube sphere's samples
     PlanetParams params;
     params.resolution = resolution;
     add_cpu_planet_rows(params, options.reps, environment, rows);

@@ -160,24 +160,15 @@ bool exact_window_coordinates(const Mesh& mesh, int width, int height, int subpi
 
 namespace {
 
-struct RenderCase {
+// A case: its parameters and the mesh it renders.
+struct RenderCase : HeightmapRenderParams {
   Mesh mesh;
-  int width = 0;
-  int height = 0;
-  int subpixel_bits = 8;
-  bool tent = false;  // the generated tent: spec.tent_* checks (render_probe.hpp)
 };
 
+constexpr Choice<bool> generated_choices[] = {{"none", false}, {"tent", true}};
+
 const ParamSpecs& render_specs() {
-  static const ParamSpecs specs = {
-      {"width", ParamKind::integer, 256, 1, 4096, {}, "texel", "heightmap columns (along the mesh's x)"},
-      {"height", ParamKind::integer, 256, 1, 4096, {}, "texel", "heightmap rows (along the mesh's y)"},
-      {"subpixel_bits", ParamKind::integer, 8, 0, 16, {}, "bit",
-       "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"},
-      {"generated", ParamKind::choice, "none", 0, 0, {"none", "tent"}, "1",
-       "without a mesh input: tent, the probe tetrahedron of render_probe.hpp whose heightmap is known in closed "
-       "form (spec.tent_* checks)"},
-  };
+  static const ParamSpecs specs = param_specs(heightmap_render_param_table());
   return specs;
 }
 
@@ -306,14 +297,15 @@ void run_render(const RenderCase& render, const std::string& file, const RunOpti
 }
 
 PreparedTwin prepare_render(const nlohmann::json& resolved, const LoadedInput& input) {
-  const bool tent = resolved.at("generated") == "tent";
+  const auto given = params_from_json(heightmap_render_param_table(), resolved);
+  const bool tent = given.tent;
   if (input.mesh && tent) throw InputError("render.heightmap_from_mesh: generated = tent replaces the mesh input; give one");
   if (!input.mesh && !tent) {
     throw InputError("render.heightmap_from_mesh needs a mesh input ({\"mesh\": \"path.off\"}) or generated = tent");
   }
   const Mesh mesh = tent ? tent_mesh() : *input.mesh;
   reference::require_visible_from_above(mesh);
-  RenderCase render{mesh, resolved.at("width"), resolved.at("height"), resolved.at("subpixel_bits"), tent};
+  RenderCase render{given, mesh};
   PreparedTwin prepared;
   prepared.kind = CaseRun([render = std::move(render), file = tent ? std::string("the probe tent (render_probe.hpp)")
                                                           : input.description](const nlohmann::json&,
@@ -326,6 +318,20 @@ PreparedTwin prepare_render(const nlohmann::json& resolved, const LoadedInput& i
 
 }  // namespace
 
+const ParamTable<HeightmapRenderParams>& heightmap_render_param_table() {
+  using P = HeightmapRenderParams;
+  static const ParamTable<P> table = {
+      integer_param("width", &P::width, 1, 4096, "texel", "heightmap columns (along the mesh's x)"),
+      integer_param("height", &P::height, 1, 4096, "texel", "heightmap rows (along the mesh's y)"),
+      integer_param("subpixel_bits", &P::subpixel_bits, 0, 16, "bit",
+                    "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"),
+      choice_param("generated", &P::tent, generated_choices, "1",
+                   "without a mesh input: tent, the probe tetrahedron of render_probe.hpp whose heightmap is known in "
+                   "closed form (spec.tent_* checks)"),
+  };
+  return table;
+}
+
 Algorithm render_heightmap_algorithm() {
   return {.name = "render.heightmap_from_mesh",
           .summary = "heightmap of a mesh seen from above: reference rasterizer vs the GL pipeline",
@@ -336,7 +342,8 @@ Algorithm render_heightmap_algorithm() {
           .ad_hoc_input = AdHocInput::mesh,
           // Measured 54 B a texel (cow, 2048² vs 512²); triangles as render.phong's.
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
-            const double texels = resolved.at("width").get<double>() * resolved.at("height").get<double>();
+            const auto given = params_from_json(heightmap_render_param_table(), resolved);
+            const double texels = double(given.width) * given.height;
             const double triangles = input.mesh ? static_cast<double>(input.mesh->triangles.size()) : 0.0;
             return memory_for(texels, "texels", 80) + memory_for(triangles, "triangles", 500);
           }};

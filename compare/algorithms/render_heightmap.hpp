@@ -32,6 +32,7 @@
 
 #include "core/grid.hpp"
 #include "core/mesh.hpp"
+#include "core/param_table.hpp"
 
 namespace gt {
 
@@ -60,5 +61,14 @@ bool exact_window_coordinates(const Mesh& mesh, int width, int height, int subpi
 
 HeightmapParity compare_mesh_heightmaps(const Heightmap& cpu, const Grid<std::uint8_t>& cpu_covered,
                                         const Grid<float>& gpu, const Grid<std::uint8_t>& gpu_covered);
+
+// The parameters of a render.heightmap_from_mesh case and their declarations (core/param_table.hpp).
+struct HeightmapRenderParams {
+  int width = 256;
+  int height = 256;
+  int subpixel_bits = 8;
+  bool tent = false;  // generated = tent: the probe tent instead of a mesh input (render_probe.hpp)
+};
+const ParamTable<HeightmapRenderParams>& heightmap_render_param_table();
 
 }  // namespace gt

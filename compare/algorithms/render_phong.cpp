@@ -49,66 +49,15 @@
 namespace gt {
 namespace {
 
+constexpr Choice<bool> camera_choices[] = {{"orbit", false}, {"fixed", true}};
+constexpr Choice<reference::Look> look_choices[] = {
+    {"plain", reference::Look::plain}, {"cave", reference::Look::cave}, {"terrain", reference::Look::terrain}};
+constexpr Choice<reference::Vec3> up_axis_choices[] = {
+    {"x", {1.0, 0.0, 0.0}}, {"y", {0.0, 1.0, 0.0}}, {"z", {0.0, 0.0, 1.0}}};
+constexpr Choice<bool> generated_choices[] = {{"cave", false}, {"quad", true}};
+
 const ParamSpecs& phong_specs() {
-  static const reference::CaveLook cave;
-  static const reference::TerrainLook terrain;
-  static const ParamSpecs specs = {
-      {"width", ParamKind::integer, 256, 1, 4096, {}, "pixel", "image columns"},
-      {"height", ParamKind::integer, 256, 1, 4096, {}, "pixel", "image rows"},
-      {"fov_deg", ParamKind::real, 40.0, 1.0, 150.0, {}, "degree", "vertical field of view"},
-      {"camera", ParamKind::choice, "orbit", 0, 0, {"orbit", "fixed"}, "1",
-       "orbit: around the mesh's box centre (azimuth_deg, elevation_deg); fixed: eye_* looking at target_*"},
-      {"azimuth_deg", ParamKind::real, 30.0, -360.0, 360.0, {}, "degree",
-       "orbit camera direction around +y from the box centre, from +z towards +x"},
-      {"elevation_deg", ParamKind::real, 20.0, -89.0, 89.0, {}, "degree", "orbit camera direction above the xz plane"},
-      {"eye_x", ParamKind::real, 0.0, -1e6, 1e6, {}, "mesh", "fixed camera: eye position x"},
-      {"eye_y", ParamKind::real, 0.0, -1e6, 1e6, {}, "mesh", "fixed camera: eye position y"},
-      {"eye_z", ParamKind::real, 0.0, -1e6, 1e6, {}, "mesh", "fixed camera: eye position z"},
-      {"target_x", ParamKind::real, 0.0, -1e6, 1e6, {}, "mesh", "fixed camera: point looked at, x"},
-      {"target_y", ParamKind::real, 0.0, -1e6, 1e6, {}, "mesh", "fixed camera: point looked at, y"},
-      {"target_z", ParamKind::real, -1.0, -1e6, 1e6, {}, "mesh", "fixed camera: point looked at, z"},
-      {"near", ParamKind::real, 0.1, 1e-6, 1e6, {}, "mesh", "fixed camera: near plane distance"},
-      {"far", ParamKind::real, 200.0, 1e-6, 1e7, {}, "mesh", "fixed camera: far plane distance"},
-      {"subpixel_bits", ParamKind::integer, 8, 0, 16, {}, "bit",
-       "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"},
-      {"look", ParamKind::choice, "plain", 0, 0, {"plain", "cave", "terrain"}, "1",
-       "plain: one albedo (seed 004's Phong); cave: seed 004's colour strip, moss and bump; terrain: height "
-       "ramp and rock by slope"},
-      {"light_power", ParamKind::real, 0.0, 0.0, 1e12, {}, "mesh²",
-       "point light power (irradiance = power/d²); 0: |eye - box centre|² (mesh file) or 25 (generated cave)"},
-      {"min_covered_share", ParamKind::real, 0.0, 0.0, 1.0, {}, "1",
-       "least share of pixels the mesh must cover in the reference image (0: not checked)"},
-      {"colour_frequency", ParamKind::real, cave.colour_frequency, 1e-6, 1e4, {}, "1/mesh",
-       "cave look: noise cells per unit of the colour texture at colour_reference_height (seed: 2)"},
-      {"colour_reference_height", ParamKind::real, cave.colour_reference_height, -1e6, 1e6, {}, "mesh",
-       "cave look: height y0 where the colour texture has colour_frequency"},
-      {"colour_octaves_per_unit", ParamKind::real, cave.colour_octaves_per_unit, -1.0, 1.0, {}, "1/mesh",
-       "cave look: octaves the colour texture gets finer per unit of depth (1/(200 ln 2) matches the seed's "
-       "slope 1/100 at y0; 0: one frequency)"},
-      {"colour_octave_limit", ParamKind::real, cave.colour_octave_limit, 0.0, 60.0, {}, "1",
-       "cave look: the colour frequency stays within f0·2^±limit (the seed's y is unbounded)"},
-      {"bump_amplitude", ParamKind::real, cave.bump_amplitude, 0.0, 100.0, {}, "mesh",
-       "cave look: height of the bump field (0: no bump)"},
-      {"bump_frequency", ParamKind::real, cave.bump_frequency, 0.0, 1e4, {}, "1/mesh",
-       "cave look: noise cells per unit of the bump field"},
-      {"moss", ParamKind::real, cave.moss, 0.0, 10.0, {}, "1", "cave look: green added per unit of n_y on upward normals (seed: 1/40)"},
-      {"noise_seed", ParamKind::integer, 0, 0, 4294967295.0, {}, "1",
-       "cave look: permutation of the colour and bump noises (0: Perlin's table, the seed's)"},
-      {"up_axis", ParamKind::choice, "y", 0, 0, {"x", "y", "z"}, "1", "terrain look: the height axis"},
-      {"rock_start_deg", ParamKind::real, terrain.rock_start_deg, 0.0, 180.0, {}, "degree",
-       "terrain look: slope where the rock colour starts"},
-      {"rock_full_deg", ParamKind::real, terrain.rock_full_deg, 0.0, 180.0, {}, "degree",
-       "terrain look: slope from which the surface is all rock"},
-      {"generated", ParamKind::choice, "cave", 0, 0, {"cave", "quad"}, "1",
-       "without an input: cave (the seed's cave, look = cave and camera = fixed) or quad (the probe quad of "
-       "render_probe.hpp, whose plain look has closed-form colours)"},
-      {"block_origin_x", ParamKind::integer, -24, -100000, 100000, {}, "lattice", "generated cave: block origin x"},
-      {"block_origin_y", ParamKind::integer, -24, -100000, 100000, {}, "lattice", "generated cave: block origin y"},
-      {"block_origin_z", ParamKind::integer, -24, -100000, 100000, {}, "lattice", "generated cave: block origin z"},
-      {"block_size_x", ParamKind::integer, 48, 1, 160, {}, "lattice", "generated cave: cells along x"},
-      {"block_size_y", ParamKind::integer, 48, 1, 160, {}, "lattice", "generated cave: cells along y"},
-      {"block_size_z", ParamKind::integer, 48, 1, 160, {}, "lattice", "generated cave: cells along z"},
-  };
+  static const ParamSpecs specs = param_specs(phong_render_param_table());
   return specs;
 }
 
@@ -119,48 +68,23 @@ struct PhongCase {
   bool quad_spec = false;  // the probe quad in the plain look: its closed-form colours are checked
 };
 
-reference::Look look_from(const std::string& name) {
-  if (name == "cave") return reference::Look::cave;
-  if (name == "terrain") return reference::Look::terrain;
-  return reference::Look::plain;
-}
-
-reference::CaveLook cave_look_from(const nlohmann::json& resolved) {
-  reference::CaveLook look;
-  look.colour_frequency = resolved.at("colour_frequency");
-  look.colour_reference_height = resolved.at("colour_reference_height");
-  look.colour_octaves_per_unit = resolved.at("colour_octaves_per_unit");
-  look.colour_octave_limit = resolved.at("colour_octave_limit");
-  look.bump_amplitude = resolved.at("bump_amplitude");
-  look.bump_frequency = resolved.at("bump_frequency");
-  look.moss = resolved.at("moss");
-  look.noise_seed = resolved.at("noise_seed").get<std::uint32_t>();
-  return look;
-}
-
-reference::Vec3 axis_vector(const std::string& axis) {
-  if (axis == "x") return {1.0, 0.0, 0.0};
-  if (axis == "z") return {0.0, 0.0, 1.0};
-  return {0.0, 1.0, 0.0};
-}
-
-reference::Camera fixed_camera(const nlohmann::json& resolved) {
-  return {.eye = {resolved.at("eye_x"), resolved.at("eye_y"), resolved.at("eye_z")},
-          .target = {resolved.at("target_x"), resolved.at("target_y"), resolved.at("target_z")},
+reference::Camera fixed_camera(const PhongRenderParams& params) {
+  return {.eye = params.eye,
+          .target = params.target,
           .up = {0.0, 1.0, 0.0},
-          .fov_y_deg = resolved.at("fov_deg"),
-          .near = resolved.at("near"),
-          .far = resolved.at("far"),
-          .width = resolved.at("width"),
-          .height = resolved.at("height")};
+          .fov_y_deg = params.fov_deg,
+          .near = params.near,
+          .far = params.far,
+          .width = params.width,
+          .height = params.height};
 }
 
 // The seed's cave block of the case (core/params/cave.hpp defaults: scale 10, threshold 0,
 // kernel 0.6, Perlin's table), capped with air.
-CaveParams cave_block(const nlohmann::json& resolved) {
+CaveParams cave_block(const PhongRenderParams& params) {
   CaveParams block;
-  block.origin = {resolved.at("block_origin_x"), resolved.at("block_origin_y"), resolved.at("block_origin_z")};
-  block.size = {resolved.at("block_size_x"), resolved.at("block_size_y"), resolved.at("block_size_z")};
+  block.origin = params.block_origin;
+  block.size = params.block_size;
   block.solid = true;
   return block;
 }
@@ -212,25 +136,26 @@ gpu::PhongDraw phong_draw(const reference::PhongScene& scene) {
 namespace {
 
 // The mesh of the case: the input's, or the generated probe quad.
-std::optional<Mesh> case_mesh(const nlohmann::json& resolved, const LoadedInput& input, std::string& description) {
+std::optional<Mesh> case_mesh(const PhongRenderParams& params, const LoadedInput& input, std::string& description) {
   if (input.mesh) return input.mesh;
-  if (resolved.at("generated") != "quad") return std::nullopt;
+  if (!params.quad) return std::nullopt;
   description = "the probe quad (render_probe.hpp)";
   return phong_quad_mesh(phong_quad_probe());
 }
 
 PhongCase prepared_case(const nlohmann::json& resolved, const LoadedInput& input, std::string& description) {
-  const reference::Look look = look_from(resolved.at("look"));
-  const bool fixed = resolved.at("camera") == "fixed";
-  const double light_power = resolved.at("light_power");
+  const auto params = params_from_json(phong_render_param_table(), resolved);
+  const reference::Look look = params.look;
+  const bool fixed = params.fixed_camera;
+  const double light_power = params.light_power;
   reference::PhongScene scene;
-  if (const std::optional<Mesh> mesh = case_mesh(resolved, input, description)) {
+  if (const std::optional<Mesh> mesh = case_mesh(params, input, description)) {
     const reference::Camera camera =
-        fixed ? fixed_camera(resolved)
-              : reference::orbit_camera(*mesh, resolved.at("azimuth_deg"), resolved.at("elevation_deg"),
-                                        resolved.at("fov_deg"), resolved.at("width"), resolved.at("height"));
+        fixed ? fixed_camera(params)
+              : reference::orbit_camera(*mesh, params.azimuth_deg, params.elevation_deg, params.fov_deg, params.width,
+                                        params.height);
     scene = reference::phong_scene(*mesh, camera, look);
-    if (look == reference::Look::terrain) scene.terrain = reference::terrain_look(*mesh, axis_vector(resolved.at("up_axis")));
+    if (look == reference::Look::terrain) scene.terrain = reference::terrain_look(*mesh, params.up);
     if (light_power > 0.0) scene.light_power = light_power;
   } else {
     if (look != reference::Look::cave || !fixed) {
@@ -238,22 +163,22 @@ PhongCase prepared_case(const nlohmann::json& resolved, const LoadedInput& input
                        "with camera = fixed "
                        "to mesh a block of the seed's cave");
     }
-    const CaveParams block = cave_block(resolved);
-    scene = reference::cave_scene(block, fixed_camera(resolved), {}, light_power > 0.0 ? light_power : 25.0);
+    const CaveParams block = cave_block(params);
+    scene = reference::cave_scene(block, fixed_camera(params), {}, light_power > 0.0 ? light_power : 25.0);
     description = fmt::format("the seed's cave, block of {}x{}x{} cells at ({}, {}, {})", block.size[0], block.size[1],
                               block.size[2], block.origin[0], block.origin[1], block.origin[2]);
   }
   if (look == reference::Look::cave) {
     const auto strip = scene.cave.colour_strip;
-    scene.cave = cave_look_from(resolved);
+    scene.cave = params.cave;
     scene.cave.colour_strip = strip;
   }
   if (look == reference::Look::terrain) {
-    scene.terrain.rock_start_deg = resolved.at("rock_start_deg");
-    scene.terrain.rock_full_deg = resolved.at("rock_full_deg");
+    scene.terrain.rock_start_deg = params.terrain.rock_start_deg;
+    scene.terrain.rock_full_deg = params.terrain.rock_full_deg;
   }
-  const bool quad_spec = !input.mesh && resolved.at("generated") == "quad" && look == reference::Look::plain;
-  return {std::move(scene), resolved.at("subpixel_bits"), resolved.at("min_covered_share"), quad_spec};
+  const bool quad_spec = !input.mesh && params.quad && look == reference::Look::plain;
+  return {std::move(scene), params.subpixel_bits, params.min_covered_share, quad_spec};
 }
 
 // spec.phong_quad.<backend>: the image against the probe quad's closed-form colours (render_probe.hpp).
@@ -292,6 +217,81 @@ PreparedTwin prepare_phong(const nlohmann::json& resolved, const LoadedInput& in
 
 }  // namespace
 
+const ParamTable<PhongRenderParams>& phong_render_param_table() {
+  using P = PhongRenderParams;
+  using L = reference::CaveLook;
+  using T = reference::TerrainLook;
+  static const ParamTable<P> table = {
+      integer_param("width", &P::width, 1, 4096, "pixel", "image columns"),
+      integer_param("height", &P::height, 1, 4096, "pixel", "image rows"),
+      real_param("fov_deg", &P::fov_deg, 1.0, 150.0, "degree", "vertical field of view"),
+      choice_param("camera", &P::fixed_camera, camera_choices, "1",
+                   "orbit: around the mesh's box centre (azimuth_deg, elevation_deg); "
+                   "fixed: eye_* looking at target_*"),
+      real_param("azimuth_deg", &P::azimuth_deg, -360.0, 360.0, "degree",
+                 "orbit camera direction around +y from the box centre, from +z towards +x"),
+      real_param("elevation_deg", &P::elevation_deg, -89.0, 89.0, "degree",
+                 "orbit camera direction above the xz plane"),
+      real_param("eye_x", element(&P::eye, 0), -1e6, 1e6, "mesh", "fixed camera: eye position x"),
+      real_param("eye_y", element(&P::eye, 1), -1e6, 1e6, "mesh", "fixed camera: eye position y"),
+      real_param("eye_z", element(&P::eye, 2), -1e6, 1e6, "mesh", "fixed camera: eye position z"),
+      real_param("target_x", element(&P::target, 0), -1e6, 1e6, "mesh", "fixed camera: point looked at, x"),
+      real_param("target_y", element(&P::target, 1), -1e6, 1e6, "mesh", "fixed camera: point looked at, y"),
+      real_param("target_z", element(&P::target, 2), -1e6, 1e6, "mesh", "fixed camera: point looked at, z"),
+      real_param("near", &P::near, 1e-6, 1e6, "mesh", "fixed camera: near plane distance"),
+      real_param("far", &P::far, 1e-6, 1e7, "mesh", "fixed camera: far plane distance"),
+      integer_param("subpixel_bits", &P::subpixel_bits, 0, 16, "bit",
+                    "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"),
+      choice_param("look", &P::look, look_choices, "1",
+                   "plain: one albedo (seed 004's Phong); cave: seed 004's colour strip, moss and bump; "
+                   "terrain: height ramp and rock by slope"),
+      real_param("light_power", &P::light_power, 0.0, 1e12, "mesh²",
+                 "point light power (irradiance = power/d²); 0: |eye - box centre|² (mesh file) or 25 (generated "
+                 "cave)"),
+      real_param("min_covered_share", &P::min_covered_share, 0.0, 1.0, "1",
+                 "least share of pixels the mesh must cover in the reference image (0: not checked)"),
+      nested(&P::cave, real_param("colour_frequency", &L::colour_frequency, 1e-6, 1e4, "1/mesh",
+                                  "cave look: noise cells per unit of the colour texture at colour_reference_height "
+                                  "(seed: 2)")),
+      nested(&P::cave, real_param("colour_reference_height", &L::colour_reference_height, -1e6, 1e6, "mesh",
+                                  "cave look: height y0 where the colour texture has colour_frequency")),
+      nested(&P::cave, real_param("colour_octaves_per_unit", &L::colour_octaves_per_unit, -1.0, 1.0, "1/mesh",
+                                  "cave look: octaves the colour texture gets finer per unit of depth (1/(200 ln 2) "
+                                  "matches the seed's slope 1/100 at y0; 0: one frequency)")),
+      nested(&P::cave, real_param("colour_octave_limit", &L::colour_octave_limit, 0.0, 60.0, "1",
+                                  "cave look: the colour frequency stays within f0·2^±limit (the seed's y is "
+                                  "unbounded)")),
+      nested(&P::cave, real_param("bump_amplitude", &L::bump_amplitude, 0.0, 100.0, "mesh",
+                                  "cave look: height of the bump field (0: no bump)")),
+      nested(&P::cave, real_param("bump_frequency", &L::bump_frequency, 0.0, 1e4, "1/mesh",
+                                  "cave look: noise cells per unit of the bump field")),
+      nested(&P::cave, real_param("moss", &L::moss, 0.0, 10.0, "1",
+                                  "cave look: green added per unit of n_y on upward normals (seed: 1/40)")),
+      nested(&P::cave, integer_param("noise_seed", &L::noise_seed, 0, 4294967295.0, "1",
+                                     "cave look: permutation of the colour and bump noises (0: Perlin's table, the "
+                                     "seed's)")),
+      choice_param("up_axis", &P::up, up_axis_choices, "1", "terrain look: the height axis"),
+      nested(&P::terrain, real_param("rock_start_deg", &T::rock_start_deg, 0.0, 180.0, "degree",
+                                     "terrain look: slope where the rock colour starts")),
+      nested(&P::terrain, real_param("rock_full_deg", &T::rock_full_deg, 0.0, 180.0, "degree",
+                                     "terrain look: slope from which the surface is all rock")),
+      choice_param("generated", &P::quad, generated_choices, "1",
+                   "without an input: cave (the seed's cave, look = cave and camera = fixed) or quad (the probe quad "
+                   "of render_probe.hpp, whose plain look has closed-form colours)"),
+      integer_param("block_origin_x", element(&P::block_origin, 0), -100000, 100000, "lattice",
+                    "generated cave: block origin x"),
+      integer_param("block_origin_y", element(&P::block_origin, 1), -100000, 100000, "lattice",
+                    "generated cave: block origin y"),
+      integer_param("block_origin_z", element(&P::block_origin, 2), -100000, 100000, "lattice",
+                    "generated cave: block origin z"),
+      integer_param("block_size_x", element(&P::block_size, 0), 1, 160, "lattice", "generated cave: cells along x"),
+      integer_param("block_size_y", element(&P::block_size, 1), 1, 160, "lattice", "generated cave: cells along y"),
+      integer_param("block_size_z", element(&P::block_size, 2), 1, 160, "lattice", "generated cave: cells along z"),
+
+  };
+  return table;
+}
+
 Algorithm render_phong_algorithm() {
   return {.name = "render.phong",
           .summary = "Phong-shaded mesh through a perspective camera (looks: plain, cave, terrain): reference "
@@ -305,14 +305,13 @@ Algorithm render_phong_algorithm() {
           // Measured 79 B a pixel (bunny00, 1024² vs 256²) and 330 B a triangle (bunny00 vs cow);
           // the generated cave is meshed first: as cave.marching_tetrahedra, 6000 B a lattice sample.
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
-            const double pixels = resolved.at("width").get<double>() * resolved.at("height").get<double>();
+            const auto params = params_from_json(phong_render_param_table(), resolved);
+            const double pixels = double(params.width) * params.height;
             MemoryEstimate estimate = memory_for(pixels, "pixels", 120);
             if (input.mesh) return estimate + memory_for(static_cast<double>(input.mesh->triangles.size()), "triangles", 500);
-            if (resolved.at("generated").get<std::string>() != "cave") return estimate;
+            if (params.quad) return estimate;
             double samples = 1.0;
-            for (const char* axis : {"block_size_x", "block_size_y", "block_size_z"}) {
-              samples *= resolved.at(axis).get<double>() + 3.0;  // cells + 1 samples, + 2 of capping air
-            }
+            for (const int cells : params.block_size) samples *= cells + 3.0;  // cells + 1 samples, + 2 of capping air
             return estimate + memory_for(samples, "lattice samples", 6000);
           }};
 }

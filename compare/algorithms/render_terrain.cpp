@@ -16,8 +16,8 @@
 //                     and its profile's: layered_soil, layered_vegetation, layered_rain_rate, ...);
 //                     the heights meshed are the ground's surface after the run. The input must
 //                     have no no-data cells (crop it): the layered ground holds none.
-// Another erosion is one more choice, its parameters prefixed likewise (append_prefixed), and one
-// more branch in eroded().
+// Another erosion is one more choice, a member of TerrainRenderParams with its rows prefixed likewise
+// (append_prefixed), and one more branch in eroded().
 //
 // Base: base_depth, or 0 for terrain_solid's automatic depth; for an eroded terrain the automatic
 // base is the un-eroded terrain's, so that a before/after pair shares its base and skirt bottoms.
@@ -43,6 +43,8 @@
 // Checks: those of run_phong_twins (image.*, determinism.gpu) and the mesh checks of the solid
 // (compare/checks/mesh.hpp, backend "cpu", closed expected): the solid must be watertight,
 // manifold, outward and free of self-intersections; genus, components and volume are informative.
+#include "compare/algorithms/render_terrain.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -71,60 +73,11 @@
 namespace gt {
 namespace {
 
-// Another algorithm's parameters under "<prefix>_<name>", so that several erosions can sit side by
-// side; `left_out` names the ones this algorithm fixes.
-void append_prefixed(ParamSpecs& specs, const ParamSpecs& from, const std::string& prefix,
-                     const std::vector<std::string>& left_out) {
-  for (ParamSpec spec : from) {
-    if (std::find(left_out.begin(), left_out.end(), spec.name) != left_out.end()) continue;
-    spec.name = prefix + "_" + spec.name;
-    spec.description = fmt::format("erode = {}: {}", prefix, spec.description);
-    specs.push_back(std::move(spec));
-  }
-}
-
-// The prefixed parameters back under their own names, for the other algorithm's parser.
-nlohmann::json unprefixed(const nlohmann::json& resolved, const std::string& prefix) {
-  nlohmann::json out = nlohmann::json::object();
-  for (const auto& [key, value] : resolved.items()) {
-    if (key.rfind(prefix + "_", 0) == 0) out[key.substr(prefix.size() + 1)] = value;
-  }
-  return out;
-}
+constexpr Choice<reference::Look> look_choices[] = {{"terrain", reference::Look::terrain},
+                                                    {"plain", reference::Look::plain}};
 
 const ParamSpecs& terrain_specs() {
-  static const ParamSpecs specs = [] {
-    ParamSpecs list = {
-        {"width", ParamKind::integer, 320, 1, 4096, {}, "pixel", "image columns"},
-        {"height", ParamKind::integer, 240, 1, 4096, {}, "pixel", "image rows"},
-        {"fov_deg", ParamKind::real, 37.0, 1.0, 150.0, {}, "degree",
-         "vertical field of view (37°: at 4:3 the horizontal one holds the bounding sphere)"},
-        {"azimuth_deg", ParamKind::real, 35.0, -360.0, 360.0, {}, "degree",
-         "camera direction around +y (up) from the box centre, from +z (south) towards +x (east)"},
-        {"elevation_deg", ParamKind::real, 30.0, -89.0, 89.0, {}, "degree", "camera direction above the ground plane"},
-        {"subpixel_bits", ParamKind::integer, 8, 0, 16, {}, "bit",
-         "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"},
-        {"vertical_scale", ParamKind::real, 1.0, 0.01, 100.0, {}, "1", "vertical exaggeration of the heights"},
-        {"base_depth", ParamKind::real, 0.0, 0.0, 1e5, {}, "m",
-         "depth of the solid's base below the lowest height; 0: a fifth of the relief (at least 2 % of the extent)"},
-        {"look", ParamKind::choice, "terrain", 0, 0, {"terrain", "plain"}, "1",
-         "terrain: height ramp from the lowest to the highest input height (before erosion, so that a before/after "
-         "pair shares its colours), rock by slope (skirts and base are rock); plain: seed 004's one albedo"},
-        {"drape", ParamKind::choice, "none", 0, 0, {"none", "astronaut", "grass", "material"}, "1",
-         "terrain look: colour image draped over the surface in plan view (datasets/real/textures/<name>.png, "
-         "west to east, north at the top), replacing the height ramp; material (erode = layered only): the "
-         "layered ground's surface material after the run, a texel a cell, water deeper than 5 cm blued by "
-         "depth; none: the ramp"},
-        {"min_covered_share", ParamKind::real, 0.05, 0.0, 1.0, {}, "1",
-         "least share of pixels the solid must cover in the reference image (0: not checked)"},
-        {"erode", ParamKind::choice, "none", 0, 0, {"none", "thermal", "pipe", "layered"}, "",
-         "erosion applied to the heightmap (reference, double) before meshing"},
-    };
-    append_prefixed(list, thermal_param_specs(), "thermal", {"normalised", "vertical_aspect"});
-    append_prefixed(list, hydraulic_param_specs(), "pipe", {});
-    append_prefixed(list, layered_case_param_specs(), "layered", {});
-    return list;
-  }();
+  static const ParamSpecs specs = param_specs(terrain_render_param_table());
   return specs;
 }
 
@@ -143,11 +96,7 @@ double largest_change(const Heightmap& before, const Heightmap& after) {
 }
 
 // Physical heights (T = tan α, lengths the cell sizes).
-Eroded thermally_eroded(const Heightmap& input, const nlohmann::json& resolved) {
-  nlohmann::json given = unprefixed(resolved, "thermal");
-  given["normalised"] = false;
-  given["vertical_aspect"] = 0.0;
-  const ThermalParams params = thermal_params_from_json(given);
+Eroded thermally_eroded(const Heightmap& input, const ThermalParams& params) {
   const ThermalConstants constants = thermal_constants(params, input);
   Eroded out{reference::thermal_erosion(input, constants, params.iterations, params.neighbourhood), ""};
   out.description = fmt::format("thermal erosion (reference, double): {} iterations, talus {}°, strength {}, {}; "
@@ -159,8 +108,7 @@ Eroded thermally_eroded(const Heightmap& input, const nlohmann::json& resolved) 
 }
 
 // Mei's pipes from a dry start (erosion.pipe's parameters; rain_rate brings the water).
-Eroded pipe_eroded(const Heightmap& input, const nlohmann::json& resolved) {
-  const HydraulicParams params = hydraulic_params_from_json(unprefixed(resolved, "pipe"));
+Eroded pipe_eroded(const Heightmap& input, const HydraulicParams& params) {
   reference::PipeErosion<double> erosion(dry_pipe_state(input), pipe_constants(params, input));
   erosion.run(params.steps);
   Eroded out{erosion.state().terrain, ""};
@@ -173,10 +121,10 @@ Eroded pipe_eroded(const Heightmap& input, const nlohmann::json& resolved) {
 }
 
 // Seed 001's layered ground (erosion.layered's case setup), ref<double>; the heights are its surface.
-Eroded layered_eroded(const Heightmap& input, const nlohmann::json& resolved) {
+Eroded layered_eroded(const Heightmap& input, const LayeredCaseParams& params) {
   LayeredSetup setup;
   try {
-    setup = layered_setup(unprefixed(resolved, "layered"), input);
+    setup = layered_setup(params, input);
   } catch (const InputError& refused) {
     throw InputError(fmt::format("render.terrain, erode = layered: {}", refused.what()));
   }
@@ -191,21 +139,19 @@ Eroded layered_eroded(const Heightmap& input, const nlohmann::json& resolved) {
   return out;
 }
 
-Eroded eroded(const Heightmap& input, const nlohmann::json& resolved) {
-  const std::string erode = resolved.at("erode");
-  if (erode == "thermal") return thermally_eroded(input, resolved);
-  if (erode == "pipe") return pipe_eroded(input, resolved);
-  if (erode == "layered") return layered_eroded(input, resolved);
+Eroded eroded(const Heightmap& input, const TerrainRenderParams& params) {
+  if (params.erode == "thermal") return thermally_eroded(input, params.thermal);
+  if (params.erode == "pipe") return pipe_eroded(input, params.pipe);
+  if (params.erode == "layered") return layered_eroded(input, params.layered);
   return {input, "", {}};
 }
 
 // The base below the eroded terrain lies where the un-eroded terrain's automatic base would (the
 // pair of cases then differs only in the surface), unless base_depth is given or the erosion dug
 // below that level (then the automatic depth of the eroded terrain).
-double base_depth(const Heightmap& input, const Heightmap& eroded, const nlohmann::json& resolved) {
-  const double given = resolved.at("base_depth");
-  if (given > 0.0 || resolved.at("erode") == "none") return given;
-  const double vertical_scale = resolved.at("vertical_scale");
+double base_depth(const Heightmap& input, const Heightmap& eroded, const TerrainRenderParams& params) {
+  if (params.base_depth > 0.0 || params.erode == "none") return params.base_depth;
+  const double vertical_scale = params.vertical_scale;
   const double original_base = reference::terrain_solid(input, {.vertical_scale = vertical_scale}).base_y;
   const reference::TerrainSolid automatic = reference::terrain_solid(eroded, {.vertical_scale = vertical_scale});
   const double depth = automatic.base_y + automatic.base_depth - original_base;  // from the lowest kept vertex
@@ -298,24 +244,22 @@ PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& 
   if (input.heights.size() == 0) {
     throw InputError("render.terrain meshes a heightmap: give the case a heightmap input ({\"file\": ...})");
   }
-  const std::string drape = resolved.at("drape");
-  if (drape == "material" && resolved.at("erode") != "layered") {
+  const auto params = params_from_json(terrain_render_param_table(), resolved);
+  const std::string& drape = params.drape;
+  if (drape == "material" && params.erode != "layered") {
     throw InputError("render.terrain: drape = material colours the surface by the layered ground's material, which "
                      "only erode = layered makes: set erode = layered, or choose another drape");
   }
-  Eroded terrain_heights = eroded(input.heights, resolved);
-  const double vertical_scale = resolved.at("vertical_scale");
+  Eroded terrain_heights = eroded(input.heights, params);
+  const double vertical_scale = params.vertical_scale;
   const reference::TerrainSolid solid = reference::terrain_solid(
       terrain_heights.heights,
-      {.vertical_scale = vertical_scale, .base_depth = base_depth(input.heights, terrain_heights.heights, resolved)});
-  const reference::Camera camera =
-      reference::orbit_camera(solid.mesh, resolved.at("azimuth_deg"), resolved.at("elevation_deg"),
-                              resolved.at("fov_deg"), resolved.at("width"), resolved.at("height"));
-  const bool terrain_look = resolved.at("look") == "terrain";
-  TerrainCase terrain{solid,
-                      reference::phong_scene(solid.mesh, camera,
-                                             terrain_look ? reference::Look::terrain : reference::Look::plain),
-                      resolved.at("subpixel_bits"), resolved.at("min_covered_share"), "", {}};
+      {.vertical_scale = vertical_scale, .base_depth = base_depth(input.heights, terrain_heights.heights, params)});
+  const reference::Camera camera = reference::orbit_camera(solid.mesh, params.azimuth_deg, params.elevation_deg,
+                                                           params.fov_deg, params.width, params.height);
+  const bool terrain_look = params.look == reference::Look::terrain;
+  TerrainCase terrain{solid, reference::phong_scene(solid.mesh, camera, params.look), params.subpixel_bits,
+                      params.min_covered_share, "", {}};
   // The ramp spans the input's heights before erosion (not the base's): an eroded terrain, whose
   // heights stay within that range (erosion moves material), keeps the colours of its original.
   if (terrain_look) {
@@ -345,8 +289,8 @@ PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& 
       "terrain solid: {} quads ({} dropped where two met only at a corner), {} triangles ({} surface, {} base, {} "
       "skirt), base at y = {:.4g} m ({:.4g} m below the lowest height), vertical scale {}",
       solid.kept_quads, solid.dropped_quads, solid.mesh.triangles.size(), solid.surface_triangles,
-      solid.base_triangles, solid.skirt_triangles, solid.base_y, solid.base_depth, resolved.at("vertical_scale").dump()));
-  const std::string erode = resolved.at("erode");
+      solid.base_triangles, solid.skirt_triangles, solid.base_y, solid.base_depth, nlohmann::json(vertical_scale).dump()));
+  const std::string& erode = params.erode;
   terrain.input = fmt::format("{}{}, solid of {} triangles", input.description,
                               erode == "none" ? "" : ", after " + erode + " erosion", solid.mesh.triangles.size());
   PreparedTwin prepared;
@@ -356,7 +300,61 @@ PreparedTwin prepare_terrain(const nlohmann::json& resolved, const LoadedInput& 
   return prepared;
 }
 
+// Another algorithm's rows under "<prefix>_<name>", so that several erosions can sit side by side;
+// `left_out` names the ones this algorithm fixes (at the struct's defaults).
+template <class Erosion>
+void append_prefixed(ParamTable<TerrainRenderParams>& rows, Erosion TerrainRenderParams::*member,
+                     const ParamTable<Erosion>& from, const std::string& prefix,
+                     const std::vector<std::string>& left_out) {
+  for (ParamRow<TerrainRenderParams> row : nested(member, from)) {
+    if (std::find(left_out.begin(), left_out.end(), row.spec.name) != left_out.end()) continue;
+    row.spec.name = prefix + "_" + row.spec.name;
+    row.spec.description = fmt::format("erode = {}: {}", prefix, row.spec.description);
+    rows.push_back(std::move(row));
+  }
+}
+
 }  // namespace
+
+const ParamTable<TerrainRenderParams>& terrain_render_param_table() {
+  using P = TerrainRenderParams;
+  static const ParamTable<P> table = [] {
+    ParamTable<P> rows = {
+        integer_param("width", &P::width, 1, 4096, "pixel", "image columns"),
+        integer_param("height", &P::height, 1, 4096, "pixel", "image rows"),
+        real_param("fov_deg", &P::fov_deg, 1.0, 150.0, "degree",
+                   "vertical field of view (37°: at 4:3 the horizontal one holds the bounding sphere)"),
+        real_param("azimuth_deg", &P::azimuth_deg, -360.0, 360.0, "degree",
+                   "camera direction around +y (up) from the box centre, from +z (south) towards +x (east)"),
+        real_param("elevation_deg", &P::elevation_deg, -89.0, 89.0, "degree",
+                   "camera direction above the ground plane"),
+        integer_param("subpixel_bits", &P::subpixel_bits, 0, 16, "bit",
+                      "GL_SUBPIXEL_BITS the reference snaps vertices to (8: llvmpipe and NVIDIA)"),
+        real_param("vertical_scale", &P::vertical_scale, 0.01, 100.0, "1", "vertical exaggeration of the heights"),
+        real_param("base_depth", &P::base_depth, 0.0, 1e5, "m",
+                   "depth of the solid's base below the lowest height; 0: a fifth of the relief (at least 2 % of the "
+                   "extent)"),
+        choice_param("look", &P::look, look_choices, "1",
+                     "terrain: height ramp from the lowest to the highest input height (before erosion, "
+                     "so that a before/after pair shares its colours), rock by slope (skirts and base are rock); "
+                     "plain: seed 004's one albedo"),
+        choice_param("drape", &P::drape, {"none", "astronaut", "grass", "material"}, "1",
+                     "terrain look: colour image draped over the surface in plan view "
+                     "(datasets/real/textures/<name>.png, west to east, north at the top), "
+                     "replacing the height ramp; material (erode = layered only): the layered ground's surface "
+                     "material after the run, a texel a cell, water deeper than 5 cm blued by depth; none: the ramp"),
+        real_param("min_covered_share", &P::min_covered_share, 0.0, 1.0, "1",
+                   "least share of pixels the solid must cover in the reference image (0: not checked)"),
+        choice_param("erode", &P::erode, {"none", "thermal", "pipe", "layered"}, "",
+                     "erosion applied to the heightmap (reference, double) before meshing"),
+    };
+    append_prefixed(rows, &P::thermal, thermal_param_table(), "thermal", {"normalised", "vertical_aspect"});
+    append_prefixed(rows, &P::pipe, hydraulic_param_table(), "pipe", {});
+    append_prefixed(rows, &P::layered, layered_case_param_table(), "layered", {});
+    return rows;
+  }();
+  return table;
+}
 
 Algorithm render_terrain_algorithm() {
   return {.name = "render.terrain",
@@ -369,9 +367,10 @@ Algorithm render_terrain_algorithm() {
           // Measured 2316 B a height cell (1024² vs 256² input: the closed solid, two triangles a
           // cell, and its checks) and 16 B a pixel (1024² vs 256² image).
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
-            const double pixels = resolved.at("width").get<double>() * resolved.at("height").get<double>();
+            const auto params = params_from_json(terrain_render_param_table(), resolved);
+            const double pixels = double(params.width) * params.height;
             // erode = layered adds its ground and water in double (erosion.layered's 1000 B a cell).
-            const double cell_bytes = resolved.at("erode") == "layered" ? 3600 : 2600;
+            const double cell_bytes = params.erode == "layered" ? 3600 : 2600;
             return memory_for(static_cast<double>(input.heights.size()), "cells", cell_bytes) +
                    memory_for(pixels, "pixels", 120);
           }};

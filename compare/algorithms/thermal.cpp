@@ -17,7 +17,7 @@
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
-#include "compare/height_stepper.hpp"
+#include "compare/steppers/height.hpp"
 #include "core/errors.hpp"
 #include "core/params/thermal.hpp"
 #include "gpu/erosion/thermal.hpp"

@@ -3,11 +3,14 @@
 // iterations).
 //
 // one_twin: bugs in beyer_droplets.comp only, killed by the batch ordering's bit-for-bit parity
-// (brush_unnormalised also by the disjoint ordering's parity.shadow.max_abs)
-// (parity.shadow.cells_differing and parity.cells_differing: the GPU against ref<float>, bound 0).
+// (parity.shadow.terrain[.multi] and parity.cells_differing: the GPU against ref<float>, bound 0);
+// brush_unnormalised also by the disjoint ordering's same-arithmetic bound (parity.shadow.terrain).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by the droplet ledger
-// (ledger.*: material neither created nor lost where the model does not say so).
+// (ledger.*: material neither created nor lost where the model does not say so). A droplet that
+// takes up nothing never fills and digs without bound: in batch ordering the probe's pass piles more
+// into a cell than the GPU's counters hold and ref<float> refuses the run, so that mutant runs on
+// the disjoint cone, whose references run the droplets one after the other.
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -26,7 +29,7 @@ std::vector<Mutant> beyer_mutants() {
        "beyer_droplets.comp deposits on the samples around the droplet's new position instead of its old one", probe},
       {"erosion.beyer.sediment_not_taken_on_erosion", MutantKind::both_twins,
        "both twins erode with the brush without adding what it takes to the droplet's sediment: material destroyed",
-       probe},
+       {"erosion.beyer.disjoint.cone"}},
       {"erosion.beyer.uphill_deposit_unbounded", MutantKind::both_twins,
        "both twins deposit the whole climb Δh uphill, not min(Δh, sediment), and clamp the sediment at 0: material "
        "created",

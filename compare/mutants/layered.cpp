@@ -13,7 +13,8 @@
 // against rain, river and sinks). The water's mutants run on two more probes: a cone under rain
 // and a plane with the river.
 //
-// one_twin: a bug in the GPU twin alone, killed by parity.state.gpu_vs_float (bit for bit).
+// one_twin: a bug in the GPU twin alone, killed by a parity.shadow.<field>.gpu_vs_float check (bit for
+// bit) or the end of the run's parity.<field>.max_abs.gpu_vs_float (bit for bit).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {

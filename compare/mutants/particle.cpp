@@ -3,9 +3,9 @@
 // spacing 2, 3 iterations) and its hand-derived droplets (spec.ramp, spec.bounded_bite).
 //
 // one_twin: bugs in particle_droplets.comp only, killed by the batch ordering's bit-for-bit parity
-// (parity.shadow.cells_differing, parity.cells_differing, for colour parity.colour.* and for the
+// (parity.shadow.terrain[.multi], parity.cells_differing, for colour parity.colour.* and for the
 // flow map parity.flow.*: the GPU against ref<float>, bound 0) and, on the disjoint cone, by the
-// disjoint ordering's rounding bound (parity.shadow.max_abs).
+// disjoint ordering's rounding bound (parity.shadow.terrain).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
 // was asked: the hand-derived droplet of the ramp (spec.droplet.*), the droplet ledger (ledger.*:

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "compare/field_twin.hpp"
 #include "compare/report/report_common.hpp"
 #include "compare/subprocess.hpp"
 
@@ -95,9 +96,10 @@ std::optional<Artifact> plot_series(const std::vector<SeriesPlot>& panels, const
   return Artifact{relative_png, "plot", caption};
 }
 
-void attach_plot(const std::vector<SeriesPlot>& panels, const std::filesystem::path& report_folder, const std::string& file,
+void attach_plot(const std::vector<SeriesPlot>& panels, const RunOptions& options, const std::string& file,
                  const std::string& caption, CaseResult& result) {
-  if (report_folder.empty()) return;
+  const std::filesystem::path& report_folder = options.report_dir;
+  if (report_folder.empty() || !options.pictures) return;
   std::filesystem::create_directories(report_folder / result.name);
   std::string reason;
   if (auto artifact = plot_series(panels, report_folder, result.name + "/" + file, caption, reason)) {

@@ -15,6 +15,8 @@
 
 namespace gt {
 
+struct RunOptions;
+
 // Writes folder/timings.png (folder is the report folder and must exist) and returns it as the
 // artifact {"timings.png", "plot", caption}. Returns std::nullopt and sets `reason` when there are
 // no rows, no Python with matplotlib, or the script fails (its last line of output says why);
@@ -47,10 +49,10 @@ struct SeriesPlot {
 std::optional<Artifact> plot_series(const std::vector<SeriesPlot>& panels, const std::filesystem::path& report_folder,
                                     const std::string& relative_png, const std::string& caption, std::string& reason);
 
-// A case's plot: draws report_folder/<case name>/<file> (creating the case's folder) and adds it to
-// the case's artifacts, or, when it cannot be drawn, a note "<file> unavailable: <reason>". Nothing
-// without a report folder.
-void attach_plot(const std::vector<SeriesPlot>& panels, const std::filesystem::path& report_folder,
-                 const std::string& file, const std::string& caption, CaseResult& result);
+// A case's plot: draws options.report_dir/<case name>/<file> (creating the case's folder) and adds
+// it to the case's artifacts, or, when it cannot be drawn, a note "<file> unavailable: <reason>".
+// Nothing without a report folder, nor in a run without pictures (RunOptions::pictures).
+void attach_plot(const std::vector<SeriesPlot>& panels, const RunOptions& options, const std::string& file,
+                 const std::string& caption, CaseResult& result);
 
 }  // namespace gt

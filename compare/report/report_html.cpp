@@ -121,6 +121,7 @@ void append_summary(std::string& out, const Report& report) {
   const bool failed = run_failed(report) || (report.mutation && !report.mutation->passed());
   out += fmt::format("</p>\n<p>{} cases, expected failures: {}. Run <span class=\"badge {}\">{}</span></p>\n",
                      counts.total(), counts.expected_failures, failed ? "fail" : "pass", failed ? "failed" : "ok");
+  if (!report.scope.empty()) out += fmt::format("<p class=\"scope\">{}</p>\n", h(report.scope));
   out += "</section>\n";
 }
 

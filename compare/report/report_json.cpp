@@ -88,6 +88,8 @@ json case_to_json(const CaseResult& result) {
   if (!result.descriptors.is_null()) out["descriptors"] = result.descriptors;
   if (!result.error.empty()) out["error"] = result.error;
   out["seconds"] = number_or_null(result.seconds);
+  if (result.expected_seconds) out["expected_seconds"] = number_or_null(*result.expected_seconds);
+  if (!result.tier.empty()) out["tier"] = result.tier;
   if (!result.earlier_attempts.empty()) out["earlier_attempts"] = attempts_to_json(result.earlier_attempts);
   if (!result.known_flake.empty()) out["known_flake"] = result.known_flake;
   return out;
@@ -161,6 +163,7 @@ json report_to_json(const Report& report) {
   out["summary"] = summary_to_json(report);
   out["expectation_problems"] = report.expectation_problems;
   if (report.mutation) out["mutation"] = mutation_to_json(*report.mutation);
+  if (!report.scope.empty()) out["scope"] = report.scope;
   if (report.baseline_diff) out["baseline"] = {{"file", report.baseline_file}, {"diff", to_json(*report.baseline_diff)}};
   if (report.shard) {
     out["shard"] = {{"index", report.shard->index}, {"count", report.shard->count},

@@ -41,6 +41,7 @@ void append_summary(std::string& out, const Report& report) {
   out += fmt::format("**{}** — {} cases: {}; expected failures: {}\n\n",
                      run_failed(report) ? "RUN FAILED" : "run ok", counts.total(), format_counts(counts, ", "),
                      counts.expected_failures);
+  if (!report.scope.empty()) out += fmt::format("{}\n\n", cell(report.scope));
 }
 
 

@@ -118,6 +118,8 @@ CaseResult case_from_json(const json& in) {
   result.descriptors = in.value("descriptors", json());
   result.error = in.value("error", "");
   result.seconds = in.contains("seconds") ? number_of(in["seconds"], "nan") : 0.0;
+  if (in.contains("expected_seconds")) result.expected_seconds = number_of(in["expected_seconds"], "nan");
+  result.tier = in.value("tier", "");
   result.earlier_attempts = attempts_from_json(in.value("earlier_attempts", json::array()));
   result.known_flake = in.value("known_flake", "");
   return result;
@@ -143,6 +145,7 @@ Report report_from_json(const json& document) {
     report.expectation_problems = document.value("expectation_problems", std::vector<std::string>{});
     where = "shard";
     if (document.contains("shard")) report.shard = shard_from_json(document["shard"]);
+    report.scope = document.value("scope", "");
   } catch (const json::exception& error) {
     throw InputError(fmt::format("report.json: {} is malformed: {}", where, error.what()));
   } catch (const InputError& error) {

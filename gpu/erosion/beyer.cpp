@@ -128,13 +128,13 @@ BeyerErosion::BeyerErosion(int width, int height, const BeyerConstants& constant
       valid_(cell_count(width, height) * sizeof(GLuint)),
       delta_(delta_bytes(constants, width, height)) {}
 
-void BeyerErosion::load(const Grid<float>& heights) {
+void BeyerErosion::load(const Grid<float>& heights, int iterations_done) {
   layout_ = load_heightfield(heights, layout_.width, layout_.height, heights_, valid_, "BeyerErosion");
   if (batch()) {
     const std::vector<std::int32_t> zeros(heights.size(), 0);
     delta_.upload(zeros.data(), zeros.size() * sizeof(std::int32_t));
   }
-  iterations_done_ = 0;
+  iterations_done_ = static_cast<std::uint32_t>(iterations_done);
 }
 
 void BeyerErosion::run() { step(iterations_); }

@@ -435,12 +435,12 @@ DropletRun<Real> empty_run(const Grid<Real>& heights) {
 
 template <class Real>
 DropletRun<Real> beyer_erosion(const Grid<Real>& heights, const BeyerConstants& constants, int iterations,
-                               DropletOrdering ordering) {
+                               DropletOrdering ordering, int first_iteration) {
   const Kernel<Real> kernel(constants);
   DropletRun<Real> run = empty_run(heights);
   const bool batch = ordering == DropletOrdering::batch;
   const int spacing = constants.spacing;
-  for (int iteration = 0; iteration < iterations; ++iteration) {
+  for (int iteration = first_iteration; iteration < first_iteration + iterations; ++iteration) {
     for (int y = 0; y < spacing; ++y) {
       for (int x = 0; x < spacing; ++x) {
         const std::uint32_t pass_number = static_cast<std::uint32_t>(iteration) *
@@ -483,8 +483,8 @@ BeyerPath<Real> beyer_one_droplet(Grid<Real>& heights, const BeyerConstants& con
   return path;
 }
 
-template DropletRun<double> beyer_erosion(const Grid<double>&, const BeyerConstants&, int, DropletOrdering);
-template DropletRun<float> beyer_erosion(const Grid<float>&, const BeyerConstants&, int, DropletOrdering);
+template DropletRun<double> beyer_erosion(const Grid<double>&, const BeyerConstants&, int, DropletOrdering, int);
+template DropletRun<float> beyer_erosion(const Grid<float>&, const BeyerConstants&, int, DropletOrdering, int);
 template Grid<double> beyer_brush_weights(const Grid<double>&, double, double, double);
 template Grid<double> beyer_brush_weights(const Grid<float>&, float, float, float);
 template BeyerPath<double> beyer_one_droplet(Grid<double>&, const BeyerConstants&, double, double, std::uint32_t);

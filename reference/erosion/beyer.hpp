@@ -1,21 +1,36 @@
-// Particle (droplet) hydraulic erosion after Beyer 2015 (seed 000 §2.7, digest 000 §3.7), CPU
-// reference.
+// Droplet hydraulic erosion after Beyer 2015 (seed 000 §2.7, eqs. 2.35-2.45; digest 000 §3.7), CPU reference.
 //
-// beyer_erosion(heights, constants, iterations, ordering) -> heights, droplet maps and ledger
-//   heights     Grid<Real>, samples at integer points, in the units of `constants` (seed 000's
-//               normalised [0,1] heights by default); cells with valid == 0 are no data: a droplet
-//               whose bilinear cell touches one is off the map, and the brush skips them.
-//   constants   core/params/beyer.hpp; Real = float rounds each constant once, as the GPU does.
-//   iterations  outer iterations of Algorithm 7, each spacing² passes, one droplet per texel.
-//   ordering    race and disjoint: the droplets of a pass run one after the other in row-major
-//               order of their block, each on the heights its predecessors left (the defined truth);
-//               batch: every droplet of a pass reads the heights of the pass's start and its
-//               erosion and deposition are integer quanta added into a delta applied at the end.
+// beyer_erosion(heights, constants, iterations, ordering[, first_iteration]) -> heights, droplet maps and
+//   ledger (DropletRun)
+// beyer_brush_weights(heights, x, y, radius) -> eq. 2.42's brush for a droplet at (x, y), as the
+//   kernel computes it in Real
+// beyer_one_droplet(heights, constants, x, y, droplet_id) -> BeyerPath: one droplet (spec vectors)
 // Real = double is the truth; Real = float repeats the shader's arithmetic operation by operation.
 //
-// The ledger and the side maps: reference/erosion/droplets.hpp. Beyer's droplets never touch a
-// sample off the map, so the ledger's *_outside and clamp terms stay 0; the side maps get each
-// step's eroded or deposited total at the droplet's old cell.
+// Inputs:  heights     Grid<Real>, samples at integer points; cells with valid == 0 are no data: a
+//                      droplet whose bilinear cell touches one is off the map, and the brush skips them.
+//          constants   core/params/beyer.hpp; Real = float rounds each constant once, as the GPU does.
+//          iterations  outer iterations of Algorithm 7, each spacing² passes, one droplet per texel.
+//          ordering    race and disjoint: the droplets of a pass run one after the other in row-major
+//                      order of their block, each on the heights its predecessors left (the defined
+//                      truth); batch: every droplet of a pass reads the heights of the pass's start and
+//                      its erosion and deposition are integer quanta added into a delta applied at the end.
+//          droplet_id  the RNG counter of a single droplet's random directions.
+// Outputs: DropletRun: the heights, the ledger and the side maps (reference/erosion/droplets.hpp).
+//          Beyer's droplets never touch a sample off the map, so the ledger's *_outside and clamp
+//          terms stay 0; the side maps get each step's eroded or deposited total at the droplet's old
+//          cell. The brush: at each sample (sx, sy) with sx in [ceil(x - radius), floor(x + radius)]
+//          (sy alike) that lies inside the grid and is valid, w / Σw with w = max(radius - |(sx, sy) -
+//          (x, y)|, 0); 0 at every other cell; all zeros when Σw is 0 (the kernel then erodes nothing).
+//          BeyerPath: the positions the droplet occupied after each step it completed (the start
+//          first), what it carried when it ended, and whether it ended by leaving the map.
+// Units:   heights in the units of `constants` (seed 000's normalised [0,1] heights by default);
+//          positions in texels.
+// Throws:  std::runtime_error in batch ordering when a cell's delta in one pass exceeds the GPU's
+//          32-bit counter.
+// Twin:    gpu/erosion/beyer.hpp (BeyerErosion) with gpu/shaders/erosion/beyer_droplets.comp,
+//          beyer_apply.comp and beyer_block.glsl.
+// Decisions: in reference/erosion/beyer.cpp and gpu/shaders/erosion/beyer_droplets.comp (shared).
 #pragma once
 
 #include <cstdint>
@@ -30,7 +45,7 @@ namespace gt::reference {
 
 template <class Real>
 DropletRun<Real> beyer_erosion(const Grid<Real>& heights, const BeyerConstants& constants, int iterations,
-                               DropletOrdering ordering);
+                               DropletOrdering ordering, int first_iteration = 0);
 
 // Eq. 2.42's brush for a droplet at (x, y) on `heights`, as the kernel computes it in Real: at each
 // sample (sx, sy) with sx in [ceil(x - radius), floor(x + radius)] (sy alike) that lies inside the

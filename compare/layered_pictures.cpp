@@ -1,0 +1,138 @@
+// The pictures of the layered ground after a run (see layered_pictures.hpp).
+#include "compare/layered_pictures.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "compare/field_files.hpp"
+#include "compare/layered_look.hpp"
+#include "compare/report/images.hpp"
+#include "reference/erosion/layered/material_masks.hpp"
+
+namespace gt {
+namespace {
+
+using Colour = LayeredColour;
+
+// The middle row: above, the surface's elevation (grey ground under white air, its range stretched
+// to the panel); below, a dark rule, then the layers from the surface down to 1.2 times the deepest
+// soil plus soft rock of the row, true to scale in depth.
+void write_cross_section(const LayeredGround<double>& ground, const std::filesystem::path& png, double& depth_shown) {
+  constexpr int elevation_rows = 120, rule_rows = 3, layer_rows = 240;
+  const int row = ground.height / 2;
+  const int scale = std::max(1, 720 / ground.width);
+  const int width = ground.width * scale;
+  double low = std::numeric_limits<double>::infinity(), high = -low, deepest = 0.0;
+  for (int x = 0; x < ground.width; ++x) {
+    const std::size_t c = ground.cell(x, row);
+    low = std::min(low, ground.surface[c]);
+    high = std::max(high, ground.surface[c]);
+    double soft = ground.soil_thickness(0, c) + ground.soil_thickness(1, c);
+    if (ground.bedrock_layer_count > 0) soft += ground.bedrock_at(0, c);
+    deepest = std::max(deepest, soft);
+  }
+  depth_shown = std::max(1.2 * deepest, 1.0);
+  const double span = std::max(high - low, 1e-9);
+  std::vector<Colour> pixels(std::size_t(width) * (elevation_rows + rule_rows + layer_rows));
+  for (int px = 0; px < width; ++px) {
+    const std::size_t c = ground.cell(px / scale, row);
+    const double ground_rows = 8.0 + (elevation_rows - 16.0) * (ground.surface[c] - low) / span;
+    for (int py = 0; py < elevation_rows; ++py) {
+      const bool below = elevation_rows - py <= ground_rows;
+      pixels[std::size_t(py) * width + px] = below ? layered_surface_colour(ground, c) : Colour{1, 1, 1};
+    }
+    for (int py = elevation_rows; py < elevation_rows + rule_rows; ++py) pixels[std::size_t(py) * width + px] = {0.1f, 0.1f, 0.1f};
+    for (int py = 0; py < layer_rows; ++py) {
+      const double depth = (py + 0.5) / layer_rows * depth_shown;
+      pixels[std::size_t(elevation_rows + rule_rows + py) * width + px] = layered_colour_at_depth(ground, c, depth);
+    }
+  }
+  write_colour_image(width, elevation_rows + rule_rows + layer_rows, pixels, png);
+}
+
+// The material masks (§3.17, reference/erosion/layered/material_masks.hpp) as fields `mask_<material>`
+// and one picture: a panel per material, left to right, each mask from black (0) to the material's
+// colour (1).
+void write_material_masks(const LayeredGround<double>& ground, const LayeredParams& params, const RunOptions& options,
+                          CaseResult& result) {
+  const std::size_t materials = soil_component_count + params.bedrock_types.size();
+  std::vector<Grid<double>> masks(materials, Grid<double>(ground.width, ground.height));
+  for (std::size_t c = 0; c < ground.cells(); ++c) {
+    const auto column = reference::material_masks(ground, params, c);
+    for (std::size_t m = 0; m < materials; ++m) masks[m].values[c] = column[m];
+  }
+  constexpr int gap = 2;
+  const int scale = std::max(1, 240 / std::max(ground.width, ground.height));
+  const int panel = ground.width * scale;
+  const int width = int(materials) * (panel + gap) - gap;
+  std::vector<Colour> pixels(std::size_t(width) * std::size_t(ground.height * scale), Colour{1, 1, 1});
+  for (std::size_t m = 0; m < materials; ++m) {
+    auto& mask = masks[m];
+    mask.cell_size_x = ground.cell_size_x;
+    mask.cell_size_y = ground.cell_size_y;
+    const Colour colour = m < soil_component_count ? layered_component_colour(int(m))
+                                                   : layered_bedrock_colour(int(m - soil_component_count));
+    for (int py = 0; py < ground.height * scale; ++py) {
+      for (int px = 0; px < panel; ++px) {
+        const auto value = float(mask.values[ground.cell(px / scale, py / scale)]);
+        Colour& pixel = pixels[std::size_t(py) * std::size_t(width) + std::size_t(int(m) * (panel + gap) + px)];
+        for (int channel = 0; channel < 3; ++channel) pixel[channel] = value * colour[channel];
+      }
+    }
+    const std::string name = layered_material_name(m);
+    std::string key = "mask_" + name;
+    std::replace(key.begin(), key.end(), ' ', '_');
+    write_field_files(mask, {key, key, "cpu", "1", fmt::format("share of the surface showing {} (§3.17), ref<double>", name)},
+                      options, result);
+  }
+  const auto folder = options.report_dir / result.name;
+  write_colour_image(width, ground.height * scale, pixels, folder / "material_masks.png");
+  std::string order;
+  for (std::size_t m = 0; m < materials; ++m) order += (m ? ", " : "") + layered_material_name(m);
+  result.artifacts.push_back(
+      {result.name + "/material_masks.png", "image",
+       fmt::format("material masks after the run with the thesis's transparency (§3.17: a layer thinner than "
+                   "K_pmin lets the one below show), a panel per material from black (0) to its colour (1): {}",
+                   order)});
+}
+
+}  // namespace
+
+std::string layered_material_name(std::size_t material) {
+  return material < soil_component_count ? soil_component_name(int(material))
+                                         : fmt::format("bedrock type {}", material - soil_component_count);
+}
+
+void write_layered_pictures(const LayeredGround<double>& ground, const LayeredParams& params, const RunOptions& options,
+                            CaseResult& result) {
+  const auto folder = options.report_dir / result.name;
+  std::filesystem::create_directories(folder);
+  std::vector<Colour> surface;
+  for (std::size_t c = 0; c < ground.cells(); ++c) surface.push_back(layered_surface_colour(ground, c));
+  // Each cell a square of pixels, so a small grid is still readable.
+  const int scale = std::max(1, 512 / ground.width);
+  std::vector<Colour> pixels;
+  for (int py = 0; py < ground.height * scale; ++py) {
+    for (int px = 0; px < ground.width * scale; ++px) pixels.push_back(surface[ground.cell(px / scale, py / scale)]);
+  }
+  write_colour_image(ground.width * scale, ground.height * scale, pixels, folder / "surface_material.png");
+  result.artifacts.push_back({result.name + "/surface_material.png", "image",
+                              "surface material after the run, ref<double> (a cell a square of pixels): the top non-empty layer's mixture (organic "
+                              "dark brown, sand pale yellow, gravel light grey, stones grey, boulders slate; bedrock: "
+                              "soft rock red, hard rock dark grey), greened by 35 % of the vegetation density"});
+  write_material_masks(ground, params, options, result);
+  double depth_shown = 0.0;
+  write_cross_section(ground, folder / "cross_section.png", depth_shown);
+  result.artifacts.push_back(
+      {result.name + "/cross_section.png", "image",
+       fmt::format("cross-section along row {} after the run: above, the surface (elevation stretched to the panel); "
+                   "below, the layers from the surface down to {:.3g} m, true to scale in depth (topsoil, the subsoil "
+                   "darker, soft rock red, hard rock grey; colours as the surface material)",
+                   ground.height / 2, depth_shown)});
+}
+
+}  // namespace gt
