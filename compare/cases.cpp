@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <fnmatch.h>
 #include <fstream>
+#include <iterator>
 #include <set>
 
 #include <fmt/format.h>
@@ -16,7 +17,7 @@ namespace gt {
 namespace {
 
 const std::vector<std::string> known_case_keys = {"name",   "algorithm",   "params", "input", "crop",
-                                                  "expect", "description", "ab"};
+                                                  "expect", "description", "ab",     "tier"};
 
 std::vector<std::filesystem::path> case_files(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
@@ -29,7 +30,26 @@ std::vector<std::filesystem::path> case_files(const std::filesystem::path& folde
   return files;
 }
 
+Tier tier_of(const nlohmann::json& entry, const std::string& where) {
+  if (!entry.contains("tier")) return Tier::report;
+  for (const Tier tier : {Tier::quick, Tier::report, Tier::full}) {
+    if (entry["tier"] == tier_name(tier)) return tier;
+  }
+  throw InputError(fmt::format("{}: \"tier\" must be \"quick\", \"report\" or \"full\", not {}", where,
+                               entry["tier"].dump()));
+}
+
 }  // namespace
+
+const char* tier_name(Tier tier) {
+  return tier == Tier::quick ? "quick" : tier == Tier::report ? "report" : "full";
+}
+
+std::vector<CaseSpec> cases_in_tier(const std::vector<CaseSpec>& cases, Tier tier) {
+  std::vector<CaseSpec> kept;
+  std::copy_if(cases.begin(), cases.end(), std::back_inserter(kept), [&](const CaseSpec& spec) { return spec.tier <= tier; });
+  return kept;
+}
 
 std::string case_name_part(const std::string& text) {
   std::string part;
@@ -67,6 +87,7 @@ CaseSpec single_case_from_json(const nlohmann::json& entry, const std::string& o
   spec.crop = entry.value("crop", nlohmann::json());
   spec.expect = entry.value("expect", nlohmann::json());
   spec.origin = origin;
+  spec.tier = tier_of(entry, where);
   return spec;
 }
 

@@ -19,6 +19,8 @@
 //                                                          sides differ and set no parameter of "params".
 //                                                          A run holding both writes the pair's page
 //                                                          ab.<name>.html (compare/ab.hpp).
+//    "tier": "quick" | "report" | "full"}                 optional, "report" when absent: the
+//                                                          smallest suite that runs it (see Tier)
 #pragma once
 
 #include <filesystem>
@@ -29,6 +31,14 @@
 
 namespace gt {
 
+// The suites a case belongs to, each holding the one before: `run --quick` runs the quick tier
+// (a pre-commit answer in under 2 minutes on 2 cores, every algorithm family), `report` the quick
+// and report tiers (every family's decisive checks, within the README's 15 minutes), `report
+// --full` every case (the long runs and the largest grids too). Declared by each case file entry.
+enum class Tier { quick, report, full };
+
+const char* tier_name(Tier tier);
+
 struct CaseSpec {
   std::string name;
   std::string algorithm;
@@ -37,6 +47,7 @@ struct CaseSpec {
   nlohmann::json crop;     // null or [x, y, width, height]
   nlohmann::json expect;   // null or {"cells": [...], "total": ..., "tolerance": ...}
   std::string origin;      // the case file it came from, or "command line"
+  Tier tier = Tier::report;
   // One side of a case file's A/B pair: the entry's name, "a" or "b", and that side's parameters
   // (also merged into params); empty for other cases.
   std::string ab_pair;
@@ -60,6 +71,9 @@ std::vector<CaseSpec> cases_from_json(const nlohmann::json& entry, const std::st
 // `text` (a file name, an algorithm) as one part of a dotted case name: lower case, every other
 // character '_', at most 100 characters, "input" when empty.
 std::string case_name_part(const std::string& text);
+
+// The cases of `tier` and of the tiers it holds, in load order.
+std::vector<CaseSpec> cases_in_tier(const std::vector<CaseSpec>& cases, Tier tier);
 
 // The cases whose names match any of the shell-style patterns (fnmatch), in load order.
 // Throws InputError when a pattern matches nothing, listing how to see the names.

@@ -3,15 +3,18 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <set>
 #include <type_traits>
 #include <variant>
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compare/ab.hpp"
 #include "compare/algorithm.hpp"
@@ -22,6 +25,7 @@
 #include "compare/expectations.hpp"
 #include "compare/inputs.hpp"
 #include "compare/isolated_cases.hpp"
+#include "compare/case_seconds.hpp"
 #include "compare/progress.hpp"
 #include "compare/provenance.hpp"
 #include "compare/shards.hpp"
@@ -72,8 +76,10 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
     spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
     if (ad_hoc.red_channel) spec.input["red_channel"] = true;
     if (ad_hoc.cell_size > 0.0) spec.input["cell_size"] = ad_hoc.cell_size;
+    if (ad_hoc.cell_size_y > 0.0) spec.input["cell_size_y"] = ad_hoc.cell_size_y;
   } else if (algorithm.kind == CaseKind::generated) {
     spec.input = {{"generator", "flat"}, {"width", ad_hoc.width}, {"height", ad_hoc.height}, {"cell_size", ad_hoc.cell_size > 0.0 ? ad_hoc.cell_size : 1.0}};
+    if (ad_hoc.cell_size_y > 0.0) spec.input["cell_size_y"] = ad_hoc.cell_size_y;
   } else {
     // Only a generated field samples a grid of --width x --height without an input; anything else
     // on a flat grid made up for it would run silently on nothing.
@@ -104,9 +110,37 @@ const AdHocCase& ad_hoc_of(const CaseSpec& spec, const DriverOptions& options) {
   return *options.ad_hoc;
 }
 
+// The cases the patterns select that the tier keeps; none kept is refused.
+std::vector<CaseSpec> tiered_cases(const DriverOptions& options, const std::vector<CaseSpec>& suite) {
+  const auto matched = select_cases(suite, options.patterns);
+  if (!options.tier) return matched;
+  auto kept = cases_in_tier(matched, *options.tier);
+  if (kept.empty()) {
+    throw InputError(fmt::format("none of the {} cases selected is in the {} tier (each case file entry's \"tier\"); "
+                                 "name them without the tier's flag to run them",
+                                 matched.size(), tier_name(*options.tier)));
+  }
+  return kept;
+}
+
+// What the tier left out of the selection, for the report's scope line; empty when nothing was.
+std::string tier_scope(const DriverOptions& options, const std::vector<CaseSpec>& suite, std::size_t kept) {
+  if (!options.tier || options.patterns.empty()) return "";
+  const auto matched = select_cases(suite, options.patterns);
+  std::vector<std::string> left;
+  for (const auto& spec : matched) {
+    if (spec.tier > *options.tier) left.push_back(spec.name);
+  }
+  if (left.empty() && options.left_out.empty()) return "";
+  std::string scope = fmt::format("tier {}: {} of {} cases ran", tier_name(*options.tier), kept, matched.size());
+  if (!left.empty()) scope += fmt::format("; left out: {}", fmt::join(left, ", "));
+  if (!options.left_out.empty()) scope += "; " + options.left_out;
+  return scope + ".";
+}
+
 std::vector<CaseSpec> selected_specs(const DriverOptions& options, const std::vector<CaseSpec>& suite) {
   std::vector<CaseSpec> specs;
-  if (!options.patterns.empty()) specs = select_cases(suite, options.patterns);
+  if (!options.patterns.empty()) specs = tiered_cases(options, suite);
   if (options.ad_hoc) specs.push_back(ad_hoc_spec(*options.ad_hoc));
   if (options.sweep) {
     for (const AdHocCase& variant : options.sweep->variants) specs.push_back(ad_hoc_spec(variant));
@@ -309,6 +343,7 @@ std::vector<std::string> worker_common_args(const DriverOptions& options) {
                                    "--backend",  backends_name(options.backends),
                                    "--cpu-reps", std::to_string(options.cpu_reps),
                                    "--gpu-reps", std::to_string(options.gpu_reps)};
+  if (options.checkpoints > 0) args.insert(args.end(), {"--checkpoints", std::to_string(options.checkpoints)});
   for (const auto& file : options.extra_cases) args.insert(args.end(), {"--cases", std::filesystem::absolute(file).string()});
   if (!options.mutant.empty()) args.insert(args.end(), {"--mutant", options.mutant});
   if (options.require_gpu) args.push_back("--require-gpu");
@@ -323,6 +358,7 @@ std::vector<std::string> job_selection(const Job& job, const DriverOptions& opti
   std::vector<std::string> args = {"--algorithm", ad_hoc.algorithm, "--size",
                                    fmt::format("{}x{}", ad_hoc.width, ad_hoc.height)};
   if (ad_hoc.cell_size > 0.0) args.insert(args.end(), {"--cell-size", fmt::format("{}", ad_hoc.cell_size)});
+  if (ad_hoc.cell_size_y > 0.0) args.insert(args.end(), {"--cell-size-y", fmt::format("{}", ad_hoc.cell_size_y)});
   if (!ad_hoc.input.empty()) args.insert(args.end(), {"--input", std::filesystem::absolute(ad_hoc.input).string()});
   for (const auto& assignment : ad_hoc.assignments) args.insert(args.end(), {"--set", assignment});
   if (ad_hoc.red_channel) args.push_back("--red-channel");
@@ -331,23 +367,21 @@ std::vector<std::string> job_selection(const Job& job, const DriverOptions& opti
 }
 
 CaseResult::Attempt attempt_of(const CaseResult& result) {
-  CaseResult::Attempt attempt{result.status, result.error, {}};
-  for (const Check& check : result.checks) {
-    if (check.status != Outcome::fail && check.status != Outcome::error) continue;
-    attempt.failing_checks.push_back(fmt::format("{} = {:.6g}{}", check.name, check.value,
-                                                 check.threshold ? fmt::format(" (bound {:.6g})", *check.threshold) : ""));
-  }
-  return attempt;
+  return {result.status, result.error, failing_checks(result)};
 }
 
 // Runs a list of jobs in this process or in workers, and returns their results in order.
 class CaseRunner {
  public:
-  CaseRunner(const DriverOptions& options, const std::filesystem::path& folder, Report& report)
-      : options_(options), folder_(folder), report_(report) {
+  CaseRunner(const DriverOptions& options, const std::filesystem::path& folder, Report& report, CaseSeconds expected,
+             const std::vector<Expectation>& expectations)
+      : options_(options), folder_(folder), report_(report), expected_(std::move(expected)), expectations_(expectations) {
     run_options_.dataset_dir = options.dataset_dir;
     run_options_.cpu_reps = options.backends == Backends::gpu ? 0 : options.cpu_reps;
     run_options_.gpu_reps = options.gpu_reps;
+    run_options_.checkpoints = options.checkpoints;
+    run_options_.pictures = options.pictures;
+    run_options_.descriptors = options.descriptors;
     run_options_.report_dir = folder;
     if (isolated()) {
       isolation_.parallel = options.parallel;
@@ -361,22 +395,67 @@ class CaseRunner {
   bool isolated() const { return !options_.worker && (options_.parallel > 1 || options_.case_timeout); }
 
   std::vector<CaseResult> run(const std::vector<const Job*>& jobs) {
-    Progress progress(static_cast<int>(jobs.size()), options_.quiet);
+    ProgressOptions shown{.quiet = options_.quiet,
+                          .workers = isolated() ? options_.parallel : 1,
+                          .expected = expected_,
+                          .heartbeat = std::chrono::milliseconds(std::lround(options_.heartbeat_seconds * 1000.0)),
+                          .remark = [this](const CaseResult& result) { return expectation_remark(result); }};
+    for (const Job* job : jobs) shown.planned.push_back(job->spec.name);
+    Progress progress(static_cast<int>(jobs.size()), std::move(shown));
     std::vector<CaseResult> results;
     if (isolated()) {
+      // Longest first, so that no long case starts last while the other workers idle.
+      const auto order = longest_first(jobs);
       std::vector<IsolatedCase> cases;
-      for (const Job* job : jobs) cases.push_back({job_selection(*job, options_), case_header(*job)});
-      results = run_isolated(cases, isolation_, folder_, report_.environment, progress);
+      for (const std::size_t index : order) cases.push_back({job_selection(*jobs[index], options_), case_header(*jobs[index])});
+      auto ordered = run_isolated(cases, isolation_, folder_, report_.environment, progress);
+      results.resize(jobs.size());
+      for (std::size_t k = 0; k < order.size(); ++k) results[order[k]] = std::move(ordered[k]);
     } else {
       run_options_.progress = &progress;
-      for (std::size_t index = 0; index < jobs.size(); ++index) {
-        progress.start_case(static_cast<int>(index + 1), jobs[index]->spec.name);
-        results.push_back(run_job(*jobs[index], run_options_, context_.get(), options_.require_gpu));
+      for (const Job* job : jobs) {
+        progress.start_case(job->spec.name);
+        results.push_back(run_job(*job, run_options_, context_.get(), options_.require_gpu));
+        progress.end_case(results.back());
       }
       run_options_.progress = nullptr;
     }
     progress.finish();
+    for (std::size_t index = 0; index < jobs.size(); ++index) {
+      results[index].tier = tier_name(jobs[index]->spec.tier);
+      if (const auto found = expected_.find(jobs[index]->spec.name); found != expected_.end()) {
+        results[index].expected_seconds = found->second;
+      }
+    }
     return results;
+  }
+
+  // "(expected failure: <reasons>)" when the expectation list names every failing check of a
+  // failed case; the run's verdict comes later, from the same list (apply_expectations).
+  std::string expectation_remark(const CaseResult& result) const {
+    if (result.status != Outcome::fail || expectations_.empty()) return "";
+    Report one;
+    one.environment = report_.environment;
+    one.cases = {result};
+    apply_expectations(expectations_, one);
+    return one.cases.front().expected_failure.empty() ? "" : "(expected failure: " + one.cases.front().expected_failure + ")";
+  }
+
+  // The jobs' indices by expected seconds, longest first (a job without a record counts as the mean
+  // of those with one); ties keep the load order.
+  std::vector<std::size_t> longest_first(const std::vector<const Job*>& jobs) const {
+    std::vector<std::string> names;
+    for (const Job* job : jobs) names.push_back(job->spec.name);
+    const double unknown = mean_expected_seconds(names, expected_).value_or(0.0);
+    std::vector<double> seconds;
+    for (const Job* job : jobs) {
+      const auto found = expected_.find(job->spec.name);
+      seconds.push_back(found != expected_.end() ? found->second : unknown);
+    }
+    std::vector<std::size_t> order(jobs.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return seconds[a] > seconds[b]; });
+    return order;
   }
 
   // The context benchmarks need (opened now in a run whose cases ran in workers).
@@ -398,6 +477,11 @@ class CaseRunner {
       try {
         context_ = GlContext::create(options_.gl);
         run_options_.gpu_available = true;
+        // A fallback taken for the user (e.g. a GPU's EGL device gave no context): said, with why.
+        if (!options_.quiet && !context_->info().passed_over.empty()) {
+          fmt::print(stderr, "groundtruth: GL through {} ({}), after: {}\n", context_->info().platform,
+                     context_->info().renderer, fmt::join(context_->info().passed_over, "; "));
+        }
       } catch (const GpuUnavailable& error) {
         run_options_.gpu_unavailable_reason = fmt::format("no GL context: {}", error.what());
         fmt::print(stderr, "groundtruth: {}; {}\n", error.what(),
@@ -418,6 +502,8 @@ class CaseRunner {
   IsolationOptions isolation_;
   std::unique_ptr<GlContext> context_;
   bool context_opened_ = false;
+  CaseSeconds expected_;
+  const std::vector<Expectation>& expectations_;
 };
 
 // --retries (and the flake list): a case that failed unexpectedly is run again; one that then
@@ -483,6 +569,7 @@ int run_driver(const DriverOptions& options) {
                              : selected_specs(options, suite);
   const auto baseline = read_baseline(options.baseline, selection);
   Report report;
+  report.scope = tier_scope(options, suite, selection.size());
   const auto specs = shard_specs(selection, options, baseline, report);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
   // A worker's parent applies the expectations and makes the retries.
@@ -490,10 +577,12 @@ int run_driver(const DriverOptions& options) {
   check_output_folder(options.out);
 
   report.environment = base_environment(options.command_line);
-  if (!options.worker) report.environment.calibration_ms = calibration_ms();  // only runs that time cases need it
+  // Only runs that time their cases need it: workers report to a parent, and untimed runs time nothing.
+  if (!options.worker && (options.cpu_reps > 0 || options.gpu_reps > 0)) report.environment.calibration_ms = calibration_ms();
 
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
-    CaseRunner runner(options, folder, report);
+    CaseRunner runner(options, folder, report,
+                      expected_case_seconds(options.dataset_dir, options.out / "report.json", baseline), expectations);
     std::vector<const Job*> all;
     for (const auto& job : jobs) all.push_back(&job);
     report.cases = runner.run(all);

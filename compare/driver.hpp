@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "compare/benchmark.hpp"
+#include "compare/cases.hpp"
 #include "compare/mutation.hpp"
 #include "compare/output_folder.hpp"
 #include "compare/result.hpp"
@@ -24,6 +25,7 @@ struct AdHocCase {
   int width = 256;                       //   width x height grid of cell_size
   int height = 256;
   double cell_size = 0.0;                // metres; 0: the file's own, or 1 m for a generator
+  double cell_size_y = 0.0;              // the rows' spacing when it differs from cell_size (0: cell_size)
   std::vector<std::string> assignments;  // "name=value"
   bool red_channel = false;              // a colour image's red channel as height (else it is refused)
   std::string name;                      // the case's name; empty: adhoc.<algorithm>.<input>
@@ -45,6 +47,8 @@ struct Sweep {
 
 struct DriverOptions {
   std::vector<std::string> patterns;     // case-name globs
+  std::optional<Tier> tier;              // only the cases of this tier and those it holds (run --quick, report)
+  std::string left_out;                  // what else the tier leaves out (report: benchmark sizes, mutants)
   std::optional<AdHocCase> ad_hoc;
   std::optional<Sweep> sweep;            // a sweep's variants, run as ad-hoc cases and tabled
   Backends backends = Backends::both;
@@ -52,12 +56,16 @@ struct DriverOptions {
   std::filesystem::path out;
   std::filesystem::path dataset_dir;
   std::vector<std::filesystem::path> extra_cases;  // --cases: more case files or folders
-  int cpu_reps = 3;
+  int cpu_reps = 3;                      // timed repetitions; 0: the twins run untimed (and no calibration)
   int gpu_reps = 5;
+  bool pictures = true;                  // RunOptions::pictures and ::descriptors (the Python module's knobs)
+  bool descriptors = true;
+  int checkpoints = 0;  // a stepped case's shadow-step starts (--checkpoints); 0: the algorithm's own
   std::optional<BenchmarkOptions> benchmark;
   std::string mutant;                    // a registered mutant to activate (compare/mutants/), or empty
   bool require_gpu = false;              // a missing GL context makes every GPU-using case `error`
   bool quiet = false;                    // no progress lines on stderr
+  double heartbeat_seconds = 30.0;       // a "still running" line after this long without one
   bool summary = true;                   // each case's outcome and the totals on stdout (the Python module asks none)
   std::filesystem::path baseline;        // a previous report.json to diff against (compare/report_diff.hpp)
   std::optional<MutationOptions> mutation;  // also run the mutants (report: into OUT/mutants/)

@@ -100,21 +100,21 @@ std::vector<CaseResult> run_isolated(const std::vector<IsolatedCase>& cases, con
     tasks.push_back({args, workers / fmt::format("{}.log", index), llvmpipe_share(options.parallel)});
   }
   std::vector<CaseResult> results(cases.size());
-  int started_count = 0;
   run_workers(
       tasks, options.parallel, options.timeout_seconds,
-      [&](std::size_t index) { progress.start_case(++started_count, cases[index].known.name); },
+      [&](std::size_t index) { progress.start_case(cases[index].known.name); },
       [&](std::size_t index, const WorkerResult& worker) {
         const auto worker_folder = workers / std::to_string(index);
         const std::string& name = cases[index].known.name;
         if (auto result = worker_case(worker_folder, name, environment)) {
           adopt_case_folder(worker_folder, folder, name);
-          result->seconds = worker.seconds;
           results[index] = std::move(*result);
         } else {
           results[index] = failed_case(cases[index], worker_failure(worker, options.timeout_seconds, tasks[index].log),
                                        tasks[index].log, folder);
         }
+        results[index].seconds = worker.seconds;
+        progress.end_case(results[index]);
       });
   std::filesystem::remove_all(workers);
   return results;

@@ -2,10 +2,16 @@
 # Everything before the first run on a fresh Debian 12 machine (as root): the Debian packages,
 # the real data sets, a release build in build/release, and `import groundtruth` for Debian's
 # Python (a .pth file naming build/release/python in its site-packages).
+# Usage: setup.sh [TARGET ...]   the CMake targets to build; none: all of them (the tests too).
+# report.sh builds only what the report runs (the groundtruth executable and the Python module).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash datasets/fetch.sh
 cmake --preset release
-cmake --build --preset release
+if [ "$#" -eq 0 ]; then
+  cmake --build --preset release
+else
+  cmake --build --preset release --target "$@"
+fi
 bash scripts/install-python-path.sh build/release

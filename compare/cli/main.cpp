@@ -37,6 +37,7 @@
 
 #include "compare/ab.hpp"
 #include "compare/algorithm.hpp"
+#include "compare/case_seconds.hpp"
 #include "compare/cases.hpp"
 #include "core/memory.hpp"
 #include "compare/cli/check_mesh.hpp"
@@ -45,6 +46,7 @@
 #include "compare/cli/stats.hpp"
 #include "compare/driver.hpp"
 #include "compare/mutants/mutants.hpp"
+#include "compare/progress.hpp"
 #include "compare/provenance.hpp"
 #include "compare/report_diff.hpp"
 #include "compare/report_history.hpp"
@@ -73,6 +75,7 @@ struct Shared {
   std::string out;
   int cpu_reps = 3;
   int gpu_reps = 5;
+  int checkpoints = 0;
   bool require_gpu = false;
   bool quiet = false;
   std::string baseline;
@@ -83,6 +86,7 @@ struct Shared {
   std::vector<std::string> flakes;
   std::string shard;
   bool worker = false;
+  double heartbeat = 30.0;
 };
 
 // What makes an ad-hoc case (run, sweep, ab) beside its algorithm: the input, the parameters held
@@ -94,9 +98,13 @@ void add_ad_hoc_options(CLI::App& command, gt::AdHocCase& ad_hoc, std::string& g
                    "take a colour image's red channel as height (seed 000 §4.2); without it a colour image is refused "
                    "as not a heightmap");
   command.add_option("--size", grid_size, "a generator (noise) without --input: the grid, WxH (256x256)");
-  command.add_option("--cell-size", ad_hoc.cell_size,
+  auto* cell_size = command.add_option("--cell-size", ad_hoc.cell_size,
                      "cell size in metres: a generator's grid (default 1), or in place of the --input file's own")
       ->check(finite_number & CLI::PositiveNumber);
+  command.add_option("--cell-size-y", ad_hoc.cell_size_y,
+                     "rectangular cells: the rows' spacing in metres, --cell-size then being the columns'")
+      ->check(finite_number & CLI::PositiveNumber)
+      ->needs(cell_size);
   command.add_option("--backend", shared.backend, "cpu (references only), gpu, or both")
       ->check(CLI::IsMember({"cpu", "gpu", "both"}))
       ->capture_default_str();
@@ -110,6 +118,10 @@ void add_shared_options(CLI::App& command, Shared& shared, const std::string& de
   command.add_option("--out", shared.out, "report folder (written atomically; an existing report is replaced)")
       ->capture_default_str();
   command.add_flag("--quiet", shared.quiet, "no progress lines on stderr");
+  command.add_option("--heartbeat", shared.heartbeat,
+                     "seconds without a progress line after which a `still running` line names the running cases")
+      ->check(finite_number & CLI::Range(0.05, 3600.0))
+      ->capture_default_str();
   command.add_option("--baseline", shared.baseline,
                      "a previous report.json: what changed (diff-reports) is printed at the end and heads index.html");
   command.add_flag("--require-gpu", shared.require_gpu,
@@ -139,6 +151,11 @@ void add_shared_options(CLI::App& command, Shared& shared, const std::string& de
   command.add_option("--gpu-reps", shared.gpu_reps, "timed repetitions of the GPU twin")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
+  command.add_option("--checkpoints", shared.checkpoints,
+                     "states along an iterative (stepped) case's run from which the GPU and ref<float> take their "
+                     "shadow steps, and at which the run is compared with ref<double> (default: each algorithm's own, "
+                     "8; erosion.pipe its parameter checkpoints)")
+      ->check(CLI::Range(1, 1000));
 }
 
 gt::DriverOptions driver_options(const Shared& shared, const std::string& command_line, double memory_limit_mib) {
@@ -150,8 +167,10 @@ gt::DriverOptions driver_options(const Shared& shared, const std::string& comman
   options.dataset_dir = GT_DATASET_DIR;
   options.cpu_reps = shared.cpu_reps;
   options.gpu_reps = shared.gpu_reps;
+  options.checkpoints = shared.checkpoints;
   options.require_gpu = shared.require_gpu;
   options.quiet = shared.quiet;
+  options.heartbeat_seconds = shared.heartbeat;
   options.parallel = shared.parallel;
   if (shared.case_timeout > 0.0) options.case_timeout = shared.case_timeout;
   options.retries = shared.retries;
@@ -191,12 +210,19 @@ void parse_grid_size(const std::string& text, gt::AdHocCase& ad_hoc) {
 nlohmann::json list_json() {
   nlohmann::json out = {{"algorithms", nlohmann::json::array()}, {"cases", nlohmann::json::array()}};
   for (const auto& algorithm : gt::algorithms()) out["algorithms"].push_back(gt::algorithm_json(algorithm));
+  const auto recorded = gt::bundled_case_seconds(GT_DATASET_DIR);
   for (const auto& spec : gt::load_cases(std::filesystem::path(GT_DATASET_DIR) / "cases")) {
-    out["cases"].push_back({{"name", spec.name}, {"algorithm", spec.algorithm}, {"params", spec.params},
-                            {"input", spec.input}, {"file", spec.origin}});
+    nlohmann::json entry = {{"name", spec.name},   {"algorithm", spec.algorithm},     {"params", spec.params},
+                            {"input", spec.input}, {"file", spec.origin},             {"tier", gt::tier_name(spec.tier)}};
+    if (const auto found = recorded.find(spec.name); found != recorded.end()) entry["expected_seconds"] = found->second;
+    out["cases"].push_back(std::move(entry));
   }
   return out;
 }
+
+// The default report's performance table: the smallest size of the full table (`report --full`
+// times every size of gt::BenchmarkOptions).
+const std::vector<int> report_tier_benchmark_sizes = {256};
 
 void print_list(bool as_json) {
   const auto listing = list_json();
@@ -215,8 +241,11 @@ void print_list(bool as_json) {
                  range, param["unit"].get<std::string>(), param["description"].get<std::string>());
     }
   }
-  fmt::print("Cases\n");
-  for (const auto& spec : listing["cases"]) fmt::print("  {}\n", spec["name"].get<std::string>());
+  fmt::print("Cases (tier, and the seconds each took on the 2-core reference machine: datasets/case-seconds.json)\n");
+  for (const auto& spec : listing["cases"]) {
+    fmt::print("  {:64} {:6} {}\n", spec["name"].get<std::string>(), spec["tier"].get<std::string>(),
+               spec.contains("expected_seconds") ? gt::human_duration(spec["expected_seconds"].get<double>()) : "");
+  }
 }
 
 void print_mutant_list(const std::vector<gt::Mutant>& selected, bool as_json) {
@@ -265,6 +294,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> extra_cases;
   run->add_option("--cases", extra_cases, "more case files (JSON arrays of cases) or folders of them, beside the bundled ones");
   run->add_option("--case-name", ad_hoc.name, "ad-hoc case: its name (a sweep's worker)")->group("");
+  bool quick = false;
+  run->add_flag("--quick", quick,
+                "the quick tier: a pre-commit answer on every algorithm family in about two minutes (with "
+                "patterns: their cases of the tier)");
   std::string mutant;
   run->add_option("--mutant", mutant,
                   "run with a registered deliberate bug switched on (see `groundtruth mutants --list`)");
@@ -302,11 +335,15 @@ int main(int argc, char** argv) {
 
   Shared report_shared;
   bool skip_benchmark = false;
-  auto* report = app.add_subcommand("report", "the main job: every bundled case and the benchmarks");
+  auto* report = app.add_subcommand("report", "the main job: every algorithm family's cases and the benchmarks "
+                                              "(--full: the long cases, every benchmark size and the mutants too)");
   add_shared_options(*report, report_shared, std::string(GT_SOURCE_DIR) + "/reports/latest");
   report->add_flag("--no-benchmark", skip_benchmark, "leave out the performance table");
   bool skip_mutants = false;
   report->add_flag("--no-mutants", skip_mutants, "leave out the mutation score (every registered mutant run)");
+  bool full_report = false;
+  report->add_flag("--full", full_report,
+                   "every case (the full tier's long runs too), the benchmark at every size, and the mutants");
 
   Shared bench_shared;
   gt::BenchmarkOptions bench_options;
@@ -474,6 +511,11 @@ int main(int argc, char** argv) {
     if (run->parsed()) {
       auto options = driver_options(run_shared, command_line, memory_limit_mib);
       options.patterns = patterns;
+      if (quick) {
+        if (!ad_hoc.algorithm.empty()) throw gt::InputError("--quick selects bundled cases: leave out --algorithm");
+        options.tier = gt::Tier::quick;
+        if (options.patterns.empty()) options.patterns = {"*"};
+      }
       options.mutant = mutant;
       options.extra_cases.assign(extra_cases.begin(), extra_cases.end());
       if (ad_hoc.algorithm.empty() && !ad_hoc.input.empty()) {
@@ -484,7 +526,7 @@ int main(int argc, char** argv) {
         throw gt::InputError("--set applies to an ad-hoc run: give --algorithm too");
       }
       if (!ad_hoc.algorithm.empty()) options.ad_hoc = ad_hoc;
-      if (patterns.empty() && !options.ad_hoc) {
+      if (options.patterns.empty() && !options.ad_hoc) {
         throw gt::InputError("nothing to run: name case patterns (see `groundtruth list`) or --algorithm with --input");
       }
       return gt::run_driver(options);
@@ -505,12 +547,24 @@ int main(int argc, char** argv) {
     if (report->parsed()) {
       auto options = driver_options(report_shared, command_line, memory_limit_mib);
       options.patterns = {"*"};
+      options.tier = full_report ? gt::Tier::full : gt::Tier::report;
+      if (!full_report) skip_mutants = true;
       if (!options.shard.empty() && !(skip_benchmark && skip_mutants)) {
         fmt::print(stderr, "groundtruth: a shard holds cases only; run the benchmarks (`groundtruth bench`) and the "
                            "mutants (`groundtruth mutants`) once, unsharded\n");
         skip_benchmark = skip_mutants = true;
       }
-      if (!skip_benchmark) options.benchmark = gt::BenchmarkOptions{.quiet = report_shared.quiet};
+      if (!skip_benchmark) {
+        options.benchmark = gt::BenchmarkOptions{.quiet = report_shared.quiet};
+        if (!full_report) options.benchmark->sizes = report_tier_benchmark_sizes;
+      }
+      if (!full_report) {
+        options.left_out = fmt::format("the benchmark {}, the mutants not run (`groundtruth report --full` runs "
+                                       "everything, `groundtruth mutants` the mutants alone)",
+                                       skip_benchmark ? "not run"
+                                                      : fmt::format("at {} cells a side only",
+                                                                    fmt::join(report_tier_benchmark_sizes, ", ")));
+      }
       if (!skip_mutants) {
         options.mutation = gt::MutationOptions{
             .gl = report_shared.gl, .require_gpu = report_shared.require_gpu, .parallel = report_shared.parallel};
