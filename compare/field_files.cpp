@@ -26,7 +26,7 @@ nlohmann::json grid_of(const Volume<double>& volume) {
 // Adds the file's entry to the case's fields.json, made with the case's provenance and `grid` (the
 // first field's) on the case's first call.
 void describe_field_file(const std::filesystem::path& folder, const nlohmann::json& grid, const FieldFile& file,
-                         const nlohmann::json& formats, CaseResult& result) {
+                         const nlohmann::json& formats, const char* npy_dtype, CaseResult& result) {
   const auto sidecar = folder / "fields.json";
   const bool first = !std::filesystem::exists(sidecar);
   nlohmann::json described;
@@ -38,7 +38,8 @@ void describe_field_file(const std::filesystem::path& folder, const nlohmann::js
     described = nlohmann::json::parse(in);
   }
   nlohmann::json entry = {{"stem", file.stem},       {"formats", formats}, {"field", file.field},
-                          {"backend", file.backend}, {"unit", file.unit},  {"meaning", file.meaning}};
+                          {"backend", file.backend}, {"unit", file.unit},  {"meaning", file.meaning},
+                          {"npy_dtype", npy_dtype}};
   if (grid != described["grid"]) entry["grid"] = grid;  // a field on another grid than the first's
   described["files"].push_back(entry);
   std::ofstream out(sidecar);
@@ -63,13 +64,17 @@ void write_field_files(const Grid<double>& values, const FieldFile& file, const 
                        CaseResult& result) {
   if (options.report_dir.empty()) return;
   const auto folder = case_folder(options, result);
+  // ref<double>'s fields keep their precision in the .npy: a float32 copy would round away the
+  // differences from ref<float> that the parity checks measure.
+  const bool double_reference = file.backend == "cpu";
   write_heightmap(values, folder / (file.stem + ".exr"));
-  write_heightmap(values, folder / (file.stem + ".npy"));
+  write_heightmap(values, folder / (file.stem + ".npy"), double_reference ? NpyPrecision::float64 : NpyPrecision::float32);
   const std::string what = fmt::format("{} ({}, {})", file.meaning, file.field, file.unit);
+  const char* npy_dtype = double_reference ? "float64" : "float32";
   result.artifacts.push_back({result.name + "/" + file.stem + ".exr", "field", what + ", float32 EXR"});
-  result.artifacts.push_back(
-      {result.name + "/" + file.stem + ".npy", "field", what + ", float32 NumPy array (height, width), NaN no-data"});
-  describe_field_file(folder, grid_of(values), file, {"exr", "npy"}, result);
+  result.artifacts.push_back({result.name + "/" + file.stem + ".npy", "field",
+                              fmt::format("{}, {} NumPy array (height, width), NaN no-data", what, npy_dtype)});
+  describe_field_file(folder, grid_of(values), file, {"exr", "npy"}, npy_dtype, result);
 }
 
 void write_volume_field_file(const Volume<double>& values, const FieldFile& file, const RunOptions& options,
@@ -87,7 +92,7 @@ void write_volume_field_file(const Volume<double>& values, const FieldFile& file
   result.artifacts.push_back({result.name + "/" + file.stem + ".npy", "field", what + ", float32 NumPy array (nz, ny, nx)"});
   result.artifacts.push_back({result.name + "/" + file.stem + ".exr", "field",
                               what + ", float32 EXR of the z slices one under the other (row z·ny + y)"});
-  describe_field_file(folder, grid_of(values), file, {"exr", "npy"}, result);
+  describe_field_file(folder, grid_of(values), file, {"exr", "npy"}, "float32", result);
 }
 
 }  // namespace gt

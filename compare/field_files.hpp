@@ -1,9 +1,9 @@
 // Fields as data (issue 19): a case's state fields written for other tools. Each field goes into
-// the case's folder as <stem>.exr (float32, NaN no-data) and <stem>.npy (NumPy float32, shape
-// (height, width), NaN no-data), listed as "field" artifacts, and described in the case's
-// fields.json sidecar: the case, algorithm, parameters and input it came from, the grid (size,
-// cell size, units), and for every file its field, backend ("input", "cpu", "cpu_float", "gpu"),
-// unit and meaning. Each call adds its entry to fields.json (created on the first call), so the
+// the case's folder as <stem>.exr (float32, NaN no-data) and <stem>.npy (NumPy, shape (height,
+// width), NaN no-data; float64 for ref<double>'s fields, backend "cpu", float32 for the others),
+// listed as "field" artifacts, and described in the case's fields.json sidecar: the case,
+// algorithm, parameters and input it came from, the grid (size, cell size, units), and for every
+// file its field, backend ("input", "cpu", "cpu_float", "gpu"), unit, meaning and npy_dtype. Each call adds its entry to fields.json (created on the first call), so the
 // parts of a driver that own different fields write them independently. Nothing is written when
 // options.report_dir is empty.
 //

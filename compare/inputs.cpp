@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
+#include <utility>
 #include <variant>
 
 #include <fmt/format.h>
@@ -26,12 +28,23 @@ int grid_side(const nlohmann::json& input, const char* key) {
   return static_cast<int>(json_integer(input, key, 128, 1, largest_generated_side, "input generator"));
 }
 
+// "cell_size" (the columns' spacing, x) and "cell_size_y" (the rows', when it differs) in metres;
+// `unset` when "cell_size" is absent, and "cell_size_y" alone is refused.
+std::pair<double, double> json_cell_sizes(const nlohmann::json& input, double unset, const char* what) {
+  if (input.contains("cell_size_y") && !input.contains("cell_size")) {
+    throw InputError(fmt::format("{}: cell_size_y (the rows' spacing) needs cell_size (the columns') too", what));
+  }
+  const double minimum = unset > 0.0 ? 1e-9 : 0.0;
+  const double x = json_number(input, "cell_size", unset, minimum, 1e9, what);
+  return {x, json_number(input, "cell_size_y", x, 1e-9, 1e9, what)};
+}
+
 Heightmap blank_field(const nlohmann::json& input) {
   const int width = grid_side(input, "width");
   const int height = grid_side(input, "height");
   check_grid_fits(width, height, 64, "generated input");
   Heightmap field(width, height, 0.0);
-  field.cell_size_x = field.cell_size_y = json_number(input, "cell_size", 1.0, 1e-9, 1e9, "input generator");
+  std::tie(field.cell_size_x, field.cell_size_y) = json_cell_sizes(input, 1.0, "input generator");
   return field;
 }
 
@@ -113,7 +126,7 @@ Heightmap example_3x3() {
 
 // The keys each generator reads (compare/inputs.hpp); any other is a typo.
 const std::vector<std::string>& generator_keys(const std::string& name) {
-  static const std::vector<std::string> grid = {"generator", "width", "height", "cell_size", "noise", "seed"};
+  static const std::vector<std::string> grid = {"generator", "width", "height", "cell_size", "cell_size_y", "noise", "seed"};
   static const std::map<std::string, std::vector<std::string>> keys = [] {
     const auto with = [](std::vector<std::string> extra) {
       extra.insert(extra.begin(), grid.begin(), grid.end());
@@ -124,7 +137,7 @@ const std::vector<std::string>& generator_keys(const std::string& name) {
         {"step", with({"peak"})},
         {"slope", with({"base", "gradient", "axis"})},
         {"flat", grid},
-        {"terrain", {"generator", "width", "height", "cell_size", "algorithm", "params"}},
+        {"terrain", {"generator", "width", "height", "cell_size", "cell_size_y", "algorithm", "params"}},
         {"example_3x3", {"generator"}}};
   }();
   const auto found = keys.find(name);
@@ -152,17 +165,20 @@ LoadedInput generated_input(const nlohmann::json& input) {
     loaded.heights = example_3x3();
   }
   if (name != "example_3x3" && name != "terrain") add_noise(loaded.heights, input);
-  loaded.description = fmt::format("generated {} {}x{}, cell {} {}", name, loaded.heights.width,
-                                   loaded.heights.height, loaded.heights.cell_size_x, loaded.heights.horizontal_unit);
+  const auto& grid = loaded.heights;
+  const std::string cell = grid.cell_size_y == grid.cell_size_x ? fmt::format("{}", grid.cell_size_x)
+                                                                : fmt::format("{}x{}", grid.cell_size_x, grid.cell_size_y);
+  loaded.description =
+      fmt::format("generated {} {}x{}, cell {} {}", name, grid.width, grid.height, cell, grid.horizontal_unit);
   return loaded;
 }
 
 LoadedInput file_input(const nlohmann::json& input, const std::filesystem::path& dataset_dir) {
-  require_known_keys(input, {"file", "cell_size", "vertical_scale", "srgb", "red_channel"}, "input file");
+  require_known_keys(input, {"file", "cell_size", "cell_size_y", "vertical_scale", "srgb", "red_channel"}, "input file");
   std::filesystem::path path = input["file"].get<std::string>();
   if (path.is_relative()) path = dataset_dir / path;
   HeightmapReadOptions options;
-  options.cell_size = json_number(input, "cell_size", 0.0, 0.0, 1e9, "input file");
+  std::tie(options.cell_size, options.cell_size_y) = json_cell_sizes(input, 0.0, "input file");
   options.image_vertical_scale = json_number(input, "vertical_scale", 1.0, 1e-9, 1e9, "input file");
   options.srgb = json_bool(input, "srgb", false, "input file");
   options.red_channel = json_bool(input, "red_channel", false, "input file");

@@ -2,6 +2,8 @@
 //
 // {"file": "real/volcano.json"}   relative paths are under datasets/; optional "cell_size" (m)
 //                                 and "vertical_scale" (m per unit of 8/16-bit images).
+// Files and generators take "cell_size_y" (m) beside "cell_size" for rectangular cells:
+// "cell_size" is then the columns' spacing (x), "cell_size_y" the rows' (y); alone it is refused.
 // {"generator": NAME, ...}        fields made here, deterministic (noise from the counter RNG):
 //   cone          "width", "height" (cells, default 128), "cell_size" (m, 1), "peak" (m, 100),
 //                 "radius" (share of the shorter side, 0.4): a right circular cone on a plane.

@@ -46,7 +46,8 @@ struct CaseCall {
   std::string input;  // a file path, or empty (a generator's grid, or an algorithm without input)
   int width = 256;
   int height = 256;
-  std::optional<double> cell_size;  // metres; none: the file's own (1 m for a generator)
+  std::optional<double> cell_size;    // metres; none: the file's own (1 m for a generator)
+  std::optional<double> cell_size_y;  // the rows' spacing when it differs (needs cell_size)
   std::vector<std::string> assignments;
   bool red_channel = false;
   std::string backend = "both";
@@ -54,6 +55,9 @@ struct CaseCall {
   std::string mutant;
   bool require_gpu = false;
   bool quiet = true;
+  bool pictures = true;
+  bool descriptors = true;
+  std::optional<int> reps;  // timed repetitions of each twin; none: the command line's (3 CPU, 5 GPU)
   std::filesystem::path out;
   std::string command_line;
 };
@@ -65,8 +69,13 @@ void check_grid_options(const CaseCall& call) {
     throw gt::InputError(fmt::format("size ({}, {}): expected (width, height) with sides in [1, {}]", call.width,
                                      call.height, largest_side));
   }
-  if (call.cell_size && !(std::isfinite(*call.cell_size) && *call.cell_size > 0.0)) {
-    throw gt::InputError(fmt::format("cell_size {}: expected a positive, finite number of metres", *call.cell_size));
+  for (const auto& size : {call.cell_size, call.cell_size_y}) {
+    if (size && !(std::isfinite(*size) && *size > 0.0)) {
+      throw gt::InputError(fmt::format("cell_size {}: expected a positive, finite number of metres", *size));
+    }
+  }
+  if (call.cell_size_y && !call.cell_size) {
+    throw gt::InputError("cell_size_y (the rows' spacing) needs cell_size (the columns') too");
   }
 }
 
@@ -78,6 +87,7 @@ int run_case(const CaseCall& call) {
                                  .width = call.width,
                                  .height = call.height,
                                  .cell_size = call.cell_size.value_or(0.0),
+                                 .cell_size_y = call.cell_size_y.value_or(0.0),
                                  .assignments = call.assignments,
                                  .red_channel = call.red_channel};
   options.backends = parse_backends(call.backend);
@@ -87,6 +97,12 @@ int run_case(const CaseCall& call) {
   if (options.require_gpu && options.backends == gt::Backends::cpu) {
     throw gt::InputError("require_gpu and backend='cpu' contradict each other: choose one");
   }
+  if (call.reps && (*call.reps < 0 || *call.reps > 100)) {
+    throw gt::InputError(fmt::format("reps {}: expected 0 (untimed) to 100 timed repetitions", *call.reps));
+  }
+  if (call.reps) options.cpu_reps = options.gpu_reps = *call.reps;
+  options.pictures = call.pictures;
+  options.descriptors = call.descriptors;
   options.quiet = call.quiet;
   options.summary = !call.quiet;
   options.out = call.out;
@@ -117,14 +133,15 @@ PYBIND11_MODULE(_core, module) {
   module.def(
       "run_case",
       [](const std::string& algorithm, const std::string& input, int width, int height,
-         std::optional<double> cell_size,
+         std::optional<double> cell_size, std::optional<double> cell_size_y,
          const std::vector<std::string>& assignments, bool red_channel, const std::string& backend,
-         const std::string& gl, const std::string& mutant, bool require_gpu, bool quiet,
-         const std::filesystem::path& out, const std::string& command_line) {
-        return run_case({algorithm, input, width, height, cell_size, assignments, red_channel, backend, gl, mutant,
-                         require_gpu, quiet, out, command_line});
+         const std::string& gl, const std::string& mutant, bool require_gpu, bool quiet, bool pictures,
+         bool descriptors, std::optional<int> reps, const std::filesystem::path& out, const std::string& command_line) {
+        return run_case({algorithm, input, width, height, cell_size, cell_size_y, assignments, red_channel, backend, gl, mutant,
+                         require_gpu, quiet, pictures, descriptors, reps, out, command_line});
       },
-      py::arg("algorithm"), py::arg("input"), py::arg("width"), py::arg("height"), py::arg("cell_size"),
+      py::arg("algorithm"), py::arg("input"), py::arg("width"), py::arg("height"), py::arg("cell_size"), py::arg("cell_size_y"),
       py::arg("assignments"), py::arg("red_channel"), py::arg("backend"), py::arg("gl"), py::arg("mutant"),
-      py::arg("require_gpu"), py::arg("quiet"), py::arg("out"), py::arg("command_line"));
+      py::arg("require_gpu"), py::arg("quiet"), py::arg("pictures"), py::arg("descriptors"), py::arg("reps"),
+      py::arg("out"), py::arg("command_line"));
 }

@@ -220,6 +220,20 @@ TEST_F(Hostile, CommandLineNumbersMustBeFiniteAndFit) {
   EXPECT_TRUE(fs::is_empty(work_.path()));
 }
 
+// Rectangular cells need both spacings: the rows' alone is refused, in a case file and on the
+// command line.
+TEST_F(Hostile, ARowSpacingWithoutAColumnSpacingIsRefused) {
+  json entry = thermal_case("mine.rows_only");
+  entry["input"]["cell_size_y"] = 2.0;
+  expect_case_refused(entry, "cell_size_y (the rows' spacing) needs cell_size");
+  const auto run = gt::testing::run_program(
+      groundtruth, {"run", "--algorithm", "noise.simplex2", "--cell-size-y", "2", "--out", (work_ / "out").string()},
+      work_.path());
+  EXPECT_EQ(run.status, 2) << run;
+  EXPECT_THAT(run.err, HasSubstr("--cell-size")) << run;
+  EXPECT_EQ(entries_of(work_.path()), std::vector<std::string>{"mine.json"});
+}
+
 TEST_F(Hostile, SpecialAndDanglingOutputsAreBadInput) {
   fs::create_symlink(work_ / "nowhere", work_ / "dangling");
   for (const fs::path& out : {work_ / "dangling", fs::path("/proc/groundtruth-report")}) {

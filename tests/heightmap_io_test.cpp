@@ -3,6 +3,7 @@
 // small malformed inputs of tests/data/io (made by its generate.py), and the four real DEMs that
 // datasets/fetch.sh puts in datasets/real (a missing file fails with a hint to run the script).
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -251,6 +252,30 @@ TEST(HeightmapIo, NpyRoundTripsValuesAndNoData) {
   EXPECT_EQ(fs::file_size(file), 10 + header + written.size() * sizeof(float));
 }
 
+// .npy asked as float64 keeps every double (values float32 cannot hold: square roots), '<f8' in
+// its header, 8 bytes a cell; the default float32 file of the same heights rounds them.
+TEST(HeightmapIo, NpyFloat64KeepsEveryDouble) {
+  const TemporaryFolder folder;
+  Heightmap written = masked_sample();
+  for (std::size_t i = 0; i < written.size(); ++i) written.values[i] = written.is_valid(i) ? std::sqrt(i + 2.0) : 0.0;
+  const fs::path wide = folder.path() / "wide.npy";
+  const fs::path narrow = folder.path() / "narrow.npy";
+  write_heightmap(written, wide, NpyPrecision::float64);
+  write_heightmap(written, narrow);
+  const HeightmapFile read = read_heightmap(wide);
+  EXPECT_EQ(read.heights.valid, written.valid);
+  EXPECT_EQ(read.heights.values, written.values);
+  EXPECT_NE(read_heightmap(narrow).heights.values, written.values);
+  std::ifstream in(wide, std::ios::binary);
+  std::string lead(10, '\0');
+  in.read(lead.data(), 10);
+  const std::size_t header = static_cast<unsigned char>(lead[8]) + 256u * static_cast<unsigned char>(lead[9]);
+  std::string dictionary(header, '\0');
+  in.read(dictionary.data(), static_cast<std::streamsize>(header));
+  EXPECT_THAT(dictionary, ::testing::HasSubstr("'descr': '<f8'"));
+  EXPECT_EQ(fs::file_size(wide), 10 + header + written.size() * sizeof(double));
+}
+
 // A 3-D .npy is a volume, not a heightmap.
 TEST(HeightmapIo, NpyOfAnotherShapeIsRefused) {
   const TemporaryFolder folder;
@@ -284,6 +309,11 @@ TEST(HeightmapIo, CellSizeOptionOverridesTheFile) {
   const HeightmapFile read = read_heightmap(file, options);
   EXPECT_EQ(read.heights.cell_size_x, 2.5);
   EXPECT_EQ(read.heights.cell_size_y, 2.5);
+  options.cell_size_y = 4.0;
+  const HeightmapFile rectangular = read_heightmap(file, options);
+  EXPECT_EQ(rectangular.heights.cell_size_x, 2.5);
+  EXPECT_EQ(rectangular.heights.cell_size_y, 4.0);
+  EXPECT_THAT(rectangular.notes, ::testing::Contains("cell size set to 2.5 m (x, columns) by 4 m (y, rows) by the caller"));
 }
 
 TEST(HeightmapIo, NpzNanCellsBecomeInvalidZeros) {

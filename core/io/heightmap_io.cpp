@@ -410,21 +410,27 @@ HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) 
   return result;
 }
 
-void apply_cell_size_override(HeightmapFile& file, double cell_size) {
+void apply_cell_size_override(HeightmapFile& file, double cell_size, double cell_size_y) {
   if (!(cell_size > 0.0)) return;
-  file.heights.cell_size_x = file.heights.cell_size_y = cell_size;
+  file.heights.cell_size_x = cell_size;
+  file.heights.cell_size_y = cell_size_y > 0.0 ? cell_size_y : cell_size;
   file.heights.horizontal_unit = "m";
   // The caller's size replaces what a reader assumed for want of one in the file.
   std::erase_if(file.notes, [](const std::string& note) { return note.find("1 m assumed") != std::string::npos; });
-  file.notes.push_back(fmt::format("cell size set to {} m by the caller", cell_size));
+  file.notes.push_back(file.heights.cell_size_y == cell_size
+                           ? fmt::format("cell size set to {} m by the caller", cell_size)
+                           : fmt::format("cell size set to {} m (x, columns) by {} m (y, rows) by the caller",
+                                         cell_size, file.heights.cell_size_y));
 }
 
 // ---- writing -----------------------------------------------------------------------------------
 
-std::vector<float> float32_pixels(const Heightmap& heights) {
-  std::vector<float> pixels(heights.size());
+// The heights as `Value`s, invalid cells NaN.
+template <typename Value>
+std::vector<Value> pixels_of(const Heightmap& heights) {
+  std::vector<Value> pixels(heights.size());
   for (std::size_t i = 0; i < pixels.size(); ++i) {
-    pixels[i] = heights.is_valid(i) ? static_cast<float>(heights.values[i]) : std::numeric_limits<float>::quiet_NaN();
+    pixels[i] = heights.is_valid(i) ? static_cast<Value>(heights.values[i]) : std::numeric_limits<Value>::quiet_NaN();
   }
   return pixels;
 }
@@ -451,14 +457,17 @@ void write_single_channel(const path& temporary, const path& target, OIIO::TypeD
   }
 }
 
-void write_pixels(const Heightmap& heights, const path& temporary, const path& target, const std::string& extension) {
-  if (extension == ".npy") {
-    detail::write_npy_float32({heights.height, heights.width}, float32_pixels(heights), temporary, target);
+void write_pixels(const Heightmap& heights, const path& temporary, const path& target, const std::string& extension,
+                  NpyPrecision npy_precision) {
+  if (extension == ".npy" && npy_precision == NpyPrecision::float64) {
+    detail::write_npy({heights.height, heights.width}, pixels_of<double>(heights), temporary, target);
+  } else if (extension == ".npy") {
+    detail::write_npy({heights.height, heights.width}, pixels_of<float>(heights), temporary, target);
   } else if (extension == ".png") {
     const std::vector<std::uint16_t> levels = png16_levels(heights);
     write_single_channel(temporary, target, OIIO::TypeDesc::UINT16, heights.width, heights.height, levels.data());
   } else {
-    const std::vector<float> pixels = float32_pixels(heights);
+    const std::vector<float> pixels = pixels_of<float>(heights);
     write_single_channel(temporary, target, OIIO::TypeDesc::FLOAT, heights.width, heights.height, pixels.data());
   }
 }
@@ -487,11 +496,11 @@ HeightmapFile read_heightmap(const path& file, const HeightmapReadOptions& optio
                          : extension == ".npz" ? detail::read_matplotlib_npz(file)
                          : extension == ".npy" ? detail::read_npy_heightmap(file)
                                                : read_image(file, options);
-  apply_cell_size_override(result, options.cell_size);
+  apply_cell_size_override(result, options.cell_size, options.cell_size_y);
   return result;
 }
 
-void write_heightmap(const Heightmap& heights, const path& file) {
+void write_heightmap(const Heightmap& heights, const path& file, NpyPrecision npy_precision) {
   const std::string extension = lower_extension(file);
   if (extension != ".exr" && extension != ".tif" && extension != ".tiff" && extension != ".png" && extension != ".npy") {
     throw InputError(fmt::format(
@@ -500,7 +509,7 @@ void write_heightmap(const Heightmap& heights, const path& file) {
   }
   check_writable_shape(heights, file);
   detail::write_file_atomically(
-      file, [&](const path& temporary) { write_pixels(heights, temporary, file, extension); });
+      file, [&](const path& temporary) { write_pixels(heights, temporary, file, extension, npy_precision); });
 }
 
 }  // namespace gt

@@ -24,7 +24,8 @@
 // allocating.
 //
 // write_heightmap picks the format by extension: .exr (float32, no-data as NaN), .tif/.tiff
-// (float32, no-data as NaN), .npy (NumPy float32, shape (height, width), no-data as NaN; read back
+// (float32, no-data as NaN), .npy (NumPy float32, or float64 when asked, shape (height, width),
+// no-data as NaN; read back
 // by read_heightmap, or numpy.load), .png (16-bit, valid range mapped to 0..65535, no-data 0; lossy
 // and without the range, for viewing). The cell size is not stored. The file is written under a
 // temporary name in the same folder and renamed, so a failed write leaves nothing behind; any
@@ -48,6 +49,7 @@ struct HeightmapFile {
 struct HeightmapReadOptions {
   double image_vertical_scale = 1.0;  // multiplies [0,1] heights read from 8/16-bit images
   double cell_size = 0.0;             // overrides the file's cell size when > 0
+  double cell_size_y = 0.0;           // with cell_size: the rows' spacing when it differs (0: cell_size)
   // 8/16-bit images: the [0,1] value is sRGB-encoded and linearised (seed 000 §4.3.1, Algorithm 2)
   // before the vertical scale, as Hydra makes a heightmap of a non-float image's red channel.
   bool srgb = false;
@@ -62,7 +64,13 @@ double srgb_to_linear(double c);
 
 HeightmapFile read_heightmap(const std::filesystem::path& path, const HeightmapReadOptions& options = {});
 
-void write_heightmap(const Heightmap& heights, const std::filesystem::path& path);
+// The element type of the .npy files write_heightmap writes (the other formats are float32 or
+// 16-bit whatever this says): float32 by default, float64 for values that need it (the double
+// reference's fields, compare/field_files.hpp).
+enum class NpyPrecision { float32, float64 };
+
+void write_heightmap(const Heightmap& heights, const std::filesystem::path& path,
+                     NpyPrecision npy_precision = NpyPrecision::float32);
 
 // Throws InputError when an OpenEXR file's header declares an attribute larger than the bytes that
 // follow it (OpenEXR would allocate that size first); other files pass. For every reader that hands

@@ -165,11 +165,14 @@ NpyArray read_npy_file(const std::filesystem::path& file, const ShapeCheck& elem
   return read_npy(source, stored_bytes, element_count, where);
 }
 
-void write_npy_float32(const std::vector<long long>& shape, const std::vector<float>& values,
-                       const std::filesystem::path& destination, const std::filesystem::path& target) {
+namespace {
+
+// The magic, the version, the header and `bytes` of data with NumPy's type string `descr`.
+void write_npy_bytes(const std::vector<long long>& shape, const char* descr, const void* data, std::size_t bytes,
+                     const std::filesystem::path& destination, const std::filesystem::path& target) {
   // A 1-tuple needs its comma: (5,).
   const std::string dimensions = shape.size() == 1 ? fmt::format("{},", shape[0]) : fmt::format("{}", fmt::join(shape, ", "));
-  std::string header = fmt::format("{{'descr': '<f4', 'fortran_order': False, 'shape': ({}), }}", dimensions);
+  std::string header = fmt::format("{{'descr': '{}', 'fortran_order': False, 'shape': ({}), }}", descr, dimensions);
   const std::size_t preamble = 10;  // magic (6), version (2), header length (2)
   header.append(63 - (preamble + header.size()) % 64, ' ');
   header.push_back('\n');
@@ -179,9 +182,21 @@ void write_npy_float32(const std::vector<long long>& shape, const std::vector<fl
                                static_cast<char>(length >> 8)};
   out.write(lead, preamble);
   out.write(header.data(), static_cast<std::streamsize>(header.size()));
-  out.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(float)));
+  out.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes));
   out.close();
   if (!out) throw InputError(fmt::format("cannot write {}", target.string()));
+}
+
+}  // namespace
+
+void write_npy(const std::vector<long long>& shape, const std::vector<float>& values,
+               const std::filesystem::path& destination, const std::filesystem::path& target) {
+  write_npy_bytes(shape, "<f4", values.data(), values.size() * sizeof(float), destination, target);
+}
+
+void write_npy(const std::vector<long long>& shape, const std::vector<double>& values,
+               const std::filesystem::path& destination, const std::filesystem::path& target) {
+  write_npy_bytes(shape, "<f8", values.data(), values.size() * sizeof(double), destination, target);
 }
 
 }  // namespace gt::detail

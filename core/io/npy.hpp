@@ -43,11 +43,14 @@ NpyArray read_npy(const ByteSource& source, std::uintmax_t stored_bytes, const S
 // or opened ("{file}: cannot read {what}: ...", "{file}: cannot open {what}").
 NpyArray read_npy_file(const std::filesystem::path& file, const ShapeCheck& element_count, const std::string& what);
 
-// Writes `values` (float32 '<f4', C order, the last axis fastest) of `shape` as a .npy file of
-// format 1.0 at `destination`: the magic, the version, a little-endian uint16 header length and a
-// Python dict literal padded with spaces and a newline so that the data starts at a multiple of
-// 64 bytes. `target` names the file in the message of a failed write (InputError).
-void write_npy_float32(const std::vector<long long>& shape, const std::vector<float>& values,
-                       const std::filesystem::path& destination, const std::filesystem::path& target);
+// Writes `values` (float32 '<f4' or float64 '<f8' by the vector's type, C order, the last axis
+// fastest) of `shape` as a .npy file of format 1.0 at `destination`: the magic, the version, a
+// little-endian uint16 header length and a Python dict literal padded with spaces and a newline so
+// that the data starts at a multiple of 64 bytes. `target` names the file in the message of a
+// failed write (InputError). The host is little-endian (core/io's readers assume it too).
+void write_npy(const std::vector<long long>& shape, const std::vector<float>& values,
+               const std::filesystem::path& destination, const std::filesystem::path& target);
+void write_npy(const std::vector<long long>& shape, const std::vector<double>& values,
+               const std::filesystem::path& destination, const std::filesystem::path& target);
 
 }  // namespace gt::detail

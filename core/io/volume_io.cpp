@@ -89,7 +89,7 @@ void write_volume(const Volume<double>& volume, const std::filesystem::path& pat
   }
   const std::vector<float> values(volume.values.begin(), volume.values.end());
   detail::write_file_atomically(path, [&](const std::filesystem::path& temporary) {
-    detail::write_npy_float32({volume.nz, volume.ny, volume.nx}, values, temporary, path);
+    detail::write_npy({volume.nz, volume.ny, volume.nx}, values, temporary, path);
   });
 }
 

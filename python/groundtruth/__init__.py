@@ -3,7 +3,8 @@
     import groundtruth
     result = groundtruth.run("erosion.pipe", heights, cell_size=10, steps=300, backend="gpu")
     result.status                        # the case's outcome: pass, warn, inconclusive, skip, fail, error
-    result.fields["terrain"]["gpu"]      # float32 array (rows, columns), NaN where there is no data
+    result.fields["terrain"]["gpu"]      # float32 array (rows, columns), NaN where there is no data;
+                                         # the double reference's ("cpu") fields are float64
     result.ledger                        # the case's mass.* checks: name -> value
     result.checks                        # every check with its value, bounds, outcome and error model
 
@@ -14,8 +15,13 @@ message as the command line's, raised as groundtruth.InputError (a ValueError).
 
 Inputs (`heights`):
   a 2-D numpy array (rows, columns) of int16, int32, float32 or float64, NaN cells no-data
-      (handed to the driver as the .npy file it reads; `cell_size` in metres, 1 m assumed and said
-      in `result.notes` when not given);
+      (handed to the driver as the .npy file it reads; `cell_size` in metres, a number for square
+      cells or (dx, dy) for rectangular ones, dx along a row (columns, x) and dy down a column
+      (rows, y); 1 m assumed and said in `result.notes` when not given). Other real dtypes are converted and the conversion said in
+      `result.notes`: other integers (int8, uint8, uint16, uint32, int64, uint64) to float64 when
+      every value is exact in it (|v| <= 2**53, else refused), float16 to float32, big-endian
+      arrays to little-endian. A numpy masked array's masked cells are no-data (NaN). Booleans,
+      complex numbers and objects are refused;
   a path to any file the command line's --input takes (a DEM, an image, a mesh, a .npy volume);
   None: a generator's `size` grid (noise), or nothing for algorithms that make their own field.
 Parameters are keyword arguments named as `groundtruth.parameters(algorithm)` declares them.
@@ -107,14 +113,67 @@ def _parameter_text(name, value):
     raise InputError(f"parameter {name}: a number, a bool or a string, not {type(value).__name__}")
 
 
-def _save_heights(heights, folder):
-    """Writes an array as the .npy file the driver reads (its dtype kept, C order); returns the path."""
-    array = numpy.asarray(heights)
-    if array.dtype.hasobject:
+# The dtypes the driver's .npy reader takes as they are (core/io/dem_formats.hpp).
+_READ_AS_IS = {"<i2", "<i4", "<f4", "<f8"}
+# The largest integer magnitude float64 holds exactly.
+_EXACT_IN_FLOAT64 = 2 ** 53
+
+
+def _cell_sizes(cell_size):
+    """`cell_size` as the driver's (columns' spacing, rows' spacing or None): a number of metres for
+    square cells, (dx, dy) for rectangular ones, None for the input's own."""
+    if cell_size is None:
+        return None, None
+    if isinstance(cell_size, (bool, numpy.bool_)) or isinstance(cell_size, str):
+        raise InputError(f"cell_size {cell_size!r}: expected metres, a number or (dx, dy)")
+    if isinstance(cell_size, numbers.Real):
+        return float(cell_size), None
+    try:
+        dx, dy = cell_size
+    except (TypeError, ValueError):
+        raise InputError(f"cell_size {cell_size!r}: expected metres, a number or (dx, dy)") from None
+    for size in (dx, dy):
+        if isinstance(size, (bool, numpy.bool_)) or not isinstance(size, numbers.Real):
+            raise InputError(f"cell_size {cell_size!r}: expected metres, a number or (dx, dy)")
+    return float(dx), float(dy)
+
+
+def _readable(array):
+    """`array` in a dtype the driver reads, and what was done to it (a list of notes)."""
+    notes = []
+    if numpy.ma.isMaskedArray(array):
+        masked = int(numpy.count_nonzero(numpy.ma.getmaskarray(array)))
+        if masked:
+            notes.append(f"heights: {masked} masked cells are no-data (NaN)")
+        wide = numpy.float32 if array.dtype in (numpy.float16, numpy.float32) else numpy.float64
+        array = numpy.ma.getdata(array.astype(wide).filled(numpy.nan))
+    array = numpy.asarray(array)
+    kind = array.dtype.kind
+    if array.dtype.hasobject:  # never saved: numpy would pickle it
         raise InputError(f"heights: unsupported .npy dtype '{array.dtype.str}' (supported: <i2 <i4 <f4 <f8)")
+    if kind not in "iuf":  # booleans, complex: the driver's reader refuses them in the command line's words
+        return array, notes
+    if array.dtype.byteorder == ">":
+        notes.append(f"heights: big-endian {array.dtype.str} read as little-endian")
+        array = array.astype(array.dtype.newbyteorder("<"))
+    if array.dtype.str in _READ_AS_IS:
+        return array, notes
+    if kind == "f":  # float16: float32 holds every value
+        notes.append(f"heights: {array.dtype.name} converted to float32 (exact)")
+        return array.astype("<f4"), notes
+    if array.size and max(abs(int(array.min())), abs(int(array.max()))) > _EXACT_IN_FLOAT64:
+        raise InputError(f"heights: {array.dtype.name} values beyond 2**53 have no exact float64: scale them first")
+    notes.append(f"heights: {array.dtype.name} converted to float64 (exact)")
+    return array.astype("<f8"), notes
+
+
+def _save_heights(heights, folder):
+    """Writes an array as the .npy file the driver reads (C order); returns the path and the notes
+    of what was converted."""
+    array, notes = _readable(heights)
     path = folder / "heights.npy"
     numpy.save(path, numpy.ascontiguousarray(array), allow_pickle=False)
-    return path
+    return path, notes
 
 
 def _load_fields(case_folder):
@@ -131,7 +190,8 @@ def _load_fields(case_folder):
 
 
 def run(algorithm, heights=None, *, cell_size=None, backend="both", size=(256, 256), red_channel=False,
-        mutant=None, require_gpu=False, gl="egl", out=None, quiet=True, **params):
+        mutant=None, require_gpu=False, gl="egl", out=None, quiet=True, pictures=True, descriptors=True, reps=None,
+        quick=False, **params):
     """Runs `algorithm` on `heights` as one ad-hoc case and returns its Result.
 
     backend: "cpu" (the references, double and float), "gpu", or "both" (the twins and every check
@@ -142,29 +202,39 @@ def run(algorithm, heights=None, *, cell_size=None, backend="both", size=(256, 2
     an existing report there is replaced). quiet: no progress lines on stderr and no summary on
     stdout (the notes of decisions taken for you are printed on stderr either way, and are in
     result.notes).
+    Cost: pictures=False draws no pictures of the fields (the fields, checks and report stay),
+    descriptors=False computes no terrain descriptors (nor their checks), reps sets the timed
+    repetitions of each twin (0: untimed, one run each; None: 3 CPU, 5 GPU), and quick=True is all
+    three cheap (pictures=False, descriptors=False, reps=0) for a notebook loop or a property test.
     Bad input raises InputError with the command line's message.
     """
+    if quick:
+        pictures, descriptors, reps = False, False, 0
+    if reps is not None and (isinstance(reps, bool) or not isinstance(reps, numbers.Integral)):
+        raise InputError(f"reps {reps!r}: expected a whole number of timed repetitions (0: untimed) or None")
     assignments = [f"{name}={_parameter_text(name, value)}" for name, value in params.items()]
     width, height = size
     with tempfile.TemporaryDirectory(prefix="groundtruth-") as scratch:
         scratch = pathlib.Path(scratch)
         saved = None
+        conversions = []
         if heights is None:
             input_path = ""
         elif isinstance(heights, (str, os.PathLike)):
             input_path = os.fspath(heights)
         else:
-            saved = _save_heights(heights, scratch)
+            saved, conversions = _save_heights(heights, scratch)
             input_path = str(saved)
         report = pathlib.Path(out) if out is not None else scratch / "report"
         command = f"groundtruth.run({algorithm!r}, backend={backend!r}{''.join(', ' + a for a in assignments)})"
         try:
-            _core.run_case(algorithm, input_path, int(width), int(height), cell_size, assignments,
-                           bool(red_channel), backend, gl, mutant or "", bool(require_gpu), bool(quiet), report,
-                           command)
+            _core.run_case(algorithm, input_path, int(width), int(height), *_cell_sizes(cell_size), assignments,
+                           bool(red_channel), backend, gl, mutant or "", bool(require_gpu), bool(quiet),
+                           bool(pictures), bool(descriptors), None if reps is None else int(reps), report, command)
         except InputError as error:
             # The driver names the file it read; the caller gave an array.
             raise InputError(str(error).replace(str(saved), "heights") if saved else str(error)) from None
         case = json.loads((report / "report.json").read_text())["cases"][0]
+        case["notes"] = conversions + case.get("notes", [])
         fields, field_info, grid = _load_fields(report / case["name"])
         return Result(case, fields, field_info, grid, report if out is not None else None)

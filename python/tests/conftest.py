@@ -13,8 +13,9 @@ import groundtruth
 # The module lives in <build>/python/groundtruth/; the command line in <build>/groundtruth.
 CLI = pathlib.Path(groundtruth._core.__file__).resolve().parents[2] / "groundtruth"
 
-# Fields come back as float32 (.npy files of compare/field_files.hpp): each value is the double
-# rounded to nearest, off by at most half an ulp, 2^-24 of its magnitude.
+# Fields come back as float32 (.npy files of compare/field_files.hpp), the double reference's as
+# float64: each value is the double rounded to nearest, off by at most half an ulp, 2^-24 of its
+# magnitude in float32 (none in float64: the reference's own double is stored).
 FLOAT32_UNIT_ROUNDOFF = 2.0**-24
 
 
@@ -28,9 +29,10 @@ def cone(side=32, peak=40.0, cell_size=1.0):
 
 
 def float32_sum_bound(*fields):
-    """The most that the sums of these float32 fields can be off from the sums of the doubles they
-    were rounded from: half an ulp of each value."""
-    return sum(FLOAT32_UNIT_ROUNDOFF * float(numpy.nansum(numpy.abs(field.astype(numpy.float64)))) for field in fields)
+    """The most that the sums of these fields can be off from the sums of the doubles they were
+    rounded from: half an ulp of each float32 value, nothing for a float64 field."""
+    return sum(FLOAT32_UNIT_ROUNDOFF * float(numpy.nansum(numpy.abs(field.astype(numpy.float64))))
+               for field in fields if field.dtype == numpy.float32)
 
 
 def cli_message(arguments):

@@ -47,9 +47,23 @@ def test_the_terrain_comes_back_as_given_and_on_its_grid(results, algorithm):
     assert {"cpu", "cpu_float", "gpu"} <= set(terrain)
     # The input field is the array given, rounded to float32, rows as rows: no transposition.
     numpy.testing.assert_array_equal(terrain["input"], heights.astype(numpy.float32))
-    for backend in ("cpu", "cpu_float", "gpu"):
-        assert terrain[backend].shape == heights.shape and terrain[backend].dtype == numpy.float32
+    # The double reference keeps its precision; the float twins are float32 whatever is stored.
+    for backend, dtype in (("cpu", numpy.float64), ("cpu_float", numpy.float32), ("gpu", numpy.float32)):
+        assert terrain[backend].shape == heights.shape and terrain[backend].dtype == dtype
         assert numpy.isfinite(terrain[backend]).all()
+    assert result[algorithm].field_info["terrain"]["cpu"]["unit"] == "m"
+
+
+@pytest.mark.parametrize("algorithm", ["erosion.thermal", "erosion.pipe"])
+def test_the_double_reference_comes_back_with_more_than_float32_holds(results, algorithm):
+    # A widened float32 copy would hold only float32 values. The cone's heights are irrational
+    # multiples of its radius, so nearly every non-zero double lies between two floats (float32's
+    # spacing near 30 m is 2^-19 m); the plain around it is 0, a float32 value.
+    _, result = results
+    double = result[algorithm].fields["terrain"]["cpu"]
+    raised = double[double != 0.0]
+    between_floats = raised != raised.astype(numpy.float32).astype(numpy.float64)
+    assert between_floats.mean() > 0.5, f"{between_floats.sum()} of {raised.size} heights are not float32 values"
 
 
 @pytest.mark.parametrize("algorithm", ["erosion.thermal", "erosion.thermal_jako"])
@@ -141,8 +155,54 @@ def test_a_cell_size_given_replaces_the_files_and_the_assumed_one():
     assert not any("assumed" in note for note in array.notes), array.notes
 
 
+def test_rectangular_cells_are_given_as_dx_dy_along_columns_and_rows():
+    heights = cone(16, peak=8.0)[:12]  # 12 rows, 16 columns
+    result = groundtruth.run("erosion.pipe", heights, cell_size=(2.0, 3.0), backend="cpu", steps=2)
+    assert (result.grid["cell_size_x"], result.grid["cell_size_y"]) == (2.0, 3.0)
+    assert "cell size set to 2 m (x, columns) by 3 m (y, rows) by the caller" in result.notes
+    square = groundtruth.run("erosion.pipe", heights, cell_size=(2.0, 2.0), backend="cpu", steps=2)
+    assert (square.grid["cell_size_x"], square.grid["cell_size_y"]) == (2.0, 2.0)
+
+
 def test_a_transposed_view_is_taken_as_the_array_it_shows():
     heights = cone(12, peak=5.0)[:, :9]  # 12 rows, 9 columns
     view = heights.T                      # a Fortran-ordered view: 9 rows, 12 columns
     result = groundtruth.run("erosion.thermal", view, backend="cpu", iterations=1)
     numpy.testing.assert_array_equal(result.fields["terrain"]["input"], view.astype(numpy.float32))
+
+
+@pytest.mark.parametrize("dtype", ["int64", "uint8", "uint16", "int8", "uint64", ">i2", ">f8", ">f4", "float16"])
+def test_a_real_dtype_the_reader_does_not_take_is_converted_exactly_and_said(dtype):
+    # Whole metres from 0 to 40: exact in every one of these dtypes, so the run must be the one of
+    # the same heights as float64, bit for bit.
+    heights = numpy.round(cone(16)).astype(dtype)
+    converted = groundtruth.run("erosion.thermal", heights, backend="cpu", iterations=3, quick=True)
+    plain = groundtruth.run("erosion.thermal", heights.astype(numpy.float64), backend="cpu", iterations=3, quick=True)
+    assert any(note.startswith("heights: ") and ("converted" in note or "big-endian" in note)
+               for note in converted.notes), converted.notes
+    numpy.testing.assert_array_equal(converted.fields["terrain"]["cpu"], plain.fields["terrain"]["cpu"])
+
+
+def test_a_masked_array_keeps_its_mask_as_no_data():
+    heights = numpy.ma.masked_array(cone(16, peak=10.0), mask=numpy.zeros((16, 16), dtype=bool))
+    heights[5, 6] = numpy.ma.masked
+    result = groundtruth.run("erosion.thermal", heights, backend="cpu", iterations=2, quick=True)
+    assert "heights: 1 masked cells are no-data (NaN)" in result.notes
+    assert numpy.isnan(result.fields["terrain"]["cpu"][5, 6])
+    assert numpy.isfinite(numpy.delete(result.fields["terrain"]["cpu"].ravel(), 5 * 16 + 6)).all()
+
+
+def test_quick_keeps_the_checks_and_fields_and_drops_pictures_descriptors_and_timings(tmp_path):
+    heights = cone(64)
+    full = groundtruth.run("erosion.thermal", heights, backend="cpu", iterations=2, out=tmp_path / "full")
+    quick = groundtruth.run("erosion.thermal", heights, backend="cpu", iterations=2, quick=True, out=tmp_path / "quick")
+    kinds = lambda result: {artifact["kind"] for artifact in result.artifacts}
+    assert "field" in kinds(quick) and "image" not in kinds(quick) and "plot" not in kinds(quick)
+    assert {"image", "plot"} <= kinds(full)
+    assert not any(check["name"].startswith("descriptors.") for check in quick.checks)
+    assert not quick.timings.get("cpu_reps")
+    # Every check the quick call made is the full call's, with the same value.
+    full_values = {check["name"]: check["value"] for check in full.checks}
+    for check in quick.checks:
+        assert check["value"] == full_values[check["name"]], check["name"]
+    numpy.testing.assert_array_equal(quick.fields["terrain"]["cpu"], full.fields["terrain"]["cpu"])
