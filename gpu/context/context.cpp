@@ -180,8 +180,9 @@ std::unique_ptr<GlContext> GlContext::create(GlBackend backend) {
   return backend == GlBackend::egl ? detail::create_egl_context() : detail::create_osmesa_context();
 }
 
-GlContext::GlContext(std::string platform) {
+GlContext::GlContext(std::string platform, std::vector<std::string> passed_over) {
   info_.platform = std::move(platform);
+  info_.passed_over = std::move(passed_over);
   live_context.store(this);
 }
 

@@ -25,6 +25,10 @@ struct GlInfo {
   std::string version;   // GL_VERSION
   std::string vendor;    // GL_VENDOR
   std::string platform;  // "egl-device", "egl-surfaceless" or "osmesa"
+  // The attempts made before the one that gave this context, each with why it gave none, e.g.
+  // "hardware device 0: ..." when a GPU's EGL device failed and the surfaceless platform worked;
+  // empty when the first attempt worked (a platform with nothing to try is not an attempt).
+  std::vector<std::string> passed_over;
 };
 
 class GlContext {
@@ -50,7 +54,7 @@ class GlContext {
   using GlProc = void (*)();
   using GlProcLoader = GlProc (*)(const char* name);
 
-  explicit GlContext(std::string platform);
+  explicit GlContext(std::string platform, std::vector<std::string> passed_over = {});
 
   // Loads GL through the context's get-proc-address, fills info(), checks 4.5 core, installs
   // debug output and runs the compute probe; throws gt::GpuUnavailable. The last statement of a

@@ -114,8 +114,8 @@ class EglSession {
 
 class EglGlContext final : public GlContext {
  public:
-  EglGlContext(std::string platform, std::unique_ptr<EglSession> session)
-      : GlContext(std::move(platform)), session_(std::move(session)) {
+  EglGlContext(std::string platform, std::vector<std::string> passed_over, std::unique_ptr<EglSession> session)
+      : GlContext(std::move(platform), std::move(passed_over)), session_(std::move(session)) {
     load_and_check_gl(eglGetProcAddress);
   }
 
@@ -123,10 +123,11 @@ class EglGlContext final : public GlContext {
   std::unique_ptr<EglSession> session_;
 };
 
-std::unique_ptr<GlContext> create_on_display(EGLenum platform, void* native_display, std::string platform_name) {
+std::unique_ptr<GlContext> create_on_display(EGLenum platform, void* native_display, std::string platform_name,
+                                             const std::vector<std::string>& passed_over) {
   auto session = std::make_unique<EglSession>(eglGetPlatformDisplay(platform, native_display, nullptr));
   session->make_current_core_45_context();
-  return std::make_unique<EglGlContext>(std::move(platform_name), std::move(session));
+  return std::make_unique<EglGlContext>(std::move(platform_name), passed_over, std::move(session));
 }
 
 // The devices that are not Mesa's software rasteriser; empty when enumeration is unsupported.
@@ -151,25 +152,26 @@ std::vector<EGLDeviceEXT> hardware_devices() {
 }  // namespace
 
 std::unique_ptr<GlContext> detail::create_egl_context() {
-  std::vector<std::string> failures;
+  std::vector<std::string> failures;  // the attempts made that gave no context, each with why
   const auto devices = hardware_devices();
   for (std::size_t index = 0; index < devices.size(); ++index) {
     try {
-      return create_on_display(EGL_PLATFORM_DEVICE_EXT, devices[index], "egl-device");
+      return create_on_display(EGL_PLATFORM_DEVICE_EXT, devices[index], "egl-device", failures);
     } catch (const GpuUnavailable& failure) {
       failures.push_back(fmt::format("hardware device {}: {}", index, failure.what()));
     }
   }
-  if (devices.empty()) failures.emplace_back("no hardware EGL device");
-  if (!has_client_extension("EGL_MESA_platform_surfaceless")) {
-    failures.emplace_back("surfaceless: EGL_MESA_platform_surfaceless is not supported");
-  } else {
+  const bool surfaceless = has_client_extension("EGL_MESA_platform_surfaceless");
+  if (surfaceless) {
     try {
-      return create_on_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, "egl-surfaceless");
+      return create_on_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, "egl-surfaceless", failures);
     } catch (const GpuUnavailable& failure) {
       failures.push_back(fmt::format("surfaceless: {}", failure.what()));
     }
   }
+  // Why nothing worked: the failed attempts, and the platforms that could not be tried.
+  if (devices.empty()) failures.insert(failures.begin(), "no hardware EGL device");
+  if (!surfaceless) failures.emplace_back("surfaceless: EGL_MESA_platform_surfaceless is not supported");
   throw GpuUnavailable(fmt::format("no EGL OpenGL 4.5 core context: {}", fmt::join(failures, "; ")));
 }
 
