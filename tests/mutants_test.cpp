@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,14 +17,15 @@ namespace {
 
 using nlohmann::json;
 
-// Every mutant whose name matches `pattern` (fnmatch) is killed, at least `one_twin_least` of them
-// one-twin and 3 both-twins.
-void expect_every_mutant_killed(const std::string& pattern, int one_twin_least = 3) {
+// Every mutant whose name matches one of `patterns` (fnmatch) is killed, at least `one_twin_least`
+// of them one-twin and 3 both-twins.
+void expect_every_mutant_killed(const std::vector<std::string>& patterns, int one_twin_least = 3) {
   const gt::testing::TemporaryFolder work;
   const auto out = work / "mutants";
-  const auto run = gt::testing::run_program(GT_BINARY_DIR "/groundtruth",
-                                            {"mutants", pattern, "--require-gpu", "--json", "--out", out.string()},
-                                            work.path());
+  std::vector<std::string> args = {"mutants"};
+  args.insert(args.end(), patterns.begin(), patterns.end());
+  args.insert(args.end(), {"--require-gpu", "--json", "--out", out.string()});
+  const auto run = gt::testing::run_program(GT_BINARY_DIR "/groundtruth", args, work.path());
   ASSERT_LE(run.status, 1) << run;
   const json mutation = json::parse(run.out);
   for (const auto& baseline : mutation.at("baselines")) {
@@ -42,12 +44,17 @@ void expect_every_mutant_killed(const std::string& pattern, int one_twin_least =
   EXPECT_TRUE(std::filesystem::is_regular_file(out / "index.html"));
 }
 
-// The erosion family in two, so that each stays well inside ctest's 300 s: the layered ground (2
-// one-twin mutants: its GPU twin is bit for bit, few ways to break it alone), then the rest.
-TEST(Mutants, ErosionLayeredIsKilled) { expect_every_mutant_killed("erosion.layered.*", 2); }
-TEST(Mutants, ErosionFamilyBesideTheLayeredGroundIsKilled) { expect_every_mutant_killed("erosion.[!l]*"); }
-TEST(Mutants, NoiseFamilyIsKilled) { expect_every_mutant_killed("noise.*"); }
-TEST(Mutants, CaveFamilyIsKilled) { expect_every_mutant_killed("cave.*"); }
-TEST(Mutants, RenderFamilyIsKilled) { expect_every_mutant_killed("render.*"); }
+// The erosion family in five, so that each stays well inside ctest's 300 s on a loaded 2-core
+// machine (as two, they took 160 s and 247 s under ctest -j 2): the layered ground by name, a-g
+// (its 2 one-twin mutants: its GPU twin is bit for bit, few ways to break it alone) and h-z (both-
+// twins only), the droplet eroders, the pipe model, and the two thermal models.
+TEST(Mutants, ErosionLayeredAToGIsKilled) { expect_every_mutant_killed({"erosion.layered.[a-g]*"}, 2); }
+TEST(Mutants, ErosionLayeredHToZIsKilled) { expect_every_mutant_killed({"erosion.layered.[h-z]*"}, 0); }
+TEST(Mutants, ErosionDropletsAreKilled) { expect_every_mutant_killed({"erosion.particle.*", "erosion.beyer.*"}); }
+TEST(Mutants, ErosionPipeIsKilled) { expect_every_mutant_killed({"erosion.pipe.*"}); }
+TEST(Mutants, ErosionThermalIsKilled) { expect_every_mutant_killed({"erosion.thermal.*", "erosion.thermal_jako.*"}); }
+TEST(Mutants, NoiseFamilyIsKilled) { expect_every_mutant_killed({"noise.*"}); }
+TEST(Mutants, CaveFamilyIsKilled) { expect_every_mutant_killed({"cave.*"}); }
+TEST(Mutants, RenderFamilyIsKilled) { expect_every_mutant_killed({"render.*"}); }
 
 }  // namespace
