@@ -451,7 +451,12 @@ void add_descriptors(const SteppedTwin& twin, const BackendRun& truth, const Bac
   if (!described) result.notes.push_back("terrain descriptors of the references alone: " + twin.gpu_not_described);
   const std::optional<Grid<double>> gpu_terrain =
       gpu && described ? std::optional<Grid<double>>(component_grid(twin.fields, gpu->final(), shown, 0)) : std::nullopt;
-  add_case_descriptors({&input, &cpu, &cpu_float, gpu_terrain ? &*gpu_terrain : nullptr}, expect, options, result);
+  add_case_descriptors({.input = &input,
+                        .cpu = &cpu,
+                        .cpu_float = &cpu_float,
+                        .gpu = gpu_terrain ? &*gpu_terrain : nullptr,
+                        .ends_of_a_run = true},
+                       expect, options, result);
   if (gpu || !described) return;
   for (const auto& name : descriptor_gpu_check_names(expect)) {
     result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
