@@ -12,6 +12,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -19,6 +20,7 @@
 #include "compare/report/plots.hpp"
 #include "compare/report/report_common.hpp"
 #include "compare/report/writers.hpp"
+#include "compare/checks/threshold.hpp"
 #include "compare/result.hpp"
 
 namespace gt {
@@ -324,6 +326,24 @@ TEST_F(ReportFiles, HtmlNamesEveryCaseAndEscapes) {
   EXPECT_NE(html.find("not run: triangles need 444 MB"), std::string::npos);
   EXPECT_NE(html.find("<td>2 compute passes per iteration</td>"), std::string::npos) << "a timed row's detail";
   EXPECT_EQ(html.find("<script"), std::string::npos);
+}
+
+// A value shown without a bound wears a neutral `info` badge, never a green pass; a bounded
+// passing check keeps its pass.
+TEST_F(ReportFiles, HtmlShowsAValueWithoutABoundAsInfo) {
+  Report report = sample_report();
+  report.cases.resize(1);
+  report.cases[0].status = Outcome::pass;
+  report.cases[0].checks = {informative_check("parity.shown_only", 1.5, "shown"),
+                            bounded_check("parity.bounded", 0.5, 1.0, std::nullopt, "bounded")};
+  write_report_html(report, folder / "index.html");
+  const std::string html = read_text(folder / "index.html");
+  const auto row_of = [&](const std::string& name) {
+    const auto start = html.find("<td>" + name + "</td>");
+    return start == std::string::npos ? std::string() : html.substr(start, html.find("</tr>", start) - start);
+  };
+  EXPECT_THAT(row_of("parity.shown_only"), ::testing::HasSubstr("<span class=\"badge info\">info</span>"));
+  EXPECT_THAT(row_of("parity.bounded"), ::testing::HasSubstr("<span class=\"badge pass\">pass</span>"));
 }
 
 TEST_F(ReportFiles, MarkdownHasSummaryDetailsAndBenchmarks) {

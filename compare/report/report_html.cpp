@@ -41,6 +41,7 @@ table.environment th { width: 9em; }
 .badge.pass { background: #2e7d32; } .badge.fail { background: #c62828; } .badge.warn { background: #f9a825; color: #222; }
 .badge.skip { background: #757575; } .badge.inconclusive { background: #0277bd; } .badge.error { background: #6a1b9a; }
 .badge.flaky { background: #ef6c00; } .badge.zero { opacity: .35; }
+.badge.info { background: #eceff1; color: #37474f; border: 1px solid #b0bec5; }
 .summary .badge { font-size: 1.05em; margin-right: .4em; }
 section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
 .note { color: #555; font-style: italic; }
@@ -85,6 +86,12 @@ std::string url(std::string_view path) {
 
 std::string badge(Outcome outcome) {
   return fmt::format("<span class=\"badge {0}\">{0}</span>", outcome_name(outcome));
+}
+
+// A check's badge: a value shown without a bound is `info` (neutral), never a green pass.
+std::string check_badge(const Check& check) {
+  const bool informative = check.status == Outcome::pass && !check.threshold && !check.loose_threshold;
+  return informative ? std::string("<span class=\"badge info\">info</span>") : badge(check.status);
 }
 
 std::string anchor(const CaseResult& result) { return case_anchor(result.name); }
@@ -226,7 +233,7 @@ void append_checks(std::string& out, const CaseResult& result) {
   out += "<table class=\"checks\">\n<tr><th>check</th><th>value</th><th>bound</th><th>status</th><th>detail</th></tr>\n";
   for (const Check& check : result.checks) {
     out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
-                       h(check.name), format_value(check.value), h(format_bounds(check)), badge(check.status),
+                       h(check.name), format_value(check.value), h(format_bounds(check)), check_badge(check),
                        h(check.detail));
   }
   out += "</table>\n";
