@@ -21,6 +21,7 @@
 #include "core/errors.hpp"
 #include "core/grid.hpp"
 #include "core/io/heightmap_io.hpp"
+#include "tests/support/npy_writer.hpp"
 #include "tests/support/temporary_folder.hpp"
 
 namespace gt {
@@ -365,6 +366,62 @@ TEST(HeightmapIoErrors, AbsurdJsonSizeIsRefusedBeforeAllocating) {
   const fs::path file = folder.path() / "huge.json";
   write_bytes(file, R"({"width": 1000000, "height": 1000000, "values": []})");
   expect_input_error([&] { read_heightmap(file); }, file, "1000000x1000000");
+}
+
+// A .npy of format `version` whose header is `dictionary` as given (no padding added), then `data`.
+std::string npy_with_header(int version, const std::string& dictionary, const std::string& data) {
+  std::string bytes("\x93NUMPY", 6);
+  bytes.push_back(static_cast<char>(version));
+  bytes.push_back('\0');
+  const auto length = static_cast<std::uint32_t>(dictionary.size());
+  bytes.append(reinterpret_cast<const char*>(&length), version == 1 ? 2 : 4);
+  return bytes + dictionary + data;
+}
+
+const std::string six_floats = gt::testing::npy_data(std::vector<float>{1, 2, 3, 4, 5, 6});
+
+// Headers beyond numpy.load's own 10,000-byte default are refused before they are read: a 100 KB
+// one overflowed the stack of the regular expressions that parsed headers. Within it, any padding
+// and spacing numpy's grammar allows is read, in one pass.
+TEST(HeightmapIoErrors, NpyHeaderOverNumpysLimitIsRefusedUnread) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "long_header.npy";
+  const std::string padded = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3), }" + std::string(100000, ' ');
+  write_bytes(file, npy_with_header(2, padded + "\n", six_floats));
+  expect_input_error([&] { read_heightmap(file); }, file, "over the 10000 numpy.load reads by default");
+  write_bytes(file, npy_with_header(2, "{'descr': '" + std::string(100000, '<') + "', }\n", six_floats));
+  expect_input_error([&] { read_heightmap(file); }, file, "over the 10000");
+}
+
+TEST(HeightmapIo, NpyHeaderOfAnySpacingWithinTheLimitIsRead) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "spaced.npy";
+  for (const std::string& dictionary :
+       {"{'shape':(2,3),'fortran_order':False,'descr':'<f4'}" + std::string(9000, ' ') + "\n",
+        std::string("{ 'descr' :  '<f4' , 'fortran_order' : False , 'shape' : ( 2 , 3 , ) , }\n")}) {
+    SCOPED_TRACE(dictionary.substr(0, 80));
+    write_bytes(file, npy_with_header(3, dictionary, six_floats));
+    const HeightmapFile read = read_heightmap(file);
+    EXPECT_EQ(read.heights.width, 3);
+    EXPECT_EQ(read.heights.height, 2);
+    EXPECT_EQ(read.heights.values, (std::vector<double>{1, 2, 3, 4, 5, 6}));
+  }
+}
+
+TEST(HeightmapIoErrors, NpyHeaderFieldsThatAreNotNumpysAreRefused) {
+  const TemporaryFolder folder;
+  const fs::path file = folder.path() / "bad.npy";
+  const auto refused = [&](const std::string& dictionary, const std::string& message) {
+    write_bytes(file, npy_with_header(1, dictionary + "\n", six_floats));
+    expect_input_error([&] { read_heightmap(file); }, file, message);
+  };
+  refused("{'descr': '<f4', 'fortran_order': False, 'shape': (2,,3), }", "bad .npy shape");
+  refused("{'descr': '<f4', 'fortran_order': False, 'shape': (2, -3), }", "bad .npy shape");
+  refused("{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3", "no valid 'shape'");
+  refused("{'descr': <f4, 'fortran_order': False, 'shape': (2, 3), }", "no valid 'descr'");
+  refused("{'descr': '<f4', 'fortran_order': Maybe, 'shape': (2, 3), }", "no valid 'fortran_order'");
+  refused("{'descr': '" + std::string(5000, 'x') + "', 'fortran_order': False, 'shape': (2, 3), }",
+          "... (5000 bytes)' (supported: <i2 <i4 <f4 <f8)");
 }
 
 TEST(HeightmapIoErrors, NpzMissingKey) {

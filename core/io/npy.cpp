@@ -2,16 +2,20 @@
 // then the values converted to double.
 //
 // The header is a Python dict literal, e.g. {'descr': '<i2', 'fortran_order': False, 'shape': (344, 403), }
-// and is read with three regular expressions (keys in any order, spaces free) rather than a
-// Python-literal parser: the format fixes its three keys and their value syntax. Data is copied
+// and is read by finding its three keys (in any order, spaces free around the colon) and scanning
+// their values, each in one linear pass without recursion (std::regex recursed once a character:
+// a 100 KB header overflowed the stack), rather than with a Python-literal parser: the format fixes
+// its three keys and their value syntax. Headers over numpy's own 10,000-byte default are refused
+// before they are read. Data is copied
 // as it is stored, which is right for the little-endian dtypes accepted on a little-endian host.
 #include "core/io/npy.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <fstream>
 #include <limits>
-#include <regex>
+#include <optional>
 #include <string_view>
 #include <type_traits>
 
@@ -25,7 +29,9 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "the .npy reader copies little-endian data as is");
 
-constexpr std::uint32_t max_header_length = 1u << 20;
+// numpy.load's own default limit (max_header_size): a header of the four dtypes read here needs
+// under 200 bytes; a longer one is hostile or not one of ours.
+constexpr std::uint32_t max_header_length = 10000;
 
 struct NpyHeader {
   std::string descr;
@@ -38,29 +44,76 @@ void read_exact(const ByteSource& source, void* destination, std::size_t bytes, 
   if (read != bytes) throw InputError(fmt::format("{}: truncated ({} of {} bytes)", where, read, bytes));
 }
 
-std::vector<long long> parse_shape(const std::string& tuple, const std::string& where) {
-  std::vector<long long> shape;
-  static const std::regex dimension_pattern(R"(\s*([^,\s]+)\s*(,|$))");
-  for (auto it = std::sregex_iterator(tuple.begin(), tuple.end(), dimension_pattern); it != std::sregex_iterator();
-       ++it) {
-    const std::string text = (*it)[1];
-    long long dimension = -1;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), dimension);
-    if (error != std::errc{} || end != text.data() + text.size() || dimension < 0) {
-      throw InputError(fmt::format("{}: bad .npy shape ({})", where, tuple));
-    }
-    shape.push_back(dimension);
-  }
-  return shape;
+// The header dict's text after `'key':` (spaces free around the colon), or nullopt without the key.
+std::optional<std::string_view> after_key(std::string_view header, std::string_view key) {
+  const std::string quoted = fmt::format("'{}'", key);
+  const std::size_t found = header.find(quoted);
+  if (found == std::string_view::npos) return std::nullopt;
+  const auto skip_spaces = [](std::string_view text) {
+    const std::size_t first = text.find_first_not_of(" \t");
+    return first == std::string_view::npos ? std::string_view() : text.substr(first);
+  };
+  const std::string_view rest = skip_spaces(header.substr(found + quoted.size()));
+  if (rest.empty() || rest.front() != ':') return std::nullopt;
+  return skip_spaces(rest.substr(1));
 }
 
-std::string header_field(const std::string& header, const std::regex& pattern, const char* key,
-                         const std::string& where) {
-  std::smatch match;
-  if (!std::regex_search(header, match, pattern)) {
-    throw InputError(fmt::format("{}: .npy header has no valid '{}': {}", where, key, header));
+// Text as quoted in a message: its first 120 characters.
+std::string quoted_text(std::string_view text) {
+  return text.size() <= 120 ? std::string(text) : fmt::format("{}... ({} bytes)", text.substr(0, 120), text.size());
+}
+
+[[noreturn]] void bad_field(std::string_view header, const char* key, const std::string& where) {
+  throw InputError(fmt::format("{}: .npy header has no valid '{}': {}", where, key, quoted_text(header)));
+}
+
+// 'descr': '<text>'
+std::string descr_of(std::string_view header, const std::string& where) {
+  const auto value = after_key(header, "descr");
+  if (!value || value->empty() || value->front() != '\'') bad_field(header, "descr", where);
+  const std::size_t close = value->find('\'', 1);
+  if (close == std::string_view::npos) bad_field(header, "descr", where);
+  return std::string(value->substr(1, close - 1));
+}
+
+// 'fortran_order': True|False
+bool fortran_order_of(std::string_view header, const std::string& where) {
+  const auto value = after_key(header, "fortran_order");
+  if (value && value->starts_with("True")) return true;
+  if (value && value->starts_with("False")) return false;
+  bad_field(header, "fortran_order", where);
+}
+
+// One dimension of a shape tuple, spaces around it free.
+long long dimension_of(std::string_view text, std::string_view tuple, const std::string& where) {
+  const std::size_t first = text.find_first_not_of(" \t");
+  const std::size_t last = text.find_last_not_of(" \t");
+  if (first != std::string_view::npos) text = text.substr(first, last - first + 1);
+  long long dimension = -1;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), dimension);
+  if (first == std::string_view::npos || error != std::errc{} || end != text.data() + text.size() || dimension < 0) {
+    throw InputError(fmt::format("{}: bad .npy shape ({})", where, quoted_text(tuple)));
   }
-  return match[1];
+  return dimension;
+}
+
+// 'shape': (d0, d1, ...) with an optional trailing comma; () is a scalar's.
+std::vector<long long> shape_of(std::string_view header, const std::string& where) {
+  const auto value = after_key(header, "shape");
+  if (!value || value->empty() || value->front() != '(') bad_field(header, "shape", where);
+  const std::size_t close = value->find(')');
+  if (close == std::string_view::npos) bad_field(header, "shape", where);
+  const std::string_view tuple = value->substr(1, close - 1);
+  std::vector<long long> shape;
+  std::size_t start = 0;
+  while (start < tuple.size()) {
+    const std::size_t comma = std::min(tuple.find(',', start), tuple.size());
+    const std::string_view text = tuple.substr(start, comma - start);
+    const bool trailing = comma == tuple.size() && text.find_first_not_of(" \t") == std::string_view::npos;
+    if (!trailing) shape.push_back(dimension_of(text, tuple, where));
+    start = comma + 1;
+  }
+  return shape;
 }
 
 NpyHeader read_header(const ByteSource& source, const std::string& where) {
@@ -77,27 +130,24 @@ NpyHeader read_header(const ByteSource& source, const std::string& where) {
   const std::size_t length_bytes = major_version == 1 ? 2 : 4;
   read_exact(source, &header_length, length_bytes, where);
   if (header_length > max_header_length) {
-    throw InputError(fmt::format("{}: .npy header of {} bytes", where, header_length));
+    throw InputError(fmt::format("{}: .npy header of {} bytes, over the {} numpy.load reads by default", where,
+                                 header_length, max_header_length));
   }
 
   std::string header(header_length, '\0');
   read_exact(source, header.data(), header.size(), where);
-  static const std::regex descr_pattern(R"('descr'\s*:\s*'([^']*)')");
-  static const std::regex fortran_pattern(R"('fortran_order'\s*:\s*(True|False))");
-  static const std::regex shape_pattern(R"('shape'\s*:\s*\(([^)]*)\))");
-  if (header_field(header, fortran_pattern, "fortran_order", where) != "False") {
+  if (fortran_order_of(header, where)) {
     throw InputError(fmt::format("{}: Fortran-ordered .npy arrays are not supported", where));
   }
-  return {header_field(header, descr_pattern, "descr", where),
-          parse_shape(header_field(header, shape_pattern, "shape", where), where),
-          sizeof preamble + length_bytes + header_length};
+  return {descr_of(header, where), shape_of(header, where), sizeof preamble + length_bytes + header_length};
 }
 
 std::size_t item_size(const std::string& descr, const std::string& where) {
   if (descr == "<i2") return 2;
   if (descr == "<i4" || descr == "<f4") return 4;
   if (descr == "<f8") return 8;
-  throw InputError(fmt::format("{}: unsupported .npy dtype '{}' (supported: <i2 <i4 <f4 <f8)", where, descr));
+  throw InputError(
+      fmt::format("{}: unsupported .npy dtype '{}' (supported: <i2 <i4 <f4 <f8)", where, quoted_text(descr)));
 }
 
 // Throws unless `stored_bytes` is exactly the header plus `count` items.
