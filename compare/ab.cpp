@@ -13,6 +13,7 @@
 #include "compare/sweep.hpp"
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt {
 namespace {
@@ -34,7 +35,7 @@ std::optional<Heightmap> cpu_field(const std::filesystem::path& folder, const Ca
   const auto sidecar = folder / result.name / "fields.json";
   if (!std::filesystem::exists(sidecar)) return std::nullopt;
   std::ifstream in(sidecar);
-  const nlohmann::json fields = nlohmann::json::parse(in);
+  const nlohmann::json fields = parse_json_bounded(in, sidecar.string());
   for (const auto& file : fields.at("files")) {
     if (file.at("backend") == "cpu") {
       return read_heightmap(folder / result.name / (file.at("stem").get<std::string>() + ".exr")).heights;

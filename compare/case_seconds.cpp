@@ -7,6 +7,7 @@
 
 #include "compare/report_diff.hpp"
 #include "core/errors.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt {
 
@@ -27,7 +28,8 @@ CaseSeconds bundled_case_seconds(const std::filesystem::path& dataset_dir) {
   if (!std::filesystem::exists(file)) return {};
   nlohmann::json document;
   try {
-    document = nlohmann::json::parse(std::ifstream(file));
+    std::ifstream in(file);
+    document = parse_json_bounded(in, file.string());
   } catch (const nlohmann::json::exception& error) {
     throw InputError(fmt::format("{}: not valid JSON: {}", file.string(), error.what()));
   }

@@ -160,7 +160,7 @@ std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std:
     std::ifstream stream(file);
     nlohmann::json document;
     try {
-      document = nlohmann::json::parse(stream);
+      document = parse_json_bounded(stream, file.string());
     } catch (const nlohmann::json::exception& error) {
       throw InputError(fmt::format("{}: not valid JSON: {}", file.string(), error.what()));
     }

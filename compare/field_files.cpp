@@ -9,6 +9,7 @@
 
 #include "core/io/heightmap_io.hpp"
 #include "core/io/volume_io.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt {
 namespace {
@@ -35,7 +36,7 @@ void describe_field_file(const std::filesystem::path& folder, const nlohmann::js
                  {"input", result.input}, {"grid", grid},                {"files", nlohmann::json::array()}};
   } else {
     std::ifstream in(sidecar);
-    described = nlohmann::json::parse(in);
+    described = parse_json_bounded(in, sidecar.string());
   }
   nlohmann::json entry = {{"stem", file.stem},       {"formats", formats}, {"field", file.field},
                           {"backend", file.backend}, {"unit", file.unit},  {"meaning", file.meaning},

@@ -12,6 +12,7 @@
 #include "compare/cases.hpp"
 #include "compare/worker.hpp"
 #include "core/errors.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt {
 namespace {
@@ -31,7 +32,7 @@ WorkerReport read_worker_report(const std::filesystem::path& folder) {
   if (!stream) return report;
   nlohmann::json document;
   try {
-    document = nlohmann::json::parse(stream);
+    document = parse_json_bounded(stream, (folder / "report.json").string());
   } catch (const nlohmann::json::exception&) {
     return report;
   }

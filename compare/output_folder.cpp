@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt {
 namespace {
@@ -37,7 +38,7 @@ bool read_marker(const std::filesystem::path& folder, std::set<std::string>& ent
   std::ifstream stream(folder / marker_name);
   if (!stream) return false;
   try {
-    const auto listed = nlohmann::json::parse(stream);
+    const auto listed = parse_json_bounded(stream, (folder / marker_name).string());
     for (const auto& entry : listed.at("entries")) entries.insert(entry.get<std::string>());
   } catch (const nlohmann::json::exception&) {
     return false;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt {
 
@@ -167,7 +168,7 @@ json read_report_json(const std::filesystem::path& file) {
   std::ifstream stream(file);
   if (!stream) throw InputError(fmt::format("cannot open {}", file.string()));
   try {
-    json report = json::parse(stream);
+    json report = parse_json_bounded(stream, file.string());
     check_report(report, file.string());
     return report;
   } catch (const json::exception& error) {

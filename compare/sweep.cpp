@@ -15,6 +15,7 @@
 #include "compare/report/plots.hpp"
 #include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt {
 namespace {
@@ -325,7 +326,7 @@ Sweep make_sweep_of_sets(const AdHocCase& base, const std::filesystem::path& fil
   if (!in) throw InputError(fmt::format("{}: cannot read the file", where));
   nlohmann::ordered_json sets;  // the sets run in the file's order
   try {
-    sets = nlohmann::ordered_json::parse(in);
+    sets = parse_ordered_json_bounded(in, where);
   } catch (const nlohmann::ordered_json::exception& error) {
     throw InputError(fmt::format("{}: not valid JSON: {}", where, error.what()));
   }

@@ -76,4 +76,27 @@ bool json_bool(const nlohmann::json& object, const std::string& key, bool fallba
   return value.get<bool>();
 }
 
+namespace {
+
+template <class Json>
+Json parse_bounded(std::istream& in, const std::string& where) {
+  const typename Json::parser_callback_t refuse_deep = [&where](int depth, typename Json::parse_event_t, Json&) {
+    if (depth > max_json_depth) {
+      throw InputError(fmt::format("{}: JSON nested deeper than {} levels", where, max_json_depth));
+    }
+    return true;
+  };
+  return Json::parse(in, refuse_deep);
+}
+
+}  // namespace
+
+nlohmann::json parse_json_bounded(std::istream& in, const std::string& where) {
+  return parse_bounded<nlohmann::json>(in, where);
+}
+
+nlohmann::ordered_json parse_ordered_json_bounded(std::istream& in, const std::string& where) {
+  return parse_bounded<nlohmann::ordered_json>(in, where);
+}
+
 }  // namespace gt

@@ -3,6 +3,7 @@
 // keys its reader knows, and an unknown one is bad input naming the closest known key.
 #pragma once
 
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,17 @@ long long json_integer(const nlohmann::json& object, const std::string& key, lon
 // NaN and infinities the same way.
 double json_number(const nlohmann::json& object, const std::string& key, double fallback, double min, double max,
                    const std::string& where);
+
+// The deepest nesting a JSON file we read may have. Case files nest 5 levels and report.json 6;
+// copying, comparing and dumping a nlohmann::json recurse once a level, so a file nested 200,000
+// levels deep overflowed the stack of every command that read it.
+constexpr int max_json_depth = 64;
+
+// `in` parsed as JSON, refused while it is read (InputError "<where>: JSON nested deeper than 64
+// levels") before any value deeper than max_json_depth is built. Syntax errors are the parser's
+// own exceptions, for the caller to word. The ordered variant keeps the keys' order.
+nlohmann::json parse_json_bounded(std::istream& in, const std::string& where);
+nlohmann::ordered_json parse_ordered_json_bounded(std::istream& in, const std::string& where);
 
 // object[key] as true/false; `fallback` when absent; InputError (naming `where`) when not a boolean.
 bool json_bool(const nlohmann::json& object, const std::string& key, bool fallback, const std::string& where);

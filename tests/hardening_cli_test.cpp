@@ -220,6 +220,26 @@ TEST_F(Hostile, CommandLineNumbersMustBeFiniteAndFit) {
   EXPECT_TRUE(fs::is_empty(work_.path()));
 }
 
+// JSON nested 200,000 levels deep overflowed the stack of every command that copied, compared or
+// printed it; it is refused while it is read, as a case file and as a report given to diff-reports.
+TEST_F(Hostile, JsonNestedDeeperThanAnyOfOursIsRefusedWhileRead) {
+  const std::string deep = std::string(200000, '[') + std::string(200000, ']');
+  std::ofstream(work_ / "mine.json") << R"([{"name": "mine.deep", "algorithm": "erosion.thermal", "params": )" << deep
+                                     << "}]";
+  const auto cases = gt::testing::run_program(
+      groundtruth, {"run", "mine.deep", "--cases", (work_ / "mine.json").string(), "--out", (work_ / "out").string()},
+      work_.path());
+  EXPECT_EQ(cases.status, 2) << cases;
+  EXPECT_THAT(cases.err, HasSubstr("JSON nested deeper than 64 levels")) << cases;
+  std::ofstream(work_ / "deep_report.json") << R"({"schema": 1, "cases": )" << deep << "}";
+  const auto diff = gt::testing::run_program(
+      groundtruth, {"diff-reports", (work_ / "deep_report.json").string(), (work_ / "deep_report.json").string()},
+      work_.path());
+  EXPECT_EQ(diff.status, 2) << diff;
+  EXPECT_THAT(diff.err, HasSubstr("deep_report.json: JSON nested deeper than 64 levels")) << diff;
+  EXPECT_EQ(entries_of(work_.path()), (std::vector<std::string>{"deep_report.json", "mine.json"}));
+}
+
 // Rectangular cells need both spacings: the rows' alone is refused, in a case file and on the
 // command line.
 TEST_F(Hostile, ARowSpacingWithoutAColumnSpacingIsRefused) {

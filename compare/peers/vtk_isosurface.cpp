@@ -8,6 +8,7 @@
 
 #include "compare/subprocess.hpp"
 #include "core/io/volume_io.hpp"
+#include "core/json_keys.hpp"
 
 #if !defined(GT_PYTHON_WITH_VTK) || !defined(GT_SOURCE_DIR)
 #error "compare/peers/vtk_isosurface.cpp needs the compile definitions GT_PYTHON_WITH_VTK and GT_SOURCE_DIR"
@@ -34,7 +35,7 @@ std::vector<IsosurfacePeerRun> run_vtk_isosurface(const Volume<double>& density,
                                          folder / "log.txt");
   if (!failure.empty()) throw std::runtime_error(failure);
   std::ifstream in(folder / "times.json");
-  const auto document = nlohmann::json::parse(in);
+  const auto document = parse_json_bounded(in, (folder / "times.json").string());
   std::vector<IsosurfacePeerRun> runs;
   for (const auto& filter : document.at("filters")) {
     runs.push_back({.name = fmt::format("VTK {} {} (float32, 1 thread)", document.at("vtk_version").get<std::string>(),

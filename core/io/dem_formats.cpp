@@ -24,6 +24,7 @@
 
 #include "core/errors.hpp"
 #include "core/io/npy.hpp"
+#include "core/json_keys.hpp"
 
 namespace gt::detail {
 namespace {
@@ -39,7 +40,7 @@ nlohmann::json parse_json_file(const path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(fmt::format("cannot open {}", file.string()));
   try {
-    return nlohmann::json::parse(in);
+    return parse_json_bounded(in, file.string());
   } catch (const nlohmann::json::exception& error) {  // syntax errors and numbers out of range
     throw InputError(fmt::format("{}: not valid JSON: {}", file.string(), error.what()));
   }
