@@ -75,7 +75,7 @@ long long ulp_distance(float a, float b) {
 struct Agreement {
   std::size_t differing = 0;
   double largest_metres = 0.0;
-  long long worst_ulps = 0;  // the largest difference in floats between the twins' heights of that cell
+  long long worst_ulps = 0;  // floats between the twins' heights at `worst`
   double largest_share_of_change = 0.0;  // |GPU − ref<float>| / |ref<float>'s change of that cell|
   std::size_t worst = 0;                 // the cell of largest_metres
 };
