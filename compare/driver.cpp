@@ -55,6 +55,9 @@ const std::string ad_hoc_origin = "command line";
 
 CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   const auto& algorithm = find_algorithm(ad_hoc.algorithm);
+  if (ad_hoc.cell_size_y > 0.0 && !(ad_hoc.cell_size > 0.0)) {
+    throw InputError("cell_size_y (the rows' spacing) needs cell_size (the columns') too");
+  }
   CaseSpec spec;
   spec.algorithm = ad_hoc.algorithm;
   spec.origin = ad_hoc_origin;

@@ -74,9 +74,6 @@ void check_grid_options(const CaseCall& call) {
       throw gt::InputError(fmt::format("cell_size {}: expected a positive, finite number of metres", *size));
     }
   }
-  if (call.cell_size_y && !call.cell_size) {
-    throw gt::InputError("cell_size_y (the rows' spacing) needs cell_size (the columns') too");
-  }
 }
 
 int run_case(const CaseCall& call) {

@@ -406,7 +406,6 @@ struct PipeSuiteSeen {
   std::set<std::string> transports;
   bool seed_variant = false;
   bool float_trap_shown = false;
-  std::size_t cases = 0;
 };
 
 // Runs the named pipe cases and checks each against issue 3's bounds, adding what they show to
@@ -424,7 +423,6 @@ void expect_pipe_cases_meet_the_acceptance_bounds(const std::vector<std::string>
   const json report = read_json(out / "report.json");
   const auto& cases = report.at("cases");
   EXPECT_EQ(cases.size(), names.size());
-  seen.cases += cases.size();
   for (const auto& report_case : cases) {
     SCOPED_TRACE(report_case.at("name").get<std::string>());
     const auto& params = report_case.at("params");
@@ -468,14 +466,15 @@ TEST(CliRun, PipeSuiteFluxHalfMeetsTheAcceptanceBounds) {
 // And over the rest: the other transport, seed 001's variant, the sources and the A/B pair; with
 // the flux half at least eight cases.
 TEST(CliRun, PipeSuiteOtherHalfMeetsTheAcceptanceBounds) {
+  const auto pipe_cases = bundled_cases([](const std::string& name) { return name.starts_with("erosion.pipe."); });
+  EXPECT_GE(pipe_cases.size(), 8u);
+  std::vector<std::string> other_half;
+  std::copy_if(pipe_cases.begin(), pipe_cases.end(), std::back_inserter(other_half),
+               [](const std::string& name) { return !is_pipe_flux_case(name); });
   PipeSuiteSeen seen;
-  expect_pipe_cases_meet_the_acceptance_bounds(bundled_cases([](const std::string& name) {
-    return name.starts_with("erosion.pipe.") && !is_pipe_flux_case(name);
-  }),
-                                               seen);
+  expect_pipe_cases_meet_the_acceptance_bounds(other_half, seen);
   EXPECT_TRUE(seen.transports.contains("semi_lagrangian"));
   EXPECT_TRUE(seen.seed_variant) << "no case runs seed 001's variant (regolith and diffusion)";
-  EXPECT_GE(seen.cases + bundled_cases(is_pipe_flux_case).size(), 8u);
 }
 
 // ---- 1b. the cave suite and the real meshes ----------------------------------------------------

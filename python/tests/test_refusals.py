@@ -88,6 +88,15 @@ def test_bad_options_are_refused(tmp_path, arguments):
     assert refusal(tmp_path, "erosion.thermal", cone(8), **arguments)
 
 
+def test_a_row_spacing_without_a_column_spacing_is_refused_by_the_driver(tmp_path):
+    # The public cell_size=(dx, dy) always gives both; the driver refuses the rows' spacing alone for
+    # every caller (a generator's grid would otherwise take 1 m columns silently).
+    with pytest.raises(groundtruth.InputError, match=r"cell_size_y \(the rows' spacing\) needs cell_size"):
+        groundtruth._core.run_case("noise.simplex2", "", 8, 8, None, 2.0, [], False, "cpu", "egl", "", False, True,
+                                   False, False, 0, tmp_path / "report", "test")
+    assert not (tmp_path / "report").exists()
+
+
 def test_a_heightmap_given_to_an_algorithm_that_makes_its_own_field_is_refused(tmp_path):
     assert "makes its own field" in refusal(tmp_path, "cave.endless", cone(8))
 
