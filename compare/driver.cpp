@@ -24,6 +24,7 @@
 #include "compare/cases.hpp"
 #include "compare/expectations.hpp"
 #include "compare/inputs.hpp"
+#include "compare/external/bmi_preflight.hpp"
 #include "compare/isolated_cases.hpp"
 #include "compare/case_seconds.hpp"
 #include "compare/progress.hpp"
@@ -351,6 +352,7 @@ std::vector<std::string> worker_common_args(const DriverOptions& options) {
   if (!options.mutant.empty()) args.insert(args.end(), {"--mutant", options.mutant});
   if (options.require_gpu) args.push_back("--require-gpu");
   if (options.memory_limit_mib > 0.0) args.insert(args.end(), {"--memory-limit", fmt::format("{}", options.memory_limit_mib)});
+  if (options.implementation) args.insert(args.end(), {"--implementation", options.implementation->text()});
   return args;
 }
 
@@ -373,6 +375,23 @@ CaseResult::Attempt attempt_of(const CaseResult& result) {
   return {result.status, result.error, failing_checks(result)};
 }
 
+// --implementation: every selected case is a stepped one, and (in the parent) the outside model
+// conforms to each case's declared state, checked in a child process before anything runs.
+void check_implementation(const std::vector<Job>& jobs, const DriverOptions& options) {
+  for (const Job& job : jobs) {
+    const auto* twin = std::get_if<SteppedTwin>(&job.prepared.kind);
+    if (twin == nullptr) {
+      throw InputError(fmt::format("case {}: --implementation grades an iterative algorithm through its state fields "
+                                   "(`groundtruth list --json`: algorithms with a \"state\"); {} is not one",
+                                   job.spec.name, job.spec.algorithm));
+    }
+    if (options.worker) continue;
+    constexpr double preflight_seconds = 60.0;
+    preflight_implementation(*options.implementation, twin->algorithm, twin->fields, twin->initial.grid, job.resolved,
+                             job.spec.name, std::min(preflight_seconds, options.case_timeout.value_or(preflight_seconds)));
+  }
+}
+
 // Runs a list of jobs in this process or in workers, and returns their results in order.
 class CaseRunner {
  public:
@@ -386,6 +405,7 @@ class CaseRunner {
     run_options_.pictures = options.pictures;
     run_options_.descriptors = options.descriptors;
     run_options_.report_dir = folder;
+    run_options_.implementation = options.implementation;
     if (isolated()) {
       isolation_.parallel = options.parallel;
       isolation_.timeout_seconds = options.case_timeout.value_or(default_case_timeout_seconds);
@@ -395,7 +415,10 @@ class CaseRunner {
     }
   }
 
-  bool isolated() const { return !options_.worker && (options_.parallel > 1 || options_.case_timeout); }
+  // An outside implementation always runs in workers: its crash or hang ends its case alone.
+  bool isolated() const {
+    return !options_.worker && (options_.parallel > 1 || options_.case_timeout || options_.implementation);
+  }
 
   std::vector<CaseResult> run(const std::vector<const Job*>& jobs) {
     ProgressOptions shown{.quiet = options_.quiet,
@@ -575,6 +598,7 @@ int run_driver(const DriverOptions& options) {
   report.scope = tier_scope(options, suite, selection.size());
   const auto specs = shard_specs(selection, options, baseline, report);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
+  if (options.implementation) check_implementation(jobs, options);
   // A worker's parent applies the expectations and makes the retries.
   const auto expectations = options.worker ? std::vector<Expectation>{} : all_expectations(options, suite);
   check_output_folder(options.out);

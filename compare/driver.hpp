@@ -10,6 +10,7 @@
 
 #include "compare/benchmark.hpp"
 #include "compare/cases.hpp"
+#include "compare/external/implementation.hpp"
 #include "compare/mutation.hpp"
 #include "compare/output_folder.hpp"
 #include "compare/result.hpp"
@@ -78,6 +79,9 @@ struct DriverOptions {
   std::string command_line;              // for the report's provenance
   double memory_limit_mib = 0.0;         // --memory-limit, passed on to workers (0: none)
   bool worker = false;                   // a worker process of a parent run (compare/isolated_cases.hpp)
+  // --implementation: an outside model graded where the GPU twin stands (compare/external/); its
+  // cases run in workers.
+  std::optional<ExternalImplementation> implementation;
 };
 
 // `groundtruth mutants`: runs the mutation into `out` (atomically, like a report), writes

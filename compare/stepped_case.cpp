@@ -14,9 +14,12 @@
 #include "compare/case_descriptors.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/external/bmi_config.hpp"
 #include "compare/field_files.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
+#include "compare/steppers/bmi.hpp"
+#include "compare/subprocess.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
 #include "core/memory.hpp"
@@ -64,6 +67,71 @@ Distance distance(const SteppedTwin& twin, std::size_t field, const State& a, co
   }
   d.rms = std::sqrt(squares / static_cast<double>(std::max<std::size_t>(1, counted)));
   return d;
+}
+
+// The backend graded against the references: groundtruth's GPU twin, or an outside implementation
+// (--implementation) standing where the GPU stands, with its checks named by its own backend.
+struct Candidate {
+  std::string backend = "gpu";  // check and file name part
+  std::string label = "GPU";    // in details and captions
+  std::function<std::unique_ptr<Stepper>()> make;
+  std::function<std::unique_ptr<Stepper>()> make_timed;  // unset: make
+  // Graded against ref<double> from ref<double>'s states, with the error model scaled to double's
+  // unit roundoff, instead of against ref<float> (an outside model that declares float64 fields).
+  bool double_precision = false;
+  double (*clock)(const std::function<void()>&) = gpu_wall_ms;
+  std::string nondeterminism;  // SteppedTwin::gpu_nondeterminism for the GPU, else empty
+  bool bit_exact = false;      // SteppedTwin::gpu_bit_exact for the GPU
+  std::string not_described;   // SteppedTwin::gpu_not_described, or why an outside end is not described
+  bool external = false;       // no algorithm checks of its end (SteppedTwin::finish), no ledger records
+
+  std::string versus() const { return double_precision ? "vs_double" : "vs_float"; }
+  std::string reference_label() const { return double_precision ? "ref<double>" : "ref<float>"; }
+};
+
+// Where an outside model's config goes: beside the case's pictures, or a temporary file for a run
+// without a report folder (the Python module).
+std::filesystem::path external_config_path(const RunOptions& options, const CaseResult& result) {
+  if (!options.report_dir.empty()) return options.report_dir / result.name / "bmi_config.txt";
+  return temporary_path("groundtruth-bmi-config", ".txt");
+}
+
+// The outside implementation of the run's --implementation, with the case's config written for it.
+// Its precision is read off a first instance, which the walk then uses.
+Candidate external_candidate(const SteppedTwin& twin, const RunOptions& options, CaseResult& result) {
+  const ExternalImplementation implementation = *options.implementation;
+  const std::filesystem::path config = external_config_path(options, result);
+  write_bmi_config(config, twin.algorithm, result.name, twin.initial.grid, result.params);
+  if (!options.report_dir.empty()) {
+    result.artifacts.push_back({result.name + "/" + config.filename().string(), "text",
+                                "the config file the outside model was initialised with"});
+  }
+  const auto make = [=, fields = twin.fields, grid = twin.initial.grid, algorithm = twin.algorithm] {
+    return std::make_unique<BmiStepper>(implementation, config, fields, grid, algorithm);
+  };
+  auto first = std::make_shared<std::unique_ptr<BmiStepper>>(make());
+  const bool double_precision = (*first)->double_precision();
+  result.notes.push_back(fmt::format("graded: {} ({}, {}), standing where the GPU twin stands; its fields are {}",
+                                     implementation.label(), implementation.library.string(),
+                                     implementation.register_symbol, double_precision ? "double" : "float"));
+  return {.backend = "external",
+          .label = "external " + implementation.label(),
+          .make = [first, make]() -> std::unique_ptr<Stepper> {
+            if (*first) return std::move(*first);
+            return make();
+          },
+          .double_precision = double_precision,
+          .clock = cpu_wall_ms,
+          .not_described = "an outside implementation's end is in its field files and pictures",
+          .external = true};
+}
+
+Candidate gpu_candidate(const SteppedTwin& twin) {
+  return {.make = twin.make_gpu,
+          .make_timed = twin.make_timed_gpu,
+          .nondeterminism = twin.gpu_nondeterminism,
+          .bit_exact = twin.gpu_bit_exact,
+          .not_described = twin.gpu_not_described};
 }
 
 // A run from the start state through the marks: the states there (or only the last), its ledger.
@@ -160,25 +228,41 @@ void keep_worst(ShadowWorst& worst, const Distance& d, const ShadowBound& bound,
   }
 }
 
-// What the GPU half measures: its run, its distance from ref<double> at each mark (per field), the
-// worst shadow steps per field (one iteration and shadow_length).
+// What the candidate's half measures: its run, its distance from ref<double> at each mark (per
+// field), the worst shadow steps per field (one iteration and shadow_length).
 struct GpuRun {
   BackendRun run;
   std::vector<std::vector<double>> from_double;  // [mark][field]
   std::vector<ShadowWorst> one, multi;
 };
 
-// From ref<float>'s state at each checkpoint the GPU and a fresh ref<float> step side by side;
-// the distances are kept, the states dropped.
-void shadow_steps(const SteppedTwin& twin, const BackendRun& float_run, Stepper& gpu, GpuRun& measured) {
+// The bounds of a shadow step for the candidate's precision: the models are linear in the unit
+// roundoff, so a double candidate's are the float model's scaled by u_double/u_float.
+std::vector<ShadowBound> candidate_bounds(const SteppedTwin& twin, const Candidate& candidate, const State& from, int count) {
+  std::vector<ShadowBound> bounds = twin.shadow_bounds(from, count);
+  if (!candidate.double_precision) return bounds;
+  constexpr double double_over_float = 0x1p-53 / 0x1p-24;
+  for (ShadowBound& bound : bounds) {
+    bound.strict *= double_over_float;
+    if (bound.loose) *bound.loose *= double_over_float;
+    bound.model += "; scaled to double's unit roundoff (2^-53 for 2^-24)";
+  }
+  return bounds;
+}
+
+// From the reference's state at each checkpoint (ref<float>'s, or ref<double>'s for a double
+// candidate) the candidate and a fresh copy of that reference step side by side; the distances are
+// kept, the states dropped.
+void shadow_steps(const SteppedTwin& twin, const Candidate& candidate, const BackendRun& reference_run, Stepper& gpu,
+                  GpuRun& measured) {
   const auto starts = shadow_starts(twin.iterations, twin.checkpoints);
-  auto reference = twin.reference_float();
+  auto reference = candidate.double_precision ? twin.reference_double() : twin.reference_float();
   measured.one.assign(twin.fields.size(), {});
   measured.multi.assign(twin.fields.size(), {});
   const auto compare = [&](std::vector<ShadowWorst>& worst, const State& from, int start, int count) {
     const State expected = reference->get_state();
     const State got = gpu.get_state();
-    const std::vector<ShadowBound> bounds = twin.shadow_bounds(from, count);
+    const std::vector<ShadowBound> bounds = candidate_bounds(twin, candidate, from, count);
     if (bounds.size() != twin.fields.size()) {
       throw std::logic_error(fmt::format("{}: {} shadow bounds for {} declared fields", twin.algorithm, bounds.size(),
                                          twin.fields.size()));
@@ -188,7 +272,7 @@ void shadow_steps(const SteppedTwin& twin, const BackendRun& float_run, Stepper&
     }
   };
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    const State& from = float_run.path[k];
+    const State& from = reference_run.path[k];
     const int first = shadow_first(twin, starts[k]);
     const int length = shadow_length(twin, starts[k]);
     for (Stepper* stepper : {reference.get(), &gpu}) {
@@ -201,12 +285,12 @@ void shadow_steps(const SteppedTwin& twin, const BackendRun& float_run, Stepper&
   }
 }
 
-// The GPU through the marks (measured against ref<double> there), a second run in one go
+// The candidate through the marks (measured against ref<double> there), a second run in one go
 // (determinism), the shadow steps, then the timed runs.
-GpuRun run_gpu(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run, const RunOptions& options,
-               CaseResult& result) {
-  report_stage(options, "gpu");
-  auto stepper = twin.make_gpu();
+GpuRun run_candidate(const SteppedTwin& twin, const Candidate& candidate, const BackendRun& truth,
+                     const BackendRun& float_run, const RunOptions& options, CaseResult& result) {
+  report_stage(options, candidate.backend);
+  auto stepper = candidate.make();
   GpuRun measured;
   measured.run = walk(*stepper, twin, false, [&](std::size_t i, const State& state) {
     std::vector<double> distances;
@@ -214,41 +298,44 @@ GpuRun run_gpu(const SteppedTwin& twin, const BackendRun& truth, const BackendRu
     measured.from_double.push_back(std::move(distances));
   });
   stepper->set_state(twin.initial, 0);
-  const double one_go_ms = gpu_wall_ms([&] { stepper->update(twin.iterations); });
+  const double one_go_ms = candidate.clock([&] { stepper->update(twin.iterations); });
   const auto differing = static_cast<double>(differing_values(measured.run.final(), stepper->get_state()));
-  if (!twin.gpu_nondeterminism.empty()) {
+  const std::string determinism = "determinism." + candidate.backend;
+  if (!candidate.nondeterminism.empty()) {
     result.checks.push_back(not_applicable_check(
-        "determinism.gpu", fmt::format("{} ({} values differ between two runs)", twin.gpu_nondeterminism, differing)));
+        determinism, fmt::format("{} ({} values differ between two runs)", candidate.nondeterminism, differing)));
   } else {
     result.checks.push_back(bounded_check(
-        "determinism.gpu", differing, 0.0, std::nullopt,
-        "values of any field whose bits differ between two GPU runs of the same start state (the first stepped "
-        "through the checkpoints, the second in one go)"));
+        determinism, differing, 0.0, std::nullopt,
+        fmt::format("values of any field whose bits differ between two {} runs of the same start state (the first "
+                    "stepped through the checkpoints, the second in one go)",
+                    candidate.label)));
   }
-  report_stage(options, "gpu shadow steps");
-  shadow_steps(twin, float_run, *stepper, measured);
-  if (twin.time_walks && !twin.make_timed_gpu) {
+  report_stage(options, candidate.backend + " shadow steps");
+  shadow_steps(twin, candidate, candidate.double_precision ? truth : float_run, *stepper, measured);
+  if (twin.time_walks && !candidate.make_timed) {
     result.timings.gpu_ms = one_go_ms;
     result.timings.gpu_reps = 1;
     return measured;
   }
   const int reps = twin.time_walks ? 1 : options.gpu_reps;
   if (reps == 0) return measured;
-  auto timed = twin.make_timed_gpu ? twin.make_timed_gpu() : std::move(stepper);
+  auto timed = candidate.make_timed ? candidate.make_timed() : std::move(stepper);
   timed->set_state(twin.initial, 0);
   if (!twin.time_walks) timed->update(twin.iterations);  // warm-up
-  result.timings.gpu_ms = timed_runs(*timed, twin, reps, gpu_wall_ms);
+  result.timings.gpu_ms = timed_runs(*timed, twin, reps, candidate.clock);
   result.timings.gpu_reps = reps;
   return measured;
 }
 
-Check shadow_check(const std::string& name, const ShadowWorst& worst, const std::string& unit, const std::string& from) {
+Check shadow_check(const std::string& name, const ShadowWorst& worst, const std::string& unit, const std::string& from,
+                   const Candidate& candidate) {
   const std::string exact = worst.differing == 0 ? "bit for bit at every checkpoint; "
                                                  : fmt::format("{} values differ in some bit; ", worst.differing);
   const std::string detail = fmt::format(
-      "{}{}, {} iteration(s) beside it: max |gpu - ref<float>| in {}, worst against its bound at the checkpoint after "
+      "{}{}, {} iteration(s) beside it: max |{} - {}| in {}, worst against its bound at the checkpoint after "
       "iteration {}; {}",
-      exact, from, worst.count, unit, worst.checkpoint, worst.bound.model);
+      exact, from, worst.count, candidate.backend, candidate.reference_label(), unit, worst.checkpoint, worst.bound.model);
   if (!worst.bound.graded) {
     return informative_check(name, worst.distance,
                              detail + fmt::format("; the model's bound there, {:.3g}, is too wide to grade", worst.bound.strict));
@@ -259,15 +346,17 @@ Check shadow_check(const std::string& name, const ShadowWorst& worst, const std:
                         worst.bound.tellable_share, detail);
 }
 
-void add_shadow_checks(const SteppedTwin& twin, const GpuRun& gpu, CaseResult& result) {
+void add_shadow_checks(const SteppedTwin& twin, const Candidate& candidate, const GpuRun& gpu, CaseResult& result) {
   const auto starts = shadow_starts(twin.iterations, twin.checkpoints);
-  const std::string from = fmt::format("GPU loaded with ref<float>'s state at {} checkpoints (after iterations {})",
-                                       starts.size(), fmt::join(starts, ", "));
+  const std::string from = fmt::format("{} loaded with {}'s state at {} checkpoints (after iterations {})",
+                                       candidate.label, candidate.reference_label(), starts.size(), fmt::join(starts, ", "));
   for (std::size_t f = 0; f < twin.fields.size(); ++f) {
     const FieldDecl& field = twin.fields[f];
-    result.checks.push_back(shadow_check(fmt::format("parity.shadow.{}.gpu_vs_float", field.name), gpu.one[f], field.unit, from));
+    const std::string pair = candidate.backend + "_" + candidate.versus();
     result.checks.push_back(
-        shadow_check(fmt::format("parity.shadow.{}.multi.gpu_vs_float", field.name), gpu.multi[f], field.unit, from));
+        shadow_check(fmt::format("parity.shadow.{}.{}", field.name, pair), gpu.one[f], field.unit, from, candidate));
+    result.checks.push_back(
+        shadow_check(fmt::format("parity.shadow.{}.multi.{}", field.name, pair), gpu.multi[f], field.unit, from, candidate));
   }
 }
 
@@ -293,13 +382,13 @@ const std::string end_of_run_detail =
     "at the end of the run; informative: over a run the method amplifies rounding differences by an amount not known "
     "before it (verdicts: parity.shadow.*)";
 
-void add_end_pair(const SteppedTwin& twin, std::size_t f, const std::string& pair, const State& a, const State& b,
-                  CaseResult& result) {
+void add_end_pair(const SteppedTwin& twin, std::size_t f, const std::string& pair, bool bit_exact, const State& a,
+                  const State& b, CaseResult& result) {
   const FieldDecl& field = twin.fields[f];
   const Distance d = distance(twin, f, a, b);
   const std::string exact = d.differing == 0 ? "bit-exact; " : fmt::format("{} values differ; ", d.differing);
   const std::string name = fmt::format("parity.{}.max_abs.{}", field.name, pair);
-  if (twin.gpu_bit_exact && pair == "gpu_vs_float") {
+  if (bit_exact) {
     result.checks.push_back(bounded_check(
         name, d.max_abs, 0.0, std::nullopt,
         fmt::format("{}max |difference| in {} at the end of the run; a bit-exact twin: bound 0", exact, field.unit)));
@@ -312,8 +401,8 @@ void add_end_pair(const SteppedTwin& twin, std::size_t f, const std::string& pai
 }
 
 // Whole-run distances and how fast the float runs leave ref<double>, field by field, with a plot.
-void add_divergence(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run, const GpuRun* gpu,
-                    const RunOptions& options, CaseResult& result) {
+void add_divergence(const SteppedTwin& twin, const Candidate& candidate, const BackendRun& truth,
+                    const BackendRun& float_run, const GpuRun* gpu, const RunOptions& options, CaseResult& result) {
   constexpr double plotted_zero = 1e-18;
   const auto marks = path_marks(twin);
   SeriesPlot plot{.title = "Distance from ref<double> along the run",
@@ -322,10 +411,10 @@ void add_divergence(const SteppedTwin& twin, const BackendRun& truth, const Back
                   .log_y = true};
   for (std::size_t f = 0; f < twin.fields.size(); ++f) {
     const std::string& name = twin.fields[f].name;
-    add_end_pair(twin, f, "float_vs_double", truth.final(), float_run.final(), result);
+    add_end_pair(twin, f, "float_vs_double", false, truth.final(), float_run.final(), result);
     if (gpu) {
-      add_end_pair(twin, f, "gpu_vs_float", float_run.final(), gpu->run.final(), result);
-      add_end_pair(twin, f, "gpu_vs_double", truth.final(), gpu->run.final(), result);
+      add_end_pair(twin, f, candidate.backend + "_vs_float", candidate.bit_exact, float_run.final(), gpu->run.final(), result);
+      add_end_pair(twin, f, candidate.backend + "_vs_double", false, truth.final(), gpu->run.final(), result);
     }
     // The distance at mark i of a backend, from ref<double>.
     const auto add_series = [&](const std::string& label, const std::string& backend,
@@ -351,16 +440,29 @@ void add_divergence(const SteppedTwin& twin, const BackendRun& truth, const Back
       }
       plot.series.push_back(std::move(series));
     };
-    if (gpu) add_series("GPU", "gpu", [&](std::size_t i) { return gpu->from_double[i][f]; }, false);
+    if (gpu) add_series(candidate.label, candidate.backend, [&](std::size_t i) { return gpu->from_double[i][f]; }, false);
     add_series("ref<float>", "float",
                [&](std::size_t i) { return distance(twin, f, truth.path[i], float_run.path[i]).max_abs; }, true);
   }
   attach_plot({plot}, options, "parity.png",
-              "distance from ref<double> at the checkpoints, each field: GPU (solid), ref<float> (dashed)", result);
+              fmt::format("distance from ref<double> at the checkpoints, each field: {} (solid), ref<float> (dashed)",
+                          candidate.label),
+              result);
 }
 
-void add_ledger_checks(const SteppedTwin& twin, const BackendRun& run, const std::string& backend, CaseResult& result) {
+// `booked`: the references' records, where the algorithm books some beside its state; a run
+// without records of its own (an outside model hands over its state alone) cannot be read by terms
+// that need them, and they are not applicable there.
+void add_ledger_checks(const SteppedTwin& twin, const BackendRun& run, const std::string& backend, CaseResult& result,
+                       const std::vector<LedgerRecord>& booked = {}) {
   for (const LedgerTerm& term : twin.ledger) {
+    if (run.ledger.empty() && !booked.empty()) {
+      result.checks.push_back(not_applicable_check(
+          term.check + "." + backend,
+          fmt::format("{} reads the records the model books beside its state, which {} does not give", term.check,
+                      backend)));
+      continue;
+    }
     Check check = term.evaluate({twin.initial, run.final(), run.ledger, backend});
     check.name = term.check + "." + backend;
     result.checks.push_back(std::move(check));
@@ -373,8 +475,9 @@ void add_artifact(CaseResult& result, const std::string& file, const std::string
 
 // The shown field before and after, the change and the GPU's difference from ref<float>, on the
 // input's colour scale; every other field at the end of ref<double>'s run.
-void write_pictures(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run,
-                    const BackendRun* gpu, const std::filesystem::path& folder, CaseResult& result) {
+void write_pictures(const SteppedTwin& twin, const Candidate& candidate, const BackendRun& truth,
+                    const BackendRun& float_run, const BackendRun* gpu, const std::filesystem::path& folder,
+                    CaseResult& result) {
   const std::size_t shown = twin.shown_field;
   const std::string& unit = twin.fields[shown].unit;
   const Grid<double> before = component_grid(twin.fields, twin.initial, shown, 0);
@@ -389,12 +492,14 @@ void write_pictures(const SteppedTwin& twin, const BackendRun& truth, const Back
                fmt::format("after - before, CPU (red gain, blue loss; ±{:.3g} {})", change.scale_used, unit));
   if (gpu) {
     const Grid<double> gpu_after = component_grid(twin.fields, gpu->final(), shown, 0);
-    write_height_image(gpu_after, totals.low, totals.high, folder / "after_gpu.png", exaggeration);
-    add_artifact(result, "after_gpu.png", "after, GPU");
+    const std::string after_file = fmt::format("after_{}.png", candidate.backend);
+    write_height_image(gpu_after, totals.low, totals.high, folder / after_file, exaggeration);
+    add_artifact(result, after_file, "after, " + candidate.label);
+    const std::string difference_file = fmt::format("{}_vs_float.png", candidate.backend);
     const auto disagreement = write_difference_image(component_grid(twin.fields, float_run.final(), shown, 0), gpu_after,
-                                                     folder / "gpu_vs_float.png");
-    add_artifact(result, "gpu_vs_float.png",
-                 fmt::format("GPU - reference (float) (±{:.3g} {})", disagreement.scale_used, unit));
+                                                     folder / difference_file);
+    add_artifact(result, difference_file,
+                 fmt::format("{} - reference (float) (±{:.3g} {})", candidate.label, disagreement.scale_used, unit));
   }
   for (std::size_t f = 0; f < twin.fields.size(); ++f) {
     if (f == shown) continue;
@@ -425,30 +530,30 @@ void write_fields(const SteppedTwin& twin, const State& state, const std::string
   }
 }
 
-void write_artifacts(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run,
-                     const BackendRun* gpu, const RunOptions& options, CaseResult& result) {
+void write_artifacts(const SteppedTwin& twin, const Candidate& candidate, const BackendRun& truth,
+                     const BackendRun& float_run, const BackendRun* gpu, const RunOptions& options, CaseResult& result) {
   if (options.report_dir.empty()) return;
   report_stage(options, "pictures");
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
-  if (options.pictures) write_pictures(twin, truth, float_run, gpu, folder, result);
+  if (options.pictures) write_pictures(twin, candidate, truth, float_run, gpu, folder, result);
   write_fields(twin, twin.initial, "input", "the start state", options, result);
   write_fields(twin, truth.final(), "cpu", "after the run, ref<double>", options, result);
   write_fields(twin, float_run.final(), "cpu_float", "after the run, ref<float>", options, result);
-  if (gpu) write_fields(twin, gpu->final(), "gpu", "after the run, GPU", options, result);
+  if (gpu) write_fields(twin, gpu->final(), candidate.backend, "after the run, " + candidate.label, options, result);
 }
 
-void add_descriptors(const SteppedTwin& twin, const BackendRun& truth, const BackendRun& float_run,
-                     const BackendRun* gpu, const nlohmann::json& expect, const RunOptions& options,
-                     CaseResult& result) {
+void add_descriptors(const SteppedTwin& twin, const Candidate& candidate, const BackendRun& truth,
+                     const BackendRun& float_run, const BackendRun* gpu, const nlohmann::json& expect,
+                     const RunOptions& options, CaseResult& result) {
   if (!case_describes_terrain(result) || !options.descriptors) return;
   report_stage(options, "terrain descriptors");
   const std::size_t shown = twin.shown_field;
   const Grid<double> input = component_grid(twin.fields, twin.initial, shown, 0);
   const Grid<double> cpu = component_grid(twin.fields, truth.final(), shown, 0);
   const Grid<double> cpu_float = component_grid(twin.fields, float_run.final(), shown, 0);
-  const bool described = twin.gpu_not_described.empty();
-  if (!described) result.notes.push_back("terrain descriptors of the references alone: " + twin.gpu_not_described);
+  const bool described = candidate.not_described.empty();
+  if (!described) result.notes.push_back("terrain descriptors of the references alone: " + candidate.not_described);
   const std::optional<Grid<double>> gpu_terrain =
       gpu && described ? std::optional<Grid<double>>(component_grid(twin.fields, gpu->final(), shown, 0)) : std::nullopt;
   add_case_descriptors({.input = &input,
@@ -516,15 +621,16 @@ void run_stepped_case(const SteppedTwin& given, const nlohmann::json& expect, co
   const BackendRun truth = run_double(twin, options, result);
   report_stage(options, "cpu reference (float)");
   const BackendRun float_run = walk(*twin.reference_float(), twin, true);
+  const Candidate candidate = options.implementation ? external_candidate(twin, options, result) : gpu_candidate(twin);
   std::optional<GpuRun> gpu;
   std::string unavailable = options.gpu_unavailable_reason;
-  if (options.gpu_available) {
+  if (options.gpu_available || candidate.external) {
     try {
-      gpu = run_gpu(twin, truth, float_run, options, result);
+      gpu = run_candidate(twin, candidate, truth, float_run, options, result);
     } catch (const std::exception& error) {
-      result.error = fmt::format("GPU twin failed: {}", error.what());
+      result.error = fmt::format("{} failed: {}", candidate.external ? candidate.label : "GPU twin", error.what());
       unavailable = result.error;
-      std::erase_if(result.checks, [](const Check& check) { return check.name == "determinism.gpu"; });
+      std::erase_if(result.checks, [&](const Check& check) { return check.name == "determinism." + candidate.backend; });
     }
   }
   const BackendRun* gpu_run = gpu ? &gpu->run : nullptr;
@@ -533,22 +639,22 @@ void run_stepped_case(const SteppedTwin& given, const nlohmann::json& expect, co
   const std::size_t shown = twin.shown_field;
   add_field_spec_checks(expect, component_grid(twin.fields, truth.final(), shown, 0), "cpu", result);
   if (gpu) {
-    add_ledger_checks(twin, gpu->run, "gpu", result);
-    add_shadow_checks(twin, *gpu, result);
-    add_field_spec_checks(expect, component_grid(twin.fields, gpu->run.final(), shown, 0), "gpu", result);
-  } else {
+    add_ledger_checks(twin, gpu->run, candidate.backend, result, truth.ledger);
+    add_shadow_checks(twin, candidate, *gpu, result);
+    add_field_spec_checks(expect, component_grid(twin.fields, gpu->run.final(), shown, 0), candidate.backend, result);
+  } else if (!candidate.external) {
     for (const auto& name : gpu_check_names(twin, expect)) result.checks.push_back(skipped_check(name, unavailable));
   }
-  add_divergence(twin, truth, float_run, gpu ? &*gpu : nullptr, options, result);
+  add_divergence(twin, candidate, truth, float_run, gpu ? &*gpu : nullptr, options, result);
   if (twin.finish) {
     std::vector<BackendEnd> ends = {{"cpu", truth.final(), truth.ledger}, {"cpu_float", float_run.final(), float_run.ledger}};
-    if (gpu) ends.push_back({"gpu", gpu->run.final(), gpu->run.ledger});
+    if (gpu && !candidate.external) ends.push_back({"gpu", gpu->run.final(), gpu->run.ledger});
     twin.finish(ends, expect, options, result);
   }
-  write_artifacts(twin, truth, float_run, gpu_run, options, result);
+  write_artifacts(twin, candidate, truth, float_run, gpu_run, options, result);
   RunOptions described = options;
   described.gpu_unavailable_reason = unavailable;
-  add_descriptors(twin, truth, float_run, gpu_run, expect, described, result);
+  add_descriptors(twin, candidate, truth, float_run, gpu_run, expect, described, result);
 }
 
 }  // namespace gt

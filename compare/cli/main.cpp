@@ -294,6 +294,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> extra_cases;
   run->add_option("--cases", extra_cases, "more case files (JSON arrays of cases) or folders of them, beside the bundled ones");
   run->add_option("--case-name", ad_hoc.name, "ad-hoc case: its name (a sweep's worker)")->group("");
+  std::string implementation;
+  run->add_option("--implementation", implementation,
+                  "grade your own implementation where the GPU twin stands: a shared library with the C Basic Model "
+                  "Interface (include/groundtruth/bmi.h), LIBRARY[:REGISTER_FUNCTION] (default register_bmi)");
   bool quick = false;
   run->add_flag("--quick", quick,
                 "the quick tier: a pre-commit answer on every algorithm family in about two minutes (with "
@@ -526,6 +530,7 @@ int main(int argc, char** argv) {
         throw gt::InputError("--set applies to an ad-hoc run: give --algorithm too");
       }
       if (!ad_hoc.algorithm.empty()) options.ad_hoc = ad_hoc;
+      if (!implementation.empty()) options.implementation = gt::parse_implementation(implementation);
       if (options.patterns.empty() && !options.ad_hoc) {
         throw gt::InputError("nothing to run: name case patterns (see `groundtruth list`) or --algorithm with --input");
       }
