@@ -1,0 +1,158 @@
+// An outside implementation graded where the GPU twin stands (`run --implementation`): the C BMI
+// example of examples/thermal_bmi/ passes on real data, the same code with its seeded bug fails the
+// shadow step, and models that break the interface's rules are refused before anything runs (exit
+// 2, naming what is wrong) or, when they crash or hang inside a step, end their case alone.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/cli_report.hpp"
+#include "tests/support/temporary_folder.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+using gt::testing::report_of;
+using gt::testing::run_groundtruth;
+
+const std::string examples = GT_BINARY_DIR "/examples/";
+const std::string hostile = GT_BINARY_DIR "/tests/libhostile_bmi.so";
+const std::string volcano = GT_DATASET_DIR "/real/volcano.json";
+
+const nlohmann::json* find_check(const nlohmann::json& report_case, const std::string& name) {
+  for (const auto& check : report_case["checks"]) {
+    if (check["name"] == name) return &check;
+  }
+  return nullptr;
+}
+
+// The README's command, as written there.
+std::vector<std::string> volcano_run(const std::string& implementation, const fs::path& out) {
+  return {"run", "--algorithm", "erosion.thermal", "--input", volcano, "--implementation", implementation,
+          "--out", out.string()};
+}
+
+TEST(ExternalCli, TheExampleLibraryPassesOnTheVolcano) {
+  gt::testing::TemporaryFolder folder;
+  const auto out = folder / "out";
+  const auto run = run_groundtruth(volcano_run(examples + "libthermal_bmi.so:register_bmi_thermal", out), folder.path());
+  ASSERT_EQ(run.status, 0) << run;
+  const auto report = report_of(out);
+  ASSERT_EQ(report["cases"].size(), 1u);
+  const auto& graded = report["cases"][0];
+  EXPECT_EQ(graded["status"], "pass") << graded.dump(2);
+  for (const char* name : {"parity.shadow.terrain.external_vs_float", "parity.shadow.terrain.multi.external_vs_float",
+                           "determinism.external", "mass.relative_drift.external"}) {
+    const auto* check = find_check(graded, name);
+    ASSERT_NE(check, nullptr) << name;
+    EXPECT_EQ((*check)["status"], "pass") << check->dump();
+  }
+  // The GPU twin did not run: the outside model stood in its place.
+  EXPECT_EQ(find_check(graded, "parity.shadow.terrain.gpu_vs_float"), nullptr);
+  const fs::path case_folder = out / graded["name"].get<std::string>();
+  for (const char* file : {"bmi_config.txt", "terrain_external.npy", "after_external.png", "external_vs_float.png"}) {
+    EXPECT_TRUE(fs::is_regular_file(case_folder / file)) << file;
+  }
+  EXPECT_THAT(gt::testing::read_text(case_folder / "bmi_config.txt"), HasSubstr("talus_angle 45"));
+}
+
+// Other neighbourhoods, real DEMs and a synthetic cone, in workers two at a time: each passes.
+TEST(ExternalCli, TheExampleLibraryPassesTheBundledThermalCasesItSupports) {
+  gt::testing::TemporaryFolder folder;
+  const auto out = folder / "out";
+  const auto run = run_groundtruth({"run", "erosion.thermal.cardinal.*", "erosion.thermal.diagonal.*",
+                                    "erosion.thermal.alternating.*", "-j", "2", "--implementation",
+                                    examples + "libthermal_bmi.so:register_bmi_thermal", "--out", out.string()},
+                                   folder.path());
+  ASSERT_EQ(run.status, 0) << run;
+  const auto report = report_of(out);
+  EXPECT_GE(report["cases"].size(), 8u);
+  for (const auto& graded : report["cases"]) {
+    SCOPED_TRACE(graded["name"].get<std::string>());
+    const auto* shadow = find_check(graded, "parity.shadow.terrain.external_vs_float");
+    ASSERT_NE(shadow, nullptr);
+    EXPECT_EQ((*shadow)["status"], "pass") << shadow->dump();
+  }
+}
+
+// The diagonal pipes without √2: caught by the one-iteration shadow step at an odd (diagonal)
+// checkpoint, while its ledger stays balanced (the bug moves material, it does not lose it).
+TEST(ExternalCli, TheSeededBugFailsTheShadowStep) {
+  gt::testing::TemporaryFolder folder;
+  const auto out = folder / "out";
+  const auto run =
+      run_groundtruth(volcano_run(examples + "libthermal_bmi_seeded_bug.so:register_bmi_thermal", out), folder.path());
+  ASSERT_EQ(run.status, 1) << run;
+  const auto report = report_of(out);
+  const auto& graded = report["cases"][0];
+  EXPECT_EQ(graded["status"], "fail");
+  const auto* shadow = find_check(graded, "parity.shadow.terrain.external_vs_float");
+  ASSERT_NE(shadow, nullptr);
+  EXPECT_EQ((*shadow)["status"], "fail") << shadow->dump();
+  const auto* ledger = find_check(graded, "mass.relative_drift.external");
+  ASSERT_NE(ledger, nullptr);
+  EXPECT_EQ((*ledger)["status"], "pass") << ledger->dump();
+}
+
+struct Refusal {
+  std::string implementation;
+  std::string algorithm;
+  std::vector<std::string> said;  // each must be in the message
+};
+
+TEST(ExternalCli, ModelsThatBreakTheInterfaceAreRefusedBeforeAnythingRuns) {
+  const std::vector<Refusal> refusals = {
+      {hostile + ":register_wrong_name", "erosion.thermal", {"'terrain' (m, terrain height) is not among its output", "height"}},
+      {hostile + ":register_wrong_units", "erosion.thermal", {"'terrain': units 'ft', expected 'm'"}},
+      {hostile + ":register_wrong_shape", "erosion.thermal", {"'terrain': grid 0 has shape", "expected [", "(rows, columns)"}},
+      {hostile + ":register_no_getter", "erosion.thermal", {"left these BMI functions NULL", "get_value"}},
+      {hostile + ":register_crash_in_initialize", "erosion.thermal", {"crashed", "signal 11"}},
+      {hostile + ":no_such_function", "erosion.thermal", {"no function 'no_such_function'"}},
+      {volcano, "erosion.thermal", {"not a shared library"}},
+      {GT_BINARY_DIR "/nothing_here.so", "erosion.thermal", {"no such file"}},
+      {examples + "libthermal_bmi.so:register_bmi_thermal", "noise.fbm", {"is not one"}},
+  };
+  for (const auto& refusal : refusals) {
+    SCOPED_TRACE(refusal.implementation + " " + refusal.algorithm);
+    gt::testing::TemporaryFolder folder;
+    const auto out = folder / "out";
+    const auto run = run_groundtruth({"run", "--algorithm", refusal.algorithm, "--input", volcano,
+                                      "--implementation", refusal.implementation, "--out", out.string()},
+                                     folder.path());
+    EXPECT_EQ(run.status, 2) << run;
+    for (const auto& words : refusal.said) EXPECT_THAT(run.err, HasSubstr(words)) << run;
+    EXPECT_FALSE(fs::exists(out)) << "a refused run wrote its report folder";
+  }
+}
+
+// A crash inside update() ends each case as `error` naming the signal, and the run goes on to the
+// other case and writes its report; a step that never returns ends at --case-timeout (8 s: a
+// case of the correct library takes 2 s on CI's machine).
+TEST(ExternalCli, ACrashOrHangInsideAStepEndsOnlyItsCase) {
+  const std::vector<std::pair<std::string, std::string>> faults = {{"register_crash", "signal"},
+                                                                   {"register_hang", "timeout"}};
+  for (const auto& [function, said] : faults) {
+    SCOPED_TRACE(function);
+    gt::testing::TemporaryFolder folder;
+    const auto out = folder / "out";
+    const auto run = run_groundtruth({"run", "erosion.thermal.cardinal.volcano", "erosion.thermal.diagonal.volcano",
+                                      "--implementation", hostile + ":" + function, "-j", "2", "--case-timeout", "8", "--out",
+                                      out.string()},
+                                     folder.path());
+    EXPECT_EQ(run.status, 1) << run;
+    const auto report = report_of(out);
+    ASSERT_EQ(report["cases"].size(), 2u);
+    for (const auto& ended : report["cases"]) {
+      EXPECT_EQ(ended["status"], "error") << ended.dump(2);
+      EXPECT_THAT(ended["error"].get<std::string>(), HasSubstr(said));
+    }
+  }
+}
+
+}  // namespace
