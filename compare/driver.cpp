@@ -25,6 +25,7 @@
 #include "compare/expectations.hpp"
 #include "compare/inputs.hpp"
 #include "compare/external/bmi_preflight.hpp"
+#include "compare/external/c_bmi_model.hpp"
 #include "compare/isolated_cases.hpp"
 #include "compare/case_seconds.hpp"
 #include "compare/progress.hpp"
@@ -375,8 +376,9 @@ CaseResult::Attempt attempt_of(const CaseResult& result) {
   return {result.status, result.error, failing_checks(result)};
 }
 
-// --implementation: every selected case is a stepped one, and (in the parent) the outside model
-// conforms to each case's declared state, checked in a child process before anything runs.
+// An outside model (--implementation, or the Python module's): every selected case is a stepped
+// one, and (for a library, in the parent) the model conforms to each case's declared state, checked
+// in a child process before anything runs. A Python model is checked when its case makes it.
 void check_implementation(const std::vector<Job>& jobs, const DriverOptions& options) {
   for (const Job& job : jobs) {
     const auto* twin = std::get_if<SteppedTwin>(&job.prepared.kind);
@@ -387,8 +389,10 @@ void check_implementation(const std::vector<Job>& jobs, const DriverOptions& opt
     }
     if (options.worker) continue;
     constexpr double preflight_seconds = 60.0;
-    preflight_implementation(*options.implementation, twin->algorithm, twin->fields, twin->initial.grid, job.resolved,
-                             job.spec.name, std::min(preflight_seconds, options.case_timeout.value_or(preflight_seconds)));
+    const bool library = options.implementation.has_value();
+    preflight_implementation(library ? c_bmi_external_model(*options.implementation) : *options.external_model,
+                             twin->algorithm, twin->fields, twin->initial.grid, job.resolved, job.spec.name,
+                             std::min(preflight_seconds, options.case_timeout.value_or(preflight_seconds)), library);
   }
 }
 
@@ -405,7 +409,8 @@ class CaseRunner {
     run_options_.pictures = options.pictures;
     run_options_.descriptors = options.descriptors;
     run_options_.report_dir = folder;
-    run_options_.implementation = options.implementation;
+    run_options_.external =
+        options.implementation ? std::optional(c_bmi_external_model(*options.implementation)) : options.external_model;
     if (isolated()) {
       isolation_.parallel = options.parallel;
       isolation_.timeout_seconds = options.case_timeout.value_or(default_case_timeout_seconds);
@@ -598,7 +603,7 @@ int run_driver(const DriverOptions& options) {
   report.scope = tier_scope(options, suite, selection.size());
   const auto specs = shard_specs(selection, options, baseline, report);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
-  if (options.implementation) check_implementation(jobs, options);
+  if (options.implementation || options.external_model) check_implementation(jobs, options);
   // A worker's parent applies the expectations and makes the retries.
   const auto expectations = options.worker ? std::vector<Expectation>{} : all_expectations(options, suite);
   check_output_folder(options.out);

@@ -10,6 +10,7 @@
 
 #include "compare/benchmark.hpp"
 #include "compare/cases.hpp"
+#include "compare/external/bmi_model.hpp"
 #include "compare/external/implementation.hpp"
 #include "compare/mutation.hpp"
 #include "compare/output_folder.hpp"
@@ -82,6 +83,9 @@ struct DriverOptions {
   // --implementation: an outside model graded where the GPU twin stands (compare/external/); its
   // cases run in workers.
   std::optional<ExternalImplementation> implementation;
+  // An outside model made in this process (the Python module's groundtruth.check): run in-process,
+  // never in workers (it lives in the caller's interpreter).
+  std::optional<ExternalModel> external_model;
 };
 
 // `groundtruth mutants`: runs the mutation into `out` (atomically, like a report), writes

@@ -21,7 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/checks/error_model.hpp"
-#include "compare/external/implementation.hpp"
+#include "compare/external/bmi_model.hpp"
 #include "compare/progress.hpp"
 #include "compare/result.hpp"
 #include "core/grid.hpp"
@@ -62,8 +62,9 @@ struct RunOptions {
   // pictures of the fields and compute no terrain descriptors; checks and field files stay.
   bool pictures = true;
   bool descriptors = true;
-  // An outside implementation graded where the GPU twin stands (stepped cases; --implementation).
-  std::optional<ExternalImplementation> implementation;
+  // An outside implementation graded where the GPU twin stands (stepped cases; --implementation,
+  // or a Python model): compare/external/bmi_model.hpp.
+  std::optional<ExternalModel> external;
 };
 
 // The "expect" keys run_field_twin reads (spec vectors of the field: expected cells, their total, a

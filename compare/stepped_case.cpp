@@ -96,10 +96,10 @@ std::filesystem::path external_config_path(const RunOptions& options, const Case
   return temporary_path("groundtruth-bmi-config", ".txt");
 }
 
-// The outside implementation of the run's --implementation, with the case's config written for it.
-// Its precision is read off a first instance, which the walk then uses.
+// The run's outside model, with the case's config written for it. Its precision is read off a first
+// instance, which the walk then uses.
 Candidate external_candidate(const SteppedTwin& twin, const RunOptions& options, CaseResult& result) {
-  const ExternalImplementation implementation = *options.implementation;
+  const ExternalModel external = *options.external;
   const std::filesystem::path config = external_config_path(options, result);
   write_bmi_config(config, twin.algorithm, result.name, twin.initial.grid, result.params);
   if (!options.report_dir.empty()) {
@@ -107,15 +107,14 @@ Candidate external_candidate(const SteppedTwin& twin, const RunOptions& options,
                                 "the config file the outside model was initialised with"});
   }
   const auto make = [=, fields = twin.fields, grid = twin.initial.grid, algorithm = twin.algorithm] {
-    return std::make_unique<BmiStepper>(implementation, config, fields, grid, algorithm);
+    return std::make_unique<BmiStepper>(external.make(config), fields, grid, algorithm);
   };
   auto first = std::make_shared<std::unique_ptr<BmiStepper>>(make());
   const bool double_precision = (*first)->double_precision();
-  result.notes.push_back(fmt::format("graded: {} ({}, {}), standing where the GPU twin stands; its fields are {}",
-                                     implementation.label(), implementation.library.string(),
-                                     implementation.register_symbol, double_precision ? "double" : "float"));
+  result.notes.push_back(fmt::format("graded: {} ({}), standing where the GPU twin stands; its fields are {}",
+                                     external.label, external.origin, double_precision ? "double" : "float"));
   return {.backend = "external",
-          .label = "external " + implementation.label(),
+          .label = "external " + external.label,
           .make = [first, make]() -> std::unique_ptr<Stepper> {
             if (*first) return std::move(*first);
             return make();
@@ -621,7 +620,7 @@ void run_stepped_case(const SteppedTwin& given, const nlohmann::json& expect, co
   const BackendRun truth = run_double(twin, options, result);
   report_stage(options, "cpu reference (float)");
   const BackendRun float_run = walk(*twin.reference_float(), twin, true);
-  const Candidate candidate = options.implementation ? external_candidate(twin, options, result) : gpu_candidate(twin);
+  const Candidate candidate = options.external ? external_candidate(twin, options, result) : gpu_candidate(twin);
   std::optional<GpuRun> gpu;
   std::string unavailable = options.gpu_unavailable_reason;
   if (options.gpu_available || candidate.external) {

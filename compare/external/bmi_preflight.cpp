@@ -23,13 +23,13 @@ namespace {
 // What the child says back: its message, at most this many bytes.
 constexpr std::size_t most_message_bytes = 64 * 1024;
 
-[[noreturn]] void child(int pipe_out, const ExternalImplementation& implementation, const std::string& algorithm,
+[[noreturn]] void child(int pipe_out, const ExternalModel& external, const std::string& algorithm,
                         const StateDecl& decl, const StateGrid& grid, const std::filesystem::path& config) {
   std::string message;
   int status = 0;
   try {
-    BmiModel model(implementation, config);
-    check_bmi_conformance(model, decl, grid, algorithm);
+    const auto model = external.make(config);
+    check_bmi_conformance(*model, decl, grid, algorithm);
   } catch (const std::exception& error) {
     message = error.what();
     status = 2;
@@ -60,19 +60,28 @@ bool read_message(int pipe_in, std::chrono::steady_clock::time_point deadline, s
 
 }  // namespace
 
-void preflight_implementation(const ExternalImplementation& implementation, const std::string& algorithm,
+void preflight_implementation(const ExternalModel& external, const std::string& algorithm,
                               const StateDecl& decl, const StateGrid& grid, const nlohmann::json& params,
-                              const std::string& case_name, double timeout_seconds) {
+                              const std::string& case_name, double timeout_seconds, bool isolated) {
   const TemporaryFiles scratch({temporary_path("groundtruth-bmi-preflight", ".txt")});
   const std::filesystem::path config = scratch.paths.front();
   write_bmi_config(config, algorithm, case_name, grid, params);
+  if (!isolated) {
+    try {
+      const auto model = external.make(config);
+      check_bmi_conformance(*model, decl, grid, algorithm);
+    } catch (const std::exception& error) {
+      throw InputError(fmt::format("case {}: {}", case_name, error.what()));
+    }
+    return;
+  }
   int channel[2];
   if (pipe(channel) != 0) throw std::runtime_error(fmt::format("pipe: {}", std::strerror(errno)));
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error(fmt::format("fork: {}", std::strerror(errno)));
   if (pid == 0) {
     close(channel[0]);
-    child(channel[1], implementation, algorithm, decl, grid, config);
+    child(channel[1], external, algorithm, decl, grid, config);
   }
   close(channel[1]);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_seconds);
@@ -82,7 +91,7 @@ void preflight_implementation(const ExternalImplementation& implementation, cons
   if (!ended) kill(pid, SIGKILL);
   int status = 0;
   waitpid(pid, &status, 0);
-  const std::string who = fmt::format("case {}: {}", case_name, implementation.label());
+  const std::string who = fmt::format("case {}: {}", case_name, external.label);
   if (!ended) {
     throw InputError(fmt::format("{}: registering, initialising and describing the model took over {} s (a hang?); "
                                  "it was stopped",

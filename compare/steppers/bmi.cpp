@@ -31,32 +31,31 @@ std::vector<double> unpack(const std::vector<std::byte>& bytes, std::size_t coun
 
 }  // namespace
 
-BmiStepper::BmiStepper(const ExternalImplementation& implementation, const std::filesystem::path& config,
-                       StateDecl decl, StateGrid grid, const std::string& algorithm)
-    : model_(implementation, config), decl_(std::move(decl)), grid_(std::move(grid)) {
-  layout_ = check_bmi_conformance(model_, decl_, grid_, algorithm);
+BmiStepper::BmiStepper(std::unique_ptr<BmiModel> model, StateDecl decl, StateGrid grid, const std::string& algorithm)
+    : model_(std::move(model)), decl_(std::move(decl)), grid_(std::move(grid)) {
+  layout_ = check_bmi_conformance(*model_, decl_, grid_, algorithm);
 }
 
 void BmiStepper::set_state(const State& state, int done) {
-  check_state_shape(decl_, state, model_.label() + " state");
+  check_state_shape(decl_, state, model_->label() + " state");
   for (std::size_t f = 0; f < decl_.size(); ++f) {
     if (layout_.double_precision) {
       pack<double>(state.fields[f], grid_, decl_[f].components, buffer_);
     } else {
       pack<float>(state.fields[f], grid_, decl_[f].components, buffer_);
     }
-    model_.set_value(decl_[f].name, buffer_);
+    model_->set_value(decl_[f].name, buffer_);
   }
   if (layout_.takes_iteration) {
     const std::int32_t iteration = done;
     buffer_.resize(sizeof iteration);
     std::memcpy(buffer_.data(), &iteration, sizeof iteration);
-    model_.set_value(bmi_iteration_variable, buffer_);
+    model_->set_value(bmi_iteration_variable, buffer_);
   }
 }
 
 void BmiStepper::update(int count) {
-  for (int k = 0; k < count; ++k) model_.update();
+  for (int k = 0; k < count; ++k) model_->update();
 }
 
 State BmiStepper::get_state() {
@@ -65,7 +64,7 @@ State BmiStepper::get_state() {
   for (const FieldDecl& field : decl_) {
     const std::size_t count = grid_.cells() * static_cast<std::size_t>(field.components);
     buffer_.assign(count * item, std::byte{0});
-    model_.get_value(field.name, buffer_);
+    model_->get_value(field.name, buffer_);
     state.fields.push_back(layout_.double_precision ? unpack<double>(buffer_, count) : unpack<float>(buffer_, count));
   }
   return state;

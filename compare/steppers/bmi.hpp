@@ -1,8 +1,8 @@
 // An outside implementation as a stepper: its model behind the C Basic Model Interface
 // (include/groundtruth/bmi.h), loaded with the algorithm's declared state and stepped by update().
 //
-// Inputs:  the implementation (library and registration function), the case's BMI config file
-//          (compare/external/bmi_config.hpp), the declared state and its grid.
+// Inputs:  the model (compare/external/bmi_model.hpp: a C library's, a Python object's), already
+//          initialised with the case's config file, the declared state and its grid.
 // Outputs: a Stepper (compare/stepper.hpp): set_state writes every field with set_value (and the
 //          iterations behind it to "iteration" where the model takes it), update(n) calls update()
 //          n times, get_state reads every field with get_value, widened to double.
@@ -27,15 +27,14 @@ namespace gt {
 
 class BmiStepper : public Stepper {
  public:
-  BmiStepper(const ExternalImplementation& implementation, const std::filesystem::path& config, StateDecl decl,
-             StateGrid grid, const std::string& algorithm);
+  BmiStepper(std::unique_ptr<BmiModel> model, StateDecl decl, StateGrid grid, const std::string& algorithm);
   void set_state(const State& state, int done) override;
   void update(int count) override;
   State get_state() override;
   bool double_precision() const { return layout_.double_precision; }
 
  private:
-  BmiModel model_;
+  std::unique_ptr<BmiModel> model_;
   StateDecl decl_;
   StateGrid grid_;
   BmiLayout layout_;

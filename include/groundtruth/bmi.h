@@ -22,7 +22,7 @@
  * Called: initialize, update, finalize, get_output_item_count, get_output_var_names,
  * get_input_item_count, get_input_var_names, get_var_grid, get_var_type, get_var_units,
  * get_var_itemsize, get_var_nbytes, get_grid_rank, get_grid_size, get_grid_shape,
- * get_grid_spacing, get_value, set_value; get_component_name where set. The rest may be NULL.
+ * get_grid_spacing, get_value, set_value. The rest may be NULL.
  */
 #ifndef GROUNDTRUTH_BMI_H
 #define GROUNDTRUTH_BMI_H

@@ -1,5 +1,5 @@
-// The C Basic Model Interface driven from C++; see bmi_model.hpp.
-#include "compare/external/bmi_model.hpp"
+// The C Basic Model Interface driven from C++; see c_bmi_model.hpp.
+#include "compare/external/c_bmi_model.hpp"
 
 #include <dlfcn.h>
 
@@ -71,7 +71,7 @@ ExternalImplementation parse_implementation(const std::string& text) {
   return implementation;
 }
 
-BmiModel::BmiModel(const ExternalImplementation& implementation, const std::filesystem::path& config)
+CBmiModel::CBmiModel(const ExternalImplementation& implementation, const std::filesystem::path& config)
     : label_(implementation.label()), model_(std::make_unique<Bmi>()) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(implementation.library, error)) {
@@ -110,25 +110,18 @@ BmiModel::BmiModel(const ExternalImplementation& implementation, const std::file
   initialised_ = true;
 }
 
-BmiModel::~BmiModel() {
+CBmiModel::~CBmiModel() {
   if (initialised_) model_->finalize(model_.get());
   if (library_ != nullptr) dlclose(library_);
 }
 
-void BmiModel::check(int status, const char* function, const std::string& what) {
+void CBmiModel::check(int status, const char* function, const std::string& what) {
   if (status == BMI_SUCCESS) return;
   throw std::runtime_error(fmt::format("{}: {}({}) returned {} (BMI_FAILURE is {})", label_, function, what, status,
                                        BMI_FAILURE));
 }
 
-std::string BmiModel::component_name() {
-  if (model_->get_component_name == nullptr) return "";
-  std::vector<char> name(BMI_MAX_COMPONENT_NAME, '\0');
-  check(model_->get_component_name(model_.get(), name.data()), "get_component_name");
-  return bounded_string(name, "get_component_name", label_);
-}
-
-std::vector<std::string> BmiModel::names(int (*count_of)(Bmi*, int*), int (*list)(Bmi*, char**), const char* function) {
+std::vector<std::string> CBmiModel::names(int (*count_of)(Bmi*, int*), int (*list)(Bmi*, char**), const char* function) {
   int count = 0;
   check(count_of(model_.get(), &count), function);
   if (count < 0 || count > most_variables) {
@@ -144,15 +137,15 @@ std::vector<std::string> BmiModel::names(int (*count_of)(Bmi*, int*), int (*list
   return names;
 }
 
-std::vector<std::string> BmiModel::output_names() {
+std::vector<std::string> CBmiModel::output_names() {
   return names(model_->get_output_item_count, model_->get_output_var_names, "get_output_var_names");
 }
 
-std::vector<std::string> BmiModel::input_names() {
+std::vector<std::string> CBmiModel::input_names() {
   return names(model_->get_input_item_count, model_->get_input_var_names, "get_input_var_names");
 }
 
-BmiVariable BmiModel::variable(const std::string& name) {
+BmiVariable CBmiModel::variable(const std::string& name) {
   BmiVariable variable{.name = name};
   std::vector<char> text(std::max(BMI_MAX_TYPE_NAME, BMI_MAX_UNITS_NAME), '\0');
   check(model_->get_var_type(model_.get(), name.c_str(), text.data()), "get_var_type", name);
@@ -161,12 +154,14 @@ BmiVariable BmiModel::variable(const std::string& name) {
   check(model_->get_var_units(model_.get(), name.c_str(), text.data()), "get_var_units", name);
   variable.units = bounded_string(text, "get_var_units", label_);
   check(model_->get_var_itemsize(model_.get(), name.c_str(), &variable.itemsize), "get_var_itemsize", name);
-  check(model_->get_var_nbytes(model_.get(), name.c_str(), &variable.nbytes), "get_var_nbytes", name);
+  int nbytes = 0;
+  check(model_->get_var_nbytes(model_.get(), name.c_str(), &nbytes), "get_var_nbytes", name);
+  variable.nbytes = nbytes;
   check(model_->get_var_grid(model_.get(), name.c_str(), &variable.grid), "get_var_grid", name);
   return variable;
 }
 
-BmiGrid BmiModel::grid(int id) {
+BmiGrid CBmiModel::grid(int id) {
   constexpr int most_dimensions = 8;
   BmiGrid grid;
   check(model_->get_grid_rank(model_.get(), id, &grid.rank), "get_grid_rank", std::to_string(id));
@@ -174,7 +169,9 @@ BmiGrid BmiModel::grid(int id) {
     throw std::runtime_error(fmt::format("{}: get_grid_rank({}) says rank {} (1 to {} are read)", label_, id, grid.rank,
                                          most_dimensions));
   }
-  check(model_->get_grid_size(model_.get(), id, &grid.size), "get_grid_size", std::to_string(id));
+  int size = 0;
+  check(model_->get_grid_size(model_.get(), id, &size), "get_grid_size", std::to_string(id));
+  grid.size = size;
   grid.shape.assign(static_cast<std::size_t>(grid.rank), 0);
   grid.spacing.assign(static_cast<std::size_t>(grid.rank), 0.0);
   check(model_->get_grid_shape(model_.get(), id, grid.shape.data()), "get_grid_shape", std::to_string(id));
@@ -182,14 +179,22 @@ BmiGrid BmiModel::grid(int id) {
   return grid;
 }
 
-void BmiModel::update() { check(model_->update(model_.get()), "update"); }
+void CBmiModel::update() { check(model_->update(model_.get()), "update"); }
 
-void BmiModel::get_value(const std::string& name, std::vector<std::byte>& bytes) {
+void CBmiModel::get_value(const std::string& name, std::vector<std::byte>& bytes) {
   check(model_->get_value(model_.get(), name.c_str(), bytes.data()), "get_value", name);
 }
 
-void BmiModel::set_value(const std::string& name, std::vector<std::byte>& bytes) {
+void CBmiModel::set_value(const std::string& name, std::vector<std::byte>& bytes) {
   check(model_->set_value(model_.get(), name.c_str(), bytes.data()), "set_value", name);
+}
+
+ExternalModel c_bmi_external_model(const ExternalImplementation& implementation) {
+  return {.label = implementation.label(),
+          .origin = fmt::format("{}, registered by {}", implementation.library.string(), implementation.register_symbol),
+          .make = [implementation](const std::filesystem::path& config) -> std::unique_ptr<BmiModel> {
+            return std::make_unique<CBmiModel>(implementation, config);
+          }};
 }
 
 }  // namespace gt
