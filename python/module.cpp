@@ -7,11 +7,16 @@
 //                                algorithm_json), as `groundtruth list --json` gives them
 //   algorithm_json(name)         one of them; an unknown name raises InputError listing the known
 //   run_case(...)                one ad-hoc case into a report folder; returns the exit status
-//                                (0: nothing unexpected failed, 1: something did)
+//                                (0: nothing unexpected failed, 1: something did). With `external`
+//                                (a callable returning a model with bmipy's methods) that model is
+//                                graded where the GPU twin stands (python_bmi_model.hpp)
 //   dataset_dir()                the bundled and fetched data sets (datasets/ of the checkout)
+//   ReferenceModel(algorithm, double)  a stepped algorithm's reference behind the BMI
+//                                (compare/external/reference_bmi.hpp); groundtruth.bmi.Reference
+//                                gives it bmipy's method names
 //   InputError                   a ValueError carrying the CLI's message (the CLI's exit 2)
 //
-// The GIL is released while a case runs (nothing in it calls back into Python). The driver makes
+// The GIL is released while a case runs (an outside Python model takes it for each call). The driver makes
 // and ends its own GL context for the case, so nothing GL outlives a call.
 #include <cmath>
 #include <filesystem>
@@ -20,15 +25,18 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include "compare/algorithm.hpp"
 #include "compare/driver.hpp"
+#include "compare/external/reference_bmi.hpp"
 #include "core/errors.hpp"
 #include "core/mutant.hpp"
 #include "gpu/context/context.hpp"
+#include "python_bmi_model.hpp"
 
 namespace py = pybind11;
 
@@ -60,6 +68,8 @@ struct CaseCall {
   std::optional<int> reps;  // timed repetitions of each twin; none: the command line's (3 CPU, 5 GPU)
   std::filesystem::path out;
   std::string command_line;
+  py::object external;         // None, or a callable returning an outside model (bmipy's methods)
+  std::string external_label;  // the name it is shown by
 };
 
 // The command line refuses these in its option parser (--size, --cell-size): the same limits.
@@ -105,6 +115,7 @@ int run_case(const CaseCall& call) {
   options.out = call.out;
   options.dataset_dir = GT_DATASET_DIR;
   options.command_line = call.command_line;
+  if (!call.external.is_none()) options.external_model = gt::python::python_external_model(call.external, call.external_label);
   // A mutant is switched on for the rest of a process (core/mutant.hpp): a Python session goes on
   // after the call, so the switch is put back whatever the run did.
   struct MutantReset {
@@ -126,6 +137,31 @@ PYBIND11_MODULE(_core, module) {
     return list.dump();
   });
   module.def("dataset_dir", [] { return std::filesystem::path(GT_DATASET_DIR); });
+  py::class_<gt::ReferenceBmi>(module, "ReferenceModel")
+      .def(py::init<std::string, bool>(), py::arg("algorithm"), py::arg("double_precision"))
+      .def("initialize", [](gt::ReferenceBmi& model, const std::filesystem::path& config) { model.initialize(config); })
+      .def("update", [](gt::ReferenceBmi& model) {
+        py::gil_scoped_release unlocked;
+        model.update();
+      })
+      .def("output_names", &gt::ReferenceBmi::output_names)
+      .def("input_names", &gt::ReferenceBmi::input_names)
+      .def("units", [](const gt::ReferenceBmi& model, const std::string& name) { return model.field(name).unit; })
+      .def("components", [](const gt::ReferenceBmi& model, const std::string& name) { return model.field(name).components; })
+      .def("shape", [](const gt::ReferenceBmi& model) { return std::vector<int>{model.grid().height, model.grid().width}; })
+      .def("spacing", [](const gt::ReferenceBmi& model) {
+        return std::vector<double>{model.grid().cell_size_y, model.grid().cell_size_x};
+      })
+      .def("iteration", &gt::ReferenceBmi::iteration)
+      .def("set_iteration", &gt::ReferenceBmi::set_iteration)
+      .def("get", [](gt::ReferenceBmi& model, const std::string& name) {
+        const std::vector<double> values = model.get(name);
+        return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+      })
+      .def("set", [](gt::ReferenceBmi& model, const std::string& name,
+                     const py::array_t<double, py::array::c_style | py::array::forcecast>& values) {
+        model.set(name, std::vector<double>(values.data(), values.data() + values.size()));
+      });
   module.def("algorithm_json", [](const std::string& name) { return gt::algorithm_json(gt::find_algorithm(name)).dump(); });
   module.def(
       "run_case",
@@ -133,12 +169,13 @@ PYBIND11_MODULE(_core, module) {
          std::optional<double> cell_size, std::optional<double> cell_size_y,
          const std::vector<std::string>& assignments, bool red_channel, const std::string& backend,
          const std::string& gl, const std::string& mutant, bool require_gpu, bool quiet, bool pictures,
-         bool descriptors, std::optional<int> reps, const std::filesystem::path& out, const std::string& command_line) {
+         bool descriptors, std::optional<int> reps, const std::filesystem::path& out, const std::string& command_line,
+         const py::object& external, const std::string& external_label) {
         return run_case({algorithm, input, width, height, cell_size, cell_size_y, assignments, red_channel, backend, gl, mutant,
-                         require_gpu, quiet, pictures, descriptors, reps, out, command_line});
+                         require_gpu, quiet, pictures, descriptors, reps, out, command_line, external, external_label});
       },
       py::arg("algorithm"), py::arg("input"), py::arg("width"), py::arg("height"), py::arg("cell_size"), py::arg("cell_size_y"),
       py::arg("assignments"), py::arg("red_channel"), py::arg("backend"), py::arg("gl"), py::arg("mutant"),
       py::arg("require_gpu"), py::arg("quiet"), py::arg("pictures"), py::arg("descriptors"), py::arg("reps"),
-      py::arg("out"), py::arg("command_line"));
+      py::arg("out"), py::arg("command_line"), py::arg("external") = py::none(), py::arg("external_label") = "");
 }

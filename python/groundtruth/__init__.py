@@ -43,7 +43,7 @@ import numpy
 from . import _core
 from ._core import InputError
 
-__all__ = ["DATASETS", "InputError", "Result", "algorithms", "parameters", "run"]
+__all__ = ["DATASETS", "InputError", "Result", "algorithms", "check", "parameters", "run"]
 
 # The data sets of the checkout the module was built from: bundled ones and those
 # datasets/fetch.sh brought (e.g. DATASETS / "real/volcano.json").
@@ -191,7 +191,7 @@ def _load_fields(case_folder):
 
 def run(algorithm, heights=None, *, cell_size=None, backend="both", size=(256, 256), red_channel=False,
         mutant=None, require_gpu=False, gl="egl", out=None, quiet=True, pictures=True, descriptors=True, reps=None,
-        quick=False, **params):
+        quick=False, _external=None, _external_label="", **params):
     """Runs `algorithm` on `heights` as one ad-hoc case and returns its Result.
 
     backend: "cpu" (the references, double and float), "gpu", or "both" (the twins and every check
@@ -230,7 +230,8 @@ def run(algorithm, heights=None, *, cell_size=None, backend="both", size=(256, 2
         try:
             _core.run_case(algorithm, input_path, int(width), int(height), *_cell_sizes(cell_size), assignments,
                            bool(red_channel), backend, gl, mutant or "", bool(require_gpu), bool(quiet),
-                           bool(pictures), bool(descriptors), None if reps is None else int(reps), report, command)
+                           bool(pictures), bool(descriptors), None if reps is None else int(reps), report, command,
+                           _external, _external_label)
         except InputError as error:
             # The driver names the file it read; the caller gave an array.
             raise InputError(str(error).replace(str(saved), "heights") if saved else str(error)) from None
@@ -238,3 +239,145 @@ def run(algorithm, heights=None, *, cell_size=None, backend="both", size=(256, 2
         case["notes"] = conversions + case.get("notes", [])
         fields, field_info, grid = _load_fields(report / case["name"])
         return Result(case, fields, field_info, grid, report if out is not None else None)
+
+
+class _StepModel:
+    """bmipy's methods over a plain step function, `step(state, params) -> state`: the state a dict
+    of the algorithm's declared fields (numpy arrays (rows, columns), or (rows, columns, values) for
+    a field of several values a cell), params the case's parameters plus "iteration" (iterations
+    behind the state) and "spacing" ((dy, dx) in the grid's unit)."""
+
+    def __init__(self, step, fields, dtype):
+        self._step, self._fields, self._dtype = step, {f["name"]: f for f in fields}, numpy.dtype(dtype)
+        self._state, self._params, self._shape, self._spacing, self._iteration = {}, {}, (0, 0), (1.0, 1.0), 0
+
+    @staticmethod
+    def _value(text):
+        for kind in (int, float):
+            try:
+                return kind(text)
+            except ValueError:
+                pass
+        return {"true": True, "false": False}.get(text, text)
+
+    def initialize(self, config_file):
+        entries = {}
+        for line in pathlib.Path(config_file).read_text().splitlines():
+            if line and not line.startswith("#") and " " in line:
+                key, value = line.split(" ", 1)
+                entries[key] = self._value(value)
+        self._shape = (int(entries.pop("rows")), int(entries.pop("columns")))
+        self._spacing = (float(entries.pop("spacing_y")), float(entries.pop("spacing_x")))
+        for key in ("algorithm", "case", "horizontal_unit"):
+            entries.pop(key, None)
+        self._params = entries
+        self._state = {name: numpy.zeros(self._field_shape(name), self._dtype) for name in self._fields}
+
+    def _field_shape(self, name):
+        components = self._fields[name].get("components", 1)
+        return self._shape if components == 1 else (*self._shape, components)
+
+    def update(self):
+        params = dict(self._params, iteration=self._iteration, spacing=self._spacing)
+        given = self._step({name: values.copy() for name, values in self._state.items()}, params)
+        if not isinstance(given, dict) or set(given) != set(self._fields):
+            raise ValueError(f"the step function returned {type(given).__name__}"
+                             f"{' with keys ' + ', '.join(map(str, given)) if isinstance(given, dict) else ''}; "
+                             f"expected a dict of {', '.join(self._fields)}")
+        for name, values in given.items():
+            values = numpy.asarray(values)
+            if values.shape != self._field_shape(name):
+                raise ValueError(f"the step function returned {name} of shape {values.shape}, "
+                                 f"expected {self._field_shape(name)}")
+            self._state[name] = values.astype(self._dtype)
+        self._iteration += 1
+
+    def finalize(self):
+        self._state = {}
+
+    def get_output_var_names(self):
+        return tuple(self._fields)
+
+    def get_input_var_names(self):
+        return (*self._fields, "iteration")
+
+    def get_var_type(self, name):
+        return "int32" if name == "iteration" else self._dtype.name
+
+    def get_var_units(self, name):
+        return "1" if name == "iteration" else self._fields[name]["unit"]
+
+    def get_var_itemsize(self, name):
+        return 4 if name == "iteration" else self._dtype.itemsize
+
+    def get_var_nbytes(self, name):
+        return 4 if name == "iteration" else self._state[name].nbytes
+
+    def get_var_grid(self, name):
+        return 0 if name == "iteration" else 1 + list(self._fields).index(name)
+
+    def _grid_shape(self, grid):
+        return (1,) if grid == 0 else self._field_shape(list(self._fields)[grid - 1])
+
+    def get_grid_rank(self, grid):
+        return len(self._grid_shape(grid))
+
+    def get_grid_size(self, grid):
+        return int(numpy.prod(self._grid_shape(grid)))
+
+    def get_grid_shape(self, grid, shape):
+        shape[:] = self._grid_shape(grid)
+        return shape
+
+    def get_grid_spacing(self, grid, spacing):
+        spacing[:] = (1.0,) if grid == 0 else (*self._spacing, 1.0)[:len(spacing)]
+        return spacing
+
+    def get_value(self, name, dest):
+        dest[:] = numpy.ravel(self._iteration if name == "iteration" else self._state[name])
+        return dest
+
+    def set_value(self, name, src):
+        if name == "iteration":
+            self._iteration = int(numpy.ravel(src)[0])
+        else:
+            self._state[name] = numpy.asarray(src, self._dtype).reshape(self._field_shape(name)).copy()
+
+
+def _model_factory(model, algorithm, dtype):
+    """A callable returning the model to grade, and the name it is shown by: a class (a BMI model's:
+    a fresh instance a case), an object with the BMI's methods (itself), or a step function
+    (wrapped in _StepModel)."""
+    if isinstance(model, type):
+        return model, model.__name__
+    if hasattr(model, "update") and hasattr(model, "get_value"):
+        return (lambda: model), type(model).__name__
+    if not callable(model):
+        raise InputError(f"{type(model).__name__} is neither a model with the BMI's methods (update, get_value, ...) "
+                         "nor a step function step(state, params) -> state")
+    if numpy.dtype(dtype).name not in ("float32", "float64"):
+        raise InputError(f"dtype {dtype!r}: a step function's fields are float32 or float64")
+    fields = json.loads(_core.algorithm_json(algorithm)).get("state", [])
+    return (lambda: _StepModel(model, fields, dtype)), getattr(model, "__name__", type(model).__name__)
+
+
+def check(model, algorithm, heights=None, *, dtype="float64", **kwargs):
+    """Grades your own implementation of a stepped algorithm (erosion) where groundtruth's GPU twin
+    stands, and returns the Result: the same shadow steps against the reference (ref<float> for
+    float32 fields, ref<double> for float64), ledgers and determinism, its checks named by the
+    backend "external" (e.g. parity.shadow.terrain.external_vs_double, mass.relative_drift.external).
+
+    model: an object or class with the Basic Model Interface's methods under bmipy's names
+      (initialize(config_file), update(), get_value(name, dest), set_value(name, src),
+      get_output_var_names(), get_input_var_names(), get_var_type/units/itemsize/nbytes/grid(name),
+      get_grid_rank/size(grid), get_grid_shape(grid, shape), get_grid_spacing(grid, spacing)), whose
+      variables are the algorithm's declared state (`algorithms()`, "state"); or a plain step
+      function step(state, params) -> state over dicts of numpy arrays, its fields of `dtype`
+      (params: the case's parameters, "iteration" and "spacing" (dy, dx)). The config file handed to
+      initialize() is docs/external-implementations.md's.
+    The other arguments are run()'s (heights, cell_size, quick, out, ...). The model runs in this
+    process: a model whose variables do not match raises InputError naming each mismatch; one that
+    raises while it steps ends the case as `error` with its message.
+    """
+    factory, label = _model_factory(model, algorithm, dtype)
+    return run(algorithm, heights, _external=factory, _external_label=label, **kwargs)
