@@ -52,7 +52,8 @@ std::string define_line(const std::string& define) {
 // defines after the top file's #version line.
 class IncludeExpander {
  public:
-  IncludeExpander(std::filesystem::path root, const std::vector<std::string>& defines) : root_(std::move(root)) {
+  IncludeExpander(std::filesystem::path root, const std::vector<std::string>& defines)
+      : root_(std::move(root)), overlay_(shader_overlay()) {
     std::transform(defines.begin(), defines.end(), std::back_inserter(define_lines_), define_line);
   }
 
@@ -63,9 +64,19 @@ class IncludeExpander {
   }
 
  private:
+  // The file of `relative_path`: the drop-in folder's, where it has one, else the root's.
+  std::filesystem::path locate(const std::string& relative_path) const {
+    std::error_code error;
+    if (!overlay_.empty() && std::filesystem::is_regular_file(overlay_ / relative_path, error)) return overlay_ / relative_path;
+    return root_ / relative_path;
+  }
+
   void expand_file(const std::string& relative_path, const ExpandedShader::Origin* included_from) {
-    const auto path = root_ / relative_path;
+    const auto path = locate(relative_path);
     const std::string name = display_path(path);
+    if (path != root_ / relative_path && std::find(result_.drop_ins.begin(), result_.drop_ins.end(), name) == result_.drop_ins.end()) {
+      result_.drop_ins.push_back(name);
+    }
     std::ifstream file(path);
     if (!file) throw std::runtime_error(cannot_open_message(relative_path, name, included_from));
     if (std::find(active_.begin(), active_.end(), name) != active_.end()) {
@@ -117,6 +128,7 @@ class IncludeExpander {
   }
 
   std::filesystem::path root_;
+  std::filesystem::path overlay_;
   std::vector<std::string> define_lines_;
   ExpandedShader result_;
   std::vector<std::string> active_;  // the chain of files being expanded, outermost first
@@ -183,8 +195,11 @@ std::vector<std::string> with_mutant(const std::vector<std::string>& defines) {
 StageSource load_stage(GLenum stage, const std::filesystem::path& root, const std::string& relative_path,
                        const std::vector<std::string>& defines) {
   const auto all_defines = with_mutant(defines);
-  return {stage, expand_shader(root, relative_path, all_defines),
-          describe(display_path(root / relative_path), all_defines)};
+  ExpandedShader expanded = expand_shader(root, relative_path, all_defines);
+  // Messages and the report's provenance name the drop-ins a stage was built from.
+  std::string name = display_path(root / relative_path);
+  if (!expanded.drop_ins.empty()) name += fmt::format(" with drop-ins {}", fmt::join(expanded.drop_ins, ", "));
+  return {stage, std::move(expanded), describe(name, all_defines)};
 }
 
 // A linked program, its description for messages and its stages' expanded sources.
@@ -290,9 +305,21 @@ std::map<std::string, std::string> compiled_shader_digests() {
   return digests;
 }
 
-std::filesystem::path shader_root() {
-  const char* override_dir = std::getenv("GROUNDTRUTH_SHADER_DIR");
-  return (override_dir && *override_dir) ? std::filesystem::path(override_dir) : std::filesystem::path(GT_SHADER_DIR);
+std::filesystem::path shader_root() { return GT_SHADER_DIR; }
+
+namespace {
+std::mutex overlay_mutex;
+std::filesystem::path overlay_folder;
+}  // namespace
+
+void set_shader_overlay(const std::filesystem::path& folder) {
+  const std::lock_guard lock(overlay_mutex);
+  overlay_folder = folder;
+}
+
+std::filesystem::path shader_overlay() {
+  const std::lock_guard lock(overlay_mutex);
+  return overlay_folder;
 }
 
 std::string ExpandedShader::locate_info_log(const std::string& info_log) const {

@@ -3,9 +3,12 @@
 //
 // Conventions:
 // - Shader paths are relative to a root: shader_root() (GT_SHADER_DIR, the source gpu/shaders
-//   folder, unless the environment variable GROUNDTRUTH_SHADER_DIR names another) or an explicit
-//   one (load_from). `#include "family/file.glsl"` lines are resolved against that same root,
-//   recursively; a cycle or a missing file is an error naming the including file and line.
+//   folder) or an explicit one (load_from). `#include "family/file.glsl"` lines are resolved
+//   against that same root, recursively; a cycle or a missing file is an error naming the
+//   including file and line.
+// - A drop-in folder (set_shader_overlay; `groundtruth run --gpu-shaders DIR`) lies over every
+//   root: a path found under it is read from there, anything else from the root, #include lines
+//   alike. A user's variant of one pass is one file in it (docs/gpu-shader-drop-ins.md).
 //   Included files are pasted verbatim, so a file included twice needs #ifndef guards.
 // - Defines ("NAME", "NAME=VALUE" or "NAME(a)=VALUE") become `#define` lines right after #version.
 // - Both kinds go through the same expansion, compilation and linking; a graphics program's
@@ -60,6 +63,10 @@ namespace gt {
 
 std::filesystem::path shader_root();
 
+// The drop-in folder over the shader roots (empty: none) for the rest of the process.
+void set_shader_overlay(const std::filesystem::path& folder);
+std::filesystem::path shader_overlay();
+
 // Every shader stage this process compiled so far: its description (display path, and defines when
 // it has any) -> the SHA-256 of the source the driver was given, after #include expansion and
 // define insertion (a report's provenance: which shader code really ran).
@@ -73,6 +80,7 @@ struct ExpandedShader {
   };
   std::string source;
   std::vector<Origin> origins;  // origins[n - 1]: where line n of `source` comes from
+  std::vector<std::string> drop_ins;  // display paths of the files read from the drop-in folder
 
   // The info log with line prefixes of the expanded source replaced by "file:line[:col]: ".
   std::string locate_info_log(const std::string& info_log) const;
