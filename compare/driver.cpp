@@ -26,6 +26,9 @@
 #include "compare/inputs.hpp"
 #include "compare/external/bmi_preflight.hpp"
 #include "compare/external/c_bmi_model.hpp"
+#include "compare/external/candidate_field.hpp"
+#include "compare/external/gpu_shader_drop_ins.hpp"
+#include "gpu/shader_program.hpp"
 #include "compare/isolated_cases.hpp"
 #include "compare/case_seconds.hpp"
 #include "compare/progress.hpp"
@@ -354,6 +357,10 @@ std::vector<std::string> worker_common_args(const DriverOptions& options) {
   if (options.require_gpu) args.push_back("--require-gpu");
   if (options.memory_limit_mib > 0.0) args.insert(args.end(), {"--memory-limit", fmt::format("{}", options.memory_limit_mib)});
   if (options.implementation) args.insert(args.end(), {"--implementation", options.implementation->text()});
+  if (!options.gpu_shaders.empty()) {
+    args.insert(args.end(), {"--gpu-shaders", std::filesystem::absolute(options.gpu_shaders).string()});
+  }
+  if (!options.candidate.empty()) args.insert(args.end(), {"--candidate", std::filesystem::absolute(options.candidate).string()});
   return args;
 }
 
@@ -394,6 +401,35 @@ void check_implementation(const std::vector<Job>& jobs, const DriverOptions& opt
                              twin->algorithm, twin->fields, twin->initial.grid, job.resolved, job.spec.name,
                              std::min(preflight_seconds, options.case_timeout.value_or(preflight_seconds)), library);
   }
+}
+
+// --gpu-shaders: the drop-ins laid over the built-in shaders for the rest of the process, and the
+// note every case carries (said on stderr too, once, by the parent); empty without drop-ins.
+std::string lay_drop_ins(const DriverOptions& options) {
+  if (options.gpu_shaders.empty()) return "";
+  const auto folder = std::filesystem::absolute(options.gpu_shaders);
+  const auto drop_ins = gpu_shader_drop_ins(folder, shader_root());
+  set_shader_overlay(folder);
+  const std::string note = fmt::format("GPU shaders: {} drop-in file(s) from {} over the built-in ones: {}",
+                                       drop_ins.size(), folder.string(), fmt::join(drop_ins, ", "));
+  if (!options.worker && !options.quiet) fmt::print(stderr, "groundtruth: {}\n", note);
+  return note;
+}
+
+// --candidate: the one selected case is a generated field, and the file holds a field of its grid.
+std::optional<CandidateField> candidate_of(const std::vector<Job>& jobs, const DriverOptions& options) {
+  if (options.candidate.empty()) return std::nullopt;
+  if (jobs.size() != 1) {
+    throw InputError(fmt::format("--candidate {}: one file grades one case, and {} are selected", options.candidate.string(),
+                                 jobs.size()));
+  }
+  const auto* generated = std::get_if<GeneratedCase>(&jobs.front().prepared.kind);
+  if (generated == nullptr) {
+    throw InputError(fmt::format("--candidate grades a generated field (noise.*) today; {} is not one (meshes and "
+                                 "renders: not yet)",
+                                 jobs.front().spec.algorithm));
+  }
+  return load_candidate_field(options.candidate, generated->grid);
 }
 
 // Runs a list of jobs in this process or in workers, and returns their results in order.
@@ -488,6 +524,9 @@ class CaseRunner {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return seconds[a] > seconds[b]; });
     return order;
   }
+
+  // A user's field file in the GPU twin's place (--candidate).
+  void grade_candidate(const CandidateField& candidate) { run_options_.candidate_field = candidate; }
 
   // The context benchmarks need (opened now in a run whose cases ran in workers).
   bool gpu_available() {
@@ -604,6 +643,8 @@ int run_driver(const DriverOptions& options) {
   const auto specs = shard_specs(selection, options, baseline, report);
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
   if (options.implementation || options.external_model) check_implementation(jobs, options);
+  const std::string drop_in_note = lay_drop_ins(options);
+  const auto candidate = candidate_of(jobs, options);
   // A worker's parent applies the expectations and makes the retries.
   const auto expectations = options.worker ? std::vector<Expectation>{} : all_expectations(options, suite);
   check_output_folder(options.out);
@@ -615,9 +656,13 @@ int run_driver(const DriverOptions& options) {
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
     CaseRunner runner(options, folder, report,
                       expected_case_seconds(options.dataset_dir, options.out / "report.json", baseline), expectations);
+    if (candidate) runner.grade_candidate(*candidate);
     std::vector<const Job*> all;
     for (const auto& job : jobs) all.push_back(&job);
     report.cases = runner.run(all);
+    if (!drop_in_note.empty()) {
+      for (CaseResult& result : report.cases) result.notes.push_back(drop_in_note);
+    }
     report.expectation_problems = apply_expectations(expectations, report);
     retry_failures(jobs, options, expectations, runner, report);
     if (options.benchmark) {

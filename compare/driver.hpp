@@ -86,6 +86,11 @@ struct DriverOptions {
   // An outside model made in this process (the Python module's groundtruth.check): run in-process,
   // never in workers (it lives in the caller's interpreter).
   std::optional<ExternalModel> external_model;
+  // --gpu-shaders: a folder of the user's shader files laid over the built-in ones
+  // (compare/external/gpu_shader_drop_ins.hpp); empty: none.
+  std::filesystem::path gpu_shaders;
+  // --candidate: a user's output file graded where the GPU twin's stands (one generated case).
+  std::filesystem::path candidate;
 };
 
 // `groundtruth mutants`: runs the mutation into `out` (atomically, like a report), writes

@@ -32,7 +32,27 @@ struct ReferenceRuns {
 struct GpuOutputs {
   Grid<float> first;   // the result compared
   Grid<float> second;  // a second run, for determinism
+  std::string backend = "gpu";  // the check and file name part: gpu, or candidate (a user's file)
+  std::string label = "GPU";
+  // A candidate's values as the file holds them, and whether they are double: a double field is
+  // graded against ref<double> alone (the float logic bound is float arithmetic's).
+  Grid<double> values;
+  bool double_precision = false;
+  bool repeated = true;  // determinism is measured (a file is read once: not applicable)
 };
+
+// A user's field file (run --candidate) in the GPU's place.
+GpuOutputs candidate_outputs(const CandidateField& candidate) {
+  GpuOutputs outputs;
+  outputs.backend = "candidate";
+  outputs.label = "candidate " + candidate.file.filename().string();
+  outputs.values = candidate.values;
+  outputs.first = candidate.values.cast<float>();
+  outputs.second = outputs.first;
+  outputs.double_precision = candidate.double_precision;
+  outputs.repeated = false;
+  return outputs;
+}
 
 // First run gives the result, a second from the same input checks determinism, then `gpu_reps`
 // timed runs (upload and download excluded).
@@ -43,6 +63,7 @@ GpuOutputs run_gpu(const FieldTwin& twin, const Grid<float>& grid, const RunOpti
   runner.load(grid);
   runner.run();
   outputs.first = runner.result();
+  outputs.values = outputs.first.cast<double>();
   runner.load(grid);
   runner.run();
   outputs.second = runner.result();
@@ -77,6 +98,10 @@ void add_parity_pair(const std::string& what, const FieldDifference& difference,
 }
 
 void add_determinism_check(const GpuOutputs& gpu, CaseResult& result) {
+  if (!gpu.repeated) {
+    result.checks.push_back(not_applicable_check("determinism." + gpu.backend, "a file is read once: nothing to repeat"));
+    return;
+  }
   const auto repeat = field_difference(gpu.first, gpu.second);
   result.checks.push_back(bounded_check("determinism.gpu", static_cast<double>(repeat.differing_bits), 0.0,
                                         std::nullopt, "cells whose bits differ between two GPU runs of the same grid"));
@@ -93,8 +118,16 @@ void add_parity(const FieldTwin& twin, const ReferenceRuns& runs, const std::opt
     for (const char* name : gpu_parity_names) result.checks.push_back(skipped_check(name, unavailable));
     return;
   }
-  add_parity_pair("gpu_vs_float", field_difference(runs.cpu_float, gpu->first), twin.bounds.logic, result);
-  add_parity_pair("gpu_vs_double", field_difference(runs.cpu, gpu->first), twin.bounds.precision, result);
+  const std::string& backend = gpu->backend;
+  if (gpu->double_precision) {
+    const auto difference = field_difference(runs.cpu_float.cast<double>(), gpu->values);
+    const std::string why = "a double field against ref<float>: the float reference's own rounding; informative";
+    result.checks.push_back(informative_check("parity.max_abs." + backend + "_vs_float", difference.max_abs, why));
+    result.checks.push_back(informative_check("parity.rms." + backend + "_vs_float", difference.rms, why));
+  } else {
+    add_parity_pair(backend + "_vs_float", field_difference(runs.cpu_float, gpu->first), twin.bounds.logic, result);
+  }
+  add_parity_pair(backend + "_vs_double", field_difference(runs.cpu, gpu->values), twin.bounds.precision, result);
   add_determinism_check(*gpu, result);
 }
 
@@ -109,11 +142,12 @@ void write_pictures(const Grid<double>& cpu, const std::optional<GpuOutputs>& gp
   const double exaggeration = write_height_image(cpu, totals.low, totals.high, folder / "cpu.png");
   add_artifact(result, "cpu.png", "CPU reference (double)");
   if (!gpu) return;
-  const auto gpu_values = gpu->first.cast<double>();
-  write_height_image(gpu_values, totals.low, totals.high, folder / "gpu.png", exaggeration);
-  add_artifact(result, "gpu.png", "GPU");
-  const auto disagreement = write_difference_image(cpu, gpu_values, folder / "gpu_vs_double.png");
-  add_artifact(result, "gpu_vs_double.png", fmt::format("GPU - reference (double) (±{:.3g})", disagreement.scale_used));
+  write_height_image(gpu->values, totals.low, totals.high, folder / (gpu->backend + ".png"), exaggeration);
+  add_artifact(result, gpu->backend + ".png", gpu->label);
+  const std::string difference_file = gpu->backend + "_vs_double.png";
+  const auto disagreement = write_difference_image(cpu, gpu->values, folder / difference_file);
+  add_artifact(result, difference_file,
+               fmt::format("{} - reference (double) (±{:.3g})", gpu->label, disagreement.scale_used));
 }
 
 // A generator's output is a dimensionless value.
@@ -126,7 +160,7 @@ void write_artifacts(const ReferenceRuns& runs, const std::optional<GpuOutputs>&
   write_field_files(runs.cpu, {"cpu", "value", "cpu", "1", "CPU reference (double)"}, options, result);
   write_field_files(runs.cpu_float.cast<double>(), {"cpu_float", "value", "cpu_float", "1", "CPU reference (float)"},
                     options, result);
-  if (gpu) write_field_files(gpu->first.cast<double>(), {"gpu", "value", "gpu", "1", "GPU"}, options, result);
+  if (gpu) write_field_files(gpu->values, {gpu->backend, "value", gpu->backend, "1", gpu->label}, options, result);
 }
 
 }  // namespace
@@ -170,7 +204,12 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& grid, const nlohmann
                     const RunOptions& options, CaseResult& result) {
   const ReferenceRuns runs = run_references(twin, grid, options, result);
   std::optional<GpuOutputs> gpu;
-  if (options.gpu_available) {
+  if (options.candidate_field) {
+    gpu = candidate_outputs(*options.candidate_field);
+    result.notes.push_back(fmt::format("graded: {} ({} values), standing where the GPU twin stands",
+                                       options.candidate_field->file.string(),
+                                       gpu->double_precision ? "double" : "float"));
+  } else if (options.gpu_available) {
     try {
       gpu = run_gpu(twin, grid.cast<float>(), options, result);
     } catch (const std::exception& error) {
@@ -181,7 +220,7 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& grid, const nlohmann
   add_parity(twin, runs, gpu, unavailable, result);
   add_field_spec_checks(expect, runs.cpu, "cpu", result);
   if (gpu) {
-    add_field_spec_checks(expect, gpu->first.cast<double>(), "gpu", result);
+    add_field_spec_checks(expect, gpu->values, gpu->backend, result);
   } else {
     for (const auto& name : field_spec_names(expect, "gpu")) result.checks.push_back(skipped_check(name, unavailable));
   }
@@ -190,12 +229,13 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& grid, const nlohmann
     report_stage(options, "terrain descriptors");
     const Grid<double> cpu_float = runs.cpu_float.cast<double>();
     const std::optional<Grid<double>> gpu_heights =
-        gpu ? std::optional<Grid<double>>(gpu->first.cast<double>()) : std::nullopt;
+        gpu && !options.candidate_field ? std::optional<Grid<double>>(gpu->values) : std::nullopt;
     add_case_descriptors({nullptr, &runs.cpu, &cpu_float, gpu_heights ? &*gpu_heights : nullptr}, expect, options,
                          result);
     if (!gpu) {
       for (const auto& name : descriptor_gpu_check_names(expect)) result.checks.push_back(skipped_check(name, unavailable));
     }
+    if (options.candidate_field) result.notes.push_back("terrain descriptors of the references alone: the candidate's values are in its field files");
   }
 }
 

@@ -1,7 +1,9 @@
 // Running a generated field's twins on one grid and checking them against each other.
 //
 // A generated field (noise) samples a function on the input's grid: the reference in double (the
-// truth) and in float (the GPU's arithmetic), and the GPU version. run_field_twin runs all three,
+// truth) and in float (the GPU's arithmetic), and the GPU version — or a user's field file in its
+// place (RunOptions::candidate_field, `run --candidate`: checks named candidate_vs_float/_vs_double,
+// a double file graded against ref<double> alone, determinism not applicable). run_field_twin runs all three,
 // times the double reference and the GPU, writes the pictures and fields, and adds the checks of
 // DESIGN.md, judged on the whole output with the bounds the twin gives:
 //   parity.max_abs.gpu_vs_float, parity.rms.gpu_vs_float     (logic bounds)
@@ -48,6 +50,14 @@ struct FieldTwin {
   GeneratedField bounds;
 };
 
+// A user's output to grade where the GPU twin's stands (`run --candidate FILE`): a field read from
+// a .npy or EXR file, on the case's grid.
+struct CandidateField {
+  std::filesystem::path file;
+  Grid<double> values;
+  bool double_precision = false;  // a float64 .npy
+};
+
 struct RunOptions {
   int cpu_reps = 3;
   int gpu_reps = 5;
@@ -65,6 +75,7 @@ struct RunOptions {
   // An outside implementation graded where the GPU twin stands (stepped cases; --implementation,
   // or a Python model): compare/external/bmi_model.hpp.
   std::optional<ExternalModel> external;
+  std::optional<CandidateField> candidate_field;
 };
 
 // The "expect" keys run_field_twin reads (spec vectors of the field: expected cells, their total, a

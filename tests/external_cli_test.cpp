@@ -3,6 +3,7 @@
 // shadow step, and models that break the interface's rules are refused before anything runs (exit
 // 2, naming what is wrong) or, when they crash or hang inside a step, end their case alone.
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -10,7 +11,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/io/heightmap_io.hpp"
 #include "tests/support/cli_report.hpp"
+#include "tests/support/npy_writer.hpp"
 #include "tests/support/temporary_folder.hpp"
 
 namespace {
@@ -156,3 +159,136 @@ TEST(ExternalCli, ACrashOrHangInsideAStepEndsOnlyItsCase) {
 }
 
 }  // namespace
+
+// ---- GLSL drop-ins: a user's shader files over the built-in ones (run --gpu-shaders) ----------
+
+const std::string drop_ins = GT_TEST_DATA_DIR "/shaders/drop_ins/";
+
+gt::testing::ProgramRun run_with_drop_ins(const std::string& folder, const fs::path& out, const fs::path& cwd) {
+  return run_groundtruth({"run", "--algorithm", "erosion.thermal", "--input", volcano, "--set", "talus_angle=30",
+                          "--set", "iterations=24", "--require-gpu", "--gpu-shaders", folder, "--out", out.string()},
+                         cwd);
+}
+
+TEST(ExternalCli, AGpuShaderDropInIsGradedInTheGpuTwinsPlace) {
+  gt::testing::TemporaryFolder folder;
+  {
+    const auto out = folder / "correct";
+    const auto run = run_with_drop_ins(drop_ins + "branch_free", out, folder.path());
+    ASSERT_EQ(run.status, 0) << run;
+    const auto report = report_of(out);
+    const auto& graded = report["cases"][0];
+    const auto* shadow = find_check(graded, "parity.shadow.terrain.gpu_vs_float");
+    ASSERT_NE(shadow, nullptr);
+    EXPECT_EQ((*shadow)["status"], "pass") << shadow->dump();
+    EXPECT_THAT(graded["notes"].dump(), HasSubstr("drop-in file(s)"));
+    EXPECT_THAT(graded["notes"].dump(), HasSubstr("erosion/thermal_transfer.comp"));
+    // The shader that ran is the drop-in, by its path in the report's provenance.
+    EXPECT_THAT(report["environment"].dump(), HasSubstr("branch_free/erosion/thermal_transfer.comp"));
+  }
+  {
+    const auto out = folder / "leaky";
+    const auto run = run_with_drop_ins(drop_ins + "leaky", out, folder.path());
+    ASSERT_EQ(run.status, 1) << run;
+    const auto report = report_of(out);
+    const auto& graded = report["cases"][0];
+    // The shadow step fails; the mass ledger cannot: 0.1 % of the material moved in a step is of
+    // the order of 1e-7 of the volcano's whole mass, inside the ledger's rounding bound (its
+    // status is pass or warn, whichever the rounding of this run gives).
+    const auto* shadow = find_check(graded, "parity.shadow.terrain.gpu_vs_float");
+    ASSERT_NE(shadow, nullptr);
+    EXPECT_EQ((*shadow)["status"], "fail") << shadow->dump();
+    EXPECT_EQ(graded["status"], "fail");
+  }
+  {
+    const auto out = folder / "swapped";
+    const auto run = run_with_drop_ins(drop_ins + "swapped_block", out, folder.path());
+    ASSERT_EQ(run.status, 1) << run;
+    const auto report = report_of(out);
+    const auto& graded = report["cases"][0];
+    EXPECT_EQ(graded["status"], "error");
+    EXPECT_THAT(graded["error"].get<std::string>(), HasSubstr("member request_factor"));
+    EXPECT_THAT(graded["error"].get<std::string>(), HasSubstr("thermal_block.glsl"));
+  }
+}
+
+TEST(ExternalCli, ADropInFolderThatNamesNoBuiltInShaderIsRefused) {
+  gt::testing::TemporaryFolder folder;
+  const auto out = folder / "out";
+  auto run = run_with_drop_ins(drop_ins + "misnamed", out, folder.path());
+  EXPECT_EQ(run.status, 2) << run;
+  EXPECT_THAT(run.err, HasSubstr("erosion/thermal_transfr.comp name no built-in shader"));
+  run = run_with_drop_ins(drop_ins + "no_such_folder", out, folder.path());
+  EXPECT_EQ(run.status, 2) << run;
+  EXPECT_THAT(run.err, HasSubstr("not a folder"));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// ---- Outputs to judge: a user's noise field (run --candidate) ----------------------------------
+
+// A 64 x 48 fBm field as noise.fbm's double reference samples it (its field file, float64).
+fs::path reference_fbm(const fs::path& folder) {
+  const auto out = folder / "reference";
+  const auto run = run_groundtruth({"run", "--algorithm", "noise.fbm", "--size", "64x48", "--backend", "cpu", "--out",
+                                    out.string(), "--quiet"},
+                                   folder);
+  EXPECT_EQ(run.status, 0) << run;
+  return out / report_of(out)["cases"][0]["name"].get<std::string>() / "cpu.npy";
+}
+
+void write_npy(const fs::path& file, const gt::Heightmap& field) {
+  std::ofstream(file, std::ios::binary) << gt::testing::npy_header("<f8", fmt::format("({}, {})", field.height, field.width))
+                                        << gt::testing::npy_data(field.values);
+}
+
+gt::testing::ProgramRun grade_fbm(const fs::path& candidate, const fs::path& out, const fs::path& cwd,
+                                  const std::string& size = "64x48") {
+  return run_groundtruth({"run", "--algorithm", "noise.fbm", "--size", size, "--candidate", candidate.string(), "--out",
+                          out.string()},
+                         cwd);
+}
+
+TEST(ExternalCli, ACandidateNoiseFieldIsGradedInTheGpuTwinsPlace) {
+  gt::testing::TemporaryFolder folder;
+  const fs::path truth = reference_fbm(folder.path());
+  ASSERT_TRUE(fs::is_regular_file(truth)) << truth;
+  {  // The reference's own values, handed in as a user's file: they pass, graded against ref<double>.
+    const auto out = folder / "same";
+    const auto run = grade_fbm(truth, out, folder.path());
+    ASSERT_EQ(run.status, 0) << run;
+    const auto report = report_of(out);
+    const auto& graded = report["cases"][0];
+    const auto* parity = find_check(graded, "parity.max_abs.candidate_vs_double");
+    ASSERT_NE(parity, nullptr);
+    EXPECT_EQ((*parity)["status"], "pass");
+    EXPECT_EQ((*parity)["value"], 0.0);
+    EXPECT_EQ(find_check(graded, "parity.max_abs.gpu_vs_double"), nullptr);
+  }
+  {  // One gradient wrong: a 4 x 4 patch tilted by 0.02 a sample (a slope the function never has there).
+    gt::Heightmap field = gt::read_heightmap(truth).heights;
+    for (int y = 20; y < 24; ++y) {
+      for (int x = 30; x < 34; ++x) field.at(x, y) += 0.02 * (x - 30);
+    }
+    const fs::path tilted = folder / "tilted.npy";
+    write_npy(tilted, field);
+    const auto out = folder / "tilted";
+    const auto run = grade_fbm(tilted, out, folder.path());
+    ASSERT_EQ(run.status, 1) << run;
+    const auto report = report_of(out);
+    const auto* parity = find_check(report["cases"][0], "parity.max_abs.candidate_vs_double");
+    ASSERT_NE(parity, nullptr);
+    EXPECT_EQ((*parity)["status"], "fail") << parity->dump();
+  }
+  {  // Another grid, another algorithm: refused before the run.
+    const auto out = folder / "refused";
+    auto run = grade_fbm(truth, out, folder.path(), "32x32");
+    EXPECT_EQ(run.status, 2) << run;
+    EXPECT_THAT(run.err, HasSubstr("64 columns × 48 rows where the case samples 32 × 32"));
+    run = run_groundtruth({"run", "--algorithm", "erosion.thermal", "--input", volcano, "--candidate", truth.string(),
+                           "--out", out.string()},
+                          folder.path());
+    EXPECT_EQ(run.status, 2) << run;
+    EXPECT_THAT(run.err, HasSubstr("--candidate grades a generated field"));
+    EXPECT_FALSE(fs::exists(out));
+  }
+}

@@ -295,6 +295,14 @@ int main(int argc, char** argv) {
   run->add_option("--cases", extra_cases, "more case files (JSON arrays of cases) or folders of them, beside the bundled ones");
   run->add_option("--case-name", ad_hoc.name, "ad-hoc case: its name (a sweep's worker)")->group("");
   std::string implementation;
+  std::string gpu_shaders;
+  std::string candidate;
+  run->add_option("--candidate", candidate,
+                  "grade your own output where the GPU twin's stands: a noise field (.npy float32/float64 or EXR) "
+                  "on the case's grid, sampled as the README says");
+  run->add_option("--gpu-shaders", gpu_shaders,
+                  "grade your own GLSL: a folder of shader files laid over the built-in ones by their path "
+                  "(erosion/thermal_transfer.comp, ...; docs/gpu-shader-drop-ins.md)");
   run->add_option("--implementation", implementation,
                   "grade your own implementation where the GPU twin stands: a shared library with the C Basic Model "
                   "Interface (include/groundtruth/bmi.h), LIBRARY[:REGISTER_FUNCTION] (default register_bmi)");
@@ -531,6 +539,8 @@ int main(int argc, char** argv) {
       }
       if (!ad_hoc.algorithm.empty()) options.ad_hoc = ad_hoc;
       if (!implementation.empty()) options.implementation = gt::parse_implementation(implementation);
+      options.gpu_shaders = gpu_shaders;
+      options.candidate = candidate;
       if (options.patterns.empty() && !options.ad_hoc) {
         throw gt::InputError("nothing to run: name case patterns (see `groundtruth list`) or --algorithm with --input");
       }
