@@ -65,6 +65,15 @@ TEST(ExternalCli, TheExampleLibraryPassesOnTheVolcano) {
   EXPECT_THAT(gt::testing::read_text(case_folder / "bmi_config.txt"), HasSubstr("talus_angle 45"));
 }
 
+// Without ":FUNCTION" the registration function is register_bmi, which the example also exports.
+TEST(ExternalCli, TheDefaultRegistrationFunctionIsRegisterBmi) {
+  gt::testing::TemporaryFolder folder;
+  const auto out = folder / "out";
+  const auto run = run_groundtruth(volcano_run(examples + "libthermal_bmi.so", out), folder.path());
+  ASSERT_EQ(run.status, 0) << run;
+  EXPECT_THAT(report_of(out)["cases"][0]["notes"].dump(), HasSubstr("registered by register_bmi"));
+}
+
 // Other neighbourhoods, real DEMs and a synthetic cone, in workers two at a time: each passes.
 TEST(ExternalCli, TheExampleLibraryPassesTheBundledThermalCasesItSupports) {
   gt::testing::TemporaryFolder folder;

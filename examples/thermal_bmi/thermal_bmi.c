@@ -287,3 +287,6 @@ Bmi *register_bmi_thermal(Bmi *model) {
   model->get_grid_spacing = grid_spacing;
   return model;
 }
+
+/* The name groundtruth looks for when --implementation names no function. */
+Bmi *register_bmi(Bmi *model) { return register_bmi_thermal(model); }
