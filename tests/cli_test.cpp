@@ -1262,6 +1262,34 @@ TEST(CliCheckMesh, ExitStatusFollowsTheVerdict) {
   ASSERT_FALSE(verdict.is_discarded()) << holed;
   EXPECT_EQ(verdict.at("format"), "obj");
   EXPECT_EQ(verdict.at("report").at("raw").at("border_edges"), 3) << verdict.dump(2);
+  // Where: the hole's three edges by their input vertices (0-based) and midpoints.
+  const json& border = verdict.at("locations").at("border_edges");
+  ASSERT_EQ(border.size(), 3u) << verdict.dump(2);
+  EXPECT_EQ(border[0].at("vertices"), json({1, 2}));
+  EXPECT_EQ(border[0].at("at"), json({0.5, 0.5, 0.0}));
+  EXPECT_EQ(border[2].at("vertices"), json({2, 3}));
+  EXPECT_EQ(border[2].at("at"), json({0.0, 0.5, 0.5}));
+
+  // A flipped face: its three edges are each used twice in one direction, and are listed.
+  const fs::path flipped = work / "flipped.off";
+  write_text(flipped, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 3 2\n");
+  const RunResult turned = run_groundtruth({"check-mesh", flipped.string(), "--json"}, work.path());
+  EXPECT_EQ(turned.status, 1) << turned;
+  const json misoriented = json::parse(turned.out).at("locations").at("misoriented_edges");
+  EXPECT_EQ(misoriented, json::parse(R"([{"vertices": [1, 2], "at": [0.5, 0.5, 0.0]},
+                                         {"vertices": [1, 3], "at": [0.5, 0.0, 0.5]},
+                                         {"vertices": [2, 3], "at": [0.0, 0.5, 0.5]}])"));
+
+  // Two triangles through each other: the pair, by each face's vertices, where they cross.
+  const fs::path crossing = work / "crossing.obj";
+  write_text(crossing, "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0.5 0.5 -1\nv 0.5 0.5 1\nv 1.5 0.5 0\nf 1 2 3\nf 4 5 6\n");
+  const RunResult crossed = run_groundtruth({"check-mesh", crossing.string(), "--json"}, work.path());
+  EXPECT_EQ(crossed.status, 1) << crossed;
+  const json pairs = json::parse(crossed.out).at("locations").at("self_intersections");
+  ASSERT_EQ(pairs.size(), 1u) << crossed.out;
+  std::set<std::set<int>> faces;
+  for (const auto& face : pairs[0].at("faces")) faces.insert(face.get<std::set<int>>());
+  EXPECT_EQ(faces, (std::set<std::set<int>>{{0, 1, 2}, {3, 4, 5}}));
 
   const fs::path truncated = work / "truncated.off";
   write_text(truncated, "OFF\n4 4 0\n0 0 0\n1 0 0\n");

@@ -111,7 +111,19 @@ struct EdgeUse {
   bool operator<(const EdgeUse& other) const { return key < other.key; }
 };
 
-void count_edge_uses(const std::vector<SoupTriangle>& triangles, RawMeshFacts& facts) {
+// The edge of `key` (lower << 32 | higher) with its midpoint, kept while the list is short.
+void locate_edge(const Mesh& mesh, std::uint64_t key, std::vector<EdgeAt>& list) {
+  if (list.size() >= located_cap) return;
+  const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key & 0xffffffffu);
+  EdgeAt edge{{a, b}, {}};
+  for (int axis = 0; axis < 3; ++axis) {
+    edge.at[static_cast<std::size_t>(axis)] = 0.5 * (static_cast<double>(mesh.positions[a][axis]) +
+                                                    static_cast<double>(mesh.positions[b][axis]));
+  }
+  list.push_back(edge);
+}
+
+void count_edge_uses(const Mesh& mesh, const std::vector<SoupTriangle>& triangles, RawMeshFacts& facts) {
   std::vector<EdgeUse> uses;
   uses.reserve(3 * triangles.size());
   for (const SoupTriangle& triangle : triangles) {
@@ -126,9 +138,9 @@ void count_edge_uses(const std::vector<SoupTriangle>& triangles, RawMeshFacts& f
     const auto count = last - first;
     const auto forward = std::count_if(first, last, [](const EdgeUse& use) { return use.forward; });
     ++facts.edges;
-    if (count == 1) ++facts.border_edges;
-    if (count > 2) ++facts.non_manifold_edges;
-    if (count == 2 && forward != 1) ++facts.misoriented_edges;
+    if (count == 1) ++facts.border_edges, locate_edge(mesh, first->key, facts.border_edges_at);
+    if (count > 2) ++facts.non_manifold_edges, locate_edge(mesh, first->key, facts.non_manifold_edges_at);
+    if (count == 2 && forward != 1) ++facts.misoriented_edges, locate_edge(mesh, first->key, facts.misoriented_edges_at);
     first = last;
   }
 }
@@ -141,7 +153,7 @@ RawMeshFacts raw_facts(const Mesh& mesh, const std::vector<SoupTriangle>& usable
   facts.zero_area_triangles = static_cast<std::size_t>(
       std::count_if(usable.begin(), usable.end(), [&](const SoupTriangle& t) { return has_zero_area(mesh, t); }));
   count_duplicates_and_references(mesh, facts);
-  count_edge_uses(usable, facts);
+  count_edge_uses(mesh, usable, facts);
   return facts;
 }
 
@@ -217,6 +229,24 @@ struct IntersectionCounter {
   const CgalSurface* surface;
   CgalMeshFacts* facts;
   std::size_t* reported;
+  // A crossing pair by its faces' input vertices, at the midpoint of their centroids.
+  FacePairAt locate(const std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>& pair) const {
+    FacePairAt located{};
+    int k = 0;
+    for (const auto face : {pair.first, pair.second}) {
+      int corner = 0;
+      for (const auto vertex : CGAL::vertices_around_face(surface->mesh.halfedge(face), surface->mesh)) {
+        if (corner < 3) located.faces[static_cast<std::size_t>(k)][static_cast<std::size_t>(corner)] = surface->input_vertex[vertex];
+        const auto& point = surface->mesh.point(vertex);
+        located.at[0] += CGAL::to_double(point.x()) / 6.0;
+        located.at[1] += CGAL::to_double(point.y()) / 6.0;
+        located.at[2] += CGAL::to_double(point.z()) / 6.0;
+        ++corner;
+      }
+      ++k;
+    }
+    return located;
+  }
   void operator()(const std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>& pair) const {
     ++*reported;
     if (pair.first == pair.second) {
@@ -225,6 +255,7 @@ struct IntersectionCounter {
       ++facts->split_contacts;
     } else {
       ++facts->self_intersections;
+      if (facts->self_intersections_at.size() < located_cap) facts->self_intersections_at.push_back(locate(pair));
     }
   }
 };
@@ -417,6 +448,12 @@ std::string disagreement_of(const MeshReport& report) {
 // ---- report forms ----
 
 std::string number(double value) { return fmt::format("{:.10g}", value); }
+
+nlohmann::json edges_json(const std::vector<EdgeAt>& edges) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const EdgeAt& edge : edges) list.push_back({{"vertices", edge.vertices}, {"at", edge.at}});
+  return list;
+}
 
 nlohmann::json optional_json(const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(nullptr); }
 
@@ -656,6 +693,16 @@ double approximate_one_sided_hausdorff_distance(const Mesh& from, const Mesh& to
   return PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
       sampled_surface(from), target_surface(to),
       CGAL::parameters::use_grid_sampling(true).grid_spacing(grid_spacing), CGAL::parameters::default_values());
+}
+
+nlohmann::json locations_json(const MeshReport& report) {
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const FacePairAt& pair : report.cgal.self_intersections_at) pairs.push_back({{"faces", pair.faces}, {"at", pair.at}});
+  return {{"border_edges", edges_json(report.raw.border_edges_at)},
+          {"non_manifold_edges", edges_json(report.raw.non_manifold_edges_at)},
+          {"misoriented_edges", edges_json(report.raw.misoriented_edges_at)},
+          {"self_intersections", pairs},
+          {"listed_at_most", located_cap}};
 }
 
 }  // namespace gt

@@ -39,6 +39,8 @@
 // libraries agree. An empty mesh passes vacuously.
 #pragma once
 
+#include <array>
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -50,6 +52,21 @@
 #include "core/mesh.hpp"
 
 namespace gt {
+
+// Where a problem is, for `check-mesh --json` (the first located_cap of each kind): an edge by its
+// two input vertex indices (lower first) and its midpoint, a pair of intersecting faces by each
+// face's three input vertex indices and the midpoint of the two centroids.
+inline constexpr std::size_t located_cap = 1000;
+
+struct EdgeAt {
+  std::array<std::uint32_t, 2> vertices;
+  std::array<double, 3> at;
+};
+
+struct FacePairAt {
+  std::array<std::array<std::size_t, 3>, 2> faces;
+  std::array<double, 3> at;
+};
 
 struct RawMeshFacts {
   std::size_t vertices = 0;
@@ -65,6 +82,7 @@ struct RawMeshFacts {
   std::size_t border_edges = 0;              // used by one triangle
   std::size_t non_manifold_edges = 0;        // used by more than two triangles
   std::size_t misoriented_edges = 0;         // used by two triangles in the same direction
+  std::vector<EdgeAt> border_edges_at, non_manifold_edges_at, misoriented_edges_at;
 };
 
 struct CgalMeshFacts {
@@ -88,6 +106,7 @@ struct CgalMeshFacts {
   std::optional<bool> outward;               // is_outward_oriented, where bounds_volume is defined
   std::optional<double> volume;              // when closed; negative when oriented inward
   double area = 0.0;
+  std::vector<FacePairAt> self_intersections_at;
 };
 
 struct OpenMeshFacts {
@@ -122,6 +141,11 @@ std::vector<std::string> mesh_problems(const MeshReport& report);
 bool is_watertight_and_oriented(const MeshReport& report);
 
 nlohmann::json to_json(const MeshReport& report);
+
+// Where the problems are: {"border_edges", "non_manifold_edges", "misoriented_edges": [{"vertices":
+// [a, b], "at": [x, y, z]}], "self_intersections": [{"faces": [[a, b, c], [d, e, f]], "at": [...]}],
+// "listed_at_most": located_cap}, input vertex indices (0-based) and positions in the mesh's unit.
+nlohmann::json locations_json(const MeshReport& report);
 
 // One paragraph: size, verdict with the problems, topology, volume and area, agreement.
 std::string describe(const MeshReport& report);

@@ -21,7 +21,8 @@ constexpr int exit_unreadable = 2;
 void print_report(const std::filesystem::path& file, const MeshFile& read, const MeshReport& report, bool as_json) {
   if (as_json) {
     const nlohmann::json out = {
-        {"file", file.string()}, {"format", read.format}, {"notes", read.notes}, {"report", to_json(report)}};
+        {"file", file.string()}, {"format", read.format},          {"notes", read.notes},
+        {"report", to_json(report)}, {"locations", locations_json(report)}};
     fmt::print("{}\n", out.dump(2));
     return;
   }

@@ -2,7 +2,9 @@
 // file (OFF, OBJ, PLY, STL; core/io/mesh_io.hpp).
 //
 // Prints the report on stdout — a paragraph (with what the reader decided) or, with as_json, one
-// JSON object {file, format, notes, report} — and returns the exit status: 0 watertight and
+// JSON object {file, format, notes, report, locations: where each border, non-manifold and
+// misoriented edge and each self-intersecting face pair is (compare/checks/mesh.hpp
+// locations_json)} — and returns the exit status: 0 watertight and
 // consistently oriented, 1 not (the paragraph says what is wrong and how much), 2 the file cannot
 // be read (the reason on stderr as "groundtruth: ...").
 #pragma once
