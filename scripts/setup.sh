@@ -3,7 +3,7 @@
 # the real data sets, a release build in build/release, and `import groundtruth` for Debian's
 # Python (a .pth file naming build/release/python in its site-packages).
 # Usage: setup.sh [TARGET ...]   the CMake targets to build; none: all of them (the tests too).
-# report.sh builds only what the report runs (the groundtruth executable and the Python module).
+# report.sh builds only what the report runs (the groundtruth executable), then the Python module.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
