@@ -14,4 +14,7 @@ if [ "$#" -eq 0 ]; then
 else
   cmake --build --preset release --target "$@"
 fi
-bash scripts/install-python-path.sh build/release
+# `import groundtruth` once the module is built (report.sh builds it after its report, and says so).
+if [ "$#" -eq 0 ] || [[ " $* " == *" gt_python "* ]]; then
+  bash scripts/install-python-path.sh build/release
+fi
