@@ -80,6 +80,12 @@ void ReferenceBmi::require_initialised() const {
   if (!stepper_) throw std::logic_error(fmt::format("{} reference: initialize() first", algorithm_));
 }
 
+void ReferenceBmi::sync_state() {
+  if (!stepped_) return;
+  state_ = stepper_->get_state();
+  stepped_ = false;
+}
+
 void ReferenceBmi::update() {
   require_initialised();
   stepper_->update(1);
@@ -108,16 +114,14 @@ const FieldDecl& ReferenceBmi::field(const std::string& name) const {
 
 std::vector<double> ReferenceBmi::get(const std::string& name) {
   require_initialised();
-  if (stepped_) {
-    state_ = stepper_->get_state();
-    stepped_ = false;
-  }
+  sync_state();
   const auto index = static_cast<std::size_t>(&field(name) - fields_.data());
   return state_.fields[index];
 }
 
 void ReferenceBmi::set(const std::string& name, const std::vector<double>& values) {
-  get(name);  // brings state_ up to date
+  require_initialised();
+  sync_state();
   const auto index = static_cast<std::size_t>(&field(name) - fields_.data());
   if (values.size() != state_.fields[index].size()) {
     throw std::invalid_argument(fmt::format("{}: {} values for '{}', which holds {}", algorithm_, values.size(), name,
@@ -129,10 +133,7 @@ void ReferenceBmi::set(const std::string& name, const std::vector<double>& value
 
 void ReferenceBmi::set_iteration(int iteration) {
   require_initialised();
-  if (stepped_) {
-    state_ = stepper_->get_state();
-    stepped_ = false;
-  }
+  sync_state();
   iteration_ = iteration;
   stepper_->set_state(state_, iteration_);
 }

@@ -42,6 +42,7 @@ class ReferenceBmi {
 
  private:
   void require_initialised() const;
+  void sync_state();  // state_ from the stepper, where it stepped since
   std::string algorithm_;
   bool double_precision_;
   StateDecl fields_;
