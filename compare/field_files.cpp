@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "compare/report/report_common.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/io/volume_io.hpp"
 #include "core/json_keys.hpp"
@@ -43,9 +44,7 @@ void describe_field_file(const std::filesystem::path& folder, const nlohmann::js
                           {"npy_dtype", npy_dtype}};
   if (grid != described["grid"]) entry["grid"] = grid;  // a field on another grid than the first's
   described["files"].push_back(entry);
-  std::ofstream out(sidecar);
-  out << described.dump(2) << '\n';
-  if (!out) throw std::runtime_error(fmt::format("cannot write {}", sidecar.string()));
+  report_detail::write_file_atomically(sidecar, described.dump(2) + '\n');
   if (first) {
     result.artifacts.push_back({result.name + "/fields.json", "field",
                                 "what each field file holds: field, backend, unit, meaning; the case's parameters, "

@@ -24,6 +24,7 @@
 #include "compare/stepped_case.hpp"
 #include "core/params.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/temporary_folder.hpp"
 
 namespace {
 
@@ -81,14 +82,17 @@ gt::PreparedTwin prepare(const std::string& name, const nlohmann::json& params =
   return algorithm.prepare(gt::resolve_params(name, *algorithm.params, given), gt::load_input(cone, nullptr, {}));
 }
 
-gt::CaseResult run(const std::string& name, bool gpu_available, const nlohmann::json& params = nlohmann::json::object()) {
+// Runs write their field files under `report_dir`: a folder of the test's own, since ctest runs
+// the variants of one algorithm side by side and their cases share a name.
+gt::CaseResult run(const std::string& name, bool gpu_available, const fs::path& report_dir,
+                   const nlohmann::json& params = nlohmann::json::object()) {
   gt::PreparedTwin prepared = prepare(name, params);
   gt::RunOptions options;
   options.cpu_reps = 0;
   options.gpu_reps = 0;
   options.gpu_available = gpu_available;
   options.gpu_unavailable_reason = "no GL context (stepped_protocol_test)";
-  options.report_dir = fs::path(::testing::TempDir()) / "stepped_protocol_test" / (gpu_available ? "gpu" : "cpu");
+  options.report_dir = report_dir;
   gt::CaseResult result;
   result.name = name;
   result.algorithm = name;
@@ -124,20 +128,20 @@ TEST_P(SteppedProtocol, DeclaresEachFieldOnceWithAUnitAndAMeaning) {
 }
 
 TEST_P(SteppedProtocol, ExportsEveryDeclaredFieldForEveryBackend) {
-  const auto result = run(GetParam(), true);
+  const gt::testing::TemporaryFolder folder("stepped_protocol_test");
+  const auto result = run(GetParam(), true, folder.path());
   ASSERT_TRUE(result.error.empty()) << result.error;
   std::set<std::string> artifacts;
   for (const auto& artifact : result.artifacts) artifacts.insert(artifact.path);
   const auto prepared = prepare(GetParam());
   const auto& twin = std::get<gt::SteppedTwin>(prepared.kind);
-  const fs::path folder = fs::path(::testing::TempDir()) / "stepped_protocol_test" / "gpu";
   for (const gt::FieldDecl& field : twin.fields) {
     for (int k = 0; k < field.components; ++k) {
       for (const char* backend : {"input", "cpu", "cpu_float", "gpu"}) {
         for (const char* extension : {".npy", ".exr"}) {
           const std::string path = result.name + "/" + gt::component_label(field, k) + "_" + backend + extension;
           EXPECT_TRUE(artifacts.contains(path)) << path << " is not among the artifacts";
-          EXPECT_TRUE(fs::is_regular_file(folder / path)) << path;
+          EXPECT_TRUE(fs::is_regular_file(folder.path() / path)) << path;
         }
       }
     }
@@ -146,8 +150,9 @@ TEST_P(SteppedProtocol, ExportsEveryDeclaredFieldForEveryBackend) {
 
 TEST_P(GpuSkips, ACpuOnlyRunSkipsExactlyTheChecksTheGpuRunAdds) {
   const Variant& variant = GetParam();
-  const auto with_gpu = run(variant.algorithm, true, variant.params);
-  const auto without = run(variant.algorithm, false, variant.params);
+  const gt::testing::TemporaryFolder folder("stepped_protocol_test");
+  const auto with_gpu = run(variant.algorithm, true, folder / "gpu", variant.params);
+  const auto without = run(variant.algorithm, false, folder / "cpu", variant.params);
   ASSERT_TRUE(with_gpu.error.empty()) << with_gpu.error;
   ASSERT_TRUE(without.error.empty()) << without.error;
   std::set<std::string> gpu_run, skipped, ran;

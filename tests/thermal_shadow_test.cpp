@@ -27,6 +27,7 @@
 #include "tests/support/gl_test.hpp"
 #include "tests/support/masked_terrain.hpp"
 #include "tests/support/printers.hpp"
+#include "tests/support/temporary_folder.hpp"
 
 namespace {
 
@@ -195,7 +196,8 @@ gt::CaseResult run_case(gt::PreparedTwin prepared) {
   options.cpu_reps = 0;
   options.gpu_reps = 0;
   options.gpu_available = true;
-  options.report_dir = std::filesystem::path(::testing::TempDir()) / "thermal_shadow_test";
+  const gt::testing::TemporaryFolder folder("thermal_shadow_test");
+  options.report_dir = folder.path();
   gt::CaseResult result;
   result.name = "thermal_shadow_test";
   gt::run_stepped_case(stepped(prepared), nlohmann::json(), options, result);
