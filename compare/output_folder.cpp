@@ -2,15 +2,22 @@
 // compare/output_folder.hpp.
 #include "compare/output_folder.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <optional>
 #include <mutex>
 #include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -27,43 +34,167 @@ std::mutex staging_mutex;
 std::filesystem::path active_staging;  // guarded by staging_mutex
 std::mutex workers_mutex;
 std::set<pid_t> running_workers;  // guarded by workers_mutex
+std::mutex leftovers_mutex;
+std::set<std::filesystem::path> leftovers;  // guarded by leftovers_mutex
+
+// A lock this process holds on an output folder: the open lock file and who opened it (a forked
+// child inherits the list but not the right to remove the file).
+struct HeldLock {
+  std::filesystem::path file;
+  int descriptor = -1;
+  pid_t owner = 0;
+};
+std::mutex locks_mutex;
+std::vector<HeldLock> held_locks;  // guarded by locks_mutex
 
 std::filesystem::path normalised(const std::filesystem::path& out) {
   const auto absolute = std::filesystem::absolute(out).lexically_normal();
   return absolute.has_filename() ? absolute : absolute.parent_path();
 }
 
-// Fills `entries` with what the folder's marker lists; false when there is no readable marker.
-bool read_marker(const std::filesystem::path& folder, std::set<std::string>& entries) {
+// A hidden sibling of `target` that belongs to groundtruth: ".<name>.groundtruth-<role>".
+std::filesystem::path sibling(const std::filesystem::path& target, const std::string& role) {
+  return target.parent_path() / fmt::format(".{}.groundtruth-{}", target.filename().string(), role);
+}
+
+// The entries of `folder` as paths relative to it ('/'-separated), every level down; symbolic
+// links are listed, never followed.
+std::set<std::string> entries_below(const std::filesystem::path& folder) {
+  std::set<std::string> entries;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+    entries.insert(entry.path().lexically_relative(folder).generic_string());
+  }
+  return entries;
+}
+
+// What the folder's marker lists. A marker written before markers listed every level (it has
+// "entries", the top level, and no "files") owns each listed top-level entry whole. nullopt when
+// there is no readable marker.
+struct Marker {
+  std::set<std::string> entries;
+  bool every_level = false;
+};
+std::optional<Marker> read_marker(const std::filesystem::path& folder) {
   std::ifstream stream(folder / marker_name);
-  if (!stream) return false;
+  if (!stream) return std::nullopt;
   try {
     const auto listed = parse_json_bounded(stream, (folder / marker_name).string());
-    for (const auto& entry : listed.at("entries")) entries.insert(entry.get<std::string>());
+    Marker marker;
+    marker.every_level = listed.contains("files");
+    for (const auto& entry : listed.at(marker.every_level ? "files" : "entries")) {
+      marker.entries.insert(entry.get<std::string>());
+    }
+    return marker;
   } catch (const nlohmann::json::exception&) {
-    return false;
+    return std::nullopt;
   }
-  return true;
 }
 
 void write_marker(const std::filesystem::path& folder) {
-  nlohmann::json entries = nlohmann::json::array();
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) entries.push_back(entry.path().filename().string());
-  std::ofstream(folder / marker_name) << nlohmann::json{{"written_by", "groundtruth"}, {"entries", entries}}.dump(1)
-                                      << '\n';
+  const auto files = entries_below(folder);
+  nlohmann::json document = {{"written_by", "groundtruth"}, {"files", files}};
+  std::ofstream out(folder / marker_name);
+  out << document.dump(1) << '\n';
+  out.close();
+  if (!out) throw InputError(fmt::format("cannot write {}", (folder / marker_name).string()));
 }
 
-// "<base>.tmp-<pid>" folders beside `target` whose process no longer runs.
+// The first entry of `folder` that its marker does not list ("" when every one is groundtruth's).
+std::string first_stranger(const std::filesystem::path& folder, const Marker& marker) {
+  const auto entries = marker.every_level ? entries_below(folder) : [&] {
+    std::set<std::string> top;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) top.insert(entry.path().filename().string());
+    return top;
+  }();
+  for (const std::string& entry : entries) {
+    if (entry != marker_name && !marker.entries.contains(entry)) return entry;
+  }
+  return "";
+}
+
+// Throws InputError unless `folder` (an existing folder) is empty or groundtruth's report with
+// nothing added; `out` is the name the user gave, `when` says when the folder was looked at.
+void check_ours(const std::filesystem::path& folder, const std::filesystem::path& out, const std::string& when) {
+  if (std::filesystem::is_empty(folder)) return;
+  const auto marker = read_marker(folder);
+  if (!marker) {
+    throw InputError(fmt::format("output folder {} holds files that are not a groundtruth report{}; refusing to "
+                                 "overwrite them (choose another --out)",
+                                 out.string(), when));
+  }
+  const std::string stranger = first_stranger(folder, *marker);
+  if (!stranger.empty()) {
+    throw InputError(fmt::format("output folder {} is a groundtruth report, but {} was added to it{}; refusing to "
+                                 "delete it (move it, or choose another --out)",
+                                 out.string(), stranger, when));
+  }
+}
+
+// Removes this process's lock files and lets go of the locks (a forked child's inherited entries
+// are left to their owner). Safe to call from the interruption's thread and at exit.
+void release_output_locks() {
+  const std::lock_guard lock(locks_mutex);
+  std::erase_if(held_locks, [](const HeldLock& held) {
+    if (held.owner != getpid()) return false;
+    unlink(held.file.c_str());
+    close(held.descriptor);
+    return true;
+  });
+}
+
+// Holds an exclusive lock on `target` for this process: flock on its hidden lock file beside it.
+// Another process holding it is a refusal; the file is removed by release_output_locks. Opening a
+// file its holder removes meanwhile is retried on the new one (the inode check).
+void lock_output_folder(const std::filesystem::path& target, const std::filesystem::path& out) {
+  static std::once_flag at_exit;
+  std::call_once(at_exit, [] { std::atexit(release_output_locks); });
+  const std::lock_guard lock(locks_mutex);
+  const auto file = sibling(target, "lock");
+  for (const HeldLock& held : held_locks) {
+    if (held.file == file && held.owner == getpid()) return;
+  }
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    const int descriptor = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (descriptor < 0) {
+      throw InputError(fmt::format("output folder {}: cannot create its lock file {}: {}", out.string(), file.string(),
+                                   std::strerror(errno)));
+    }
+    if (flock(descriptor, LOCK_EX | LOCK_NB) != 0) {
+      const int error = errno;
+      close(descriptor);
+      if (error == EWOULDBLOCK) {
+        throw InputError(fmt::format("output folder {} is being written by another groundtruth run; wait for it to "
+                                     "end or choose another --out",
+                                     out.string()));
+      }
+      throw InputError(fmt::format("output folder {}: cannot lock {}: {}", out.string(), file.string(),
+                                   std::strerror(error)));
+    }
+    struct stat held {}, named {};
+    if (fstat(descriptor, &held) == 0 && stat(file.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+        held.st_dev == named.st_dev) {
+      held_locks.push_back({file, descriptor, getpid()});
+      return;
+    }
+    close(descriptor);
+  }
+  throw InputError(fmt::format("output folder {}: cannot take its lock {}", out.string(), file.string()));
+}
+
+// Stale folders beside `target`: staging or previous folders ("." name ".groundtruth-staging-"
+// or "-previous-" and a pid) whose process no longer runs.
 void remove_stale_staging(const std::filesystem::path& target) {
-  const std::string prefix = target.filename().string() + ".tmp-";
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(target.parent_path(), error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(prefix, 0) != 0 || !entry.is_directory()) continue;
-    const std::string digits = name.substr(prefix.size());
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
-    const pid_t pid = static_cast<pid_t>(std::stol(digits));
-    if (pid == getpid() || (kill(pid, 0) != 0 && errno == ESRCH)) std::filesystem::remove_all(entry.path(), error);
+  for (const char* role : {"staging-", "previous-"}) {
+    const std::string prefix = sibling(target, role).filename().string();
+    for (const auto& entry : std::filesystem::directory_iterator(target.parent_path(), error)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind(prefix, 0) != 0 || !entry.is_directory()) continue;
+      const std::string digits = name.substr(prefix.size());
+      if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+      const pid_t pid = static_cast<pid_t>(std::stol(digits));
+      if (pid == getpid() || (kill(pid, 0) != 0 && errno == ESRCH)) std::filesystem::remove_all(entry.path(), error);
+    }
   }
 }
 
@@ -81,6 +212,12 @@ void set_staging(const std::filesystem::path& staging) {
     for (const pid_t worker : running_workers) kill(-worker, SIGKILL);
   }
   fmt::print(stderr, "groundtruth: interrupted by signal {}; nothing was left in the output folder\n", signal_number);
+  release_output_locks();
+  {
+    const std::lock_guard lock(leftovers_mutex);
+    std::error_code ignored;
+    for (const auto& path : leftovers) std::filesystem::remove_all(path, ignored);
+  }
   const std::lock_guard lock(staging_mutex);
   std::error_code ignored;
   for (int attempt = 0; attempt < 1000 && !active_staging.empty() && std::filesystem::exists(active_staging, ignored);
@@ -88,6 +225,33 @@ void set_staging(const std::filesystem::path& staging) {
     std::filesystem::remove_all(active_staging, ignored);
   }
   _exit(128 + signal_number);
+}
+
+// Puts `staging` in place of `target`. What the user added to `target` while the run went on stays:
+// the folder is looked at again before it is moved aside and once more after (nothing can reach
+// it under its hidden name), and put back if anything was added.
+void replace_folder(const std::filesystem::path& target, const std::filesystem::path& staging,
+                    const std::filesystem::path& out) {
+  const std::string when = " while this run went on (this run's report is not kept)";
+  std::error_code error;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(target, error))) {
+    std::filesystem::rename(staging, target);
+    return;
+  }
+  if (!std::filesystem::is_directory(std::filesystem::symlink_status(target))) {
+    throw InputError(fmt::format("output {} was replaced by something that is not a folder{}", out.string(), when));
+  }
+  check_ours(target, out, when);
+  const auto previous = sibling(target, fmt::format("previous-{}", getpid()));
+  std::filesystem::rename(target, previous);
+  try {
+    check_ours(previous, out, when);
+  } catch (const InputError&) {
+    std::filesystem::rename(previous, target);
+    throw;
+  }
+  std::filesystem::rename(staging, target);
+  std::filesystem::remove_all(previous);
 }
 
 }  // namespace
@@ -102,10 +266,22 @@ void remove_running_worker(pid_t pid) {
   running_workers.erase(pid);
 }
 
+void add_interruption_leftover(const std::filesystem::path& path) {
+  const std::lock_guard lock(leftovers_mutex);
+  leftovers.insert(path);
+}
+
+void remove_interruption_leftover(const std::filesystem::path& path) {
+  const std::lock_guard lock(leftovers_mutex);
+  leftovers.erase(path);
+}
+
 void install_interrupt_cleanup() {
   sigset_t signals;
   sigemptyset(&signals);
-  for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&signals, signal_number);
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM}) {
+    sigaddset(&signals, signal_number);
+  }
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // inherited by every later thread
   std::thread([signals] {
     int received = 0;
@@ -114,6 +290,7 @@ void install_interrupt_cleanup() {
 }
 
 void check_output_folder(const std::filesystem::path& out) {
+  if (out.empty()) throw InputError("--out is empty: name the output folder");
   const auto target = normalised(out);
   const auto parent = target.parent_path();
   if (!std::filesystem::is_directory(parent)) {
@@ -129,32 +306,32 @@ void check_output_folder(const std::filesystem::path& out) {
     if (std::filesystem::is_symlink(status)) {
       throw InputError(fmt::format("output {} is a dangling symbolic link; refusing to write through it", out.string()));
     }
-    return;
-  }
-  if (!std::filesystem::is_directory(status)) {
+  } else if (!std::filesystem::is_directory(status)) {
     throw InputError(fmt::format("output {} exists and is not a folder; refusing to overwrite it", out.string()));
+  } else {
+    check_ours(target, out, "");
   }
-  if (std::filesystem::is_empty(target)) return;
-  std::set<std::string> ours;
-  if (!read_marker(target, ours)) {
-    throw InputError(fmt::format("output folder {} holds files that are not a groundtruth report; refusing to "
-                                 "overwrite them (choose another --out)",
-                                 out.string()));
-  }
-  for (const auto& entry : std::filesystem::directory_iterator(target)) {
-    const std::string name = entry.path().filename().string();
-    if (name != marker_name && !ours.contains(name)) {
-      throw InputError(fmt::format("output folder {} is a groundtruth report, but {} was added to it since; refusing "
-                                   "to delete it (move it, or choose another --out)",
-                                   out.string(), name));
-    }
+  lock_output_folder(target, out);
+}
+
+void refuse_input_inside_output(const std::filesystem::path& out, const std::filesystem::path& input,
+                                const std::string& command) {
+  std::error_code error;
+  const auto target = std::filesystem::weakly_canonical(normalised(out), error);
+  const auto given = std::filesystem::weakly_canonical(std::filesystem::absolute(input), error);
+  if (error) return;  // the reader names what is wrong with the input
+  const auto inside = given.lexically_relative(target);
+  if (!inside.empty() && *inside.begin() != "..") {
+    throw InputError(fmt::format("{}: --out {} would replace {}, which it reads; choose another --out", command,
+                                 out.string(), input.string()));
   }
 }
 
 void write_folder_atomically(const std::filesystem::path& out,
                              const std::function<void(const std::filesystem::path&)>& fill) {
   const auto target = normalised(out);
-  const std::filesystem::path staging = fmt::format("{}.tmp-{}", target.string(), getpid());
+  lock_output_folder(target, out);
+  const auto staging = sibling(target, fmt::format("staging-{}", getpid()));
   // Known to the interruption's clean-up before it exists: a signal between creating the folder and
   // registering it left the folder behind (seen once under the sanitizer build's load).
   set_staging(staging);
@@ -163,26 +340,22 @@ void write_folder_atomically(const std::filesystem::path& out,
     std::filesystem::create_directory(staging);
   } catch (const std::filesystem::filesystem_error& error) {
     set_staging({});
+    release_output_locks();
     throw InputError(fmt::format("output folder {}: {}", out.string(), error.code().message()));
   }
   try {
     fill(staging);
     write_marker(staging);
-    if (std::filesystem::exists(target)) {
-      const std::filesystem::path previous = fmt::format("{}.old-{}", target.string(), getpid());
-      std::filesystem::rename(target, previous);
-      std::filesystem::rename(staging, target);
-      std::filesystem::remove_all(previous);
-    } else {
-      std::filesystem::rename(staging, target);
-    }
+    replace_folder(target, staging, out);
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove_all(staging, ignored);
     set_staging({});
+    release_output_locks();
     throw;
   }
   set_staging({});
+  release_output_locks();
 }
 
 }  // namespace gt

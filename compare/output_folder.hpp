@@ -2,38 +2,63 @@
 // place; a folder is replaced only when it is groundtruth's own; nothing is left behind by an
 // interruption.
 //
-// - The staging folder is "<out>.tmp-<pid>". A run interrupted by SIGINT, SIGTERM or SIGHUP
-//   removes its staging folder and ends the worker processes it was waiting for, then exits with
-//   128 + the signal (a thread waits for the signals, so the clean-up runs outside a signal
-//   handler). A run killed outright (SIGKILL, the memory killer) cannot clean up: the next run
-//   into the same parent folder removes "<out>.tmp-<pid>" folders whose process is gone.
-// - A finished report folder holds ".groundtruth-report", the list of the entries groundtruth
-//   wrote. An existing --out is replaced only when it is empty or has that list and nothing else:
-//   a file a user put there (or a folder of someone else's) is never deleted.
+// - Beside <out> groundtruth keeps only hidden names of its own, which no user folder has by
+//   chance: ".<name>.groundtruth-staging-<pid>" (the report being built),
+//   ".<name>.groundtruth-previous-<pid>" (the report it replaces, for the moment of the swap) and
+//   ".<name>.groundtruth-lock" (held with flock while a process writes <out>: a second run into
+//   the same folder is refused, not silently raced; removed when the process ends).
+// - A run interrupted by SIGINT, SIGTERM, SIGHUP (or SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM) removes
+//   its staging folder, lock and helpers' temporary files and ends the worker and helper
+//   processes it was waiting for, then exits with 128 + the signal (a thread waits for
+//   the signals, so the clean-up runs outside a signal handler). A run killed outright (SIGKILL,
+//   the memory killer) cannot clean up: the next run into the same parent folder removes staging
+//   and previous folders of <out> whose process is gone.
+// - A finished report folder holds ".groundtruth-report", the list of every file and folder
+//   groundtruth wrote, every level down. An existing --out is replaced only when it is empty or
+//   holds what that list names and nothing else: a file a user put anywhere in it (or a folder of
+//   someone else's) is never deleted. The folder is looked at when the command starts and again
+//   at the swap, so a file added while a run goes on is kept too (the run then ends with exit 2).
+//   A marker from before the list went every level down ("entries", the top level) owns its
+//   top-level entries whole.
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <string>
 
 #include <sys/types.h>
 
 namespace gt {
 
 // Throws InputError when `out`'s parent does not exist or cannot be written, when `out` exists and
-// is not a folder, or when it holds anything groundtruth did not write there.
+// is not a folder, when it holds anything groundtruth did not write there, or when another process
+// is writing it; then holds `out`'s lock until write_folder_atomically ends or the process exits.
 void check_output_folder(const std::filesystem::path& out);
+
+// Throws InputError when `input`, a file or folder the command reads, is `out` or lies inside it:
+// replacing `out` would delete it. `command` starts the message.
+void refuse_input_inside_output(const std::filesystem::path& out, const std::filesystem::path& input,
+                                const std::string& command);
 
 // Writes into a fresh staging folder through `fill`, records the marker, then swaps it in place of
 // `out`. Removes stale staging folders of `out` first. Filesystem failures become InputError.
 void write_folder_atomically(const std::filesystem::path& out,
                              const std::function<void(const std::filesystem::path&)>& fill);
 
-// Starts the thread that turns SIGINT, SIGTERM and SIGHUP into a clean exit (call once, first
+// Starts the thread that turns SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2 and SIGALRM
+// (every signal whose default ends the process and that someone may send) into a clean exit (call once, first
 // thing in main, before any other thread starts).
 void install_interrupt_cleanup();
 
-// The worker processes an interruption must also end; compare/worker.cpp adds and removes them.
+// The child processes an interruption must also end, each the leader of its own process group
+// (the whole group is killed): compare/worker.cpp's workers and compare/subprocess.cpp's helpers
+// add and remove them.
 void add_running_worker(pid_t pid);
 void remove_running_worker(pid_t pid);
+
+// Temporary files outside the output folder (a plot's input, a helper's log) that an interruption
+// removes too; compare/subprocess.hpp's TemporaryFiles adds and removes them.
+void add_interruption_leftover(const std::filesystem::path& path);
+void remove_interruption_leftover(const std::filesystem::path& path);
 
 }  // namespace gt

@@ -463,6 +463,7 @@ void write_history_page(const History& history, const std::filesystem::path& fol
 namespace gt {
 
 int history_command(const HistoryOptions& options) {
+  for (const auto& input : options.inputs) refuse_input_inside_output(options.out, input, "history");
   const History history = read_history(options.inputs);
   check_output_folder(options.out);
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) { write_history_page(history, folder); });

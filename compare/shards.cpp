@@ -20,16 +20,14 @@
 namespace gt {
 namespace {
 
-constexpr int max_shards = 10000;
-
 std::optional<long> whole_number(const std::string& text) {
   if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
   return std::stol(text);
 }
 
 ShardSpec checked_shard(std::optional<long> index, std::optional<long> count, const std::string& what) {
-  if (!index || !count || *count < 1 || *count > max_shards || *index < 1 || *index > *count) {
-    throw InputError(fmt::format("--shard {}: expected K/N with 1 <= K <= N <= {} (K counts from 1)", what, max_shards));
+  if (!index || !count || *count < 1 || *count > max_shard_count || *index < 1 || *index > *count) {
+    throw InputError(fmt::format("--shard {}: expected K/N with 1 <= K <= N <= {} (K counts from 1)", what, max_shard_count));
   }
   return {static_cast<int>(*index), static_cast<int>(*count)};
 }
@@ -193,10 +191,36 @@ Report joined_report(const std::vector<LoadedShard>& shards, const std::string& 
   return joined;
 }
 
+// Copies a shard's case folder, files and folders only: a symbolic link or another special file is
+// refused, since a report folder holds none and following one would copy what lies outside the
+// shard into the merged report.
+void copy_case_folder(const std::filesystem::path& from, const std::filesystem::path& to) {
+  const auto refuse = [](const std::filesystem::path& entry, const std::filesystem::file_status& kind) {
+    throw InputError(fmt::format("merge: {} is {}; a shard's report holds only files and folders", entry.string(),
+                                 std::filesystem::is_symlink(kind) ? "a symbolic link" : "not a plain file"));
+  };
+  const auto kind = std::filesystem::symlink_status(from);
+  if (!std::filesystem::exists(kind)) return;  // a case that wrote no files
+  if (!std::filesystem::is_directory(kind)) refuse(from, kind);
+  std::filesystem::create_directory(to);
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(from)) {
+    const auto target = to / entry.path().lexically_relative(from);
+    const auto entry_kind = entry.symlink_status();
+    if (std::filesystem::is_directory(entry_kind)) {
+      std::filesystem::create_directory(target);
+    } else if (std::filesystem::is_regular_file(entry_kind)) {
+      std::filesystem::copy_file(entry.path(), target);
+    } else {
+      refuse(entry.path(), entry_kind);
+    }
+  }
+}
+
 }  // namespace
 
 int merge_shards(const MergeOptions& options, const std::string& command_line) {
   if (options.shards.empty()) throw InputError("merge: name the shards' report folders");
+  for (const auto& given : options.shards) refuse_input_inside_output(options.out, given, "merge");
   std::vector<LoadedShard> shards;
   for (const auto& given : options.shards) shards.push_back(load_shard(given));
   check_shard_set(shards);
@@ -204,12 +228,7 @@ int merge_shards(const MergeOptions& options, const std::string& command_line) {
   const Report joined = joined_report(shards, command_line);
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
     for (const auto& shard : shards) {
-      for (const auto& result : shard.report.cases) {
-        if (std::filesystem::is_directory(shard.folder / result.name)) {
-          std::filesystem::copy(shard.folder / result.name, folder / result.name,
-                                std::filesystem::copy_options::recursive);
-        }
-      }
+      for (const auto& result : shard.report.cases) copy_case_folder(shard.folder / result.name, folder / result.name);
     }
     write_report_files(joined, folder);
   });

@@ -25,6 +25,9 @@
 
 namespace gt {
 
+// The most shards a run may be split into (--shard K/N, and a shard record read back by merge).
+inline constexpr int max_shard_count = 10000;
+
 struct ShardSpec {
   int index = 1;  // K, 1-based
   int count = 1;  // N

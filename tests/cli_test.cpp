@@ -1188,7 +1188,7 @@ TEST(CliRun, ReportFolderIsReplacedWhole) {
   ASSERT_TRUE(report.is_object());
   EXPECT_EQ(report.at("environment").at("gl_platform"), "none") << "report.json is not the second run's";
   EXPECT_EQ(folder_entries(work.path()), std::vector<std::string>{"report"})
-      << "staging (report.tmp-*) or previous (report.old-*) folders left beside the report";
+      << "staging, previous or lock (.report.groundtruth-*) left beside the report";
 
   // A file the user put into the report folder since is theirs: the folder is no longer replaced.
   write_text(out / "my-notes.txt", "from the user\n");

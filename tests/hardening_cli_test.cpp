@@ -286,7 +286,7 @@ TEST_F(Hostile, StaleStagingOfAKilledRunIsRemovedByTheNextRun) {
     waitpid(child, nullptr, 0);
     gone = child;
   }
-  const fs::path stale = work_ / ("report.tmp-" + std::to_string(gone));
+  const fs::path stale = work_ / (".report.groundtruth-staging-" + std::to_string(gone));
   fs::create_directories(stale / "half.case");
   const auto run = gt::testing::run_program(
       groundtruth, {"run", "erosion.thermal.spec.*", "--out", (work_ / "report").string()}, work_.path());
@@ -308,7 +308,7 @@ void expect_clean_interruption(int signal_number) {
   pid_t pid = 0;
   ASSERT_EQ(posix_spawn(&pid, groundtruth.c_str(), &actions, nullptr, argv.data(), environ), 0);
   posix_spawn_file_actions_destroy(&actions);
-  const fs::path staging = out + ".tmp-" + std::to_string(pid);
+  const fs::path staging = work / (".report.groundtruth-staging-" + std::to_string(pid));
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!fs::exists(staging) && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));

@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "compare/shards.hpp"
 #include "core/errors.hpp"
+#include "core/names.hpp"
 
 namespace gt {
 namespace {
@@ -101,9 +103,21 @@ std::vector<CaseResult::Attempt> attempts_from_json(const json& in) {
   return attempts;
 }
 
+// A case name from a report: it becomes a folder's name when reports are merged, so it must be a
+// dotted identifier as every case name groundtruth gives is ('..' or 'a/b' would name a path).
+std::string case_name_of(const json& name) {
+  const std::string text = name.get<std::string>();
+  if (!is_dotted_identifier(text)) {
+    throw InputError(fmt::format("case name '{}' is not a dotted identifier (lower-case letters, digits, '_' and "
+                                 "single dots)",
+                                 text.substr(0, 120)));
+  }
+  return text;
+}
+
 CaseResult case_from_json(const json& in) {
   CaseResult result;
-  result.name = in.at("name").get<std::string>();
+  result.name = case_name_of(in.at("name"));
   result.algorithm = in.value("algorithm", "");
   result.input = in.value("input", "");
   result.notes = in.value("notes", std::vector<std::string>{});
@@ -125,9 +139,15 @@ CaseResult case_from_json(const json& in) {
   return result;
 }
 
+// The shard record: 1 <= index <= count <= max_shard_count, as --shard accepts them.
 ShardInfo shard_from_json(const json& in) {
-  return {in.at("index").get<int>(), in.at("count").get<int>(), in.at("selection").get<std::vector<std::string>>(),
-          in.value("balanced_by", "")};
+  ShardInfo shard{in.at("index").get<int>(), in.at("count").get<int>(), {}, in.value("balanced_by", "")};
+  if (shard.count < 1 || shard.count > max_shard_count || shard.index < 1 || shard.index > shard.count) {
+    throw InputError(fmt::format("index {} of {} is not a shard (1 <= index <= count <= {})", shard.index, shard.count,
+                                 max_shard_count));
+  }
+  for (const auto& name : in.at("selection")) shard.selection.push_back(case_name_of(name));
+  return shard;
 }
 
 }  // namespace
