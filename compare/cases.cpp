@@ -6,10 +6,12 @@
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <sstream>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/io/text_file.hpp"
 #include "core/json_keys.hpp"
 #include "core/names.hpp"
 
@@ -157,7 +159,7 @@ std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std:
   }
   for (std::size_t index = 0; index < files.size(); ++index) {
     const auto& file = files[index];
-    std::ifstream stream(file);
+    std::istringstream stream(read_text_file(file, json_document_limits, "case file"));
     nlohmann::json document;
     try {
       document = parse_json_bounded(stream, file.string());

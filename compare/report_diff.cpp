@@ -6,10 +6,13 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <sstream>
 
 #include <fmt/format.h>
 
+#include "compare/report/report_read.hpp"
 #include "core/errors.hpp"
+#include "core/io/text_file.hpp"
 #include "core/json_keys.hpp"
 
 namespace gt {
@@ -165,20 +168,30 @@ ReportDiff diff_checked_reports(const json& base, const json& next) {
 }  // namespace
 
 json read_report_json(const std::filesystem::path& file) {
-  std::ifstream stream(file);
-  if (!stream) throw InputError(fmt::format("cannot open {}", file.string()));
+  std::istringstream stream(read_text_file(file, json_document_limits, "report"));
+  json report;
   try {
-    json report = parse_json_bounded(stream, file.string());
-    check_report(report, file.string());
-    return report;
+    report = parse_json_bounded(stream, file.string());
   } catch (const json::exception& error) {
     throw InputError(fmt::format("{} is not valid JSON: {}", file.string(), error.what()));
   }
+  check_report(report, file.string());
+  // As strict as the readers that rebuild the report (history, merge, a run's workers): an unknown
+  // outcome ("FAIL", "eror") or a field of the wrong type is refused, never read as no change.
+  try {
+    report_from_json(report);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("{}: {}", file.string(), error.what()));
+  }
+  return report;
 }
 
 ReportDiff diff_reports(const json& base, const json& next) {
   check_report(base, "BASE");
   check_report(next, "NEW");
+  for (const auto& [report, which] : {std::pair{&base, "BASE"}, std::pair{&next, "NEW"}}) {
+    if ((*report)["cases"].empty()) throw InputError(fmt::format("{} holds no case: there is nothing to compare", which));
+  }
   try {
     return diff_checked_reports(base, next);
   } catch (const json::exception& error) {

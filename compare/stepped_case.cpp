@@ -101,12 +101,15 @@ std::filesystem::path external_config_path(const RunOptions& options, const Case
 Candidate external_candidate(const SteppedTwin& twin, const RunOptions& options, CaseResult& result) {
   const ExternalModel external = *options.external;
   const std::filesystem::path config = external_config_path(options, result);
+  // A temporary config lives as long as the steppers may be made, and is removed with the last.
+  const auto temporary = options.report_dir.empty() ? std::make_shared<TemporaryFiles>(std::vector{config}) : nullptr;
   write_bmi_config(config, twin.algorithm, result.name, twin.initial.grid, result.params);
   if (!options.report_dir.empty()) {
     result.artifacts.push_back({result.name + "/" + config.filename().string(), "text",
                                 "the config file the outside model was initialised with"});
   }
-  const auto make = [=, fields = twin.fields, grid = twin.initial.grid, algorithm = twin.algorithm] {
+  const auto make = [=, keep_config = temporary, fields = twin.fields, grid = twin.initial.grid,
+                     algorithm = twin.algorithm] {
     return std::make_unique<BmiStepper>(external.make(config), fields, grid, algorithm);
   };
   auto first = std::make_shared<std::unique_ptr<BmiStepper>>(make());

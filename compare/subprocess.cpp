@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "compare/output_folder.hpp"
+
 extern char** environ;
 
 namespace gt {
@@ -28,9 +30,16 @@ std::string last_line(const std::filesystem::path& log) {
 
 }  // namespace
 
+TemporaryFiles::TemporaryFiles(std::vector<std::filesystem::path> removed) : paths(std::move(removed)) {
+  for (const auto& path : paths) add_interruption_leftover(path);
+}
+
 TemporaryFiles::~TemporaryFiles() {
   std::error_code ignored;
-  for (const auto& path : paths) std::filesystem::remove_all(path, ignored);
+  for (const auto& path : paths) {
+    std::filesystem::remove_all(path, ignored);
+    remove_interruption_leftover(path);
+  }
 }
 
 std::filesystem::path temporary_path(std::string_view prefix, std::string_view suffix) {
@@ -47,15 +56,24 @@ std::string run_logged(const std::vector<std::string>& arguments, const std::fil
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  // Its own process group, known to the interruption's clean-up, which ends it with the run.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
   pid_t child = 0;
-  const int spawn_error = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
+  const int spawn_error = posix_spawn(&child, argv[0], &actions, &attributes, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   if (spawn_error != 0) return fmt::format("cannot run {}: {}", arguments[0], std::strerror(spawn_error));
+  add_running_worker(child);
 
   int status = 0;
-  while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) return fmt::format("waiting for {} failed: {}", arguments[0], std::strerror(errno));
+  int waited = 0;
+  while ((waited = waitpid(child, &status, 0)) < 0 && errno == EINTR) {
   }
+  remove_running_worker(child);
+  if (waited < 0) return fmt::format("waiting for {} failed: {}", arguments[0], std::strerror(errno));
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
   const std::string exit = WIFEXITED(status) ? fmt::format("exit status {}", WEXITSTATUS(status))
                                              : fmt::format("signal {}", WTERMSIG(status));

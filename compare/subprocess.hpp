@@ -5,7 +5,8 @@
 //   NAME is the file name of arguments[1] (the script). Its stdout and stderr both go to `log`.
 // temporary_path(prefix, suffix) -> a fresh path in the temporary directory, unique in this
 //   process: "<prefix>-<pid>-<counter><suffix>"; nothing is created.
-// TemporaryFiles removes its paths (files or folders) when it goes out of scope.
+// TemporaryFiles removes its paths (files or folders) when it goes out of scope, or when an
+// interruption ends the process first (compare/output_folder.hpp).
 #pragma once
 
 #include <filesystem>
@@ -22,7 +23,7 @@ std::filesystem::path temporary_path(std::string_view prefix, std::string_view s
 struct TemporaryFiles {
   std::vector<std::filesystem::path> paths;
   TemporaryFiles() = default;
-  explicit TemporaryFiles(std::vector<std::filesystem::path> removed) : paths(std::move(removed)) {}
+  explicit TemporaryFiles(std::vector<std::filesystem::path> removed);
   TemporaryFiles(const TemporaryFiles&) = delete;
   TemporaryFiles& operator=(const TemporaryFiles&) = delete;
   ~TemporaryFiles();

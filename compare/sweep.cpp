@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 #include "compare/report/plots.hpp"
 #include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
+#include "core/io/text_file.hpp"
 #include "core/json_keys.hpp"
 
 namespace gt {
@@ -51,9 +53,17 @@ Varied parse_vary(const std::string& text) {
   return varied;
 }
 
-void check_run_count(std::size_t runs, bool force) {
+// Counted in double: a product of the axes' sizes cannot wrap around to a small number (3.1e20
+// combinations once counted as 2). --force lifts the cap up to the most runs one report can
+// list; beyond that nothing is run.
+void check_run_count(double runs, bool force) {
+  constexpr double most_runs_forced = 1e6;
+  if (runs > most_runs_forced) {
+    throw InputError(fmt::format("sweep: {:.3g} runs, more than any sweep may have ({:.0f}); vary fewer values",
+                                 runs, most_runs_forced));
+  }
   if (runs > sweep_run_cap && !force) {
-    throw InputError(fmt::format("sweep: {} runs, more than the cap of {}; pass --force to run them all", runs,
+    throw InputError(fmt::format("sweep: {:.0f} runs, more than the cap of {}; pass --force to run them all", runs,
                                  sweep_run_cap));
   }
 }
@@ -285,7 +295,7 @@ std::string assignment_text(const std::string& name, const nlohmann::json& value
 Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bool force) {
   if (vary.empty()) throw InputError("sweep: give at least one --vary name=v1,v2,..., or --sets FILE of named parameter sets");
   std::vector<Varied> axes;
-  std::size_t runs = 1;
+  double runs = 1.0;
   for (const auto& text : vary) {
     Varied varied = parse_vary(text);
     for (const auto& axis : axes) {
@@ -294,13 +304,13 @@ Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bo
     if (sets_parameter(base, varied.name)) {
       throw InputError(fmt::format("{} is both --set and --vary: choose one", varied.name));
     }
-    runs *= varied.values.size();
+    runs *= static_cast<double>(varied.values.size());
     axes.push_back(std::move(varied));
   }
   check_run_count(runs, force);
   Sweep sweep;
   for (const auto& axis : axes) sweep.varied.push_back(axis.name);
-  for (std::size_t index = 0; index < runs; ++index) {
+  for (std::size_t index = 0; index < static_cast<std::size_t>(runs); ++index) {
     AdHocCase variant = base;
     std::string name = fmt::format("sweep.{}.{}", base.algorithm, ad_hoc_input_name(base));
     std::size_t rest = index;
@@ -322,8 +332,7 @@ Sweep make_sweep(const AdHocCase& base, const std::vector<std::string>& vary, bo
 
 Sweep make_sweep_of_sets(const AdHocCase& base, const std::filesystem::path& file, bool force) {
   const std::string where = fmt::format("--sets {}", file.string());
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot read the file", where));
+  std::istringstream in(read_text_file(file, json_document_limits, "--sets"));
   nlohmann::ordered_json sets;  // the sets run in the file's order
   try {
     sets = parse_ordered_json_bounded(in, where);
@@ -335,7 +344,7 @@ Sweep make_sweep_of_sets(const AdHocCase& base, const std::filesystem::path& fil
                                  "{{\"name\": {{\"parameter\": value, ...}}, ...}}",
                                  where));
   }
-  check_run_count(sets.size(), force);
+  check_run_count(static_cast<double>(sets.size()), force);
   Sweep sweep;
   sweep.varied = {"set"};
   for (const auto& [set_name, params] : sets.items()) {

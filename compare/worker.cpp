@@ -5,12 +5,14 @@
 #include <signal.h>
 #include <spawn.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <string>
 #include <thread>
 
 #include <fmt/format.h>
@@ -23,6 +25,8 @@ namespace gt {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr const char* parent_variable = "GROUNDTRUTH_PARENT_PID";
 
 struct Running {
   std::size_t task = 0;
@@ -69,7 +73,9 @@ pid_t spawn(const WorkerTask& task) {
   sigset_t no_signals;
   sigemptyset(&no_signals);
   posix_spawnattr_setsigmask(&attributes, &no_signals);
-  auto variables = environment_with(task.environment);
+  auto overrides = task.environment;
+  overrides.push_back(fmt::format("{}={}", parent_variable, getpid()));
+  auto variables = environment_with(overrides);
   std::vector<char*> envp;
   for (auto& variable : variables) envp.push_back(variable.data());
   envp.push_back(nullptr);
@@ -101,6 +107,13 @@ std::vector<std::string> llvmpipe_share(int parallel) {
   if (std::getenv("LP_NUM_THREADS") != nullptr || parallel <= 1) return {};
   const long cores = std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
   return {fmt::format("LP_NUM_THREADS={}", std::max(1L, cores / parallel))};
+}
+
+void end_with_parent() {
+  const char* parent = std::getenv(parent_variable);
+  if (parent == nullptr) return;
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (std::to_string(getppid()) != parent) _exit(128 + SIGKILL);  // it died before the request
 }
 
 std::string signal_description(int signal_number) {

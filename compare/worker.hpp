@@ -20,6 +20,12 @@ struct WorkerResult {
 // "SIGSEGV (signal 11)" for a signal number.
 std::string signal_description(int signal_number);
 
+// In a worker (a process whose environment names its parent in GROUNDTRUTH_PARENT_PID, as
+// run_workers starts them): asks the kernel to kill it when its parent dies, so that workers of a
+// run killed outright (SIGKILL, the memory killer) do not run on; exits at once when the parent
+// is already gone. Nothing outside a worker. Call first thing in main.
+void end_with_parent();
+
 struct WorkerTask {
   std::vector<std::string> args;  // after the executable's name
   std::filesystem::path log;      // stdout and stderr (created or replaced)

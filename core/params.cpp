@@ -121,7 +121,13 @@ nlohmann::json parse_param_text(const std::string& algorithm, const ParamSpecs& 
         throw InputError(fmt::format("{}: parameter {} = '{}' is not a number; expected {}", algorithm, name, text,
                                      range_text(spec)));
       }
-      if (spec.kind == ParamKind::integer && std::floor(number) == number) {
+      if (!std::isfinite(number)) {
+        throw InputError(fmt::format("{}: parameter {} = '{}' is not finite; expected {}", algorithm, name, text,
+                                     range_text(spec)));
+      }
+      // Whole numbers that a long long holds exactly become integers; 1e300 would not convert
+      // (undefined) and is refused below as out of range.
+      if (spec.kind == ParamKind::integer && std::abs(number) < 9.0e15 && std::floor(number) == number) {
         return checked_value(algorithm, spec, static_cast<long long>(number));
       }
       return checked_value(algorithm, spec, number);

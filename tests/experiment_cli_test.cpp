@@ -104,7 +104,16 @@ TEST(Sweep, BadVariationsAreRefused) {
   const fs::path out = work / "sweep";
   std::string many = "talus_angle=1";
   for (int angle = 2; angle <= 65; ++angle) many += "," + std::to_string(angle);
+  // 1000^7 = 10^21 combinations, which a 64-bit count wrapped to 3.1e20's remainder: refused
+  // even with --force.
+  std::vector<std::string> immense = {"--force"};
+  for (const char* name : {"a", "b", "c", "d", "e", "f", "g"}) {
+    std::string axis = std::string(name) + "=0";
+    for (int value = 1; value < 1000; ++value) axis += "," + std::to_string(value);
+    immense.insert(immense.end(), {"--vary", axis});
+  }
   const std::vector<std::pair<std::vector<std::string>, std::string>> refusals = {
+      {immense, "1e+21 runs, more than any sweep may have"},
       {{"--vary", "talus=10,20"}, "unknown parameter 'talus'"},
       {{"--vary", "talus_angle=10,95"}, "out of range"},
       {{"--vary", many}, "more than the cap of 64"},

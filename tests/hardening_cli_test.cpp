@@ -7,6 +7,7 @@
 // that would overflow the lattice index, and memory estimates checked under an address-space
 // limit. Every refusal is exit 2 with a message naming the problem, and leaves nothing behind.
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -16,10 +17,12 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -212,7 +215,10 @@ TEST_F(Hostile, CommandLineNumbersMustBeFiniteAndFit) {
        {std::vector<std::string>{"run", "--algorithm", "noise.simplex2", "--size", "4294967297x1"},
         std::vector<std::string>{"run", "--algorithm", "noise.simplex2", "--cell-size", "nan"},
         std::vector<std::string>{"diff-image", "a.png", "b.png", "--tolerance", "nan"},
-        std::vector<std::string>{"render", "a.off", "--out", "a.png", "--cell-size", "nan"}}) {
+        std::vector<std::string>{"render", "a.off", "--out", "a.png", "--cell-size", "nan"},
+        std::vector<std::string>{"stats", "a.npy", "--stream-threshold", "nan"},
+        std::vector<std::string>{"--memory-limit", "nan", "list"},
+        std::vector<std::string>{"render", "a.off", "--out", "a.png", "--azimuth", "nan"}}) {
     const auto run = gt::testing::run_program(groundtruth, args, work_.path());
     EXPECT_EQ(run.status, 2) << run;
     EXPECT_THAT(run.output(), ::testing::AnyOf(HasSubstr("finite"), HasSubstr("4294967297x1"))) << run;
@@ -277,8 +283,92 @@ TEST_F(Hostile, ProgressLinesWithoutATerminalAndQuietSilencesThem) {
   EXPECT_THAT(quiet.err, ::testing::Not(HasSubstr("[case")));
 }
 
+// Where a file is expected only a regular file is read: a FIFO would block forever, /dev/zero
+// never ends, a folder reads as empty.
+TEST_F(Hostile, PipesDevicesAndFoldersAreRefusedWhereAFileIsExpected) {
+  ASSERT_EQ(mkfifo((work_ / "fifo").c_str(), 0600), 0);
+  fs::create_directory(work_ / "folder");
+  const std::string out = (work_ / "out").string();
+  for (const std::string special : {(work_ / "fifo").string(), std::string("/dev/zero"), (work_ / "folder").string()}) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"run", "erosion.thermal.spec.*", "--expectations", special, "--out", out},
+          std::vector<std::string>{"run", "erosion.thermal.spec.*", "--flakes", special, "--out", out},
+          std::vector<std::string>{"diff-reports", special, special}}) {
+      const auto run = gt::testing::run_program(groundtruth, args, work_.path());
+      EXPECT_EQ(run.status, 2) << run;
+      EXPECT_THAT(run.err, HasSubstr("not a regular file")) << run;
+    }
+  }
+  EXPECT_EQ(entries_of(work_.path()), (std::vector<std::string>{"fifo", "folder"}));
+}
+
+// diff-reports is as strict as history: an outcome it does not know, a name of the wrong type or a
+// report without cases is bad input (exit 2), never "no change".
+TEST_F(Hostile, ReportsWithUnknownOutcomesOrNoCasesAreRefused) {
+  const auto made = gt::testing::run_program(
+      groundtruth, {"run", "erosion.thermal.spec.*", "--quiet", "--out", (work_ / "out").string()}, work_.path());
+  ASSERT_EQ(made.status, 0) << made;
+  const json report = json::parse(gt::testing::read_text(work_ / "out" / "report.json"));
+  const auto refused = [&](const std::function<void(json&)>& change, const std::string& message) {
+    json changed = report;
+    change(changed);
+    std::ofstream(work_ / "changed.json") << changed.dump();
+    const auto run = gt::testing::run_program(
+        groundtruth, {"diff-reports", (work_ / "out" / "report.json").string(), (work_ / "changed.json").string()},
+        work_.path());
+    EXPECT_EQ(run.status, 2) << run;
+    EXPECT_THAT(run.err, HasSubstr(message)) << run;
+  };
+  for (const char* word : {"FAIL", "failed", "eror"}) {
+    refused([&](json& r) { r["cases"][0]["checks"][0]["status"] = word; }, fmt::format("'{}' is not an outcome", word));
+    refused([&](json& r) { r["cases"][0]["status"] = word; }, fmt::format("'{}' is not an outcome", word));
+  }
+  refused([](json& r) { r["cases"][0]["name"] = 7; }, "malformed");
+  refused([](json& r) { r["cases"] = json::array(); }, "holds no case");
+}
+
+TEST_F(Hostile, AnEmptyOrOverlongOutputIsBadInput) {
+  const auto empty = gt::testing::run_program(groundtruth, {"run", "erosion.thermal.spec.*", "--out", ""}, work_.path());
+  EXPECT_EQ(empty.status, 2) << empty;
+  EXPECT_THAT(empty.err, HasSubstr("--out is empty")) << empty;
+  const auto long_name =
+      gt::testing::run_program(groundtruth, {"run", "erosion.thermal.spec.*", "--out", std::string(5000, 'x')}, work_.path());
+  EXPECT_EQ(long_name.status, 2) << long_name;
+  EXPECT_THAT(long_name.err, ::testing::Not(HasSubstr("internal error"))) << long_name;
+  EXPECT_TRUE(entries_of(work_.path()).empty());
+}
+
+// Output that could not be written is not a success: stdout on a full device is exit 2.
+TEST_F(Hostile, AnUnwritableStandardOutputIsNotASuccess) {
+  const auto run = gt::testing::run_program("/bin/sh", {"-c", "exec \"$0\" list > /dev/full", groundtruth}, work_.path());
+  EXPECT_EQ(run.status, 2) << run;
+  EXPECT_THAT(run.err, HasSubstr("cannot write to standard output")) << run;
+}
+
+TEST_F(Hostile, AParameterGivenTwiceIsRefused) {
+  const std::string volcano = (fs::path(GT_DATASET_DIR) / "real" / "volcano.json").string();
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"run", "--algorithm", "erosion.thermal", "--input", volcano, "--set", "iterations=1",
+                                 "--set", "iterations=2", "--out", (work_ / "out").string()},
+        std::vector<std::string>{"ab", "--algorithm", "erosion.thermal", "--input", volcano, "--a", "iterations=1",
+                                 "--a", "iterations=2", "--b", "iterations=3", "--out", (work_ / "out").string()}}) {
+    const auto run = gt::testing::run_program(groundtruth, args, work_.path());
+    EXPECT_EQ(run.status, 2) << run;
+    EXPECT_THAT(run.err, HasSubstr("names iterations twice (iterations=1 and iterations=2)")) << run;
+  }
+  for (const char* infinite : {"iterations=inf", "iterations=-inf", "iterations=nan"}) {
+    const auto run = gt::testing::run_program(
+        groundtruth,
+        {"run", "--algorithm", "erosion.thermal", "--input", volcano, "--set", infinite, "--out", (work_ / "out").string()},
+        work_.path());
+    EXPECT_EQ(run.status, 2) << run;
+    EXPECT_THAT(run.err, HasSubstr("is not finite")) << run;
+  }
+  EXPECT_TRUE(entries_of(work_.path()).empty());
+}
+
 TEST_F(Hostile, StaleStagingOfAKilledRunIsRemovedByTheNextRun) {
-  // A run killed outright leaves report.tmp-PID; no process has that PID any more.
+  // A run killed outright leaves .report.groundtruth-staging-PID; no process has that PID any more.
   pid_t gone = 0;
   {
     const pid_t child = fork();

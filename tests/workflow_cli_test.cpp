@@ -8,6 +8,7 @@
 #include <fstream>
 #include <future>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -161,6 +162,40 @@ TEST(Workflow, AWorkerKilledBySignalIsAnErrorAndTheRunGoesOn) {
     ASSERT_EQ(entry["artifacts"].size(), 1u);
     EXPECT_TRUE(fs::exists(work / "crashed" / entry["artifacts"][0].get<std::string>()));
   }
+}
+
+// The parent of process `pid`, from /proc/PID/stat ("pid (comm) state ppid ...").
+pid_t parent_of(pid_t pid) {
+  const std::string stat = gt::testing::read_text(fs::path("/proc") / std::to_string(pid) / "stat");
+  std::istringstream fields(stat.substr(stat.rfind(')') + 1));
+  std::string state;
+  pid_t parent = 0;
+  fields >> state >> parent;
+  return parent;
+}
+
+// A run killed outright cannot end its workers itself: the kernel does (PR_SET_PDEATHSIG), so a
+// long case does not run on for nobody.
+TEST(Workflow, WorkersEndWithAParentKilledOutright) {
+  const gt::testing::TemporaryFolder work("gt_workflow");
+  auto finished = std::async(std::launch::async, [&] {
+    return run({"run", "--algorithm", "erosion.thermal", "--input", volcano.string(), "--set", "iterations=100000",
+                "--backend", "cpu", "-j", "2", "--out", "killed"},
+               work.path());
+  });
+  std::vector<pid_t> workers;
+  for (int poll = 0; poll < 600 && workers.empty(); ++poll) {  // up to a minute for the worker to start
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    workers = workers_of(work.path(), "--algorithm");
+  }
+  ASSERT_EQ(workers.size(), 1u) << "the long ad-hoc case's worker never showed up";
+  kill(parent_of(workers.front()), SIGKILL);
+  EXPECT_EQ(finished.get().status, 128 + SIGKILL);
+  for (int poll = 0; poll < 100 && !workers.empty(); ++poll) {  // up to 10 s
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    workers = workers_of(work.path(), "--algorithm");
+  }
+  EXPECT_TRUE(workers.empty()) << "the worker ran on after its parent was killed";
 }
 
 // A case past --case-timeout is killed and named; the rest of the run is unaffected. 20 s: the

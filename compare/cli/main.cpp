@@ -27,7 +27,11 @@
 // stats: 0 something measured, 2 unreadable or nothing measurable;
 // render: 0 written, 2 bad input, a camera inside the mesh or seeing nothing, or no GL context for gpu).
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <map>
 #include <optional>
 #include <iostream>
 
@@ -46,12 +50,14 @@
 #include "compare/cli/stats.hpp"
 #include "compare/driver.hpp"
 #include "compare/mutants/mutants.hpp"
+#include "compare/output_folder.hpp"
 #include "compare/progress.hpp"
 #include "compare/provenance.hpp"
 #include "compare/report_diff.hpp"
 #include "compare/report_history.hpp"
 #include "compare/shards.hpp"
 #include "compare/sweep.hpp"
+#include "compare/worker.hpp"
 #include "core/errors.hpp"
 
 namespace {
@@ -266,8 +272,22 @@ void print_mutant_list(const std::vector<gt::Mutant>& selected, bool as_json) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  gt::install_interrupt_cleanup();
+namespace {
+
+// One option naming a parameter twice (--set a=1 --set a=2) is refused: which value was meant?
+void refuse_repeated(const std::vector<std::string>& assignments, const char* option) {
+  std::map<std::string, std::string> given;
+  for (const std::string& assignment : assignments) {
+    const std::string name = assignment.substr(0, assignment.find('='));
+    const auto [earlier, first] = given.emplace(name, assignment);
+    if (!first) {
+      throw gt::InputError(fmt::format("{} names {} twice ({} and {}): give it once", option, name, earlier->second,
+                                       assignment));
+    }
+  }
+}
+
+int run_command_line(int argc, char** argv) {
   CLI::App app{"groundtruth: CPU references and GPU twins of terrain and cave algorithms, compared"};
   app.require_subcommand(1);
   // Before or after the subcommand (fallthrough): a cap below what the machine and ulimit -v allow.
@@ -275,7 +295,7 @@ int main(int argc, char** argv) {
   app.add_option("--memory-limit", memory_limit_mib,
                  "refuse any input or case whose memory estimate exceeds this many MiB (the machine's available "
                  "memory and ulimit -v are always respected)")
-      ->check(CLI::Range(1.0, 1e9));
+      ->check(finite_number & CLI::Range(1.0, 1e9));
   app.fallthrough();
 
   bool list_as_json = false;
@@ -388,7 +408,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   mutants->add_option("--timeout", mutant_timeout, "seconds a mutant's run may take")
-      ->check(CLI::Range(1.0, 86400.0))
+      ->check(finite_number & CLI::Range(1.0, 86400.0))
       ->capture_default_str();
 
   std::string mesh_file;
@@ -421,17 +441,17 @@ int main(int argc, char** argv) {
   render->add_option("--width", render_options.width, "pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   render->add_option("--height", render_options.height, "pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   render->add_option("--azimuth", render_options.azimuth_deg, "orbit camera: degrees around +y, from +z towards +x")
-      ->check(CLI::Range(-360.0, 360.0))
+      ->check(finite_number & CLI::Range(-360.0, 360.0))
       ->capture_default_str();
   render->add_option("--elevation", render_options.elevation_deg, "orbit camera: degrees above the xz plane")
-      ->check(CLI::Range(-89.0, 89.0))
+      ->check(finite_number & CLI::Range(-89.0, 89.0))
       ->capture_default_str();
   render->add_option("--distance", render_options.distance,
                      "orbit camera: distance in bounding-box half diagonals (0: the box's sphere fits the view)")
       ->check(finite_number & CLI::NonNegativeNumber)
       ->capture_default_str();
   render->add_option("--fov", render_options.fov_deg, "vertical field of view, degrees")
-      ->check(CLI::Range(1.0, 179.0))
+      ->check(finite_number & CLI::Range(1.0, 179.0))
       ->capture_default_str();
   render->add_option("--eye", render_options.eye, "free camera: eye X,Y,Z (with --target)")->delimiter(',')->expected(3);
   render->add_option("--target", render_options.target, "free camera: point looked at X,Y,Z")->delimiter(',')->expected(3);
@@ -439,7 +459,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "plain", "terrain", "cave"}))
       ->capture_default_str();
   render->add_option("--vertical-scale", render_options.vertical_scale, "heightmaps: vertical exaggeration")
-      ->check(CLI::Range(0.01, 100.0))
+      ->check(finite_number & CLI::Range(0.01, 100.0))
       ->capture_default_str();
   render->add_option("--cell-size", render_options.cell_size, "heightmaps: cell size in metres (0: the file's)")
       ->check(finite_number & CLI::NonNegativeNumber);
@@ -484,7 +504,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   stats->add_option("--stream-threshold", stats_options.stream_threshold_cells,
                     "contributing area, in cells, where a stream starts")
-      ->check(CLI::Range(2.0, 1e9))
+      ->check(finite_number & CLI::Range(2.0, 1e9))
       ->capture_default_str();
 
   try {
@@ -534,6 +554,7 @@ int main(int argc, char** argv) {
         throw gt::InputError("--input belongs to an ad-hoc run: name its --algorithm too");
       }
       if (!grid_size.empty()) parse_grid_size(grid_size, ad_hoc);
+      refuse_repeated(ad_hoc.assignments, "--set");
       if (!ad_hoc.assignments.empty() && ad_hoc.algorithm.empty()) {
         throw gt::InputError("--set applies to an ad-hoc run: give --algorithm too");
       }
@@ -549,6 +570,7 @@ int main(int argc, char** argv) {
     if (sweep->parsed()) {
       auto options = driver_options(sweep_shared, command_line, memory_limit_mib);
       if (!sweep_grid_size.empty()) parse_grid_size(sweep_grid_size, sweep_base);
+      refuse_repeated(sweep_base.assignments, "--set");
       options.sweep = sweep_sets.empty() ? gt::make_sweep(sweep_base, vary, force_sweep)
                                          : gt::make_sweep_of_sets(sweep_base, sweep_sets, force_sweep);
       return gt::run_driver(options);
@@ -556,6 +578,9 @@ int main(int argc, char** argv) {
     if (ab->parsed()) {
       auto options = driver_options(ab_shared, command_line, memory_limit_mib);
       if (!ab_grid_size.empty()) parse_grid_size(ab_grid_size, ab_base);
+      refuse_repeated(ab_base.assignments, "--set");
+      refuse_repeated(a_assignments, "--a");
+      refuse_repeated(b_assignments, "--b");
       options.sweep = gt::make_ab(ab_base, a_assignments, b_assignments);
       return gt::run_driver(options);
     }
@@ -593,8 +618,28 @@ int main(int argc, char** argv) {
   } catch (const gt::InputError& error) {
     fmt::print(stderr, "groundtruth: {}\n", error.what());
     return exit_bad_input;
+  } catch (const std::filesystem::filesystem_error& error) {
+    // A path the user gave that the system refuses (too long, a loop of links, a full disk, no
+    // permission): the path and the system's reason, as bad input.
+    fmt::print(stderr, "groundtruth: {}\n", error.what());
+    return exit_bad_input;
   } catch (const std::exception& error) {
     fmt::print(stderr, "groundtruth: internal error: {}\n", error.what());
     return 1;
   }
+}
+
+}  // namespace
+
+// A command's output that could not be written (stdout on a full disk, a closed pipe) is not a
+// success: its status becomes 2 with the reason on stderr.
+int main(int argc, char** argv) {
+  gt::end_with_parent();
+  gt::install_interrupt_cleanup();
+  const int status = run_command_line(argc, argv);
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    fmt::print(stderr, "groundtruth: cannot write to standard output: {}\n", std::strerror(errno));
+    return status == 0 || status == 1 ? exit_bad_input : status;
+  }
+  return status;
 }

@@ -2,6 +2,7 @@
 #include "compare/external/reference_bmi.hpp"
 
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 
 #include "compare/algorithm.hpp"
 #include "core/errors.hpp"
+#include "core/io/text_file.hpp"
 
 namespace gt {
 namespace {
@@ -23,8 +25,7 @@ struct Config {
 };
 
 Config read_config(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("BMI config {}: cannot be read", path.string()));
+  std::istringstream in(read_text_file(path, hand_written_limits, "BMI config"));
   Config config;
   std::string line;
   while (std::getline(in, line)) {

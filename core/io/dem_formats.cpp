@@ -14,6 +14,7 @@
 #include <memory>
 #include <numbers>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 
 #include "core/errors.hpp"
 #include "core/io/npy.hpp"
+#include "core/io/text_file.hpp"
 #include "core/json_keys.hpp"
 
 namespace gt::detail {
@@ -37,8 +39,7 @@ constexpr double volcano_cell_size_m = 10.0;
 // ---- volcano JSON ----------------------------------------------------------------------------
 
 nlohmann::json parse_json_file(const path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("cannot open {}", file.string()));
+  std::istringstream in(read_text_file(file, json_document_limits, "heightmap"));
   try {
     return parse_json_bounded(in, file.string());
   } catch (const nlohmann::json::exception& error) {  // syntax errors and numbers out of range
