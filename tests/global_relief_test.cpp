@@ -5,6 +5,7 @@
 #include <netcdf.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -143,6 +144,50 @@ TEST(GlobalGrid, RefusesFilesAndVariablesItCannotRead) {
   fs::remove(path);
   EXPECT_THROW(global_relief(GlobalGrid{}, 0.0, 1), InputError);
   EXPECT_THROW(global_relief(GlobalGrid{}), InputError) << "no coordinates";
+}
+
+// Big-endian 32-bit words, as the classic header spells every number.
+std::string words(std::initializer_list<std::uint32_t> values) {
+  std::string bytes;
+  for (const std::uint32_t value : values) {
+    for (int shift = 24; shift >= 0; shift -= 8) bytes += static_cast<char>(value >> shift & 0xFF);
+  }
+  return bytes;
+}
+
+std::string refusal_of(const fs::path& file) {
+  try {
+    read_global_grid(file.string());
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(read without complaint)";
+}
+
+// libnetcdf allocates what a classic header declares (2^31 variables in 96 bytes crashed it) and
+// fills a truncated file's missing data with the fill value: both are refused before it opens them.
+TEST(GlobalGrid, HeadersThatDeclareMoreThanTheFileHoldsAreRefused) {
+  const fs::path file = fs::temp_directory_path() / "gt_global_grid_hostile.nc";
+  const std::string absent = words({0, 0});
+  const std::vector<std::pair<std::string, std::string>> headers = {
+      {words({0, 0x0A, 0x80000000}), "declares 2147483648 dimensions"},
+      {words({0}) + absent + absent + words({0x0B, 0x80000000}), "declares 2147483648 variables"},
+      {words({0}) + absent + words({0x0C, 1, 1}) + std::string("a\0\0\0", 4) + words({2, 0x7FFFFFFF}),
+       "declares 2147483647 values of attribute a"},
+  };
+  for (const auto& [body, message] : headers) {
+    std::string bytes = "CDF\x01" + body;
+    bytes.resize(std::max<std::size_t>(bytes.size(), 96), '\0');
+    std::ofstream(file, std::ios::binary) << bytes;
+    EXPECT_NE(refusal_of(file).find(message), std::string::npos) << refusal_of(file) << " (want " << message << ")";
+  }
+  fs::remove(file);
+
+  const fs::path whole = write_grid({}, "gt_global_grid_truncated.nc");
+  ASSERT_NO_THROW(read_global_grid(whole.string()));
+  fs::resize_file(whole, fs::file_size(whole) * 7 / 10);
+  EXPECT_NE(refusal_of(whole).find("truncated: variable"), std::string::npos) << refusal_of(whole);
+  fs::remove(whole);
 }
 
 }  // namespace

@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/io/netcdf_header.hpp"
 #include "core/memory.hpp"
 
 namespace gt {
@@ -19,6 +21,11 @@ namespace {
 class NetcdfFile {
  public:
   explicit NetcdfFile(const std::string& path) : path_(path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+      throw InputError(fmt::format("{}: no such file, or not a regular file (a pipe or device would block)", path));
+    }
+    detail::check_netcdf_header(path);  // before libnetcdf allocates what the header declares
     const int status = nc_open(path.c_str(), NC_NOWRITE, &id_);
     if (status != NC_NOERR) {
       throw InputError(fmt::format("{}: not a netCDF file libnetcdf can read ({})", path, nc_strerror(status)));

@@ -8,7 +8,9 @@
 // shift), in the variable's own unit (its `units` attribute, "m" when it has none); cells equal to
 // the variable's _FillValue or missing_value, or not finite, are no-data. The cell sizes of the
 // Grid are the coordinate spacings in degrees (horizontal_unit "degree").
-// Throws InputError naming the file for a file libnetcdf cannot open, a variable that is missing
+// Throws InputError naming the file for a path that is not a regular file, a classic header whose
+// counts exceed the file or whose data is cut short (core/io/netcdf_header.hpp), a file libnetcdf
+// cannot open, a variable that is missing
 // or not 2-D, dimensions without coordinate variables, a first dimension whose values are not
 // latitudes within [-90, 90] or coordinates that are not strictly monotonic, a size beyond the
 // memory limit (core/memory.hpp, estimated before reading), or no valid cell.
