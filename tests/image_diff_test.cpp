@@ -445,6 +445,27 @@ TEST_F(DiffImageCommand, BadInputExitsTwoAndWritesNothing) {
   EXPECT_EQ(folder.entries().size(), 2u);
 }
 
+// The mask is a second file the user did not name: it replaces a mask diff-image wrote (a rerun
+// into the same --out) but never a picture of the user's that has its name.
+TEST_F(DiffImageCommand, TheMaskReplacesOnlyAMaskGroundtruthWrote) {
+  const Levels a = scene();
+  const std::string a_png = a.write_png(path("a.png")).string();
+  const std::string b_png = with_brightened_patch(a).write_png(path("b.png")).string();
+  const std::string users = shifted_right(a).write_png(path("d.mask.png")).string();
+  const std::string before = read_text(users);
+  const ProgramRun refused = diff_image({a_png, b_png, "--out", path("d.png").string()});
+  EXPECT_EQ(refused.status, 2) << refused;
+  EXPECT_THAT(refused.err, HasSubstr("which groundtruth did not write"));
+  EXPECT_EQ(read_text(users), before);
+  EXPECT_FALSE(fs::exists(path("d.png")));
+
+  const std::string ours = path("e.png").string();
+  ASSERT_EQ(diff_image({a_png, b_png, "--out", ours}).status, 1);
+  EXPECT_TRUE(written_by_groundtruth(path("e.mask.png")));
+  EXPECT_FALSE(written_by_groundtruth(users));
+  EXPECT_EQ(diff_image({a_png, a_png, "--out", ours}).status, 0) << "a rerun replaces its own mask";
+}
+
 TEST_F(DiffImageCommand, AnOutputNamingAnInputIsRefused) {
   const Levels a = scene();
   const std::string a_png = a.write_png(path("a.png")).string();

@@ -148,9 +148,12 @@ Rgb verdict_colour(PixelVerdict verdict) {
   return fails_red;
 }
 
-// Writes one colour per pixel as 8-bit RGB, under a temporary name renamed into place.
+// Writes one colour per pixel as 8-bit RGB, under a temporary name renamed into place, signed
+// Software = groundtruth (how diff-image tells its own mask from a user's picture of that name).
 void write_rgb_picture(int width, int height, const std::vector<Rgb>& colours, const std::filesystem::path& file) {
-  OIIO::ImageBuf picture(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
+  spec.attribute("Software", groundtruth_software_tag);
+  OIIO::ImageBuf picture(spec);
   picture.set_pixels(picture.roi(), OIIO::TypeDesc::FLOAT, colours.data());
   const std::filesystem::path temporary =
       file.parent_path() / fmt::format(".{}.{}.partial{}", file.filename().string(), getpid(),
@@ -167,6 +170,15 @@ void write_rgb_picture(int width, int height, const std::vector<Rgb>& colours, c
     throw InputError(fmt::format("cannot write {}: {}", file.string(), error.message()));
   }
 }
+
+}  // namespace
+
+bool written_by_groundtruth(const std::filesystem::path& picture) {
+  const auto input = OIIO::ImageInput::open(picture.string());
+  return input && input->spec().get_string_attribute("Software") == groundtruth_software_tag;
+}
+
+namespace {
 
 std::string describe_shape(const OIIO::ImageSpec& spec) {
   std::string shape = fmt::format("{}x{}", spec.width, spec.height);

@@ -91,4 +91,9 @@ void write_verdict_mask(const NeighbourhoodComparison& comparison, const std::fi
 double write_difference_heat_map(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const std::filesystem::path& file,
                                  double scale = 0.0);
 
+// Both pictures above carry Software = groundtruth_software_tag. True when `picture` is a file
+// OpenImageIO reads that carries it: one groundtruth wrote, which it may replace.
+inline constexpr const char* groundtruth_software_tag = "groundtruth";
+bool written_by_groundtruth(const std::filesystem::path& picture);
+
 }  // namespace gt

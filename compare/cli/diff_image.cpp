@@ -41,7 +41,8 @@ bool same_file(const fs::path& output, const fs::path& input) {
   return !output_error && !input_error && resolved_output == resolved_input;
 }
 
-// The pictures go to an existing folder and overwrite neither input.
+// The pictures go to an existing folder and overwrite neither input; the mask, which the user did
+// not name, replaces only a mask groundtruth wrote.
 void check_outputs(const DiffImageOptions& options) {
   const fs::path folder = options.out.parent_path().empty() ? fs::path(".") : options.out.parent_path();
   std::error_code error;
@@ -55,6 +56,12 @@ void check_outputs(const DiffImageOptions& options) {
                                      output.string(), input.string()));
       }
     }
+  }
+  const fs::path mask = mask_path(options.out);
+  if (fs::exists(fs::symlink_status(mask, error)) && !written_by_groundtruth(mask)) {
+    throw InputError(fmt::format("--out {}: the verdict mask would replace {}, which groundtruth did not write; move "
+                                 "it or choose another --out",
+                                 options.out.string(), mask.string()));
   }
 }
 
