@@ -163,6 +163,13 @@ TEST(Sweep, NamedParameterSetsFromAFile) {
   EXPECT_TRUE(fs::exists(out / "sweep.html"));
 }
 
+// {"s0": {}, "s1": {}, ...}: `count` empty sets.
+std::string many_sets(int count) {
+  std::string text = "{";
+  for (int index = 0; index < count; ++index) text += (index ? ", \"s" : "\"s") + std::to_string(index) + "\": {}";
+  return text + "}";
+}
+
 TEST(Sweep, BadSetFilesAreRefused) {
   const gt::testing::TemporaryFolder work("gt_sweep");
   const fs::path out = work / "sweep";
@@ -176,6 +183,7 @@ TEST(Sweep, BadSetFilesAreRefused) {
       {R"({"a b": {"talus_angle": 30}, "a.b": {"talus_angle": 40}})", "rename one"},
       {R"({"a": {"iterations": 3}})", "both --set and in set 'a'"},
       {"{", "not valid JSON"},
+      {many_sets(300000), "300000 runs, more than the cap of 64"},  // counted before an ordered (quadratic) parse
   };
   for (const auto& [text, message] : refusals) {
     std::ofstream(work / "sets.json") << text;
