@@ -179,6 +179,11 @@ TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
   const auto diff = run_with_address_space_limit(four_gibibytes, {"diff-image", declared, declared}, work_.path());
   EXPECT_EQ(diff.status, 2) << diff;
   EXPECT_THAT(diff.err, HasSubstr("(30000x30000) needs about")) << diff;
+  // stats reads the same PNG, then weighs the descriptors before it starts them.
+  const auto stats = run_with_address_space_limit(
+      four_gibibytes, {"stats", (hostile_data / "flat_8000.png").string()}, work_.path());
+  EXPECT_EQ(stats.status, 2) << stats;
+  EXPECT_THAT(stats.err, HasSubstr("stats: the descriptors of 8000x8000 cells needs about 7.7 GiB")) << stats;
   // Checkpoints: 1000 states of a 512² pipe run are counted before the run starts.
   const gt::testing::TemporaryFolder cases("gt_hostile_cases");
   std::ofstream(cases / "checkpoints.json")
@@ -208,6 +213,27 @@ TEST_F(Hostile, MemoryLimitOptionCapsEveryEstimate) {
   EXPECT_THAT(run.err, HasSubstr("erosion.thermal needs about 580.0 MiB (1048576 cells x 580 B)")) << run;
   EXPECT_THAT(run.err, HasSubstr("more than the 64.0 MiB this process may use (--memory-limit)")) << run;
   EXPECT_EQ(entries_of(work_.path()), std::vector<std::string>{"mine.json"});
+
+  // A picture's own size, and a report read whole (40 B of memory a byte once parsed).
+  const auto render = gt::testing::run_program(
+      groundtruth,
+      {"--memory-limit", "3000", "render", (fs::path(GT_DATASET_DIR) / "real" / "volcano.json").string(), "--out",
+       (work_ / "big.png").string(), "--width", "16384", "--height", "16384"},
+      work_.path());
+  EXPECT_EQ(render.status, 2) << render;
+  EXPECT_THAT(render.err, HasSubstr("render: a 16384x16384 picture needs about 10.0 GiB")) << render;
+  {
+    std::ofstream padded(work_ / "padded.json");
+    padded << R"({"schema": 1, "cases": [)" << std::string(std::size_t{30} << 20, ' ') << "]}";
+  }
+  const auto diff = gt::testing::run_program(
+      groundtruth,
+      {"--memory-limit", "1000", "diff-reports", (work_ / "padded.json").string(), (work_ / "padded.json").string()},
+      work_.path());
+  EXPECT_EQ(diff.status, 2) << diff;
+  EXPECT_THAT(diff.err, HasSubstr("reading report")) << diff;
+  EXPECT_THAT(diff.err, HasSubstr("(31457306 bytes x 40 B)")) << diff;
+  EXPECT_EQ(entries_of(work_.path()), (std::vector<std::string>{"mine.json", "padded.json"}));
 }
 
 TEST_F(Hostile, CommandLineNumbersMustBeFiniteAndFit) {

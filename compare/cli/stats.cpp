@@ -7,11 +7,14 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "compare/case_descriptors.hpp"
 #include "compare/descriptors/terrain_descriptors.hpp"
 #include "compare/output_folder.hpp"
 #include "compare/report/descriptor_plots.hpp"
+#include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
+#include "core/memory.hpp"
 
 namespace gt {
 
@@ -45,7 +48,7 @@ void print_table(const std::filesystem::path& file, const HeightmapFile& read, c
 void write_outputs(const std::filesystem::path& out, const std::filesystem::path& file,
                    const nlohmann::json& document, const TerrainDescriptors& descriptors) {
   write_folder_atomically(out, [&](const std::filesystem::path& folder) {
-    std::ofstream(folder / "stats.json") << document.dump(2) << '\n';
+    report_detail::write_file_atomically(folder / "stats.json", document.dump(2) + '\n');
     std::string reason;
     const auto panels = descriptor_panels({{file.filename().string(), &descriptors}});
     if (!plot_series(panels, folder, "descriptors.png", "terrain descriptors", reason)) {
@@ -65,6 +68,11 @@ int stats_command(const std::filesystem::path& file, const StatsOptions& options
     const HeightmapFile read = read_heightmap(file, read_options);
     check_cell_size(read.heights, file.string());
     check_finite(read.heights, file.string());
+    // The reader weighed the grid alone; the descriptors need several times more (an 8000² .npy
+    // admitted at 488 MiB reached 3.8 GB): weighed before they start.
+    require_memory(memory_for(double(read.heights.width) * double(read.heights.height), "cells",
+                              descriptor_bytes_per_cell),
+                   fmt::format("stats: the descriptors of {}x{} cells", read.heights.width, read.heights.height));
     DescriptorOptions descriptor_options;
     descriptor_options.stream_threshold_cells = options.stream_threshold_cells;
     const TerrainDescriptors descriptors = describe_terrain(read.heights, descriptor_options);
