@@ -151,7 +151,7 @@ void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::pa
     table["difference"] = {{"max_abs", stats.max_abs}, {"rms", stats.rms}};
     report.plots.push_back({picture, "plot", difference_caption});
   }
-  std::ofstream(folder / (ab.ab_stem + ".json")) << table.dump(2) << '\n';
+  report_detail::write_file_atomically(folder / (ab.ab_stem + ".json"), table.dump(2) + '\n');
   write_page(ab, *a, *b, rows, difference_caption, folder);
 }
 

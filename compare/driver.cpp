@@ -33,6 +33,7 @@
 #include "compare/case_seconds.hpp"
 #include "compare/progress.hpp"
 #include "compare/provenance.hpp"
+#include "compare/report/report_common.hpp"
 #include "compare/shards.hpp"
 #include "compare/sweep.hpp"
 #include "compare/mutants/mutants.hpp"
@@ -688,7 +689,8 @@ int run_driver(const DriverOptions& options) {
     if (options.mutation) {
       report.mutation = run_mutation(*options.mutation, folder / "mutants", options.dataset_dir);
       report.mutation->folder = "mutants/";
-      std::ofstream(folder / "mutants" / "mutants.json") << mutation_to_json(*report.mutation).dump(2) << '\n';
+      report_detail::write_file_atomically(folder / "mutants" / "mutants.json",
+                                          mutation_to_json(*report.mutation).dump(2) + '\n');
     }
     if (baseline) {
       report.baseline_file = options.baseline.string();
@@ -713,7 +715,7 @@ int run_mutants_command(const MutationOptions& options, const std::filesystem::p
   report.environment.gl_platform = "worker processes";
   write_folder_atomically(out, [&](const std::filesystem::path& folder) {
     report.mutation = run_mutation(options, folder, GT_DATASET_DIR);
-    std::ofstream(folder / "mutants.json") << mutation_to_json(*report.mutation).dump(2) << '\n';
+    report_detail::write_file_atomically(folder / "mutants.json", mutation_to_json(*report.mutation).dump(2) + '\n');
     write_report_files(report, folder);
   });
   if (as_json) {

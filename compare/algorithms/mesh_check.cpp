@@ -17,6 +17,7 @@
 #include "compare/algorithm.hpp"
 #include "compare/checks/mesh.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
 
 namespace gt {
@@ -34,7 +35,7 @@ void write_report_artifact(const MeshReport& report, const RunOptions& options, 
   if (options.report_dir.empty()) return;
   const std::string relative = result.name + "/check-mesh.json";
   std::filesystem::create_directories(options.report_dir / result.name);
-  std::ofstream(options.report_dir / relative) << to_json(report).dump(2) << '\n';
+  report_detail::write_file_atomically(options.report_dir / relative, to_json(report).dump(2) + '\n');
   result.artifacts.push_back({relative, "data", "raw, CGAL and OpenMesh facts (check-mesh --json)"});
 }
 
