@@ -134,7 +134,7 @@ namespace {
 // A user's case file (--cases) names its inputs relative to itself, so that a suite kept beside
 // the user's code runs from any working directory; absolute paths stay as they are.
 void anchor_inputs_at(CaseSpec& spec, const std::filesystem::path& case_folder) {
-  for (const char* key : {"file", "mesh", "volume"}) {
+  for (const char* key : {"file", "mesh", "volume", "global_grid"}) {
     if (!spec.input.is_object() || !spec.input.contains(key) || !spec.input[key].is_string()) continue;
     const std::filesystem::path path = spec.input[key].get<std::string>();
     if (path.is_relative()) spec.input[key] = (case_folder / path).lexically_normal().string();

@@ -61,8 +61,8 @@ std::vector<CaseSpec> load_cases(const std::filesystem::path& folder);
 
 // The bundled cases of `folder` plus those of each extra path (a case file or a folder of them,
 // `groundtruth run --cases`); a name used twice is refused. An extra case's relative input paths
-// ("file", "mesh", "volume") resolve against its case file's folder, the bundled ones' against
-// datasets/.
+// ("file", "mesh", "volume", "global_grid") resolve against its case file's folder, the bundled
+// ones' against datasets/.
 std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std::vector<std::filesystem::path>& extra);
 
 // The case (or, for an entry with "ab", the A and B cases) of one case file entry.

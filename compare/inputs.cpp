@@ -226,6 +226,11 @@ Heightmap cropped(const Heightmap& heights, const nlohmann::json& crop) {
 
 LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, const std::filesystem::path& dataset_dir) {
   LoadedInput loaded;
+  const bool heightmap = input.is_object() && (input.contains("file") || input.contains("generator"));
+  if (!crop.is_null() && !heightmap) {
+    throw InputError(fmt::format("crop {} cuts a heightmap ('file' or 'generator'); input {} is none", crop.dump(),
+                                 input.dump()));
+  }
   if (input.is_null() || input.empty()) {
     loaded.description = "none: the algorithm makes its own field";
     return loaded;

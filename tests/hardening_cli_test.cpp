@@ -94,6 +94,22 @@ TEST_F(Hostile, CaseNamesThatLeaveTheReportFolderAreRefused) {
   expect_case_refused(thermal_case(""), "must be a dotted identifier");
 }
 
+// A crop cuts a heightmap; on a mesh, a volume or a global grid it was ignored without a word.
+TEST_F(Hostile, ACropOfAnInputThatIsNoHeightmapIsRefused) {
+  json entry = {{"name", "mine.cropped_mesh"},
+                {"algorithm", "mesh.check"},
+                {"input", {{"mesh", (fs::path(GT_DATASET_DIR) / "real" / "meshes" / "bunny00.off").string()}}},
+                {"crop", {0, 0, 4, 4}}};
+  expect_case_refused(entry, "cuts a heightmap ('file' or 'generator')");
+}
+
+// A user's case file names its global grid relative to itself, as it names a heightmap or mesh.
+TEST_F(Hostile, ARelativeGlobalGridIsTheCaseFilesNeighbour) {
+  const json entry = {{"name", "mine.relative_grid"}, {"algorithm", "planet.earth_like"},
+                      {"input", {{"global_grid", "neighbour.nc"}}}};
+  expect_case_refused(entry, (work_ / "neighbour.nc").string());
+}
+
 TEST_F(Hostile, WrongTypesAndTruncatingSizesAreRefused) {
   json big = thermal_case("mine.big");
   big["input"]["width"] = "big";
