@@ -380,6 +380,20 @@ TEST_F(Hostile, AnEmptyOrOverlongOutputIsBadInput) {
   EXPECT_TRUE(entries_of(work_.path()).empty());
 }
 
+// A path the system refuses (here a loop of symbolic links in a --cases folder) is bad input with
+// the system's reason, not an internal error.
+TEST_F(Hostile, ALoopOfLinksIsBadInput) {
+  fs::create_directory(work_ / "cases");
+  fs::create_symlink("a.json", work_ / "cases" / "b.json");
+  fs::create_symlink("b.json", work_ / "cases" / "a.json");
+  const auto run = gt::testing::run_program(
+      groundtruth, {"run", "mine.*", "--cases", (work_ / "cases").string(), "--out", (work_ / "out").string()},
+      work_.path());
+  EXPECT_EQ(run.status, 2) << run;
+  EXPECT_THAT(run.err, HasSubstr("Too many levels of symbolic links")) << run;
+  EXPECT_EQ(entries_of(work_.path()), std::vector<std::string>{"cases"});
+}
+
 // Output that could not be written is not a success: stdout on a full device is exit 2.
 TEST_F(Hostile, AnUnwritableStandardOutputIsNotASuccess) {
   const auto run = gt::testing::run_program("/bin/sh", {"-c", "exec \"$0\" list > /dev/full", groundtruth}, work_.path());
