@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@ struct SyntheticGrid {
   int columns = 36;      // 10° columns, centres 5 .. 355 (and 365 with repeat_first_column)
   bool repeat_first_column = false;
   int fill_cells = 0;    // the first cells of row 0 get the fill value
+  bool infinite_last = false;  // the last cell is +inf
 };
 
 fs::path write_grid(const SyntheticGrid& spec, const std::string& name) {
@@ -55,6 +57,7 @@ fs::path write_grid(const SyntheticGrid& spec, const std::string& name) {
     for (int column = 0; column < columns; ++column) heights.push_back(centre > 30.0 ? float(land) : float(ocean_floor));
   }
   for (int cell = 0; cell < spec.fill_cells; ++cell) heights[static_cast<std::size_t>(cell)] = fill_value;
+  if (spec.infinite_last) heights.back() = std::numeric_limits<float>::infinity();
   nc_put_var_double(file, latitude, latitudes.data());
   nc_put_var_double(file, longitude, longitudes.data());
   nc_put_var_float(file, height, heights.data());
@@ -133,6 +136,15 @@ TEST(GlobalRelief, BimodalityCoefficientOfKnownDistributions) {
   EXPECT_DOUBLE_EQ(weighted.valid_area, 4.0);
 }
 
+std::string refusal_of(const fs::path& file) {
+  try {
+    read_global_grid(file.string());
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(read without complaint)";
+}
+
 TEST(GlobalGrid, RefusesFilesAndVariablesItCannotRead) {
   const fs::path text = fs::temp_directory_path() / "gt_global_grid_not_netcdf.nc";
   std::ofstream(text) << "not a netCDF file\n";
@@ -142,6 +154,11 @@ TEST(GlobalGrid, RefusesFilesAndVariablesItCannotRead) {
   EXPECT_THROW(read_global_grid(path.string(), "ROSE"), InputError) << "no such variable";
   EXPECT_THROW(read_global_grid(path.string(), "lat"), InputError) << "one-dimensional";
   fs::remove(path);
+  // An infinite height is an error in the file, not no-data: refused where it lies.
+  const fs::path infinite = write_grid({.infinite_last = true}, "gt_global_grid_infinite.nc");
+  EXPECT_NE(refusal_of(infinite).find("height is inf at latitude 85°, longitude 355°"), std::string::npos)
+      << refusal_of(infinite);
+  fs::remove(infinite);
   EXPECT_THROW(global_relief(GlobalGrid{}, 0.0, 1), InputError);
   EXPECT_THROW(global_relief(GlobalGrid{}), InputError) << "no coordinates";
 }
@@ -153,15 +170,6 @@ std::string words(std::initializer_list<std::uint32_t> values) {
     for (int shift = 24; shift >= 0; shift -= 8) bytes += static_cast<char>(value >> shift & 0xFF);
   }
   return bytes;
-}
-
-std::string refusal_of(const fs::path& file) {
-  try {
-    read_global_grid(file.string());
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "(read without complaint)";
 }
 
 // libnetcdf allocates what a classic header declares (2^31 variables in 96 bytes crashed it) and

@@ -157,7 +157,13 @@ GlobalGrid read_global_grid(const std::string& path, const std::string& variable
   std::size_t valid_cells = 0;
   for (std::size_t cell = 0; cell < elevation.values.size(); ++cell) {
     const double value = elevation.values[cell];
-    const bool no_data = !std::isfinite(value) || (fill && value == *fill) || (missing && value == *missing);
+    if (std::isinf(value)) {
+      throw InputError(fmt::format("{}: {} is {} at latitude {}°, longitude {}°: a height is finite, and no-data is "
+                                   "_FillValue, missing_value or NaN",
+                                   path, grid.variable, value, grid.latitudes[cell / grid.longitudes.size()],
+                                   grid.longitudes[cell % grid.longitudes.size()]));
+    }
+    const bool no_data = std::isnan(value) || (fill && value == *fill) || (missing && value == *missing);
     elevation.valid[cell] = no_data ? 0 : 1;
     if (no_data) elevation.values[cell] = 0.0;
     valid_cells += no_data ? 0 : 1;

@@ -6,14 +6,14 @@
 //
 // Output: elevation row r at latitudes[r], column c at longitudes[c], both as stored (no flip, no
 // shift), in the variable's own unit (its `units` attribute, "m" when it has none); cells equal to
-// the variable's _FillValue or missing_value, or not finite, are no-data. The cell sizes of the
-// Grid are the coordinate spacings in degrees (horizontal_unit "degree").
+// the variable's _FillValue or missing_value, or NaN, are no-data. The cell sizes of the Grid are
+// the coordinate spacings in degrees (horizontal_unit "degree").
 // Throws InputError naming the file for a path that is not a regular file, a classic header whose
 // counts exceed the file or whose data is cut short (core/io/netcdf_header.hpp), a file libnetcdf
-// cannot open, a variable that is missing
-// or not 2-D, dimensions without coordinate variables, a first dimension whose values are not
-// latitudes within [-90, 90] or coordinates that are not strictly monotonic, a size beyond the
-// memory limit (core/memory.hpp, estimated before reading), or no valid cell.
+// cannot open, a variable that is missing or not 2-D, dimensions without coordinate variables, a
+// first dimension whose values are not latitudes within [-90, 90] or coordinates that are not
+// strictly monotonic, a size beyond the memory limit (core/memory.hpp, estimated before reading),
+// an infinite cell (named by its latitude and longitude), or no valid cell.
 #pragma once
 
 #include <string>
