@@ -22,6 +22,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
 #include "core/json_keys.hpp"
 
@@ -91,12 +92,8 @@ std::optional<Marker> read_marker(const std::filesystem::path& folder) {
 }
 
 void write_marker(const std::filesystem::path& folder) {
-  const auto files = entries_below(folder);
-  nlohmann::json document = {{"written_by", "groundtruth"}, {"files", files}};
-  std::ofstream out(folder / marker_name);
-  out << document.dump(1) << '\n';
-  out.close();
-  if (!out) throw InputError(fmt::format("cannot write {}", (folder / marker_name).string()));
+  const nlohmann::json document = {{"written_by", "groundtruth"}, {"files", entries_below(folder)}};
+  report_detail::write_file_atomically(folder / marker_name, document.dump(1) + '\n');
 }
 
 // The first entry of `folder` that its marker does not list ("" when every one is groundtruth's).
@@ -184,17 +181,17 @@ void lock_output_folder(const std::filesystem::path& target, const std::filesyst
 // Stale folders beside `target`: staging or previous folders ("." name ".groundtruth-staging-"
 // or "-previous-" and a pid) whose process no longer runs.
 void remove_stale_staging(const std::filesystem::path& target) {
+  const std::string staging = sibling(target, "staging-").filename().string();
+  const std::string previous = sibling(target, "previous-").filename().string();
   std::error_code error;
-  for (const char* role : {"staging-", "previous-"}) {
-    const std::string prefix = sibling(target, role).filename().string();
-    for (const auto& entry : std::filesystem::directory_iterator(target.parent_path(), error)) {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind(prefix, 0) != 0 || !entry.is_directory()) continue;
-      const std::string digits = name.substr(prefix.size());
-      if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
-      const pid_t pid = static_cast<pid_t>(std::stol(digits));
-      if (pid == getpid() || (kill(pid, 0) != 0 && errno == ESRCH)) std::filesystem::remove_all(entry.path(), error);
-    }
+  for (const auto& entry : std::filesystem::directory_iterator(target.parent_path(), error)) {
+    const std::string name = entry.path().filename().string();
+    const std::string& prefix = name.rfind(staging, 0) == 0 ? staging : previous;
+    if (name.rfind(prefix, 0) != 0 || !entry.is_directory()) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    if (pid == getpid() || (kill(pid, 0) != 0 && errno == ESRCH)) std::filesystem::remove_all(entry.path(), error);
   }
 }
 
@@ -332,6 +329,14 @@ void write_folder_atomically(const std::filesystem::path& out,
   const auto target = normalised(out);
   lock_output_folder(target, out);
   const auto staging = sibling(target, fmt::format("staging-{}", getpid()));
+  // However the write ends, the interruption's clean-up forgets the staging folder and the lock is
+  // let go.
+  struct EndOfWrite {
+    ~EndOfWrite() {
+      set_staging({});
+      release_output_locks();
+    }
+  } end_of_write;
   // Known to the interruption's clean-up before it exists: a signal between creating the folder and
   // registering it left the folder behind (seen once under the sanitizer build's load).
   set_staging(staging);
@@ -339,8 +344,6 @@ void write_folder_atomically(const std::filesystem::path& out,
     remove_stale_staging(target);
     std::filesystem::create_directory(staging);
   } catch (const std::filesystem::filesystem_error& error) {
-    set_staging({});
-    release_output_locks();
     throw InputError(fmt::format("output folder {}: {}", out.string(), error.code().message()));
   }
   try {
@@ -350,12 +353,8 @@ void write_folder_atomically(const std::filesystem::path& out,
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove_all(staging, ignored);
-    set_staging({});
-    release_output_locks();
     throw;
   }
-  set_staging({});
-  release_output_locks();
 }
 
 }  // namespace gt

@@ -124,6 +124,17 @@ std::vector<pid_t> workers_of(const fs::path& folder, const std::string& case_wo
   return pids;
 }
 
+// workers_of(folder, case_word) polled every 0.1 s until it lists some (`present`) or none, for at
+// most `seconds`; the last listing.
+std::vector<pid_t> await_workers(const fs::path& folder, const std::string& case_word, bool present, int seconds) {
+  std::vector<pid_t> workers = workers_of(folder, case_word);
+  for (int poll = 0; poll < 10 * seconds && workers.empty() == present; ++poll) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    workers = workers_of(folder, case_word);
+  }
+  return workers;
+}
+
 // A case of a --backend cpu run that ran: its CPU checks pass, its GPU half is skipped as asked.
 void expect_ran_on_the_cpu(const json& entry) {
   EXPECT_EQ(entry["status"], "skip") << entry["name"];
@@ -141,11 +152,7 @@ TEST(Workflow, AWorkerKilledBySignalIsAnErrorAndTheRunGoesOn) {
                 "iterations=100000", "--backend", "cpu", "--cpu-reps", "1", "-j", "2", "--out", "crashed"},
                work.path());
   });
-  std::vector<pid_t> slow;
-  for (int poll = 0; poll < 600 && slow.empty(); ++poll) {  // up to a minute for the worker to start
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    slow = workers_of(work.path(), "--algorithm");
-  }
+  const std::vector<pid_t> slow = await_workers(work.path(), "--algorithm", true, 60);  // the worker to start
   ASSERT_EQ(slow.size(), 1u) << "the long ad-hoc case's worker never showed up";
   kill(slow.front(), SIGSEGV);
   const auto result = finished.get();
@@ -183,19 +190,12 @@ TEST(Workflow, WorkersEndWithAParentKilledOutright) {
                 "--backend", "cpu", "-j", "2", "--out", "killed"},
                work.path());
   });
-  std::vector<pid_t> workers;
-  for (int poll = 0; poll < 600 && workers.empty(); ++poll) {  // up to a minute for the worker to start
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    workers = workers_of(work.path(), "--algorithm");
-  }
+  const std::vector<pid_t> workers = await_workers(work.path(), "--algorithm", true, 60);  // the worker to start
   ASSERT_EQ(workers.size(), 1u) << "the long ad-hoc case's worker never showed up";
   kill(parent_of(workers.front()), SIGKILL);
   EXPECT_EQ(finished.get().status, 128 + SIGKILL);
-  for (int poll = 0; poll < 100 && !workers.empty(); ++poll) {  // up to 10 s
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    workers = workers_of(work.path(), "--algorithm");
-  }
-  EXPECT_TRUE(workers.empty()) << "the worker ran on after its parent was killed";
+  EXPECT_TRUE(await_workers(work.path(), "--algorithm", false, 10).empty())
+      << "the worker ran on after its parent was killed";
 }
 
 // A case past --case-timeout is killed and named; the rest of the run is unaffected. 20 s: the
