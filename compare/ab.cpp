@@ -12,6 +12,7 @@
 #include "compare/report/report_common.hpp"
 #include "compare/sweep.hpp"
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/json_keys.hpp"
 
@@ -151,7 +152,7 @@ void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::pa
     table["difference"] = {{"max_abs", stats.max_abs}, {"rms", stats.rms}};
     report.plots.push_back({picture, "plot", difference_caption});
   }
-  report_detail::write_file_atomically(folder / (ab.ab_stem + ".json"), table.dump(2) + '\n');
+  write_file_atomically(folder / (ab.ab_stem + ".json"), table.dump(2) + '\n');
   write_page(ab, *a, *b, rows, difference_caption, folder);
 }
 

@@ -28,6 +28,7 @@
 #include "compare/external/c_bmi_model.hpp"
 #include "compare/external/candidate_field.hpp"
 #include "compare/external/gpu_shader_drop_ins.hpp"
+#include "core/io/atomic_file.hpp"
 #include "gpu/shader_program.hpp"
 #include "compare/isolated_cases.hpp"
 #include "compare/case_seconds.hpp"
@@ -689,7 +690,7 @@ int run_driver(const DriverOptions& options) {
     if (options.mutation) {
       report.mutation = run_mutation(*options.mutation, folder / "mutants", options.dataset_dir);
       report.mutation->folder = "mutants/";
-      report_detail::write_file_atomically(folder / "mutants" / "mutants.json",
+      write_file_atomically(folder / "mutants" / "mutants.json",
                                           mutation_to_json(*report.mutation).dump(2) + '\n');
     }
     if (baseline) {
@@ -715,7 +716,7 @@ int run_mutants_command(const MutationOptions& options, const std::filesystem::p
   report.environment.gl_platform = "worker processes";
   write_folder_atomically(out, [&](const std::filesystem::path& folder) {
     report.mutation = run_mutation(options, folder, GT_DATASET_DIR);
-    report_detail::write_file_atomically(folder / "mutants.json", mutation_to_json(*report.mutation).dump(2) + '\n');
+    write_file_atomically(folder / "mutants.json", mutation_to_json(*report.mutation).dump(2) + '\n');
     write_report_files(report, folder);
   });
   if (as_json) {

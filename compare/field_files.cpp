@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/report/report_common.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/io/volume_io.hpp"
 #include "core/json_keys.hpp"
@@ -44,7 +45,7 @@ void describe_field_file(const std::filesystem::path& folder, const nlohmann::js
                           {"npy_dtype", npy_dtype}};
   if (grid != described["grid"]) entry["grid"] = grid;  // a field on another grid than the first's
   described["files"].push_back(entry);
-  report_detail::write_file_atomically(sidecar, described.dump(2) + '\n');
+  write_file_atomically(sidecar, described.dump(2) + '\n');
   if (first) {
     result.artifacts.push_back({result.name + "/fields.json", "field",
                                 "what each field file holds: field, backend, unit, meaning; the case's parameters, "

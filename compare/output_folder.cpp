@@ -24,6 +24,7 @@
 
 #include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/json_keys.hpp"
 
 namespace gt {
@@ -93,7 +94,7 @@ std::optional<Marker> read_marker(const std::filesystem::path& folder) {
 
 void write_marker(const std::filesystem::path& folder) {
   const nlohmann::json document = {{"written_by", "groundtruth"}, {"files", entries_below(folder)}};
-  report_detail::write_file_atomically(folder / marker_name, document.dump(1) + '\n');
+  write_file_atomically(folder / marker_name, document.dump(1) + '\n');
 }
 
 // The first entry of `folder` that its marker does not list ("" when every one is groundtruth's).

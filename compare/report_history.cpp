@@ -20,6 +20,7 @@
 #include "compare/report/report_read.hpp"
 #include "compare/report_diff.hpp"
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/names.hpp"
 
 namespace gt {
@@ -455,7 +456,7 @@ void write_history_page(const History& history, const std::filesystem::path& fol
   append_revisions(out, history);
   for (std::size_t index = 0; index < history.cases.size(); ++index) append_case(out, index, history, folder);
   out += "</body>\n</html>\n";
-  report_detail::write_file_atomically(folder / "index.html", out);
+  write_file_atomically(folder / "index.html", out);
 }
 
 }  // namespace gt

@@ -16,6 +16,7 @@
 #include "compare/report/plots.hpp"
 #include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/text_file.hpp"
 #include "core/json_keys.hpp"
 
@@ -138,7 +139,7 @@ void write_table(const Sweep& sweep, const std::vector<Row>& rows, const std::ve
     csv << '\n';
     table["runs"].push_back(run);
   }
-  report_detail::write_file_atomically(folder / "sweep.json", table.dump(2) + '\n');
+  write_file_atomically(folder / "sweep.json", table.dump(2) + '\n');
 }
 
 // One plot per metric that differs between the runs: against the first varied parameter, a line

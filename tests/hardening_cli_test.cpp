@@ -40,13 +40,18 @@ using ::testing::HasSubstr;
 const std::string groundtruth = GT_BINARY_DIR "/groundtruth";
 const fs::path hostile_data = fs::path(GT_TEST_DATA_DIR) / "hostile";
 
-// groundtruth `args` under `ulimit -v` of `kibibytes` (through /bin/sh, which sets it and execs).
-gt::testing::ProgramRun run_with_address_space_limit(long kibibytes, const std::vector<std::string>& args,
-                                                     const fs::path& cwd) {
-  std::vector<std::string> shell_args = {"-c", "ulimit -v " + std::to_string(kibibytes) + " && exec \"$0\" \"$@\"",
-                                         groundtruth};
+// groundtruth `args` under `ulimit <limit>` (through /bin/sh, which sets it and execs).
+gt::testing::ProgramRun run_with_limit(const std::string& limit, const std::vector<std::string>& args,
+                                       const fs::path& cwd) {
+  std::vector<std::string> shell_args = {"-c", "ulimit " + limit + " && exec \"$0\" \"$@\"", groundtruth};
   shell_args.insert(shell_args.end(), args.begin(), args.end());
   return gt::testing::run_program("/bin/sh", shell_args, cwd);
+}
+
+// groundtruth `args` under `ulimit -v` of `kibibytes`.
+gt::testing::ProgramRun run_with_address_space_limit(long kibibytes, const std::vector<std::string>& args,
+                                                     const fs::path& cwd) {
+  return run_with_limit("-v " + std::to_string(kibibytes), args, cwd);
 }
 
 std::vector<std::string> entries_of(const fs::path& folder) {
@@ -399,6 +404,37 @@ TEST_F(Hostile, AnUnwritableStandardOutputIsNotASuccess) {
   const auto run = gt::testing::run_program("/bin/sh", {"-c", "exec \"$0\" list > /dev/full", groundtruth}, work_.path());
   EXPECT_EQ(run.status, 2) << run;
   EXPECT_THAT(run.err, HasSubstr("cannot write to standard output")) << run;
+}
+
+// A full disk, simulated by a file-size limit (ulimit -f: a write beyond it fails with EFBIG, as
+// one on a full disk fails with ENOSPC): every command that writes ends with exit 2 and the
+// system's reason, leaves no partial file and keeps what --out held before.
+TEST_F(Hostile, AFullDiskIsExitTwoWithNothingPartial) {
+  const std::string volcano = (fs::path(GT_DATASET_DIR) / "real" / "volcano.json").string();
+  for (const auto& [name, azimuth] : {std::pair{"a.png", "10"}, std::pair{"b.png", "20"}}) {
+    const auto render = gt::testing::run_program(groundtruth, {"render", volcano, "--out", name, "--azimuth", azimuth},
+                                                 work_.path());
+    ASSERT_EQ(render.status, 0) << render;
+  }
+  const auto earlier = gt::testing::run_program(
+      groundtruth, {"run", "erosion.thermal.spec.example_3x3", "--out", "report"}, work_.path());
+  ASSERT_EQ(earlier.status, 0) << earlier;
+  const std::string earlier_report = gt::testing::read_text(work_ / "report" / "report.json");
+  // 40 blocks (20 KiB in dash's 512-byte blocks): each picture below is 50 to 70 KiB and
+  // report.json over 20 KiB, while each input fits.
+  const std::string limit = "-f 40";
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"render", volcano, "--out", "c.png"},
+        std::vector<std::string>{"diff-image", "a.png", "b.png", "--out", "d.png"},
+        std::vector<std::string>{"stats", volcano, "--out", "stats"},
+        std::vector<std::string>{"run", "erosion.thermal.spec.example_3x3", "--out", "report"}}) {
+    const auto run = run_with_limit(limit, args, work_.path());
+    EXPECT_EQ(run.status, 2) << run;
+    EXPECT_THAT(run.err, ::testing::AnyOf(HasSubstr("File too large"), HasSubstr("not drawn"))) << run;
+    EXPECT_THAT(run.err, ::testing::Not(HasSubstr("internal error"))) << run;
+    EXPECT_EQ(entries_of(work_.path()), (std::vector<std::string>{"a.png", "b.png", "report"})) << run;
+  }
+  EXPECT_EQ(gt::testing::read_text(work_ / "report" / "report.json"), earlier_report);
 }
 
 TEST_F(Hostile, AParameterGivenTwiceIsRefused) {

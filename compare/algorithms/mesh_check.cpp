@@ -19,6 +19,7 @@
 #include "compare/checks/threshold.hpp"
 #include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace gt {
 namespace {
@@ -35,7 +36,7 @@ void write_report_artifact(const MeshReport& report, const RunOptions& options, 
   if (options.report_dir.empty()) return;
   const std::string relative = result.name + "/check-mesh.json";
   std::filesystem::create_directories(options.report_dir / result.name);
-  report_detail::write_file_atomically(options.report_dir / relative, to_json(report).dump(2) + '\n');
+  write_file_atomically(options.report_dir / relative, to_json(report).dump(2) + '\n');
   result.artifacts.push_back({relative, "data", "raw, CGAL and OpenMesh facts (check-mesh --json)"});
 }
 

@@ -7,7 +7,6 @@
 // copy of a file rewritten under the same name).
 #include "compare/checks/image.hpp"
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -22,6 +21,7 @@
 #include <fmt/ranges.h>
 
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/grid.hpp"
 
@@ -151,24 +151,9 @@ Rgb verdict_colour(PixelVerdict verdict) {
 // Writes one colour per pixel as 8-bit RGB, under a temporary name renamed into place, signed
 // Software = groundtruth (how diff-image tells its own mask from a user's picture of that name).
 void write_rgb_picture(int width, int height, const std::vector<Rgb>& colours, const std::filesystem::path& file) {
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("Software", groundtruth_software_tag);
-  OIIO::ImageBuf picture(spec);
-  picture.set_pixels(picture.roi(), OIIO::TypeDesc::FLOAT, colours.data());
-  const std::filesystem::path temporary =
-      file.parent_path() / fmt::format(".{}.{}.partial{}", file.filename().string(), getpid(),
-                                       file.extension().string());
-  std::error_code error;
-  if (!picture.write(temporary.string(), OIIO::TypeDesc::UINT8)) {
-    std::filesystem::remove(temporary, error);
-    throw InputError(fmt::format("cannot write {}: {}", file.string(), picture.geterror()));
-  }
-  std::filesystem::rename(temporary, file, error);
-  if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw InputError(fmt::format("cannot write {}: {}", file.string(), error.message()));
-  }
+  write_image_atomically(file, spec, OIIO::TypeDesc::FLOAT, colours.data());
 }
 
 }  // namespace

@@ -29,10 +29,12 @@
 #include <cmath>
 #include <cerrno>
 #include <cstdio>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <system_error>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -285,6 +287,11 @@ void refuse_repeated(const std::vector<std::string>& assignments, const char* op
                                        assignment));
     }
   }
+}
+
+bool output_failure(const std::error_code& code) {
+  return code == std::errc::broken_pipe || code == std::errc::no_space_on_device || code == std::errc::file_too_large ||
+         code == std::errc::io_error;
 }
 
 int run_command_line(int argc, char** argv) {
@@ -623,6 +630,15 @@ int run_command_line(int argc, char** argv) {
     // permission): the path and the system's reason, as bad input.
     fmt::print(stderr, "groundtruth: {}\n", error.what());
     return exit_bad_input;
+  } catch (const std::system_error& error) {
+    // fmt::print (which writes only to stdout and stderr) to a closed pipe or a full disk: the
+    // output could not be written, not a bug.
+    if (!output_failure(error.code())) {
+      fmt::print(stderr, "groundtruth: internal error: {}\n", error.what());
+      return 1;
+    }
+    std::fprintf(stderr, "groundtruth: cannot write to standard output: %s\n", error.code().message().c_str());
+    return exit_bad_input;
   } catch (const std::exception& error) {
     fmt::print(stderr, "groundtruth: internal error: {}\n", error.what());
     return 1;
@@ -632,14 +648,20 @@ int run_command_line(int argc, char** argv) {
 }  // namespace
 
 // A command's output that could not be written (stdout on a full disk, a closed pipe) is not a
-// success: its status becomes 2 with the reason on stderr.
+// success: its status becomes 2 with the reason on stderr. SIGPIPE and SIGXFSZ are ignored so that
+// a closed pipe or a file-size limit reaches the code as a failed write (EPIPE, EFBIG), which is
+// reported and cleaned up like a full disk, instead of killing the process with its staging
+// folder and temporary files left behind.
 int main(int argc, char** argv) {
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
   gt::end_with_parent();
   gt::install_interrupt_cleanup();
   const int status = run_command_line(argc, argv);
-  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+  const bool written = std::fflush(stdout) == 0 && !std::ferror(stdout);
+  if (!written && (status == 0 || status == 1)) {
     fmt::print(stderr, "groundtruth: cannot write to standard output: {}\n", std::strerror(errno));
-    return status == 0 || status == 1 ? exit_bad_input : status;
+    return exit_bad_input;
   }
   return status;
 }

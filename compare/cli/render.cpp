@@ -3,7 +3,6 @@
 // atomically. See render.hpp for the conventions.
 #include "compare/cli/render.hpp"
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -18,10 +17,11 @@
 #include <system_error>
 
 #include <fmt/format.h>
-#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imageio.h>
 
 #include "compare/algorithms/render_phong.hpp"
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/io/mesh_io.hpp"
 #include "core/memory.hpp"
@@ -272,22 +272,8 @@ Picture render_gpu(const reference::PhongScene& scene, const std::string& gl) {
 }
 
 void write_png(const Picture& picture, int width, int height, const fs::path& out) {
-  OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8));
-  image.set_pixels(image.roi(), OIIO::TypeDesc::UINT8, picture.rgb.data());
-  fs::path temporary = out;
-  temporary.replace_filename(fmt::format("{}.tmp-{}.png", out.stem().string(), getpid()));
-  if (!image.write(temporary.string(), OIIO::TypeDesc::UINT8, "png")) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw InputError(fmt::format("render: cannot write {}: {}", temporary.string(), image.geterror()));
-  }
-  std::error_code error;
-  fs::rename(temporary, out, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw InputError(fmt::format("render: cannot rename {} to {}: {}", temporary.string(), out.string(), error.message()));
-  }
+  write_image_atomically(out, OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8), OIIO::TypeDesc::UINT8,
+                         picture.rgb.data());
 }
 
 int render(const RenderOptions& options) {

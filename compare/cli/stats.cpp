@@ -13,6 +13,7 @@
 #include "compare/report/descriptor_plots.hpp"
 #include "compare/report/report_common.hpp"
 #include "core/errors.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/memory.hpp"
 
@@ -48,11 +49,13 @@ void print_table(const std::filesystem::path& file, const HeightmapFile& read, c
 void write_outputs(const std::filesystem::path& out, const std::filesystem::path& file,
                    const nlohmann::json& document, const TerrainDescriptors& descriptors) {
   write_folder_atomically(out, [&](const std::filesystem::path& folder) {
-    report_detail::write_file_atomically(folder / "stats.json", document.dump(2) + '\n');
+    write_file_atomically(folder / "stats.json", document.dump(2) + '\n');
     std::string reason;
     const auto panels = descriptor_panels({{file.filename().string(), &descriptors}});
+    // --out asks for both files: a picture that cannot be drawn (a full disk, no matplotlib) ends
+    // the command with exit 2 and leaves --out as it was, not a folder without its picture.
     if (!plot_series(panels, folder, "descriptors.png", "terrain descriptors", reason)) {
-      fmt::print(stderr, "groundtruth: descriptors.png not drawn: {}\n", reason);
+      throw InputError(fmt::format("stats: descriptors.png not drawn: {}", reason));
     }
   });
 }

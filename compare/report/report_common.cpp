@@ -152,29 +152,6 @@ std::string escape_markup(std::string_view text) {
   return escaped;
 }
 
-void write_file_atomically(const std::filesystem::path& file, std::string_view contents) {
-  std::filesystem::path temporary = file;
-  temporary += fmt::format(".tmp-{}", getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error(fmt::format("cannot write {}", temporary.string()));
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, file, error);
-  if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error(
-        fmt::format("cannot rename {} to {}: {}", temporary.string(), file.string(), error.message()));
-  }
-}
-
 namespace {
 
 bool file_named(const Artifact& artifact, std::string_view name) {

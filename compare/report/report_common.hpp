@@ -168,7 +168,4 @@ bool unreserved(char c);
 // The id of a case's section in index.html: "case-" and its name, other characters as '_'.
 std::string case_anchor(const std::string& case_name);
 
-// Writes `contents` to `file` through a temporary file in the same folder and a rename.
-void write_file_atomically(const std::filesystem::path& file, std::string_view contents);
-
 }  // namespace gt::report_detail

@@ -20,6 +20,7 @@
 
 #include "compare/report/report_common.hpp"
 #include "compare/report/writers.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace gt {
 

@@ -10,6 +10,7 @@
 #include "compare/mutation.hpp"
 #include "compare/report/report_common.hpp"
 #include "compare/report/writers.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace gt {
 
@@ -174,7 +175,7 @@ json report_to_json(const Report& report) {
 
 void write_report_json(const Report& report, const std::filesystem::path& file) {
   const std::string text = report_to_json(report).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
-  report_detail::write_file_atomically(file, text);
+  write_file_atomically(file, text);
 }
 
 }  // namespace gt

@@ -446,29 +446,27 @@ std::vector<std::uint16_t> png16_levels(const Heightmap& heights) {
   return levels;
 }
 
-void write_single_channel(const path& temporary, const path& target, OIIO::TypeDesc type, int width, int height,
-                          const void* pixels) {
+void write_single_channel(const path& file, OIIO::TypeDesc type, int width, int height, const void* pixels) {
   OIIO::ImageSpec spec(width, height, 1, type);
   spec.channelnames = {"Y"};
-  const auto output = OIIO::ImageOutput::create(temporary.string());
-  if (!output) throw InputError(fmt::format("cannot write {}: {}", target.string(), OIIO::geterror()));
-  if (!output->open(temporary.string(), spec) || !output->write_image(type, pixels) || !output->close()) {
-    throw InputError(fmt::format("cannot write {}: {}", target.string(), output->geterror()));
-  }
+  write_image_atomically(file, spec, type, pixels);
 }
 
-void write_pixels(const Heightmap& heights, const path& temporary, const path& target, const std::string& extension,
-                  NpyPrecision npy_precision) {
-  if (extension == ".npy" && npy_precision == NpyPrecision::float64) {
-    detail::write_npy({heights.height, heights.width}, pixels_of<double>(heights), temporary, target);
-  } else if (extension == ".npy") {
-    detail::write_npy({heights.height, heights.width}, pixels_of<float>(heights), temporary, target);
+void write_pixels(const Heightmap& heights, const path& file, const std::string& extension, NpyPrecision npy_precision) {
+  if (extension == ".npy") {
+    write_file_atomically(file, [&](const path& temporary) {
+      if (npy_precision == NpyPrecision::float64) {
+        detail::write_npy({heights.height, heights.width}, pixels_of<double>(heights), temporary, file);
+      } else {
+        detail::write_npy({heights.height, heights.width}, pixels_of<float>(heights), temporary, file);
+      }
+    });
   } else if (extension == ".png") {
     const std::vector<std::uint16_t> levels = png16_levels(heights);
-    write_single_channel(temporary, target, OIIO::TypeDesc::UINT16, heights.width, heights.height, levels.data());
+    write_single_channel(file, OIIO::TypeDesc::UINT16, heights.width, heights.height, levels.data());
   } else {
     const std::vector<float> pixels = pixels_of<float>(heights);
-    write_single_channel(temporary, target, OIIO::TypeDesc::FLOAT, heights.width, heights.height, pixels.data());
+    write_single_channel(file, OIIO::TypeDesc::FLOAT, heights.width, heights.height, pixels.data());
   }
 }
 
@@ -508,8 +506,7 @@ void write_heightmap(const Heightmap& heights, const path& file, NpyPrecision np
         extension));
   }
   check_writable_shape(heights, file);
-  detail::write_file_atomically(
-      file, [&](const path& temporary) { write_pixels(heights, temporary, file, extension, npy_precision); });
+  write_pixels(heights, file, extension, npy_precision);
 }
 
 }  // namespace gt

@@ -634,7 +634,7 @@ MeshFile read_mesh(const path& file) {
 void write_mesh(const Mesh& mesh, const path& file) {
   const WritableFormat& format = writable_format_of(file);
   const std::vector<std::array<int, 3>> triangles = writable_triangles(mesh, file);
-  detail::write_file_atomically(file, [&](const path& temporary) {
+  write_file_atomically(file, [&](const path& temporary) {
     if (!format.write(temporary.string(), points_of(mesh), triangles)) {
       throw InputError(fmt::format("cannot write {}: the folder is missing or not writable", file.string()));
     }

@@ -12,7 +12,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -234,7 +236,7 @@ void write_npy_bytes(const std::vector<long long>& shape, const char* descr, con
   out.write(header.data(), static_cast<std::streamsize>(header.size()));
   out.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes));
   out.close();
-  if (!out) throw InputError(fmt::format("cannot write {}", target.string()));
+  if (!out) throw InputError(fmt::format("cannot write {}: {}", target.string(), std::strerror(errno)));
 }
 
 }  // namespace

@@ -88,7 +88,7 @@ void write_volume(const Volume<double>& volume, const std::filesystem::path& pat
                                  volume.ny, volume.nz, volume.values.size()));
   }
   const std::vector<float> values(volume.values.begin(), volume.values.end());
-  detail::write_file_atomically(path, [&](const std::filesystem::path& temporary) {
+  write_file_atomically(path, [&](const std::filesystem::path& temporary) {
     detail::write_npy({volume.nz, volume.ny, volume.nx}, values, temporary, path);
   });
 }
