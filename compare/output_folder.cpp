@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -31,6 +32,9 @@ namespace gt {
 namespace {
 
 constexpr const char* marker_name = ".groundtruth-report";
+
+// Every signal whose default ends the process and that someone may send.
+constexpr int ending_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM};
 
 std::mutex staging_mutex;
 std::filesystem::path active_staging;  // guarded by staging_mutex
@@ -274,10 +278,68 @@ void remove_interruption_leftover(const std::filesystem::path& path) {
   leftovers.erase(path);
 }
 
+namespace {
+
+// The self-pipe of EmbeddedInterruptCleanup: the handler writes the signal's number, the only
+// async-signal-safe thing it does; the watcher thread reads it and cleans up outside the handler.
+// One scope at a time (two Python threads may run cases at once): a nested one takes nothing.
+int embedded_pipe[2] = {-1, -1};
+std::atomic<bool> embedded_active{false};
+
+void forward_to_watcher(int signal_number) {
+  const int saved_errno = errno;
+  const auto byte = static_cast<unsigned char>(signal_number);
+  [[maybe_unused]] const ssize_t written = write(embedded_pipe[1], &byte, 1);
+  errno = saved_errno;
+}
+
+}  // namespace
+
+EmbeddedInterruptCleanup::EmbeddedInterruptCleanup(const std::filesystem::path& scratch) : scratch_(scratch) {
+  if (embedded_active.exchange(true)) return;
+  if (pipe2(embedded_pipe, O_CLOEXEC) != 0) {  // without the pipe the host's dispositions stay
+    embedded_active = false;
+    return;
+  }
+  if (!scratch_.empty()) add_interruption_leftover(scratch_);
+  watcher_ = std::thread([] {
+    unsigned char byte = 0;
+    while (read(embedded_pipe[0], &byte, 1) < 0 && errno == EINTR) {
+    }
+    if (byte != 0) clean_up_and_exit(byte);
+  });
+  for (const int signal_number : ending_signals) {
+    struct sigaction current {};
+    if (signal_number == SIGINT || sigaction(signal_number, nullptr, &current) != 0 || current.sa_handler != SIG_DFL) {
+      continue;
+    }
+    struct sigaction forward {};
+    forward.sa_handler = forward_to_watcher;
+    sigemptyset(&forward.sa_mask);
+    if (sigaction(signal_number, &forward, nullptr) == 0) taken_.push_back(signal_number);
+  }
+}
+
+EmbeddedInterruptCleanup::~EmbeddedInterruptCleanup() {
+  if (!watcher_.joinable()) return;
+  struct sigaction by_default {};
+  by_default.sa_handler = SIG_DFL;
+  sigemptyset(&by_default.sa_mask);
+  for (const int signal_number : taken_) sigaction(signal_number, &by_default, nullptr);
+  const unsigned char end = 0;
+  [[maybe_unused]] const ssize_t written = write(embedded_pipe[1], &end, 1);
+  watcher_.join();
+  close(embedded_pipe[0]);
+  close(embedded_pipe[1]);
+  embedded_pipe[0] = embedded_pipe[1] = -1;
+  if (!scratch_.empty()) remove_interruption_leftover(scratch_);
+  embedded_active = false;
+}
+
 void install_interrupt_cleanup() {
   sigset_t signals;
   sigemptyset(&signals);
-  for (int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM}) {
+  for (int signal_number : ending_signals) {
     sigaddset(&signals, signal_number);
   }
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // inherited by every later thread

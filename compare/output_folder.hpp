@@ -25,6 +25,8 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <sys/types.h>
 
@@ -49,6 +51,25 @@ void write_folder_atomically(const std::filesystem::path& out,
 // (every signal whose default ends the process and that someone may send) into a clean exit (call once, first
 // thing in main, before any other thread starts).
 void install_interrupt_cleanup();
+
+// For a host process that keeps its own signal handling (the Python module), from construction to
+// destruction: SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2 and SIGALRM, where their disposition is
+// still the default (which would end the process with the staging folder left behind), get the
+// same clean-up and exit as the command line's; `scratch` (a temporary folder of the host's, or
+// empty) is removed too. Dispositions the host set are left alone, and restored ones are put back.
+// SIGINT stays the host's (Python raises KeyboardInterrupt when the call returns).
+class EmbeddedInterruptCleanup {
+ public:
+  explicit EmbeddedInterruptCleanup(const std::filesystem::path& scratch);
+  ~EmbeddedInterruptCleanup();
+  EmbeddedInterruptCleanup(const EmbeddedInterruptCleanup&) = delete;
+  EmbeddedInterruptCleanup& operator=(const EmbeddedInterruptCleanup&) = delete;
+
+ private:
+  std::filesystem::path scratch_;
+  std::vector<int> taken_;  // the signals whose default disposition was replaced
+  std::thread watcher_;     // waits for a signal number (or 0: the scope ended) on the self-pipe
+};
 
 // The child processes an interruption must also end, each the leader of its own process group
 // (the whole group is killed): compare/worker.cpp's workers and compare/subprocess.cpp's helpers

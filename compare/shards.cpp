@@ -16,6 +16,8 @@
 #include "compare/report/writers.hpp"
 #include "compare/report_diff.hpp"
 #include "core/errors.hpp"
+#include "core/io/text_file.hpp"
+#include "core/memory.hpp"
 
 namespace gt {
 namespace {
@@ -124,13 +126,29 @@ std::vector<int> assign_shards(const std::vector<std::string>& names, int count,
 
 namespace {
 
+std::filesystem::path shard_folder(const std::filesystem::path& given) {
+  return std::filesystem::is_directory(given) ? given : given.parent_path();
+}
+
+// Every shard's report is held at once, then joined and written: weighed together before the
+// first is read, at the parse's 40 B a byte for each (an upper bound of what a report keeps).
+void require_merge_memory(const std::vector<std::filesystem::path>& given) {
+  double bytes = 0.0;
+  for (const auto& shard : given) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(shard_folder(shard) / "report.json", error);
+    if (!error) bytes += static_cast<double>(size);  // else the reader names what is wrong
+  }
+  require_memory(memory_for(bytes, "bytes of shard reports", json_document_limits.parse_bytes_per_byte), "merge");
+}
+
 struct LoadedShard {
   std::filesystem::path folder;
   Report report;
 };
 
 LoadedShard load_shard(const std::filesystem::path& given) {
-  const auto folder = std::filesystem::is_directory(given) ? given : given.parent_path();
+  const auto folder = shard_folder(given);
   LoadedShard shard{folder, report_from_json(read_report_json(folder / "report.json"))};
   if (!shard.report.shard) {
     throw InputError(fmt::format("merge: {} is not a shard's report (it was not run with --shard)", folder.string()));
@@ -221,6 +239,7 @@ void copy_case_folder(const std::filesystem::path& from, const std::filesystem::
 int merge_shards(const MergeOptions& options, const std::string& command_line) {
   if (options.shards.empty()) throw InputError("merge: name the shards' report folders");
   for (const auto& given : options.shards) refuse_input_inside_output(options.out, given, "merge");
+  require_merge_memory(options.shards);
   std::vector<LoadedShard> shards;
   for (const auto& given : options.shards) shards.push_back(load_shard(given));
   check_shard_set(shards);

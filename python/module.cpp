@@ -11,12 +11,16 @@
 //                                (a callable returning a model with bmipy's methods) that model is
 //                                graded where the GPU twin stands (python_bmi_model.hpp)
 //   dataset_dir()                the bundled and fetched data sets (datasets/ of the checkout)
+//   require_memory(count, unit, bytes_each, what)  core/memory.hpp's gate (InputError when the
+//                                estimate exceeds what this process may use), for the Python side
 //   ReferenceModel(algorithm, double)  a stepped algorithm's reference behind the BMI
 //                                (compare/external/reference_bmi.hpp); groundtruth.bmi.Reference
 //                                gives it bmipy's method names
 //   InputError                   a ValueError carrying the CLI's message (the CLI's exit 2)
 //
-// The GIL is released while a case runs (an outside Python model takes it for each call). The driver makes
+// The GIL is released while a case runs (an outside Python model takes it for each call); meanwhile a
+// SIGTERM (or another ending signal Python leaves at its default) removes the staging folder and the
+// caller's scratch folder before the process ends, as on the command line. The driver makes
 // and ends its own GL context for the case, so nothing GL outlives a call.
 #include <cmath>
 #include <filesystem>
@@ -33,7 +37,9 @@
 #include "compare/algorithm.hpp"
 #include "compare/driver.hpp"
 #include "compare/external/reference_bmi.hpp"
+#include "compare/output_folder.hpp"
 #include "core/errors.hpp"
+#include "core/memory.hpp"
 #include "core/mutant.hpp"
 #include "gpu/context/context.hpp"
 #include "python_bmi_model.hpp"
@@ -70,6 +76,7 @@ struct CaseCall {
   std::string command_line;
   py::object external;         // None, or a callable returning an outside model (bmipy's methods)
   std::string external_label;  // the name it is shown by
+  std::filesystem::path scratch;  // the caller's temporary folder, removed too if a signal ends the process
 };
 
 // The command line refuses these in its option parser (--size, --cell-size): the same limits.
@@ -122,6 +129,7 @@ int run_case(const CaseCall& call) {
     ~MutantReset() { gt::set_active_mutant(""); }
   } reset;
   py::gil_scoped_release unlocked;
+  const gt::EmbeddedInterruptCleanup interruptible(call.scratch);
   return gt::run_driver(options);
 }
 
@@ -137,6 +145,9 @@ PYBIND11_MODULE(_core, module) {
     return list.dump();
   });
   module.def("dataset_dir", [] { return std::filesystem::path(GT_DATASET_DIR); });
+  module.def("require_memory", [](double count, const std::string& unit, double bytes_each, const std::string& what) {
+    gt::require_memory(gt::memory_for(count, unit, bytes_each), what);
+  });
   py::class_<gt::ReferenceBmi>(module, "ReferenceModel")
       .def(py::init<std::string, bool>(), py::arg("algorithm"), py::arg("double_precision"))
       .def("initialize", [](gt::ReferenceBmi& model, const std::filesystem::path& config) { model.initialize(config); })
@@ -170,12 +181,14 @@ PYBIND11_MODULE(_core, module) {
          const std::vector<std::string>& assignments, bool red_channel, const std::string& backend,
          const std::string& gl, const std::string& mutant, bool require_gpu, bool quiet, bool pictures,
          bool descriptors, std::optional<int> reps, const std::filesystem::path& out, const std::string& command_line,
-         const py::object& external, const std::string& external_label) {
+         const py::object& external, const std::string& external_label, const std::filesystem::path& scratch) {
         return run_case({algorithm, input, width, height, cell_size, cell_size_y, assignments, red_channel, backend, gl, mutant,
-                         require_gpu, quiet, pictures, descriptors, reps, out, command_line, external, external_label});
+                         require_gpu, quiet, pictures, descriptors, reps, out, command_line, external, external_label,
+                         scratch});
       },
       py::arg("algorithm"), py::arg("input"), py::arg("width"), py::arg("height"), py::arg("cell_size"), py::arg("cell_size_y"),
       py::arg("assignments"), py::arg("red_channel"), py::arg("backend"), py::arg("gl"), py::arg("mutant"),
       py::arg("require_gpu"), py::arg("quiet"), py::arg("pictures"), py::arg("descriptors"), py::arg("reps"),
-      py::arg("out"), py::arg("command_line"), py::arg("external") = py::none(), py::arg("external_label") = "");
+      py::arg("out"), py::arg("command_line"), py::arg("external") = py::none(), py::arg("external_label") = "",
+      py::arg("scratch") = std::filesystem::path());
 }

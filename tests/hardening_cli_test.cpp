@@ -254,7 +254,16 @@ TEST_F(Hostile, MemoryLimitOptionCapsEveryEstimate) {
   EXPECT_EQ(diff.status, 2) << diff;
   EXPECT_THAT(diff.err, HasSubstr("reading report")) << diff;
   EXPECT_THAT(diff.err, HasSubstr("(31457306 bytes x 40 B)")) << diff;
-  EXPECT_EQ(entries_of(work_.path()), (std::vector<std::string>{"mine.json", "padded.json"}));
+  // merge holds every shard's report at once: weighed together before the first is read.
+  for (const char* shard : {"shard1", "shard2"}) {
+    fs::create_directory(work_ / shard);
+    fs::copy_file(work_ / "padded.json", work_ / shard / "report.json");
+  }
+  const auto merge = gt::testing::run_program(
+      groundtruth, {"--memory-limit", "2000", "merge", "shard1", "shard2", "--out", "merged"}, work_.path());
+  EXPECT_EQ(merge.status, 2) << merge;
+  EXPECT_THAT(merge.err, HasSubstr("merge needs about 2.3 GiB (62914612 bytes of shard reports x 40 B)")) << merge;
+  EXPECT_EQ(entries_of(work_.path()), (std::vector<std::string>{"mine.json", "padded.json", "shard1", "shard2"}));
 }
 
 TEST_F(Hostile, CommandLineNumbersMustBeFiniteAndFit) {

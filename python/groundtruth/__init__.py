@@ -141,6 +141,12 @@ def _cell_sizes(cell_size):
 def _readable(array):
     """`array` in a dtype the driver reads, and what was done to it (a list of notes)."""
     notes = []
+    array = numpy.asanyarray(array)  # no copy: a broadcast view keeps its few bytes until weighed
+    if array.ndim == 2 and not array.dtype.hasobject:
+        # Saving makes a contiguous copy and a conversion may make another (8 B a cell at most
+        # each): weighed before either, as the driver weighs a file before reading it.
+        _core.require_memory(float(array.size), f"cells of heights {array.shape[1]}x{array.shape[0]}", 16.0,
+                             "groundtruth.run: the copy of heights")
     if numpy.ma.isMaskedArray(array):
         masked = int(numpy.count_nonzero(numpy.ma.getmaskarray(array)))
         if masked:
@@ -231,7 +237,7 @@ def run(algorithm, heights=None, *, cell_size=None, backend="both", size=(256, 2
             _core.run_case(algorithm, input_path, int(width), int(height), *_cell_sizes(cell_size), assignments,
                            bool(red_channel), backend, gl, mutant or "", bool(require_gpu), bool(quiet),
                            bool(pictures), bool(descriptors), None if reps is None else int(reps), report, command,
-                           _external, _external_label)
+                           _external, _external_label, scratch)
         except InputError as error:
             # The driver names the file it read; the caller gave an array.
             raise InputError(str(error).replace(str(saved), "heights") if saved else str(error)) from None

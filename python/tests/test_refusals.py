@@ -2,6 +2,8 @@
 message, never a crash, and nothing written. Where the command line has the same input (an array
 saved as a .npy file, a --set), the two messages are compared word for word."""
 
+import pathlib
+
 import numpy
 import pytest
 
@@ -104,3 +106,65 @@ def test_a_heightmap_given_to_an_algorithm_that_makes_its_own_field_is_refused(t
 def test_a_missing_file_is_refused_naming_it(tmp_path):
     missing = tmp_path / "no_such_dem.tif"
     assert str(missing) in refusal(tmp_path, "erosion.thermal", missing)
+
+
+def _python_child(script, tmp_path, limit_bytes=None):
+    """A fresh interpreter running `script` with this suite's groundtruth, its temporary folder
+    under tmp_path/tmp, under an address-space limit when given; the Popen."""
+    import os
+    import resource
+    import subprocess
+    import sys
+
+    scratch = tmp_path / "tmp"
+    scratch.mkdir(exist_ok=True)
+    environment = dict(os.environ, TMPDIR=str(scratch))
+
+    def limited():
+        if limit_bytes:
+            resource.setrlimit(resource.RLIMIT_AS, (limit_bytes, limit_bytes))
+
+    return subprocess.Popen([sys.executable, "-c", script], env=environment, preexec_fn=limited,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def test_a_broadcast_array_is_weighed_before_it_is_copied(tmp_path):
+    # numpy.broadcast_to's view of 60000² cells holds 8 bytes; saving it would expand it to 28.8 GB.
+    # Under a 4 GiB address-space limit the module refuses before any copy (it used to reach 7.2 GB).
+    script = ("import numpy, groundtruth\n"
+              "try:\n"
+              "    groundtruth.run('erosion.thermal', numpy.broadcast_to(numpy.float64(1.0), (60000, 60000)))\n"
+              "except groundtruth.InputError as error:\n"
+              "    print(error)\n")
+    child = _python_child(script, tmp_path, limit_bytes=4 << 30)
+    out, err = child.communicate(timeout=120)
+    assert child.returncode == 0, err
+    assert "groundtruth.run: the copy of heights needs about 53.6 GiB (3600000000 cells of heights 60000x60000 x 16 B)" in out
+    assert not any((tmp_path / "tmp").iterdir())
+
+
+def test_a_sigterm_during_a_run_leaves_neither_staging_nor_scratch(tmp_path):
+    # A 256² pipe run of 3000 steps takes minutes: ended by SIGTERM once its staging folder exists,
+    # the process exits 128 + 15 after removing the staging folder and its temporary folder, as
+    # the command line does (Python's default SIGTERM would end it with both left behind).
+    import signal
+    import time
+
+    out = tmp_path / "work" / "report"
+    out.parent.mkdir()
+    script = ("import groundtruth\n"
+              "from conftest import cone\n"
+              f"groundtruth.run('erosion.pipe', cone(256), steps=3000, out={str(out)!r})\n")
+    child = _python_child(f"import sys; sys.path.insert(0, {str(pathlib.Path(__file__).parent)!r})\n" + script,
+                          tmp_path)
+    deadline = time.monotonic() + 120
+    staging = out.parent / f".report.groundtruth-staging-{child.pid}"
+    while not staging.exists() and child.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert staging.exists(), child.communicate()
+    child.send_signal(signal.SIGTERM)
+    _, err = child.communicate(timeout=60)
+    assert child.returncode == 128 + signal.SIGTERM, err
+    assert "interrupted by signal 15" in err
+    assert list((out.parent).iterdir()) == []
+    assert list((tmp_path / "tmp").iterdir()) == []
