@@ -222,6 +222,68 @@ TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
   EXPECT_TRUE(fs::is_empty(work_.path()));
 }
 
+// Issue 40's four memory bombs through every command that reads them, under a 4 GiB address-space
+// cap: each is refused with exit 2 and what it would need (or why it cannot be read), never killed
+// or "internal error", and nothing is written. The 8000² .npy and the 115 MiB report are sparse
+// files: their sizes are what the readers weigh before reading a byte.
+TEST_F(Hostile, EveryCommandRefusesEachMemoryBombUnderACap) {
+  if (gt::testing::under_address_sanitizer) GTEST_SKIP() << "AddressSanitizer's shadow memory ignores ulimit -v";
+  constexpr long four_gibibytes = 4L << 20;  // in KiB
+  const std::string png_bomb = (hostile_data / "declares_30000.png").string();
+  {
+    std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (8000, 8000), }";
+    header.append(63 - (10 + header.size()) % 64, ' ');
+    header.push_back('\n');
+    std::ofstream npy(work_ / "big.npy", std::ios::binary);
+    npy << "\x93NUMPY\x01" << '\0' << char(header.size() & 0xff) << char(header.size() >> 8) << header;
+  }
+  fs::resize_file(work_ / "big.npy", fs::file_size(work_ / "big.npy") + std::uintmax_t{8000} * 8000 * 4);
+  std::ofstream(work_ / "deep.json") << std::string(300000, '[') << std::string(300000, ']');
+  std::ofstream(work_ / "big_report.json") << R"({"schema": 1, "cases": [)";
+  fs::resize_file(work_ / "big_report.json", std::uintmax_t{115} << 20);
+  for (const char* shard : {"s1", "s2"}) {
+    fs::create_directory(work_ / shard);
+    fs::copy_file(work_ / "big_report.json", work_ / shard / "report.json");
+  }
+  const std::vector<std::string> inputs = entries_of(work_.path());
+  const std::string thermal = "erosion.thermal", spec_case = "erosion.thermal.spec.example_3x3";
+  struct Bomb {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  std::vector<Bomb> bombs;
+  for (const auto& [heights, message] :
+       {std::pair{png_bomb, "(30000x30000) needs about"}, std::pair{std::string("big.npy"), "needs about"},
+        std::pair{std::string("deep.json"), "JSON nested deeper than 64 levels"}}) {
+    bombs.push_back({{"run", "--algorithm", thermal, "--input", heights, "--out", "o"}, message});
+    bombs.push_back({{"stats", heights}, message});
+    bombs.push_back({{"render", heights, "--out", "o.png"}, message});
+    bombs.push_back({{"sweep", "--algorithm", thermal, "--input", heights, "--vary", "iterations=1,2", "--out", "o"},
+                     message});
+    bombs.push_back(
+        {{"ab", "--algorithm", thermal, "--input", heights, "--a", "iterations=1", "--b", "iterations=2", "--out", "o"},
+         message});
+  }
+  bombs.push_back({{"diff-image", png_bomb, png_bomb}, "(30000x30000) needs about"});
+  for (const auto& [document, message] : {std::pair{"deep.json", "JSON nested deeper than 64 levels"},
+                                          std::pair{"big_report.json", "needs about 4.5 GiB (120586240 bytes x 40 B)"}}) {
+    bombs.push_back({{"diff-reports", document, document}, message});
+    bombs.push_back({{"history", document, "--out", "o"}, message});
+    bombs.push_back({{"run", spec_case, "--baseline", document, "--out", "o"}, message});
+    bombs.push_back({{"run", spec_case, "--cases", document, "--out", "o"}, message});
+    bombs.push_back({{"sweep", "--algorithm", thermal, "--sets", document, "--out", "o"}, message});
+  }
+  bombs.push_back({{"run", spec_case, "--expectations", "big_report.json", "--out", "o"}, "larger than the 16.0 MiB"});
+  bombs.push_back({{"merge", "s1", "s2", "--out", "o"}, "merge needs about 9.0 GiB"});
+  for (const Bomb& bomb : bombs) {
+    const auto run = run_with_address_space_limit(four_gibibytes, bomb.args, work_.path());
+    EXPECT_EQ(run.status, 2) << run;
+    EXPECT_THAT(run.err, HasSubstr(bomb.message)) << run;
+    EXPECT_THAT(run.err, ::testing::Not(HasSubstr("internal error"))) << run;
+    EXPECT_EQ(entries_of(work_.path()), inputs) << run;
+  }
+}
+
 TEST_F(Hostile, MemoryLimitOptionCapsEveryEstimate) {
   json entry = thermal_case("mine.capped");
   entry["input"] = {{"generator", "cone"}, {"width", 1024}, {"height", 1024}};
