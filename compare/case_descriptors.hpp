@@ -66,9 +66,6 @@ nlohmann::json descriptor_expect_shape();
 // run adds them as `skip`.
 std::vector<std::string> descriptor_gpu_check_names(const nlohmann::json& expect);
 
-// Throws InputError when expect.fidelity is present and not true or false (`where` names the case).
-void check_descriptor_expect(const nlohmann::json& expect, const std::string& where);
-
 // Sets result.descriptors, adds the checks above and (with a report folder) descriptors.png.
 void add_case_descriptors(const CaseTerrains& terrains, const nlohmann::json& expect, const RunOptions& options,
                           CaseResult& result);

@@ -167,7 +167,8 @@ void write_artifacts(const ReferenceRuns& runs, const std::optional<GpuOutputs>&
 
 nlohmann::json field_spec_shape() {
   nlohmann::json shape = descriptor_expect_shape();
-  shape.update({{"cells", nullptr}, {"total", nullptr}, {"tolerance", nullptr}});
+  // cells: [[x, y, value], ...]
+  shape.update({{"cells", nlohmann::json::array({nlohmann::json::array({"integer", "integer", "number"})})}, {"total", "number"}, {"tolerance", "number"}});
   return shape;
 }
 

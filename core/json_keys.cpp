@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
@@ -22,18 +23,42 @@ void require_known_keys(const nlohmann::json& object, const std::vector<std::str
   }
 }
 
+namespace {
+
+bool has_type(const nlohmann::json& value, const std::string& type) {
+  if (type == "number") return value.is_number();
+  if (type == "integer") return value.is_number_integer();
+  if (type == "boolean") return value.is_boolean();
+  if (type == "string") return value.is_string();
+  throw std::logic_error("require_shape: unknown type '" + type + "' in a shape");
+}
+
+std::string a_or_an(const std::string& type) { return (type == "integer" ? "an " : "a ") + type; }
+
+}  // namespace
+
 void require_shape(const nlohmann::json& value, const nlohmann::json& shape, const std::string& where) {
+  if (shape.is_null()) return;
+  if (shape.is_string()) {
+    const std::string type = shape.get<std::string>();
+    if (!has_type(value, type)) throw InputError(fmt::format("{} = {}: expected {}", where, value.dump(), a_or_an(type)));
+    return;
+  }
+  if (shape.is_array()) {
+    if (!value.is_array()) throw InputError(fmt::format("{} = {}: expected an array", where, value.dump()));
+    if (shape.size() > 1 && value.size() != shape.size()) {
+      throw InputError(fmt::format("{} = {}: expected an array of {} elements", where, value.dump(), shape.size()));
+    }
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      require_shape(value[i], shape.size() == 1 ? shape[0] : shape[i], fmt::format("{}[{}]", where, i));
+    }
+    return;
+  }
   std::vector<std::string> known;
   for (const auto& [key, below] : shape.items()) known.push_back(key);
   require_known_keys(value, known, where);
   for (const auto& [key, below] : shape.items()) {
-    if (!value.contains(key)) continue;
-    const auto& given = value[key];
-    const std::string inner = fmt::format("{}.{}", where, key);
-    if (below.is_object() && given.is_object()) require_shape(given, below, inner);
-    if (below.is_array() && below.size() == 1 && given.is_array()) {
-      for (std::size_t i = 0; i < given.size(); ++i) require_shape(given[i], below[0], fmt::format("{}[{}]", inner, i));
-    }
+    if (value.contains(key)) require_shape(value[key], below, fmt::format("{}.{}", where, key));
   }
 }
 

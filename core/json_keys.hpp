@@ -15,9 +15,12 @@ namespace gt {
 // `object` not in `known`. `object` must be a JSON object (else InputError too).
 void require_known_keys(const nlohmann::json& object, const std::vector<std::string>& known, const std::string& where);
 
-// The same against a shape: an object whose keys are the known ones; a key's value in the shape
-// says what is checked below it: null (anything), an object (a nested strict object), or an
-// array holding one object (every element of the value is such an object).
+// The same against a shape, which says what each value must be: null (anything); "number",
+// "integer", "boolean" or "string"; an object (a strict object: its keys the known ones, each
+// present one checked against its shape); an array of one shape (an array, every element of that
+// shape); an array of several shapes (an array of exactly that many elements, each of its shape:
+// ["integer", "integer", "number"] is a cell). A case's "expect" is checked this way before any
+// case runs, so that a malformed one is refused with exit 2 instead of ending its case in error.
 void require_shape(const nlohmann::json& value, const nlohmann::json& shape, const std::string& where);
 
 // object[key] as a whole number in [min, max], or `fallback` when the key is absent. Refuses

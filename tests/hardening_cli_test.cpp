@@ -163,6 +163,18 @@ TEST_F(Hostile, AnEroderWithoutAnInputIsRefused) {
   }
 }
 
+// A malformed "expect" is refused before any case runs (it used to end its case in `error`, exit 1,
+// with nlohmann's type_error as the reason).
+TEST_F(Hostile, AMalformedExpectIsRefusedBeforeTheRun) {
+  json entry = thermal_case("mine.expect");
+  entry["expect"] = {{"cells", {{1, "x", 3}}}};
+  expect_case_refused(entry, "case mine.expect: expect.cells[0][1] = \"x\": expected an integer");
+  entry["expect"] = {{"tolerance", "big"}, {"total", 1}};
+  expect_case_refused(entry, "case mine.expect: expect.tolerance = \"big\": expected a number");
+  entry["expect"] = {{"talus_eq_4_10", "yes"}};
+  expect_case_refused(entry, "case mine.expect: expect.talus_eq_4_10: expected a JSON object");
+}
+
 TEST_F(Hostile, ATerrainGeneratorNamingAnEroderIsRefused) {
   json entry = thermal_case("mine.generated_by_an_eroder");
   entry["input"] = {{"generator", "terrain"}, {"algorithm", "erosion.pipe"}, {"width", 16}, {"height", 16}};

@@ -134,7 +134,7 @@ TEST(CaseDescriptors, FidelityMustBeABoolean) {
   std::ofstream(work.path() / "mine.json") << cases.dump();
   const auto refused = run({"run", "mine.typo", "--cases", "mine.json", "--out", "out"}, work.path());
   EXPECT_EQ(refused.status, 2) << refused;
-  EXPECT_THAT(refused.err, HasSubstr("fidelity = \"yes\": expected true or false")) << refused;
+  EXPECT_THAT(refused.err, HasSubstr("expect.fidelity = \"yes\": expected a boolean")) << refused;
   EXPECT_FALSE(fs::exists(work.path() / "out"));
 }
 

@@ -179,6 +179,26 @@ TEST(StrictKeys, ShapesAreCheckedBelowTheTopLevel) {
               HasSubstr("e.points[1]: unknown key 'y'"));
 }
 
+TEST(StrictKeys, ShapesCheckTypesAndTupleLengths) {
+  using nlohmann::json;
+  const json shape = {{"cells", json::array({json::array({"integer", "integer", "number"})})},
+                      {"total", "number"},
+                      {"at_rest", "boolean"},
+                      {"walk", {{"magnitudes", json::array({"number"})}}}};
+  EXPECT_NO_THROW(gt::require_shape({{"cells", {{1, 2, 0.5}, {0, 0, 1}}}, {"total", 3}, {"at_rest", true}}, shape, "e"));
+  EXPECT_NO_THROW(gt::require_shape({{"walk", {{"magnitudes", {1, 10.5}}}}}, shape, "e"));
+  EXPECT_THAT(refusal([&] { gt::require_shape({{"cells", "abc"}}, shape, "e"); }),
+              HasSubstr("e.cells = \"abc\": expected an array"));
+  EXPECT_THAT(refusal([&] { gt::require_shape({{"cells", {{1, 2, 0.5}, {1, 2}}}}, shape, "e"); }),
+              HasSubstr("e.cells[1] = [1,2]: expected an array of 3 elements"));
+  EXPECT_THAT(refusal([&] { gt::require_shape({{"cells", {{1.5, 2, 0.5}}}}, shape, "e"); }),
+              HasSubstr("e.cells[0][0] = 1.5: expected an integer"));
+  EXPECT_THAT(refusal([&] { gt::require_shape({{"total", "x"}}, shape, "e"); }), HasSubstr("e.total = \"x\": expected a number"));
+  EXPECT_THAT(refusal([&] { gt::require_shape({{"at_rest", 1}}, shape, "e"); }), HasSubstr("e.at_rest = 1: expected a boolean"));
+  EXPECT_THAT(refusal([&] { gt::require_shape({{"walk", {{"magnitudes", {1, "far"}}}}}, shape, "e"); }),
+              HasSubstr("e.walk.magnitudes[1] = \"far\": expected a number"));
+}
+
 TEST(StrictKeys, EditDistanceCountsSingleCharacterEdits) {
   EXPECT_EQ(gt::edit_distance("kitten", "sitting"), 3u);
   EXPECT_EQ(gt::edit_distance("", "abc"), 3u);

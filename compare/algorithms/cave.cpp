@@ -574,7 +574,7 @@ std::vector<Algorithm> cave_algorithms() {
        // Counted in reference/cave/marching_tetrahedra.cpp (meshing only, as the table times it) and
        // gpu/cave/marching_tetrahedra.cpp (meshing an uploaded volume); per voxel, output not counted.
        .traffic = {.cpu = 16.0, .gpu = 52.0},
-       .expect_shape = {{"triangles", nullptr}},
+       .expect_shape = {{"triangles", "integer"}},
        .memory = block_memory},
       {.name = "cave.marching_cubes",
        .summary = "the seed's dropped marching cubes (14 base cases, midpoints, no disambiguation): the variant with holes",

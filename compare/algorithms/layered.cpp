@@ -462,7 +462,7 @@ Algorithm layered_algorithm() {
           .prepare = prepare_layered,
           .kind = CaseKind::stepped,
           .benchmark = benchmark_layered,
-          .expect_shape = {{"at_rest", true}},
+          .expect_shape = {{"at_rest", "boolean"}},
           // The models: the double state (5·2 components, 2 bedrock layers, types, surface,
           // vegetation: ~112 B), its snapshot each step and its start copy, 8 outflows (64 B), the
           // float run's half of all that, the pictures' grids: under 700 B a cell; 1000 kept. With

@@ -90,8 +90,8 @@ Algorithm mesh_check_algorithm() {
           .prepare = prepare_mesh_check,
           .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::mesh,
-          .expect_shape = {{"watertight", nullptr}, {"closed", nullptr}, {"genus", nullptr}, {"euler", nullptr},
-                           {"border_edges", nullptr}, {"self_intersections", nullptr}},
+          .expect_shape = {{"watertight", "boolean"}, {"closed", "boolean"}, {"genus", "integer"}, {"euler", "integer"},
+                           {"border_edges", "integer"}, {"self_intersections", "integer"}},
           // Measured 650 B a triangle (bunny00, 75408 triangles, vs cow, 5804): CGAL's and
           // OpenMesh's copies and the self-intersection tree.
           .memory = [](const nlohmann::json&, const LoadedInput& input) {

@@ -158,6 +158,9 @@ void add_point_spec(const NoiseParams& params, const nlohmann::json& expect, Cas
   if (!expect.contains("points")) return;
   double worst = 0.0;
   for (const auto& entry : expect["points"]) {
+    if (entry.size() < 2 || entry.size() > 5) {
+      throw InputError(fmt::format("expect.points: {} is not [x, (y, (z, (w,))) value]", entry.dump()));
+    }
     std::array<double, 4> point{};
     const std::size_t coordinates = entry.size() - 1;
     for (std::size_t axis = 0; axis < coordinates && axis < 4; ++axis) point[axis] = entry[axis];
@@ -576,9 +579,9 @@ constexpr NoiseAlgorithm noise_table[] = {
 // The field's spec vectors plus what add_point_spec ("points"), add_lattice_spec and add_walk read.
 nlohmann::json noise_spec_shape() {
   nlohmann::json shape = field_spec_shape();
-  shape["points"] = nullptr;
-  shape["lattice_nonnegative"] = {{"size", nullptr}, {"count", nullptr}};
-  shape["walk"] = {{"magnitudes", nullptr}, {"direction", nullptr}};
+  shape["points"] = nlohmann::json::array({nlohmann::json::array({"number"})});  // [[x, y, (z, (w,)) value], ...]
+  shape["lattice_nonnegative"] = {{"size", "integer"}, {"count", "integer"}};
+  shape["walk"] = {{"magnitudes", nlohmann::json::array({"number"})}, {"direction", nlohmann::json::array({"number", "number", "number"})}};
   return shape;
 }
 

@@ -559,8 +559,11 @@ PreparedTwin prepare_particle(const nlohmann::json& resolved, const LoadedInput&
 
 nlohmann::json particle_expect_shape() {
   nlohmann::json shape = descriptor_expect_shape();
-  shape["droplet"] = {{"start", nullptr}, {"positions", nullptr}, {"sediment", nullptr}, {"cells", nullptr},
-                      {"tolerance", nullptr}};
+  shape["droplet"] = {{"start", nlohmann::json::array({"integer", "integer"})},
+                      {"positions", nlohmann::json::array({nlohmann::json::array({"number", "number"})})},
+                      {"sediment", "number"},
+                      {"cells", nlohmann::json::array({nlohmann::json::array({"integer", "integer", "number"})})},
+                      {"tolerance", "number"}};
   return shape;
 }
 

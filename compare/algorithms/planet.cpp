@@ -1033,7 +1033,7 @@ Algorithm planet_algorithm() {
           .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::optional_global_grid,
           .benchmark = benchmark_planet,
-          .expect_shape = {{"earth_like", true}},
+          .expect_shape = {{"earth_like", "boolean"}},
           .memory = planet_memory};
 }
 

@@ -268,7 +268,7 @@ PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightma
 // The field's spec vectors plus add_talus_spec's eq. 4.10 vector.
 nlohmann::json talus_spec_shape() {
   nlohmann::json shape = field_spec_shape();
-  shape["talus_eq_4_10"] = {{"angle", nullptr}, {"width", nullptr}, {"vertical_aspect", nullptr}, {"value", nullptr}};
+  shape["talus_eq_4_10"] = {{"angle", "number"}, {"width", "number"}, {"vertical_aspect", "number"}, {"value", "number"}};
   return shape;
 }
 
