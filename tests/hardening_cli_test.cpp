@@ -417,19 +417,27 @@ TEST_F(Hostile, ProgressLinesWithoutATerminalAndQuietSilencesThem) {
 // never ends, a folder reads as empty.
 TEST_F(Hostile, PipesDevicesAndFoldersAreRefusedWhereAFileIsExpected) {
   ASSERT_EQ(mkfifo((work_ / "fifo").c_str(), 0600), 0);
+  ASSERT_EQ(mkfifo((work_ / "fifo.off").c_str(), 0600), 0);
   fs::create_directory(work_ / "folder");
+  fs::create_directory(work_ / "folder.off");
   const std::string out = (work_ / "out").string();
   for (const std::string special : {(work_ / "fifo").string(), std::string("/dev/zero"), (work_ / "folder").string()}) {
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"run", "erosion.thermal.spec.*", "--expectations", special, "--out", out},
           std::vector<std::string>{"run", "erosion.thermal.spec.*", "--flakes", special, "--out", out},
-          std::vector<std::string>{"diff-reports", special, special}}) {
+          std::vector<std::string>{"diff-reports", special, special},
+          // The readers of heightmaps, meshes, images and volumes say so too, not "no such file".
+          std::vector<std::string>{"stats", special},
+          std::vector<std::string>{"check-mesh", special + ".off"},
+          std::vector<std::string>{"diff-image", special, special},
+          std::vector<std::string>{"run", "--algorithm", "cave.marching_tetrahedra", "--input", special, "--out", out}}) {
+      if (args[0] == "check-mesh" && !fs::exists(args[1])) continue;  // a mesh is read by its extension
       const auto run = gt::testing::run_program(groundtruth, args, work_.path());
       EXPECT_EQ(run.status, 2) << run;
       EXPECT_THAT(run.err, HasSubstr("not a regular file")) << run;
     }
   }
-  EXPECT_EQ(entries_of(work_.path()), (std::vector<std::string>{"fifo", "folder"}));
+  EXPECT_EQ(entries_of(work_.path()), (std::vector<std::string>{"fifo", "fifo.off", "folder", "folder.off"}));
 }
 
 // diff-reports is as strict as history: an outcome it does not know, a name of the wrong type or a

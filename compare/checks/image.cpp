@@ -23,6 +23,7 @@
 #include "core/errors.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/io/heightmap_io.hpp"
+#include "core/io/text_file.hpp"
 #include "core/grid.hpp"
 
 namespace gt {
@@ -184,10 +185,7 @@ void require_flat(const OIIO::ImageBuf& image, const std::string& label) {
 }  // namespace
 
 OIIO::ImageBuf read_image(const std::filesystem::path& file) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) {
-    throw InputError(fmt::format("cannot read {}: no such file", file.string()));
-  }
+  require_regular_file(file, "cannot read");
   check_exr_attribute_sizes(file);
   const auto input = OIIO::ImageInput::open(file.string());
   if (!input) throw InputError(fmt::format("cannot read {}: {}", file.string(), OIIO::geterror()));

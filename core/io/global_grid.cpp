@@ -13,6 +13,7 @@
 
 #include "core/errors.hpp"
 #include "core/io/netcdf_header.hpp"
+#include "core/io/text_file.hpp"
 #include "core/memory.hpp"
 
 namespace gt {
@@ -21,10 +22,7 @@ namespace {
 class NetcdfFile {
  public:
   explicit NetcdfFile(const std::string& path) : path_(path) {
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error)) {
-      throw InputError(fmt::format("{}: no such file, or not a regular file (a pipe or device would block)", path));
-    }
+    require_regular_file(path, "");
     detail::check_netcdf_header(path);  // before libnetcdf allocates what the header declares
     const int status = nc_open(path.c_str(), NC_NOWRITE, &id_);
     if (status != NC_NOERR) {

@@ -38,6 +38,7 @@
 #include "core/io/atomic_file.hpp"
 #include "core/io/dem_formats.hpp"
 #include "core/io/npy.hpp"
+#include "core/io/text_file.hpp"
 
 namespace gt {
 namespace {
@@ -485,10 +486,7 @@ double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c 
 
 HeightmapFile read_heightmap(const path& file, const HeightmapReadOptions& options) {
   if (file.empty()) throw InputError("cannot open heightmap: empty path");
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) {
-    throw InputError(fmt::format("cannot open {}: no such file", file.string()));
-  }
+  require_regular_file(file, "cannot open");
   const std::string extension = lower_extension(file);
   HeightmapFile result = extension == ".json"  ? detail::read_volcano_json(file)
                          : extension == ".npz" ? detail::read_matplotlib_npz(file)

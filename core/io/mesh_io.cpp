@@ -30,6 +30,7 @@
 
 #include "core/errors.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/io/text_file.hpp"
 
 namespace gt {
 
@@ -612,10 +613,7 @@ std::vector<Point> points_of(const Mesh& mesh) {
 
 MeshFile read_mesh(const path& file) {
   const ReadableFormat& format = readable_format_of(file);
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) {
-    throw InputError(fmt::format("cannot open {}: no such file", file.string()));
-  }
+  require_regular_file(file, "cannot open");
   const Soup soup = read_soup(file, format);
   if (soup.polygons.empty()) {
     throw InputError(fmt::format("cannot read {}: no faces (an empty file, or points only)", file.string()));

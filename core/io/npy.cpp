@@ -25,6 +25,7 @@
 #include <fmt/ranges.h>
 
 #include "core/errors.hpp"
+#include "core/io/text_file.hpp"
 
 namespace gt::detail {
 namespace {
@@ -203,6 +204,7 @@ NpyArray read_npy(const ByteSource& source, std::uintmax_t stored_bytes, const S
 }
 
 NpyArray read_npy_file(const std::filesystem::path& file, const ShapeCheck& element_count, const std::string& what) {
+  require_regular_file(file, "cannot open");
   const std::string where = file.string();
   std::error_code error;
   const std::uintmax_t stored_bytes = std::filesystem::file_size(file, error);

@@ -11,14 +11,20 @@
 
 namespace gt {
 
-std::string read_text_file(const std::filesystem::path& file, const TextFileLimits& limits, const std::string& what) {
+void require_regular_file(const std::filesystem::path& file, const std::string& what) {
+  const std::string named = what.empty() ? file.string() : fmt::format("{} {}", what, file.string());
   std::error_code error;
   const auto status = std::filesystem::status(file, error);
-  if (!std::filesystem::exists(status)) throw InputError(fmt::format("{} {}: no such file", what, file.string()));
+  if (!std::filesystem::exists(status)) throw InputError(fmt::format("{}: no such file", named));
   if (!std::filesystem::is_regular_file(status)) {
-    throw InputError(fmt::format("{} {}: {}, not a regular file", what, file.string(),
+    throw InputError(fmt::format("{}: {}, not a regular file", named,
                                  std::filesystem::is_directory(status) ? "a folder" : "a pipe, socket or device"));
   }
+}
+
+std::string read_text_file(const std::filesystem::path& file, const TextFileLimits& limits, const std::string& what) {
+  require_regular_file(file, what);
+  std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(file, error);
   if (error) throw InputError(fmt::format("{} {}: cannot read: {}", what, file.string(), error.message()));
   if (size > limits.max_bytes) {

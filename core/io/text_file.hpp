@@ -10,6 +10,11 @@
 //     FIFO would block forever, a device such as /dev/zero never ends, a folder reads as empty),
 //     is larger than `limits.max_bytes`, when its parse would need more memory than this process
 //     may use (core/memory.hpp), or when it cannot be read.
+//
+//   void require_regular_file(file, what)
+//     The kind check alone, for every reader of a user's file (heightmaps, meshes, images, netCDF):
+//     InputError "WHAT FILE: no such file", "...: a folder, not a regular file" or "...: a pipe,
+//     socket or device, not a regular file" (`what` may be empty).
 #pragma once
 
 #include <cstdint>
@@ -29,5 +34,7 @@ inline constexpr TextFileLimits json_document_limits{std::uintmax_t{1} << 30, 40
 inline constexpr TextFileLimits hand_written_limits{std::uintmax_t{16} << 20, 40.0};
 
 std::string read_text_file(const std::filesystem::path& file, const TextFileLimits& limits, const std::string& what);
+
+void require_regular_file(const std::filesystem::path& file, const std::string& what);
 
 }  // namespace gt
