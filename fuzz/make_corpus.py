@@ -101,3 +101,47 @@ put("cases", "cases.json", json.dumps([
 put("expectations", "expectations.txt",
     "# comment\ncave.marching_cubes.* mesh.closed.cpu fail device=llvmpipe* holes in the seed's tables\n"
     "erosion.thermal.* parity.* pass known good\n")
+
+# Global grids: a classic netCDF (CDF-1) file of a 3x4 ROSE(lat, lon) grid in float with its
+# coordinate variables and a _FillValue, written byte by byte after the netCDF classic format
+# specification (no netCDF tool needed).
+def nc_name(name):
+    data = name.encode()
+    return struct.pack(">I", len(data)) + data + b"\0" * (-len(data) % 4)
+
+
+def nc_global_grid():
+    lat, lon = [-45.0, 0.0, 45.0], [0.0, 90.0, 180.0, 270.0]
+    rose = [float(v) for v in range(-300, 900, 100)]
+    rose[5] = -9999.0  # the fill value: no-data
+    absent = b"\0" * 8
+    fill_att = (struct.pack(">II", 0x0C, 1) + nc_name("_FillValue") + struct.pack(">II", 5, 1)
+                + struct.pack(">f", -9999.0))
+    variables = [("lat", [0], absent, 6, struct.pack(">3d", *lat)),
+                 ("lon", [1], absent, 6, struct.pack(">4d", *lon)),
+                 ("ROSE", [0, 1], fill_att, 5, struct.pack(">12f", *rose))]
+    header = b"CDF\x01" + struct.pack(">I", 0)
+    header += struct.pack(">II", 0x0A, 2) + nc_name("lat") + struct.pack(">I", 3) + nc_name("lon") + struct.pack(">I", 4)
+    header += absent  # no global attributes
+    entry_sizes = [len(nc_name(n)) + 4 + 4 * len(d) + len(a) + 4 + 4 + 4 for n, d, a, _, _ in variables]
+    offset = len(header) + 8 + sum(entry_sizes)
+    header += struct.pack(">II", 0x0B, len(variables))
+    data = b""
+    for name, dims, atts, nc_type, payload in variables:
+        header += nc_name(name) + struct.pack(">I", len(dims)) + b"".join(struct.pack(">I", d) for d in dims)
+        header += atts + struct.pack(">III", nc_type, len(payload), offset + len(data))
+        data += payload
+    return header + data
+
+
+put("global_grid", "etopo_like.nc", nc_global_grid())
+
+# Reports: a small report.json of each shape the readers meet (a passing case, a failing one with
+# expectations, a shard).
+report_case = {"name": "erosion.thermal.spec.example_3x3", "algorithm": "erosion.thermal", "status": "pass",
+               "checks": [{"name": "spec.cells.cpu", "status": "pass", "value": 0.0, "bound": 0.0, "detail": "x"}],
+               "timing": {"cpu_ms": 1.5, "gpu_ms": 0.5}}
+put("report", "report.json", json.dumps({"schema": 1, "environment": {"command_line": "groundtruth run"},
+                                          "cases": [report_case]}))
+put("report", "shard.json", json.dumps({"schema": 1, "shard": {"index": 1, "count": 2, "selection": [report_case["name"]]},
+                                         "cases": [dict(report_case, status="fail", expected="a known fail")]}))
