@@ -39,7 +39,7 @@ std::optional<CaseResult> worker_case(const std::filesystem::path& worker_folder
   if (!std::filesystem::exists(worker_folder / "report.json")) return std::nullopt;
   Report report;
   try {
-    report = report_from_json(read_report_json(worker_folder / "report.json"));
+    report = read_report(worker_folder / "report.json");
   } catch (const InputError&) {
     return std::nullopt;
   }

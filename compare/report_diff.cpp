@@ -167,7 +167,9 @@ ReportDiff diff_checked_reports(const json& base, const json& next) {
 
 }  // namespace
 
-json read_report_json(const std::filesystem::path& file) {
+namespace {
+
+json parse_report_document(const std::filesystem::path& file) {
   std::istringstream stream(read_text_file(file, json_document_limits, "report"));
   json report;
   try {
@@ -176,15 +178,28 @@ json read_report_json(const std::filesystem::path& file) {
     throw InputError(fmt::format("{} is not valid JSON: {}", file.string(), error.what()));
   }
   check_report(report, file.string());
-  // As strict as the readers that rebuild the report (history, merge, a run's workers): an unknown
-  // outcome ("FAIL", "eror") or a field of the wrong type is refused, never read as no change.
+  return report;
+}
+
+Report rebuilt_report(const json& document, const std::filesystem::path& file) {
   try {
-    report_from_json(report);
+    return report_from_json(document);
   } catch (const InputError& error) {
     throw InputError(fmt::format("{}: {}", file.string(), error.what()));
   }
-  return report;
 }
+
+}  // namespace
+
+json read_report_json(const std::filesystem::path& file) {
+  json document = parse_report_document(file);
+  // As strict as the readers that rebuild the report (history, merge, a run's workers): an unknown
+  // outcome ("FAIL", "eror") or a field of the wrong type is refused, never read as no change.
+  (void)rebuilt_report(document, file);
+  return document;
+}
+
+Report read_report(const std::filesystem::path& file) { return rebuilt_report(parse_report_document(file), file); }
 
 ReportDiff diff_reports(const json& base, const json& next) {
   check_report(base, "BASE");

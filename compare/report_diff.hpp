@@ -29,6 +29,8 @@
 
 namespace gt {
 
+struct Report;  // compare/result.hpp, which includes this header
+
 struct ReportDiff {
   struct Change {
     std::string where;   // "case" or "case: check"
@@ -46,7 +48,11 @@ struct ReportDiff {
   double timing_noise_factor = 1.25;
 };
 
+// A report.json read under the size, memory and depth limits, checked as strictly as
+// report_from_json checks it (an unknown outcome, a field of the wrong type, no cases: InputError
+// naming the file): as its JSON document, or rebuilt as a Report (parsed once).
 nlohmann::json read_report_json(const std::filesystem::path& file);
+Report read_report(const std::filesystem::path& file);
 
 ReportDiff diff_reports(const nlohmann::json& base, const nlohmann::json& next);
 

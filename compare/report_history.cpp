@@ -104,15 +104,6 @@ HistoryRevision revision_of(const Environment& environment, const std::filesyste
   return revision;
 }
 
-Report read_report(const std::filesystem::path& file) {
-  const auto document = read_report_json(file);  // its errors name the file
-  try {
-    return report_from_json(document);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("{}: {}", file.string(), error.what()));
-  }
-}
-
 // ---- series
 
 template <class Entry>

@@ -149,7 +149,7 @@ struct LoadedShard {
 
 LoadedShard load_shard(const std::filesystem::path& given) {
   const auto folder = shard_folder(given);
-  LoadedShard shard{folder, report_from_json(read_report_json(folder / "report.json"))};
+  LoadedShard shard{folder, read_report(folder / "report.json")};
   if (!shard.report.shard) {
     throw InputError(fmt::format("merge: {} is not a shard's report (it was not run with --shard)", folder.string()));
   }

@@ -1,9 +1,7 @@
-// Worker processes through posix_spawn; see compare/worker.hpp.
+// Worker processes through compare/subprocess.hpp spawn_child; see compare/worker.hpp.
 #include "compare/worker.hpp"
 
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <string.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -18,15 +16,12 @@
 #include <fmt/format.h>
 
 #include "compare/output_folder.hpp"
-
-extern char** environ;
+#include "compare/subprocess.hpp"
 
 namespace gt {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-constexpr const char* parent_variable = "GROUNDTRUTH_PARENT_PID";
 
 struct Running {
   std::size_t task = 0;
@@ -36,56 +31,13 @@ struct Running {
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// This process's environment with `overrides` ("NAME=value") added or replacing the same names.
-std::vector<std::string> environment_with(const std::vector<std::string>& overrides) {
-  std::vector<std::string> variables;
-  const auto name_of = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
-  for (char** entry = environ; *entry != nullptr; ++entry) {
-    const std::string variable = *entry;
-    const bool replaced = std::any_of(overrides.begin(), overrides.end(),
-                                      [&](const std::string& override) { return name_of(override) == name_of(variable); });
-    if (!replaced) variables.push_back(variable);
-  }
-  variables.insert(variables.end(), overrides.begin(), overrides.end());
-  return variables;
-}
-
-// Starts the task in its own process group (so that a timeout or an interruption kills all of
-// it) with the default signal mask (this process blocks the signals its clean-up thread waits
-// for); 0 when it could not start.
+// Starts the task (compare/subprocess.hpp spawn_child: its own process group, the default signal
+// mask, ended with this process); 0 when it could not start.
 pid_t spawn(const WorkerTask& task) {
-  const auto program = std::filesystem::read_symlink("/proc/self/exe").string();
-  std::vector<std::string> words = {program};
+  std::vector<std::string> words = {std::filesystem::read_symlink("/proc/self/exe").string()};
   words.insert(words.end(), task.args.begin(), task.args.end());
-  std::vector<char*> argv;
-  for (auto& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, task.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
-  posix_spawnattr_setpgroup(&attributes, 0);
-  sigset_t no_signals;
-  sigemptyset(&no_signals);
-  posix_spawnattr_setsigmask(&attributes, &no_signals);
-  auto overrides = task.environment;
-  overrides.push_back(fmt::format("{}={}", parent_variable, getpid()));
-  auto variables = environment_with(overrides);
-  std::vector<char*> envp;
-  for (auto& variable : variables) envp.push_back(variable.data());
-  envp.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, program.c_str(), &actions, &attributes, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attributes);
-  if (spawned != 0) return 0;
-  add_running_worker(pid);
-  return pid;
+  int ignored = 0;
+  return spawn_child(words, task.log, task.environment, ignored);
 }
 
 WorkerResult result_of(int wait_status, const Running& running, bool timed_out) {
@@ -110,7 +62,7 @@ std::vector<std::string> llvmpipe_share(int parallel) {
 }
 
 void end_with_parent() {
-  const char* parent = std::getenv(parent_variable);
+  const char* parent = std::getenv(parent_pid_variable);
   if (parent == nullptr) return;
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (std::to_string(getppid()) != parent) _exit(128 + SIGKILL);  // it died before the request

@@ -20,6 +20,9 @@ struct WorkerResult {
 // "SIGSEGV (signal 11)" for a signal number.
 std::string signal_description(int signal_number);
 
+// The variable through which a child learns its parent's pid (compare/subprocess.hpp spawn_child).
+inline constexpr const char* parent_pid_variable = "GROUNDTRUTH_PARENT_PID";
+
 // In a worker (a process whose environment names its parent in GROUNDTRUTH_PARENT_PID, as
 // run_workers starts them): asks the kernel to kill it when its parent dies, so that workers of a
 // run killed outright (SIGKILL, the memory killer) do not run on; exits at once when the parent

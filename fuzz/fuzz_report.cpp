@@ -1,11 +1,11 @@
-// libFuzzer target: a report.json of arbitrary bytes read as diff-reports, --baseline, history and
-// merge read one (compare/report_diff.hpp read_report_json, then compare/report/report_read.hpp
-// report_from_json). Bad input must end in InputError: an outcome it does not know, a field of the
-// wrong type, a case name that is no dotted identifier, JSON deeper than the depth limit.
+// libFuzzer target: a report.json of arbitrary bytes read as history, merge and a run's workers
+// read one (compare/report_diff.hpp read_report: the bounded parse, then report_from_json's
+// checks, which diff-reports and --baseline run too). Bad input must end in InputError: an outcome
+// it does not know, a field of the wrong type, a case name that is no dotted identifier, JSON
+// deeper than the depth limit.
 #include <cstddef>
 #include <cstdint>
 
-#include "compare/report/report_read.hpp"
 #include "compare/report_diff.hpp"
 #include "core/errors.hpp"
 #include "fuzz/fuzz_file.hpp"
@@ -13,7 +13,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto path = gt::fuzz::write_input(data, size, "report.json");
   try {
-    (void)gt::report_from_json(gt::read_report_json(path));
+    (void)gt::read_report(path);
   } catch (const gt::InputError&) {
   }
   return 0;

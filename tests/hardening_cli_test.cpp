@@ -528,6 +528,30 @@ TEST_F(Hostile, AFullDiskIsExitTwoWithNothingPartial) {
   EXPECT_EQ(gt::testing::read_text(work_ / "report" / "report.json"), earlier_report);
 }
 
+// A reader that went away (`groundtruth list | head -1`) is a failed write, not SIGPIPE: exit 2
+// with the reason, after the clean-up.
+TEST_F(Hostile, AClosedPipeIsExitTwoNotADeathBySignal) {
+  int ends[2] = {-1, -1};
+  ASSERT_EQ(pipe(ends), 0);
+  close(ends[0]);
+  std::vector<std::string> words = {groundtruth, "list"};
+  std::vector<char*> argv = gt::testing::argv_of(words);
+  const std::string err_file = (work_ / "stderr").string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, ends[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, groundtruth.c_str(), &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  close(ends[1]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_THAT(gt::testing::read_text(err_file), HasSubstr("cannot write to standard output: Broken pipe"));
+}
+
 TEST_F(Hostile, AParameterGivenTwiceIsRefused) {
   const std::string volcano = (fs::path(GT_DATASET_DIR) / "real" / "volcano.json").string();
   for (const std::vector<std::string>& args :

@@ -2,6 +2,8 @@
 // --case-timeout), a worker that crashes, retries, the user's own suite and expectations,
 // provenance, and shards merged back into one report.
 #include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
 
 #include <chrono>
 #include <filesystem>
@@ -196,6 +198,53 @@ TEST(Workflow, WorkersEndWithAParentKilledOutright) {
   EXPECT_EQ(finished.get().status, 128 + SIGKILL);
   EXPECT_TRUE(await_workers(work.path(), "--algorithm", false, 10).empty())
       << "the worker ran on after its parent was killed";
+}
+
+// The plotting helpers do as the workers do (compare/report/helper_lifetime.py): a helper whose
+// parent is killed outright ends with it, and one started for a parent that is already gone does
+// not start drawing.
+TEST(Workflow, PlottingHelpersEndWithTheirParent) {
+  const gt::testing::TemporaryFolder work("gt_workflow");
+  const fs::path scripts = fs::path(GT_TEST_DATA_DIR).parent_path().parent_path() / "compare" / "report";
+  const std::string helper = "import sys, time; sys.path.insert(0, sys.argv[1]); "
+                             "from helper_lifetime import end_with_parent; end_with_parent(); "
+                             "open('ready', 'w').close(); time.sleep(120)";
+  // sh is the parent: it names itself, starts the helper in the background and waits.
+  std::vector<std::string> words = {"/bin/sh", "-c",
+                                    "GROUNDTRUTH_PARENT_PID=$$ python3 -c \"$0\" \"$1\" & echo $! > helper.pid; wait",
+                                    helper, scripts.string()};
+  std::vector<char*> argv = gt::testing::argv_of(words);
+  pid_t shell = 0;
+  const std::string cwd = work.path().string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  ASSERT_EQ(posix_spawn(&shell, argv[0], &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(work / "ready") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_TRUE(fs::exists(work / "ready")) << "the helper never started";
+  const pid_t helper_pid = std::stoi(gt::testing::read_text(work / "helper.pid"));
+  kill(shell, SIGKILL);
+  waitpid(shell, nullptr, 0);
+  const auto gone = [&] {
+    const fs::path stat = fs::path("/proc") / std::to_string(helper_pid) / "stat";
+    if (!fs::exists(stat)) return true;
+    const std::string fields = gt::testing::read_text(stat);
+    return fields.substr(fields.rfind(')') + 2, 1) == "Z";  // ended, not yet reaped by its new parent
+  };
+  const auto patience = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (!gone() && std::chrono::steady_clock::now() < patience) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_TRUE(gone()) << "the helper ran on after its parent was killed";
+
+  // The plot helpers call it first: named a parent that is not theirs, they exit 128 + 9 at once.
+  for (const char* script : {"plot_series.py", "plot_timings.py"}) {
+    const auto run = gt::testing::run_program("/usr/bin/python3", {(scripts / script).string(), "none.json", "none.png"},
+                                              work.path(), {{"GROUNDTRUTH_PARENT_PID", "1"}});
+    EXPECT_EQ(run.status, 128 + SIGKILL) << script << run;
+  }
 }
 
 // A case past --case-timeout is killed and named; the rest of the run is unaffected. 20 s: the

@@ -16,6 +16,8 @@ import json
 import math
 import sys
 
+from helper_lifetime import end_with_parent
+
 
 def usable(x, y, log_x, log_y):
     if x is None or y is None or not math.isfinite(x) or not math.isfinite(y):
@@ -74,4 +76,5 @@ def main(argv):
 
 
 if __name__ == "__main__":
+    end_with_parent()
     sys.exit(main(sys.argv))

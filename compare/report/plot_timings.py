@@ -11,6 +11,8 @@ last line of output as the reason.
 """
 import json
 import sys
+
+from helper_lifetime import end_with_parent
 from collections import defaultdict
 
 
@@ -111,4 +113,5 @@ def main(argv):
 
 
 if __name__ == "__main__":
+    end_with_parent()
     sys.exit(main(sys.argv))

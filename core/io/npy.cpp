@@ -204,7 +204,7 @@ NpyArray read_npy(const ByteSource& source, std::uintmax_t stored_bytes, const S
 }
 
 NpyArray read_npy_file(const std::filesystem::path& file, const ShapeCheck& element_count, const std::string& what) {
-  require_regular_file(file, "cannot open");
+  require_regular_file(file, fmt::format("cannot read {}", what));
   const std::string where = file.string();
   std::error_code error;
   const std::uintmax_t stored_bytes = std::filesystem::file_size(file, error);
