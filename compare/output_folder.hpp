@@ -56,7 +56,8 @@ void install_interrupt_cleanup();
 // destruction: SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2 and SIGALRM, where their disposition is
 // still the default (which would end the process with the staging folder left behind), get the
 // same clean-up and exit as the command line's; `scratch` (a temporary folder of the host's, or
-// empty) is removed too. Dispositions the host set are left alone, and restored ones are put back.
+// empty) is removed too. Dispositions the host set are left alone; the default is put back at the
+// end of the scope.
 // SIGINT stays the host's (Python raises KeyboardInterrupt when the call returns).
 class EmbeddedInterruptCleanup {
  public:

@@ -7,7 +7,8 @@
 //   its own process group (a timeout or an interruption kills all of it, compare/output_folder.hpp
 //   knows it until the caller waits for it), stdin from /dev/null, stdout and stderr to `log`
 //   (created or replaced), the default signal mask (this process blocks the signals its clean-up
-//   thread waits for), and this process's environment with `overrides` ("NAME=value") and
+//   thread waits for) and default SIGPIPE and SIGXFSZ (which this process ignores), and this
+//   process's environment with `overrides` ("NAME=value") and
 //   GROUNDTRUTH_PARENT_PID=<this pid> (compare/worker.hpp end_with_parent: the child ends with
 //   its parent). 0 when it could not start, with the reason in `error` (errno's value).
 // temporary_path(prefix, suffix) -> a fresh path in the temporary directory, unique in this
