@@ -621,5 +621,9 @@ void expect_clean_interruption(int signal_number) {
 
 TEST(Interrupted, BySigintLeavesNothing) { expect_clean_interruption(SIGINT); }
 TEST(Interrupted, BySigtermLeavesNothing) { expect_clean_interruption(SIGTERM); }
+// The signals issue 40 found leaving the staging folder: SIGUSR1 and SIGALRM (SIGPIPE is a failed
+// write, AClosedPipeIsExitTwoNotADeathBySignal).
+TEST(Interrupted, BySigusr1LeavesNothing) { expect_clean_interruption(SIGUSR1); }
+TEST(Interrupted, BySigalrmLeavesNothing) { expect_clean_interruption(SIGALRM); }
 
 }  // namespace
