@@ -68,6 +68,13 @@ void add_run_provenance(Environment& environment, const std::string& command_lin
   environment.git_dirty = environment.git.ends_with("-dirty");
 }
 
+std::string version_line() {
+  const auto described = git("describe --always --dirty");
+  const bool known = described.status == 0 && !described.text.empty();
+  return fmt::format("groundtruth {} ({} build, configured at {})", known ? described.text : GT_GIT_DESCRIBE,
+                     GT_BUILD_TYPE, GT_GIT_DESCRIBE);
+}
+
 void add_digests(Environment& environment, const std::vector<std::filesystem::path>& data_files) {
   for (const auto& [stage, digest] : compiled_shader_digests()) environment.shaders[stage] = digest;
   for (const auto& file : data_files) environment.data[file.string()] = sha256_file_hex(file);

@@ -20,6 +20,11 @@ std::string command_line_of(int argc, char** argv);
 // git and git_revision say "unknown: <why>".
 void add_run_provenance(Environment& environment, const std::string& command_line);
 
+// `groundtruth --version`: "groundtruth <git describe --always --dirty of the source tree>
+// (<build type>, configured at <describe then>)", or the configure-time revision alone when git
+// cannot answer.
+std::string version_line();
+
 // Adds the digests of the shaders compiled so far by this process and of `data_files`.
 void add_digests(Environment& environment, const std::vector<std::filesystem::path>& data_files);
 

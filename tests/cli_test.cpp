@@ -1171,6 +1171,46 @@ TEST(CliList, TextNamesAlgorithmsAndCases) {
   }
 }
 
+// A pattern names algorithms by name and cases by their own name or their algorithm's; --algorithms
+// leaves the cases out; a pattern that names nothing is bad input. Ranges of whole numbers read as
+// whole numbers.
+TEST(CliList, PatternsAndAlgorithmsAloneFilterTheListing) {
+  const TempDir work;
+  const RunResult pipes = run_groundtruth({"list", "--json", "erosion.pipe*"}, work.path());
+  ASSERT_EQ(pipes.status, 0) << pipes;
+  const json listing = json::parse(pipes.out);
+  ASSERT_EQ(listing.at("algorithms").size(), 1u);
+  EXPECT_EQ(listing["algorithms"][0].at("name"), "erosion.pipe");
+  ASSERT_FALSE(listing.at("cases").empty());
+  for (const auto& spec : listing.at("cases")) EXPECT_EQ(spec.at("algorithm"), "erosion.pipe") << spec.dump();
+  // A case pattern also names its algorithm's cases only, and the algorithm itself not.
+  const json one = json::parse(run_groundtruth({"list", "--json", "erosion.thermal.spec.example_3x3"}, work.path()).out);
+  EXPECT_TRUE(one.at("algorithms").empty());
+  ASSERT_EQ(one.at("cases").size(), 1u);
+
+  const RunResult alone = run_groundtruth({"list", "--algorithms", "noise.*"}, work.path());
+  ASSERT_EQ(alone.status, 0) << alone;
+  EXPECT_THAT(alone.out, ::testing::HasSubstr("noise.simplex3"));
+  EXPECT_THAT(alone.out, ::testing::Not(::testing::HasSubstr("Cases")));
+  EXPECT_THAT(alone.out, ::testing::Not(::testing::HasSubstr("erosion.")));
+
+  const RunResult thermal = run_groundtruth({"list", "--algorithms", "erosion.thermal"}, work.path());
+  EXPECT_THAT(thermal.out, ::testing::HasSubstr("[0, 100000]")) << thermal;  // iterations: an integer
+  EXPECT_THAT(thermal.out, ::testing::HasSubstr("[0.0, 85.0]")) << thermal;  // talus_angle: a real
+
+  const RunResult none = run_groundtruth({"list", "nothing*"}, work.path());
+  EXPECT_EQ(none.status, 2) << none;
+  EXPECT_THAT(none.err, ::testing::HasSubstr("no algorithm or case matches nothing*")) << none;
+}
+
+// --version names the source tree's revision (git describe) and the build, and exits 0.
+TEST(CliVersion, NamesTheRevisionAndTheBuild) {
+  const TempDir work;
+  const RunResult run = run_groundtruth({"--version"}, work.path());
+  ASSERT_EQ(run.status, 0) << run;
+  EXPECT_THAT(run.out, ::testing::MatchesRegex("groundtruth [^ ]+ \\([A-Za-z]+ build, configured at [^ )]+\\)\n")) << run;
+}
+
 // ---- 5. atomic replacement of a report folder ------------------------------------------------
 
 TEST(CliRun, ReportFolderIsReplacedWhole) {

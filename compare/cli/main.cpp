@@ -26,6 +26,9 @@
 // diff-image: 0 no pixel fails the neighbourhood-tolerant comparison, 1 some do, 2 bad input;
 // stats: 0 something measured, 2 unreadable or nothing measurable;
 // render: 0 written, 2 bad input, a camera inside the mesh or seeing nothing, or no GL context for gpu).
+#include <fnmatch.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cerrno>
 #include <cstdio>
@@ -215,11 +218,29 @@ void parse_grid_size(const std::string& text, gt::AdHocCase& ad_hoc) {
 }
 
 
-nlohmann::json list_json() {
+// What `list` shows: every algorithm and case, or those a pattern names (an algorithm by its name,
+// a case by its own name or its algorithm's); cases left out with --algorithms.
+struct ListRequest {
+  std::vector<std::string> patterns;  // shell-style (fnmatch); empty: everything
+  bool algorithms_only = false;
+  bool as_json = false;
+};
+
+bool named_by(const std::vector<std::string>& patterns, const std::string& name) {
+  return patterns.empty() || std::any_of(patterns.begin(), patterns.end(), [&](const std::string& pattern) {
+           return fnmatch(pattern.c_str(), name.c_str(), 0) == 0;
+         });
+}
+
+nlohmann::json list_json(const ListRequest& request) {
   nlohmann::json out = {{"algorithms", nlohmann::json::array()}, {"cases", nlohmann::json::array()}};
-  for (const auto& algorithm : gt::algorithms()) out["algorithms"].push_back(gt::algorithm_json(algorithm));
+  for (const auto& algorithm : gt::algorithms()) {
+    if (named_by(request.patterns, algorithm.name)) out["algorithms"].push_back(gt::algorithm_json(algorithm));
+  }
+  if (request.algorithms_only) return out;
   const auto recorded = gt::bundled_case_seconds(GT_DATASET_DIR);
   for (const auto& spec : gt::load_cases(std::filesystem::path(GT_DATASET_DIR) / "cases")) {
+    if (!named_by(request.patterns, spec.name) && !named_by(request.patterns, spec.algorithm)) continue;
     nlohmann::json entry = {{"name", spec.name},   {"algorithm", spec.algorithm},     {"params", spec.params},
                             {"input", spec.input}, {"file", spec.origin},             {"tier", gt::tier_name(spec.tier)}};
     if (const auto found = recorded.find(spec.name); found != recorded.end()) entry["expected_seconds"] = found->second;
@@ -232,9 +253,23 @@ nlohmann::json list_json() {
 // times every size of gt::BenchmarkOptions).
 const std::vector<int> report_tier_benchmark_sizes = {256};
 
-void print_list(bool as_json) {
-  const auto listing = list_json();
-  if (as_json) {
+// A parameter's range as a person reads it: [0, 100000] for a whole number, [0.0, 85.0] for a real.
+std::string range_text(const nlohmann::json& param) {
+  if (param.contains("choices")) return param["choices"].dump();
+  if (!param.contains("min")) return "true|false";
+  if (param["kind"] == "integer") {
+    return fmt::format("[{}, {}]", param["min"].get<long long>(), param["max"].get<long long>());
+  }
+  return fmt::format("[{}, {}]", param["min"].dump(), param["max"].dump());
+}
+
+void print_list(const ListRequest& request) {
+  const auto listing = list_json(request);
+  if (listing["algorithms"].empty() && listing["cases"].empty()) {
+    throw gt::InputError(fmt::format("list: no algorithm or case matches {}; `groundtruth list` shows them all",
+                                     fmt::join(request.patterns, " ")));
+  }
+  if (request.as_json) {
     fmt::print("{}\n", listing.dump(2));
     return;
   }
@@ -243,12 +278,12 @@ void print_list(bool as_json) {
     fmt::print("  {}  {}\n    source: {}\n", algorithm["name"].get<std::string>(),
                algorithm["summary"].get<std::string>(), algorithm["source"].get<std::string>());
     for (const auto& param : algorithm["params"]) {
-      const auto range = param.contains("choices") ? param["choices"].dump()
-                                                   : (param.contains("min") ? fmt::format("[{}, {}]", param["min"].dump(), param["max"].dump()) : "true|false");
+      const auto range = range_text(param);
       fmt::print("    {:16} default {:12} {:22} {:8} {}\n", param["name"].get<std::string>(), param["default"].dump(),
                  range, param["unit"].get<std::string>(), param["description"].get<std::string>());
     }
   }
+  if (request.algorithms_only) return;
   fmt::print("Cases (tier, and the seconds each took on the 2-core reference machine: datasets/case-seconds.json)\n");
   for (const auto& spec : listing["cases"]) {
     fmt::print("  {:64} {:6} {}\n", spec["name"].get<std::string>(), spec["tier"].get<std::string>(),
@@ -305,9 +340,14 @@ int run_command_line(int argc, char** argv) {
       ->check(finite_number & CLI::Range(1.0, 1e9));
   app.fallthrough();
 
-  bool list_as_json = false;
+  app.set_version_flag("--version", [] { return gt::version_line(); }, "the version: the source tree's git revision and the build");
+  ListRequest list_request;
   auto* list = app.add_subcommand("list", "algorithms with their parameters, and the cases");
-  list->add_flag("--json", list_as_json, "machine-readable");
+  list->add_option("patterns", list_request.patterns,
+                   "only the algorithms and cases these shell-style patterns name (a case also by its algorithm), "
+                   "e.g. 'erosion.pipe*'");
+  list->add_flag("--algorithms", list_request.algorithms_only, "the algorithms alone, without the cases");
+  list->add_flag("--json", list_request.as_json, "machine-readable");
 
   Shared run_shared;
   std::vector<std::string> patterns;
@@ -544,7 +584,7 @@ int run_command_line(int argc, char** argv) {
       return gt::run_mutants_command(mutation_options, mutants_out, mutants_as_json, command_line);
     }
     if (list->parsed()) {
-      print_list(list_as_json);
+      print_list(list_request);
       return 0;
     }
     if (run->parsed()) {
