@@ -29,6 +29,7 @@
 #include "compare/external/candidate_field.hpp"
 #include "compare/external/gpu_shader_drop_ins.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/wording.hpp"
 #include "gpu/shader_program.hpp"
 #include "compare/isolated_cases.hpp"
 #include "compare/case_seconds.hpp"
@@ -85,6 +86,7 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   } else if (!ad_hoc.input.empty()) {
     spec.input = {{"file", std::filesystem::absolute(ad_hoc.input).string()}};
     if (ad_hoc.red_channel) spec.input["red_channel"] = true;
+    if (ad_hoc.image_vertical_scale > 0.0) spec.input["vertical_scale"] = ad_hoc.image_vertical_scale;
     if (ad_hoc.cell_size > 0.0) spec.input["cell_size"] = ad_hoc.cell_size;
     if (ad_hoc.cell_size_y > 0.0) spec.input["cell_size_y"] = ad_hoc.cell_size_y;
   } else if (algorithm.kind == CaseKind::generated) {
@@ -275,15 +277,15 @@ void print_summary(const Report& report, const std::filesystem::path& out) {
     if (!result.error.empty()) fmt::print("             {}\n", result.error);
   }
   for (const auto& problem : report.expectation_problems) fmt::print("expectation  {}\n", problem);
-  fmt::print("groundtruth: {} cases: {} pass, {} warn, {} inconclusive, {} skip, {} flaky, {} fail, {} error; report in {}\n",
-             report.cases.size(), counts[Outcome::pass], counts[Outcome::warn], counts[Outcome::inconclusive],
+  fmt::print("groundtruth: {}: {} pass, {} warn, {} inconclusive, {} skip, {} flaky, {} fail, {} error; report in {}\n",
+             counted(report.cases.size(), "case"), counts[Outcome::pass], counts[Outcome::warn], counts[Outcome::inconclusive],
              counts[Outcome::skip], counts[Outcome::flaky], counts[Outcome::fail], counts[Outcome::error],
              (out / "index.html").string());
 }
 
 void print_mutation(const MutationReport& mutation) {
   for (const auto& baseline : mutation.baselines) {
-    fmt::print("baseline     {} ({} cases): {}\n", baseline.family, baseline.cases.size(),
+    fmt::print("baseline     {} ({}): {}\n", baseline.family, counted(baseline.cases.size(), "case"),
                baseline.clean ? "clean" : "NOT CLEAN: " + baseline.problems.front());
   }
   for (const auto& mutant : mutation.mutants) {
@@ -373,6 +375,9 @@ std::vector<std::string> job_selection(const Job& job, const DriverOptions& opti
                                    fmt::format("{}x{}", ad_hoc.width, ad_hoc.height)};
   if (ad_hoc.cell_size > 0.0) args.insert(args.end(), {"--cell-size", fmt::format("{}", ad_hoc.cell_size)});
   if (ad_hoc.cell_size_y > 0.0) args.insert(args.end(), {"--cell-size-y", fmt::format("{}", ad_hoc.cell_size_y)});
+  if (ad_hoc.image_vertical_scale > 0.0) {
+    args.insert(args.end(), {"--image-vertical-scale", fmt::format("{}", ad_hoc.image_vertical_scale)});
+  }
   if (!ad_hoc.input.empty()) args.insert(args.end(), {"--input", std::filesystem::absolute(ad_hoc.input).string()});
   for (const auto& assignment : ad_hoc.assignments) args.insert(args.end(), {"--set", assignment});
   if (ad_hoc.red_channel) args.push_back("--red-channel");

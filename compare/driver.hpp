@@ -30,6 +30,7 @@ struct AdHocCase {
   double cell_size_y = 0.0;              // the rows' spacing when it differs from cell_size (0: cell_size)
   std::vector<std::string> assignments;  // "name=value"
   bool red_channel = false;              // a colour image's red channel as height (else it is refused)
+  double image_vertical_scale = 0.0;     // metres per unit of an 8/16-bit image (0: the reader's 1)
   std::string name;                      // the case's name; empty: adhoc.<algorithm>.<input>
 };
 

@@ -13,6 +13,7 @@
 #include "compare/worker.hpp"
 #include "core/errors.hpp"
 #include "core/json_keys.hpp"
+#include "core/wording.hpp"
 
 namespace gt {
 namespace {
@@ -193,7 +194,7 @@ MutationReport run_mutation(const MutationOptions& options, const std::filesyste
   run_workers(
       tasks, options.parallel, options.timeout_seconds,
       [&](std::size_t index) {
-        print_line(fmt::format("baseline of {} ({} cases)", families[index], family_cases[families[index]].size()));
+        print_line(fmt::format("baseline of {} ({})", families[index], counted(family_cases[families[index]].size(), "case")));
       },
       [&](std::size_t index, const WorkerResult& worker) {
         const auto& family = families[index];

@@ -14,6 +14,7 @@
 #include "core/errors.hpp"
 #include "core/io/text_file.hpp"
 #include "core/json_keys.hpp"
+#include "core/wording.hpp"
 
 namespace gt {
 
@@ -228,7 +229,7 @@ json to_json(const ReportDiff& diff) {
 }
 
 std::string describe(const ReportDiff& diff) {
-  std::string out = fmt::format("{} cases in both reports\n", diff.common_cases);
+  std::string out = fmt::format("{} in both reports\n", counted(diff.common_cases, "case"));
   append_section(out, "REGRESSIONS", diff.regressions);
   append_section(out, "fixes", diff.fixes);
   append_section(out, "other outcome changes", diff.outcome_changes);

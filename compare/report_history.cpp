@@ -22,6 +22,7 @@
 #include "core/errors.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/names.hpp"
+#include "core/wording.hpp"
 
 namespace gt {
 
@@ -471,8 +472,8 @@ int history_command(const HistoryOptions& options) {
     for (const auto& check : series.checks) print(check.name, check.drift);
     for (const auto& timing : series.timings) print(timing.key, timing.drift);
   }
-  fmt::print("groundtruth: {} reports, {} cases, {} series drifted; history in {}\n", history.revisions.size(),
-             history.cases.size(), drifts, (options.out / "index.html").string());
+  fmt::print("groundtruth: {}, {}, {} drifted; history in {}\n", counted(history.revisions.size(), "report"),
+             counted(history.cases.size(), "case"), counted(drifts, "series", "series"), (options.out / "index.html").string());
   return 0;
 }
 

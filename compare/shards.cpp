@@ -18,6 +18,7 @@
 #include "core/errors.hpp"
 #include "core/io/text_file.hpp"
 #include "core/memory.hpp"
+#include "core/wording.hpp"
 
 namespace gt {
 namespace {
@@ -183,8 +184,9 @@ void check_shard_set(const std::vector<LoadedShard>& shards) {
     if (!by_index.contains(index)) missing.push_back(index);
   }
   if (!missing.empty()) {
-    throw InputError(fmt::format("merge: shards {} of {} are missing; a merged report must hold every shard",
-                                 fmt::join(missing, ", "), first.count));
+    throw InputError(fmt::format("merge: {} {} of {} {} missing; a merged report must hold every shard",
+                                 missing.size() == 1 ? "shard" : "shards", fmt::join(missing, ", "), first.count,
+                                 missing.size() == 1 ? "is" : "are"));
   }
   for (const auto& name : first.selection) {
     if (!case_owner.contains(name)) throw InputError(fmt::format("merge: no shard holds case {}", name));
@@ -252,7 +254,7 @@ int merge_shards(const MergeOptions& options, const std::string& command_line) {
     write_report_files(joined, folder);
   });
   if (!options.quiet) {
-    fmt::print("groundtruth: merged {} shards, {} cases, into {}\n", shards.size(), joined.cases.size(),
+    fmt::print("groundtruth: merged {}, {}, into {}\n", counted(shards.size(), "shard"), counted(joined.cases.size(), "case"),
                (options.out / "index.html").string());
   }
   return run_failed(joined) ? 1 : 0;

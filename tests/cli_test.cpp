@@ -1203,6 +1203,33 @@ TEST(CliList, PatternsAndAlgorithmsAloneFilterTheListing) {
   EXPECT_THAT(none.err, ::testing::HasSubstr("no algorithm or case matches nothing*")) << none;
 }
 
+// --image-vertical-scale gives an ad-hoc 16-bit PNG its height range, as a case file's
+// "vertical_scale" does, in the process and through a worker (-j 2 passes it on).
+TEST(CliRun, ImageVerticalScaleSetsAnAdHocPngsHeightRange) {
+  const TempDir work;
+  {
+    std::vector<std::uint16_t> ramp(16 * 16);
+    for (std::size_t i = 0; i < ramp.size(); ++i) ramp[i] = static_cast<std::uint16_t>(i % 16 == 15 ? 65535 : i % 16 * 4000);
+    auto out = OIIO::ImageOutput::create((work.path() / "ramp.png").string());
+    ASSERT_TRUE(out && out->open((work.path() / "ramp.png").string(), OIIO::ImageSpec(16, 16, 1, OIIO::TypeDesc::UINT16)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT16, ramp.data()) && out->close());
+  }
+  for (const char* parallel : {"1", "2"}) {
+    const fs::path out = work.path() / (std::string("scaled_j") + parallel);
+    const RunResult run = run_groundtruth({"run", "--algorithm", "erosion.thermal", "--input", "ramp.png",
+                                           "--image-vertical-scale", "250", "--set", "iterations=0", "--backend", "cpu",
+                                           "-j", parallel, "--out", out.string()},
+                                          work.path());
+    ASSERT_EQ(run.status, 0) << run;
+    const auto terrain = gt::read_heightmap(out / "adhoc.erosion.thermal.ramp" / "terrain_cpu.npy").heights;
+    EXPECT_DOUBLE_EQ(*std::max_element(terrain.values.begin(), terrain.values.end()), 250.0) << parallel;
+  }
+  const RunResult refused = run_groundtruth(
+      {"run", "--algorithm", "erosion.thermal", "--input", "ramp.png", "--image-vertical-scale", "0", "--out", "x"},
+      work.path());
+  EXPECT_EQ(refused.status, 2) << refused;
+}
+
 // --version names the source tree's revision (git describe) and the build, and exits 0.
 TEST(CliVersion, NamesTheRevisionAndTheBuild) {
   const TempDir work;

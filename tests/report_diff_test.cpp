@@ -124,7 +124,7 @@ TEST(ReportDiffCli, AMutantShowsAsARegression) {
        "--quiet"},
       work.path());
   EXPECT_EQ(against.status, 1) << against;
-  EXPECT_THAT(against.out, HasSubstr("against base/report.json: 1 cases in both reports\nREGRESSIONS"));
+  EXPECT_THAT(against.out, HasSubstr("against base/report.json: 1 case in both reports\nREGRESSIONS"));
   EXPECT_THAT(gt::testing::read_text(work.path() / "again" / "index.html"), HasSubstr("Against the baseline: "));
   const auto unrelated = gt::testing::run_program(
       groundtruth, {"run", "erosion.thermal.spec.example_3x3", "--baseline", "base/report.json", "--out", "other"},

@@ -100,7 +100,7 @@ TEST(Workflow, ParallelAndShardedRunsGiveTheSerialChecks) {
   // A merge that would be partial or double is refused, and writes nothing.
   const auto missing = run({"merge", "shard-1", "shard-3", "--out", "partial"}, work.path());
   EXPECT_EQ(missing.status, 2) << missing;
-  EXPECT_THAT(missing.err, HasSubstr("shards 2 of 3 are missing"));
+  EXPECT_THAT(missing.err, HasSubstr("shard 2 of 3 is missing"));
   const auto twice = run({"merge", "shard-1", "shard-2", "shard-2", "shard-3", "--out", "partial"}, work.path());
   EXPECT_EQ(twice.status, 2) << twice;
   EXPECT_THAT(twice.err, HasSubstr("given twice"));

@@ -116,6 +116,9 @@ void add_ad_hoc_options(CLI::App& command, gt::AdHocCase& ad_hoc, std::string& g
                      "rectangular cells: the rows' spacing in metres, --cell-size then being the columns'")
       ->check(finite_number & CLI::PositiveNumber)
       ->needs(cell_size);
+  command.add_option("--image-vertical-scale", ad_hoc.image_vertical_scale,
+                     "metres per unit of an 8/16-bit image --input (default 1; a case file's \"vertical_scale\")")
+      ->check(finite_number & CLI::Range(1e-9, 1e9));
   command.add_option("--backend", shared.backend, "cpu (references only), gpu, or both")
       ->check(CLI::IsMember({"cpu", "gpu", "both"}))
       ->capture_default_str();

@@ -21,6 +21,7 @@
 #include "compare/report/report_common.hpp"
 #include "compare/report/writers.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/wording.hpp"
 
 namespace gt {
 
@@ -127,8 +128,8 @@ void append_summary(std::string& out, const Report& report) {
                        counts[outcome] == 0 ? " zero" : "", counts[outcome], outcome_name(outcome));
   }
   const bool failed = run_failed(report) || (report.mutation && !report.mutation->passed());
-  out += fmt::format("</p>\n<p>{} cases, expected failures: {}. Run <span class=\"badge {}\">{}</span></p>\n",
-                     counts.total(), counts.expected_failures, failed ? "fail" : "pass", failed ? "failed" : "ok");
+  out += fmt::format("</p>\n<p>{}, expected failures: {}. Run <span class=\"badge {}\">{}</span></p>\n",
+                     counted(counts.total(), "case"), counts.expected_failures, failed ? "fail" : "pass", failed ? "failed" : "ok");
   if (!report.scope.empty()) out += fmt::format("<p class=\"scope\">{}</p>\n", h(report.scope));
   out += "</section>\n";
 }
@@ -292,8 +293,9 @@ void append_baseline(std::string& out, const Report& report) {
 }
 
 void append_timings(std::string& out, const Timings& timings) {
-  out += fmt::format("<p>Timings (median of one run): CPU reference {} ms over {} reps · GPU {} ms over {} reps</p>\n",
-                     format_ms(timings.cpu_ms), timings.cpu_reps, format_ms(timings.gpu_ms), timings.gpu_reps);
+  out += fmt::format("<p>Timings (median of one run): CPU reference {} ms over {} · GPU {} ms over {}</p>\n",
+                     format_ms(timings.cpu_ms), counted(timings.cpu_reps, "rep"), format_ms(timings.gpu_ms),
+                     counted(timings.gpu_reps, "rep"));
 }
 
 void append_case_section(std::string& out, const CaseResult& result) {

@@ -8,6 +8,7 @@
 #include "compare/report/report_common.hpp"
 #include "compare/report/writers.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/wording.hpp"
 
 namespace gt {
 
@@ -39,8 +40,8 @@ void append_environment(std::string& out, const Environment& environment) {
 
 void append_summary(std::string& out, const Report& report) {
   const OutcomeCounts counts = count_case_outcomes(report);
-  out += fmt::format("**{}** — {} cases: {}; expected failures: {}\n\n",
-                     run_failed(report) ? "RUN FAILED" : "run ok", counts.total(), format_counts(counts, ", "),
+  out += fmt::format("**{}** — {}: {}; expected failures: {}\n\n",
+                     run_failed(report) ? "RUN FAILED" : "run ok", counted(counts.total(), "case"), format_counts(counts, ", "),
                      counts.expected_failures);
   if (!report.scope.empty()) out += fmt::format("{}\n\n", cell(report.scope));
 }

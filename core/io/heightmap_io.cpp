@@ -216,7 +216,7 @@ void apply_geographic_cell_size(HeightmapFile& file, const GeoTiffTags& tags) {
 
 void apply_georeferencing(HeightmapFile& file, const GeoTiffTags& tags) {
   if (tags.pixel_scale.empty()) {
-    file.notes.push_back("no ModelPixelScale: cell size 1 m assumed (set cell_size)");
+    file.notes.push_back("no ModelPixelScale: cell size 1 m assumed (set it with --cell-size, or \"cell_size\" in a case file)");
     return;
   }
   if (is_geographic(tags, file.notes)) {
@@ -406,7 +406,7 @@ HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) 
   if (is_tiff && tags.georeferenced()) {
     apply_georeferencing(result, tags);
   } else {
-    result.notes.push_back("no cell size in the file: 1 m assumed (set cell_size)");
+    result.notes.push_back("no cell size in the file: 1 m assumed (set it with --cell-size, or \"cell_size\" in a case file)");
   }
   return result;
 }
