@@ -165,10 +165,13 @@ void write_artifacts(const ReferenceRuns& runs, const std::optional<GpuOutputs>&
 
 }  // namespace
 
+nlohmann::json cell_values_shape() {
+  return nlohmann::json::array({nlohmann::json::array({"integer", "integer", "number"})});
+}
+
 nlohmann::json field_spec_shape() {
   nlohmann::json shape = descriptor_expect_shape();
-  // cells: [[x, y, value], ...]
-  shape.update({{"cells", nlohmann::json::array({nlohmann::json::array({"integer", "integer", "number"})})}, {"total", "number"}, {"tolerance", "number"}});
+  shape.update({{"cells", cell_values_shape()}, {"total", "number"}, {"tolerance", "number"}});
   return shape;
 }
 

@@ -78,6 +78,9 @@ struct RunOptions {
   std::optional<CandidateField> candidate_field;
 };
 
+// Listed cells as a case's "expect" gives them: [[x, y, value], ...] (core/json_keys.hpp shapes).
+nlohmann::json cell_values_shape();
+
 // The "expect" keys run_field_twin reads (spec vectors of the field: expected cells, their total, a
 // tolerance); an algorithm's Algorithm::expect_shape starts from it and adds its own.
 nlohmann::json field_spec_shape();

@@ -50,6 +50,7 @@
 #include "compare/checks/threshold.hpp"
 #include "compare/droplet_twin.hpp"
 #include "compare/field_files.hpp"
+#include "compare/field_twin.hpp"
 #include "core/errors.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/params/particle.hpp"
@@ -562,7 +563,7 @@ nlohmann::json particle_expect_shape() {
   shape["droplet"] = {{"start", nlohmann::json::array({"integer", "integer"})},
                       {"positions", nlohmann::json::array({nlohmann::json::array({"number", "number"})})},
                       {"sediment", "number"},
-                      {"cells", nlohmann::json::array({nlohmann::json::array({"integer", "integer", "number"})})},
+                      {"cells", cell_values_shape()},
                       {"tolerance", "number"}};
   return shape;
 }

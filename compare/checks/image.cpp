@@ -7,7 +7,6 @@
 // copy of a file rewritten under the same name).
 #include "compare/checks/image.hpp"
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>

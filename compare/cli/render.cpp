@@ -3,7 +3,6 @@
 // atomically. See render.hpp for the conventions.
 #include "compare/cli/render.hpp"
 
-
 #include <algorithm>
 #include <array>
 #include <cctype>

@@ -43,6 +43,9 @@
 namespace gt {
 namespace {
 
+// The note of a reader that found no cell size.
+constexpr const char* cell_size_assumed = "1 m assumed (set it with --cell-size, or \"cell_size\" in a case file)";
+
 using std::filesystem::path;
 
 std::string lower_extension(const path& file) {
@@ -216,7 +219,7 @@ void apply_geographic_cell_size(HeightmapFile& file, const GeoTiffTags& tags) {
 
 void apply_georeferencing(HeightmapFile& file, const GeoTiffTags& tags) {
   if (tags.pixel_scale.empty()) {
-    file.notes.push_back("no ModelPixelScale: cell size 1 m assumed (set it with --cell-size, or \"cell_size\" in a case file)");
+    file.notes.push_back(std::string("no ModelPixelScale: ") + cell_size_assumed);
     return;
   }
   if (is_geographic(tags, file.notes)) {
@@ -406,7 +409,7 @@ HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) 
   if (is_tiff && tags.georeferenced()) {
     apply_georeferencing(result, tags);
   } else {
-    result.notes.push_back("no cell size in the file: 1 m assumed (set it with --cell-size, or \"cell_size\" in a case file)");
+    result.notes.push_back(std::string("no cell size in the file: ") + cell_size_assumed);
   }
   return result;
 }
