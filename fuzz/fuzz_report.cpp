@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "compare/report_diff.hpp"
+#include "compare/result.hpp"  // gt::Report, which report_diff.hpp only declares
 #include "core/errors.hpp"
 #include "fuzz/fuzz_file.hpp"
 
