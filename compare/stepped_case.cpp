@@ -205,7 +205,9 @@ std::size_t differing_values(const State& a, const State& b) {
 // The worst shadow distance of one field over the checkpoints, against its bound there.
 struct ShadowWorst {
   double distance = 0.0;
-  ShadowBound bound;
+  ShadowBound bound;  // per_value dropped: `strict` holds the bound at `where`
+  std::optional<double> tellable_bound;  // per-value bounds: their 90th percentile there
+  std::string where;                     // per-value bounds: the value where the ratio peaked
   double ratio = -1.0;
   int checkpoint = 0;
   std::size_t differing = 0;
@@ -213,19 +215,80 @@ struct ShadowWorst {
   double scale = 0.0;  // the field's largest own size over the checkpoints
 };
 
-void keep_worst(ShadowWorst& worst, const Distance& d, const ShadowBound& bound, int checkpoint, int count) {
+double distance_over_bound(double distance, double bound) {
+  if (!std::isfinite(distance) || (bound <= 0.0 && distance > 0.0)) return std::numeric_limits<double>::infinity();
+  return bound > 0.0 ? distance / bound : 0.0;
+}
+
+// A field's distance against one bound per value: the value with the largest ratio (the largest
+// distance among ties), the bound there and the 90th percentile of the bounds over valid cells.
+struct PerValueWorst {
+  double ratio = -1.0;
+  double distance = 0.0;
+  double bound = 0.0;
+  double tellable_bound = 0.0;
+  std::string where;
+};
+
+PerValueWorst per_value_worst(const SteppedTwin& twin, std::size_t f, const State& a, const State& b,
+                              const std::vector<double>& bounds) {
+  const FieldDecl& field = twin.fields[f];
+  const auto components = static_cast<std::size_t>(field.components);
+  const auto& expected = a.fields[f];
+  const auto& got = b.fields[f];
+  if (bounds.size() != expected.size()) {
+    throw std::logic_error(fmt::format("{}: {} per-value bounds for the {} values of {}", twin.algorithm, bounds.size(),
+                                       expected.size(), field.name));
+  }
+  PerValueWorst worst;
+  std::vector<double> valid_bounds;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const std::size_t cell = i / components;
+    if (!a.grid.is_valid(cell)) continue;
+    valid_bounds.push_back(bounds[i]);
+    const double difference = std::isnan(got[i] - expected[i]) ? std::numeric_limits<double>::infinity()
+                                                                 : std::abs(got[i] - expected[i]);
+    const double ratio = distance_over_bound(difference, bounds[i]);
+    if (ratio > worst.ratio || (ratio == worst.ratio && difference > worst.distance)) {
+      const auto width = static_cast<std::size_t>(std::max(1, a.grid.width));
+      worst = {ratio, difference, bounds[i], 0.0,
+               components == 1 ? fmt::format("cell (x={}, y={})", cell % width, cell / width)
+                               : fmt::format("cell (x={}, y={}), component {}", cell % width, cell / width, i % components)};
+    }
+  }
+  if (!valid_bounds.empty()) {
+    const auto rank = valid_bounds.begin() + static_cast<std::ptrdiff_t>(valid_bounds.size() * 9 / 10);
+    std::nth_element(valid_bounds.begin(), rank, valid_bounds.end());
+    worst.tellable_bound = *rank;
+  }
+  return worst;
+}
+
+void keep_worst(ShadowWorst& worst, const SteppedTwin& twin, std::size_t f, const State& expected, const State& got,
+                const ShadowBound& bound, int checkpoint, int count) {
+  const Distance d = distance(twin, f, expected, got);
   worst.differing += d.differing;
   worst.count = std::max(worst.count, count);
   worst.scale = std::max(worst.scale, bound.scale);
-  const double limit = bound.loose.value_or(bound.strict);
-  const double ratio = !std::isfinite(d.max_abs) || (limit <= 0.0 && d.max_abs > 0.0)
-                           ? std::numeric_limits<double>::infinity()
-                           : (limit > 0.0 ? d.max_abs / limit : 0.0);
+  ShadowWorst here{.distance = d.max_abs, .bound = bound, .checkpoint = checkpoint};
+  if (bound.per_value.empty()) {
+    here.ratio = distance_over_bound(d.max_abs, bound.loose.value_or(bound.strict));
+  } else {
+    const PerValueWorst at = per_value_worst(twin, f, expected, got, bound.per_value);
+    here.bound.per_value.clear();
+    here.bound.strict = at.bound;
+    here.distance = at.distance;
+    here.ratio = at.ratio;
+    here.tellable_bound = at.tellable_bound;
+    here.where = at.where;
+  }
   // Ties (no bound: every ratio 0 or infinite) keep the largest distance.
-  if (ratio > worst.ratio || (ratio == worst.ratio && d.max_abs > worst.distance)) {
-    worst.distance = d.max_abs;
-    worst.bound = bound;
-    worst.ratio = ratio;
+  if (here.ratio > worst.ratio || (here.ratio == worst.ratio && here.distance > worst.distance)) {
+    worst.distance = here.distance;
+    worst.bound = std::move(here.bound);
+    worst.tellable_bound = here.tellable_bound;
+    worst.where = std::move(here.where);
+    worst.ratio = here.ratio;
     worst.checkpoint = checkpoint;
   }
 }
@@ -247,6 +310,7 @@ std::vector<ShadowBound> candidate_bounds(const SteppedTwin& twin, const Candida
   for (ShadowBound& bound : bounds) {
     bound.strict *= double_over_float;
     if (bound.loose) *bound.loose *= double_over_float;
+    for (double& value_bound : bound.per_value) value_bound *= double_over_float;
     bound.model += "; scaled to double's unit roundoff (2^-53 for 2^-24)";
   }
   return bounds;
@@ -270,7 +334,7 @@ void shadow_steps(const SteppedTwin& twin, const Candidate& candidate, const Bac
                                          twin.fields.size()));
     }
     for (std::size_t f = 0; f < twin.fields.size(); ++f) {
-      keep_worst(worst[f], distance(twin, f, expected, got), bounds[f], start, count);
+      keep_worst(worst[f], twin, f, expected, got, bounds[f], start, count);
     }
   };
   for (std::size_t k = 0; k < starts.size(); ++k) {
@@ -336,8 +400,9 @@ Check shadow_check(const std::string& name, const ShadowWorst& worst, const std:
                                                  : fmt::format("{} values differ in some bit; ", worst.differing);
   const std::string detail = fmt::format(
       "{}{}, {} iteration(s) beside it: max |{} - {}| in {}, worst against its bound at the checkpoint after "
-      "iteration {}; {}",
-      exact, from, worst.count, candidate.backend, candidate.reference_label(), unit, worst.checkpoint, worst.bound.model);
+      "iteration {}{}; {}",
+      exact, from, worst.count, candidate.backend, candidate.reference_label(), unit, worst.checkpoint,
+      worst.where.empty() ? "" : fmt::format(", {} (the bound there, one per value)", worst.where), worst.bound.model);
   if (!worst.bound.graded) {
     return informative_check(name, worst.distance,
                              detail + fmt::format("; the model's bound there, {:.3g}, is too wide to grade", worst.bound.strict));
@@ -345,7 +410,7 @@ Check shadow_check(const std::string& name, const ShadowWorst& worst, const std:
   // Whether the bound can tell is judged against the field's largest size over the run's
   // checkpoints (a dry start has no water to measure a share of).
   return decisive_check(name, worst.distance, worst.bound.strict, worst.bound.loose, worst.scale,
-                        worst.bound.tellable_share, detail);
+                        worst.bound.tellable_share, detail, worst.tellable_bound);
 }
 
 void add_shadow_checks(const SteppedTwin& twin, const Candidate& candidate, const GpuRun& gpu, CaseResult& result) {

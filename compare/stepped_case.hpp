@@ -53,6 +53,11 @@ namespace gt {
 struct ShadowBound {
   double strict = 0.0;
   std::optional<double> loose;
+  // A bound for each value of the field (the state's layout: cell by cell, components within a
+  // cell) where the model gives one; the check then fails where any value exceeds its own bound,
+  // and `strict` is ignored (the report quotes the bound where the distance came closest to it,
+  // and judges tellability by the bounds' 90th percentile over valid cells).
+  std::vector<double> per_value;
   // The field's own size in that state: a bound wider than tellable_share of its largest size over
   // the checkpoints cannot tell a bug from rounding, and a pass under it is `inconclusive`.
   double scale = 1.0;

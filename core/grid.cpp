@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/memory.hpp"
+#include "core/rounding_interval.hpp"
 
 namespace gt {
 
@@ -93,6 +94,7 @@ std::vector<double> valid_values(const Grid<T>& grid) {
 
 template void check_finite(const Grid<float>&, const std::string&);
 template void check_finite(const Grid<double>&, const std::string&);
+template void check_finite(const Grid<RoundingInterval>&, const std::string&);
 template void check_cell_size(const Grid<float>&, const std::string&);
 template void check_cell_size(const Grid<double>&, const std::string&);
 template void check_fits_float(const Grid<float>&, const std::string&);
@@ -101,6 +103,7 @@ template std::pair<double, double> valid_range(const Grid<float>&);
 template std::pair<double, double> valid_range(const Grid<double>&);
 template std::size_t count_valid(const Grid<float>&);
 template std::size_t count_valid(const Grid<double>&);
+template std::size_t count_valid(const Grid<RoundingInterval>&);
 template std::vector<double> valid_values(const Grid<float>&);
 template std::vector<double> valid_values(const Grid<double>&);
 

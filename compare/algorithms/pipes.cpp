@@ -18,10 +18,10 @@
 // The state (compare/stepper.hpp): terrain b, water d, sediment s, regolith r (m), velocity_x u
 // and velocity_y v (m/s), outflow f per pipe (m³/s, cell × pipe); compare/stepped_case.hpp runs the
 // three twins over it (checkpoints, shadow steps, end-of-run distances, determinism, field files,
-// pictures of every field, descriptors) and grades each field's shadow step against
-// pipe_shadow_bounds (compare/checks/pipe_error_model.hpp) from ref<float>'s state before the step:
-// one step graded (tellable: a tenth of the field's own size), shadow_length steps informative (the
-// first-order worst case grows about 10× a step, too wide to grade).
+// pictures of every field, descriptors) and grades each field's shadow steps (one step and
+// shadow_length steps) value by value against pipe_shadow_bounds (compare/checks/pipe_error_model.hpp):
+// the step in rounding-interval arithmetic from ref<float>'s state before it, one bound per cell and pipe
+// (tellable: the bounds' 90th percentile within a tenth of the field's own size).
 // Decision on the terrain: the GPU stores b = b0 + Δb (the float trap fix); loading takes
 // ref<float>'s floats as the base b0 with Δb = 0, so both twins start from the same heights bit for
 // bit and differ only where later roundings land, which the bound's surface term allows.
@@ -364,28 +364,30 @@ void plot_ledgers(const std::vector<BackendEnd>& ends, double material, const Ru
               result);
 }
 
-// A one-step bound wider than this share of the field's size (over the checkpoints) cannot tell a
-// bug that changes the field by a tenth from rounding: the check is then inconclusive. On the real
-// DEMs the first-order model (worst cases of global maxima) is that wide for the sediment and the
-// velocity, while the measured distances stay orders of magnitude below it.
+// A bound wider than this share of the field's size (its 90th percentile over the cells, against
+// the field's largest size over the checkpoints) cannot tell a bug that changes the field by a
+// tenth from rounding: the check is then inconclusive.
 constexpr double tellable_share_of_field = 0.1;
 
-// pipe_shadow_bounds of ref<float>'s state before the step, field by field as pipe_fields declares
-// them, with the field's own size as its scale. One step is graded; over more the first-order worst
-// case grows by about 10× a step (depth and flux feed each other through K and the heads) and is
-// too wide to grade.
-std::vector<ShadowBound> pipe_field_bounds(const State& from, int steps, const PipeConstants& constants) {
-  const PipeShadowScales scales = pipe_shadow_scales(pipe_state_of<float>(from, constants.pipe_count), constants);
-  const PipeShadowBounds bounds = pipe_shadow_bounds(scales, constants, steps);
-  const std::string model = "pipe_shadow_bounds of that state before stepping (compare/checks/pipe_error_model.hpp)";
-  const auto bound = [&](double value, double scale) {
-    return ShadowBound{.strict = value, .scale = scale, .tellable_share = tellable_share_of_field, .graded = steps == 1,
-                       .model = model};
-  };
-  return {bound(bounds.terrain, scales.relief),  bound(bounds.water, scales.depth),
-          bound(bounds.sediment, scales.sediment), bound(bounds.regolith, scales.regolith),
-          bound(bounds.velocity, scales.speed),  bound(bounds.velocity, scales.speed),
-          bound(bounds.flux, scales.flux)};
+// pipe_shadow_bounds of ref<float>'s state before the steps, one bound per value of each field as
+// pipe_fields declares them, with the field's own size as its scale. The model follows the errors
+// cell by cell through every step, so the shadow_length steps are graded as the one step is.
+std::vector<ShadowBound> pipe_field_bounds(const State& from, int steps, const PipeScenario& scenario) {
+  const PipeConstants& constants = scenario.constants;
+  const auto start = pipe_state_of<double>(from, constants.pipe_count);
+  const PipeShadowScales scales = pipe_shadow_scales(start, constants);
+  const State bounds = pipe_state(pipe_shadow_bounds(start, constants, scenario.forcing, steps), constants.pipe_count);
+  const std::string model =
+      "pipe_shadow_bounds: the step in rounding-interval arithmetic from that state, cell by cell "
+      "(compare/checks/pipe_error_model.hpp)";
+  const std::array<double, 7> scale_of_field{scales.relief, scales.depth, scales.sediment, scales.regolith,
+                                             scales.speed,  scales.speed, scales.flux};
+  std::vector<ShadowBound> field_bounds;
+  for (std::size_t f = 0; f < bounds.fields.size(); ++f) {
+    field_bounds.push_back({.per_value = bounds.fields[f], .scale = scale_of_field.at(f),
+                            .tellable_share = tellable_share_of_field, .model = model});
+  }
+  return field_bounds;
 }
 
 // Strict, no warn band: the number comes from the case's parameters alone (no rounding in it worth
@@ -415,7 +417,7 @@ PreparedTwin prepare_pipe(const nlohmann::json& resolved, const LoadedInput& inp
   twin.reference_float = [scenario] { return pipe_reference_stepper<float>(scenario->constants, scenario->forcing); };
   twin.make_gpu = [scenario] { return pipe_gpu_stepper(scenario->initial, scenario->constants, scenario->forcing, true); };
   twin.make_timed_gpu = [scenario] { return pipe_gpu_stepper(scenario->initial, scenario->constants, scenario->forcing, false); };
-  twin.shadow_bounds = [constants](const State& from, int steps) { return pipe_field_bounds(from, steps, constants); };
+  twin.shadow_bounds = [scenario](const State& from, int steps) { return pipe_field_bounds(from, steps, *scenario); };
   twin.ledger = pipe_ledger_terms(*scenario);
   twin.finish = [material = material_present(scenario->initial)](const std::vector<BackendEnd>& ends,
                                                                    const nlohmann::json&, const RunOptions& options,

@@ -72,34 +72,35 @@ double pipe_rounding_growth(int steps, double scale);
 // ---------------------------------------------------------------------------------------------
 // Shadow steps: the GPU loaded with ref<float>'s state, both stepped `steps` times.
 
-// What the bounds are made of, from the state both start from and the constants.
+// The fields' own sizes in the state a shadow step starts from: a bound wider than a share of them
+// cannot tell a bug from rounding (compare/stepped_case.hpp ShadowBound::scale).
 struct PipeShadowScales {
-  double surface = 0.0;    // H = max |b + d| over valid cells, m (ref<float> rounds b + d_A)
-  double depth = 0.0;      // D = max d, m
-  double relief = 0.0;     // G = max |b − b_n| over neighbours, m
-  double sediment = 0.0;   // S = max s, m
-  double regolith = 0.0;   // R = max r, m
-  double flux = 0.0;       // F = max f, m³/s
-  double speed = 0.0;      // V = max(|u|, |v|), m/s
-  double concentration = 0.0;  // Q = max (s + r + the most a step adds)/d_A over cells with d_A > 0, 1
+  double depth = 0.0;     // max d, m
+  double relief = 0.0;    // max |b − b_n| over neighbours, m (the terrain's: its changes are small beside b)
+  double sediment = 0.0;  // max s, m
+  double regolith = 0.0;  // max r, m
+  double flux = 0.0;      // max f, m³/s
+  double speed = 0.0;     // max(|u|, |v|), m/s
 };
 
 template <class Real>
 PipeShadowScales pipe_shadow_scales(const PipeState<Real>& start, const PipeConstants& constants);
 
-// Bounds on max |gpu − ref<float>| per field after `steps` steps from the same state: a first-order
-// worst case of how ref<float>'s roundings of b + d and b (which the GPU's base + change storage
-// does not make) and GLSL's licensed division and square root spread through the stages; the
-// model is written out in pipe_error_model.cpp.
-struct PipeShadowBounds {
-  double terrain = 0.0;   // b (the same start, so the same as its change), m
-  double water = 0.0;     // d, m
-  double sediment = 0.0;  // s, m
-  double regolith = 0.0;  // r, m
-  double velocity = 0.0;  // u and v, m/s
-  double flux = 0.0;      // f of every pipe, m³/s
-};
-
-PipeShadowBounds pipe_shadow_bounds(const PipeShadowScales& scales, const PipeConstants& constants, int steps);
+// Bounds on |candidate − ref<float>| value by value (cell by cell, pipe by pipe) after `steps` steps
+// from the same state `start` (float values, held in double): a state of the same layout whose
+// values are the bounds. The model is the reference's own step run in interval arithmetic with each
+// operation's rounding folded in (core/rounding_interval.hpp): every value carries the interval
+// of what a float implementation of the step may hold there (u for + − ×, GLSL's 2.5 ulp for ÷ and
+// √). ref<float> lies in that interval, and so does the exact step; a candidate that forms the same
+// formulas in another order is taken to lie within the interval's width of the exact step too, so
+// the bound is twice the width. So every bound comes from the cell's own depth, speed, sediment,
+// tilt and its neighbours' fluxes, stage by stage, and grows over several steps as the errors
+// themselves do. Decided before the candidate is read, from `start`, the constants and the forcing
+// alone.
+// What it leaves out: a branch that jumps where one rounding can switch it (the thermal step's
+// talus threshold, a cell dry in one twin and wet by an ulp in the other) moves a whole transfer;
+// should that happen the check fails at that cell and says where.
+PipeState<double> pipe_shadow_bounds(const PipeState<double>& start, const PipeConstants& constants,
+                                     const HydraulicForcing& forcing, int steps);
 
 }  // namespace gt

@@ -27,15 +27,18 @@ inline Check bounded_check(std::string name, double value, double strict, std::o
 // licenses (the loose one if any) exceeds `tellable_share` of the field's `scale` (the share below
 // which a real bug must still show, stated by the caller beside the check), a bug of that size
 // would pass too, so a pass or warn is `inconclusive`; a value beyond every bound still fails.
+// `widest`: where the bound differs from value to value, the one tellability is judged by (a high
+// percentile of them); unset: the widest bound the check licenses.
 inline Check decisive_check(std::string name, double value, double strict, std::optional<double> loose, double scale,
-                            double tellable_share, std::string detail) {
+                            double tellable_share, std::string detail, std::optional<double> widest = std::nullopt) {
   Check check = bounded_check(std::move(name), value, strict, loose, std::move(detail));
   const bool passed = check.status == Outcome::pass || check.status == Outcome::warn;
-  if (passed && loose.value_or(strict) > tellable_share * scale) {
+  const double judged = widest.value_or(loose.value_or(strict));
+  if (passed && judged > tellable_share * scale) {
     check.status = Outcome::inconclusive;
-    char text[160];
-    std::snprintf(text, sizeof text, " — inconclusive: the bound %.3g exceeds %g of the field's scale %.3g",
-                  loose.value_or(strict), tellable_share, scale);
+    char text[200];
+    std::snprintf(text, sizeof text, " — inconclusive: the bound %.3g%s exceeds %g of the field's scale %.3g", judged,
+                  widest ? " (the 90th percentile of the bounds over the cells)" : "", tellable_share, scale);
     check.detail += text;
   }
   return check;

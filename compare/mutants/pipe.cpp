@@ -2,10 +2,11 @@
 // small probe cases of datasets/cases/erosion.pipe.json (48×48 cells, 40 steps, 8 checkpoints).
 //
 // one_twin: bugs in the GPU shaders only, killed by the shadow-step parity (parity.shadow.*: the
-// GPU loaded with ref<float>'s state and stepped beside it). Each changes a field by a share of
-// its own size in one step, far above the a-priori bound of compare/checks/pipe_error_model.hpp
-// (a few float roundings of the surface height and the fields). A bug of a few ulps (a biased
-// division) would hide under that bound, which allows GLSL's 2.5-ulp division: none is registered.
+// GPU loaded with ref<float>'s state and stepped beside it), on the probe and on a real DEM. Each
+// changes a field by a share of its own size in one step, far above the per-cell a-priori bound of
+// compare/checks/pipe_error_model.hpp (the roundings of the step at that cell). A bug of a few ulps
+// (a biased division) would hide under that bound, which allows GLSL's 2.5-ulp division: none is
+// registered.
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
 // was asked, computed on the host: mass.water_added.* (rain, rain map and sources asked for),
@@ -18,19 +19,23 @@ namespace gt {
 std::vector<Mutant> pipe_mutants() {
   const std::vector<std::string> flux_probe = {"erosion.pipe.mutant_probe.flux"};
   const std::vector<std::string> semi_lagrangian_probe = {"erosion.pipe.mutant_probe.semi_lagrangian"};
+  // The one-twin mutants also on a real DEM (its per-cell shadow bounds, not a probe's, must see them).
+  const std::vector<std::string> flux_probe_and_dem = {"erosion.pipe.mutant_probe.flux", "erosion.pipe.seed001.volcano"};
+  const std::vector<std::string> semi_lagrangian_probe_and_dem = {"erosion.pipe.mutant_probe.semi_lagrangian",
+                                                                  "erosion.pipe.semi_lagrangian.volcano_open"};
   return {
       {"erosion.pipe.gpu_drops_bottom_pipe", MutantKind::one_twin,
-       "pipes_outflow.comp never gives the B pipe a flux (a loop bound or a skipped direction)", flux_probe},
+       "pipes_outflow.comp never gives the B pipe a flux (a loop bound or a skipped direction)", flux_probe_and_dem},
       {"erosion.pipe.gpu_velocity_without_half", MutantKind::one_twin,
        "pipes_flow.comp takes ΔW_X = (f_in,L − f_L) + (f_R − f_in,R) without Mei's ½, doubling u, v and the capacity",
-       flux_probe},
+       flux_probe_and_dem},
       {"erosion.pipe.gpu_gather_wrong_pipe", MutantKind::one_twin,
        "pipes_sediment.comp gathers the sediment a neighbour sent down its pipe k instead of the opposite pipe "
        "(towards this cell)",
-       flux_probe},
+       flux_probe_and_dem},
       {"erosion.pipe.gpu_backtrace_downstream", MutantKind::one_twin,
        "pipes_sediment.comp backtraces the semi-Lagrangian sediment along +u·Δt (downstream) instead of −u·Δt",
-       semi_lagrangian_probe},
+       semi_lagrangian_probe_and_dem},
       {"erosion.pipe.half_rain", MutantKind::both_twins,
        "the rain pass adds Δt·(r + r_map)/2 (ref add_water, pipes_water.comp)", flux_probe},
       {"erosion.pipe.double_evaporation", MutantKind::both_twins,

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/rounding_interval.hpp"
 
 namespace gt {
 namespace {
@@ -223,7 +224,7 @@ void require_fluxes(const PipeState<Real>& state, int pipe_count) {
 // A rate that is finite and >= 0 and stays finite once rounded to Real.
 template <class Real>
 bool usable_rate(double rate) {
-  return std::isfinite(rate) && rate >= 0.0 && std::isfinite(static_cast<Real>(rate));
+  return std::isfinite(rate) && rate >= 0.0 && std::isfinite(static_cast<double>(static_cast<Real>(rate)));
 }
 
 template <class Real>
@@ -271,6 +272,7 @@ void check_pipe_input(const PipeState<Real>& state, const HydraulicForcing& forc
 
 template void check_pipe_input(const PipeState<float>&, const HydraulicForcing&, const PipeConstants&);
 template void check_pipe_input(const PipeState<double>&, const HydraulicForcing&, const PipeConstants&);
+template void check_pipe_input(const PipeState<RoundingInterval>&, const HydraulicForcing&, const PipeConstants&);
 
 void PipeFlows::write_to(PipeLedgerEntry& entry) const {
   entry.rain_in = rain_in.value();

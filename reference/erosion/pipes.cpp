@@ -95,9 +95,20 @@
 
 #include "core/errors.hpp"
 #include "core/mutant.hpp"
+#include "core/rounding_interval.hpp"
 #include "reference/erosion/thermal_jako.hpp"
 
 namespace gt::reference {
+
+// Unqualified, so that a number type of its own (core/rounding_interval.hpp, which the error model of
+// the shadow steps instantiates this step with) brings its own by argument-dependent lookup.
+using std::ceil;
+using std::floor;
+using std::isnan;
+using std::max;
+using std::min;
+using std::sqrt;
+
 namespace {
 
 constexpr const char* algorithm_name = "erosion.pipe";
@@ -235,10 +246,10 @@ struct AxisTaps {
 template <class Real>
 AxisTaps<Real> axis_taps(Real displacement, Real reach) {
   const Real not_a_number = std::numeric_limits<Real>::quiet_NaN();
-  if (std::isnan(displacement)) return {0, not_a_number, not_a_number};
+  if (isnan(displacement)) return {0, not_a_number, not_a_number};
   const Real offset = std::clamp(displacement, -reach, reach);
-  const Real low = std::floor(offset);
-  const Real high = std::ceil(offset);
+  const Real low = floor(offset);
+  const Real high = ceil(offset);
   if (low == high) return {static_cast<int>(low), Real(1), Real(0)};
   return {static_cast<int>(low), high - offset, offset - low};
 }
@@ -318,7 +329,7 @@ Real PipeErosion<Real>::tilt_sine(int x, int y) const {
   const Real slope_x = slope(left, right, constants_.length_x);
   const Real slope_y = slope(bottom, top, constants_.length_y);
   const Real squared = slope_x * slope_x + slope_y * slope_y;
-  return std::max(static_cast<Real>(constants_.min_tilt_sine), std::sqrt(squared / (Real(1) + squared)));
+  return max(static_cast<Real>(constants_.min_tilt_sine), sqrt(squared / (Real(1) + squared)));
 }
 
 template <class Real>
@@ -395,10 +406,10 @@ void PipeErosion<Real>::update_outflow() {
       for (int k = 0; k < pipe_count(); ++k) {
         if (exterior(cell, k) && !open) continue;
         const Real head = exterior(cell, k) ? water.values[cell] : surface - neighbour_surface(x, y, k);
-        tentative[k] = std::max(Real(0), state_.outflow[cell][k] + flux_gain[k] * head);
+        tentative[k] = max(Real(0), state_.outflow[cell][k] + flux_gain[k] * head);
       }
       const Real total = pipe_sum(tentative, pipe_count());
-      const Real scale = total > Real(0) ? std::min(Real(1), water.values[cell] * area_per_time / total) : Real(1);
+      const Real scale = total > Real(0) ? min(Real(1), water.values[cell] * area_per_time / total) : Real(1);
       for (int k = 0; k < pipe_count(); ++k) state_.outflow[cell][k] = scale * tentative[k];
       drained_[cell] = scale < Real(1);
     }
@@ -417,7 +428,7 @@ void PipeErosion<Real>::update_water_depth() {
       if (!terrain.is_valid(cell)) continue;
       const auto& out = state_.outflow[cell];
       const Real remaining = drained_[cell] ? Real(0)
-                                            : std::max(Real(0), water_before_flow_[cell] -
+                                            : max(Real(0), water_before_flow_[cell] -
                                                                     pipe_sum(out, pipe_count()) / area_per_time);
       state_.water.values[cell] = remaining + pipe_sum(inflows(x, y), pipe_count()) / area_per_time;
       for (int k = 0; k < pipe_count(); ++k) {
@@ -455,7 +466,7 @@ void PipeErosion<Real>::update_velocity() {
       }
       const Real flow_x = half * twice_flow_x;
       const Real flow_y = half * twice_flow_y;
-      const Real mean_depth = std::max(depth_floor, half * (water_before_flow_[cell] + state_.water.values[cell]));
+      const Real mean_depth = max(depth_floor, half * (water_before_flow_[cell] + state_.water.values[cell]));
       const Real u = flow_x / (length_y * mean_depth);
       const Real v = flow_y / (length_x * mean_depth);
       state_.velocity_x.values[cell] = u;
@@ -485,8 +496,8 @@ void PipeErosion<Real>::erode_and_deposit() {
       const Real u = state_.velocity_x.values[cell];
       const Real v = state_.velocity_y.values[cell];
       const Real depth = state_.water.values[cell];
-      const Real ramp = depth_ramp > Real(0) ? std::min(Real(1), depth / depth_ramp) : Real(1);
-      const Real capacity = capacity_constant * tilt_sine(x, y) * std::sqrt(u * u + v * v) * ramp;
+      const Real ramp = depth_ramp > Real(0) ? min(Real(1), depth / depth_ramp) : Real(1);
+      const Real capacity = capacity_constant * tilt_sine(x, y) * sqrt(u * u + v * v) * ramp;
       const Real suspended = sediment[cell];
       const Real moved = capacity > suspended ? dissolving * (capacity - suspended)
                                               : -(deposition * (suspended - capacity));
@@ -506,7 +517,7 @@ void PipeErosion<Real>::regolith_exchange() {
   const Real deposition = static_cast<Real>(constants_.regolith_deposition_fraction);
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     if (!terrain.is_valid(cell)) continue;
-    const Real loosened = std::min(state_.water.values[cell], most);
+    const Real loosened = min(state_.water.values[cell], most);
     const Real held = regolith[cell];
     const Real moved = held < loosened ? dissolving * (loosened - held) : -(deposition * (held - loosened));
     state_.terrain.values[cell] = terrain.values[cell] - moved;
@@ -547,7 +558,7 @@ void PipeErosion<Real>::transport_with_fluxes(std::vector<Real>& field, Compensa
     if (!terrain.is_valid(cell)) continue;
     const auto shares = carried_shares(cell);
     for (int k = 0; k < pipe_count(); ++k) sent_[cell][k] = field[cell] * shares[k];
-    scratch_[cell] = field[cell] * (Real(1) - std::min(Real(1), pipe_sum(shares, pipe_count())));
+    scratch_[cell] = field[cell] * (Real(1) - min(Real(1), pipe_sum(shares, pipe_count())));
   }
   gather_sent(field, boundary_out, pipe_count());
 }
@@ -558,7 +569,7 @@ void PipeErosion<Real>::transport_semi_lagrangian(std::vector<Real>& field, Comp
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     if (!terrain.is_valid(cell)) continue;
     const Real leaving = exterior_share(cell, carried_shares(cell));
-    const Real staying = field[cell] * (Real(1) - std::min(Real(1), leaving));
+    const Real staying = field[cell] * (Real(1) - min(Real(1), leaving));
     boundary_out.add(static_cast<double>(field[cell] - staying) * constants_.cell_area);
     scratch_[cell] = staying;
   }
@@ -611,7 +622,7 @@ void PipeErosion<Real>::diffuse(std::vector<Real>& field) {
       for (int k = 0; k < axis_pipes; ++k) sent_[cell][k] = field[cell] * shares[k];
       // Water weighting of a dry cell sends all of it (Σσ = 1): rounding can make Σ sent exceed
       // what the cell holds by an ulp; the clamp removes that (as the water remainder's clamp).
-      scratch_[cell] = std::max(Real(0), field[cell] - pipe_sum(sent_[cell], axis_pipes));
+      scratch_[cell] = max(Real(0), field[cell] - pipe_sum(sent_[cell], axis_pipes));
     }
   }
   CompensatedSum nothing_leaves;  // exterior pipes send nothing (σ = 0 there)
@@ -709,5 +720,6 @@ void PipeErosion<Real>::run(int steps) {
 
 template class PipeErosion<float>;
 template class PipeErosion<double>;
+template class PipeErosion<RoundingInterval>;  // the shadow steps' error model (compare/checks/pipe_error_model.hpp)
 
 }  // namespace gt::reference

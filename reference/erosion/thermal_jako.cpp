@@ -25,8 +25,11 @@
 #include <numbers>
 
 #include "core/mutant.hpp"
+#include "core/rounding_interval.hpp"
 
 namespace gt::reference {
+
+using std::max;  // unqualified: RoundingInterval (core/rounding_interval.hpp) brings its own
 namespace {
 
 struct Pipe {
@@ -61,7 +64,7 @@ std::array<Real, 8> cell_outflows(const Grid<Real>& heights, int x, int y, const
     const Real difference = height - heights.at(x + pipes[k].dx, y + pipes[k].dy);
     if (difference > talus_limit[k]) {
       drop[k] = difference;
-      largest_drop = std::max(largest_drop, difference);
+      largest_drop = max(largest_drop, difference);
       drop_total = drop_total + difference;
     }
   }
@@ -130,5 +133,6 @@ Grid<Real> thermal_jako_erosion(const Grid<Real>& heights, const ThermalConstant
 
 template Grid<float> thermal_jako_erosion(const Grid<float>&, const ThermalConstants&, int);
 template Grid<double> thermal_jako_erosion(const Grid<double>&, const ThermalConstants&, int);
+template Grid<RoundingInterval> thermal_jako_erosion(const Grid<RoundingInterval>&, const ThermalConstants&, int);
 
 }  // namespace gt::reference
