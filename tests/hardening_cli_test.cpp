@@ -205,7 +205,7 @@ TEST_F(Hostile, MemoryEstimatesAreCheckedUnderAnAddressSpaceLimit) {
        (work_ / "out").string()},
       work_.path());
   EXPECT_EQ(pipe.status, 2) << pipe;
-  EXPECT_THAT(pipe.err, HasSubstr("erosion.pipe needs about 245.0 GiB (64000000 cells x 1230 B")) << pipe;
+  EXPECT_THAT(pipe.err, HasSubstr("erosion.pipe needs about 280.7 GiB (64000000 cells x 1830 B")) << pipe;
   EXPECT_THAT(pipe.err, HasSubstr("ulimit -v")) << pipe;
   // A 66-byte PNG declaring 30000² 16-bit pixels: diff-image weighs both images before reading.
   const std::string declared = (hostile_data / "declares_30000.png").string();

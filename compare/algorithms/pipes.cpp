@@ -530,11 +530,15 @@ Algorithm pipe_algorithm() {
           // Measured on 1024² (both backends, report included): 959 B a cell with 1 checkpoint; each
           // further one keeps ref<double>'s and ref<float>'s states there, 6 + pipes doubles a cell
           // each: 160 B a cell with 4 pipes, as measured (the peak RSS of 256² runs with 8 and 64
-          // checkpoints), rounded up by 20 B.
+          // checkpoints), rounded up by 20 B. The shadow bounds' step in rounding intervals
+          // (pipe_shadow_bounds: three doubles a value) holds its state, scratch and sent amounts,
+          // about 25 such values a cell (600 B), while the GPU's and the references' states are
+          // held too: counted, not measured (the 384² run of tests/memory_estimates_test.cpp peaked
+          // 35 B a cell above the estimate without it).
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const double cells = static_cast<double>(input.heights.size());
             const auto given = params_from_json(pipe_case_param_table(), resolved);
-            return memory_for(cells, "cells", 1100 + descriptor_bytes_per_cell) +
+            return memory_for(cells, "cells", 1100 + 600 + descriptor_bytes_per_cell) +
                    memory_for(cells * given.checkpoints, "cell-checkpoints",
                               2.0 * 8.0 * (6.0 + given.hydraulic.pipe_count) + 20.0);
           }};
