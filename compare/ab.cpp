@@ -107,7 +107,7 @@ Sweep make_ab(const AdHocCase& base, const std::vector<std::string>& a, const st
   }
   const std::string input = ad_hoc_input_name(base);
   Sweep ab;
-  ab.ab = true;
+  ab.kind = SweepKind::ab;
   for (const auto& [label, assignments] : {std::pair{"a", &a}, std::pair{"b", &b}}) {
     AdHocCase variant = base;
     variant.assignments.insert(variant.assignments.end(), assignments->begin(), assignments->end());
@@ -168,7 +168,7 @@ void write_case_ab_summaries(const std::vector<CaseSpec>& specs, Report& report,
                                 [&](const CaseSpec& spec) { return spec.ab_pair == a.ab_pair && spec.ab_side == "b"; });
     if (b == specs.end()) continue;  // a selection or a shard holding one side only
     Sweep pair;
-    pair.ab = true;
+    pair.kind = SweepKind::ab;
     pair.ab_stem = "ab." + a.ab_pair;
     for (const CaseSpec* side : {&a, &*b}) {
       AdHocCase variant;

@@ -37,6 +37,7 @@
 #include "compare/provenance.hpp"
 #include "compare/report/report_common.hpp"
 #include "compare/shards.hpp"
+#include "compare/specificity.hpp"
 #include "compare/sweep.hpp"
 #include "compare/mutants/mutants.hpp"
 #include "compare/output_folder.hpp"
@@ -683,10 +684,10 @@ int run_driver(const DriverOptions& options) {
     }
     if (!options.worker) write_case_ab_summaries(specs, report, folder);
     if (options.sweep && !options.worker) {
-      if (options.sweep->ab) {
-        write_ab_summary(*options.sweep, report, folder);
-      } else {
-        write_sweep_summary(*options.sweep, report, folder);
+      switch (options.sweep->kind) {
+        case SweepKind::ab: write_ab_summary(*options.sweep, report, folder); break;
+        case SweepKind::specificity: write_specificity_summary(*options.sweep, report, folder); break;
+        case SweepKind::grid: write_sweep_summary(*options.sweep, report, folder); break;
       }
     }
     if (report.environment.gl_platform.empty()) runner.gpu_available();  // every worker failed: describe ours

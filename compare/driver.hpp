@@ -39,12 +39,15 @@ struct AdHocCase {
 std::string ad_hoc_input_name(const AdHocCase& ad_hoc);
 
 // `groundtruth sweep` (compare/sweep.hpp): one ad-hoc case per combination of the varied values;
-// `groundtruth ab` (compare/ab.hpp): two variants, A and B, side by side.
+// `groundtruth ab` (compare/ab.hpp): two variants, A and B, side by side; `groundtruth
+// specificity` (compare/specificity.hpp): drawn parameter sets of several algorithms, tallied.
+enum class SweepKind { grid, ab, specificity };
+
 struct Sweep {
   std::vector<std::string> varied;   // the varied parameters, in the order given (named sets: "set"; ab: none)
   std::vector<AdHocCase> variants;   // each with its assignments and name (ab: A, then B)
   std::vector<std::vector<std::string>> varied_values;  // per variant, its value of each varied one
-  bool ab = false;                   // summarised as an A/B comparison rather than a sweep
+  SweepKind kind = SweepKind::grid;  // how the runs are summarised
   std::string ab_stem = "ab";        // its files: <stem>.html, <stem>.json, <stem>_difference.png
 };
 

@@ -405,7 +405,8 @@ Check shadow_check(const std::string& name, const ShadowWorst& worst, const std:
       worst.where.empty() ? "" : fmt::format(", {} (the bound there, one per value)", worst.where), worst.bound.model);
   if (!worst.bound.graded) {
     return informative_check(name, worst.distance,
-                             detail + fmt::format("; the model's bound there, {:.3g}, is too wide to grade", worst.bound.strict));
+                             detail + fmt::format("; the model's bound there, {:.3g}, not graded: {}", worst.bound.strict,
+                                                  worst.bound.why_not_graded));
   }
   // Whether the bound can tell is judged against the field's largest size over the run's
   // checkpoints (a dry start has no water to measure a share of).

@@ -62,7 +62,8 @@ struct ShadowBound {
   // the checkpoints cannot tell a bug from rounding, and a pass under it is `inconclusive`.
   double scale = 1.0;
   double tellable_share = 0.01;
-  bool graded = true;  // false: the model is too wide to grade; the distance is informative
+  bool graded = true;  // false: the distance is informative
+  std::string why_not_graded = "the model is too wide to grade";  // for the report, where graded is false
   std::string model;   // one line for the report
 };
 

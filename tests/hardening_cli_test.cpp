@@ -421,7 +421,7 @@ TEST_F(Hostile, PipesDevicesAndFoldersAreRefusedWhereAFileIsExpected) {
   fs::create_directory(work_ / "folder");
   fs::create_directory(work_ / "folder.off");
   const std::string out = (work_ / "out").string();
-  for (const std::string special : {(work_ / "fifo").string(), std::string("/dev/zero"), (work_ / "folder").string()}) {
+  for (const std::string& special : {(work_ / "fifo").string(), std::string("/dev/zero"), (work_ / "folder").string()}) {
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"run", "erosion.thermal.spec.*", "--expectations", special, "--out", out},
           std::vector<std::string>{"run", "erosion.thermal.spec.*", "--flakes", special, "--out", out},

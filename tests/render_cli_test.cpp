@@ -77,7 +77,9 @@ std::vector<std::string> names_in(const TempDir& work) {
 void expect_refused(const ProgramRun& run, const std::string& reason, const TempDir& work,
                     const std::vector<std::string>& files_before, bool by_parser = false) {
   EXPECT_EQ(run.status, 2) << run;
-  if (!by_parser) EXPECT_THAT(run.err, HasSubstr("groundtruth: ")) << run;
+  if (!by_parser) {
+    EXPECT_THAT(run.err, HasSubstr("groundtruth: ")) << run;
+  }
   EXPECT_THAT(run.err, HasSubstr(reason)) << run;
   EXPECT_EQ(names_in(work), files_before) << run;
 }

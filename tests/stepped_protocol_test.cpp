@@ -163,7 +163,9 @@ TEST_P(GpuSkips, ACpuOnlyRunSkipsExactlyTheChecksTheGpuRunAdds) {
   for (const auto& check : without.checks) {
     auto& into = check.status == gt::Outcome::skip ? skipped : ran;
     EXPECT_TRUE(into.insert(check.name).second) << check.name << " twice in the CPU-only run";
-    if (check.status == gt::Outcome::skip) EXPECT_EQ(check.detail, "no GL context (stepped_protocol_test)");
+    if (check.status == gt::Outcome::skip) {
+      EXPECT_EQ(check.detail, "no GL context (stepped_protocol_test)");
+    }
   }
   std::set<std::string> added_by_gpu;
   std::set_difference(gpu_run.begin(), gpu_run.end(), ran.begin(), ran.end(),

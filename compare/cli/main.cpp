@@ -61,6 +61,7 @@
 #include "compare/report_diff.hpp"
 #include "compare/report_history.hpp"
 #include "compare/shards.hpp"
+#include "compare/specificity.hpp"
 #include "compare/sweep.hpp"
 #include "compare/worker.hpp"
 #include "core/errors.hpp"
@@ -415,6 +416,21 @@ int run_command_line(int argc, char** argv) {
   add_ad_hoc_options(*ab, ab_base, ab_grid_size, ab_shared);
   add_shared_options(*ab, ab_shared, "groundtruth-ab");
 
+  Shared specificity_shared;
+  std::vector<std::string> specificity_patterns;
+  int specificity_sets = 20;
+  std::uint32_t specificity_seed = 1;
+  auto* specificity = app.add_subcommand(
+      "specificity", "the harness's false-alarm rate: each stepping algorithm with parameter sets drawn from plausible "
+                     "ranges, on two real inputs; every fail or error is counted and shown");
+  specificity->add_option("patterns", specificity_patterns,
+                          fmt::format("algorithm-name patterns (all of {} when none)", fmt::join(gt::specificity_algorithms(), ", ")));
+  specificity->add_option("--sets", specificity_sets, "parameter sets per algorithm (each runs on both inputs)")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  specificity->add_option("--seed", specificity_seed, "seed of the draws (the same sets on every machine)")->capture_default_str();
+  add_shared_options(*specificity, specificity_shared, "groundtruth-specificity");
+
   Shared report_shared;
   bool skip_benchmark = false;
   auto* report = app.add_subcommand("report", "the main job: every algorithm family's cases and the benchmarks "
@@ -623,6 +639,11 @@ int run_command_line(int argc, char** argv) {
       refuse_repeated(sweep_base.assignments, "--set");
       options.sweep = sweep_sets.empty() ? gt::make_sweep(sweep_base, vary, force_sweep)
                                          : gt::make_sweep_of_sets(sweep_base, sweep_sets, force_sweep);
+      return gt::run_driver(options);
+    }
+    if (specificity->parsed()) {
+      auto options = driver_options(specificity_shared, command_line, memory_limit_mib);
+      options.sweep = gt::make_specificity(specificity_patterns, specificity_sets, specificity_seed);
       return gt::run_driver(options);
     }
     if (ab->parsed()) {
