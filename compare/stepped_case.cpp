@@ -398,15 +398,20 @@ Check shadow_check(const std::string& name, const ShadowWorst& worst, const std:
                    const Candidate& candidate) {
   const std::string exact = worst.differing == 0 ? "bit for bit at every checkpoint; "
                                                  : fmt::format("{} values differ in some bit; ", worst.differing);
-  const std::string detail = fmt::format(
-      "{}{}, {} iteration(s) beside it: max |{} - {}| in {}, worst against its bound at the checkpoint after "
-      "iteration {}{}; {}",
-      exact, from, worst.count, candidate.backend, candidate.reference_label(), unit, worst.checkpoint,
-      worst.where.empty() ? "" : fmt::format(", {} (the bound there, one per value)", worst.where), worst.bound.model);
+  const std::string measured =
+      worst.where.empty()
+          ? fmt::format("max |{} - {}| in {}, worst against its bound at the checkpoint after iteration {}",
+                        candidate.backend, candidate.reference_label(), unit, worst.checkpoint)
+          : fmt::format("|{} - {}| in {} where it came closest to its own bound (one per value): at the checkpoint "
+                        "after iteration {}, {}",
+                        candidate.backend, candidate.reference_label(), unit, worst.checkpoint, worst.where);
+  const std::string detail = fmt::format("{}{}, {} iteration(s) beside it: {}{}", exact, from, worst.count, measured,
+                                         worst.bound.model.empty() ? "" : "; " + worst.bound.model);
   if (!worst.bound.graded) {
-    return informative_check(name, worst.distance,
-                             detail + fmt::format("; the model's bound there, {:.3g}, not graded: {}", worst.bound.strict,
-                                                  worst.bound.why_not_graded));
+    // A model that gave no bound (none named) is not quoted.
+    const std::string bound_there =
+        worst.bound.model.empty() ? "" : fmt::format("; the model's bound there, {:.3g}", worst.bound.strict);
+    return informative_check(name, worst.distance, detail + bound_there + "; not graded: " + worst.bound.why_not_graded);
   }
   // Whether the bound can tell is judged against the field's largest size over the run's
   // checkpoints (a dry start has no water to measure a share of).

@@ -19,7 +19,7 @@
 // and velocity_y v (m/s), outflow f per pipe (m³/s, cell × pipe); compare/stepped_case.hpp runs the
 // three twins over it (checkpoints, shadow steps, end-of-run distances, determinism, field files,
 // pictures of every field, descriptors) and grades each field's one-step shadow value by value
-// (shadow_length steps shown beside the same model's bound) against pipe_shadow_bounds
+// (the shadow_length steps' distance shown, not graded) against pipe_shadow_bounds
 // (compare/checks/pipe_error_model.hpp):
 // the step in rounding-interval arithmetic from ref<float>'s state before it, one bound per cell and pipe
 // (tellable: the bounds' 90th percentile within a tenth of the field's own size).
@@ -370,32 +370,36 @@ void plot_ledgers(const std::vector<BackendEnd>& ends, double material, const Ru
 // tenth from rounding: the check is then inconclusive.
 constexpr double tellable_share_of_field = 0.1;
 
-// pipe_shadow_bounds of ref<float>'s state before the steps, one bound per value of each field as
+// pipe_shadow_bounds of ref<float>'s state before the step, one bound per value of each field as
 // pipe_fields declares them, with the field's own size as its scale. One step is graded. Over
-// shadow_length steps the distance is shown beside the same model's bound, not graded: a branch
-// that jumps (the thermal step's talus threshold, a cell dry by an ulp) moves a whole transfer,
-// which the next steps of an unstable run amplify (honest run specificity.erosion.pipe.topobathy.set_09
-// of `groundtruth specificity --seed 1`: every one-step distance within its bound, 431 m of terrain
-// apart after four steps, in a run whose velocities reach 1e5 m/s).
+// shadow_length steps the distance is shown, neither bounded nor graded: a branch that jumps (the
+// thermal step's talus threshold, a cell dry by an ulp) moves a whole transfer, which the next steps
+// of an unstable run amplify (honest run specificity.erosion.pipe.topobathy.set_09 of `groundtruth
+// specificity --seed 1`: every one-step distance within its bound, 431 m of terrain apart after
+// four steps, in a run whose velocities reach 1e5 m/s), so no bound is computed for them.
 const std::string multi_step_not_graded =
     "over several steps a branch that jumps (a talus threshold, a dry cell) moves a whole transfer, which an "
-    "unstable run amplifies";
+    "unstable run amplifies; the one-step shadow is graded";
 
 std::vector<ShadowBound> pipe_field_bounds(const State& from, int steps, const PipeScenario& scenario) {
   const PipeConstants& constants = scenario.constants;
   const auto start = pipe_state_of<double>(from, constants.pipe_count);
   const PipeShadowScales scales = pipe_shadow_scales(start, constants);
+  const std::array<double, 7> scale_of_field{scales.relief, scales.depth, scales.sediment, scales.regolith,
+                                             scales.speed,  scales.speed, scales.flux};
+  if (steps > 1) {
+    std::vector<ShadowBound> shown;
+    for (double scale : scale_of_field) shown.push_back({.scale = scale, .graded = false, .why_not_graded = multi_step_not_graded});
+    return shown;
+  }
   const State bounds = pipe_state(pipe_shadow_bounds(start, constants, scenario.forcing, steps), constants.pipe_count);
   const std::string model =
       "pipe_shadow_bounds: the step in rounding-interval arithmetic from that state, cell by cell "
       "(compare/checks/pipe_error_model.hpp)";
-  const std::array<double, 7> scale_of_field{scales.relief, scales.depth, scales.sediment, scales.regolith,
-                                             scales.speed,  scales.speed, scales.flux};
   std::vector<ShadowBound> field_bounds;
   for (std::size_t f = 0; f < bounds.fields.size(); ++f) {
     field_bounds.push_back({.per_value = bounds.fields[f], .scale = scale_of_field.at(f),
-                            .tellable_share = tellable_share_of_field, .graded = steps == 1,
-                            .why_not_graded = multi_step_not_graded, .model = model});
+                            .tellable_share = tellable_share_of_field, .model = model});
   }
   return field_bounds;
 }
