@@ -400,8 +400,9 @@ Check shadow_check(const std::string& name, const ShadowWorst& worst, const std:
                                                  : fmt::format("{} values differ in some bit; ", worst.differing);
   const std::string measured =
       worst.where.empty()
-          ? fmt::format("max |{} - {}| in {}, worst against its bound at the checkpoint after iteration {}",
-                        candidate.backend, candidate.reference_label(), unit, worst.checkpoint)
+          ? fmt::format("max |{} - {}| in {}, {} at the checkpoint after iteration {}", candidate.backend,
+                        candidate.reference_label(), unit,
+                        worst.bound.model.empty() ? "the largest" : "worst against its bound", worst.checkpoint)
           : fmt::format("|{} - {}| in {} where it came closest to its own bound (one per value): at the checkpoint "
                         "after iteration {}, {}",
                         candidate.backend, candidate.reference_label(), unit, worst.checkpoint, worst.where);
