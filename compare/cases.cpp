@@ -180,6 +180,12 @@ std::vector<CaseSpec> load_suite(const std::filesystem::path& folder, const std:
   return cases;
 }
 
+bool named_by_any(const std::vector<std::string>& patterns, const std::string& name) {
+  return patterns.empty() || std::any_of(patterns.begin(), patterns.end(), [&](const std::string& pattern) {
+           return fnmatch(pattern.c_str(), name.c_str(), 0) == 0;
+         });
+}
+
 std::vector<CaseSpec> select_cases(const std::vector<CaseSpec>& cases, const std::vector<std::string>& patterns) {
   std::vector<CaseSpec> selected;
   for (const auto& pattern : patterns) {

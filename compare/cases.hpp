@@ -75,6 +75,9 @@ std::string case_name_part(const std::string& text);
 // The cases of `tier` and of the tiers it holds, in load order.
 std::vector<CaseSpec> cases_in_tier(const std::vector<CaseSpec>& cases, Tier tier);
 
+// Whether `name` matches one of the shell-style `patterns` (fnmatch); true when there are none.
+bool named_by_any(const std::vector<std::string>& patterns, const std::string& name);
+
 // The cases whose names match any of the shell-style patterns (fnmatch), in load order.
 // Throws InputError when a pattern matches nothing, listing how to see the names.
 std::vector<CaseSpec> select_cases(const std::vector<CaseSpec>& cases, const std::vector<std::string>& patterns);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fnmatch.h>
 #include <map>
 #include <sstream>
 
@@ -11,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/algorithm.hpp"
+#include "compare/cases.hpp"
 #include "compare/report/report_common.hpp"
 #include "compare/sweep.hpp"
 #include "core/errors.hpp"
@@ -83,12 +83,6 @@ const std::vector<std::string>& specificity_inputs() {
   return inputs;
 }
 
-bool matches_any(const std::vector<std::string>& patterns, const std::string& name) {
-  if (patterns.empty()) return true;
-  return std::any_of(patterns.begin(), patterns.end(),
-                     [&](const std::string& pattern) { return fnmatch(pattern.c_str(), name.c_str(), 0) == 0; });
-}
-
 // A uniform number in [0, 1) for (seed, algorithm, set, parameter), the same on every machine.
 double draw(std::uint32_t seed, std::size_t algorithm, int set, std::size_t parameter) {
   return uniform01(random_u32(seed, static_cast<std::uint32_t>(algorithm), static_cast<std::uint32_t>(set),
@@ -111,14 +105,6 @@ std::string drawn_value(const Plausible& plausible, const ParamSpec& spec, doubl
   return fmt::format("{:.4g}", value);
 }
 
-const ParamSpec& declared(const std::string& algorithm, const std::string& parameter) {
-  const ParamSpecs& specs = *find_algorithm(algorithm).params;
-  const auto found =
-      std::find_if(specs.begin(), specs.end(), [&](const ParamSpec& spec) { return spec.name == parameter; });
-  if (found == specs.end()) throw std::logic_error(fmt::format("specificity: {} declares no {}", algorithm, parameter));
-  return *found;
-}
-
 }  // namespace
 
 std::vector<std::string> specificity_algorithms() {
@@ -135,12 +121,13 @@ Sweep make_specificity(const std::vector<std::string>& patterns, int sets, std::
   const auto& table = plausible_table();
   for (std::size_t a = 0; a < table.size(); ++a) {
     const SpecificityAlgorithm& entry = table[a];
-    if (!matches_any(patterns, entry.algorithm)) continue;
+    if (!named_by_any(patterns, entry.algorithm)) continue;
     for (int set = 0; set < sets; ++set) {
       std::vector<std::string> assignments;
       for (std::size_t p = 0; p < entry.parameters.size(); ++p) {
         const Plausible& plausible = entry.parameters[p];
-        const std::string value = drawn_value(plausible, declared(entry.algorithm, plausible.parameter), draw(seed, a, set, p));
+        const ParamSpec& spec = find_spec(entry.algorithm, *find_algorithm(entry.algorithm).params, plausible.parameter);
+        const std::string value = drawn_value(plausible, spec, draw(seed, a, set, p));
         assignments.push_back(plausible.parameter + "=" + value);
       }
       for (const std::string& input : specificity_inputs()) {

@@ -241,6 +241,7 @@ PerValueWorst per_value_worst(const SteppedTwin& twin, std::size_t f, const Stat
                                        expected.size(), field.name));
   }
   PerValueWorst worst;
+  std::size_t worst_index = 0;
   std::vector<double> valid_bounds;
   for (std::size_t i = 0; i < expected.size(); ++i) {
     const std::size_t cell = i / components;
@@ -250,12 +251,15 @@ PerValueWorst per_value_worst(const SteppedTwin& twin, std::size_t f, const Stat
                                                                  : std::abs(got[i] - expected[i]);
     const double ratio = distance_over_bound(difference, bounds[i]);
     if (ratio > worst.ratio || (ratio == worst.ratio && difference > worst.distance)) {
-      const auto width = static_cast<std::size_t>(std::max(1, a.grid.width));
-      worst = {ratio, difference, bounds[i], 0.0,
-               components == 1 ? fmt::format("cell (x={}, y={})", cell % width, cell / width)
-                               : fmt::format("cell (x={}, y={}), component {}", cell % width, cell / width, i % components)};
+      worst = {ratio, difference, bounds[i]};
+      worst_index = i;
     }
   }
+  const std::size_t cell = worst_index / components;
+  const auto width = static_cast<std::size_t>(std::max(1, a.grid.width));
+  worst.where = components == 1 ? fmt::format("cell (x={}, y={})", cell % width, cell / width)
+                                : fmt::format("cell (x={}, y={}), component {}", cell % width, cell / width,
+                                              worst_index % components);
   if (!valid_bounds.empty()) {
     const auto rank = valid_bounds.begin() + static_cast<std::ptrdiff_t>(valid_bounds.size() * 9 / 10);
     std::nth_element(valid_bounds.begin(), rank, valid_bounds.end());
@@ -265,22 +269,25 @@ PerValueWorst per_value_worst(const SteppedTwin& twin, std::size_t f, const Stat
 }
 
 void keep_worst(ShadowWorst& worst, const SteppedTwin& twin, std::size_t f, const State& expected, const State& got,
-                const ShadowBound& bound, int checkpoint, int count) {
+                ShadowBound bound, int checkpoint, int count) {
   const Distance d = distance(twin, f, expected, got);
   worst.differing += d.differing;
   worst.count = std::max(worst.count, count);
   worst.scale = std::max(worst.scale, bound.scale);
-  ShadowWorst here{.distance = d.max_abs, .bound = bound, .checkpoint = checkpoint};
-  if (bound.per_value.empty()) {
-    here.ratio = distance_over_bound(d.max_abs, bound.loose.value_or(bound.strict));
+  std::optional<PerValueWorst> at;
+  if (!bound.per_value.empty()) {
+    at = per_value_worst(twin, f, expected, got, bound.per_value);
+    bound.per_value = {};  // kept no further: the worst keeps the bound at one value
+  }
+  ShadowWorst here{.distance = d.max_abs, .bound = std::move(bound), .checkpoint = checkpoint};
+  if (!at) {
+    here.ratio = distance_over_bound(d.max_abs, here.bound.loose.value_or(here.bound.strict));
   } else {
-    const PerValueWorst at = per_value_worst(twin, f, expected, got, bound.per_value);
-    here.bound.per_value.clear();
-    here.bound.strict = at.bound;
-    here.distance = at.distance;
-    here.ratio = at.ratio;
-    here.tellable_bound = at.tellable_bound;
-    here.where = at.where;
+    here.bound.strict = at->bound;
+    here.distance = at->distance;
+    here.ratio = at->ratio;
+    here.tellable_bound = at->tellable_bound;
+    here.where = at->where;
   }
   // Ties (no bound: every ratio 0 or infinite) keep the largest distance.
   if (here.ratio > worst.ratio || (here.ratio == worst.ratio && here.distance > worst.distance)) {
@@ -328,13 +335,13 @@ void shadow_steps(const SteppedTwin& twin, const Candidate& candidate, const Bac
   const auto compare = [&](std::vector<ShadowWorst>& worst, const State& from, int start, int count) {
     const State expected = reference->get_state();
     const State got = gpu.get_state();
-    const std::vector<ShadowBound> bounds = candidate_bounds(twin, candidate, from, count);
+    std::vector<ShadowBound> bounds = candidate_bounds(twin, candidate, from, count);
     if (bounds.size() != twin.fields.size()) {
       throw std::logic_error(fmt::format("{}: {} shadow bounds for {} declared fields", twin.algorithm, bounds.size(),
                                          twin.fields.size()));
     }
     for (std::size_t f = 0; f < twin.fields.size(); ++f) {
-      keep_worst(worst[f], twin, f, expected, got, bounds[f], start, count);
+      keep_worst(worst[f], twin, f, expected, got, std::move(bounds[f]), start, count);
     }
   };
   for (std::size_t k = 0; k < starts.size(); ++k) {

@@ -46,6 +46,24 @@ struct Grid {
   // Same geometry, units and mask; values converted to U.
   template <class U>
   Grid<U> cast() const {
+    Grid<U> out = same_geometry<U>();
+    out.values.assign(values.begin(), values.end());
+    return out;
+  }
+
+  // Same geometry, units and mask; each value v becomes value(v) (a conversion that is not
+  // implicit: a number type's own parts).
+  template <class U, class Value>
+  Grid<U> map(Value value) const {
+    Grid<U> out = same_geometry<U>();
+    out.values.reserve(values.size());
+    for (const T& v : values) out.values.push_back(value(v));
+    return out;
+  }
+
+ private:
+  template <class U>
+  Grid<U> same_geometry() const {
     Grid<U> out;
     out.width = width;
     out.height = height;
@@ -54,7 +72,6 @@ struct Grid {
     out.horizontal_unit = horizontal_unit;
     out.vertical_unit = vertical_unit;
     out.valid = valid;
-    out.values.assign(values.begin(), values.end());
     return out;
   }
 };

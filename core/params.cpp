@@ -23,16 +23,6 @@ const char* kind_name(ParamKind kind) {
   return "?";
 }
 
-const ParamSpec& find_spec(const std::string& algorithm, const ParamSpecs& specs, const std::string& name) {
-  for (const auto& spec : specs) {
-    if (spec.name == name) return spec;
-  }
-  std::vector<std::string> names;
-  for (const auto& spec : specs) names.push_back(spec.name);
-  throw InputError(fmt::format("{}: unknown parameter '{}'{}; known: {}", algorithm, name, did_you_mean(name, names),
-                               fmt::join(names, ", ")));
-}
-
 std::string range_text(const ParamSpec& spec) {
   if (spec.kind == ParamKind::choice) return fmt::format("one of {}", fmt::join(spec.choices, ", "));
   if (spec.kind == ParamKind::boolean) return "true or false";
@@ -74,6 +64,16 @@ nlohmann::json checked_value(const std::string& algorithm, const ParamSpec& spec
 }
 
 }  // namespace
+
+const ParamSpec& find_spec(const std::string& algorithm, const ParamSpecs& specs, const std::string& name) {
+  for (const auto& spec : specs) {
+    if (spec.name == name) return spec;
+  }
+  std::vector<std::string> names;
+  for (const auto& spec : specs) names.push_back(spec.name);
+  throw InputError(fmt::format("{}: unknown parameter '{}'{}; known: {}", algorithm, name, did_you_mean(name, names),
+                               fmt::join(names, ", ")));
+}
 
 nlohmann::json to_json(const ParamSpec& spec) {
   nlohmann::json out = {{"name", spec.name},

@@ -29,6 +29,9 @@ using ParamSpecs = std::vector<ParamSpec>;
 // The declaration as JSON: {"name", "kind", "default", "min", "max" | "choices", "unit", "description"}.
 nlohmann::json to_json(const ParamSpec& spec);
 
+// The declaration of `name`; throws InputError naming the known ones (and the closest) otherwise.
+const ParamSpec& find_spec(const std::string& algorithm, const ParamSpecs& specs, const std::string& name);
+
 // Returns every declared parameter, taking the given value where there is one and the default
 // otherwise. Throws InputError for an unknown name (listing the known ones), a value of the wrong
 // kind, or a value outside [min, max] or not among the choices (naming them).

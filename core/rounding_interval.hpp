@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 namespace gt {
@@ -68,18 +69,15 @@ struct RoundingInterval {
     return rounded(a.value - b.value, a.low - b.high, a.high - b.low, basic_unit);
   }
   friend RoundingInterval operator*(const RoundingInterval& a, const RoundingInterval& b) {
-    const double corners[] = {product(a.low, b.low), product(a.low, b.high), product(a.high, b.low),
-                              product(a.high, b.high)};
-    return rounded(a.value * b.value, *std::min_element(std::begin(corners), std::end(corners)),
-                   *std::max_element(std::begin(corners), std::end(corners)), basic_unit);
+    return hull(a.value * b.value,
+                {product(a.low, b.low), product(a.low, b.high), product(a.high, b.low), product(a.high, b.high)},
+                basic_unit);
   }
   friend RoundingInterval operator/(const RoundingInterval& a, const RoundingInterval& b) {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     const double quotient = a.value / b.value;
     if (b.low > 0.0 || b.high < 0.0) {
-      const double corners[] = {a.low / b.low, a.low / b.high, a.high / b.low, a.high / b.high};
-      return rounded(quotient, *std::min_element(std::begin(corners), std::end(corners)),
-                     *std::max_element(std::begin(corners), std::end(corners)), licensed_unit);
+      return hull(quotient, {a.low / b.low, a.low / b.high, a.high / b.low, a.high / b.high}, licensed_unit);
     }
     // The divisor may be 0: with a divisor in [0, high] (a sum of non-negative terms) and a dividend
     // of one sign, the quotient is bounded on that side.
@@ -98,6 +96,11 @@ struct RoundingInterval {
 
  private:
   static double product(double x, double y) { return x == 0.0 || y == 0.0 ? 0.0 : x * y; }
+  // The interval spanned by the four corners of an operation on two intervals, rounded outward.
+  static RoundingInterval hull(double value, std::initializer_list<double> corners, double unit) {
+    const auto [low, high] = std::minmax(corners);
+    return rounded(value, low, high, unit);
+  }
   // [low, high] widened outward by `unit` of each end's magnitude.
   // An end that is NaN (∞ − ∞, ∞/∞ of unbounded operands) is unbounded.
   static RoundingInterval rounded(double value, double low, double high, double unit) {

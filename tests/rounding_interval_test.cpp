@@ -17,7 +17,6 @@
 
 namespace {
 
-using gt::Grid;
 using gt::HydraulicForcing;
 using gt::HydraulicParams;
 using gt::PipeState;
@@ -119,24 +118,6 @@ void expect_state_inside(const PipeState<RoundingInterval>& model, const PipeSta
   EXPECT_EQ(outside, 0) << what << ": first " << first;
 }
 
-PipeState<RoundingInterval> exact_copy(const PipeState<float>& state) {
-  const auto exact = [](const Grid<float>& grid) {
-    Grid<RoundingInterval> out(grid.width, grid.height);
-    out.cell_size_x = grid.cell_size_x;
-    out.cell_size_y = grid.cell_size_y;
-    out.valid = grid.valid;
-    for (std::size_t i = 0; i < grid.size(); ++i) out.values[i] = RoundingInterval::exact(grid.values[i]);
-    return out;
-  };
-  PipeState<RoundingInterval> copy{exact(state.terrain), exact(state.water), exact(state.sediment), {},
-                                   exact(state.velocity_x), exact(state.velocity_y), exact(state.regolith)};
-  for (const auto& fluxes : state.outflow) {
-    auto& exact_fluxes = copy.outflow.emplace_back();
-    for (int k = 0; k < 8; ++k) exact_fluxes[k] = RoundingInterval::exact(fluxes[k]);
-  }
-  return copy;
-}
-
 // From ref<float>'s state after `warm_up` steps, ref<float>, ref<double> and the model each take
 // `steps` steps; both references must lie in the model's intervals everywhere.
 void expect_references_inside(const PipeState<double>& initial, const HydraulicParams& params,
@@ -146,7 +127,9 @@ void expect_references_inside(const PipeState<double>& initial, const HydraulicP
   run_up.run(warm_up);
   const PipeState<float> start = run_up.state();
   for (int steps : {1, 4}) {
-    gt::reference::PipeErosion<RoundingInterval> model(exact_copy(start), constants, forcing);
+    const auto exact = [](float value) { return RoundingInterval::exact(value); };
+    gt::reference::PipeErosion<RoundingInterval> model(gt::map_pipe_state<RoundingInterval>(start, exact), constants,
+                                                       forcing);
     gt::reference::PipeErosion<float> in_float(start, constants, forcing);
     gt::reference::PipeErosion<double> in_double(gt::cast_pipe_state<double>(start), constants, forcing);
     model.run(steps);

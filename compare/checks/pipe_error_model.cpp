@@ -75,24 +75,6 @@ template PipeShadowScales pipe_shadow_scales(const PipeState<double>&, const Pip
 
 namespace {
 
-// `field`'s geometry and mask with `value` of each of its values.
-template <class To, class From, class Value>
-Grid<To> mapped(const Grid<From>& field, Value value) {
-  Grid<To> out(field.width, field.height);
-  out.cell_size_x = field.cell_size_x;
-  out.cell_size_y = field.cell_size_y;
-  out.horizontal_unit = field.horizontal_unit;
-  out.vertical_unit = field.vertical_unit;
-  out.valid = field.valid;
-  for (std::size_t cell = 0; cell < field.size(); ++cell) out.values[cell] = value(field.values[cell]);
-  return out;
-}
-
-// The start both twins load: float values, exact.
-Grid<RoundingInterval> exact_grid(const Grid<double>& field) {
-  return mapped<RoundingInterval>(field, [](double value) { return RoundingInterval::exact(value); });
-}
-
 // The interval holds the exact step and ref<float>'s (the same operations, each rounded within the
 // interval's widening); a candidate that forms the same formulas otherwise (another order, the head
 // from base and change, fused multiply-adds) is taken to be no less accurate, within the width of
@@ -101,34 +83,15 @@ constexpr double candidate_and_reference = 2.0;
 
 double bound_of(const RoundingInterval& value) { return candidate_and_reference * value.width(); }
 
-Grid<double> bounds_of(const Grid<RoundingInterval>& field) { return mapped<double>(field, bound_of); }
-
-PipeState<RoundingInterval> exact_state(const PipeState<double>& start) {
-  PipeState<RoundingInterval> state{exact_grid(start.terrain),    exact_grid(start.water),      exact_grid(start.sediment), {},
-                                exact_grid(start.velocity_x), exact_grid(start.velocity_y), exact_grid(start.regolith)};
-  state.outflow.reserve(start.outflow.size());
-  for (const auto& fluxes : start.outflow) {
-    auto& exact_fluxes = state.outflow.emplace_back();
-    for (std::size_t k = 0; k < fluxes.size(); ++k) exact_fluxes[k] = RoundingInterval::exact(fluxes[k]);
-  }
-  return state;
-}
-
 }  // namespace
 
 PipeState<double> pipe_shadow_bounds(const PipeState<double>& start, const PipeConstants& constants,
                                      const HydraulicForcing& forcing, int steps) {
-  reference::PipeErosion<RoundingInterval> model(exact_state(start), constants, forcing);
+  // The start both twins load: float values, exact.
+  const auto exact = [](double value) { return RoundingInterval::exact(value); };
+  reference::PipeErosion<RoundingInterval> model(map_pipe_state<RoundingInterval>(start, exact), constants, forcing);
   model.run(steps);
-  const PipeState<RoundingInterval>& end = model.state();
-  PipeState<double> bounds{bounds_of(end.terrain),    bounds_of(end.water),      bounds_of(end.sediment), {},
-                           bounds_of(end.velocity_x), bounds_of(end.velocity_y), bounds_of(end.regolith)};
-  bounds.outflow.reserve(end.outflow.size());
-  for (const auto& fluxes : end.outflow) {
-    auto& flux_bounds = bounds.outflow.emplace_back();
-    for (std::size_t k = 0; k < fluxes.size(); ++k) flux_bounds[k] = bound_of(fluxes[k]);
-  }
-  return bounds;
+  return map_pipe_state<double>(model.state(), bound_of);
 }
 
 }  // namespace gt

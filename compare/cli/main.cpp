@@ -26,7 +26,6 @@
 // diff-image: 0 no pixel fails the neighbourhood-tolerant comparison, 1 some do, 2 bad input;
 // stats: 0 something measured, 2 unreadable or nothing measurable;
 // render: 0 written, 2 bad input, a camera inside the mesh or seeing nothing, or no GL context for gpu).
-#include <fnmatch.h>
 
 #include <algorithm>
 #include <cmath>
@@ -230,21 +229,15 @@ struct ListRequest {
   bool as_json = false;
 };
 
-bool named_by(const std::vector<std::string>& patterns, const std::string& name) {
-  return patterns.empty() || std::any_of(patterns.begin(), patterns.end(), [&](const std::string& pattern) {
-           return fnmatch(pattern.c_str(), name.c_str(), 0) == 0;
-         });
-}
-
 nlohmann::json list_json(const ListRequest& request) {
   nlohmann::json out = {{"algorithms", nlohmann::json::array()}, {"cases", nlohmann::json::array()}};
   for (const auto& algorithm : gt::algorithms()) {
-    if (named_by(request.patterns, algorithm.name)) out["algorithms"].push_back(gt::algorithm_json(algorithm));
+    if (gt::named_by_any(request.patterns, algorithm.name)) out["algorithms"].push_back(gt::algorithm_json(algorithm));
   }
   if (request.algorithms_only) return out;
   const auto recorded = gt::bundled_case_seconds(GT_DATASET_DIR);
   for (const auto& spec : gt::load_cases(std::filesystem::path(GT_DATASET_DIR) / "cases")) {
-    if (!named_by(request.patterns, spec.name) && !named_by(request.patterns, spec.algorithm)) continue;
+    if (!gt::named_by_any(request.patterns, spec.name) && !gt::named_by_any(request.patterns, spec.algorithm)) continue;
     nlohmann::json entry = {{"name", spec.name},   {"algorithm", spec.algorithm},     {"params", spec.params},
                             {"input", spec.input}, {"file", spec.origin},             {"tier", gt::tier_name(spec.tier)}};
     if (const auto found = recorded.find(spec.name); found != recorded.end()) entry["expected_seconds"] = found->second;

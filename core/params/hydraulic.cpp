@@ -164,16 +164,7 @@ template PipeState<double> dry_pipe_state(const Grid<double>&);
 
 template <class To, class From>
 PipeState<To> cast_pipe_state(const PipeState<From>& state) {
-  PipeState<To> cast{state.terrain.template cast<To>(),    state.water.template cast<To>(),
-                     state.sediment.template cast<To>(),   {},
-                     state.velocity_x.template cast<To>(), state.velocity_y.template cast<To>(),
-                     state.regolith.template cast<To>()};
-  cast.outflow.reserve(state.outflow.size());
-  for (const auto& fluxes : state.outflow) {
-    auto& cast_fluxes = cast.outflow.emplace_back();
-    for (std::size_t k = 0; k < fluxes.size(); ++k) cast_fluxes[k] = static_cast<To>(fluxes[k]);
-  }
-  return cast;
+  return map_pipe_state<To>(state, [](From value) { return static_cast<To>(value); });
 }
 
 template PipeState<float> cast_pipe_state(const PipeState<double>&);

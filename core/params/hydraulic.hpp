@@ -182,6 +182,21 @@ PipeState<Real> dry_pipe_state(const Grid<Real>& terrain);
 template <class To, class From>
 PipeState<To> cast_pipe_state(const PipeState<From>& state);
 
+// Every field and flux v of `state` as value(v), the grids' geometry and mask kept.
+template <class To, class From, class Value>
+PipeState<To> map_pipe_state(const PipeState<From>& state, Value value) {
+  PipeState<To> mapped{state.terrain.template map<To>(value),    state.water.template map<To>(value),
+                       state.sediment.template map<To>(value),   {},
+                       state.velocity_x.template map<To>(value), state.velocity_y.template map<To>(value),
+                       state.regolith.template map<To>(value)};
+  mapped.outflow.reserve(state.outflow.size());
+  for (const auto& fluxes : state.outflow) {
+    auto& mapped_fluxes = mapped.outflow.emplace_back();
+    for (std::size_t k = 0; k < fluxes.size(); ++k) mapped_fluxes[k] = value(fluxes[k]);
+  }
+  return mapped;
+}
+
 // What both twins refuse before they run (InputError, "erosion.pipe: ..."): fields of another size
 // than the terrain, a mask without a valid cell, non-finite values on valid cells (in Real: a value
 // that rounds to infinity is refused too), negative water, sediment, regolith or flux, flux through
