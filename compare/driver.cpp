@@ -233,6 +233,16 @@ CaseResult case_header(const Job& job) {
   return result;
 }
 
+// A run the reference found to leave the twins' common range: the case cannot be decided, and no
+// twin is to blame (the checks it had made before are kept).
+Check runaway_check(const RunawayRun& error) {
+  return {.name = "stability.runaway.cpu",
+          .value = error.change,
+          .threshold = error.limit,
+          .status = Outcome::inconclusive,
+          .detail = error.what()};
+}
+
 CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context, bool require_gpu) {
   const auto started = std::chrono::steady_clock::now();
   CaseResult result = case_header(job);
@@ -248,6 +258,8 @@ CaseResult run_job(const Job& job, const RunOptions& options, GlContext* context
         },
         prepared.kind);
     if (prepared.extra_checks) prepared.extra_checks(job.spec.expect, options, result);
+  } catch (const RunawayRun& error) {
+    result.checks.push_back(runaway_check(error));
   } catch (const std::exception& error) {
     result.error = error.what();
   }

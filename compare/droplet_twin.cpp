@@ -47,7 +47,8 @@ constexpr std::pair<const char*, double DropletLedger::*> ledger_amounts[] = {
     {"clamp_created", &DropletLedger::clamp_created},
     {"sediment_at_end", &DropletLedger::sediment_at_end},
     {"sediment_left", &DropletLedger::sediment_left},
-    {"apply_rounding", &DropletLedger::apply_rounding}};
+    {"apply_rounding", &DropletLedger::apply_rounding},
+    {"apply_rounding_bound", &DropletLedger::apply_rounding_bound}};
 constexpr std::pair<const char*, long long DropletLedger::*> ledger_counts[] = {
     {"droplets", &DropletLedger::droplets},
     {"droplets_left", &DropletLedger::droplets_left},
@@ -244,9 +245,26 @@ Check ledger_quanta(const LedgerRun& run) {
                        "eroded outside - clamp = 0 exactly");
 }
 
+// The batch ledger's rounding of the applications, which ledger.closure takes as measured, held to
+// what one rounding of Real(delta) and one of the sum may add: a change applied at the wrong size in
+// both twins would otherwise pass as rounding.
+Check ledger_apply_rounding(const LedgerRun& run) {
+  if (run.backend == "cpu") {
+    return not_applicable_check("", "ref<double> runs the droplets one after the other (the truth): it applies no deltas");
+  }
+  if (run.records.empty()) return not_applicable_check("", gpu_books_no_ledger);
+  const DropletLedger l = ledger_of(run.records.back());
+  return bounded_check("", std::abs(l.apply_rounding), l.apply_rounding_bound, std::nullopt,
+                       "|what applying the deltas added beyond Σ delta·quantum|, against Σ u·(|delta·quantum| + "
+                       "|height after|): one rounding of Real(delta) and one of the sum per applied cell");
+}
+
 std::vector<LedgerTerm> ledger_terms(const std::shared_ptr<const DropletTwin>& twin) {
   std::vector<LedgerTerm> terms = {{"ledger.closure", [twin](const LedgerRun& run) { return ledger_closure(*twin, run); }}};
-  if (twin->setup.ordering == DropletOrdering::batch) terms.push_back({"ledger.quanta", ledger_quanta});
+  if (twin->setup.ordering == DropletOrdering::batch) {
+    terms.push_back({"ledger.quanta", ledger_quanta});
+    terms.push_back({"ledger.apply_rounding", ledger_apply_rounding});
+  }
   return terms;
 }
 

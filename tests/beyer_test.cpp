@@ -241,6 +241,49 @@ INSTANTIATE_TEST_SUITE_P(
                                          "erosion.beyer.uphill_deposit_unbounded"),
                        ::testing::Values(DropletOrdering::race, DropletOrdering::batch)));
 
+// The batch delta holds what the GPU's int32 counter holds, 2^31 - 1 quanta a cell and pass, and
+// refuses one more as a run that left the twins' range (RunawayRun: the case becomes inconclusive),
+// not as a failure of either twin.
+TEST(BatchDelta, HoldsTheCounterRangeAndRefusesBeyondItAsARunaway) {
+  const double quantum = gt::batch_quantum(1.0);  // 2^-24
+  gt::reference::DropletLedger ledger;
+  gt::Grid<float> heights(2, 1, 0.0);
+  gt::reference::BatchDelta<float> delta(heights.size(), static_cast<float>(quantum), "erosion.beyer");
+  delta.add(0, 2147483647LL);
+  delta.add(1, -2147483647LL);
+  delta.apply(heights, ledger);
+  EXPECT_FLOAT_EQ(heights.values[0], 128.0f);
+  EXPECT_FLOAT_EQ(heights.values[1], -128.0f);
+  delta.add(1, -2147483648LL);
+  EXPECT_THROW(delta.apply(heights, ledger), gt::RunawayRun);
+}
+
+// The apply pass's rounding, which the batch ledger books as measured, stays within one rounding
+// of float(delta) and one of the sum per cell — over deltas beyond 2^24 quanta, where float(delta)
+// itself rounds — and a change applied 2^-10 too large in both twins does not.
+TEST(BatchDelta, TheApplyRoundingStaysWithinItsBoundAndAScaledApplyDoesNot) {
+  const auto apply_random_deltas = [] {
+    const double quantum = gt::batch_quantum(100.0);
+    gt::Grid<float> heights(64, 64, 0.0f);
+    gt::reference::BatchDelta<float> delta(heights.size(), static_cast<float>(quantum), "erosion.beyer");
+    for (std::size_t i = 0; i < heights.size(); ++i) {
+      const auto cell = static_cast<std::uint32_t>(i);
+      heights.values[i] = 100.0f * gt::uniform01(gt::random_u32(7, cell, 0, 0));
+      const double share = 2.0 * gt::uniform01(gt::random_u32(7, cell, 0, 1)) - 1.0;
+      delta.add(i, static_cast<long long>(share * 2.0e9));
+    }
+    gt::reference::DropletLedger ledger;
+    delta.apply(heights, ledger);
+    return ledger;
+  };
+  const auto honest = apply_random_deltas();
+  EXPECT_GT(std::abs(honest.apply_rounding), 0.0) << "the deltas beyond 2^24 round";
+  EXPECT_LE(std::abs(honest.apply_rounding), honest.apply_rounding_bound);
+  const ActiveMutant scaled("erosion.beyer.apply_scaled");
+  const auto mutated = apply_random_deltas();
+  EXPECT_GT(std::abs(mutated.apply_rounding), mutated.apply_rounding_bound);
+}
+
 TEST(BeyerParams, DisjointNeedsTheSpacingThatKeepsDropletsApart) {
   const gt::Heightmap field(8, 8, 1.0);
   auto resolved = gt::resolve_params("erosion.beyer", gt::beyer_param_specs(),

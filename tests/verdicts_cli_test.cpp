@@ -83,6 +83,36 @@ TEST(VerdictsCli, AnHonestLongPipeRunIsNotFailedOnItsChaoticEndState) {
   EXPECT_TRUE(descriptors_shown) << report_case.dump(2);
 }
 
+// A run whose reference runs away is not an error of a twin (issue 38: `groundtruth specificity`
+// drew Beyer's set_02 — the physical speed rule, capacity 5.04 — and the batch ordering's 32-bit
+// counter overflowed in both inputs, two `error`s of 240 honest runs). The race ordering of the
+// same parameters shows the run away: terrain tens of km apart between the references on a 100 m
+// volcano. The case is inconclusive and names why; nothing fails.
+TEST(VerdictsCli, ARunThatRunsAwayIsInconclusiveAndSaysWhy) {
+  const gt::testing::TemporaryFolder work;
+  const auto result =
+      run({"run", "--algorithm", "erosion.beyer", "--input", GT_DATASET_DIR "/real/volcano.json", "--set", "iterations=7",
+           "--set", "lifetime=31", "--set", "inertia=0.05105", "--set", "capacity_factor=5.04", "--set", "deposition=0.4881",
+           "--set", "erosion=0.3602", "--set", "evaporation=0.03705", "--set", "radius=3.666", "--set", "ordering=batch",
+           "--set", "speed_rule=physical", "--out", (work / "report").string()},
+          work.path());
+  EXPECT_EQ(result.status, 0) << result;
+  const json report = read_json(work / "report" / "report.json");
+  const json& report_case = report.at("cases").at(0);
+  EXPECT_EQ(report_case.at("status"), "inconclusive") << report_case.dump(2);
+  EXPECT_FALSE(report_case.contains("error")) << report_case.dump(2);
+  bool named = false;
+  for (const auto& check : report_case.at("checks")) {
+    EXPECT_NE(check.at("status"), "fail") << check.dump(2);
+    if (check.at("name") == "stability.runaway.cpu") {
+      named = true;
+      EXPECT_THAT(check.at("detail").get<std::string>(), HasSubstr("ran away")) << check.dump(2);
+      EXPECT_GT(check.at("value").get<double>(), check.at("threshold").get<double>()) << check.dump(2);
+    }
+  }
+  EXPECT_TRUE(named) << report_case.dump(2);
+}
+
 TEST(VerdictsCli, RequireGpuWithTheCpuBackendIsRefused) {
   const gt::testing::TemporaryFolder work;
   const auto result = run({"run", "erosion.thermal.spec.*", "--require-gpu", "--backend", "cpu"}, work.path());

@@ -10,7 +10,10 @@
 // (ledger.*: material neither created nor lost where the model does not say so). A droplet that
 // takes up nothing never fills and digs without bound: in batch ordering the probe's pass piles more
 // into a cell than the GPU's counters hold and ref<float> refuses the run, so that mutant runs on
-// the disjoint cone, whose references run the droplets one after the other.
+// the disjoint cone, whose references run the droplets one after the other. apply_scaled changes
+// the terrain by more than the droplets moved, in both twins: ledger.closure books the excess as the
+// apply pass's rounding, and ledger.apply_rounding holds that rounding to what one rounding of the
+// count and one of the sum may add.
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -30,6 +33,8 @@ std::vector<Mutant> beyer_mutants() {
       {"erosion.beyer.sediment_not_taken_on_erosion", MutantKind::both_twins,
        "both twins erode with the brush without adding what it takes to the droplet's sediment: material destroyed",
        {"erosion.beyer.disjoint.cone"}},
+      {"erosion.beyer.apply_scaled", MutantKind::both_twins,
+       "both twins' batch apply adds delta·quantum·(1 + 2^-10) to each cell, not delta·quantum", probe},
       {"erosion.beyer.uphill_deposit_unbounded", MutantKind::both_twins,
        "both twins deposit the whole climb Δh uphill, not min(Δh, sediment), and clamp the sediment at 0: material "
        "created",

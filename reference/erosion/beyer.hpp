@@ -26,8 +26,8 @@
 //          first), what it carried when it ended, and whether it ended by leaving the map.
 // Units:   heights in the units of `constants` (seed 000's normalised [0,1] heights by default);
 //          positions in texels.
-// Throws:  std::runtime_error in batch ordering when a cell's delta in one pass exceeds the GPU's
-//          32-bit counter.
+// Throws:  RunawayRun (core/errors.hpp) in batch ordering when a cell's delta in one pass exceeds the
+//          GPU's 32-bit counter.
 // Twin:    gpu/erosion/beyer.hpp (BeyerErosion) with gpu/shaders/erosion/beyer_droplets.comp,
 //          beyer_apply.comp and beyer_block.glsl.
 // Decisions: in reference/erosion/beyer.cpp and gpu/shaders/erosion/beyer_droplets.comp (shared).

@@ -20,7 +20,9 @@
 
 #include <fmt/format.h>
 
+#include "core/errors.hpp"
 #include "core/grid.hpp"
+#include "core/mutant.hpp"
 
 namespace gt::reference {
 
@@ -39,6 +41,9 @@ struct DropletLedger {
   double sediment_at_end = 0.0;    // carried by droplets whose lifetime ran out: lost with them
   double sediment_left = 0.0;      // carried by droplets that left across x <= 0 or y <= 0
   double apply_rounding = 0.0;     // batch: what rounding the heights + delta to Real added
+  // batch: the most that rounding may add, Σ u·(|delta·quantum| + |height after|) over the applied
+  // cells (Real(delta) rounds once, the product is exact, the sum rounds once), u Real's unit roundoff
+  double apply_rounding_bound = 0.0;
   long long droplets = 0;
   long long droplets_left = 0;     // of them, ended by the position check
   long long steps = 0;             // droplet steps taken (a droplet's steps up to its end)
@@ -63,7 +68,8 @@ struct DropletRun {
 
 // The batch ordering's change of each cell during one pass, in quanta, and its application when the
 // pass ends as the shaders' *_apply.comp do: height + Real(delta)·quantum, rounded once to Real.
-// The GPU counts in int32: a delta beyond it is refused (runtime_error naming `algorithm`).
+// The GPU counts in int32: a delta beyond it is refused (RunawayRun naming `algorithm`: the case
+// cannot be compared from there on, which no twin is to blame for).
 template <class Real>
 class BatchDelta {
  public:
@@ -73,28 +79,44 @@ class BatchDelta {
   void add(std::size_t cell, long long count) { delta_[cell] += count; }
 
   void apply(Grid<Real>& heights, DropletLedger& ledger) {
+    constexpr double unit_roundoff = std::numeric_limits<Real>::epsilon() / 2.0;
+    // Mutant erosion.beyer.apply_scaled (both twins; beyer_apply.comp alike): each change 2^-10 too large.
+    const bool scaled = mutant_active(algorithm_ + ".apply_scaled");
     for (std::size_t i = 0; i < delta_.size(); ++i) {
       const long long delta = delta_[i];
       if (delta == 0) continue;
       delta_[i] = 0;
       ledger.applied_quanta += delta;
       ledger.largest_cell_delta_quanta = std::max(ledger.largest_cell_delta_quanta, std::llabs(delta));
-      if (std::llabs(delta) > std::numeric_limits<std::int32_t>::max()) {
-        throw std::runtime_error(fmt::format(
-            "{}: a batch delta of {} quanta in one cell overflows the GPU's 32-bit counter: the droplets of a pass, "
-            "blind to each other, piled that much into one cell; use a larger spacing, fewer droplets or the race "
-            "ordering",
-            algorithm_, delta));
-      }
+      if (std::llabs(delta) > std::numeric_limits<std::int32_t>::max()) refuse(delta);
       const Real before = heights.values[i];
-      const Real after = before + static_cast<Real>(delta) * quantum_;
-      ledger.apply_rounding += (static_cast<double>(after) - static_cast<double>(before)) -
-                               static_cast<double>(delta) * static_cast<double>(quantum_);
+      Real change = static_cast<Real>(delta) * quantum_;
+      if (scaled) change = change * static_cast<Real>(1.0009765625);
+      const Real after = before + change;
+      const double exact_change = static_cast<double>(delta) * static_cast<double>(quantum_);
+      ledger.apply_rounding += (static_cast<double>(after) - static_cast<double>(before)) - exact_change;
+      ledger.apply_rounding_bound += unit_roundoff * (std::abs(exact_change) + std::abs(static_cast<double>(after)));
       heights.values[i] = after;
     }
   }
 
  private:
+  // The counter holds 2^31 quanta, 128 times the magnitude the quantum was sized for
+  // (core/params/droplets.hpp): one cell changing more in one pass is no longer erosion of that map.
+  [[noreturn]] void refuse(long long delta) const {
+    const double quantum = static_cast<double>(quantum_);
+    const double change = static_cast<double>(delta) * quantum;
+    const double limit = static_cast<double>(std::numeric_limits<std::int32_t>::max()) * quantum;
+    throw RunawayRun(fmt::format(
+        "{}: one cell's height changed by {:.6g} in one pass ({} quanta), beyond the GPU's 32-bit counter (128 times "
+        "the heights' magnitude, {:.6g}): the run left the range in which the twins can be compared. Either it ran "
+        "away (Beyer's `physical` speed rule does without friction: the speed and the capacity grow on every "
+        "downhill step) or the droplets of a pass, blind to each other, piled that much into one pit (a larger "
+        "spacing or the race ordering avoids that)",
+        algorithm_, change, delta, quantum * 16777216.0),
+        std::abs(change), limit);
+  }
+
   std::vector<long long> delta_;
   Real quantum_;
   std::string algorithm_;

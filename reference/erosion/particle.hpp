@@ -26,9 +26,9 @@
 //          deposited_at_droplet(); the transported colour in DropletRun::colour (empty without `colour`).
 // Units:   heights in the units of `constants` (seed 000's normalised [0,1] heights by default);
 //          positions in texels.
-// Throws:  std::invalid_argument when `colour`'s size differs from the heights'; std::runtime_error in
-//          batch ordering when a cell's delta, a colour term or sum, or a side map's count of quanta
-//          exceeds the GPU's 32-bit counter.
+// Throws:  std::invalid_argument when `colour`'s size differs from the heights'; in batch ordering,
+//          RunawayRun (core/errors.hpp) when a cell's delta in one pass exceeds the GPU's 32-bit counter,
+//          std::runtime_error when a colour term or sum, or a side map's count of quanta does.
 // Twin:    gpu/erosion/particle.hpp (ParticleErosion) with gpu/shaders/erosion/particle_droplets.comp,
 //          particle_apply.comp, particle_block.glsl and hydra_motion.glsl.
 // Decisions: in reference/erosion/particle.cpp (pass order, batch quanta, colour transport).

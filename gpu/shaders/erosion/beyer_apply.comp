@@ -4,7 +4,7 @@
 // h = h + float(delta) · quantum (float(delta) rounded to nearest, the product exact as quantum is a
 // power of two, the sum rounded once), and clears its delta for the next pass. Masked cells and
 // their delta (never written) are left alone. Heights in the caller's units.
-// Mutants (compare/mutants/beyer.cpp): none in this file.
+// Mutants (compare/mutants/beyer.cpp): APPLY_SCALED (both twins: reference/erosion/droplets.hpp).
 // Inputs:  BeyerBlock (uniform binding 0), valid (2), delta (3): beyer_block.glsl.
 // Outputs: heights (1) of the valid cells; delta (3) cleared.
 // Twin:    reference/erosion/beyer.cpp (PassTerrain::apply).
@@ -19,6 +19,9 @@ void main() {
   if (!open_cell(cell)) return;
   uint index = cell_index(cell, grid_size);
   precise float change = float(delta[index]) * quantum;
+#ifdef GT_MUTANT_EROSION_BEYER_APPLY_SCALED
+  change = change * 1.0009765625;  // 1 + 2^-10
+#endif
   precise float height = heights[index] + change;
   heights[index] = height;
   delta[index] = 0;
