@@ -302,11 +302,20 @@ void print_mutation(const MutationReport& mutation) {
                baseline.clean ? "clean" : "NOT CLEAN: " + baseline.problems.front());
   }
   for (const auto& mutant : mutation.mutants) {
-    fmt::print("{:12} {} [{}]{}\n", mutant.status, mutant.name, mutant.kind,
+    fmt::print("{:12} {} [{}{}]{}\n", mutant.status, mutant.name, mutant.kind, mutant.must_survive ? ", must survive" : "",
                mutant.killed_by.empty() ? (mutant.error.empty() ? "" : ": " + mutant.error) : ": " + mutant.killed_by.front());
   }
-  fmt::print("groundtruth: mutation score {}/{} ({:.0f} %){}\n", mutation.killed(), mutation.mutants.size(),
-             100.0 * mutation.score(), mutation.passed() ? "" : "; not every mutant was killed by its kind of check, or a baseline failed");
+  fmt::print("groundtruth: mutation score {}/{} ({:.0f} %){}\n", mutation.killed(), mutation.bugs(),
+             100.0 * mutation.score(),
+             mutation.passed() ? "" : "; not every bug was killed by its kind of check, a must-survive mutant was killed, or a baseline failed");
+  if (const auto& specificity = mutation.specificity) {
+    if (specificity->problem.empty()) {
+      fmt::print("groundtruth: specificity {} in {}\n", counted(static_cast<std::size_t>(specificity->false_alarms), "false alarm"),
+                 counted(static_cast<std::size_t>(specificity->runs), "honest run"));
+    } else {
+      fmt::print("groundtruth: specificity not measured: {}\n", specificity->problem);
+    }
+  }
 }
 
 // The baseline's report.json, read and checked before anything runs: bad input exits 2 at once.
@@ -707,6 +716,9 @@ int run_driver(const DriverOptions& options) {
     if (options.mutation) {
       report.mutation = run_mutation(*options.mutation, folder / "mutants", options.dataset_dir);
       report.mutation->folder = "mutants/";
+      if (options.mutation->specificity_sets > 0) {
+        report.mutation->specificity = run_specificity_worker(*options.mutation, folder / "mutants");
+      }
       write_file_atomically(folder / "mutants" / "mutants.json",
                                           mutation_to_json(*report.mutation).dump(2) + '\n');
     }

@@ -24,6 +24,7 @@ using Failures = std::map<std::string, nlohmann::json>;
 struct WorkerReport {
   bool readable = false;
   Failures failures;
+  std::set<std::string> graded_checks;   // names of the checks with a bound
   std::vector<std::string> case_errors;  // "case: error"
 };
 
@@ -46,6 +47,7 @@ WorkerReport read_worker_report(const std::filesystem::path& folder) {
     for (const auto& check : result.value("checks", nlohmann::json::array())) {
       const std::string status = check.value("status", "");
       if (status == "fail" || status == "error") report.failures[name + ": " + check.value("name", "")] = check;
+      if (check.contains("threshold") && status != "skip") report.graded_checks.insert(check.value("name", ""));
     }
   }
   return report;
@@ -99,6 +101,7 @@ MutationBaseline baseline_outcome(const std::string& family, const std::vector<s
   baseline.seconds = worker.seconds;
   const WorkerReport report = read_worker_report(folder / baseline.run_folder);
   failures = report.failures;
+  baseline.graded_checks.assign(report.graded_checks.begin(), report.graded_checks.end());
   if (worker.timed_out) baseline.problems.push_back(fmt::format("timed out after {:.0f} s", options.timeout_seconds));
   if (!report.readable) baseline.problems.push_back(fmt::format("no readable report (exit status {})", worker.status));
   for (const auto& error : report.case_errors) baseline.problems.push_back(error);
@@ -120,15 +123,24 @@ MutantOutcome mutant_outcome(const Mutant& mutant, const std::vector<std::string
                              const MutationOptions& options, const std::filesystem::path& folder,
                              const WorkerResult& worker) {
   MutantOutcome outcome{.name = mutant.name, .family = mutant_family(mutant), .kind = mutant_kind_name(mutant.kind),
-                        .description = mutant.description, .cases = cases};
+                        .description = mutant.description, .must_survive = mutant.must_survive, .cases = cases};
   outcome.run_folder = "runs/" + mutant.name;
   outcome.seconds = worker.seconds;
   const WorkerReport report = read_worker_report(folder / outcome.run_folder);
   for (const auto& [key, check] : report.failures) {
     if (baseline.contains(key)) continue;
     const auto check_name = key.substr(key.find(": ") + 2);
-    (check_kind_kills(mutant.kind, check_name) ? outcome.killed_by : outcome.other_failures)
-        .push_back(describe_check(key, check));
+    const bool kills = check_kind_kills(mutant.kind, check_name);
+    (kills ? outcome.killed_by : outcome.other_failures).push_back(describe_check(key, check));
+    const auto& named = outcome.killing_checks;
+    if (kills && !mutant.must_survive && std::find(named.begin(), named.end(), check_name) == named.end()) {
+      outcome.killing_checks.push_back(check_name);
+    }
+  }
+  // A must-survive mutant is killed by any new failure: an honest deviation failed is a false alarm.
+  if (outcome.must_survive) {
+    outcome.killed_by.insert(outcome.killed_by.end(), outcome.other_failures.begin(), outcome.other_failures.end());
+    outcome.other_failures.clear();
   }
   if (!outcome.killed_by.empty()) {
     outcome.status = "killed";
@@ -219,9 +231,34 @@ MutationReport run_mutation(const MutationOptions& options, const std::filesyste
   return report;
 }
 
+SpecificitySummary run_specificity_worker(const MutationOptions& options, const std::filesystem::path& folder) {
+  // A whole specificity run (20 sets: about 20 minutes on 2 cores) may take hours on a slow machine;
+  // its own cases have their limits.
+  constexpr double timeout_seconds = 6.0 * 3600.0;
+  const auto out = folder / "specificity";
+  print_line(fmt::format("specificity: {} parameter sets per algorithm", options.specificity_sets));
+  std::vector<std::string> args = {"specificity", "--sets", std::to_string(options.specificity_sets), "--out",
+                                   out.string(), "--gl", options.gl, "-j", std::to_string(options.parallel), "--quiet"};
+  const WorkerResult worker = run_worker(args, folder / "specificity.log", timeout_seconds);
+  SpecificitySummary summary;
+  summary.page = "specificity/specificity.html";
+  std::ifstream stream(out / "specificity.json");
+  try {
+    if (!stream) throw std::runtime_error("no specificity.json");
+    const auto document = parse_json_bounded(stream, (out / "specificity.json").string());
+    summary.runs = document.at("runs").get<int>();
+    summary.false_alarms = document.at("false_alarms").get<int>();
+  } catch (const std::exception& error) {
+    summary.problem = worker.timed_out ? fmt::format("timed out after {:.0f} s", timeout_seconds)
+                                       : fmt::format("{} (exit status {}; see specificity.log)", error.what(), worker.status);
+  }
+  return summary;
+}
+
 nlohmann::json mutation_to_json(const MutationReport& report) {
   nlohmann::json out = {{"folder", report.folder},
                         {"killed", report.killed()},
+                        {"bugs", report.bugs()},
                         {"registered", report.mutants.size()},
                         {"score", report.score()},
                         {"passed", report.passed()},
@@ -229,15 +266,25 @@ nlohmann::json mutation_to_json(const MutationReport& report) {
                         {"mutants", nlohmann::json::array()}};
   for (const auto& baseline : report.baselines) {
     out["baselines"].push_back({{"family", baseline.family}, {"cases", baseline.cases}, {"clean", baseline.clean},
-                                {"problems", baseline.problems}, {"seconds", baseline.seconds},
+                                {"problems", baseline.problems}, {"graded_checks", baseline.graded_checks},
+                                {"seconds", baseline.seconds},
                                 {"run_folder", baseline.run_folder}});
   }
   for (const auto& mutant : report.mutants) {
     out["mutants"].push_back({{"name", mutant.name}, {"family", mutant.family}, {"kind", mutant.kind},
-                              {"description", mutant.description}, {"cases", mutant.cases},
+                              {"description", mutant.description}, {"must_survive", mutant.must_survive},
+                              {"cases", mutant.cases},
                               {"status", mutant.status}, {"killed_by", mutant.killed_by},
+                              {"killing_checks", mutant.killing_checks},
                               {"other_failures", mutant.other_failures}, {"error", mutant.error},
                               {"seconds", mutant.seconds}, {"run_folder", mutant.run_folder}});
+  }
+  out["kill_matrix"] = nlohmann::json::object();
+  for (const auto& row : report.kill_matrix()) out["kill_matrix"][row.check] = row.mutants;
+  if (report.specificity) {
+    const auto& specificity = *report.specificity;
+    out["specificity"] = {{"runs", specificity.runs}, {"false_alarms", specificity.false_alarms},
+                          {"page", specificity.page}, {"problem", specificity.problem}};
   }
   return out;
 }

@@ -10,6 +10,8 @@
 //      A run that errors or times out cannot tell: the mutant's status says so, it is not killed.
 // The mutation score is killed / selected. Every run's report stays under the folder given; the
 // HTML links each mutant to its run's report (runs/<name>/index.html below the mutation folder).
+// The kill matrix (MutationReport::kill_matrix) lists every check graded in a baseline (one with a
+// bound) with the mutants it killed: a graded check that kills none is a check not yet proved.
 #pragma once
 
 #include <filesystem>
@@ -29,6 +31,7 @@ struct MutationOptions {
   bool require_gpu = false;            // passed to every worker run
   double timeout_seconds = 600.0;      // per worker run
   int parallel = 1;                    // worker runs at once (-j)
+  int specificity_sets = 0;            // > 0: also `groundtruth specificity --sets N` (report --full)
 };
 
 // The selected mutants; throws InputError when a pattern matches none.
@@ -38,6 +41,10 @@ std::vector<Mutant> select_mutants(const std::vector<std::string>& patterns);
 // Throws InputError when a mutant names a case pattern that matches no case.
 MutationReport run_mutation(const MutationOptions& options, const std::filesystem::path& folder,
                             const std::filesystem::path& dataset_dir);
+
+// `groundtruth specificity --sets N` in a worker into `folder` (its own report there), and its figures
+// read back from specificity.json; a run that did not finish gives a summary naming why.
+SpecificitySummary run_specificity_worker(const MutationOptions& options, const std::filesystem::path& folder);
 
 nlohmann::json mutation_to_json(const MutationReport& report);
 

@@ -3,6 +3,7 @@
 #include "compare/result.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -71,19 +72,35 @@ bool run_failed(const Report& report) {
          std::any_of(report.cases.begin(), report.cases.end(), failed_unexpectedly);
 }
 
-int MutationReport::killed() const {
-  int count = 0;
-  for (const auto& mutant : mutants) count += mutant.status == "killed" ? 1 : 0;
-  return count;
+int MutationReport::bugs() const {
+  return static_cast<int>(std::count_if(mutants.begin(), mutants.end(), [](const auto& m) { return !m.must_survive; }));
 }
 
-double MutationReport::score() const { return mutants.empty() ? 1.0 : double(killed()) / double(mutants.size()); }
+int MutationReport::killed() const {
+  return static_cast<int>(
+      std::count_if(mutants.begin(), mutants.end(), [](const auto& m) { return !m.must_survive && m.status == "killed"; }));
+}
+
+std::vector<KillRow> MutationReport::kill_matrix() const {
+  std::map<std::string, std::vector<std::string>> killers;
+  for (const auto& baseline : baselines) {
+    for (const auto& check : baseline.graded_checks) killers[check];
+  }
+  for (const auto& mutant : mutants) {
+    for (const auto& check : mutant.killing_checks) killers[check].push_back(mutant.name);
+  }
+  std::vector<KillRow> rows;
+  for (auto& [check, names] : killers) rows.push_back({check, std::move(names)});
+  return rows;
+}
+
+double MutationReport::score() const { return bugs() == 0 ? 1.0 : double(killed()) / double(bugs()); }
 
 bool MutationReport::passed() const {
   for (const auto& baseline : baselines) {
     if (!baseline.clean) return false;
   }
-  return killed() == static_cast<int>(mutants.size());
+  return std::all_of(mutants.begin(), mutants.end(), [](const auto& mutant) { return mutant.as_expected(); });
 }
 
 std::vector<std::string> failing_checks(const CaseResult& result) {

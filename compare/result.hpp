@@ -143,13 +143,17 @@ struct MutantOutcome {
   std::string family;       // erosion, noise, cave, render
   std::string kind;         // "one-twin" or "both-twins"
   std::string description;
+  bool must_survive = false;          // a calibration mutant below its error model's bound
   std::vector<std::string> cases;     // the case names it ran
   std::string status;                 // killed, survived, error (the run could not tell), timeout
   std::vector<std::string> killed_by; // "case: check = value (bound)", checks of the kind meant for it
+  std::vector<std::string> killing_checks;  // the names of those checks, each once (the kill matrix)
   std::vector<std::string> other_failures;  // failing checks of the other kind: they do not count
   std::string error;                  // why the run could not tell
   double seconds = 0.0;
   std::string run_folder;             // its report, relative to the mutation report's folder
+  // Killed for a bug, survived for a must-survive mutant.
+  bool as_expected() const { return status == (must_survive ? "survived" : "killed"); }
 };
 
 struct MutationBaseline {
@@ -157,17 +161,39 @@ struct MutationBaseline {
   std::vector<std::string> cases;
   bool clean = false;                 // every case ran and nothing failed unmutated
   std::vector<std::string> problems;  // what failed unmutated
+  std::vector<std::string> graded_checks;  // the names of its checks that carry a bound, each once
   double seconds = 0.0;
   std::string run_folder;
+};
+
+// The harness's false-alarm rate beside the mutation score (`groundtruth specificity`, run by
+// `report --full`): honest runs with drawn parameters, and those that failed or erred.
+struct SpecificitySummary {
+  int runs = 0;
+  int false_alarms = 0;
+  std::string page;                   // its specificity.html, relative to the report's root
+  std::string problem;                // why there is no figure (the run did not finish), else empty
+};
+
+// One row of the kill matrix: a graded check and the mutants of its kind it killed.
+struct KillRow {
+  std::string check;
+  std::vector<std::string> mutants;
 };
 
 struct MutationReport {
   std::string folder;                 // where the runs are, relative to the report's root ("" or "mutants/")
   std::vector<MutationBaseline> baselines;
   std::vector<MutantOutcome> mutants;
-  int killed() const;
-  double score() const;               // killed / registered, 0..1 (1 when none ran)
-  bool passed() const;                // every mutant killed and every baseline clean
+  std::optional<SpecificitySummary> specificity;
+  int bugs() const;                   // the mutants meant to be killed (all but the must-survive ones)
+  int killed() const;                 // of those, killed
+  double score() const;               // killed / bugs, 0..1 (1 when none ran)
+  // Every bug killed, every must-survive mutant survived, and every baseline clean.
+  bool passed() const;
+  // Every check graded in a baseline or killing a mutant, by name, with the mutants it killed;
+  // sorted by name.
+  std::vector<KillRow> kill_matrix() const;
 };
 
 // A shard of a run (--shard K/N, compare/shards.hpp): every shard records the whole selection, so

@@ -152,17 +152,32 @@ struct AlgorithmTally {
   int runs = 0;
   int false_alarms = 0;
   nlohmann::json alarms = nlohmann::json::array();
+  nlohmann::json undecided = nlohmann::json::array();  // inconclusive runs: not alarms, shown with why
 };
 
 bool is_false_alarm(const CaseResult& result) { return result.status == Outcome::fail || result.status == Outcome::error; }
 
+// A run worth a line: its parameters and the checks that ended with its outcome (fail, or inconclusive
+// with the check's reason).
 nlohmann::json alarm_json(const AdHocCase& variant, const CaseResult& result) {
   nlohmann::json failing = nlohmann::json::array();
   for (const Check& check : result.checks) {
     if (check.status == Outcome::fail) failing.push_back(fmt::format("{} = {:.3g}", check.name, check.value));
+    if (check.status == Outcome::inconclusive && result.status == Outcome::inconclusive) {
+      failing.push_back(fmt::format("{}: {}", check.name, check.detail));
+    }
   }
   return {{"case", result.name},   {"outcome", outcome_name(result.status)}, {"parameters", variant.assignments},
           {"input", variant.input}, {"failing_checks", failing},             {"error", result.error}};
+}
+
+// One run on the page: its case (linked), outcome, checks or error, and parameters.
+std::string run_line(const nlohmann::json& run) {
+  const auto name = run.at("case").get<std::string>();
+  return fmt::format("<p><a href=\"index.html#{}\">{}</a> ({}): {} {}<br>parameters: {}</p>\n", case_anchor(name),
+                     escape_markup(name), escape_markup(run.at("outcome").get<std::string>()),
+                     escape_markup(run.at("failing_checks").dump()), escape_markup(run.at("error").get<std::string>()),
+                     escape_markup(run.at("parameters").dump()));
 }
 
 void write_specificity_page(const std::map<std::string, AlgorithmTally>& tallies, const std::filesystem::path& folder) {
@@ -183,11 +198,14 @@ void write_specificity_page(const std::map<std::string, AlgorithmTally>& tallies
   }
   html << "</table>\n";
   for (const auto& [algorithm, tally] : tallies) {
-    for (const auto& alarm : tally.alarms) {
-      html << "<p><a href=\"index.html#" << case_anchor(alarm.at("case").get<std::string>()) << "\">"
-           << escape_markup(alarm.at("case").get<std::string>()) << "</a> (" << escape_markup(alarm.at("outcome").get<std::string>())
-           << "): " << escape_markup(alarm.at("failing_checks").dump()) << " " << escape_markup(alarm.at("error").get<std::string>())
-           << "<br>parameters: " << escape_markup(alarm.at("parameters").dump()) << "</p>\n";
+    for (const auto& alarm : tally.alarms) html << run_line(alarm);
+  }
+  bool any_undecided = false;
+  for (const auto& [algorithm, tally] : tallies) {
+    for (const auto& run : tally.undecided) {
+      if (!any_undecided) html << "<h2>Runs not decided (inconclusive: not counted as alarms)</h2>\n";
+      any_undecided = true;
+      html << run_line(run);
     }
   }
   html << "</body></html>\n";
@@ -208,6 +226,8 @@ void write_specificity_summary(const Sweep& sweep, Report& report, const std::fi
     if (is_false_alarm(*found)) {
       ++tally.false_alarms;
       tally.alarms.push_back(alarm_json(variant, *found));
+    } else if (found->status == Outcome::inconclusive) {
+      tally.undecided.push_back(alarm_json(variant, *found));
     }
   }
   nlohmann::json summary = {{"algorithms", nlohmann::json::array()}};
@@ -220,7 +240,8 @@ void write_specificity_summary(const Sweep& sweep, Report& report, const std::fi
                                      {"outcomes", tally.outcomes},
                                      {"false_alarms", tally.false_alarms},
                                      {"specificity", 1.0 - static_cast<double>(tally.false_alarms) / std::max(1, tally.runs)},
-                                     {"alarms", tally.alarms}});
+                                     {"alarms", tally.alarms},
+                                     {"undecided", tally.undecided}});
   }
   summary["runs"] = runs;
   summary["false_alarms"] = false_alarms;

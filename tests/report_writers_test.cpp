@@ -308,6 +308,45 @@ TEST_F(ReportFiles, JsonAndHtmlShowTheMutationScore) {
   EXPECT_NE(html.find("mass.water_added.cpu = 0.049"), std::string::npos);
 }
 
+// The kill matrix lists every graded check of the baselines with the mutants of its kind it killed
+// (a graded check that killed none first, as not yet proved), and the specificity stands beside the
+// mutation score (issue 38 item 5 and 6).
+TEST_F(ReportFiles, TheMutantsSectionShowsTheKillMatrixAndTheSpecificity) {
+  Report report = sample_report();
+  MutationReport mutation;
+  mutation.baselines = {{.family = "erosion",
+                         .cases = {"erosion.pipe.mutant_probe.flux"},
+                         .clean = true,
+                         .graded_checks = {"mass.water_added.cpu", "parity.shadow.water.gpu_vs_float", "spec.cells.cpu"}}};
+  mutation.mutants = {{.name = "erosion.pipe.half_rain", .family = "erosion", .kind = "both-twins", .status = "killed",
+                       .killed_by = {"erosion.pipe.mutant_probe.flux: mass.water_added.cpu = 0.049 (bound 1e-14)"},
+                       .killing_checks = {"mass.water_added.cpu"}},
+                      {.name = "erosion.pipe.gpu_x", .family = "erosion", .kind = "one-twin", .status = "killed",
+                       .killed_by = {"erosion.pipe.mutant_probe.flux: parity.shadow.water.gpu_vs_float = 3 (bound 1e-6)"},
+                       .killing_checks = {"parity.shadow.water.gpu_vs_float"}}};
+  mutation.specificity = SpecificitySummary{.runs = 240, .false_alarms = 2, .page = "specificity/specificity.html"};
+  mutation.folder = "mutants/";
+  const auto rows = mutation.kill_matrix();
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].check, "mass.water_added.cpu");
+  EXPECT_EQ(rows[0].mutants, std::vector<std::string>{"erosion.pipe.half_rain"});
+  EXPECT_TRUE(rows[2].mutants.empty()) << "spec.cells.cpu killed nothing";
+  report.mutation = mutation;
+  write_report_files(report, folder);
+  const json written = json::parse(read_text(folder / "report.json"));
+  EXPECT_EQ(written["mutation"]["kill_matrix"]["parity.shadow.water.gpu_vs_float"][0], "erosion.pipe.gpu_x");
+  EXPECT_TRUE(written["mutation"]["kill_matrix"]["spec.cells.cpu"].empty());
+  EXPECT_EQ(written["mutation"]["specificity"]["false_alarms"], 2);
+  const std::string html = read_text(folder / "index.html");
+  EXPECT_NE(html.find("2 of 3 graded checks killed a mutant of their kind; 1 killed none (first)"), std::string::npos);
+  EXPECT_LT(html.find("<td>spec.cells.cpu</td>"), html.find("<td>mass.water_added.cpu</td>")) << "unproved first";
+  EXPECT_NE(html.find("238 of 240 honest runs without a false alarm (99.2 %)"), std::string::npos);
+  EXPECT_NE(html.find("href=\"mutants/specificity/specificity.html\""), std::string::npos);
+  const std::string markdown = read_text(folder / "report.md");
+  EXPECT_NE(markdown.find("Specificity: 238 of 240 honest runs"), std::string::npos);
+  EXPECT_NE(markdown.find("Graded checks that killed no mutant: spec.cells.cpu."), std::string::npos);
+}
+
 TEST_F(ReportFiles, HtmlNamesEveryCaseAndEscapes) {
   const Report report = sample_report();
   write_report_html(report, folder / "index.html");

@@ -11,6 +11,8 @@
 //               something outside them (ledgers against what was asked, spec vectors, invariants:
 //               `mass.*`, `spec.*`, `mesh.*`, ...) can fail. Parity and determinism checks do not
 //               count for this kind.
+// Calibrated pairs: for an error model, one mutant at a few times its bound (killed) and one below
+// it (must_survive: it survives, or the check raises false alarms).
 // A mutant names the cases that must kill it: small ones, so that the whole registry runs in the
 // test suite (tests/mutants_test.cpp) and in `groundtruth report`.
 #pragma once
@@ -29,6 +31,10 @@ struct Mutant {
   MutantKind kind = MutantKind::one_twin;
   std::string description;          // the bug, one line
   std::vector<std::string> cases;   // case-name patterns run under the mutant; each must match a case
+  // A calibration mutant: a deviation an honest twin may show, below its error model's bound. It
+  // must survive (no check may fail on it that passed unmutated); its partner above the bound must
+  // be killed. Together they show a bound is neither loose nor tight beyond its model.
+  bool must_survive = false;
 };
 
 // Per family (one file each).

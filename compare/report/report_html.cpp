@@ -383,6 +383,43 @@ void append_expectation_problems(std::string& out, const Report& report) {
   out += "</ul>\n</section>\n";
 }
 
+// Beside the mutation score (sensitivity): the honest runs not failed (specificity), when measured.
+void append_specificity(std::string& out, const MutationReport& mutation) {
+  if (!mutation.specificity) return;
+  const SpecificitySummary& specificity = *mutation.specificity;
+  if (!specificity.problem.empty()) {
+    out += fmt::format("<p>Specificity <span class=\"badge error\">not measured</span>: {}.</p>\n", h(specificity.problem));
+    return;
+  }
+  const double share = 1.0 - static_cast<double>(specificity.false_alarms) / std::max(1, specificity.runs);
+  out += fmt::format(
+      "<p>Specificity <span class=\"badge {}\">{} of {} honest runs without a false alarm ({:.1f} %)</span>: each "
+      "stepping algorithm with parameter sets drawn from plausible ranges, on two real DEMs; a fail or an error is "
+      "a false alarm (<a href=\"{}{}\">which runs, with their parameters</a>).</p>\n",
+      specificity.false_alarms == 0 ? "pass" : "fail", specificity.runs - specificity.false_alarms, specificity.runs,
+      100.0 * share, h(mutation.folder), h(specificity.page));
+}
+
+// Which graded check killed which mutant: a graded check (one with a bound in a baseline run) that
+// killed none is not yet proved able to fail; those come first.
+void append_kill_matrix(std::string& out, const MutationReport& mutation) {
+  auto rows = mutation.kill_matrix();
+  if (rows.empty()) return;
+  std::stable_partition(rows.begin(), rows.end(), [](const KillRow& row) { return row.mutants.empty(); });
+  const auto unproved = std::count_if(rows.begin(), rows.end(), [](const KillRow& row) { return row.mutants.empty(); });
+  out += fmt::format(
+      "<details{}><summary>Kill matrix: {} of {} graded checks killed a mutant of their kind{}</summary>\n<table>\n"
+      "<tr><th>check</th><th>kills</th><th>mutants killed</th></tr>\n",
+      unproved > 0 ? " open" : "", rows.size() - static_cast<std::size_t>(unproved), rows.size(),
+      unproved > 0 ? fmt::format("; {} killed none (first)", unproved) : "");
+  for (const auto& row : rows) {
+    out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td>{}</td></tr>\n", h(row.check),
+                       row.mutants.empty() ? "<span class=\"badge warn\">none</span>" : std::to_string(row.mutants.size()),
+                       h(fmt::format("{}", fmt::join(row.mutants, ", "))));
+  }
+  out += "</table>\n</details>\n";
+}
+
 // The mutation score: each registered mutant, its kind, and the checks that killed it.
 void append_mutation(std::string& out, const Report& report) {
   if (!report.mutation) return;
@@ -392,7 +429,8 @@ void append_mutation(std::string& out, const Report& report) {
       "({:.0f} %)</span>. Each mutant is a deliberate bug run on its cases in a worker process; a one-twin mutant "
       "must be killed by a parity or image check, a both-twins mutant by any other kind (ledgers, spec vectors, "
       "invariants).</p>\n",
-      mutation.passed() ? "pass" : "fail", mutation.killed(), mutation.mutants.size(), 100.0 * mutation.score());
+      mutation.passed() ? "pass" : "fail", mutation.killed(), mutation.bugs(), 100.0 * mutation.score());
+  append_specificity(out, mutation);
   out += "<table>\n<tr><th>family</th><th>cases unmutated</th><th>problems</th></tr>\n";
   for (const auto& baseline : mutation.baselines) {
     out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n", h(baseline.family),
@@ -410,10 +448,13 @@ void append_mutation(std::string& out, const Report& report) {
     }
     out += fmt::format("<tr><td><span class=\"badge {}\">{}</span></td><td><a href=\"{}{}/index.html\">{}</a></td>"
                        "<td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{:.1f}</td></tr>\n",
-                       mutant.status == "killed" ? "pass" : "fail", h(mutant.status), h(mutation.folder), h(mutant.run_folder),
-                       h(mutant.name), h(mutant.kind), h(mutant.description), killed_by, mutant.seconds);
+                       mutant.as_expected() ? "pass" : "fail", h(mutant.status), h(mutation.folder), h(mutant.run_folder),
+                       h(mutant.name), h(mutant.kind) + (mutant.must_survive ? "<br>must survive" : ""),
+                       h(mutant.description), killed_by, mutant.seconds);
   }
-  out += "</table>\n</section>\n";
+  out += "</table>\n";
+  append_kill_matrix(out, mutation);
+  out += "</section>\n";
 }
 
 }  // namespace

@@ -135,17 +135,32 @@ void append_mutation(std::string& out, const Report& report) {
   for (const auto& problem : report.expectation_problems) out += fmt::format("Expectation not met: {}\n\n", cell(problem));
   if (!report.mutation) return;
   const MutationReport& mutation = *report.mutation;
-  out += fmt::format("## Mutants\n\nMutation score: {} of {} killed ({:.0f} %).\n\n", mutation.killed(),
-                     mutation.mutants.size(), 100.0 * mutation.score());
+  out += fmt::format("## Mutants\n\nMutation score: {} of {} killed ({:.0f} %).\n\n", mutation.killed(), mutation.bugs(),
+                     100.0 * mutation.score());
+  if (const auto& specificity = mutation.specificity) {
+    out += specificity->problem.empty()
+               ? fmt::format("Specificity: {} of {} honest runs without a false alarm ({}{}).\n\n",
+                             specificity->runs - specificity->false_alarms, specificity->runs, mutation.folder,
+                             specificity->page)
+               : fmt::format("Specificity not measured: {}.\n\n", cell(specificity->problem));
+  }
   for (const auto& baseline : mutation.baselines) {
     if (!baseline.clean) out += fmt::format("Baseline of {} not clean: {}\n\n", baseline.family, cell(baseline.problems.front()));
   }
   out += "| status | mutant | kind | killed by |\n|---|---|---|---|\n";
   for (const auto& mutant : mutation.mutants) {
-    out += fmt::format("| {} | {} | {} | {} |\n", mutant.status, mutant.name, mutant.kind,
+    out += fmt::format("| {} | {} | {}{} | {} |\n", mutant.status, mutant.name, mutant.kind,
+                       mutant.must_survive ? " (must survive)" : "",
                        cell(mutant.killed_by.empty() ? mutant.error : mutant.killed_by.front()));
   }
   out += "\n";
+  std::vector<std::string> unproved;
+  for (const auto& row : mutation.kill_matrix()) {
+    if (row.mutants.empty()) unproved.push_back(row.check);
+  }
+  if (!unproved.empty()) {
+    out += fmt::format("Graded checks that killed no mutant: {}.\n\n", cell(fmt::format("{}", fmt::join(unproved, ", "))));
+  }
 }
 
 }  // namespace
