@@ -1,7 +1,8 @@
 // The driver's view of the two thermal-erosion models: parameters to constants, the three
 // versions (ref<double>, ref<float>, GPU) as stepped twins of one field, terrain (compare/
 // stepped_case.hpp runs them), the error model's count of rounded additions, and each model's
-// first iteration written on the host as a spec of the transfer (mass.moved_first_iteration.cpu).
+// first iteration written on the host as a spec of the transfer (mass.moved_first_iteration.cpu for
+// the material moved, spec.first_iteration_cells.cpu cell by cell).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -177,20 +178,30 @@ SteppedTwin thermal_twin(const std::string& algorithm, const Heightmap& input, i
 // The material the double reference moves in its first iteration from the input, against the
 // model's spec of that iteration written on the host (both ½Σ|h1 - h0|). Catches a transfer
 // misapplied in both twins (talus, rate, a side of the exchange), which the twins' agreement cannot.
+// Then the same first iteration cell by cell: a transfer sent the wrong way moves as much material
+// (½Σ|Δh| alike on a symmetric input) but not to the same cells.
 CaseRun moved_ledger(const Heightmap& input, int iterations, double additions_per_iteration,
                      std::function<Grid<double>(const Grid<double>&)> reference_first,
                      std::function<Grid<double>(const Grid<double>&)> spec_first) {
   return [=](const nlohmann::json&, const RunOptions&, CaseResult& result) {
     if (iterations < 1) return;
-    const double moved_spec = moved_material(input, spec_first(input));
-    const double moved_twin = moved_material(input, reference_first(input));
+    const Grid<double> spec = spec_first(input);
+    const Grid<double> twin = reference_first(input);
+    const FieldTotals totals = field_totals(input);
+    const Bounds cell_bounds = first_iteration_cell_bounds(additions_per_iteration, totals);
+    result.checks.push_back(bounded_check("spec.first_iteration_cells.cpu", field_difference(spec, twin).max_abs,
+                                          cell_bounds.strict, std::nullopt,
+                                          "the largest |ref<double> − spec| over the cells after one iteration; " +
+                                              cell_bounds.model));
+    const double moved_spec = moved_material(input, spec);
+    const double moved_twin = moved_material(input, twin);
     const std::string measured = fmt::format("moved {:.9g} where the spec (host, double) moves {:.9g}", moved_twin, moved_spec);
     if (moved_spec == 0.0) {
       result.checks.push_back(bounded_check("mass.moved_first_iteration.cpu", moved_twin, 0.0, std::nullopt,
                                             measured + "; the spec moves nothing, so the twin must not"));
       return;
     }
-    const auto bounds = moved_ledger_bounds(additions_per_iteration, field_totals(input), moved_spec);
+    const auto bounds = moved_ledger_bounds(additions_per_iteration, totals, moved_spec);
     result.checks.push_back(bounded_check("mass.moved_first_iteration.cpu", std::abs(moved_twin - moved_spec) / moved_spec,
                                           bounds.strict, std::nullopt,
                                           fmt::format("relative to the spec's: {}; {}", measured, bounds.model)));

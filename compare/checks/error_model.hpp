@@ -65,6 +65,17 @@ inline Bounds parity_bounds_same_arithmetic(double additions_per_cell, double ma
 // most |h| + A·range. So either height is within A·u·(|h| + (A + 8)·range) of the exact one, and
 // |moved_twin - moved_spec| <= ½Σ|h1_twin - h1_spec| <= A·u·(Σ|h| + cells·(A + 8)·range), plus 2u
 // for the compensated sums; relative to the spec's moved material (no loose bound: worst case).
+// One cell of the spec's first iteration against the twin's, both in double: each forms its cell's
+// A transfers from differences, shares and a division, each within (A + 8)·u·range, and adds them
+// into the height, each addition within u·(max|h| + A·range); the two sides err independently.
+inline Bounds first_iteration_cell_bounds(double additions_per_iteration, const FieldTotals& before) {
+  const double range = before.high - before.low;
+  const double largest = std::max(std::abs(before.low), std::abs(before.high));
+  const double bound = 2.0 * additions_per_iteration * unit_roundoff_double *
+                       (largest + additions_per_iteration * range + (additions_per_iteration + 8.0) * range);
+  return {bound, bound, "double roundings of one iteration in the twin and in the spec, per cell: 2·A·u·(max|h| + (2A + 8)·range)"};
+}
+
 inline Bounds moved_ledger_bounds(double additions_per_iteration, const FieldTotals& before, double moved_spec) {
   const double range = before.high - before.low;
   const double worst = additions_per_iteration * unit_roundoff_double *

@@ -10,8 +10,10 @@
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
 // was asked, computed on the host: spec.cells/spec.total (the worked examples), mass.relative_drift
-// (the methods conserve material) and mass.moved_first_iteration.cpu (the material the first
-// iteration moves, against a host spec of the transfer from the thesis' equations).
+// (the methods conserve material), mass.moved_first_iteration.cpu (the material the first
+// iteration moves, against a host spec of the transfer from the thesis' equations) and
+// spec.first_iteration_cells.cpu (that first iteration cell by cell: mirrored_slope runs on the
+// probe cone and on the volcano, which is not symmetric).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -37,11 +39,27 @@ std::vector<Mutant> thermal_mutants() {
        "thermal_jako_gather.comp gathers what a neighbour sends down its pipe k instead of the opposite pipe "
        "(towards this cell)",
        jako_probe},
+      // The calibrated pair of the shadow step's error model (compare/checks/error_model.hpp,
+      // parity_bounds_same_arithmetic): on the probe cone an inflow 2^-13 too large lands at 4.7 times
+      // the one-step bound (0.000128 m against 2.75e-05 m; 2^-10 gave 37 times) and must be killed;
+      // one ulp off per cell, the rounding an honest twin may differ by, lands at 0.07 times it and
+      // must survive.
+      {"erosion.thermal.inflow_off_above_bound", MutantKind::one_twin,
+       "thermal_transfer.comp takes in each inflow times 1 + 2^-13", hydra_probe},
+      {.name = "erosion.thermal.one_ulp_off_below_bound",
+       .kind = MutantKind::one_twin,
+       .description = "thermal_transfer.comp leaves each height one ulp off (up on even cells, down on odd ones)",
+       .cases = hydra_probe,
+       .must_survive = true},
       {"erosion.thermal.talus_degree_off", MutantKind::both_twins,
        "both twins apply the talus slope of an angle one degree steeper than asked (reference and GPU block)", hydra},
       {"erosion.thermal.unconserved_transfer", MutantKind::both_twins,
        "Algorithm 11 in both twins adds the transfer to the receiving cell but never subtracts it from the giver",
        hydra},
+      {"erosion.thermal.mirrored_slope", MutantKind::both_twins,
+       "both twins read each pipe's slope from the neighbour across the opposite pipe (where that one is open), so "
+       "material goes the mirrored way",
+       {"erosion.thermal.mutant_probe.cone", "erosion.thermal.cardinal.volcano"}},
       {"erosion.thermal.doubled_rate", MutantKind::both_twins,
        "both twins use f_s = strength instead of strength/2 in the shares of Algorithm 10", hydra},
       {"erosion.thermal_jako.talus_degree_off", MutantKind::both_twins,

@@ -20,7 +20,7 @@
 //   - Normalised heights are clamped to [0, 1] after each iteration, as upstream does.
 // Units: heights and lengths in the same unit (metres by default); T dimensionless.
 // Mutants (compare/mutants/thermal.cpp; the GPU twin carries the same ones): talus_degree_off,
-// unconserved_transfer, doubled_rate.
+// unconserved_transfer, doubled_rate, mirrored_slope.
 //
 // Memory traffic per cell and iteration (ref<double>, the performance table's floor column):
 // 2 passes, 48 B read + 40 B written = 88 B (heights read by both passes, the requests
@@ -62,9 +62,12 @@ std::array<Real, 4> cell_requests(const Grid<Real>& heights, int x, int y, const
   const Real height = heights.at(x, y);
   std::array<Real, 4> demand{};
   std::array<Real, 4> supply{};
+  const bool mirrored = mutant_active("erosion.thermal.mirrored_slope");
   for (int k = 0; k < 4; ++k) {
     if (!pipe_open(heights, x, y, pipes[k])) continue;
-    const Real difference = heights.at(x + pipes[k].dx, y + pipes[k].dy) - height;
+    const Pipe& opposite = pipes[(k + 2) % 4];
+    const Pipe& read = mirrored && pipe_open(heights, x, y, opposite) ? opposite : pipes[k];
+    const Real difference = heights.at(x + read.dx, y + read.dy) - height;
     if (difference > talus_limit[k]) {
       demand[k] = difference - talus_limit[k];
     } else if (difference < -talus_limit[k]) {

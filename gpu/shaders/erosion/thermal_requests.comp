@@ -3,7 +3,8 @@
 // per pipe: negative = material this cell offers, positive = material it asks for. Decisions
 // (0/0, borders, masks) are listed in the reference.
 // All arithmetic is `precise` so that no multiply-add is fused: ref<float> repeats it exactly.
-// Mutants (compare/mutants/thermal.cpp): DEMAND_TOTAL_THREE_PIPES (GPU only), DOUBLED_RATE (both twins).
+// Mutants (compare/mutants/thermal.cpp): DEMAND_TOTAL_THREE_PIPES (GPU only), DOUBLED_RATE and
+// MIRRORED_SLOPE (both twins).
 // Inputs:  ThermalBlock (uniform binding 0), heights (1), valid (2) (thermal_block.glsl).
 // Outputs: requests (3): one vec4 per cell, a request per pipe.
 // Twin:    reference/erosion/thermal.cpp.
@@ -23,7 +24,12 @@ void main() {
   precise vec4 supply = vec4(0.0);
   for (int k = 0; k < 4; ++k) {
     if (!pipe_open(cell, k)) continue;
-    precise float difference = heights[cell_index(pipe_target(cell, k), grid_size)] - height;
+#ifdef GT_MUTANT_EROSION_THERMAL_MIRRORED_SLOPE
+    int read = pipe_open(cell, (k + 2) % 4) ? (k + 2) % 4 : k;
+#else
+    int read = k;
+#endif
+    precise float difference = heights[cell_index(pipe_target(cell, read), grid_size)] - height;
     if (difference > talus_limit[k]) {
       demand[k] = difference - talus_limit[k];
     } else if (difference < -talus_limit[k]) {
