@@ -16,17 +16,21 @@
 //                                    linear interpolant's crossing (the midpoint at the pad or with
 //                                    midpoint placement); the count of vertices that are not (must be 0)
 //   normals.angle_*.cpu              seed's central differences vs the analytic gradient (degrees)
-//   parity.topology.{float,gpu}_vs_double   triangles (by edge keys) in one mesh only that no side
-//                                    change explains (must be 0): a sample that is rock in one
-//                                    precision and air in the other changes the cases of the cubes
-//                                    it is a corner of and nothing else, so every differing
-//                                    triangle must lie in such a cube
-//   parity.vertex_model.{float,gpu}_vs_double   largest vertex distance / per-vertex bound (<= 1):
-//                                    t = (θ - v_a)/(v_b - v_a) moves by at most 3ε/(|v_b - v_a| - 2ε)
-//                                    (1 when |v_b - v_a| <= 2ε) for density error ε (measured:
-//                                    max |ref<float> - ref<double>| over the block), plus the
-//                                    float roundings of t (4u, GLSL's division included) and of
-//                                    the position (u·(|a| + 1)); √3 for the three axes
+//   parity.density.float_vs_double   max |density_float − density| against ε, the a-priori bound
+//                                    of the float density (density_precision: the noise module's
+//                                    float model, or one rounding of a volume's values), fixed
+//                                    before the float density is read; the two checks below use ε
+//   parity.topology.{float,gpu}_vs_double   triangles (by edge keys) in one mesh only that no
+//                                    possible side change explains (must be 0): a sample that is
+//                                    rock in one precision and air in the other changes the cases
+//                                    of the cubes it is a corner of and nothing else, and only a
+//                                    sample within ε of the threshold can, so every differing
+//                                    triangle must lie in a cube with such a sample
+//   parity.vertex_model.{float,gpu}_vs_double   largest vertex distance / per-vertex bound (<= 1)
+//                                    against ref<double>'s mesher run on the float density's samples
+//                                    and threshold (exact in double): no density error enters, only the float
+//                                    roundings of t (4u, GLSL's division included) and of the
+//                                    position (u·(|a| + 1)); √3 for the three axes
 //   parity.hausdorff.{float,gpu}_vs_double   symmetric Hausdorff distance (informative;
 //                                    compare/checks/keyed_hausdorff.hpp): the corner distances
 //                                    bound triangles both meshes have, CGAL samples the others
@@ -58,12 +62,14 @@
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/keyed_hausdorff.hpp"
 #include "compare/checks/mesh.hpp"
+#include "compare/checks/noise_error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/field_files.hpp"
 #include "compare/peers/vtk_isosurface.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
 #include "core/params/cave.hpp"
+#include "core/params/noise.hpp"
 #include "gpu/cave/marching_tetrahedra.hpp"
 #include "gpu/timing.hpp"
 #include "reference/cave/density.hpp"
@@ -116,15 +122,38 @@ double max_abs_difference(const Volume<float>& single, const Volume<double>& tru
   return largest;
 }
 
-// Global lattice points of the samples that are rock in one precision and air in the other.
-std::vector<std::array<std::int64_t, 3>> side_changes(const Volume<float>& single, const Volume<double>& truth,
+// The a-priori bound ε of |density_float − density| at every sample, fixed before the float density
+// is read: for the seed's noise, the noise module's float model (compare/checks/
+// noise_error_model.hpp: simplex3 with the block's kernel, coordinates up to the block's largest
+// |lattice coordinate| / scale, each formed as float(c)·float(1/scale), two roundings); for a volume
+// read from a file, one rounding to float of its largest |value|.
+double density_precision(const Block& block, const Volume<double>& density) {
+  if (block.volume) {
+    double largest = 0.0;
+    for (const double value : density.values) largest = std::max(largest, std::abs(value));
+    return unit_roundoff_float * largest;
+  }
+  NoiseParams noise = noise_defaults(NoiseBasis::simplex3, Fractal::none);
+  noise.kernel_radius_squared = block.params.kernel_radius_squared;
+  double extent = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double first = block.params.origin[axis], last = first + block.params.size[axis];
+    extent = std::max({extent, std::abs(first), std::abs(last)});
+  }
+  return noise_precision_bound(noise, extent / block.params.scale);
+}
+
+// Global lattice points of the samples whose a-priori interval [density − ε, density + ε] holds
+// the threshold (or its float rounding): the only ones that may be rock in one precision and air
+// in the other.
+std::vector<std::array<std::int64_t, 3>> side_changes(const Volume<double>& truth, double density_error,
                                                       const CaveParams& params) {
   std::vector<std::array<std::int64_t, 3>> changes;
-  const auto threshold_float = static_cast<float>(params.threshold);
+  const double reach = density_error + unit_roundoff_float * std::abs(params.threshold);
   for (int z = 0; z < truth.nz; ++z) {
     for (int y = 0; y < truth.ny; ++y) {
       for (int x = 0; x < truth.nx; ++x) {
-        if ((single.at(x, y, z) < threshold_float) != (truth.at(x, y, z) < params.threshold)) {
+        if (std::abs(truth.at(x, y, z) - params.threshold) <= reach) {
           changes.push_back({std::int64_t{params.origin[0]} + x, std::int64_t{params.origin[1]} + y,
                              std::int64_t{params.origin[2]} + z});
         }
@@ -134,37 +163,24 @@ std::vector<std::array<std::int64_t, 3>> side_changes(const Volume<float>& singl
   return changes;
 }
 
-// The per-vertex bound of parity.vertex_model (see the file comment).
-std::function<double(std::uint64_t)> vertex_bound(const Block& block, const Volume<double>& density,
-                                                  double density_error) {
-  return [&block, &density, density_error](std::uint64_t key) {
-    const LatticeEdge edge = lattice_edge_from_key(key);
-    std::array<int, 3> lower{}, upper{};
-    double magnitude = 0.0;
-    bool inside = true;
-    for (int axis = 0; axis < 3; ++axis) {
-      lower[axis] = static_cast<int>(edge.lower_point[axis] - block.params.origin[axis]);
-      upper[axis] = lower[axis] + ((edge.direction >> axis) & 1);
-      magnitude = std::max(magnitude, std::abs(double(edge.lower_point[axis])) + 1.0);
-      const int samples = block.params.size[axis] + 1;
-      inside = inside && lower[axis] >= 0 && upper[axis] < samples;
-    }
-    double t_error = 0.0;
-    if (inside && block.placement == EdgePlacement::linear) {
-      const double spread = std::abs(density.at(upper[0], upper[1], upper[2]) - density.at(lower[0], lower[1], lower[2]));
-      t_error = spread > 2.0 * density_error ? std::min(1.0, 3.0 * density_error / (spread - 2.0 * density_error)) : 1.0;
-    }
-    return std::sqrt(3.0) * (t_error + unit_roundoff_float * (4.0 + magnitude));
-  };
+// The per-vertex bound of parity.vertex_model (see the file comment): the float mesher's rounding
+// of t and of the position, for a vertex on the lattice edge `key`.
+double vertex_rounding_bound(std::uint64_t key) {
+  const LatticeEdge edge = lattice_edge_from_key(key);
+  double magnitude = 0.0;
+  for (int axis = 0; axis < 3; ++axis) magnitude = std::max(magnitude, std::abs(double(edge.lower_point[axis])) + 1.0);
+  return std::sqrt(3.0) * unit_roundoff_float * (4.0 + magnitude);
 }
 
 struct BlockMeshes {
   Volume<double> density;
   Mesh truth;                  // ref<double>
+  Mesh float_density_meshed;   // ref<double>'s mesher on ref<float>'s samples and threshold (exact
+                               // in double): the float meshers' rounding-only truth
   Volume<float> density_float;
   TriangleMesh<float> single;  // ref<float>, what the GPU must reproduce
   std::vector<std::array<std::int64_t, 3>> side_changes;  // samples rock in one precision, air in the other
-  double density_error = 0.0;  // max |density_float - density|
+  double density_error = 0.0;  // ε: the a-priori bound of |density_float - density| (density_precision)
 };
 
 void add_expected_triangles(const nlohmann::json& expect, std::size_t triangles, const std::string& backend,
@@ -241,17 +257,21 @@ void add_vs_double(const Block& block, const BlockMeshes& meshes, const Triangle
   });
   result.checks.push_back(bounded_check(
       "parity.topology." + name, double(unexplained), 0.0, std::nullopt,
-      fmt::format("triangles (by edge keys) in one mesh only whose cube has none of the samples that are rock in one "
-                  "precision and air in the other; {} triangles differ, {} samples change side (the seed's lattice has "
-                  "many samples at the threshold up to rounding)",
+      fmt::format("triangles (by edge keys) in one mesh only whose cube has none of the samples within ε of the "
+                  "threshold (ε a priori: parity.density.float_vs_double), the only ones that may change side; {} "
+                  "triangles differ, {} samples within ε (the seed's lattice has many samples at the threshold up to "
+                  "rounding)",
                   differing.size(), changes.size())));
-  const double density_error = meshes.density_error;
-  const VertexComparison vertices = compare_vertices(single, meshes.truth, vertex_bound(block, meshes.density, density_error));
+  // Against the float samples meshed in double: the vertices differ by the float mesher's rounding
+  // alone (ε = 0), none of the density's error enters.
+  const VertexComparison vertices =
+      compare_vertices(single, meshes.float_density_meshed, vertex_rounding_bound);
   result.checks.push_back(bounded_check(
       "parity.vertex_model." + name, vertices.max_bound_ratio, 1.0, std::nullopt,
-      fmt::format("largest vertex distance / its bound over {} shared vertices; density error ε = {:.3g} (float vs "
-                  "double, measured); bound √3·(min(1, 3ε/(|Δv| - 2ε)) + u·(4 + |a|))",
-                  vertices.matched, density_error)));
+      fmt::format("largest vertex distance / its bound over {} shared vertices, against ref<double>'s mesher on the "
+                  "float density samples: the float mesher's rounding alone, √3·u·(4 + |a|) (t's roundings, GLSL's "
+                  "division included, and the position's)",
+                  vertices.matched)));
   const KeyedHausdorff hausdorff = keyed_hausdorff(to_double_mesh(single), meshes.truth);
   result.checks.push_back(informative_check(
       "parity.hausdorff." + name, hausdorff.distance,
@@ -270,10 +290,21 @@ BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseRes
     meshes.density = block.volume ? *block.volume : reference::cave_density<double>(block.params);
     meshes.truth = mesh_block(block, meshes.density);
   }, result.timings);
+  meshes.density_error = density_precision(block, meshes.density);
+  meshes.side_changes = side_changes(meshes.density, meshes.density_error, block.params);
   meshes.density_float = block.volume ? block.volume->cast<float>() : reference::cave_density<float>(block.params);
   meshes.single = mesh_block(block, meshes.density_float);
-  meshes.side_changes = side_changes(meshes.density_float, meshes.density, block.params);
-  meshes.density_error = max_abs_difference(meshes.density_float, meshes.density);
+  Block float_inputs = block;  // the float meshers' inputs, exact in double: their samples and threshold
+  float_inputs.params.threshold = static_cast<float>(block.params.threshold);
+  meshes.float_density_meshed = mesh_block(float_inputs, meshes.density_float.cast<double>());
+  const double measured = max_abs_difference(meshes.density_float, meshes.density);
+  result.checks.push_back(bounded_check(
+      "parity.density.float_vs_double", measured, meshes.density_error, std::nullopt,
+      fmt::format("max |density_float − density| over the block's samples against ε, fixed before the float density "
+                  "is read: {}; the topology and vertex models below rest on it",
+                  block.volume ? "one rounding to float of the largest |value|"
+                               : "the noise module's float model (simplex3, coordinates up to the block's largest "
+                                 "lattice coordinate / scale)")));
   return meshes;
 }
 
@@ -352,6 +383,7 @@ void repeat_float_vs_double_as_gpu(CaseResult& result) {
   std::vector<Check> repeated;
   for (const Check& check : result.checks) {
     if (!check.name.starts_with("parity.") || !check.name.ends_with(float_suffix)) continue;
+    if (check.name.starts_with("parity.density.")) continue;  // the GPU meshes ref<float>'s density
     Check gpu_check = check;
     gpu_check.name = check.name.substr(0, check.name.size() - float_suffix.size()) + ".gpu_vs_double";
     gpu_check.detail = "the GPU mesh is ref<float>'s, bit for bit: " + check.detail;

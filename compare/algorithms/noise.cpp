@@ -27,6 +27,7 @@
 #include "compare/algorithm.hpp"
 #include "compare/case_descriptors.hpp"
 #include "compare/checks/field.hpp"
+#include "compare/checks/noise_error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/report/plots.hpp"
 #include "core/errors.hpp"
@@ -38,85 +39,17 @@
 namespace gt {
 namespace {
 
-struct NoiseTraits {
-  double lipschitz;         // largest gradient norm, noise units^-1 (measured, see below)
-  double arithmetic_terms;  // output scale x corner contributions
-  double scale;             // output scale of a simplex sum (70, 32, 27); 0 for Perlin
-  double gradient_length;   // |g| of the simplex gradient set: sqrt(2) in 3-D, sqrt(3) in 4-D
-};
-
-// Largest gradient norms over 10^6 uniform random points of [0, 256)^d with Perlin's table, from
-// the double references' analytic gradients (central differences, h = 1e-6, over 2·10^5 points for
-// simplex4 and the texture variant), rounded up by 25 %: simplex2 7.33 -> 9.2; simplex3 6.38
-// (kernel 0.6; 2.90 with 0.5) -> 8.0; simplex4 11.07 (0.6; 2.90 with 0.5) -> 13.9; perlin3 3.12
-// and the texture variant 3.10 -> 3.9.
-NoiseTraits traits_of(NoiseBasis basis) {
-  switch (basis) {
-    case NoiseBasis::simplex2: return {9.2, 70.0 * 3, 70.0, std::sqrt(2.0)};
-    case NoiseBasis::simplex3: return {8.0, 32.0 * 4, 32.0, std::sqrt(2.0)};
-    case NoiseBasis::simplex4: return {13.9, 27.0 * 5, 27.0, std::sqrt(3.0)};
-    case NoiseBasis::perlin3:
-    case NoiseBasis::perlin3_texture: return {3.9, 8.0, 0.0, 0.0};
-  }
-  return {13.9, 210.0, 0.0, 0.0};
-}
-
-// Σ_k weight_k and Σ_k weight_k·lacunarity^k of a fractal sum (1 and 1 for a single function):
-// how the arithmetic and coordinate errors of the octaves add up.
-std::pair<double, double> octave_sums(const NoiseParams& params) {
-  if (params.fractal == Fractal::none) return {1.0, 1.0};
-  const auto& fractal = params.fractal_params;
-  double weight = 1.0, frequency = 1.0, weights = 0.0, weighted_frequencies = 0.0;
-  const double ratio = params.fractal == Fractal::fbm ? fractal.gain : std::pow(fractal.lacunarity, -fractal.H);
-  for (int octave = 0; octave < static_cast<int>(std::ceil(fractal.octaves)); ++octave) {
-    weights += weight;
-    weighted_frequencies += weight * frequency;
-    weight *= ratio;
-    frequency *= fractal.lacunarity;
-  }
-  // fbm is normalised by Σ weights. Ridged squares (offset - |n|) and feeds back a weight clamped
-  // to [0, 1]: an error δn grows to at most 2(|offset| + 1)·max(1, gain)·δn per term.
-  // Hetero_terrain multiplies the running value by (1 + (n + offset)·w_k): errors grow with the
-  // value, at most Π_k (1 + (|offset| + 1)·w_k).
-  if (params.fractal == Fractal::fbm) return {1.0, weighted_frequencies / weights};
-  double amplification = 2.0 * (std::abs(fractal.offset) + 1.0) * std::max(1.0, fractal.gain);
-  if (params.fractal == Fractal::hetero_terrain) {
-    amplification = 1.0;
-    double octave_weight = 1.0;
-    for (int octave = 0; octave < static_cast<int>(std::ceil(fractal.octaves)); ++octave) {
-      amplification *= 1.0 + (std::abs(fractal.offset) + 1.0) * octave_weight;
-      octave_weight *= ratio;
-    }
-  }
-  return {weights * amplification, weighted_frequencies * amplification};
-}
-
 double float_grid_extent(const NoiseParams& params) {
   NoiseParams float_side = params;
   float_side.sampling.origin = reduced_origin(params);
   return largest_coordinate(float_side);
 }
 
-// Seed 004's kernel radius² 0.6 (3-D, 4-D) reaches corners outside the simplex a point lies in:
-// a corner at distance² >= 0.5 from every point of a simplex boundary still contributes
-// scale·t⁴·(g·d) with t = r² - |d|² <= r² - 0.5, and is dropped when the point crosses into the
-// next simplex (digest 004 §2.2.5). A rounding that moves a coordinate across the boundary can
-// therefore switch up to two such corners: 2·scale·(r² - 0.5)⁴·|g|·sqrt(r²). 0 for r² = 0.5.
-double switched_contribution(const NoiseParams& params) {
-  const auto traits = traits_of(params.basis);
-  const double reach = params.kernel_radius_squared - 0.5;
-  if (traits.scale == 0.0 || params.basis == NoiseBasis::simplex2 || reach <= 0.0) return 0.0;
-  return 2.0 * traits.scale * std::pow(reach, 4) * traits.gradient_length * std::sqrt(params.kernel_radius_squared);
-}
-
 FieldTwin::GeneratedField noise_bounds(const NoiseParams& params) {
   const auto traits = traits_of(params.basis);
-  const auto [weights, weighted_frequencies] = octave_sums(params);
-  const double u = unit_roundoff_float;
-  const double arithmetic = 8.0 * u * traits.arithmetic_terms * weights;
-  const double coordinates = traits.lipschitz * 2.0 * u * float_grid_extent(params) * weighted_frequencies *
-                             std::sqrt(static_cast<double>(noise_dimension(params.basis)));
-  const double precision = arithmetic + coordinates + switched_contribution(params) * weights;
+  const double weights = octave_sums(params).first;
+  const double arithmetic = 8.0 * unit_roundoff_float * traits.arithmetic_terms * weights;
+  const double precision = noise_precision_bound(params, float_grid_extent(params));
   return {{arithmetic, arithmetic, "same float operations in the same order, no division: 8u per term"},
           {precision, precision,
            fmt::format("float coordinates up to |x| = {:.4g} (2u·|x|·lipschitz), arithmetic, and {:.3g} for "

@@ -22,6 +22,19 @@ std::vector<Mutant> cave_mutants() {
       {"cave.marching_tetrahedra.gpu_kuhn_vertex", MutantKind::one_twin,
        "GLSL Kuhn split: tetrahedron T0 written {0,1,5,7} (T1's corners) instead of {0,1,3,7}",
        {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      // The calibrated pair of the float density's a-priori bound (parity.density.float_vs_double:
+      // the noise module's float model, 0.0073 on this probe, kernel 0.6): the float samples off by
+      // 2^-5 (0.0313: 4.4 times the bound) are killed; divided by the scale instead of multiplied by
+      // its float reciprocal, an honest variant within a rounding, they survive.
+      {"cave.marching_tetrahedra.float_density_off_above_bound", MutantKind::one_twin,
+       "ref<float>'s density samples, which the GPU meshes too, 2^-5 above the noise",
+       {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      {.name = "cave.marching_tetrahedra.float_density_divided_below_bound",
+       .kind = MutantKind::one_twin,
+       .description = "ref<float>'s density divides the coordinates by the scale instead of multiplying them by its "
+                      "float reciprocal",
+       .cases = {"cave.marching_tetrahedra.mutant_probe.solid8"},
+       .must_survive = true},
       // Both twins: they agree; a mesh invariant (mesh.*) or the vertices against the field
       // (spec.vertex_crossing.cpu) fails.
       {"cave.marching_tetrahedra.winding_reversed", MutantKind::both_twins,
