@@ -716,9 +716,6 @@ int run_driver(const DriverOptions& options) {
     if (options.mutation) {
       report.mutation = run_mutation(*options.mutation, folder / "mutants", options.dataset_dir);
       report.mutation->folder = "mutants/";
-      if (options.mutation->specificity_sets > 0) {
-        report.mutation->specificity = run_specificity_worker(*options.mutation, folder / "mutants");
-      }
       write_file_atomically(folder / "mutants" / "mutants.json",
                                           mutation_to_json(*report.mutation).dump(2) + '\n');
     }

@@ -157,6 +157,32 @@ MutantOutcome mutant_outcome(const Mutant& mutant, const std::vector<std::string
   return outcome;
 }
 
+// `groundtruth specificity --sets N` in a worker into `folder`/specificity (its own report there),
+// its figures read back from specificity.json; a run that did not finish gives a summary naming why.
+SpecificitySummary run_specificity_worker(const MutationOptions& options, const std::filesystem::path& folder) {
+  // A whole specificity run (20 sets: about 20 minutes on 2 cores) may take hours on a slow machine;
+  // its own cases have their limits.
+  constexpr double timeout_seconds = 6.0 * 3600.0;
+  const auto out = folder / "specificity";
+  print_line(fmt::format("specificity: {} per algorithm", counted(static_cast<std::size_t>(options.specificity_sets), "parameter set")));
+  std::vector<std::string> args = {"specificity", "--sets", std::to_string(options.specificity_sets), "--out",
+                                   out.string(), "--gl", options.gl, "-j", std::to_string(options.parallel), "--quiet"};
+  const WorkerResult worker = run_worker(args, folder / "specificity.log", timeout_seconds);
+  SpecificitySummary summary;
+  summary.page = "specificity/specificity.html";
+  std::ifstream stream(out / "specificity.json");
+  try {
+    if (!stream) throw std::runtime_error("no specificity.json");
+    const auto document = parse_json_bounded(stream, (out / "specificity.json").string());
+    summary.runs = document.at("runs").get<int>();
+    summary.false_alarms = document.at("false_alarms").get<int>();
+  } catch (const std::exception& error) {
+    summary.problem = worker.timed_out ? fmt::format("timed out after {:.0f} s", timeout_seconds)
+                                       : fmt::format("{} (exit status {}; see specificity.log)", error.what(), worker.status);
+  }
+  return summary;
+}
+
 }  // namespace
 
 std::vector<Mutant> select_mutants(const std::vector<std::string>& patterns) {
@@ -228,32 +254,10 @@ MutationReport run_mutation(const MutationOptions& options, const std::filesyste
         print_line(fmt::format("[{}/{}] {:9} {} ({:.1f} s)", ++finished, selected.size(), report.mutants[index].status,
                                mutant.name, worker.seconds));
       });
+  if (options.specificity_sets > 0) report.specificity = run_specificity_worker(options, folder);
   return report;
 }
 
-SpecificitySummary run_specificity_worker(const MutationOptions& options, const std::filesystem::path& folder) {
-  // A whole specificity run (20 sets: about 20 minutes on 2 cores) may take hours on a slow machine;
-  // its own cases have their limits.
-  constexpr double timeout_seconds = 6.0 * 3600.0;
-  const auto out = folder / "specificity";
-  print_line(fmt::format("specificity: {} parameter sets per algorithm", options.specificity_sets));
-  std::vector<std::string> args = {"specificity", "--sets", std::to_string(options.specificity_sets), "--out",
-                                   out.string(), "--gl", options.gl, "-j", std::to_string(options.parallel), "--quiet"};
-  const WorkerResult worker = run_worker(args, folder / "specificity.log", timeout_seconds);
-  SpecificitySummary summary;
-  summary.page = "specificity/specificity.html";
-  std::ifstream stream(out / "specificity.json");
-  try {
-    if (!stream) throw std::runtime_error("no specificity.json");
-    const auto document = parse_json_bounded(stream, (out / "specificity.json").string());
-    summary.runs = document.at("runs").get<int>();
-    summary.false_alarms = document.at("false_alarms").get<int>();
-  } catch (const std::exception& error) {
-    summary.problem = worker.timed_out ? fmt::format("timed out after {:.0f} s", timeout_seconds)
-                                       : fmt::format("{} (exit status {}; see specificity.log)", error.what(), worker.status);
-  }
-  return summary;
-}
 
 nlohmann::json mutation_to_json(const MutationReport& report) {
   nlohmann::json out = {{"folder", report.folder},

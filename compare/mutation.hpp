@@ -31,20 +31,17 @@ struct MutationOptions {
   bool require_gpu = false;            // passed to every worker run
   double timeout_seconds = 600.0;      // per worker run
   int parallel = 1;                    // worker runs at once (-j)
-  int specificity_sets = 0;            // > 0: also `groundtruth specificity --sets N` (report --full)
+  int specificity_sets = 0;  // > 0: also `groundtruth specificity --sets N` (report --full, mutants --specificity-sets)
 };
 
 // The selected mutants; throws InputError when a pattern matches none.
 std::vector<Mutant> select_mutants(const std::vector<std::string>& patterns);
 
-// Runs the baselines and the mutants into `folder` (created; runs/<name>/ and baseline/<family>/).
+// Runs the baselines and the mutants into `folder` (created; runs/<name>/ and baseline/<family>/),
+// and with specificity_sets > 0 `groundtruth specificity --sets N` into specificity/.
 // Throws InputError when a mutant names a case pattern that matches no case.
 MutationReport run_mutation(const MutationOptions& options, const std::filesystem::path& folder,
                             const std::filesystem::path& dataset_dir);
-
-// `groundtruth specificity --sets N` in a worker into `folder` (its own report there), and its figures
-// read back from specificity.json; a run that did not finish gives a summary naming why.
-SpecificitySummary run_specificity_worker(const MutationOptions& options, const std::filesystem::path& folder);
 
 nlohmann::json mutation_to_json(const MutationReport& report);
 

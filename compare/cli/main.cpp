@@ -5,7 +5,7 @@
 //   report [--out] [--gl] [--no-benchmark] [--no-mutants] [--require-gpu]
 //                                      the default suite, benchmarks and mutants into reports/latest
 //   bench [PATTERN...] [--sizes] [--iterations]  only the performance table (with its peers and floor)
-//   mutants [PATTERN...] [--list] [--json] [--out]
+//   mutants [PATTERN...] [--list] [--json] [--out] [--specificity-sets N]
 //                                      each registered mutant on its cases: which checks kill it
 //   check-mesh FILE [--json]           the mesh checks on an OFF, OBJ, PLY or STL file
 //   diff-image A B [--json] [--out diff.png] [--tolerance T]
@@ -470,6 +470,11 @@ int run_command_line(int argc, char** argv) {
   mutants->add_flag("--require-gpu", mutation_options.require_gpu, "a run without a GL context is an error");
   mutants->add_option("-j,--jobs", mutation_options.parallel, "worker runs at once")
       ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  mutants->add_option("--specificity-sets", mutation_options.specificity_sets,
+                      "also measure the specificity with this many parameter sets per algorithm (as `groundtruth "
+                      "specificity --sets N`) and show it beside the mutation score; 0: not")
+      ->check(CLI::Range(0, 100))
       ->capture_default_str();
   mutants->add_option("--timeout", mutant_timeout, "seconds a mutant's run may take")
       ->check(finite_number & CLI::Range(1.0, 86400.0))
