@@ -247,7 +247,7 @@ void add_normal_checks(const Block& block, const Mesh& mesh, CaseResult& result)
 }
 
 // Mesh `single` (float arithmetic: ref<float> or the GPU) against ref<double>.
-void add_vs_double(const Block& block, const BlockMeshes& meshes, const TriangleMesh<float>& single,
+void add_vs_double(const BlockMeshes& meshes, const TriangleMesh<float>& single,
                    const std::string& name, CaseResult& result) {
   const auto& changes = meshes.side_changes;
   const auto differing = triangles_in_one_only(key_triangles(single), key_triangles(meshes.truth));
@@ -413,7 +413,7 @@ void run_gpu_half(const Block& block, const BlockMeshes& meshes, const RunOption
   if (same_mesh(gpu_mesh, meshes.single)) {
     repeat_float_vs_double_as_gpu(result);
   } else {
-    add_vs_double(block, meshes, gpu_mesh, "gpu_vs_double", result);
+    add_vs_double(meshes, gpu_mesh, "gpu_vs_double", result);
   }
   if (options.progress) options.progress->stage("CGAL and OpenMesh (gpu)");
   const Mesh gpu_double = to_double_mesh(gpu_mesh);
@@ -441,7 +441,7 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   add_expected_triangles(expect, meshes.truth.triangles.size(), "cpu", result);
   add_crossing_check(block, meshes, result);
   if (!block.volume) add_normal_checks(block, meshes.truth, result);  // normals of the seed's noise
-  add_vs_double(block, meshes, meshes.single, "float_vs_double", result);
+  add_vs_double(meshes, meshes.single, "float_vs_double", result);
   write_mesh_artifact(meshes.truth, "mesh.cpu." + block.mesh_format,
                       fmt::format("cpu mesh, {} triangles", meshes.truth.triangles.size()), options, result);
   run_gpu_half(block, meshes, options, result);
