@@ -23,7 +23,7 @@ std::vector<Mutant> cave_mutants() {
        "GLSL Kuhn split: tetrahedron T0 written {0,1,5,7} (T1's corners) instead of {0,1,3,7}",
        {"cave.marching_tetrahedra.mutant_probe.solid8"}},
       // The calibrated pair of the float density's a-priori bound (parity.density.float_vs_double:
-      // the noise module's float model, 0.0073 on this probe, kernel 0.6): the float samples off by
+      // the noise module's float model, 0.00707 on this probe, kernel 0.6): the float samples off by
       // 2^-5 (0.0313: 4.4 times the bound) are killed; divided by the scale instead of multiplied by
       // its float reciprocal, an honest variant within a rounding, they survive.
       {"cave.marching_tetrahedra.float_density_off_above_bound", MutantKind::one_twin,
