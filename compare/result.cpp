@@ -72,6 +72,10 @@ bool run_failed(const Report& report) {
          std::any_of(report.cases.begin(), report.cases.end(), failed_unexpectedly);
 }
 
+double specificity_share(int false_alarms, int runs) {
+  return 1.0 - static_cast<double>(false_alarms) / std::max(1, runs);
+}
+
 int MutationReport::bugs() const {
   return static_cast<int>(std::count_if(mutants.begin(), mutants.end(), [](const auto& m) { return !m.must_survive; }));
 }

@@ -168,6 +168,9 @@ struct MutationBaseline {
 
 // The harness's false-alarm rate beside the mutation score (`groundtruth specificity`, run by
 // `report --full`): honest runs with drawn parameters, and those that failed or erred.
+// 1 − false_alarms / runs (1 when nothing ran): the share of honest runs not failed.
+double specificity_share(int false_alarms, int runs);
+
 struct SpecificitySummary {
   int runs = 0;
   int false_alarms = 0;

@@ -194,7 +194,7 @@ void write_specificity_page(const std::map<std::string, AlgorithmTally>& tallies
     for (const auto& [outcome, count] : tally.outcomes) outcomes += fmt::format("{}{} {}", outcomes.empty() ? "" : ", ", count, outcome);
     html << "<tr><td>" << escape_markup(algorithm) << "</td><td>" << tally.runs << "</td><td>" << outcomes << "</td><td>"
          << tally.false_alarms << "</td><td>"
-         << fmt::format("{:.3f}", 1.0 - static_cast<double>(tally.false_alarms) / std::max(1, tally.runs)) << "</td></tr>\n";
+         << fmt::format("{:.3f}", specificity_share(tally.false_alarms, tally.runs)) << "</td></tr>\n";
   }
   html << "</table>\n";
   for (const auto& [algorithm, tally] : tallies) {
@@ -239,13 +239,13 @@ void write_specificity_summary(const Sweep& sweep, Report& report, const std::fi
                                      {"runs", tally.runs},
                                      {"outcomes", tally.outcomes},
                                      {"false_alarms", tally.false_alarms},
-                                     {"specificity", 1.0 - static_cast<double>(tally.false_alarms) / std::max(1, tally.runs)},
+                                     {"specificity", specificity_share(tally.false_alarms, tally.runs)},
                                      {"alarms", tally.alarms},
                                      {"undecided", tally.undecided}});
   }
   summary["runs"] = runs;
   summary["false_alarms"] = false_alarms;
-  summary["specificity"] = 1.0 - static_cast<double>(false_alarms) / std::max(1, runs);
+  summary["specificity"] = specificity_share(false_alarms, runs);
   write_file_atomically(folder / "specificity.json", summary.dump(2) + '\n');
   write_specificity_page(tallies, folder);
   report.plots.push_back({"", "plot",

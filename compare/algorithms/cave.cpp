@@ -146,7 +146,7 @@ double density_precision(const Block& block, const Volume<double>& density) {
 // Global lattice points of the samples whose a-priori interval [density − ε, density + ε] holds
 // the threshold (or its float rounding): the only ones that may be rock in one precision and air
 // in the other.
-std::vector<std::array<std::int64_t, 3>> side_changes(const Volume<double>& truth, double density_error,
+std::vector<std::array<std::int64_t, 3>> possible_side_changes(const Volume<double>& truth, double density_error,
                                                       const CaveParams& params) {
   std::vector<std::array<std::int64_t, 3>> changes;
   const double reach = density_error + unit_roundoff_float * std::abs(params.threshold);
@@ -179,7 +179,7 @@ struct BlockMeshes {
                                // in double): the float meshers' rounding-only truth
   Volume<float> density_float;
   TriangleMesh<float> single;  // ref<float>, what the GPU must reproduce
-  std::vector<std::array<std::int64_t, 3>> side_changes;  // samples rock in one precision, air in the other
+  std::vector<std::array<std::int64_t, 3>> possible_side_changes;  // samples within ε of the threshold
   double density_error = 0.0;  // ε: the a-priori bound of |density_float - density| (density_precision)
 };
 
@@ -249,7 +249,7 @@ void add_normal_checks(const Block& block, const Mesh& mesh, CaseResult& result)
 // Mesh `single` (float arithmetic: ref<float> or the GPU) against ref<double>.
 void add_vs_double(const BlockMeshes& meshes, const TriangleMesh<float>& single,
                    const std::string& name, CaseResult& result) {
-  const auto& changes = meshes.side_changes;
+  const auto& changes = meshes.possible_side_changes;
   const auto differing = triangles_in_one_only(key_triangles(single), key_triangles(meshes.truth));
   const auto unexplained = std::count_if(differing.begin(), differing.end(), [&](const KeyTriangle& triangle) {
     const LatticeBox cube = triangle_cube(triangle);
@@ -291,7 +291,7 @@ BlockMeshes run_reference(const Block& block, const RunOptions& options, CaseRes
     meshes.truth = mesh_block(block, meshes.density);
   }, result.timings);
   meshes.density_error = density_precision(block, meshes.density);
-  meshes.side_changes = side_changes(meshes.density, meshes.density_error, block.params);
+  meshes.possible_side_changes = possible_side_changes(meshes.density, meshes.density_error, block.params);
   meshes.density_float = block.volume ? block.volume->cast<float>() : reference::cave_density<float>(block.params);
   meshes.single = mesh_block(block, meshes.density_float);
   Block float_inputs = block;  // the float meshers' inputs, exact in double: their samples and threshold

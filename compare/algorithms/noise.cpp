@@ -46,9 +46,8 @@ double float_grid_extent(const NoiseParams& params) {
 }
 
 FieldTwin::GeneratedField noise_bounds(const NoiseParams& params) {
-  const auto traits = traits_of(params.basis);
   const double weights = octave_sums(params).first;
-  const double arithmetic = 8.0 * unit_roundoff_float * traits.arithmetic_terms * weights;
+  const double arithmetic = noise_arithmetic_bound(params);
   const double precision = noise_precision_bound(params, float_grid_extent(params));
   return {{arithmetic, arithmetic, "same float operations in the same order, no division: 8u per term"},
           {precision, precision,

@@ -54,14 +54,16 @@ double switched_contribution(const NoiseParams& params) {
   return 2.0 * traits.scale * std::pow(reach, 4) * traits.gradient_length * std::sqrt(params.kernel_radius_squared);
 }
 
+double noise_arithmetic_bound(const NoiseParams& params) {
+  return 8.0 * unit_roundoff_float * traits_of(params.basis).arithmetic_terms * octave_sums(params).first;
+}
+
 double noise_precision_bound(const NoiseParams& params, double extent) {
   const auto traits = traits_of(params.basis);
   const auto [weights, weighted_frequencies] = octave_sums(params);
-  const double u = unit_roundoff_float;
-  const double arithmetic = 8.0 * u * traits.arithmetic_terms * weights;
-  const double coordinates = traits.lipschitz * 2.0 * u * extent * weighted_frequencies *
+  const double coordinates = traits.lipschitz * 2.0 * unit_roundoff_float * extent * weighted_frequencies *
                              std::sqrt(static_cast<double>(noise_dimension(params.basis)));
-  return arithmetic + coordinates + switched_contribution(params) * weights;
+  return noise_arithmetic_bound(params) + coordinates + switched_contribution(params) * weights;
 }
 
 }  // namespace gt

@@ -43,6 +43,10 @@ std::pair<double, double> octave_sums(const NoiseParams& params);
 // therefore switch up to two such corners: 2·scale·(r² - 0.5)⁴·|g|·sqrt(r²). 0 for r² = 0.5.
 double switched_contribution(const NoiseParams& params);
 
+// The arithmetic term alone: 8u·terms·Σweights. It is also the GPU-vs-float bound (the same float
+// operations in the same order, no division).
+double noise_arithmetic_bound(const NoiseParams& params);
+
 // The float-vs-double bound of `params`' function at float coordinates up to |x| = extent: the
 // three terms above, summed (strict; an upper bound).
 double noise_precision_bound(const NoiseParams& params, double extent);

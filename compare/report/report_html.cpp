@@ -391,13 +391,12 @@ void append_specificity(std::string& out, const MutationReport& mutation) {
     out += fmt::format("<p>Specificity <span class=\"badge error\">not measured</span>: {}.</p>\n", h(specificity.problem));
     return;
   }
-  const double share = 1.0 - static_cast<double>(specificity.false_alarms) / std::max(1, specificity.runs);
   out += fmt::format(
       "<p>Specificity <span class=\"badge {}\">{} of {} honest runs without a false alarm ({:.1f} %)</span>: each "
       "stepping algorithm with parameter sets drawn from plausible ranges, on two real DEMs; a fail or an error is "
       "a false alarm (<a href=\"{}{}\">which runs, with their parameters</a>).</p>\n",
       specificity.false_alarms == 0 ? "pass" : "fail", specificity.runs - specificity.false_alarms, specificity.runs,
-      100.0 * share, h(mutation.folder), h(specificity.page));
+      100.0 * specificity_share(specificity.false_alarms, specificity.runs), h(mutation.folder), h(specificity.page));
 }
 
 // Which graded check killed which mutant: a graded check (one with a bound in a baseline run) that
