@@ -5,6 +5,7 @@ helper lists the failing checks."""
 
 import os
 import pathlib
+import re
 import subprocess
 import sys
 import tempfile
@@ -126,10 +127,22 @@ def test_the_reference_behind_the_bmi_passes_its_own_round_trip(precision, versu
 
 
 def readme_block(language):
-    """The README's code block of `language` under "Check your own implementation"."""
+    """The README's first code block of `language` under its heading "Check your own implementation"
+    (a step of the tutorial: "### 4. Check your own implementation"), up to the next heading of
+    that level or above."""
     readme = (pathlib.Path(__file__).resolve().parents[2] / "README.md").read_text()
-    section = readme.split("## Check your own implementation", 1)[1].split("\n## ", 1)[0]
-    return section.split(f"```{language}\n", 1)[1].split("```", 1)[0]
+    level, section, in_code = None, [], False
+    for line in readme.splitlines(keepends=True):
+        in_code ^= line.startswith("```")
+        heading = None if in_code else re.match(r"(#+) (?:\d+\. )?(.*)$", line)
+        if level is None:
+            if heading and heading.group(2) == "Check your own implementation":
+                level = len(heading.group(1))
+        elif heading and len(heading.group(1)) <= level:
+            break
+        else:
+            section.append(line)
+    return "".join(section).split(f"```{language}\n", 1)[1].split("```", 1)[0]
 
 
 def test_the_readme_examples_run_as_written():
