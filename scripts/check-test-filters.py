@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Lint: every alternative of a test preset's exclude filter in CMakePresets.json still names a test.
+"""Lint: every alternative of a test preset's name filter in CMakePresets.json (exclude or include)
+still names a test, and the long tier is one pattern: what the release preset leaves out is what
+release-long runs, so that the two together run every test once.
 
 A test renamed or split leaves its old name in the filter, matching nothing, and the test it was
 meant to keep out runs after all (CI's debug-asan run once ran the split pipe suite under the
-sanitizers, both halves past ctest's limit).
+sanitizers, both halves past ctest's limit), or the test meant for the long tier runs nowhere.
 
     scripts/check-test-filters.py BUILD_DIR   the tests `ctest --test-dir BUILD_DIR -N` lists
                                               (ctest: Lint.TestFilters, on the release build)
@@ -28,17 +30,23 @@ def main():
         sys.exit("check-test-filters: ctest listed no tests")
     presets = json.loads((pathlib.Path(__file__).resolve().parent.parent / "CMakePresets.json").read_text())
     unmatched = []
-    for preset in presets.get("testPresets", []):
-        pattern = preset.get("filter", {}).get("exclude", {}).get("name")
-        for alternative in pattern.split("|") if pattern else []:
-            if not any(re.search(alternative, name) for name in names):
-                unmatched.append(f"{preset['name']}: {alternative!r} matches none of the {len(names)} tests")
+    by_name = {preset["name"]: preset for preset in presets.get("testPresets", [])}
+    for preset in by_name.values():
+        for which in ("exclude", "include"):
+            pattern = preset.get("filter", {}).get(which, {}).get("name")
+            for alternative in pattern.split("|") if pattern else []:
+                if not any(re.search(alternative, name) for name in names):
+                    unmatched.append(f"{preset['name']} ({which}): {alternative!r} matches none of the {len(names)} tests")
+    left_out = by_name["release"]["filter"]["exclude"]["name"]
+    long_tier = by_name["release-long"]["filter"]["include"]["name"]
+    if left_out != long_tier:
+        unmatched.append(f"release leaves out {left_out!r} but release-long runs {long_tier!r}")
     if unmatched:
-        print("check-test-filters: an exclude filter names tests that no longer exist:", file=sys.stderr)
+        print("check-test-filters: a filter names tests that no longer exist, or the tiers differ:", file=sys.stderr)
         for line in unmatched:
             print("  " + line, file=sys.stderr)
         sys.exit(1)
-    print(f"check-test-filters: every exclude alternative names a test ({len(names)} tests)")
+    print(f"check-test-filters: every filter alternative names a test, the long tier is one pattern ({len(names)} tests)")
 
 
 main()
