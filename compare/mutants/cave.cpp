@@ -35,6 +35,17 @@ std::vector<Mutant> cave_mutants() {
                       "float reciprocal",
        .cases = {"cave.marching_tetrahedra.mutant_probe.solid8"},
        .must_survive = true},
+      // The calibrated pair of the vertex model (parity.vertex_model.float_vs_double: the float
+      // roundings of t and of the position against ref<double>'s mesher on the same samples): t
+      // 2^-18 too large is killed; one ulp too large, an honest rounding, survives.
+      {"cave.marching_tetrahedra.float_t_off_above_bound", MutantKind::one_twin,
+       "ref<float> places each vertex at t + 2^-18 along its edge",
+       {"cave.marching_tetrahedra.mutant_probe.solid8", "cave.marching_tetrahedra.open.block12"}},
+      {.name = "cave.marching_tetrahedra.float_t_one_ulp_below_bound",
+       .kind = MutantKind::one_twin,
+       .description = "ref<float> places each vertex one ulp of t further along its edge",
+       .cases = {"cave.marching_tetrahedra.mutant_probe.solid8", "cave.marching_tetrahedra.open.block12"},
+       .must_survive = true},
       // Both twins: they agree; a mesh invariant (mesh.*) or the vertices against the field
       // (spec.vertex_crossing.cpu) fails.
       {"cave.marching_tetrahedra.winding_reversed", MutantKind::both_twins,
@@ -46,6 +57,12 @@ std::vector<Mutant> cave_mutants() {
       {"cave.marching_tetrahedra.quad_half", MutantKind::both_twins,
        "case 5's quad emits only its first triangle in both twins (triangle count 1): holes",
        {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      {"cave.marching_tetrahedra.triangle_doubled", MutantKind::both_twins,
+       "code 1's triangle emitted twice in both twins (its fan runs one step too far, from the start again)",
+       {"cave.marching_tetrahedra.mutant_probe.solid8", "cave.marching_tetrahedra.open.block12"}},
+      {"cave.marching_tetrahedra.fan_one_too_many", MutantKind::both_twins,
+       "code 1's fan runs one step too far in both twins: a second triangle (first, last, last), a repeated corner",
+       {"cave.marching_tetrahedra.mutant_probe.solid8", "cave.marching_tetrahedra.open.block12"}},
       {"cave.marching_tetrahedra.threshold_negated", MutantKind::both_twins,
        "the threshold's sign flipped in both meshers (rock iff density < -θ)",
        {"cave.marching_tetrahedra.mutant_probe.solid8_threshold"}},

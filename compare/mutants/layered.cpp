@@ -14,7 +14,9 @@
 // and a plane with the river.
 //
 // one_twin: a bug in the GPU twin alone, killed by a parity.shadow.<field>.gpu_vs_float check (bit for
-// bit) or the end of the run's parity.<field>.max_abs.gpu_vs_float (bit for bit).
+// bit) or the end of the run's parity.<field>.max_abs.gpu_vs_float (bit for bit); the water's two
+// (previous_after_move, flux_unscaled) each change one field of the water state, previous_water or
+// water_flux, in the step.
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -45,6 +47,10 @@ std::vector<Mutant> layered_mutants() {
        cone},
       {"erosion.layered.fragments_without_boulders", MutantKind::both_twins,
        "fallen bedrock breaks into gravel and stones only: the boulders' share is lost", cliff},
+      {"erosion.layered.gpu_previous_after_move", MutantKind::one_twin,
+       "water_move.comp records the depth after the move as the previous depth, not the depth before it", rain},
+      {"erosion.layered.gpu_flux_unscaled", MutantKind::one_twin,
+       "water_flux.comp never scales the fluxes down to what a column holds (no column is drained)", rain},
       {"erosion.layered.gpu_drained_keeps_rest", MutantKind::one_twin,
        "water_move.comp ignores that a column was drained and keeps the rounding residue of q − Σ q·f_k, as the "
        "reference does not",

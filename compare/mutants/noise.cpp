@@ -1,6 +1,7 @@
 // Mutants of the noise twins; see compare/mutants/mutants.hpp. The bugs live in
 // gpu/shaders/noise/*.glsl (#ifdef GT_MUTANT_NOISE_...) and, for both_twins, also in
-// reference/noise/* (mutant_active("noise....")). Cases are the small ones of
+// reference/noise/* (mutant_active("noise....")); the float precision model's calibrated pair is in
+// both float twins (ref<float> and the GPU), graded against ref<double>. Cases are the small ones of
 // datasets/cases/noise.json (at most 160 x 128 samples, one GPU dispatch each).
 #include "compare/mutants/mutants.hpp"
 
@@ -24,6 +25,16 @@ std::vector<Mutant> noise_mutants() {
       {"noise.fbm.gpu_octave_shift", MutantKind::one_twin,
        "GLSL fBm starts at p·lacunarity: every octave one lacunarity too high",
        {"noise.fbm.perlin3"}},
+      // The calibrated pair of the float precision model (parity.max_abs.float_vs_double: 4.42e-05
+      // on this case): both float twins' samples 2^-13 high (1.22e-04, 2.8 times the bound) are
+      // killed; 2^-17 high (7.6e-06 on top of the honest 4.1e-06) survive.
+      {"noise.perlin3.float_off_above_bound", MutantKind::one_twin,
+       "ref<float>'s and the GPU's samples 2^-13 above the noise", {"noise.perlin3.near_origin"}},
+      {.name = "noise.perlin3.float_off_below_bound",
+       .kind = MutantKind::one_twin,
+       .description = "ref<float>'s and the GPU's samples 2^-17 above the noise",
+       .cases = {"noise.perlin3.near_origin"},
+       .must_survive = true},
       // Both twins: they agree, a spec check against published values or an invariant fails.
       {"noise.simplex3.grad3_swapped", MutantKind::both_twins,
        "grad3's first two entries (1,1,0) and (-1,1,0) exchanged in both twins (2-D and 3-D simplex)",
@@ -33,6 +44,9 @@ std::vector<Mutant> noise_mutants() {
        {"noise.perlin3.near_origin"}},
       {"noise.perlin3.fade_square", MutantKind::both_twins,
        "the fade curve has t² where t³ belongs (t²(6t² - 15t + 10)) in both twins",
+       {"noise.perlin3.near_origin"}},
+      {"noise.perlin3.unit_interval", MutantKind::both_twins,
+       "both twins store v/2 + 1/2, the texture convention, instead of the noise v centred on 0",
        {"noise.perlin3.near_origin"}},
       {"noise.fbm.gain_before_sample", MutantKind::both_twins,
        "fBm multiplies the amplitude by the gain before adding its octave in both twins (octave k weighs gain^(k+1))",

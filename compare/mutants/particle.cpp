@@ -47,6 +47,8 @@ std::vector<Mutant> particle_mutants() {
        probe_and_spec},
       {"erosion.particle.kept_sediment_on_deposit", MutantKind::both_twins,
        "both twins deposit without taking the deposit off the droplet's sediment: material created", probe_and_spec},
+      {"erosion.particle.step_by_velocity", MutantKind::both_twins,
+       "both twins move a droplet by its velocity instead of one texel along its direction", probe_and_spec},
       {"erosion.particle.unbounded_erosion", MutantKind::both_twins,
        "both twins erode bite·(capacity - sediment) without bounding it by the height above the lowest neighbour",
        {"erosion.particle.spec.bounded_bite"}},

@@ -10,8 +10,9 @@
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
 // was asked, computed on the host: mass.water_added.* (rain, rain map and sources asked for),
-// mass.evaporation.* (K_e·Δt of the water held) and mass.material_drift.* (the flux form
-// conserves material).
+// mass.evaporation.* (K_e·Δt of the water held), mass.material_drift.* (the flux form
+// conserves material), mass.water_balance.* (the water held against what was added, evaporated and
+// let out) and stability.max_cfl.* (the K scaling keeps Δt·|u|/l at most 1).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -36,6 +37,10 @@ std::vector<Mutant> pipe_mutants() {
       {"erosion.pipe.gpu_backtrace_downstream", MutantKind::one_twin,
        "pipes_sediment.comp backtraces the semi-Lagrangian sediment along +u·Δt (downstream) instead of −u·Δt",
        semi_lagrangian_probe_and_dem},
+      {"erosion.pipe.unscaled_outflow", MutantKind::both_twins,
+       "the outflow is never scaled by K (eq. 2.12 skipped): a cell may send more water than it holds (ref "
+       "update_outflow, pipes_outflow.comp)",
+       flux_probe},
       {"erosion.pipe.half_rain", MutantKind::both_twins,
        "the rain pass adds Δt·(r + r_map)/2 (ref add_water, pipes_water.comp)", flux_probe},
       {"erosion.pipe.double_evaporation", MutantKind::both_twins,

@@ -48,6 +48,8 @@ std::vector<Mutant> planet_mutants() {
        "voronoi.comp measures distances to each cell's centre (Algorithm 1's massCenterOfCell) instead of the "
        "region's jittered centroid",
        probe},
+      {"planet.mesh.key_without_z", MutantKind::both_twins,
+       "the planet mesh welds its corners on (X, Y) alone: corners that differ only in Z become one vertex", probe},
       {"planet.cube_sphere.no_wrap", MutantKind::both_twins,
        "the shared neighbour table leaves out neighbours across the cube's edges", probe},
   };

@@ -13,7 +13,8 @@
 // (the methods conserve material), mass.moved_first_iteration.cpu (the material the first
 // iteration moves, against a host spec of the transfer from the thesis' equations) and
 // spec.first_iteration_cells.cpu (that first iteration cell by cell: mirrored_slope runs on the
-// probe cone and on the volcano, which is not symmetric).
+// probe cone and on the volcano, which is not symmetric) and spec.talus_eq_4_10 (eq. 4.10's
+// threshold, which both twins read from core/params/thermal.cpp).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -53,6 +54,9 @@ std::vector<Mutant> thermal_mutants() {
        .must_survive = true},
       {"erosion.thermal.talus_degree_off", MutantKind::both_twins,
        "both twins apply the talus slope of an angle one degree steeper than asked (reference and GPU block)", hydra},
+      {"erosion.thermal.eq_4_10_unconverted_degrees", MutantKind::both_twins,
+       "eq. 4.10's tan takes the talus angle in degrees as if radians (core/params/thermal.cpp, which both twins read)",
+       {"erosion.thermal.spec.example_3x3"}},
       {"erosion.thermal.unconserved_transfer", MutantKind::both_twins,
        "Algorithm 11 in both twins adds the transfer to the receiving cell but never subtracts it from the giver",
        hydra},

@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "core/mutant.hpp"
+
 namespace gt {
 namespace {
 
@@ -68,8 +70,12 @@ ThermalJakoParams thermal_jako_params_from_json(const nlohmann::json& resolved) 
   return params_from_json(thermal_jako_param_table(), resolved);
 }
 
+// Mutant erosion.thermal.eq_4_10_unconverted_degrees: the angle passed to tan in degrees, as if
+// radians; both twins take their talus slope from here.
 double talus_threshold_eq_4_10(double angle_deg, int width, double vertical_aspect) {
-  return std::tan(std::numbers::pi / 180.0 * angle_deg) / (static_cast<double>(width) * vertical_aspect);
+  const double angle = mutant_active("erosion.thermal.eq_4_10_unconverted_degrees") ? angle_deg
+                                                                                     : std::numbers::pi / 180.0 * angle_deg;
+  return std::tan(angle) / (static_cast<double>(width) * vertical_aspect);
 }
 
 ThermalConstants thermal_constants(const ThermalParams& params, const Heightmap& original) {

@@ -19,6 +19,9 @@ Mesh sphere_mesh(const CubeSphere& sphere) {
   const int resolution = sphere.resolution();
   Mesh mesh;
   std::map<std::array<int, 3>, std::uint32_t> welded;
+  // Mutant planet.mesh.key_without_z: the weld keyed on (X, Y) alone, so corners that differ only
+  // in Z are one vertex.
+  const bool key_without_z = mutant_active("planet.mesh.key_without_z");
   const auto corner = [&](int face, int x, int y) {
     const FaceMatrix& matrix = face_matrix(static_cast<CubeFace>(face));
     const std::array<int, 3> face_space{2 * x - resolution, resolution - 2 * y, resolution};
@@ -26,7 +29,8 @@ Mesh sphere_mesh(const CubeSphere& sphere) {
     for (int row = 0; row < 3; ++row) {
       for (int column = 0; column < 3; ++column) lattice[row] += matrix[row][column] * face_space[column];
     }
-    const auto [found, inserted] = welded.try_emplace(lattice, static_cast<std::uint32_t>(mesh.positions.size()));
+    const std::array<int, 3> key{lattice[0], lattice[1], key_without_z ? 0 : lattice[2]};
+    const auto [found, inserted] = welded.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
     if (inserted) {
       const Vec3 warped{warp(double(lattice[0]) / resolution), warp(double(lattice[1]) / resolution),
                         warp(double(lattice[2]) / resolution)};

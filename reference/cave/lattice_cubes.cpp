@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -125,6 +126,19 @@ std::uint32_t CaveMeshBuilder<Real>::edge_vertex(const LatticePoint& cube, const
   return vertex;
 }
 
+// The calibrated pair of the vertex model (parity.vertex_model.float_vs_double's rounding-only
+// bound): ref<float>'s t 2^-18 too large (above the bound), or one ulp too large (below it).
+namespace {
+template <class Real>
+Real calibrated_float_t(Real t) {
+  if constexpr (std::is_same_v<Real, float>) {
+    if (mutant_active("cave.marching_tetrahedra.float_t_off_above_bound")) return t + 0x1p-18f;
+    if (mutant_active("cave.marching_tetrahedra.float_t_one_ulp_below_bound")) return std::nextafter(t, 2.0f);
+  }
+  return t;
+}
+}  // namespace
+
 template <class Real>
 std::array<Real, 3> CaveMeshBuilder<Real>::vertex_position(const LatticePoint& lower, const LatticePoint& upper,
                                                            int direction) const {
@@ -137,6 +151,7 @@ std::array<Real, 3> CaveMeshBuilder<Real>::vertex_position(const LatticePoint& l
     t = std::clamp((threshold_ - lower_value) / (upper_value - lower_value), margin, Real(1) - margin);
     // The both-twins mutant vertex_wrong_end: t measured from the upper end (gpu/shaders/cave/lattice.glsl alike).
     if (mutant_active("cave.marching_tetrahedra.vertex_wrong_end")) t = Real(1) - t;
+    t = calibrated_float_t(t);
   }
   const LatticePoint step = corner_offset(direction);
   std::array<Real, 3> position{};

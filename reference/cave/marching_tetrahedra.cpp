@@ -21,6 +21,13 @@ CaseTable walked_case_table() {
   CaseTable table = tet_case_table;
   if (mutant_active("cave.marching_tetrahedra.quad_half")) table[5].triangle_count = 1;
   if (mutant_active("cave.marching_tetrahedra.complement_unreversed")) table[9] = table[6];
+  // Code 1's fan runs one step too far: a second triangle after its first, the first again
+  // (triangle_doubled) or its last corner repeated (fan_one_too_many). Either uses no new edge.
+  const std::array<int, 3> single = table[1].triangles[0];
+  if (mutant_active("cave.marching_tetrahedra.triangle_doubled")) table[1] = {2, {single, single}};
+  if (mutant_active("cave.marching_tetrahedra.fan_one_too_many")) {
+    table[1] = {2, {single, std::array<int, 3>{single[0], single[2], single[2]}}};
+  }
   if (mutant_active("cave.marching_tetrahedra.winding_reversed")) {
     for (TetCase& tet_case : table) {
       for (auto& triangle : tet_case.triangles) std::swap(triangle[1], triangle[2]);

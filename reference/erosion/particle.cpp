@@ -84,6 +84,7 @@ struct Kernel {
   bool kept_sediment_on_deposit = mutant_active("erosion.particle.kept_sediment_on_deposit");
   bool unbounded_erosion = mutant_active("erosion.particle.unbounded_erosion");
   bool colour_kept_whole = mutant_active("erosion.particle.colour_kept_whole");
+  bool step_by_velocity = mutant_active("erosion.particle.step_by_velocity");
 };
 
 template <class Real>
@@ -364,8 +365,8 @@ bool step(PassTerrain<Real>& terrain, Droplet<Real>& drop, const Kernel<Real>& k
     if (terrain.colours()) deposit_colour(terrain, drop, k);
     terrain.mark_deposited(drop.texel, add, quanta);
   }
-  drop.pos_x = drop.pos_x + norm_x;
-  drop.pos_y = drop.pos_y + norm_y;
+  drop.pos_x = drop.pos_x + (k.step_by_velocity ? drop.vel_x : norm_x);
+  drop.pos_y = drop.pos_y + (k.step_by_velocity ? drop.vel_y : norm_y);
   drop.texel = {static_cast<int>(drop.pos_x), static_cast<int>(drop.pos_y)};
   return !(drop.pos_x <= 0 || drop.pos_y <= 0);
 }

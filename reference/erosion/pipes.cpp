@@ -397,6 +397,7 @@ void PipeErosion<Real>::update_outflow() {
                          static_cast<Real>(gain / constants_.length_y),
                          diagonal_gain, diagonal_gain, diagonal_gain, diagonal_gain};
   const Real area_per_time = static_cast<Real>(constants_.cell_area / constants_.time_step);
+  const bool unscaled = mutant_active("erosion.pipe.unscaled_outflow");  // mutant: K = 1 (eq. 2.12 skipped)
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
       const std::size_t cell = terrain.index(x, y);
@@ -409,7 +410,8 @@ void PipeErosion<Real>::update_outflow() {
         tentative[k] = max(Real(0), state_.outflow[cell][k] + flux_gain[k] * head);
       }
       const Real total = pipe_sum(tentative, pipe_count());
-      const Real scale = total > Real(0) ? min(Real(1), water.values[cell] * area_per_time / total) : Real(1);
+      const Real scale = total > Real(0) && !unscaled ? min(Real(1), water.values[cell] * area_per_time / total)
+                                                      : Real(1);
       for (int k = 0; k < pipe_count(); ++k) state_.outflow[cell][k] = scale * tentative[k];
       drained_[cell] = scale < Real(1);
     }

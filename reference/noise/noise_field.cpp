@@ -6,9 +6,11 @@
 // (the grid's zero fill and the value), nothing read but the permutation tables.
 #include "reference/noise/noise_field.hpp"
 
+#include <type_traits>
 #include <vector>
 
 #include "core/noise/perlin_texture_table.hpp"
+#include "core/mutant.hpp"
 #include "core/noise/permutation.hpp"
 #include "reference/noise/fractal.hpp"
 #include "reference/noise/perlin.hpp"
@@ -77,6 +79,19 @@ class Evaluator {
 
 }  // namespace
 
+// A sample as stored. Mutants (the GPU twin makes the same changes, gpu/shaders/noise/noise_field.comp):
+// the calibrated pair of the float precision model, the float samples 2^-13 (above the bound) or
+// 2^-17 (below) high; and in both twins the texture convention v/2 + 1/2 instead of v.
+template <class Real>
+Real stored_sample(Real value) {
+  if constexpr (std::is_same_v<Real, float>) {
+    if (mutant_active("noise.perlin3.float_off_above_bound")) return value + 0x1p-13f;
+    if (mutant_active("noise.perlin3.float_off_below_bound")) return value + 0x1p-17f;
+  }
+  if (mutant_active("noise.perlin3.unit_interval")) return value * Real(0.5) + Real(0.5);
+  return value;
+}
+
 template <class Real>
 Grid<Real> noise_field(const NoiseParams& params, const std::array<double, 4>& origin) {
   const auto& sampling = params.sampling;
@@ -90,7 +105,7 @@ Grid<Real> noise_field(const NoiseParams& params, const std::array<double, 4>& o
       std::array<Real, 4> point = start;
       point[0] = start[0] + static_cast<Real>(i) * step;
       point[1] = start[1] + static_cast<Real>(j) * step;
-      field.at(i, j) = evaluate(point);
+      field.at(i, j) = stored_sample(evaluate(point));
     }
   }
   return field;

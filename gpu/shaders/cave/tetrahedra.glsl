@@ -73,12 +73,24 @@ int walked_triangle_count(uint code) {
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_QUAD_HALF
   if (code == 5u) return 1;  // the quad of code 5 loses its second triangle: holes
 #endif
+#if defined(GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_TRIANGLE_DOUBLED) || defined(GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_FAN_ONE_TOO_MANY)
+  if (code == 1u) return 2;  // code 1's fan runs one step too far (its second triangle below)
+#endif
   return TET_TRIANGLE_COUNT[code];
 }
 
 int walked_tet_edge(uint code, int triangle, int corner) {
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_COMPLEMENT_UNREVERSED
   if (code == 9u) code = 6u;  // 9 = 15 - 6 copied from 6 without reversing its polygon
+#endif
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_TRIANGLE_DOUBLED
+  if (code == 1u) triangle = 0;  // the second triangle is the first again: a duplicate
+#endif
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_FAN_ONE_TOO_MANY
+  if (code == 1u && triangle == 1) {  // the second triangle (first, last, last) of the first: degenerate
+    triangle = 0;
+    corner = corner == 0 ? 0 : 2;
+  }
 #endif
 #ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_WINDING_REVERSED
   if (corner != 0) corner = 3 - corner;  // every triangle's corners 0, 2, 1: normals into the rock

@@ -319,6 +319,9 @@ void main() {
 #endif
     }
 
+#ifdef GT_MUTANT_EROSION_PARTICLE_STEP_BY_VELOCITY
+    direction = velocity;  // the step taken by the velocity, not its direction
+#endif
     position = vec2(position.x + direction.x, position.y + direction.y);
     texel = ivec2(position);  // truncation
     if (position.x <= 0.0 || position.y <= 0.0) break;

@@ -40,10 +40,12 @@ void main() {
   }
   precise float total = pipe_total(tentative);
   precise float scale = 1.0;
+#ifndef GT_MUTANT_EROSION_PIPE_UNSCALED_OUTFLOW  // mutant: K = 1, a cell may send more than it holds
   if (total > 0.0) {
     precise float available = depth * area_per_time / total;
     scale = ref_min(1.0, available);
   }
+#endif
   for (int group = 0; group < pipe_groups; ++group) {
     precise vec4 scaled = vec4(scale * tentative[group][0], scale * tentative[group][1], scale * tentative[group][2],
                                scale * tentative[group][3]);

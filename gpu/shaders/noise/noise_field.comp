@@ -33,11 +33,26 @@ layout(std140, binding = 0) uniform NoiseFieldBlock {
 
 layout(std430, binding = 1) writeonly buffer Values { float values[]; };
 
+// A sample as stored. Mutants (reference/noise/noise_field.cpp makes the same changes): the
+// calibrated pair of the float precision model, the samples 2^-13 (above the bound) or 2^-17
+// (below) high; and in both twins the texture convention v/2 + 1/2 instead of v.
+float stored_sample(float value) {
+#if defined(GT_MUTANT_NOISE_PERLIN3_FLOAT_OFF_ABOVE_BOUND)
+  return value + 1.0 / 8192.0;
+#elif defined(GT_MUTANT_NOISE_PERLIN3_FLOAT_OFF_BELOW_BOUND)
+  return value + 1.0 / 131072.0;
+#elif defined(GT_MUTANT_NOISE_PERLIN3_UNIT_INTERVAL)
+  return value * 0.5 + 0.5;
+#else
+  return value;
+#endif
+}
+
 void main() {
   ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
   if (!inside_grid(cell, grid_size)) return;
   precise vec4 p = origin;
   p.x = origin.x + float(cell.x) * step;
   p.y = origin.y + float(cell.y) * step;
-  values[cell_index(cell, grid_size)] = NOISE_VALUE(p);
+  values[cell_index(cell, grid_size)] = stored_sample(NOISE_VALUE(p));
 }

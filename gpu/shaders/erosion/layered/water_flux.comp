@@ -28,7 +28,11 @@ void main() {
   }
   precise float leaving = time_step * (((flux[0] + flux[1]) + flux[2]) + flux[3]);
   precise float held = cell_area * depth;
+#ifdef GT_MUTANT_EROSION_LAYERED_GPU_FLUX_UNSCALED
+  bool drained = false;  // mutant (this twin alone): fluxes never scaled to what the column holds
+#else
   bool drained = leaving > held;
+#endif
   water_state[water_at(CURRENT, DRAINED, c)] = drained ? 1.0 : 0.0;
   if (drained) {
     float scale = gt_div(held, leaving);

@@ -62,5 +62,10 @@ void main() {
   }
   move_section(WATER, c, own, neighbours, arriving);
   for (int kind = 0; kind < CARRIED_KINDS; ++kind) move_section(CARRIED + uint(kind), c, own, neighbours, arriving);
+#ifdef GT_MUTANT_EROSION_LAYERED_GPU_PREVIOUS_AFTER_MOVE
+  // mutant (this twin alone): PREVIOUS takes the depth after the move, not before it
+  water_state[water_at(CURRENT, PREVIOUS, c)] = water_state[water_at(CURRENT, WATER, c)];
+#else
   water_state[water_at(CURRENT, PREVIOUS, c)] = water_state[water_at(SNAPSHOT, WATER, c)];
+#endif
 }
