@@ -358,8 +358,8 @@ TEST_F(ReportFiles, HtmlNamesEveryCaseAndEscapes) {
   EXPECT_NE(html.find("&lt;b&gt;far&lt;/b&gt;"), std::string::npos);
   EXPECT_EQ(html.find("<b>far"), std::string::npos);
   EXPECT_NE(html.find("llvmpipe (LLVM 15.0.6, 256 bits)"), std::string::npos);
-  EXPECT_NE(html.find("<img src=\"erosion.thermal.cardinal.volcano/before.png\""), std::string::npos);
-  EXPECT_EQ(html.find("<img src=\"erosion.thermal.cardinal.volcano/gpu.exr\""), std::string::npos);
+  EXPECT_NE(html.find("<img loading=\"lazy\" src=\"erosion.thermal.cardinal.volcano/before.png\""), std::string::npos);
+  EXPECT_EQ(html.find("src=\"erosion.thermal.cardinal.volcano/gpu.exr\""), std::string::npos);
   EXPECT_NE(html.find("plot unavailable: test"), std::string::npos);
   EXPECT_NE(html.find("64³"), std::string::npos);
   EXPECT_NE(html.find("not run: triangles need 444 MB"), std::string::npos);
@@ -385,9 +385,57 @@ TEST_F(ReportFiles, HtmlShowsAValueWithoutABoundAsInfo) {
   EXPECT_THAT(row_of("parity.bounded"), ::testing::HasSubstr("<span class=\"badge pass\">pass</span>"));
 }
 
+// What failed comes first (issue 37): a table of every check that did not pass, unexpected before
+// expected, with value, bound and reason, above the Cases table; the Cases table names each case's
+// failing checks; a case section opens with its checks, failing rows first, before any picture; an
+// expected outcome carries its reason; skips are counted by reason; every image loads lazily.
+TEST_F(ReportFiles, HtmlPutsWhatFailedFirst) {
+  Report report = sample_report();
+  Check listed = make_check("mesh.closed.cpu", 12.0, 0.0, Outcome::fail, "12 boundary edges");
+  listed.expected = Outcome::fail;
+  listed.expectation = "the seed's marching cubes leaves holes";
+  report.cases[5].checks = {listed};
+  report.cases[1].checks.push_back(make_check("mass.relative_drift.gpu", 1e-7, 1e-5, Outcome::pass));
+  std::swap(report.cases[1].checks.front(), report.cases[1].checks.back());  // the failing check last
+  report.cases[1].artifacts = {{"erosion.thermal.diagonal.volcano/after.png", "image", "after"}};
+  write_report_html(report, folder / "index.html");
+  const std::string html = read_text(folder / "index.html");
+  const auto failures = html.find("<section class=\"failures\">");
+  const auto failures_end = html.find("</section>", failures);
+  ASSERT_NE(failures, std::string::npos);
+  EXPECT_LT(failures, html.find("<h2>Cases</h2>"));
+  // The environment is one collapsed line above it.
+  EXPECT_LT(html.find("<details class=\"more\"><summary>Environment"), html.find("<table class=\"environment\">"));
+  const std::string block = html.substr(failures, failures_end - failures);
+  const auto unexpected = block.find("<td>parity.max_abs</td><td class=\"num\">0.5</td><td class=\"num\">≤ 0.001</td>");
+  const auto listed_row = block.find("<td>mesh.closed.cpu</td>");
+  EXPECT_NE(unexpected, std::string::npos) << block;
+  EXPECT_NE(listed_row, std::string::npos) << block;
+  EXPECT_LT(unexpected, listed_row) << "unexpected failures come before expected ones";
+  EXPECT_NE(block.find("the seed&#39;s marching cubes leaves holes"), std::string::npos) << block;
+  EXPECT_NE(block.find("<td>parity.rms</td>"), std::string::npos) << "a warn is listed too";
+  EXPECT_NE(block.find("1 check: no GL context"), std::string::npos) << "skips counted by reason";
+  EXPECT_NE(block.find("shader failed to compile"), std::string::npos) << "an error without checks says why";
+  EXPECT_EQ(block.find("mass.relative_drift.gpu"), std::string::npos) << "a pass is not listed";
+  const auto row = html.find("<a href=\"#case-erosion.thermal.diagonal.volcano\">", html.find("<h2>Cases</h2>"));
+  EXPECT_NE(html.substr(row, html.find("</tr>", row) - row).find("<td>parity.max_abs</td>"), std::string::npos);
+  const auto section = html.find("id=\"case-erosion.thermal.diagonal.volcano\"");
+  const auto checks = html.find("<table class=\"checks\">", section);
+  EXPECT_LT(checks, html.find("<img", section)) << "the verdicts come before the pictures";
+  EXPECT_LT(html.find("<td>parity.max_abs</td>", checks), html.find("<td>mass.relative_drift.gpu</td>", checks))
+      << "failing rows first";
+  for (auto at = html.find("<img"); at != std::string::npos; at = html.find("<img", at + 1)) {
+    const std::string lazy = "<img loading=\"lazy\" src=";
+    EXPECT_EQ(html.compare(at, lazy.size(), lazy), 0) << html.substr(at, 60);
+  }
+}
+
 TEST_F(ReportFiles, MarkdownHasSummaryDetailsAndBenchmarks) {
   write_report_markdown(sample_report(), folder / "report.md");
   const std::string markdown = read_text(folder / "report.md");
+  // Read in a terminal: markup in a detail is escaped CommonMark's way, never as an HTML entity.
+  EXPECT_NE(markdown.find("\\<b>far\\</b> apart & off"), std::string::npos) << markdown;
+  for (const char* entity : {"&lt;", "&gt;", "&amp;", "&#", "&quot;"}) EXPECT_EQ(markdown.find(entity), std::string::npos) << entity;
   EXPECT_NE(markdown.find("RUN FAILED"), std::string::npos);
   EXPECT_NE(markdown.find("### erosion.thermal.diagonal.volcano — fail"), std::string::npos);
   EXPECT_EQ(markdown.find("### erosion.thermal.cardinal.volcano"), std::string::npos);  // all checks pass
@@ -536,14 +584,14 @@ TEST_F(ReportFiles, HtmlShowsRenderedTwinsSideBySideWithTheirMetrics) {
   const std::string rendered = case_section(html, "render.terrain.volcano");
   ASSERT_FALSE(rendered.empty());
   ASSERT_EQ(count_of(rendered, "<div class=\"comparison\">"), 1);
-  // One row: reference, GPU, difference, verdicts, in that order, each titled and captioned, before
-  // the parameters and the checks.
+  // The checks first (what failed before the pictures), then one row: reference, GPU, difference,
+  // verdicts, in that order, each titled and captioned, then the parameters.
   std::vector<std::size_t> at;
-  for (const char* needle : {"<div class=\"role\">Reference (CPU)</div><a href=\"render.terrain.volcano/cpu.png\">",
+  for (const char* needle : {"<table class=\"checks\">", "<div class=\"role\">Reference (CPU)</div><a href=\"render.terrain.volcano/cpu.png\">",
                              "<div class=\"role\">GPU</div><a href=\"render.terrain.volcano/gpu.png\">",
                              "<div class=\"role\">Difference</div><a href=\"render.terrain.volcano/gpu_vs_cpu_heat.png\">",
                              "<div class=\"role\">Verdicts</div><a href=\"render.terrain.volcano/gpu_vs_cpu_mask.png\">",
-                             "<div class=\"metrics\">", "<dl class=\"params\">", "<table class=\"checks\">"}) {
+                             "<div class=\"metrics\">", "<dl class=\"params\">"}) {
     at.push_back(rendered.find(needle));
     EXPECT_NE(at.back(), std::string::npos) << needle;
   }
@@ -556,7 +604,7 @@ TEST_F(ReportFiles, HtmlShowsRenderedTwinsSideBySideWithTheirMetrics) {
   EXPECT_EQ(rendered.find("<div class=\"figures\">"), std::string::npos);
   EXPECT_NE(rendered.find("<a href=\"render.terrain.volcano/solid.ply\">"), std::string::npos);
   // The metrics under the pictures: five tiles coloured by outcome, with their units and bounds.
-  const std::string metrics = rendered.substr(at[4], at[5] - at[4]);
+  const std::string metrics = rendered.substr(at[5], at[6] - at[5]);
   EXPECT_EQ(count_of(metrics, "<div class=\"metric "), 5);
   EXPECT_EQ(count_of(metrics, "<div class=\"metric fail\""), 1);
   EXPECT_NE(metrics.find("<div class=\"label\">PSNR</div><div class=\"value\">92.7 dB</div>"

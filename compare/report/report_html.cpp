@@ -44,6 +44,11 @@ table.environment th { width: 9em; }
 .badge.skip { background: #757575; } .badge.inconclusive { background: #0277bd; } .badge.error { background: #6a1b9a; }
 .badge.flaky { background: #ef6c00; } .badge.zero { opacity: .35; }
 .badge.info { background: #eceff1; color: #37474f; border: 1px solid #b0bec5; }
+.badge.expected { background: #fff; color: #555; border: 1px dashed #888; font-weight: 500; }
+section.failures table td { font-size: .95em; } section.failures .detail { color: #444; }
+body.only-attention section.case.pass { display: none; } body.only-attention tr.case-row.pass { display: none; }
+label.filter { font-weight: 600; cursor: pointer; }
+details.more { margin: .6em 0; } details.more > summary { cursor: pointer; color: #1f4f8f; }
 .summary .badge { font-size: 1.05em; margin-right: .4em; }
 section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
 .note { color: #555; font-style: italic; }
@@ -90,11 +95,32 @@ std::string badge(Outcome outcome) {
   return fmt::format("<span class=\"badge {0}\">{0}</span>", outcome_name(outcome));
 }
 
-// A check's badge: a value shown without a bound is `info` (neutral), never a green pass.
+// A check's badge: a value shown without a bound is `info` (neutral), never a green pass; an
+// outcome the expectation list names is marked `expected`, with its reason on hover.
 std::string check_badge(const Check& check) {
   const bool informative = check.status == Outcome::pass && !check.threshold && !check.loose_threshold;
-  return informative ? std::string("<span class=\"badge info\">info</span>") : badge(check.status);
+  if (informative) return "<span class=\"badge info\">info</span>";
+  if (check.expected && *check.expected == check.status && check.status != Outcome::pass) {
+    return fmt::format("{} <span class=\"badge expected\" title=\"{}\">expected</span>", badge(check.status),
+                       h(check.expectation));
+  }
+  return badge(check.status);
 }
+
+// The checks a reader must look at, worst first (error, fail, flaky, skip, inconclusive, warn):
+// anything but a pass. Stable, so a case's own order holds within an outcome.
+std::vector<const Check*> checks_needing_attention(const CaseResult& result) {
+  std::vector<const Check*> checks;
+  for (const Check& check : result.checks) {
+    if (check.status != Outcome::pass) checks.push_back(&check);
+  }
+  std::stable_sort(checks.begin(), checks.end(), [](const Check* a, const Check* b) {
+    return worse(a->status, b->status) == a->status && a->status != b->status;
+  });
+  return checks;
+}
+
+bool expected(const Check& check) { return check.expected && *check.expected == check.status; }
 
 std::string anchor(const CaseResult& result) { return case_anchor(result.name); }
 
@@ -109,14 +135,14 @@ void append_header(std::string& out, const Report& report) {
   const Environment& environment = report.environment;
   out += fmt::format("<header>\n<h1>groundtruth report</h1>\n<div class=\"renderer\">GL renderer: {}</div>\n",
                      h(environment.gl_renderer));
-  out += "<table class=\"environment\">\n";
+  out += "<details class=\"more\"><summary>Environment, shaders and data files</summary>\n<table class=\"environment\">\n";
   for (const auto& [label, value] : environment_fields(environment)) {
     out += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", label, h(*value));
   }
   out += "</table>\n";
   append_digests(out, "shader stages compiled (SHA-256 after #include expansion)", environment.shaders);
   append_digests(out, "data files read (SHA-256)", environment.data);
-  out += "<p>Also as <a href=\"report.json\">report.json</a>, <a href=\"report.md\">report.md</a>, "
+  out += "</details>\n<p>Also as <a href=\"report.json\">report.json</a>, <a href=\"report.md\">report.md</a>, "
          "<a href=\"junit.xml\">junit.xml</a>.</p>\n</header>\n";
 }
 
@@ -131,19 +157,89 @@ void append_summary(std::string& out, const Report& report) {
   out += fmt::format("</p>\n<p>{}, expected failures: {}. Run <span class=\"badge {}\">{}</span></p>\n",
                      counted(counts.total(), "case"), counts.expected_failures, failed ? "fail" : "pass", failed ? "failed" : "ok");
   if (!report.scope.empty()) out += fmt::format("<p class=\"scope\">{}</p>\n", h(report.scope));
+  out += "<p><label class=\"filter\"><input type=\"checkbox\" "
+         "onchange=\"document.body.classList.toggle('only-attention', this.checked)\"> show only the cases that did "
+         "not pass</label></p>\n</section>\n";
+}
+
+// What failed and why, before anything else (pytest's short summary): every check that did not pass,
+// worst first and unexpected before expected, with its case, value, bound and the one-line reason;
+// every case that ended in an error without a failing check to say why; and the skipped checks
+// counted by their reason (a run without a GPU skips every GPU check: one line, not hundreds).
+void append_failures(std::string& out, const Report& report) {
+  struct Row {
+    const CaseResult* result;
+    const Check* check;
+  };
+  std::vector<Row> rows;
+  std::vector<const CaseResult*> errors_without_checks;
+  std::map<std::string, std::size_t> skipped_by_reason;
+  for (const CaseResult& result : report.cases) {
+    const auto checks = checks_needing_attention(result);
+    for (const Check* check : checks) {
+      if (check->status == Outcome::skip) {
+        ++skipped_by_reason[check->detail];
+      } else {
+        rows.push_back({&result, check});
+      }
+    }
+    if (result.status == Outcome::error && checks.empty()) errors_without_checks.push_back(&result);
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
+    if (expected(*a.check) != expected(*b.check)) return !expected(*a.check);
+    return worse(a.check->status, b.check->status) == a.check->status && a.check->status != b.check->status;
+  });
+  out += "<section class=\"failures\">\n<h2>What did not pass, and why</h2>\n";
+  for (const auto& [reason, count] : skipped_by_reason) {
+    out += fmt::format("<p>{} {}: {}</p>\n", badge(Outcome::skip), counted(count, "check"), h(reason));
+  }
+  if (rows.empty() && errors_without_checks.empty()) {
+    out += skipped_by_reason.empty() ? "<p>Every check passed.</p>\n</section>\n"
+                                     : "<p>Every check that ran passed.</p>\n</section>\n";
+    return;
+  }
+  for (const CaseResult* result : errors_without_checks) {
+    out += fmt::format("<p>{} <a href=\"#{}\">{}</a>: {}</p>\n", badge(result->status), anchor(*result), h(result->name),
+                       h(result->error.empty() ? "no check ran" : result->error.substr(0, result->error.find('\n'))));
+  }
+  if (!rows.empty()) {
+    out += "<table>\n<tr><th>status</th><th>case</th><th>check</th><th>value</th><th>bound</th><th>why</th></tr>\n";
+    for (const Row& row : rows) {
+      out += fmt::format("<tr><td>{}</td><td><a href=\"#{}\">{}</a></td><td>{}</td><td class=\"num\">{}</td>"
+                         "<td class=\"num\">{}</td><td class=\"detail\">{}</td></tr>\n",
+                         check_badge(*row.check), anchor(*row.result), h(row.result->name), h(row.check->name),
+                         format_value(row.check->value), h(format_bounds(*row.check)),
+                         h(expected(*row.check) ? row.check->expectation : row.check->detail));
+    }
+    out += "</table>\n";
+  }
   out += "</section>\n";
+}
+
+// The names of a case's checks that failed or errored, for the Cases table: the first three and a count.
+std::string failing_check_names(const CaseResult& result) {
+  std::vector<std::string> names;
+  for (const Check* check : checks_needing_attention(result)) {
+    if (check->status == Outcome::fail || check->status == Outcome::error) names.push_back(check->name);
+  }
+  std::string text;
+  for (std::size_t i = 0; i < std::min<std::size_t>(names.size(), 3); ++i) text += (i ? ", " : "") + names[i];
+  if (names.size() > 3) text += fmt::format(" and {} more", names.size() - 3);
+  return text;
 }
 
 void append_case_table(std::string& out, const Report& report) {
   out += "<section>\n<h2>Cases</h2>\n<table>\n<tr><th>status</th><th>case</th><th>algorithm</th><th>input</th>"
-         "<th>size</th><th>cpu ms</th><th>gpu ms</th><th>checks</th></tr>\n";
+         "<th>size</th><th>cpu ms</th><th>gpu ms</th><th>checks</th><th>failing checks</th></tr>\n";
   for (const CaseResult& result : report.cases) {
     out += fmt::format(
-        "<tr><td>{}{}</td><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td><td class=\"num\">{}</td>"
-        "<td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td></tr>\n",
-        badge(result.status), result.expected_failure.empty() ? "" : " expected", anchor(result), h(result.name),
-        h(result.algorithm), h(result.input), h(case_size_text(result)), format_ms(result.timings.cpu_ms),
-        format_ms(result.timings.gpu_ms), h(format_counts(count_check_outcomes(result), " · ")));
+        "<tr class=\"case-row {}\"><td>{}{}</td><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td><td class=\"num\">{}</td>"
+        "<td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
+        outcome_name(result.status), badge(result.status),
+        result.expected_failure.empty() ? "" : " <span class=\"badge expected\">expected</span>", anchor(result),
+        h(result.name), h(result.algorithm), h(result.input), h(case_size_text(result)), format_ms(result.timings.cpu_ms),
+        format_ms(result.timings.gpu_ms), h(format_counts(count_check_outcomes(result), " · ")),
+        h(failing_check_names(result)));
   }
   out += "</table>\n</section>\n";
 }
@@ -164,7 +260,7 @@ void append_params(std::string& out, const nlohmann::json& params) {
 }
 
 void append_figure(std::string& out, const Artifact& artifact, std::string_view figure_class) {
-  out += fmt::format("<figure class=\"{}\"><a href=\"{}\"><img src=\"{}\" alt=\"{}\"></a><figcaption>{}</figcaption></figure>\n",
+  out += fmt::format("<figure class=\"{}\"><a href=\"{}\"><img loading=\"lazy\" src=\"{}\" alt=\"{}\"></a><figcaption>{}</figcaption></figure>\n",
                      figure_class, url(artifact.path), url(artifact.path), h(artifact.caption), h(artifact.caption));
 }
 
@@ -175,7 +271,7 @@ void append_panel(std::string& out, std::string_view role, const Artifact* artif
                        h(role), h(missing));
     return;
   }
-  out += fmt::format("<figure class=\"panel\"><div class=\"role\">{}</div><a href=\"{}\"><img src=\"{}\" alt=\"{}\"></a>"
+  out += fmt::format("<figure class=\"panel\"><div class=\"role\">{}</div><a href=\"{}\"><img loading=\"lazy\" src=\"{}\" alt=\"{}\"></a>"
                      "<figcaption>{}</figcaption></figure>\n",
                      h(role), url(artifact->path), url(artifact->path), h(artifact->caption), h(artifact->caption));
 }
@@ -223,8 +319,8 @@ void append_artifacts(std::string& out, const CaseResult& result, const std::vec
     }
   }
   if (!figures.empty()) out += fmt::format("<div class=\"figures\">\n{}</div>\n", figures);
-  if (!plots.empty()) out += fmt::format("<div class=\"figures\">\n{}</div>\n", plots);
-  if (!links.empty()) out += fmt::format("<ul class=\"files\">\n{}</ul>\n", links);
+  if (!plots.empty()) out += fmt::format("<details class=\"more\"><summary>Plots</summary>\n<div class=\"figures\">\n{}</div>\n</details>\n", plots);
+  if (!links.empty()) out += fmt::format("<details class=\"more\"><summary>Field files</summary>\n<ul class=\"files\">\n{}</ul>\n</details>\n", links);
 }
 
 void append_checks(std::string& out, const CaseResult& result) {
@@ -233,7 +329,12 @@ void append_checks(std::string& out, const CaseResult& result) {
     return;
   }
   out += "<table class=\"checks\">\n<tr><th>check</th><th>value</th><th>bound</th><th>status</th><th>detail</th></tr>\n";
+  std::vector<const Check*> ordered = checks_needing_attention(result);
   for (const Check& check : result.checks) {
+    if (check.status == Outcome::pass) ordered.push_back(&check);
+  }
+  for (const Check* listed : ordered) {
+    const Check& check = *listed;
     out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
                        h(check.name), format_value(check.value), h(format_bounds(check)), check_badge(check),
                        h(check.detail));
@@ -299,8 +400,8 @@ void append_timings(std::string& out, const Timings& timings) {
 }
 
 void append_case_section(std::string& out, const CaseResult& result) {
-  out += fmt::format("<section class=\"case\" id=\"{}\">\n<h2>{} {}</h2>\n", anchor(result), badge(result.status),
-                     h(result.name));
+  out += fmt::format("<section class=\"case {}\" id=\"{}\">\n<h2>{} {}</h2>\n", outcome_name(result.status),
+                     anchor(result), badge(result.status), h(result.name));
   const std::string grid = result.width == 0 && result.height == 0 ? "" : fmt::format(" ({})", case_size_text(result));
   out += fmt::format("<p>{} on {}{}</p>\n", h(result.algorithm), h(result.input), h(grid));
   if (!result.notes.empty()) {
@@ -313,15 +414,15 @@ void append_case_section(std::string& out, const CaseResult& result) {
   }
   if (!result.error.empty()) out += fmt::format("<pre class=\"error\">{}</pre>\n", h(result.error));
   for (const auto& line : attempt_lines(result)) out += fmt::format("<p class=\"note\">{}</p>\n", h(line));
+  append_checks(out, result);
   std::vector<const Artifact*> shown;
   if (const auto comparison = image_comparison(result)) {
     append_comparison(out, *comparison);
     shown = {comparison->reference, comparison->gpu, comparison->difference, comparison->mask};
   }
-  append_params(out, result.params);
   append_artifacts(out, result, shown);
+  append_params(out, result.params);
   append_descriptors(out, result);
-  append_checks(out, result);
   append_timings(out, result.timings);
   out += "</section>\n";
 }
@@ -462,6 +563,7 @@ void write_report_html(const Report& report, const std::filesystem::path& file) 
   std::string out = page_head("groundtruth report", style);
   append_header(out, report);
   append_summary(out, report);
+  append_failures(out, report);
   append_baseline(out, report);
   append_expectation_problems(out, report);
   append_case_table(out, report);

@@ -2,7 +2,11 @@
 //
 // Sections: environment, summary line, case table, one section per case that has something
 // other than passing checks (error, expectation, warn/fail/skip checks), benchmark table, plots.
-// Table cells escape '|' and '<' and fold line breaks into spaces.
+// Table cells escape '|' and a '<' that could open an HTML tag (before a letter, '/', '!' or '?') with
+// a backslash, CommonMark's escape, which reads as itself in a terminal (no HTML entities), and fold
+// line breaks into spaces.
+#include <cctype>
+
 #include <fmt/format.h>
 
 #include "compare/report/report_common.hpp"
@@ -16,12 +20,19 @@ namespace {
 
 using namespace report_detail;
 
+bool opens_a_tag(std::string_view text, std::size_t at) {
+  if (at + 1 >= text.size()) return false;
+  const char next = text[at + 1];
+  return std::isalpha(static_cast<unsigned char>(next)) || next == '/' || next == '!' || next == '?';
+}
+
 std::string cell(std::string_view text) {
   std::string escaped;
-  for (char c : text) {
+  for (std::size_t at = 0; at < text.size(); ++at) {
+    const char c = text[at];
     switch (c) {
       case '|': escaped += "\\|"; break;
-      case '<': escaped += "&lt;"; break;
+      case '<': escaped += opens_a_tag(text, at) ? "\\<" : "<"; break;
       case '\n':
       case '\r': escaped += ' '; break;
       default: escaped += c;
