@@ -87,6 +87,7 @@ TEST(Mutants, ErosionPipeIsKilled) {
   for (const char* check : {"mass.water_balance.gpu", "stability.max_cfl.gpu"}) {
     EXPECT_TRUE(killed_by(mutation, "erosion.pipe.unscaled_outflow", check)) << check;
   }
+  EXPECT_TRUE(killed_by(mutation, "erosion.pipe.gravity_in_cgs", "stability.pipe_wave_number"));
   for (const auto& mutant : mutation.value("mutants", json::array())) {
     if (mutant.at("kind") != "one-twin") continue;
     bool on_a_dem = false;
@@ -148,6 +149,11 @@ TEST(Mutants, PlanetFamilyIsKilled) {
   const json mutation = expect_every_mutant_killed({"planet.*"});
   for (const char* check : {"mesh.degenerate.planet", "mesh.duplicates.planet", "topology.mesh_vertices"}) {
     EXPECT_TRUE(killed_by(mutation, "planet.mesh.key_without_z", check)) << check;
+  }
+  expect_killed_near_the_bound(mutation, "planet.jitter.float_off_above_bound", "parity.positions.float_vs_double");
+  EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.unwarp_over_tan", "topology.round_trip"));
+  for (const char* check : {"topology.asymmetric_neighbours", "partition.disconnected_plates.gpu"}) {
+    EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.overshoot_doubled", check)) << check;
   }
 }
 

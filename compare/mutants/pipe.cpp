@@ -12,7 +12,8 @@
 // was asked, computed on the host: mass.water_added.* (rain, rain map and sources asked for),
 // mass.evaporation.* (K_e·Δt of the water held), mass.material_drift.* (the flux form
 // conserves material), mass.water_balance.* (the water held against what was added, evaporated and
-// let out) and stability.max_cfl.* (the K scaling keeps Δt·|u|/l at most 1).
+// let out), stability.max_cfl.* (the K scaling keeps Δt·|u|/l at most 1) and
+// stability.pipe_wave_number (the scheme's gravity waves, from the constants alone).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -40,6 +41,9 @@ std::vector<Mutant> pipe_mutants() {
       {"erosion.pipe.unscaled_outflow", MutantKind::both_twins,
        "the outflow is never scaled by K (eq. 2.12 skipped): a cell may send more water than it holds (ref "
        "update_outflow, pipes_outflow.comp)",
+       flux_probe},
+      {"erosion.pipe.gravity_in_cgs", MutantKind::both_twins,
+       "g taken in cm/s² (981) where the pipe model works in metres (core/params/hydraulic.cpp, which both twins read)",
        flux_probe},
       {"erosion.pipe.half_rain", MutantKind::both_twins,
        "the rain pass adds Δt·(r + r_map)/2 (ref add_water, pipes_water.comp)", flux_probe},

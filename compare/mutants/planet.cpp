@@ -6,13 +6,15 @@
 // pressure term, far beyond the error model's per-region bound), parity.voronoi.gpu_vs_cpu (a label
 // farther than the exact nearest centroid), parity.plate_cycles.gpu_vs_cpu (a count off by one),
 // image.psnr.gpu_vs_cpu (the rendered planet's colours),
-// determinism.gpu (state carried from one run into the next).
+// determinism.gpu (state carried from one run into the next); and the calibrated pair of the float
+// position model in both float twins, parity.positions.float_vs_double.
 //
 // both_twins: the same bug in the reference and the shader (or in the cube sphere both share),
 // killed by checks against what was asked: spec.expansion_rate.cpu (rings per cycle average to the
 // rate), spec.smoothing_constant.cpu (the mean of a constant), spec.pressure_symmetry.cpu (the
 // pressure of a pair both ways), partition.edge_definition.cpu (is_edge against its definition,
-// written apart), topology.* (neighbour counts and symmetry of the shared table),
+// written apart), partition.disconnected_plates.* (a plate grows through its own neighbours only),
+// topology.* (neighbour counts and symmetry of the shared table, the map's round trip),
 // mesh.*.planet (the planet mesh's orientation).
 #include "compare/mutants/mutants.hpp"
 
@@ -28,6 +30,15 @@ std::vector<Mutant> planet_mutants() {
        probe},
       {"planet.collision.gpu_neighbour_sign", MutantKind::one_twin,
        "elevation_collision.comp projects the neighbour's chord on d instead of −d", probe},
+      // The calibrated pair of the float position model (parity.positions.float_vs_double: 32u =
+      // 1.9e-06), in both float twins so that only the comparison with ref<double> can see it.
+      {"planet.jitter.float_off_above_bound", MutantKind::one_twin,
+       "ref<float>'s and the GPU's region positions times 1 + 2^-17", probe},
+      {.name = "planet.jitter.float_off_below_bound",
+       .kind = MutantKind::one_twin,
+       .description = "ref<float>'s and the GPU's region positions times 1 + 2^-23, one rounding",
+       .cases = probe,
+       .must_survive = true},
       {"planet.plates.ceil_rate", MutantKind::both_twins,
        "both twins grow ceil(rate) rings a cycle (the extra ring's draw can never win)", probe},
       {"planet.collision.neighbour_sign", MutantKind::both_twins,
@@ -50,6 +61,10 @@ std::vector<Mutant> planet_mutants() {
        probe},
       {"planet.mesh.key_without_z", MutantKind::both_twins,
        "the planet mesh welds its corners on (X, Y) alone: corners that differ only in Z become one vertex", probe},
+      {"planet.cube_sphere.unwarp_over_tan", MutantKind::both_twins,
+       "the inverse warp divides by tan θ instead of θ (core/planet/cube_sphere.cpp, which both twins share)", probe},
+      {"planet.cube_sphere.overshoot_doubled", MutantKind::both_twins,
+       "a neighbour across a face edge is folded twice as far down the next face (the shared neighbour table)", probe},
       {"planet.cube_sphere.no_wrap", MutantKind::both_twins,
        "the shared neighbour table leaves out neighbours across the cube's edges", probe},
   };

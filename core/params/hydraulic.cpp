@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 #include "core/rounding_interval.hpp"
 
 namespace gt {
@@ -112,7 +113,8 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
 
   PipeConstants constants;
   constants.time_step = params.time_step;
-  constants.gravity = params.gravity;
+  // Mutant erosion.pipe.gravity_in_cgs: g read in cm/s² (both twins take their constants from here).
+  constants.gravity = mutant_active("erosion.pipe.gravity_in_cgs") ? 100.0 * params.gravity : params.gravity;
   constants.length_x = terrain.cell_size_x;
   constants.length_y = terrain.cell_size_y;
   constants.length_diagonal = std::hypot(terrain.cell_size_x, terrain.cell_size_y);

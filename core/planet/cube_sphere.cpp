@@ -59,7 +59,11 @@ const FaceMatrix& face_matrix(CubeFace face) { return face_matrices[static_cast<
 
 double warp(double t) { return std::tan(warp_angle * t) / std::tan(warp_angle); }
 
-double unwarp(double u) { return std::atan(u * std::tan(warp_angle)) / warp_angle; }
+// Mutant planet.cube_sphere.unwarp_over_tan (both twins share this): divided by tan θ instead of θ.
+double unwarp(double u) {
+  const double divisor = mutant_active("planet.cube_sphere.unwarp_over_tan") ? std::tan(warp_angle) : warp_angle;
+  return std::atan(u * std::tan(warp_angle)) / divisor;
+}
 
 Vec3 cube_point(const LocalPosition& local) {
   return to_cube(local.face, {2.0 * local.a - 1.0, 1.0 - 2.0 * local.b, 1.0});
@@ -88,8 +92,10 @@ std::optional<LocalPosition> wrap(const LocalPosition& local) {
   const double u_over = std::abs(u_clamped - u), v_over = std::abs(v_clamped - v);
   if (u_over == 0.0 && v_over == 0.0) return local;
   if (u_over > 0.0 && v_over > 0.0) return std::nullopt;  // over a corner
-  // Fold the overshoot down the edge onto the neighbouring face (an isometric unfolding).
-  const Vec3 folded = to_cube(local.face, {u_clamped, v_clamped, 1.0 - (u_over + v_over)});
+  // Fold the overshoot down the edge onto the neighbouring face (an isometric unfolding). Mutant
+  // planet.cube_sphere.overshoot_doubled (the table is shared): folded twice as far down.
+  const double overshoot = (u_over + v_over) * (mutant_active("planet.cube_sphere.overshoot_doubled") ? 2.0 : 1.0);
+  const Vec3 folded = to_cube(local.face, {u_clamped, v_clamped, 1.0 - overshoot});
   const CubeFace face = face_of(folded);
   const Vec3 face_space = to_face_space(face, folded);
   return local_of_face_space(face, face_space[0], face_space[1]);

@@ -2,7 +2,9 @@
 #include "reference/planet/jitter.hpp"
 
 #include <cmath>
+#include <type_traits>
 
+#include "core/mutant.hpp"
 #include "core/rng.hpp"
 
 namespace gt::reference {
@@ -14,6 +16,18 @@ Real jittered_offset(const PlanetParams& params, std::size_t region, std::uint32
   const Real draw = static_cast<Real>(uniform01(random_u32(params.seed, static_cast<std::uint32_t>(region), axis,
                                                            planet_stream_jitter)));
   return Real(0.5) + (draw - Real(0.5)) * static_cast<Real>(params.jitter);
+}
+
+// The calibrated pair of the float position model (32u, planet_error_model.hpp), in both float
+// twins (gpu/shaders/planet/jitter.comp alike): each component times 1 + 2^-17 (4 times the bound
+// at |p| = 1) or 1 + 2^-23 (one rounding).
+template <class Real>
+Real calibrated(Real component) {
+  if constexpr (std::is_same_v<Real, float>) {
+    if (mutant_active("planet.jitter.float_off_above_bound")) return component * (1.0f + 0x1p-17f);
+    if (mutant_active("planet.jitter.float_off_below_bound")) return component * (1.0f + 0x1p-23f);
+  }
+  return component;
 }
 
 // f(t) = tan(θt)/tan θ, with tan θ rounded to Real once.
@@ -47,7 +61,7 @@ JitteredRegions<Real> jitter_regions(const CubeSphere& sphere, const PlanetParam
     const Real inverse_length = Real(1) / std::sqrt(cube[0] * cube[0] + cube[1] * cube[1] + cube[2] * cube[2]);
     regions.offsets[2 * region] = offset_a;
     regions.offsets[2 * region + 1] = offset_b;
-    for (int axis = 0; axis < 3; ++axis) regions.positions[3 * region + axis] = cube[axis] * inverse_length;
+    for (int axis = 0; axis < 3; ++axis) regions.positions[3 * region + axis] = calibrated(cube[axis] * inverse_length);
   }
   return regions;
 }

@@ -38,6 +38,21 @@ vec3 to_cube(int face, vec3 face_space) {
   return cube;
 }
 
+// The calibrated pair of the float position model (32u, planet_error_model.hpp), in both float
+// twins (reference/planet/jitter.cpp alike): each component times 1 + 2^-17 (4 times the bound at
+// |p| = 1) or 1 + 2^-23 (one rounding).
+vec3 calibrated(vec3 position) {
+#if defined(GT_MUTANT_PLANET_JITTER_FLOAT_OFF_ABOVE_BOUND)
+  precise vec3 scaled = position * (1.0 + 1.0 / 131072.0);
+  return scaled;
+#elif defined(GT_MUTANT_PLANET_JITTER_FLOAT_OFF_BELOW_BOUND)
+  precise vec3 scaled = position * (1.0 + 1.0 / 8388608.0);
+  return scaled;
+#else
+  return position;
+#endif
+}
+
 void main() {
   int region = int(gl_GlobalInvocationID.x);
   if (region >= region_count) return;
@@ -57,5 +72,5 @@ void main() {
   vec3 cube = to_cube(region / per_face, vec3(warped(u), warped(v), 1.0));
   offsets[2 * region] = offset_a;
   offsets[2 * region + 1] = offset_b;
-  positions[region] = vec4(normalise(cube), 0.0);
+  positions[region] = vec4(calibrated(normalise(cube)), 0.0);
 }
