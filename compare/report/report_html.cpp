@@ -95,12 +95,17 @@ std::string badge(Outcome outcome) {
   return fmt::format("<span class=\"badge {0}\">{0}</span>", outcome_name(outcome));
 }
 
+// Whether the expectation list names the outcome this check had.
+bool expected(const Check& check) { return check.expected && *check.expected == check.status; }
+
+bool strictly_worse(Outcome a, Outcome b) { return a != b && worse(a, b) == a; }
+
 // A check's badge: a value shown without a bound is `info` (neutral), never a green pass; an
 // outcome the expectation list names is marked `expected`, with its reason on hover.
 std::string check_badge(const Check& check) {
   const bool informative = check.status == Outcome::pass && !check.threshold && !check.loose_threshold;
   if (informative) return "<span class=\"badge info\">info</span>";
-  if (check.expected && *check.expected == check.status && check.status != Outcome::pass) {
+  if (expected(check) && check.status != Outcome::pass) {
     return fmt::format("{} <span class=\"badge expected\" title=\"{}\">expected</span>", badge(check.status),
                        h(check.expectation));
   }
@@ -114,13 +119,10 @@ std::vector<const Check*> checks_needing_attention(const CaseResult& result) {
   for (const Check& check : result.checks) {
     if (check.status != Outcome::pass) checks.push_back(&check);
   }
-  std::stable_sort(checks.begin(), checks.end(), [](const Check* a, const Check* b) {
-    return worse(a->status, b->status) == a->status && a->status != b->status;
-  });
+  std::stable_sort(checks.begin(), checks.end(),
+                   [](const Check* a, const Check* b) { return strictly_worse(a->status, b->status); });
   return checks;
 }
-
-bool expected(const Check& check) { return check.expected && *check.expected == check.status; }
 
 std::string anchor(const CaseResult& result) { return case_anchor(result.name); }
 
@@ -187,7 +189,7 @@ void append_failures(std::string& out, const Report& report) {
   }
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
     if (expected(*a.check) != expected(*b.check)) return !expected(*a.check);
-    return worse(a.check->status, b.check->status) == a.check->status && a.check->status != b.check->status;
+    return strictly_worse(a.check->status, b.check->status);
   });
   out += "<section class=\"failures\">\n<h2>What did not pass, and why</h2>\n";
   for (const auto& [reason, count] : skipped_by_reason) {
