@@ -143,6 +143,8 @@ TEST(Mutants, CaveFamilyIsKilled) {
   }
   expect_killed_near_the_bound(mutation, "cave.marching_tetrahedra.float_t_off_above_bound",
                                "parity.vertex_model.float_vs_double");
+  expect_killed_near_the_bound(mutation, "cave.marching_tetrahedra.float_density_off_above_bound",
+                               "parity.density.float_vs_double");
 }
 TEST(Mutants, RenderFamilyIsKilled) { expect_every_mutant_killed({"render.*"}); }
 TEST(Mutants, PlanetFamilyIsKilled) {
