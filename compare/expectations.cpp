@@ -152,7 +152,7 @@ std::vector<std::string> apply_expectations(const std::vector<Expectation>& expe
     bool unexpected = false;
     for (const Check& check : result.checks) {
       if (check.status != Outcome::fail && check.status != Outcome::error) continue;
-      if (check.expected == check.status) {
+      if (met_expectation(check)) {
         if (std::find(reasons.begin(), reasons.end(), check.expectation) == reasons.end()) {
           reasons.push_back(check.expectation);
         }

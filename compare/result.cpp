@@ -60,11 +60,13 @@ Outcome case_outcome(const CaseResult& result) {
   return !result.earlier_attempts.empty() && !is_failure(outcome) ? worse(outcome, Outcome::flaky) : outcome;
 }
 
+bool met_expectation(const Check& check) { return check.expected == check.status; }
+
 bool failed_unexpectedly(const CaseResult& result) {
   if (!result.error.empty()) return true;
   if (result.status == Outcome::flaky && result.known_flake.empty()) return true;
   return std::any_of(result.checks.begin(), result.checks.end(),
-                     [](const Check& check) { return is_failure(check.status) && check.expected != check.status; });
+                     [](const Check& check) { return is_failure(check.status) && !met_expectation(check); });
 }
 
 bool run_failed(const Report& report) {

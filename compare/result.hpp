@@ -227,6 +227,9 @@ struct Report {
 // Outcome of a whole case from its checks (and the expectation list).
 Outcome case_outcome(const CaseResult& result);
 
+// Whether the expectation list names the outcome this check had.
+bool met_expectation(const Check& check);
+
 // The case's failed and errored checks as "name = value (bound b)", in check order.
 std::vector<std::string> failing_checks(const CaseResult& result);
 

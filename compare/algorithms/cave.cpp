@@ -147,7 +147,7 @@ double density_precision(const Block& block, const Volume<double>& density) {
 // the threshold (or its float rounding): the only ones that may be rock in one precision and air
 // in the other.
 std::vector<std::array<std::int64_t, 3>> possible_side_changes(const Volume<double>& truth, double density_error,
-                                                      const CaveParams& params) {
+                                                               const CaveParams& params) {
   std::vector<std::array<std::int64_t, 3>> changes;
   const double reach = density_error + unit_roundoff_float * std::abs(params.threshold);
   for (int z = 0; z < truth.nz; ++z) {

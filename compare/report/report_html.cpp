@@ -95,9 +95,6 @@ std::string badge(Outcome outcome) {
   return fmt::format("<span class=\"badge {0}\">{0}</span>", outcome_name(outcome));
 }
 
-// Whether the expectation list names the outcome this check had.
-bool expected(const Check& check) { return check.expected && *check.expected == check.status; }
-
 bool strictly_worse(Outcome a, Outcome b) { return a != b && worse(a, b) == a; }
 
 // A check's badge: a value shown without a bound is `info` (neutral), never a green pass; an
@@ -105,7 +102,7 @@ bool strictly_worse(Outcome a, Outcome b) { return a != b && worse(a, b) == a; }
 std::string check_badge(const Check& check) {
   const bool informative = check.status == Outcome::pass && !check.threshold && !check.loose_threshold;
   if (informative) return "<span class=\"badge info\">info</span>";
-  if (expected(check) && check.status != Outcome::pass) {
+  if (met_expectation(check) && check.status != Outcome::pass) {
     return fmt::format("{} <span class=\"badge expected\" title=\"{}\">expected</span>", badge(check.status),
                        h(check.expectation));
   }
@@ -188,7 +185,7 @@ void append_failures(std::string& out, const Report& report) {
     if (result.status == Outcome::error && checks.empty()) errors_without_checks.push_back(&result);
   }
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
-    if (expected(*a.check) != expected(*b.check)) return !expected(*a.check);
+    if (met_expectation(*a.check) != met_expectation(*b.check)) return !met_expectation(*a.check);
     return strictly_worse(a.check->status, b.check->status);
   });
   out += "<section class=\"failures\">\n<h2>What did not pass, and why</h2>\n";
@@ -211,7 +208,7 @@ void append_failures(std::string& out, const Report& report) {
                          "<td class=\"num\">{}</td><td class=\"detail\">{}</td></tr>\n",
                          check_badge(*row.check), anchor(*row.result), h(row.result->name), h(row.check->name),
                          format_value(row.check->value), h(format_bounds(*row.check)),
-                         h(expected(*row.check) ? row.check->expectation : row.check->detail));
+                         h(met_expectation(*row.check) ? row.check->expectation : row.check->detail));
     }
     out += "</table>\n";
   }

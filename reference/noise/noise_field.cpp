@@ -9,8 +9,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "core/noise/perlin_texture_table.hpp"
 #include "core/mutant.hpp"
+#include "core/noise/perlin_texture_table.hpp"
 #include "core/noise/permutation.hpp"
 #include "reference/noise/fractal.hpp"
 #include "reference/noise/perlin.hpp"
