@@ -17,6 +17,7 @@
 #include <fmt/ranges.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <tiffio.h>
 
 #include "core/errors.hpp"
 #include "core/grid.hpp"
@@ -510,6 +511,44 @@ TEST(RealDems, LuxembourgIsAGeoTiffWithNoData) {
   EXPECT_TRUE(has_note_containing(read, "GDAL_NODATA -32768: 3942 cells invalid"))
       << fmt::format("{}", fmt::join(read.notes, "; "));
   EXPECT_TRUE(has_note_containing(read, "geographic CRS"));
+}
+
+// libgeotiff and GDAL register the GeoTIFF tags with libtiff in a process that loads them (rasterio
+// beside the Python module): the array tags then pass a 16-bit count and GDAL_NODATA comes as a C
+// string, where an unregistered tag passes a 32-bit count. Registered here as they do (xtiff.c,
+// GDAL's GTiffTagExtender), the file must read as it does without them.
+TIFFExtendProc extender_before = nullptr;
+
+void register_geotiff_tags_as_gdal_does(TIFF* tiff) {
+  static const TIFFFieldInfo fields[] = {
+      {33550, TIFF_VARIABLE, TIFF_VARIABLE, TIFF_DOUBLE, FIELD_CUSTOM, 1, 1, const_cast<char*>("GeoPixelScale")},
+      {33922, TIFF_VARIABLE, TIFF_VARIABLE, TIFF_DOUBLE, FIELD_CUSTOM, 1, 1, const_cast<char*>("GeoTiePoints")},
+      {34735, TIFF_VARIABLE, TIFF_VARIABLE, TIFF_SHORT, FIELD_CUSTOM, 1, 1, const_cast<char*>("GeoKeyDirectory")},
+      {42113, TIFF_VARIABLE, TIFF_VARIABLE, TIFF_ASCII, FIELD_CUSTOM, 1, 0, const_cast<char*>("GDALNoDataValue")}};
+  TIFFMergeFieldInfo(tiff, fields, sizeof fields / sizeof fields[0]);
+  if (extender_before != nullptr) extender_before(tiff);
+}
+
+TEST(RealDems, LuxembourgReadsTheSameWhereGdalRegisteredTheGeoTiffTags) {
+  const fs::path file = real_data_dir / "elev.tif";
+  ASSERT_TRUE(fs::exists(file)) << file << " is missing: run datasets/fetch.sh";
+  const HeightmapFile plain = read_heightmap(file);
+  extender_before = TIFFSetTagExtender(register_geotiff_tags_as_gdal_does);
+  HeightmapFile registered;
+  try {
+    registered = read_heightmap(file);
+  } catch (...) {
+    TIFFSetTagExtender(extender_before);
+    throw;
+  }
+  TIFFSetTagExtender(extender_before);
+  EXPECT_EQ(registered.format, "geotiff");
+  EXPECT_EQ(registered.notes, plain.notes);
+  EXPECT_TRUE(has_note_containing(registered, "GDAL_NODATA -32768: 3942 cells invalid"));
+  EXPECT_EQ(registered.heights.cell_size_x, plain.heights.cell_size_x);
+  EXPECT_EQ(registered.heights.cell_size_y, plain.heights.cell_size_y);
+  EXPECT_EQ(registered.heights.values, plain.heights.values);
+  EXPECT_EQ(registered.heights.valid, plain.heights.valid);
 }
 
 }  // namespace

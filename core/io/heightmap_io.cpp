@@ -87,18 +87,47 @@ int collect_tiff_error(TIFF*, void* messages, const char* module, const char* fo
 // Unknown-tag warnings are expected: every GeoTIFF tag is unknown to libtiff.
 int ignore_tiff_warning(TIFF*, void*, const char*, const char*, va_list) { return 1; }
 
-// Values of an array tag stored as `type`; empty when the file lacks the tag.
+// Values of an array tag stored as `type`; empty when the file lacks the tag. libtiff passes the
+// count of a tag it does not know as 32 bits; where libgeotiff registered the GeoTIFF tags in this
+// process (GDAL loaded beside us, e.g. by rasterio in a Python session) as 16 bits.
 template <class T>
 std::vector<T> tiff_array_tag(TIFF* tiff, std::uint32_t tag, TIFFDataType type, const path& file) {
   const TIFFField* field = TIFFFindField(tiff, tag, TIFF_ANY);
   if (field == nullptr) return {};
-  if (TIFFFieldDataType(field) != type || !TIFFFieldPassCount(field) || TIFFFieldSetGetCountSize(field) != 4) {
+  const int count_size = TIFFFieldSetGetCountSize(field);
+  if (TIFFFieldDataType(field) != type || !TIFFFieldPassCount(field) || (count_size != 2 && count_size != 4)) {
     throw InputError(fmt::format("{}: TIFF tag {} has an unexpected type or layout", file.string(), tag));
   }
-  std::uint32_t count = 0;
   T* data = nullptr;
-  if (!TIFFGetField(tiff, tag, &count, &data) || data == nullptr) return {};
+  std::uint32_t count = 0;
+  if (count_size == 2) {
+    std::uint16_t short_count = 0;
+    if (!TIFFGetField(tiff, tag, &short_count, &data)) return {};
+    count = short_count;
+  } else if (!TIFFGetField(tiff, tag, &count, &data)) {
+    return {};
+  }
+  if (data == nullptr) return {};
   return {data, data + count};
+}
+
+// The text of an ASCII tag, nullopt when the file lacks it. libtiff passes a tag it does not know
+// with its count; one GDAL registered in this process (its GDAL_NODATA) as a C string, which
+// libtiff ends with a NUL on reading.
+std::optional<std::string> tiff_text_tag(TIFF* tiff, std::uint32_t tag, const path& file) {
+  const TIFFField* field = TIFFFindField(tiff, tag, TIFF_ANY);
+  if (field == nullptr) return std::nullopt;
+  if (TIFFFieldPassCount(field)) {
+    const std::vector<char> text = tiff_array_tag<char>(tiff, tag, TIFF_ASCII, file);
+    if (text.empty()) return std::nullopt;
+    return std::string(text.begin(), std::find(text.begin(), text.end(), '\0'));
+  }
+  if (TIFFFieldDataType(field) != TIFF_ASCII) {
+    throw InputError(fmt::format("{}: TIFF tag {} has an unexpected type or layout", file.string(), tag));
+  }
+  const char* text = nullptr;
+  if (!TIFFGetField(tiff, tag, &text) || text == nullptr || *text == '\0') return std::nullopt;
+  return std::string(text);
 }
 
 // A TIFF names where its pixel data lie (strip or tile offsets and byte counts); OpenImageIO reads
@@ -158,8 +187,7 @@ GeoTiffTags read_geotiff_tags(const path& file) {
   tags.pixel_scale = tiff_array_tag<double>(tiff.get(), model_pixel_scale_tag, TIFF_DOUBLE, file);
   tags.tiepoint = tiff_array_tag<double>(tiff.get(), model_tiepoint_tag, TIFF_DOUBLE, file);
   tags.geo_keys = tiff_array_tag<std::uint16_t>(tiff.get(), geo_key_directory_tag, TIFF_SHORT, file);
-  const std::vector<char> no_data = tiff_array_tag<char>(tiff.get(), gdal_nodata_tag, TIFF_ASCII, file);
-  if (!no_data.empty()) tags.no_data = std::string(no_data.begin(), std::find(no_data.begin(), no_data.end(), '\0'));
+  tags.no_data = tiff_text_tag(tiff.get(), gdal_nodata_tag, file);
   if (!tags.pixel_scale.empty() && tags.pixel_scale.size() < 2) {
     throw InputError(fmt::format("{}: ModelPixelScale holds {} values, expected 3", file.string(),
                                  tags.pixel_scale.size()));
