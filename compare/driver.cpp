@@ -570,7 +570,7 @@ class CaseRunner {
     context_opened_ = true;
     Environment& environment = report_.environment;
     if (options_.backends == Backends::cpu) {
-      run_options_.gpu_unavailable_reason = "GPU backend not requested (--backend cpu)";
+      run_options_.gpu_unavailable_reason = gpu_not_requested;
     } else {
       try {
         context_ = GlContext::create(options_.gl);

@@ -53,10 +53,18 @@ std::optional<Outcome> outcome_from_name(const std::string& name) {
 
 Outcome worse(Outcome a, Outcome b) { return severity(a) >= severity(b) ? a : b; }
 
+bool left_out_by_request(const Check& check) {
+  return check.status == Outcome::skip && check.detail == gpu_not_requested;
+}
+
 Outcome case_outcome(const CaseResult& result) {
   if (!result.error.empty()) return Outcome::error;
-  Outcome outcome = result.checks.empty() ? Outcome::skip : Outcome::pass;
-  for (const Check& check : result.checks) outcome = worse(outcome, check.status);
+  const bool any_ran = std::any_of(result.checks.begin(), result.checks.end(),
+                                   [](const Check& check) { return !left_out_by_request(check); });
+  Outcome outcome = any_ran ? Outcome::pass : Outcome::skip;
+  for (const Check& check : result.checks) {
+    if (!left_out_by_request(check)) outcome = worse(outcome, check.status);
+  }
   return !result.earlier_attempts.empty() && !is_failure(outcome) ? worse(outcome, Outcome::flaky) : outcome;
 }
 

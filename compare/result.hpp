@@ -224,7 +224,15 @@ struct Report {
   std::string scope;
 };
 
-// Outcome of a whole case from its checks (and the expectation list).
+// Why a GPU check is skipped when the user asked for the references alone (--backend cpu).
+inline constexpr const char* gpu_not_requested = "GPU backend not requested (--backend cpu)";
+
+// Whether the user left this check out (a skip for gpu_not_requested): shown with why, but not
+// part of the case's outcome, which the checks that ran decide.
+bool left_out_by_request(const Check& check);
+
+// Outcome of a whole case from its checks (and the expectation list): the worst of the checks not
+// left out by request (skip when there are none).
 Outcome case_outcome(const CaseResult& result);
 
 // Whether the expectation list names the outcome this check had.

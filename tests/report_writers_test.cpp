@@ -173,6 +173,20 @@ TEST(Outcomes, CaseOutcomeFromChecks) {
   EXPECT_EQ(case_outcome(result), Outcome::error);
 }
 
+// --backend cpu: the GPU checks the user left out are shown as skips with why, and the references'
+// checks decide the case; a GPU half skipped for want of a context still makes it a skip.
+TEST(Outcomes, ChecksLeftOutByRequestDoNotDecideTheCase) {
+  CaseResult result;
+  result.checks = {make_check("parity.gpu_vs_float", 0, {}, Outcome::skip, gpu_not_requested)};
+  EXPECT_EQ(case_outcome(result), Outcome::skip);  // nothing ran
+  result.checks.push_back(make_check("mass.relative_drift.cpu", 0, 1, Outcome::pass));
+  EXPECT_EQ(case_outcome(result), Outcome::pass);
+  result.checks.push_back(make_check("spec.cpu", 2, 1, Outcome::warn));
+  EXPECT_EQ(case_outcome(result), Outcome::warn);
+  result.checks.push_back(make_check("determinism.gpu", 0, {}, Outcome::skip, "no GL context: no EGL display"));
+  EXPECT_EQ(case_outcome(result), Outcome::skip);
+}
+
 TEST(Outcomes, RunFailsOnUnlistedFailuresErrorsAndBrokenExpectations) {
   auto run_with = [](Outcome status, std::optional<Outcome> expected) {
     Report report;

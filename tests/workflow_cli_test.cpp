@@ -137,9 +137,10 @@ std::vector<pid_t> await_workers(const fs::path& folder, const std::string& case
   return workers;
 }
 
-// A case of a --backend cpu run that ran: its CPU checks pass, its GPU half is skipped as asked.
+// A case of a --backend cpu run that ran: its CPU checks pass, its GPU half is skipped as asked
+// (shown as skips, not deciding the case).
 void expect_ran_on_the_cpu(const json& entry) {
-  EXPECT_EQ(entry["status"], "skip") << entry["name"];
+  EXPECT_EQ(entry["status"], "pass") << entry["name"];
   const auto& checks = entry["checks"];
   EXPECT_TRUE(std::any_of(checks.begin(), checks.end(), [](const json& check) { return check["status"] == "pass"; }))
       << entry["name"];
