@@ -9,8 +9,13 @@
 //   run_case(...)                one ad-hoc case into a report folder; returns the exit status
 //                                (0: nothing unexpected failed, 1: something did). With `external`
 //                                (a callable returning a model with bmipy's methods) that model is
-//                                graded where the GPU twin stands (python_bmi_model.hpp)
+//                                graded where the GPU twin stands (python_bmi_model.hpp). With
+//                                `vary` (name=v1,v2,... each) the case is the base of a sweep
+//                                (compare/sweep.hpp: sweep.json, sweep.csv, sweep.html), with `a` and
+//                                `b` (name=value each) of an A/B comparison (compare/ab.hpp: ab.json),
+//                                as `groundtruth sweep` and `groundtruth ab` make them
 //   dataset_dir()                the bundled and fetched data sets (datasets/ of the checkout)
+//   command_line()               the `groundtruth` executable built beside this module
 //   require_memory(count, unit, bytes_each, what)  core/memory.hpp's gate (InputError when the
 //                                estimate exceeds what this process may use), for the Python side
 //   ReferenceModel(algorithm, double)  a stepped algorithm's reference behind the BMI
@@ -34,10 +39,12 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "compare/ab.hpp"
 #include "compare/algorithm.hpp"
 #include "compare/driver.hpp"
 #include "compare/external/reference_bmi.hpp"
 #include "compare/output_folder.hpp"
+#include "compare/sweep.hpp"
 #include "core/errors.hpp"
 #include "core/memory.hpp"
 #include "core/mutant.hpp"
@@ -77,6 +84,10 @@ struct CaseCall {
   py::object external;         // None, or a callable returning an outside model (bmipy's methods)
   std::string external_label;  // the name it is shown by
   std::filesystem::path scratch;  // the caller's temporary folder, removed too if a signal ends the process
+  std::vector<std::string> vary;  // a sweep: name=v1,v2,... per varied parameter (none: not a sweep)
+  bool force = false;             // a sweep of more runs than compare/sweep.hpp's cap
+  std::vector<std::string> a;     // an A/B comparison: A's name=value assignments, then B's
+  std::vector<std::string> b;
 };
 
 // The command line refuses these in its option parser (--size, --cell-size): the same limits.
@@ -93,10 +104,23 @@ void check_grid_options(const CaseCall& call) {
   }
 }
 
+// The call's case as the driver runs it: one ad-hoc case, the base of a sweep, or of an A/B pair.
+void set_cases(const CaseCall& call, const gt::AdHocCase& base, gt::DriverOptions& options) {
+  const bool ab = !call.a.empty() || !call.b.empty();
+  if (ab && !call.vary.empty()) throw gt::InputError("a call is a sweep (vary) or an A/B comparison (a, b), not both");
+  if (ab) {
+    options.sweep = gt::make_ab(base, call.a, call.b);
+  } else if (!call.vary.empty()) {
+    options.sweep = gt::make_sweep(base, call.vary, call.force);
+  } else {
+    options.ad_hoc = base;
+  }
+}
+
 int run_case(const CaseCall& call) {
   check_grid_options(call);
   gt::DriverOptions options;
-  options.ad_hoc = gt::AdHocCase{.algorithm = call.algorithm,
+  const gt::AdHocCase base{.algorithm = call.algorithm,
                                  .input = call.input,
                                  .width = call.width,
                                  .height = call.height,
@@ -104,6 +128,7 @@ int run_case(const CaseCall& call) {
                                  .cell_size_y = call.cell_size_y.value_or(0.0),
                                  .assignments = call.assignments,
                                  .red_channel = call.red_channel};
+  set_cases(call, base, options);
   options.backends = parse_backends(call.backend);
   options.gl = gt::parse_gl_backend(call.gl);
   options.mutant = call.mutant;
@@ -145,6 +170,7 @@ PYBIND11_MODULE(_core, module) {
     return list.dump();
   });
   module.def("dataset_dir", [] { return std::filesystem::path(GT_DATASET_DIR); });
+  module.def("command_line", [] { return std::filesystem::path(GT_COMMAND_LINE); });
   module.def("require_memory", [](double count, const std::string& unit, double bytes_each, const std::string& what) {
     gt::require_memory(gt::memory_for(count, unit, bytes_each), what);
   });
@@ -181,14 +207,17 @@ PYBIND11_MODULE(_core, module) {
          const std::vector<std::string>& assignments, bool red_channel, const std::string& backend,
          const std::string& gl, const std::string& mutant, bool require_gpu, bool quiet, bool pictures,
          bool descriptors, std::optional<int> reps, const std::filesystem::path& out, const std::string& command_line,
-         const py::object& external, const std::string& external_label, const std::filesystem::path& scratch) {
+         const py::object& external, const std::string& external_label, const std::filesystem::path& scratch,
+         const std::vector<std::string>& vary, bool force, const std::vector<std::string>& a,
+         const std::vector<std::string>& b) {
         return run_case({algorithm, input, width, height, cell_size, cell_size_y, assignments, red_channel, backend, gl, mutant,
                          require_gpu, quiet, pictures, descriptors, reps, out, command_line, external, external_label,
-                         scratch});
+                         scratch, vary, force, a, b});
       },
       py::arg("algorithm"), py::arg("input"), py::arg("width"), py::arg("height"), py::arg("cell_size"), py::arg("cell_size_y"),
       py::arg("assignments"), py::arg("red_channel"), py::arg("backend"), py::arg("gl"), py::arg("mutant"),
       py::arg("require_gpu"), py::arg("quiet"), py::arg("pictures"), py::arg("descriptors"), py::arg("reps"),
       py::arg("out"), py::arg("command_line"), py::arg("external") = py::none(), py::arg("external_label") = "",
-      py::arg("scratch") = std::filesystem::path());
+      py::arg("scratch") = std::filesystem::path(), py::arg("vary") = std::vector<std::string>(),
+      py::arg("force") = false, py::arg("a") = std::vector<std::string>(), py::arg("b") = std::vector<std::string>());
 }

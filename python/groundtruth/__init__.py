@@ -36,18 +36,34 @@ import json
 import numbers
 import os
 import pathlib
+import sys
 import tempfile
 
-import numpy
+from ._build import PYTHON_VERSION as _BUILT_FOR, VERSION as __version__
 
-from . import _core
+if tuple(sys.version_info[:2]) != tuple(_BUILT_FOR):
+    raise ImportError(f"groundtruth {__version__} was built for Python {_BUILT_FOR[0]}.{_BUILT_FOR[1]}, and this is "
+                      f"Python {sys.version_info[0]}.{sys.version_info[1]} ({sys.executable}): run it with Python "
+                      f"{_BUILT_FOR[0]}.{_BUILT_FOR[1]}, or build it for this one (cmake --preset release "
+                      f"-DGT_PYTHON={sys.executable}; docs/python.md)")
+try:
+    import numpy
+except ImportError:
+    raise ImportError("groundtruth needs numpy: apt install python3-numpy (for Debian's Python, or a venv made with "
+                      "--system-site-packages), or pip install numpy") from None
+
+from . import _core, _geo, _optional, _tables
 from ._core import InputError
+from ._geo import Georeference
 
-__all__ = ["DATASETS", "InputError", "Result", "algorithms", "check", "parameters", "run"]
+__all__ = ["COMMAND_LINE", "DATASETS", "Georeference", "InputError", "Result", "ab", "algorithms", "check", "parameters", "run",
+           "sweep"]
 
 # The data sets of the checkout the module was built from: bundled ones and those
 # datasets/fetch.sh brought (e.g. DATASETS / "real/volcano.json").
 DATASETS = pathlib.Path(_core.dataset_dir())
+# The `groundtruth` command line built with this module (a sweep's page, a whole report).
+COMMAND_LINE = pathlib.Path(_core.command_line())
 
 
 def algorithms():
@@ -64,7 +80,7 @@ def parameters(algorithm):
 class Result:
     """One case's outcome, checks, ledger, timings and fields (see the module's documentation)."""
 
-    def __init__(self, case, fields, field_info, grid, report):
+    def __init__(self, case, fields, field_info, grid, report, georeference=None):
         self.case = case["name"]
         self.algorithm = case["algorithm"]
         self.status = case["status"]
@@ -79,6 +95,9 @@ class Result:
         self.field_info = field_info
         self.grid = grid
         self.report = report
+        # Where the input's cells lie (a DataArray's coordinates and attributes, a rasterio dataset's
+        # transform, CRS and no-data value), for to_xarray and to_geotiff; None for a bare array.
+        self.georeference = georeference
         # What the case wrote (pictures, meshes, field files, plots) with its kind and caption; paths
         # in the report folder, so only with `out` (a temporary report is gone on return).
         self.artifacts = [] if report is None else [
@@ -94,6 +113,23 @@ class Result:
     def failed(self):
         """The checks whose outcome is fail."""
         return [check for check in self.checks if check["status"] == "fail"]
+
+    def checks_table(self):
+        """The checks as a pandas DataFrame indexed by name: status, value, bound, loose_bound,
+        expected and reason (needs pandas)."""
+        return _tables.checks_frame(self.checks)
+
+    def to_xarray(self):
+        """The fields as an xarray.Dataset: one variable per field over (backend, rows, columns), the
+        backends input, cpu, cpu_float, gpu (those the case has; NaN where a field lacks one), units
+        and meanings as attributes, the input's coordinates and attributes kept (needs xarray)."""
+        return _geo.to_dataset(self)
+
+    def to_geotiff(self, path, field="terrain", backend="cpu", overwrite=False):
+        """Writes field[backend] as a GeoTIFF with the input's transform, CRS and no-data value,
+        atomically; refuses to replace an existing file unless overwrite (needs rasterio). Returns
+        the path."""
+        return _geo.write_geotiff(self, path, field, backend, overwrite)
 
     def __repr__(self):
         fields = ", ".join(f"{name}[{'/'.join(backends)}]" for name, backends in self.fields.items())
@@ -195,56 +231,129 @@ def _load_fields(case_folder):
     return fields, info, described.get("grid", {})
 
 
-def run(algorithm, heights=None, *, cell_size=None, backend="both", size=(256, 256), red_channel=False,
-        mutant=None, require_gpu=False, gl="egl", out=None, quiet=True, pictures=True, descriptors=True, reps=None,
-        quick=False, _external=None, _external_label="", **params):
-    """Runs `algorithm` on `heights` as one ad-hoc case and returns its Result.
+def _georeferenced(heights, cell_size):
+    """(heights, cell size, Georeference or None, notes): a DataArray's or a rasterio dataset's
+    values and spacing (groundtruth._geo's conventions), a GeoTIFF path's georeferencing, or the
+    input as given."""
+    if _geo.is_dataarray(heights):
+        return _geo.from_dataarray(heights, cell_size)
+    if _geo.is_rasterio_dataset(heights):
+        return _geo.from_rasterio(heights, cell_size)
+    if isinstance(heights, (str, os.PathLike)):
+        return heights, cell_size, _geo.from_path(heights), []
+    return heights, cell_size, None, []
 
-    backend: "cpu" (the references, double and float), "gpu", or "both" (the twins and every check
-    between them). size: (width, height) of a generator's grid. red_channel: take a colour image
-    file's red channel as height. mutant: a registered deliberate bug (`groundtruth mutants
-    --list`) for this call only. require_gpu: a missing GL context makes the case `error` rather
-    than `skip`. gl: "egl" or "osmesa". out: a folder to keep the report in (written atomically;
-    an existing report there is replaced). quiet: no progress lines on stderr and no summary on
-    stdout (the notes of decisions taken for you are printed on stderr either way, and are in
-    result.notes).
-    Cost: pictures=False draws no pictures of the fields (the fields, checks and report stay),
-    descriptors=False computes no terrain descriptors (nor their checks), reps sets the timed
-    repetitions of each twin (0: untimed, one run each; None: 3 CPU, 5 GPU), and quick=True is all
-    three cheap (pictures=False, descriptors=False, reps=0) for a notebook loop or a property test.
-    Bad input raises InputError with the command line's message.
-    """
+
+def _drive(algorithm, heights, read, *, _call, cell_size=None, backend="both", size=(256, 256), red_channel=False,
+           mutant=None, require_gpu=False, gl="egl", out=None, quiet=True, pictures=True, descriptors=True, reps=None,
+           quick=False, _external=None, _external_label="", _vary=(), _force=False, _a=(), _b=(), **params):
+    """Runs the driver once (one case, a sweep's runs or an A/B pair) on `heights` into `out` or a
+    temporary report folder, and returns read(report folder, Georeference, notes) before that
+    folder is removed. `_call` is the Python call as the report's command line shows it; _vary,
+    _force, _a and _b make it a sweep or an A/B pair (the underscores keep them apart from the
+    algorithm's parameters)."""
     if quick:
         pictures, descriptors, reps = False, False, 0
     if reps is not None and (isinstance(reps, bool) or not isinstance(reps, numbers.Integral)):
         raise InputError(f"reps {reps!r}: expected a whole number of timed repetitions (0: untimed) or None")
     assignments = [f"{name}={_parameter_text(name, value)}" for name, value in params.items()]
+    heights, cell_size, georeference, notes = _georeferenced(heights, cell_size)
     width, height = size
     with tempfile.TemporaryDirectory(prefix="groundtruth-") as scratch:
         scratch = pathlib.Path(scratch)
         saved = None
-        conversions = []
         if heights is None:
             input_path = ""
         elif isinstance(heights, (str, os.PathLike)):
             input_path = os.fspath(heights)
         else:
             saved, conversions = _save_heights(heights, scratch)
+            notes += conversions
             input_path = str(saved)
         report = pathlib.Path(out) if out is not None else scratch / "report"
-        command = f"groundtruth.run({algorithm!r}, backend={backend!r}{''.join(', ' + a for a in assignments)})"
+        command = f"{_call}({algorithm!r}, backend={backend!r}{''.join(', ' + a for a in assignments)})"
         try:
             _core.run_case(algorithm, input_path, int(width), int(height), *_cell_sizes(cell_size), assignments,
                            bool(red_channel), backend, gl, mutant or "", bool(require_gpu), bool(quiet),
                            bool(pictures), bool(descriptors), None if reps is None else int(reps), report, command,
-                           _external, _external_label, scratch)
+                           _external, _external_label, scratch, list(_vary), bool(_force), list(_a), list(_b))
         except InputError as error:
-            # The driver names the file it read; the caller gave an array.
-            raise InputError(str(error).replace(str(saved), "heights") if saved else str(error)) from None
+            # The driver names the file it read; the caller gave an array. A Python call forces a
+            # sweep with an argument, not an option.
+            message = str(error).replace(str(saved), "heights") if saved else str(error)
+            raise InputError(message.replace("pass --force", "pass force=True")) from None
+        return read(report, georeference, notes)
+
+
+def run(algorithm, heights=None, **kwargs):
+    """Runs `algorithm` on `heights` as one ad-hoc case and returns its Result.
+
+    heights: a numpy array, a path, None (see the module's documentation), an xarray.DataArray
+    (its coordinates give the cell size; _FillValue/nodata cells are no-data; its dimensions,
+    coordinates and attributes come back in result.to_xarray()) or an open rasterio dataset (band
+    1; its transform gives the cell size, its mask the no-data; result.to_geotiff writes a field
+    back with its transform, CRS and no-data value). A GeoTIFF path's georeferencing is kept too
+    when rasterio is installed.
+    Keyword arguments: cell_size (metres, or (dx, dy)); backend: "cpu" (the references, double and
+    float), "gpu", or "both" (the twins and every check between them). size: (width, height) of a
+    generator's grid. red_channel: take a colour image file's red channel as height. mutant: a
+    registered deliberate bug (`groundtruth mutants --list`) for this call only. require_gpu: a
+    missing GL context makes the case `error` rather than `skip`. gl: "egl" or "osmesa". out: a
+    folder to keep the report in (written atomically; an existing report there is replaced).
+    quiet: no progress lines on stderr and no summary on stdout (the notes of decisions taken for
+    you are printed on stderr either way, and are in result.notes).
+    Cost: pictures=False draws no pictures of the fields (the fields, checks and report stay),
+    descriptors=False computes no terrain descriptors (nor their checks), reps sets the timed
+    repetitions of each twin (0: untimed, one run each; None: 3 CPU, 5 GPU), and quick=True is all
+    three cheap (pictures=False, descriptors=False, reps=0) for a notebook loop or a property test.
+    Every other keyword is a parameter of the algorithm (`parameters(algorithm)`).
+    Bad input raises InputError with the command line's message.
+    """
+    def read(report, georeference, notes):
         case = json.loads((report / "report.json").read_text())["cases"][0]
-        case["notes"] = conversions + case.get("notes", [])
+        case["notes"] = notes + case.get("notes", [])
         fields, field_info, grid = _load_fields(report / case["name"])
-        return Result(case, fields, field_info, grid, report if out is not None else None)
+        return Result(case, fields, field_info, grid, report if kwargs.get("out") is not None else None, georeference)
+    return _drive(algorithm, heights, read, _call="groundtruth.run", **kwargs)
+
+
+def _values_text(name, values):
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        raise InputError(f"vary[{name!r}]: a list of values, not {values!r}")
+    values = [_parameter_text(name, value) for value in values]
+    if not values or any("," in value for value in values):
+        raise InputError(f"vary[{name!r}]: one value or more, none holding a comma")
+    return f"{name}={','.join(values)}"
+
+
+def sweep(algorithm, heights=None, vary=None, *, force=False, **kwargs):
+    """Runs `algorithm` on `heights` for every combination of the `vary` values ({name: [values]})
+    as `groundtruth sweep --vary` does, and returns its table (sweep.json) as a pandas DataFrame:
+    one row per run with the varied parameters, case, outcome, seconds, cpu_ms, gpu_ms, every
+    check's value and every descriptor of ref<double>'s result (descriptor.<group>.<name>); NaN
+    where a run has none. More than 64 runs need force=True. The other keywords are run()'s
+    (quick=True per run, out= keeps sweep.html with its plots); needs pandas."""
+    _optional.require("pandas", "groundtruth.sweep")
+    if not isinstance(vary, dict) or not vary:
+        raise InputError("vary: a dict of parameter name -> list of values, e.g. {'talus_angle': [30, 35, 40]}")
+    texts = [_values_text(name, values) for name, values in vary.items()]
+    return _drive(algorithm, heights, lambda report, *_: _tables.sweep_frame(report), _call="groundtruth.sweep",
+                  _vary=texts, _force=force, **kwargs)
+
+
+def ab(algorithm, heights=None, a=None, b=None, **kwargs):
+    """Runs two variants of `algorithm` on `heights`, A with the parameters `a` ({name: value}) and
+    B with `b`, as `groundtruth ab` does, and returns its table (ab.json) as a pandas DataFrame
+    indexed by metric with columns a, b and b_minus_a, the metrics that moved first; frame.attrs
+    holds each side's case, assignments and outcome. The other keywords are run()'s; needs pandas."""
+    _optional.require("pandas", "groundtruth.ab")
+    sides = []
+    for side, values in (("a", a), ("b", b)):
+        if not isinstance(values, dict):
+            raise InputError(f"{side}: a dict of parameter name -> value, e.g. {{'talus_angle': 30}}")
+        sides.append([f"{name}={_parameter_text(name, value)}" for name, value in values.items()])
+    return _drive(algorithm, heights, lambda report, *_: _tables.ab_frame(report), _call="groundtruth.ab",
+                  _a=sides[0], _b=sides[1], **kwargs)
 
 
 class _StepModel:

@@ -3,6 +3,7 @@ module (for the tests that hold Python's messages against the CLI's), and the fl
 bound of the fields the module hands back."""
 
 import pathlib
+import re
 import subprocess
 
 import numpy
@@ -10,8 +11,8 @@ import pytest
 
 import groundtruth
 
-# The module lives in <build>/python/groundtruth/; the command line in <build>/groundtruth.
-CLI = pathlib.Path(groundtruth._core.__file__).resolve().parents[2] / "groundtruth"
+# The command line built with the module (in <build>/groundtruth, wherever the module is installed).
+CLI = groundtruth.COMMAND_LINE
 
 # Fields come back as float32 (.npy files of compare/field_files.hpp), the double reference's as
 # float64: each value is the double rounded to nearest, off by at most half an ulp, 2^-24 of its
@@ -46,3 +47,22 @@ def cli_message(arguments):
 def out(tmp_path):
     """A report folder the test keeps (the module writes nothing else)."""
     return tmp_path / "report"
+
+
+def readme_block(language, title):
+    """The README's first code block of `language` under its heading `title` (a step of the
+    tutorial, "### 4. Check your own implementation", is found by "Check your own implementation"),
+    up to the next heading of that level or above."""
+    readme = (pathlib.Path(__file__).resolve().parents[2] / "README.md").read_text()
+    level, section, in_code = None, [], False
+    for line in readme.splitlines(keepends=True):
+        in_code ^= line.startswith("```")
+        heading = None if in_code else re.match(r"(#+) (?:\d+\. )?(.*)$", line)
+        if level is None:
+            if heading and heading.group(2) == title:
+                level = len(heading.group(1))
+        elif heading and len(heading.group(1)) <= level:
+            break
+        else:
+            section.append(line)
+    return "".join(section).split(f"```{language}\n", 1)[1].split("```", 1)[0]

@@ -3,9 +3,7 @@ examples/python passes and its leaky variant fails the ledger; a model with the 
 driven the same way; models that break the rules are refused naming what is wrong; the pytest
 helper lists the failing checks."""
 
-import os
 import pathlib
-import re
 import subprocess
 import sys
 import tempfile
@@ -16,7 +14,7 @@ import pytest
 import groundtruth
 import groundtruth.bmi
 from groundtruth.testing import assert_matches_reference
-from conftest import CLI
+from conftest import CLI, readme_block
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "examples" / "python"))
 from thermal_numpy import thermal_step, thermal_step_leaky  # noqa: E402
@@ -126,37 +124,18 @@ def test_the_reference_behind_the_bmi_passes_its_own_round_trip(precision, versu
     assert seen["determinism.external"] == "pass"
 
 
-def readme_block(language):
-    """The README's first code block of `language` under its heading "Check your own implementation"
-    (a step of the tutorial: "### 4. Check your own implementation"), up to the next heading of
-    that level or above."""
-    readme = (pathlib.Path(__file__).resolve().parents[2] / "README.md").read_text()
-    level, section, in_code = None, [], False
-    for line in readme.splitlines(keepends=True):
-        in_code ^= line.startswith("```")
-        heading = None if in_code else re.match(r"(#+) (?:\d+\. )?(.*)$", line)
-        if level is None:
-            if heading and heading.group(2) == "Check your own implementation":
-                level = len(heading.group(1))
-        elif heading and len(heading.group(1)) <= level:
-            break
-        else:
-            section.append(line)
-    return "".join(section).split(f"```{language}\n", 1)[1].split("```", 1)[0]
-
-
 def test_the_readme_examples_run_as_written():
     """The README's Python block, run from the root of the checkout, prints what its comments say; its
     command line, with `groundtruth` and build/release/ this build's, passes."""
     root = pathlib.Path(__file__).resolve().parents[2]
-    ran = subprocess.run([sys.executable, "-c", readme_block("python")], cwd=root, capture_output=True, text=True,
-                         timeout=600, env=dict(os.environ, PYTHONPATH=str(CLI.parent / "python")))
+    ran = subprocess.run([sys.executable, "-c", readme_block("python", "Check your own implementation")], cwd=root,
+                         capture_output=True, text=True, timeout=600)
     assert ran.returncode == 0, ran.stderr
     lines = ran.stdout.splitlines()
     assert lines[0] == "pass pass"
     assert lines[1].startswith("fail [") and "'mass.relative_drift.external'" in lines[1]
     assert lines[2] == "pass"
-    command = readme_block("sh").replace("\\\n", " ").split()
+    command = readme_block("sh", "Check your own implementation").replace("\\\n", " ").split()
     assert command[:2] == ["groundtruth", "run"]
     build = CLI.parent
     arguments = [word.replace("build/release/", f"{build}/") for word in command[1:]]
