@@ -587,6 +587,27 @@ std::string case_section(const std::string& html, const std::string& name) {
   return html.substr(start, html.find("</section>", start) - start);
 }
 
+// --backend cpu: the GPU checks the user left out are not "what did not pass" (one neutral line
+// counts them) and come after the checks that ran in the case's table.
+TEST_F(ReportFiles, HtmlListsChecksLeftOutByRequestLastAndNotAsFailures) {
+  Report report;
+  CaseResult alone = reference_only_case();
+  alone.checks.push_back(make_check("mass.relative_drift.cpu", 0.0, 1e-15, Outcome::pass));
+  alone.status = case_outcome(alone);
+  report.cases = {alone};
+  write_report_html(report, folder / "index.html");
+  const std::string html = read_text(folder / "index.html");
+  const auto failures = html.find("<section class=\"failures\">");
+  const std::string block = html.substr(failures, html.find("</section>", failures) - failures);
+  EXPECT_NE(block.find("Not run, as asked: 2 checks (GPU backend not requested (--backend cpu))"), std::string::npos)
+      << block;
+  EXPECT_EQ(block.find("badge skip"), std::string::npos) << block;
+  EXPECT_NE(block.find("Every check that ran passed."), std::string::npos) << block;
+  const auto checks = html.find("<table class=\"checks\">");
+  EXPECT_LT(html.find("<td>mass.relative_drift.cpu</td>", checks), html.find("<td>image.gpu_vs_cpu</td>", checks));
+  EXPECT_EQ(alone.status, Outcome::pass);
+}
+
 TEST_F(ReportFiles, HtmlShowsRenderedTwinsSideBySideWithTheirMetrics) {
   Report report;
   report.environment = sample_report().environment;

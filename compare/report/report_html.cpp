@@ -110,11 +110,12 @@ std::string check_badge(const Check& check) {
 }
 
 // The checks a reader must look at, worst first (error, fail, flaky, skip, inconclusive, warn):
-// anything but a pass. Stable, so a case's own order holds within an outcome.
+// anything but a pass or a check the user left out (--backend cpu). Stable, so a case's own order
+// holds within an outcome.
 std::vector<const Check*> checks_needing_attention(const CaseResult& result) {
   std::vector<const Check*> checks;
   for (const Check& check : result.checks) {
-    if (check.status != Outcome::pass) checks.push_back(&check);
+    if (check.status != Outcome::pass && !left_out_by_request(check)) checks.push_back(&check);
   }
   std::stable_sort(checks.begin(), checks.end(),
                    [](const Check* a, const Check* b) { return strictly_worse(a->status, b->status); });
@@ -173,7 +174,9 @@ void append_failures(std::string& out, const Report& report) {
   std::vector<Row> rows;
   std::vector<const CaseResult*> errors_without_checks;
   std::map<std::string, std::size_t> skipped_by_reason;
+  std::size_t left_out = 0;
   for (const CaseResult& result : report.cases) {
+    left_out += std::count_if(result.checks.begin(), result.checks.end(), left_out_by_request);
     const auto checks = checks_needing_attention(result);
     for (const Check* check : checks) {
       if (check->status == Outcome::skip) {
@@ -189,11 +192,12 @@ void append_failures(std::string& out, const Report& report) {
     return strictly_worse(a.check->status, b.check->status);
   });
   out += "<section class=\"failures\">\n<h2>What did not pass, and why</h2>\n";
+  if (left_out > 0) out += fmt::format("<p class=\"note\">Not run, as asked: {} ({}).</p>\n", counted(left_out, "check"), gpu_not_requested);
   for (const auto& [reason, count] : skipped_by_reason) {
     out += fmt::format("<p>{} {}: {}</p>\n", badge(Outcome::skip), counted(count, "check"), h(reason));
   }
   if (rows.empty() && errors_without_checks.empty()) {
-    out += skipped_by_reason.empty() ? "<p>Every check passed.</p>\n</section>\n"
+    out += skipped_by_reason.empty() && left_out == 0 ? "<p>Every check passed.</p>\n</section>\n"
                                      : "<p>Every check that ran passed.</p>\n</section>\n";
     return;
   }
@@ -331,6 +335,9 @@ void append_checks(std::string& out, const CaseResult& result) {
   std::vector<const Check*> ordered = checks_needing_attention(result);
   for (const Check& check : result.checks) {
     if (check.status == Outcome::pass) ordered.push_back(&check);
+  }
+  for (const Check& check : result.checks) {  // the checks the user left out, last
+    if (left_out_by_request(check)) ordered.push_back(&check);
   }
   for (const Check* listed : ordered) {
     const Check& check = *listed;
