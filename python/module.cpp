@@ -16,6 +16,8 @@
 //                                as `groundtruth sweep` and `groundtruth ab` make them
 //   dataset_dir()                the bundled and fetched data sets (datasets/ of the checkout)
 //   command_line()               the `groundtruth` executable built beside this module
+//   degrees_to_metres(dlon, dlat, latitude)  a geographic cell's size in metres, (x, y), as the
+//                                command line's readers convert it (core/io/dem_formats.hpp)
 //   require_memory(count, unit, bytes_each, what)  core/memory.hpp's gate (InputError when the
 //                                estimate exceeds what this process may use), for the Python side
 //   ReferenceModel(algorithm, double)  a stepped algorithm's reference behind the BMI
@@ -46,6 +48,7 @@
 #include "compare/output_folder.hpp"
 #include "compare/sweep.hpp"
 #include "core/errors.hpp"
+#include "core/io/dem_formats.hpp"
 #include "core/memory.hpp"
 #include "core/mutant.hpp"
 #include "gpu/context/context.hpp"
@@ -171,6 +174,10 @@ PYBIND11_MODULE(_core, module) {
   });
   module.def("dataset_dir", [] { return std::filesystem::path(GT_DATASET_DIR); });
   module.def("command_line", [] { return std::filesystem::path(GT_COMMAND_LINE); });
+  module.def("degrees_to_metres", [](double degrees_longitude, double degrees_latitude, double latitude) {
+    const gt::detail::CellSizeMetres cell = gt::detail::degrees_to_metres(degrees_longitude, degrees_latitude, latitude);
+    return std::pair<double, double>(cell.x, cell.y);
+  });
   module.def("require_memory", [](double count, const std::string& unit, double bytes_each, const std::string& what) {
     gt::require_memory(gt::memory_for(count, unit, bytes_each), what);
   });

@@ -366,21 +366,12 @@ class _StepModel:
         self._step, self._fields, self._dtype = step, {f["name"]: f for f in fields}, numpy.dtype(dtype)
         self._state, self._params, self._shape, self._spacing, self._iteration = {}, {}, (0, 0), (1.0, 1.0), 0
 
-    @staticmethod
-    def _value(text):
-        for kind in (int, float):
-            try:
-                return kind(text)
-            except ValueError:
-                pass
-        return {"true": True, "false": False}.get(text, text)
-
     def initialize(self, config_file):
         entries = {}
         for line in pathlib.Path(config_file).read_text().splitlines():
             if line and not line.startswith("#") and " " in line:
                 key, value = line.split(" ", 1)
-                entries[key] = self._value(value)
+                entries[key] = _tables.typed_value(value)
         self._shape = (int(entries.pop("rows")), int(entries.pop("columns")))
         self._spacing = (float(entries.pop("spacing_y")), float(entries.pop("spacing_x")))
         for key in ("algorithm", "case", "horizontal_unit"):

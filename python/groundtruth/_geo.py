@@ -7,8 +7,9 @@ Conventions:
   cell size: a DataArray's from its two dimension coordinates (cell centres, evenly spaced: the
       step's magnitude, dx along a row, dy down a column); a rasterio dataset's from its affine
       transform (|a|, |e|; a rotated or sheared grid is refused). An explicit cell_size wins and
-      the notes say so. Coordinates in degrees (a "units" attribute naming degrees, a geographic
-      CRS) are refused without cell_size: the cell size in metres is not known.
+      the notes say so. Degrees (a geographic CRS; lat/lon dimensions or a "units" attribute
+      naming degrees) become metres at the grid's centre latitude as the command line's readers
+      convert them (core/io/dem_formats.hpp degrees_to_metres), and the notes say so.
   no-data: NaN, a DataArray's `_FillValue` or `nodata` attribute (or encoding), a rasterio
       dataset's mask; each masked cell becomes NaN and the notes count them.
   kept: the DataArray's dimension names, coordinates and attributes, a rasterio dataset's
@@ -28,7 +29,8 @@ from ._core import InputError
 # in float32 (a netCDF's) carry about 2^-24 relative rounding of the coordinate's magnitude,
 # which for a 10^6 m easting is about 0.06 m against 30 m steps, 2·10^-3 of a step.
 _STEP_TOLERANCE = 1e-2
-_DEGREE_NAMES = {"lon", "lat", "longitude", "latitude"}
+_LATITUDE_NAMES = {"lat", "latitude"}
+_DEGREE_NAMES = _LATITUDE_NAMES | {"lon", "longitude"}
 
 
 class Georeference:
@@ -91,6 +93,15 @@ def _squeezed(array, notes):
     return array
 
 
+def _metres(step_x, step_y, centre_latitude, notes, source):
+    """A cell of step_x by step_y degrees in metres at the centre latitude, as the command line's
+    readers convert it; said in the notes."""
+    x, y = _core.degrees_to_metres(abs(step_x), abs(step_y), centre_latitude)
+    notes.append(f"geographic {source}: cells {abs(step_x) * 3600:.4g}\" x {abs(step_y) * 3600:.4g}\" converted to "
+                 f"metres at centre latitude {centre_latitude:.4f}: {x:.2f} m x {y:.2f} m")
+    return x, y
+
+
 def _cell_size(steps, names, given, notes, source):
     """The cell size run() hands the driver: the caller's, else the steps' magnitudes."""
     known = [abs(step) for step in steps if step is not None]
@@ -113,11 +124,14 @@ def from_dataarray(array, cell_size):
     notes = []
     array = _squeezed(array, notes)
     rows_name, columns_name = array.dims
-    if cell_size is None and any(_in_degrees(array, name) for name in (rows_name, columns_name)):
-        raise InputError(f"heights: coordinates {rows_name}, {columns_name} are in degrees: the cell size in "
-                         "metres is unknown; reproject to a projected CRS or pass cell_size=")
     steps = [_step(array.coords[name], name) if name in array.coords else None for name in (columns_name, rows_name)]
-    size = _cell_size(steps, (columns_name, rows_name), cell_size, notes, "coordinates")
+    if cell_size is None and any(_in_degrees(array, name) for name in (rows_name, columns_name)):
+        if None in steps or rows_name.lower() not in _LATITUDE_NAMES | {"y"}:
+            raise InputError(f"heights: coordinates {rows_name}, {columns_name} are in degrees without a spaced "
+                             "latitude on the rows: pass cell_size= in metres, or reproject")
+        size = _metres(steps[0], steps[1], float(numpy.mean(array.coords[rows_name])), notes, "coordinates")
+    else:
+        size = _cell_size(steps, (columns_name, rows_name), cell_size, notes, "coordinates")
     _core.require_memory(float(array.size), f"cells of heights {array.shape[1]}x{array.shape[0]}", 8.0,
                          "groundtruth.run: the DataArray's values")
     values = numpy.asarray(array.values)
@@ -144,11 +158,11 @@ def from_rasterio(dataset, cell_size, band=1):
         raise InputError(f"heights: {dataset.name} has a rotated or sheared transform ({transform!r}): "
                          "warp it onto a north-up grid first")
     if cell_size is None and dataset.crs is not None and dataset.crs.is_geographic:
-        raise InputError(f"heights: {dataset.name} is in a geographic CRS ({dataset.crs}): the cell size in metres "
-                         "is unknown; reproject to a projected CRS or pass cell_size=")
+        size = _metres(transform.a, transform.e, transform.f + transform.e * dataset.height / 2, notes, "CRS")
+    else:
+        size = _cell_size((transform.a, transform.e), ("x", "y"), cell_size, notes, "transform")
     if not 1 <= band <= dataset.count:
         raise InputError(f"heights: {dataset.name} has bands 1 to {dataset.count}, not {band}")
-    size = _cell_size((transform.a, transform.e), ("x", "y"), cell_size, notes, "transform")
     _core.require_memory(float(dataset.width) * dataset.height, f"cells of heights {dataset.width}x{dataset.height}",
                          8.0, f"groundtruth.run: band {band} of {dataset.name}")
     heights = dataset.read(band, masked=True)
@@ -224,6 +238,8 @@ def to_dataset(result):
         attrs.update({f"meaning_{backend}": detail["meaning"] for backend, detail in info.items()})
         variables[field] = (dims, stacked, attrs)
     attrs = dict(georeference.attrs)
+    if georeference.crs is not None and "crs" not in attrs:  # a rasterio CRS, kept as its WKT
+        attrs["crs"] = georeference.crs.to_wkt() if hasattr(georeference.crs, "to_wkt") else str(georeference.crs)
     attrs.update({"case": result.case, "algorithm": result.algorithm, "status": result.status,
                   "notes": "\n".join(result.notes)})
     attrs.update({f"param_{name}": str(value) for name, value in result.params.items()})

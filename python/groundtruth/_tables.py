@@ -22,8 +22,9 @@ def checks_frame(checks, feature="Result.checks_table"):
     return pandas.DataFrame(rows, columns=["name", *CHECK_COLUMNS]).set_index("name")
 
 
-def _typed(text):
-    """A parameter value as the sweep tables write it (text), back as a number or bool where it is one."""
+def typed_value(text):
+    """A parameter value as text (a sweep table's, a BMI config file's), back as an int, float or
+    bool where it is one."""
     for kind in (int, float):
         try:
             return kind(text)
@@ -39,7 +40,7 @@ def sweep_frame(report_folder):
     table = json.loads((report_folder / "sweep.json").read_text())
     rows = []
     for run in table["runs"]:
-        row = {name: _typed(value) for name, value in run.get("params", {}).items()}
+        row = {name: typed_value(value) for name, value in run.get("params", {}).items()}
         row.update(case=run["case"], outcome=run["outcome"])
         row.update({name: float("nan") if value is None else value for name, value in run.get("metrics", {}).items()})
         rows.append(row)

@@ -8,7 +8,6 @@ import subprocess
 import sys
 import tempfile
 
-import numpy
 import pytest
 
 import groundtruth

@@ -62,6 +62,7 @@ def test_a_geotiff_round_trips_through_rasterio_run_and_a_geotiff(geotiff, tmp_p
     numpy.testing.assert_array_equal(numpy.isnan(eroded), hole)
     numpy.testing.assert_array_equal(band.filled(numpy.nan), eroded.astype(band.dtype))
     assert tags["field"] == "terrain" and tags["backend"] == "cpu" and tags["units"] == "m"
+    assert CRS.from_wkt(result.to_xarray().attrs["crs"]) == CRS_UTM33
 
 
 def test_a_written_geotiff_is_never_overwritten_unasked(geotiff, tmp_path):
@@ -79,24 +80,41 @@ def test_a_written_geotiff_is_never_overwritten_unasked(geotiff, tmp_path):
         assert back.dtypes == ("float32",) and back.transform == TRANSFORM
 
 
-def test_a_rotated_or_geographic_raster_is_refused(tmp_path):
-    heights = numpy.ones((8, 8), numpy.float32)
+def test_a_rotated_raster_is_refused(tmp_path):
     rotated = tmp_path / "rotated.tif"
     with rasterio.open(rotated, "w", driver="GTiff", height=8, width=8, count=1, dtype="float32", crs=CRS_UTM33,
                        transform=rasterio.Affine(30.0, 5.0, 0.0, 0.0, -30.0, 0.0)) as output:
-        output.write(heights, 1)
+        output.write(numpy.ones((8, 8), numpy.float32), 1)
     with rasterio.open(rotated) as dataset, pytest.raises(groundtruth.InputError, match="rotated or sheared"):
         groundtruth.run("erosion.thermal", dataset, backend="cpu", quick=True)
-    geographic = tmp_path / "geographic.tif"
-    with rasterio.open(geographic, "w", driver="GTiff", height=8, width=8, count=1, dtype="float32",
-                       crs=CRS.from_epsg(4326), transform=from_origin(10.0, 45.0, 0.001, 0.001)) as output:
-        output.write(heights, 1)
-    with rasterio.open(geographic) as dataset:
-        with pytest.raises(groundtruth.InputError, match="geographic CRS"):
-            groundtruth.run("erosion.thermal", dataset, backend="cpu", quick=True)
-        # With the cell size given in metres, the same raster runs.
-        assert groundtruth.run("erosion.thermal", dataset, cell_size=(80.0, 111.0), backend="cpu",
-                               quick=True).grid["cell_size_y"] == 111.0
+
+
+LUXEMBOURG = groundtruth.DATASETS / "real" / "elev.tif"  # 30" cells, EPSG:4326, GDAL_NODATA -32768
+
+
+def test_a_geographic_raster_gets_the_command_lines_metres_whichever_way_it_comes():
+    """The real Luxembourg DEM in degrees, as a path (the driver's GeoTIFF reader converts), as an
+    open rasterio dataset and as a DataArray of lat/lon: the same cell size in metres, the same
+    no-data cells, the conversion said in the notes."""
+    by_path = groundtruth.run("erosion.thermal", LUXEMBOURG, backend="cpu", quick=True, iterations=2)
+    with rasterio.open(LUXEMBOURG) as dataset:
+        assert dataset.crs.is_geographic
+        by_dataset = groundtruth.run("erosion.thermal", dataset, backend="cpu", quick=True, iterations=2)
+        band = dataset.read(1, masked=True)
+        transform = dataset.transform
+    latitude = transform.f + transform.e * (numpy.arange(band.shape[0]) + 0.5)
+    longitude = transform.c + transform.a * (numpy.arange(band.shape[1]) + 0.5)
+    array = xarray.DataArray(band.filled(-32768).astype(numpy.float32), dims=("lat", "lon"),
+                             coords={"lat": latitude, "lon": longitude}, attrs={"nodata": -32768})
+    by_array = groundtruth.run("erosion.thermal", array, backend="cpu", quick=True, iterations=2)
+    expected = (by_path.grid["cell_size_x"], by_path.grid["cell_size_y"])
+    assert 590 < expected[0] < 610 and 915 < expected[1] < 925  # 30" x 30" at 49.8 N, as heightmap_io_test says
+    for result in (by_dataset, by_array):
+        assert (result.grid["cell_size_x"], result.grid["cell_size_y"]) == pytest.approx(expected, rel=1e-12)
+        assert any("converted to metres at centre latitude 49.8" in note for note in result.notes), result.notes
+        numpy.testing.assert_array_equal(numpy.isnan(result.fields["terrain"]["input"]),
+                                         numpy.isnan(by_path.fields["terrain"]["input"]))
+    assert numpy.isnan(by_path.fields["terrain"]["input"]).sum() == 3942
 
 
 def anisotropic_dataarray():
@@ -129,10 +147,9 @@ def test_a_dataarray_with_anisotropic_coordinates_gives_the_cell_size_and_comes_
     assert no_data.sum() == 2 and no_data[0, 0] and no_data[5, 9]
 
 
-def test_a_dataarray_in_degrees_or_unevenly_spaced_is_refused():
-    degrees = xarray.DataArray(numpy.ones((6, 6)), dims=("lat", "lon"),
-                               coords={"lat": numpy.arange(6) * 0.01, "lon": numpy.arange(6) * 0.01})
-    with pytest.raises(groundtruth.InputError, match="in degrees"):
+def test_a_dataarray_in_degrees_without_latitudes_or_unevenly_spaced_is_refused():
+    degrees = xarray.DataArray(numpy.ones((6, 6)), dims=("row", "lon"), coords={"lon": numpy.arange(6) * 0.01})
+    with pytest.raises(groundtruth.InputError, match="in degrees without a spaced latitude"):
         groundtruth.run("erosion.thermal", degrees, backend="cpu", quick=True)
     uneven = xarray.DataArray(numpy.ones((6, 6)), dims=("y", "x"),
                               coords={"y": numpy.arange(6.0), "x": [0.0, 1.0, 2.0, 3.5, 4.5, 5.5]})
