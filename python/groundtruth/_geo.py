@@ -139,8 +139,9 @@ def from_dataarray(array, cell_size):
     if nodata is not None and not (isinstance(nodata, numbers.Real) and numpy.isnan(nodata)):
         masked = values == nodata
         if numpy.any(masked):
-            notes.append(f"heights: {int(numpy.count_nonzero(masked))} cells equal to the no-data value {nodata} "
-                         "are no-data (NaN)")
+            count = int(numpy.count_nonzero(masked))
+            notes.append(f"heights: {count} cell{'s' if count != 1 else ''} equal to the no-data value {nodata} "
+                         f"{'are' if count != 1 else 'is'} no-data (NaN)")
             values = numpy.where(masked, numpy.nan, values.astype(numpy.result_type(values.dtype, numpy.float32)))
     attrs = {key: value for key, value in array.attrs.items() if key not in ("_FillValue", "missing_value")}
     crs = attrs.get("crs")
