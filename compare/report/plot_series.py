@@ -8,7 +8,7 @@ PLOT.json: {"title", "x_label", "y_label", "log_x", "log_y",
             "x_ticks": [[x, "label"], ...] (optional: labelled ticks, e.g. revisions)}
            or {"panels": [PLOT, ...]}: the plots side by side in one figure.
 Series with the same non-empty group share a colour (a measurement beside its twin or its bound);
-the others get one each. Points carry markers only where there are few of them (up to 40).
+the others get one each; the legend stands beside the axes, not over the data. Points carry markers only where there are few of them (up to 40).
 Non-finite or (on a log axis) non-positive points are left out. Exits 3 with a one-line reason
 when matplotlib is missing, 2 on bad input; compare/report/plots.cpp shows the last line.
 """
@@ -45,7 +45,9 @@ def draw_panel(plot, axes, plt):
         axes.set_xticks([tick[0] for tick in plot["x_ticks"]])
         axes.set_xticklabels([tick[1] for tick in plot["x_ticks"]], rotation=30, ha="right", fontsize="x-small")
     axes.grid(True, which="both", alpha=0.3)
-    axes.legend(fontsize="small")
+    # Beside the axes, never over the data (a history's or a ledger's lines fill the whole frame).
+    if axes.get_legend_handles_labels()[0]:
+        axes.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
 
 
 def main(argv):
@@ -63,12 +65,12 @@ def main(argv):
         with open(argv[1], encoding="utf-8") as f:
             plot = json.load(f)
         panels = plot["panels"] if "panels" in plot else [plot]
-        figure, all_axes = plt.subplots(1, len(panels), figsize=(8 if len(panels) == 1 else 4.6 * len(panels), 4.5),
+        figure, all_axes = plt.subplots(1, len(panels), figsize=(8 if len(panels) == 1 else 6 * len(panels), 4.5),
                                         dpi=100, squeeze=False)
         for panel, axes in zip(panels, all_axes[0]):
             draw_panel(panel, axes, plt)
         figure.tight_layout()
-        figure.savefig(argv[2])
+        figure.savefig(argv[2], bbox_inches="tight")  # with the legends beside the axes
     except (OSError, KeyError, TypeError, ValueError) as error:
         print(f"cannot draw the plot: {error}")
         return 2
