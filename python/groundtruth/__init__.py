@@ -352,6 +352,8 @@ def ab(algorithm, heights=None, a=None, b=None, **kwargs):
         if not isinstance(values, dict):
             raise InputError(f"{side}: a dict of parameter name -> value, e.g. {{'talus_angle': 30}}")
         sides.append([f"{name}={_parameter_text(name, value)}" for name, value in values.items()])
+    if not sides[0] and not sides[1]:
+        raise InputError("a and b are both empty: give B (or A) a parameter that differs")
     return _drive(algorithm, heights, lambda report, *_: _tables.ab_frame(report), _call="groundtruth.ab",
                   _a=sides[0], _b=sides[1], **kwargs)
 

@@ -81,6 +81,10 @@ def test_a_sweep_or_ab_refuses_what_the_command_line_refuses_in_pythons_words(he
         groundtruth.sweep("erosion.thermal", heights, vary={"talus_angle": [30, 400]})
     with pytest.raises(groundtruth.InputError, match="b: a dict"):
         groundtruth.ab("erosion.thermal", heights, a={"talus_angle": 30})
+    with pytest.raises(groundtruth.InputError, match="both empty"):
+        groundtruth.ab("erosion.thermal", heights, a={}, b={})
+    with pytest.raises(groundtruth.InputError, match="A and B are the same variant"):  # the command line's words
+        groundtruth.ab("erosion.thermal", heights, a={"talus_angle": 30}, b={"talus_angle": 30})
 
 
 def test_the_readme_sweep_example_runs_as_written(tmp_path):
