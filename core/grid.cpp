@@ -42,8 +42,8 @@ template <class T>
 void check_cell_size(const Grid<T>& grid, const std::string& what) {
   const auto sound = [](double size) { return std::isfinite(size) && size >= 1e-9 && size <= 1e9; };
   if (!sound(grid.cell_size_x) || !sound(grid.cell_size_y)) {
-    throw InputError(fmt::format("{}: cell size {} x {} {} is not a length between 1e-9 and 1e9 (set cell_size)", what,
-                                 grid.cell_size_x, grid.cell_size_y, grid.horizontal_unit));
+    throw InputError(fmt::format("{}: cell size {} x {} {} is not a length between 1e-9 and 1e9 (set it with {})", what,
+                                 grid.cell_size_x, grid.cell_size_y, grid.horizontal_unit, cell_size_settings));
   }
 }
 

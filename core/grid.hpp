@@ -17,6 +17,9 @@
 
 namespace gt {
 
+// Where a user sets a cell size, for the messages that ask for one (an assumed 1 m, a size out of range).
+inline constexpr const char* cell_size_settings = "--cell-size, cell_size= from Python, or \"cell_size\" in a case file";
+
 template <class T>
 struct Grid {
   int width = 0;

@@ -273,7 +273,7 @@ HeightmapFile read_npy_heightmap(const path& file) {
                                        "changes them",
                                        no_data, array.values.size()));
   }
-  result.notes.push_back("no cell size in the file: 1 m assumed (set cell_size)");
+  result.notes.push_back(fmt::format("no cell size in the file: 1 m assumed (set it with {})", cell_size_settings));
   return result;
 }
 

@@ -44,7 +44,7 @@ namespace gt {
 namespace {
 
 // The note of a reader that found no cell size.
-constexpr const char* cell_size_assumed = "1 m assumed (set it with --cell-size, or \"cell_size\" in a case file)";
+const std::string cell_size_assumed = fmt::format("1 m assumed (set it with {})", cell_size_settings);
 
 using std::filesystem::path;
 
@@ -247,7 +247,7 @@ void apply_geographic_cell_size(HeightmapFile& file, const GeoTiffTags& tags) {
 
 void apply_georeferencing(HeightmapFile& file, const GeoTiffTags& tags) {
   if (tags.pixel_scale.empty()) {
-    file.notes.push_back(std::string("no ModelPixelScale: ") + cell_size_assumed);
+    file.notes.push_back("no ModelPixelScale: " + cell_size_assumed);
     return;
   }
   if (is_geographic(tags, file.notes)) {
@@ -437,7 +437,7 @@ HeightmapFile read_image(const path& file, const HeightmapReadOptions& options) 
   if (is_tiff && tags.georeferenced()) {
     apply_georeferencing(result, tags);
   } else {
-    result.notes.push_back(std::string("no cell size in the file: ") + cell_size_assumed);
+    result.notes.push_back("no cell size in the file: " + cell_size_assumed);
   }
   return result;
 }

@@ -23,6 +23,10 @@ Inputs (`heights`):
       arrays to little-endian. A numpy masked array's masked cells are no-data (NaN). Booleans,
       complex numbers and objects are refused;
   a path to any file the command line's --input takes (a DEM, an image, a mesh, a .npy volume);
+  an xarray.DataArray or an open rasterio dataset: georeferenced heights (groundtruth._geo: the
+      coordinates or the transform give the cell size, fill values are no-data, and
+      result.to_xarray() / result.to_geotiff() hand the fields back with the input's
+      georeferencing);
   None: a generator's `size` grid (noise), or nothing for algorithms that make their own field.
 Parameters are keyword arguments named as `groundtruth.parameters(algorithm)` declares them.
 Fields come from the case's fields-as-data files: result.fields[field][backend], backends "input",
@@ -30,6 +34,11 @@ Fields come from the case's fields-as-data files: result.fields[field][backend],
 meaning. With `out`, the whole report (index.html, report.json, pictures, meshes, EXR and .npy
 fields) stays in that folder and result.artifacts lists its files with their kind and caption;
 without, it is written to a temporary folder that is removed on return.
+
+groundtruth.sweep(algorithm, heights, vary={name: [values]}) and groundtruth.ab(algorithm,
+heights, a={...}, b={...}) are the command line's `sweep` and `ab`, returning their tables as pandas
+DataFrames; result.checks_table() is a case's checks as one. xarray, rasterio and pandas are
+optional: a feature that needs one says which package to install.
 """
 
 import json
