@@ -8,7 +8,8 @@ PLOT.json: {"title", "x_label", "y_label", "log_x", "log_y",
             "x_ticks": [[x, "label"], ...] (optional: labelled ticks, e.g. revisions)}
            or {"panels": [PLOT, ...]}: the plots side by side in one figure.
 Series with the same non-empty group share a colour (a measurement beside its twin or its bound);
-the others get one each; the legend stands beside the axes, not over the data. Points carry markers only where there are few of them (up to 40).
+the others get one each; the legend stands beside the axes, not over the data. Points carry
+markers only where there are few of them (up to 40).
 Non-finite or (on a log axis) non-positive points are left out. Exits 3 with a one-line reason
 when matplotlib is missing, 2 on bad input; compare/report/plots.cpp shows the last line.
 """
