@@ -49,6 +49,11 @@ struct PreparedTwin {
 // .npy volume when given one, else the seed's noise), or nothing at all (the endless cave).
 enum class AdHocInput { heightmap, mesh, optional_volume, optional_global_grid, none };
 
+// What `run --candidate FILE` takes in the GPU twin's place (compare/external/candidate.hpp): a
+// sampled field, a mesh or a rendered image; none for algorithms that step (an outside model
+// plugs in through the BMI instead) or that have no candidate path yet.
+enum class CandidateOutput { none, field, mesh, image };
+
 // Bytes read plus written per cell (voxel, sample) and iteration by each backend's passes at the
 // default parameters, as counted in the comment beside the kernels; unset where not counted. The
 // performance table divides them by the measured copy bandwidth: its floor column.
@@ -68,6 +73,7 @@ struct Algorithm {
   // `iterations` (or steps) and needs one; a generated one samples a grid (a flat one by default).
   CaseKind kind = CaseKind::stepped;
   AdHocInput ad_hoc_input = AdHocInput::heightmap;
+  CandidateOutput candidate = CandidateOutput::none;
   // The algorithm's own rows of the performance table (cave meshing: voxels and triangles per
   // second); unset: the generic timing of compare/benchmark.cpp, or none for custom cases.
   std::function<std::vector<BenchmarkRow>(const BenchmarkOptions& options, bool gpu_available,

@@ -26,7 +26,7 @@
 #include "compare/inputs.hpp"
 #include "compare/external/bmi_preflight.hpp"
 #include "compare/external/c_bmi_model.hpp"
-#include "compare/external/candidate_field.hpp"
+#include "compare/external/candidate.hpp"
 #include "compare/external/gpu_shader_drop_ins.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/wording.hpp"
@@ -444,20 +444,44 @@ std::string lay_drop_ins(const DriverOptions& options) {
   return note;
 }
 
-// --candidate: the one selected case is a generated field, and the file holds a field of its grid.
-std::optional<CandidateField> candidate_of(const std::vector<Job>& jobs, const DriverOptions& options) {
-  if (options.candidate.empty()) return std::nullopt;
+// The algorithms that take a --candidate file, with what they take, for the refusal.
+std::string candidate_algorithms() {
+  std::vector<std::string> names;
+  for (const Algorithm& algorithm : algorithms()) {
+    if (algorithm.candidate == CandidateOutput::none) continue;
+    const char* kind = algorithm.candidate == CandidateOutput::field ? "field"
+                       : algorithm.candidate == CandidateOutput::mesh ? "mesh"
+                                                                       : "image";
+    names.push_back(fmt::format("{} ({})", algorithm.name, kind));
+  }
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+// --candidate: the one selected case takes a user's output, and the file holds one of its kind
+// and size; read once, before the run, so that bad input exits 2.
+CandidateOutputs load_candidate(const std::vector<Job>& jobs, const DriverOptions& options) {
+  CandidateOutputs candidate;
+  if (options.candidate.empty()) return candidate;
   if (jobs.size() != 1) {
     throw InputError(fmt::format("--candidate {}: one file grades one case, and {} are selected", options.candidate.string(),
                                  jobs.size()));
   }
-  const auto* generated = std::get_if<GeneratedCase>(&jobs.front().prepared.kind);
-  if (generated == nullptr) {
-    throw InputError(fmt::format("--candidate grades a generated field (noise.*) today; {} is not one (meshes and "
-                                 "renders: not yet)",
-                                 jobs.front().spec.algorithm));
+  const Job& job = jobs.front();
+  switch (find_algorithm(job.spec.algorithm).candidate) {
+    case CandidateOutput::none:
+      throw InputError(fmt::format("--candidate grades a generated field, a mesh or a rendered image; {} takes none "
+                                   "(a stepping algorithm takes an outside model: --implementation). Those that do: {}",
+                                   job.spec.algorithm, candidate_algorithms()));
+    case CandidateOutput::field:
+      candidate.field = load_candidate_field(options.candidate, std::get<GeneratedCase>(job.prepared.kind).grid);
+      break;
+    case CandidateOutput::mesh: candidate.mesh = load_candidate_mesh(options.candidate); break;
+    case CandidateOutput::image:
+      candidate.image =
+          load_candidate_image(options.candidate, job.resolved.at("width").get<int>(), job.resolved.at("height").get<int>());
+      break;
   }
-  return load_candidate_field(options.candidate, generated->grid);
+  return candidate;
 }
 
 // Runs a list of jobs in this process or in workers, and returns their results in order.
@@ -553,8 +577,8 @@ class CaseRunner {
     return order;
   }
 
-  // A user's field file in the GPU twin's place (--candidate).
-  void grade_candidate(const CandidateField& candidate) { run_options_.candidate_field = candidate; }
+  // A user's output file in the GPU twin's place (--candidate).
+  void grade_candidate(const CandidateOutputs& candidate) { run_options_.candidate = candidate; }
 
   // The context benchmarks need (opened now in a run whose cases ran in workers).
   bool gpu_available() {
@@ -672,7 +696,7 @@ int run_driver(const DriverOptions& options) {
   const auto jobs = prepare_jobs(specs, options.dataset_dir);
   if (options.implementation || options.external_model) check_implementation(jobs, options);
   const std::string drop_in_note = lay_drop_ins(options);
-  const auto candidate = candidate_of(jobs, options);
+  const CandidateOutputs candidate = load_candidate(jobs, options);
   // A worker's parent applies the expectations and makes the retries.
   const auto expectations = options.worker ? std::vector<Expectation>{} : all_expectations(options, suite);
   check_output_folder(options.out);
@@ -684,7 +708,7 @@ int run_driver(const DriverOptions& options) {
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
     CaseRunner runner(options, folder, report,
                       expected_case_seconds(options.dataset_dir, options.out / "report.json", baseline), expectations);
-    if (candidate) runner.grade_candidate(*candidate);
+    runner.grade_candidate(candidate);
     std::vector<const Job*> all;
     for (const auto& job : jobs) all.push_back(&job);
     report.cases = runner.run(all);

@@ -208,10 +208,10 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& grid, const nlohmann
                     const RunOptions& options, CaseResult& result) {
   const ReferenceRuns runs = run_references(twin, grid, options, result);
   std::optional<GpuOutputs> gpu;
-  if (options.candidate_field) {
-    gpu = candidate_outputs(*options.candidate_field);
+  if (options.candidate.field) {
+    gpu = candidate_outputs(*options.candidate.field);
     result.notes.push_back(fmt::format("graded: {} ({} values), standing where the GPU twin stands",
-                                       options.candidate_field->file.string(),
+                                       options.candidate.field->file.string(),
                                        gpu->double_precision ? "double" : "float"));
   } else if (options.gpu_available) {
     try {
@@ -233,13 +233,13 @@ void run_field_twin(const FieldTwin& twin, const Heightmap& grid, const nlohmann
     report_stage(options, "terrain descriptors");
     const Grid<double> cpu_float = runs.cpu_float.cast<double>();
     const std::optional<Grid<double>> gpu_heights =
-        gpu && !options.candidate_field ? std::optional<Grid<double>>(gpu->values) : std::nullopt;
+        gpu && !options.candidate.field ? std::optional<Grid<double>>(gpu->values) : std::nullopt;
     add_case_descriptors({nullptr, &runs.cpu, &cpu_float, gpu_heights ? &*gpu_heights : nullptr}, expect, options,
                          result);
     if (!gpu) {
       for (const auto& name : descriptor_gpu_check_names(expect)) result.checks.push_back(skipped_check(name, unavailable));
     }
-    if (options.candidate_field) result.notes.push_back("terrain descriptors of the references alone: the candidate's values are in its field files");
+    if (options.candidate.field) result.notes.push_back("terrain descriptors of the references alone: the candidate's values are in its field files");
   }
 }
 

@@ -2,7 +2,7 @@
 //
 // A generated field (noise) samples a function on the input's grid: the reference in double (the
 // truth) and in float (the GPU's arithmetic), and the GPU version — or a user's field file in its
-// place (RunOptions::candidate_field, `run --candidate`: checks named candidate_vs_float/_vs_double,
+// place (RunOptions::candidate, `run --candidate`: checks named candidate_vs_float/_vs_double,
 // a double file graded against ref<double> alone, determinism not applicable). run_field_twin runs all three,
 // times the double reference and the GPU, writes the pictures and fields, and adds the checks of
 // DESIGN.md, judged on the whole output with the bounds the twin gives:
@@ -14,6 +14,7 @@
 // Iterative twins are stepped by compare/stepped_case.hpp instead.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -27,6 +28,7 @@
 #include "compare/progress.hpp"
 #include "compare/result.hpp"
 #include "core/grid.hpp"
+#include "core/mesh.hpp"
 
 namespace gt {
 
@@ -50,12 +52,34 @@ struct FieldTwin {
   GeneratedField bounds;
 };
 
-// A user's output to grade where the GPU twin's stands (`run --candidate FILE`): a field read from
-// a .npy or EXR file, on the case's grid.
+// A user's output to grade where the GPU twin's stands (`run --candidate FILE`,
+// compare/external/candidate.hpp): a field read from a .npy or EXR file, on the case's grid; a
+// mesh of a cave block; a rendered image of the case's size.
 struct CandidateField {
   std::filesystem::path file;
   Grid<double> values;
   bool double_precision = false;  // a float64 .npy
+};
+
+struct CandidateMesh {
+  std::filesystem::path file;
+  Mesh mesh;
+  std::vector<std::string> notes;  // what the reader decided (core/io/mesh_io.hpp)
+};
+
+struct CandidateImage {
+  std::filesystem::path file;
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;  // 3 bytes a pixel, rows top first
+  std::vector<std::string> notes; // conversions made for the user
+};
+
+// At most one of them, by the case's algorithm (compare/algorithm.hpp CandidateOutput).
+struct CandidateOutputs {
+  std::optional<CandidateField> field;
+  std::optional<CandidateMesh> mesh;
+  std::optional<CandidateImage> image;
 };
 
 struct RunOptions {
@@ -75,7 +99,7 @@ struct RunOptions {
   // An outside implementation graded where the GPU twin stands (stepped cases; --implementation,
   // or a Python model): compare/external/bmi_model.hpp.
   std::optional<ExternalModel> external;
-  std::optional<CandidateField> candidate_field;
+  CandidateOutputs candidate;
 };
 
 // Listed cells as a case's "expect" gives them: [[x, y, value], ...] (core/json_keys.hpp shapes).

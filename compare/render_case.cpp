@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <OpenImageIO/imagebuf.h>
 
 #include "compare/algorithms/render_phong.hpp"
@@ -64,30 +65,42 @@ OIIO::ImageBuf run_gpu(const reference::PhongScene& scene, const RunOptions& opt
   return rgb8_buffer(first.width, first.height, first.rgb);
 }
 
+// The image being graded against the reference: the GPU twin's or a user's (run --candidate).
+struct GradedImage {
+  const OIIO::ImageBuf& image;
+  std::string twin;     // "gpu" or "candidate": the checks' and pictures' names
+  std::string made_by;  // for captions and field files
+};
+
 }  // namespace
 
-std::vector<std::string> image_check_names() {
-  return {"image.psnr.gpu_vs_cpu", "image.share_beyond_tolerance_outside_edges.gpu_vs_cpu", "image.max_abs.gpu_vs_cpu",
-          "image.rms.gpu_vs_cpu", "image.share_beyond_tolerance.gpu_vs_cpu"};
+std::vector<std::string> image_check_names(const std::string& twin) {
+  std::vector<std::string> names;
+  for (const char* metric : {"psnr", "share_beyond_tolerance_outside_edges", "max_abs", "rms", "share_beyond_tolerance"}) {
+    names.push_back(fmt::format("image.{}.{}_vs_cpu", metric, twin));
+  }
+  return names;
 }
 
 namespace {
 
-void add_image_checks(const ImageDifference& plain, const NeighbourhoodComparison& tolerant, CaseResult& result) {
+void add_image_checks(const ImageDifference& plain, const NeighbourhoodComparison& tolerant, const std::string& twin,
+                      CaseResult& result) {
+  const auto name = [&](const char* metric) { return fmt::format("image.{}.{}_vs_cpu", metric, twin); };
   result.checks.push_back(bounded_check(
-      "image.psnr.gpu_vs_cpu", -plain.psnr_db, -phong_min_psnr_db, std::nullopt,
+      name("psnr"), -plain.psnr_db, -phong_min_psnr_db, std::nullopt,
       fmt::format("-PSNR in dB over the RGB channels (PSNR {:.2f} dB; passes when PSNR >= {} dB)", plain.psnr_db,
                   phong_min_psnr_db)));
   result.checks.push_back(bounded_check(
-      "image.share_beyond_tolerance_outside_edges.gpu_vs_cpu", tolerant.failing_share, phong_max_failing_share,
-      std::nullopt,
+      name("share_beyond_tolerance_outside_edges"), tolerant.failing_share, phong_max_failing_share, std::nullopt,
       fmt::format("share of pixels with no match within 4/255 in the other image's 3×3 neighbourhood ({} of {})",
                   tolerant.failing_pixels, tolerant.verdicts.size())));
-  result.checks.push_back(informative_check("image.max_abs.gpu_vs_cpu", plain.max_abs,
-                                            fmt::format("largest |gpu - cpu| over channel values, at pixel ({}, {})",
-                                                        plain.max_x, plain.max_y)));
-  result.checks.push_back(informative_check("image.rms.gpu_vs_cpu", plain.rms, "RMS of gpu - cpu over channel values"));
-  result.checks.push_back(informative_check("image.share_beyond_tolerance.gpu_vs_cpu", plain.share_beyond_tolerance,
+  result.checks.push_back(informative_check(name("max_abs"), plain.max_abs,
+                                            fmt::format("largest |{} - cpu| over channel values, at pixel ({}, {})",
+                                                        twin, plain.max_x, plain.max_y)));
+  result.checks.push_back(
+      informative_check(name("rms"), plain.rms, fmt::format("RMS of {} - cpu over channel values", twin)));
+  result.checks.push_back(informative_check(name("share_beyond_tolerance"), plain.share_beyond_tolerance,
                                             "share of pixels beyond 4/255 at the same pixel (edges included)"));
 }
 
@@ -115,11 +128,11 @@ void write_image_fields(const OIIO::ImageBuf& image, const std::string& backend,
   }
 }
 
-void write_pictures(const OIIO::ImageBuf& cpu, const OIIO::ImageBuf* gpu_image,
-                    const NeighbourhoodComparison* tolerant, const RunOptions& options, CaseResult& result) {
+void write_pictures(const OIIO::ImageBuf& cpu, const GradedImage* graded, const NeighbourhoodComparison* tolerant,
+                    const RunOptions& options, CaseResult& result) {
   if (options.report_dir.empty()) return;
   write_image_fields(cpu, "cpu", "CPU reference (double)", options, result);
-  if (gpu_image) write_image_fields(*gpu_image, "gpu", "GPU (GL pipeline)", options, result);
+  if (graded) write_image_fields(graded->image, graded->twin, graded->made_by, options, result);
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
   const auto add = [&](const std::string& file, const std::string& caption) {
@@ -127,25 +140,41 @@ void write_pictures(const OIIO::ImageBuf& cpu, const OIIO::ImageBuf* gpu_image,
   };
   write_image(cpu, folder / "cpu.png");
   add("cpu.png", "CPU reference (double), rounded to 8 bits");
-  if (!gpu_image) return;
-  write_image(*gpu_image, folder / "gpu.png");
-  add("gpu.png", "GPU (GL pipeline, RGBA8 target)");
-  const double scale = write_difference_heat_map(cpu, *gpu_image, folder / "gpu_vs_cpu_heat.png");
-  add("gpu_vs_cpu_heat.png", fmt::format("max |gpu - cpu| over channels, white at {:.3g}", scale));
-  write_verdict_mask(*tolerant, folder / "gpu_vs_cpu_mask.png");
-  add("gpu_vs_cpu_mask.png", "3×3-tolerant verdicts at 4/255: grey identical, green within, blue edge shift, red fails");
+  if (!graded) return;
+  const std::string& twin = graded->twin;
+  write_image(graded->image, folder / (twin + ".png"));
+  add(twin + ".png", graded->made_by);
+  const double scale = write_difference_heat_map(cpu, graded->image, folder / (twin + "_vs_cpu_heat.png"));
+  add(twin + "_vs_cpu_heat.png", fmt::format("max |{} - cpu| over channels, white at {:.3g}", twin, scale));
+  write_verdict_mask(*tolerant, folder / (twin + "_vs_cpu_mask.png"));
+  add(twin + "_vs_cpu_mask.png",
+      "3×3-tolerant verdicts at 4/255: grey identical, green within, blue edge shift, red fails");
 }
 
-// The image checks and pictures of a pair, or the reference's pictures alone without a GPU image.
-void compare_images_and_picture(const OIIO::ImageBuf& cpu, const OIIO::ImageBuf* gpu_image, const RunOptions& options,
+// The image checks and pictures of a pair, or the reference's pictures alone without a graded image.
+void compare_images_and_picture(const OIIO::ImageBuf& cpu, const GradedImage* graded, const RunOptions& options,
                                 CaseResult& result) {
-  if (!gpu_image) {
+  if (!graded) {
     write_pictures(cpu, nullptr, nullptr, options, result);
     return;
   }
-  const NeighbourhoodComparison tolerant = compare_neighbourhoods(cpu, *gpu_image, phong_tolerance);
-  add_image_checks(compare_images(cpu, *gpu_image, phong_tolerance), tolerant, result);
-  write_pictures(cpu, gpu_image, &tolerant, options, result);
+  const NeighbourhoodComparison tolerant = compare_neighbourhoods(cpu, graded->image, phong_tolerance);
+  add_image_checks(compare_images(cpu, graded->image, phong_tolerance), tolerant, graded->twin, result);
+  write_pictures(cpu, graded, &tolerant, options, result);
+}
+
+// A user's image (run --candidate) where the GPU's stands: the same image checks and the spec,
+// named `candidate`; nothing to time and nothing to repeat.
+void grade_candidate_image(const OIIO::ImageBuf& cpu, const CandidateImage& candidate, const RunOptions& options,
+                           CaseResult& result, const RenderedImageSpec& spec) {
+  result.notes.push_back(fmt::format("graded: {}, standing where the GPU twin stands{}", candidate.file.string(),
+                                     candidate.notes.empty() ? "" : fmt::format(" ({})", fmt::join(candidate.notes, "; "))));
+  result.checks.push_back(
+      not_applicable_check("determinism.candidate", "a file is read once: run your renderer twice and compare the files"));
+  if (spec) spec(candidate.rgb, "candidate", result);
+  const OIIO::ImageBuf image = rgb8_buffer(candidate.width, candidate.height, candidate.rgb);
+  const GradedImage graded{image, "candidate", "candidate " + candidate.file.filename().string()};
+  compare_images_and_picture(cpu, &graded, options, result);
 }
 
 }  // namespace
@@ -155,7 +184,8 @@ void compare_rendered_images(int width, int height, const std::vector<std::uint8
   const OIIO::ImageBuf cpu = rgb8_buffer(width, height, cpu_rgb);
   if (!gpu_rgb) return compare_images_and_picture(cpu, nullptr, options, result);
   const OIIO::ImageBuf gpu_image = rgb8_buffer(width, height, *gpu_rgb);
-  compare_images_and_picture(cpu, &gpu_image, options, result);
+  const GradedImage graded{gpu_image, "gpu", "GPU (GL pipeline, RGBA8 target)"};
+  compare_images_and_picture(cpu, &graded, options, result);
 }
 
 void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
@@ -171,6 +201,7 @@ void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, doub
                                      camera.target[2], camera.near, camera.far, scene.light_power,
                                      scene.mesh.triangles.size()));
   const OIIO::ImageBuf cpu = run_reference(scene, subpixel_bits, min_covered_share, options, result, spec);
+  if (options.candidate.image) return grade_candidate_image(cpu, *options.candidate.image, options, result, spec);
   if (!options.gpu_available) {
     for (const auto& name : image_check_names()) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
     result.checks.push_back(skipped_check("determinism.gpu", options.gpu_unavailable_reason));
@@ -178,7 +209,8 @@ void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, doub
     return;
   }
   const OIIO::ImageBuf gpu_image = run_gpu(scene, options, result, spec);
-  compare_images_and_picture(cpu, &gpu_image, options, result);
+  const GradedImage graded{gpu_image, "gpu", "GPU (GL pipeline, RGBA8 target)"};
+  compare_images_and_picture(cpu, &graded, options, result);
 }
 
 }  // namespace gt

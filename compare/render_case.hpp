@@ -23,6 +23,9 @@
 //                                render_probe.hpp): called with the reference's image ("cpu") and the
 //                                GPU's ("gpu"), RGB8 rows top first
 //   Without a GL context image.gpu_vs_cpu and determinism.gpu are `skip` and the reference still runs.
+//   With options.candidate.image (run --candidate) the user's image stands where the GPU's does:
+//   image.*.candidate_vs_cpu, the spec as "candidate", candidate.png and its heat map and mask;
+//   determinism.candidate is not applicable (a file is read once) and the GPU does not run.
 //   Timings: the reference's whole render (cpu_ms, median of cpu_reps, at least one run), the GPU's
 //   clear and draw bracketed by glFinish (gpu_ms; upload and download excluded, median of gpu_reps).
 //   Pictures (under options.report_dir / result.name, when set): cpu.png and gpu.png (the compared
@@ -57,9 +60,9 @@ using RenderedImageSpec =
 void compare_rendered_images(int width, int height, const std::vector<std::uint8_t>& cpu_rgb,
                              const std::vector<std::uint8_t>* gpu_rgb, const RunOptions& options, CaseResult& result);
 
-// The image.* checks compare_rendered_images makes of a GPU image, by name: a caller without one
-// adds them as `skip`.
-std::vector<std::string> image_check_names();
+// The image.* checks compare_rendered_images makes of a GPU image (twin "gpu") or run_phong_twins of
+// a candidate ("candidate"), by name: a caller without one adds them as `skip`.
+std::vector<std::string> image_check_names(const std::string& twin = "gpu");
 
 void run_phong_twins(const reference::PhongScene& scene, int subpixel_bits, double min_covered_share,
                      const std::string& input, const RunOptions& options, CaseResult& result,

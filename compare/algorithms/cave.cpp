@@ -56,6 +56,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compare/algorithm.hpp"
 #include "compare/checks/cave_mesh.hpp"
@@ -392,9 +393,75 @@ void repeat_float_vs_double_as_gpu(CaseResult& result) {
   result.checks.insert(result.checks.end(), repeated.begin(), repeated.end());
 }
 
+// A user's mesh of the block (run --candidate) where the GPU's stands. It samples the density
+// itself, in float or double, so it is held to ref<double> with the a-priori density error ε
+// (parity.density.float_vs_double's), and it may split a tetrahedron's quad either way: its
+// lattice edges are graded, its triangles' keys shown.
+void run_candidate_half(const Block& block, const BlockMeshes& meshes, const CandidateMesh& candidate,
+                        const RunOptions& options, CaseResult& result) {
+  if (options.progress) options.progress->stage("candidate mesh");
+  Mesh mesh = candidate.mesh;
+  result.notes.push_back(fmt::format("graded: {} ({} vertices, {} triangles), standing where the GPU twin stands{}",
+                                     candidate.file.string(), mesh.positions.size(), mesh.triangles.size(),
+                                     candidate.notes.empty() ? "" : fmt::format(" ({})", fmt::join(candidate.notes, "; "))));
+  const std::size_t unkeyed = key_by_lattice_edges(mesh);
+  result.checks.push_back(bounded_check(
+      "mesh.on_lattice_edges.candidate", double(unkeyed), 0.0, std::nullopt,
+      fmt::format("vertices of {} on no edge of the Kuhn decomposition (axis edges, face diagonals a → a + (1,1,0) "
+                  "and its kin, the body diagonal a → a + (1,1,1)) within a quarter of the edge margin, or on a lattice "
+                  "point",
+                  mesh.positions.size())));
+  const auto checks = block_mesh_checks(block, mesh, check_mesh(mesh), "candidate");
+  result.checks.insert(result.checks.end(), checks.begin(), checks.end());
+  const double density_error = meshes.density_error + unit_roundoff_float * std::abs(block.params.threshold);
+  const VertexCrossings crossings =
+      vertex_crossings(mesh, meshes.density, block.params.threshold, lattice_origin(block.params),
+                       block.placement == EdgePlacement::linear,
+                       {.unit_roundoff = unit_roundoff_float, .density_error = density_error});
+  result.checks.push_back(bounded_check(
+      "spec.vertex_crossing.candidate", double(crossings.not_crossing + crossings.off_crossing), 0.0, std::nullopt,
+      fmt::format("vertices on an edge the surface does not cross ({}) or off the linear crossing ({}) by more than δ "
+                  "+ 8u·(m + 2) + 2e/(|v_b − v_a| − 2e) for a float mesher whose samples err by e = {:.3g} ({}); largest "
+                  "distance {:.3g} lattice units, {:.3g} of its bound; {} vertices on edges whose crossing e leaves open",
+                  crossings.not_crossing, crossings.off_crossing, density_error,
+                  "ε of parity.density.float_vs_double plus the threshold's float rounding", crossings.max_distance,
+                  crossings.max_bound_ratio, crossings.excused)));
+  result.checks.push_back(bounded_check(
+      "parity.crossing_edges.candidate_vs_double",
+      double(crossing_edges_unexplained(mesh, meshes.truth, meshes.possible_side_changes)), 0.0, std::nullopt,
+      fmt::format("lattice edges carrying a vertex in one mesh only and touching none of the {} samples within ε of "
+                  "the threshold (the only ones that may change side): those must cross in both meshes or in neither",
+                  meshes.possible_side_changes.size())));
+  const std::size_t differing = triangle_difference(key_triangles(mesh), key_triangles(meshes.truth));
+  result.checks.push_back(informative_check(
+      "parity.topology.candidate_vs_double", double(differing),
+      "triangles (by edge keys) in one mesh only: a quad of a tetrahedron may be split along either diagonal, and "
+      "samples within ε of the threshold may change side, so this is shown, not graded"));
+  const double bound = keyed_hausdorff_bound(meshes.truth, meshes.possible_side_changes);
+  const KeyedHausdorff hausdorff = keyed_hausdorff(mesh, meshes.truth);
+  const std::string hausdorff_detail = fmt::format(
+      "symmetric Hausdorff distance to ref<double>'s mesh (lattice units; keyed twins bounded, the rest sampled by "
+      "CGAL every {:.3g}); bound fixed before the candidate is read: 2√3 where both meshes cross the same edges, 3√3 + "
+      "D near a sample that may change side, D its distance to the nearest vertex the meshes must share (valid where "
+      "parity.crossing_edges passes)",
+      hausdorff.grid_spacing);
+  result.checks.push_back(std::isfinite(bound) ? bounded_check("parity.hausdorff.candidate_vs_double",
+                                                               hausdorff.distance, bound, std::nullopt, hausdorff_detail)
+                                               : informative_check("parity.hausdorff.candidate_vs_double",
+                                                                   hausdorff.distance,
+                                                                   hausdorff_detail + "; no finite bound here: a "
+                                                                   "sample that may change side has no truth vertex "
+                                                                   "within 8 lattice points"));
+  result.checks.push_back(
+      not_applicable_check("determinism.candidate", "a file is read once: run your mesher twice and compare the files"));
+  write_mesh_artifact(mesh, "mesh.candidate." + block.mesh_format,
+                      fmt::format("candidate mesh, {} triangles", mesh.triangles.size()), options, result);
+}
+
 // The GPU twin's half of a block case: its mesh against ref<float> and ref<double>, and its own
 // CGAL and OpenMesh checks.
 void run_gpu_half(const Block& block, const BlockMeshes& meshes, const RunOptions& options, CaseResult& result) {
+  if (options.candidate.mesh) return run_candidate_half(block, meshes, *options.candidate.mesh, options, result);
   if (block.mesher == Mesher::cubes) {
     result.notes.push_back("no GPU twin, on purpose: the seed's marching cubes is kept on the CPU as the variant whose "
                            "holes the checks must catch");
@@ -451,7 +518,7 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   if (auto volume = volume_check(block, meshes, report)) cpu_checks.push_back(std::move(*volume));
   result.checks.insert(result.checks.begin() + static_cast<std::ptrdiff_t>(cpu_checks_at), cpu_checks.begin(),
                        cpu_checks.end());
-  if (block.mesher == Mesher::tetrahedra && !options.gpu_available) {
+  if (block.mesher == Mesher::tetrahedra && !options.gpu_available && !options.candidate.mesh) {
     skip_as_other_backend(result, "mesh.", ".cpu", ".gpu", options.gpu_unavailable_reason);
   }
 }
@@ -602,6 +669,7 @@ std::vector<Algorithm> cave_algorithms() {
                      const LoadedInput& input) { return prepare_block(Mesher::tetrahedra, resolved, input); },
        .kind = CaseKind::custom,
        .ad_hoc_input = AdHocInput::optional_volume,
+       .candidate = CandidateOutput::mesh,
        .benchmark = benchmark_mesher,
        // Counted in reference/cave/marching_tetrahedra.cpp (meshing only, as the table times it) and
        // gpu/cave/marching_tetrahedra.cpp (meshing an uploaded volume); per voxel, output not counted.

@@ -545,6 +545,7 @@ std::vector<Algorithm> noise_algorithms() {
                       return prepare_noise(entry.basis, entry.fractal, resolved, input.heights);
                     },
                     .kind = CaseKind::generated,
+                    .candidate = CandidateOutput::field,
                     // Counted in reference/noise/noise_field.cpp and gpu/noise/noise_field.cpp.
                     .traffic = {.cpu = 16.0, .gpu = 4.0},
                     .peers = noise_peers(entry),

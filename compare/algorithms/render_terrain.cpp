@@ -364,6 +364,7 @@ Algorithm render_terrain_algorithm() {
           .prepare = prepare_terrain,
           .kind = CaseKind::custom,
           .ad_hoc_input = AdHocInput::heightmap,
+          .candidate = CandidateOutput::image,
           // Measured 2316 B a height cell (1024² vs 256² input: the closed solid, two triangles a
           // cell, and its checks) and 16 B a pixel (1024² vs 256² image).
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {

@@ -6,7 +6,10 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <limits>
 #include <unordered_map>
+#include <unordered_set>
+#include <utility>
 
 #include "compare/checks/error_model.hpp"
 #include "core/io/mesh_io.hpp"
@@ -194,12 +197,37 @@ FieldVolume volume_bound_from_field(const Volume<double>& density, double thresh
   return volume;
 }
 
-double vertex_crossing_bound(double margin, double magnitude) {
-  return margin + 8.0 * unit_roundoff_double * (magnitude + 2.0);
+double vertex_crossing_bound(double margin, double magnitude, double unit_roundoff) {
+  return margin + 8.0 * unit_roundoff * (magnitude + 2.0);
 }
 
+namespace {
+
+std::array<std::int64_t, 3> upper_point(const LatticeEdge& edge) {
+  std::array<std::int64_t, 3> upper = edge.lower_point;
+  for (int axis = 0; axis < 3; ++axis) upper[axis] += (edge.direction >> axis) & 1;
+  return upper;
+}
+
+// A lattice point as one integer (the key of its +x edge: unique within the keys' range).
+std::uint64_t point_id(const std::array<std::int64_t, 3>& point) { return lattice_edge_key(point, 1); }
+
+std::unordered_set<std::uint64_t> point_ids(const std::vector<std::array<std::int64_t, 3>>& points) {
+  std::unordered_set<std::uint64_t> ids;
+  for (const auto& point : points) ids.insert(point_id(point));
+  return ids;
+}
+
+bool touches(const std::unordered_set<std::uint64_t>& points, std::uint64_t key) {
+  const LatticeEdge edge = lattice_edge_from_key(key);
+  return points.contains(point_id(edge.lower_point)) || points.contains(point_id(upper_point(edge)));
+}
+
+}  // namespace
+
 VertexCrossings vertex_crossings(const Mesh& mesh, const Volume<double>& density, double threshold,
-                                 const std::array<std::int64_t, 3>& origin, bool linear_placement) {
+                                 const std::array<std::int64_t, 3>& origin, bool linear_placement,
+                                 const CrossingModel& model) {
   // The sample at a global lattice point, none in the pad.
   const auto sample = [&](const std::array<std::int64_t, 3>& point) -> std::optional<double> {
     std::array<std::int64_t, 3> local{};
@@ -211,18 +239,28 @@ VertexCrossings vertex_crossings(const Mesh& mesh, const Volume<double>& density
     return density.at(int(local[0]), int(local[1]), int(local[2]));
   };
   const auto rock = [threshold](const std::optional<double>& value) { return value && *value < threshold; };
+  const auto undecided = [&](const std::optional<double>& value) {
+    return model.density_error > 0.0 && value && std::abs(*value - threshold) <= model.density_error;
+  };
   VertexCrossings crossings;
   crossings.vertices = mesh.edge_keys.size();
   for (std::size_t vertex = 0; vertex < mesh.edge_keys.size(); ++vertex) {
+    if (mesh.edge_keys[vertex] == missing_vertex_key) {
+      ++crossings.unkeyed;
+      continue;
+    }
     const LatticeEdge edge = lattice_edge_from_key(mesh.edge_keys[vertex]);
-    std::array<std::int64_t, 3> upper = edge.lower_point;
+    const std::array<std::int64_t, 3> upper = upper_point(edge);
     double magnitude = 0.0;
     for (int axis = 0; axis < 3; ++axis) {
-      upper[axis] += (edge.direction >> axis) & 1;
       magnitude = std::max({magnitude, std::abs(double(edge.lower_point[axis])), std::abs(double(upper[axis]))});
     }
     const std::optional<double> lower_value = sample(edge.lower_point);
     const std::optional<double> upper_value = sample(upper);
+    if (undecided(lower_value) || undecided(upper_value)) {
+      ++crossings.excused;
+      continue;
+    }
     if (rock(lower_value) == rock(upper_value)) {
       ++crossings.not_crossing;
       continue;
@@ -230,17 +268,142 @@ VertexCrossings vertex_crossings(const Mesh& mesh, const Volume<double>& density
     const bool interpolated = linear_placement && lower_value && upper_value;
     const double t = interpolated ? (threshold - *lower_value) / (*upper_value - *lower_value) : 0.5;
     const double margin = interpolated ? edge_margin(edge.lower_point, edge.direction) : 0.0;
+    const double density_shift =
+        interpolated && model.density_error > 0.0
+            ? std::min(1.0, 2.0 * model.density_error / (std::abs(*upper_value - *lower_value) - 2.0 * model.density_error))
+            : 0.0;
     double distance = 0.0;
     for (int axis = 0; axis < 3; ++axis) {
       const double crossing = double(edge.lower_point[axis]) + t * double((edge.direction >> axis) & 1);
       distance = std::max(distance, std::abs(mesh.positions[vertex][axis] - crossing));
     }
-    const double ratio = distance / vertex_crossing_bound(margin, magnitude);
+    const double ratio = distance / (vertex_crossing_bound(margin, magnitude, model.unit_roundoff) + density_shift);
     crossings.off_crossing += ratio > 1.0 ? 1 : 0;
     crossings.max_distance = std::max(crossings.max_distance, distance);
     crossings.max_bound_ratio = std::max(crossings.max_bound_ratio, ratio);
   }
   return crossings;
+}
+
+std::size_t key_by_lattice_edges(Mesh& mesh) {
+  mesh.edge_keys.assign(mesh.positions.size(), missing_vertex_key);
+  std::size_t unkeyed = 0;
+  for (std::size_t vertex = 0; vertex < mesh.positions.size(); ++vertex) {
+    const auto& position = mesh.positions[vertex];
+    std::array<std::int64_t, 3> lower{};
+    bool in_range = true;
+    for (int axis = 0; axis < 3; ++axis) {
+      in_range = in_range && std::isfinite(position[axis]) && position[axis] > double(lattice_coordinate_min) &&
+                 position[axis] < double(lattice_coordinate_max);
+      if (in_range) lower[axis] = static_cast<std::int64_t>(std::floor(position[axis]));
+    }
+    std::uint64_t key = missing_vertex_key;
+    if (in_range) {
+      const double tolerance = edge_margin(lower, 7) / 4.0;
+      int direction = 0;
+      std::optional<double> along;  // the shared fractional part of the moving coordinates
+      bool on_edge = true;
+      for (int axis = 0; axis < 3; ++axis) {
+        const double nearest = std::round(position[axis]);
+        if (std::abs(position[axis] - nearest) <= tolerance) {
+          lower[axis] = static_cast<std::int64_t>(nearest);
+          continue;
+        }
+        const double fraction = position[axis] - double(lower[axis]);
+        on_edge = on_edge && (!along || std::abs(fraction - *along) <= tolerance);
+        along = along.value_or(fraction);
+        direction |= 1 << axis;
+      }
+      if (on_edge && direction != 0) key = lattice_edge_key(lower, direction);
+    }
+    mesh.edge_keys[vertex] = key;
+    unkeyed += key == missing_vertex_key ? 1 : 0;
+  }
+  return unkeyed;
+}
+
+namespace {
+
+// Vertices of a mesh by the lower point of their lattice edge.
+using VerticesByPoint = std::unordered_map<std::uint64_t, std::vector<std::size_t>>;
+
+// The distance from a lattice point to the nearest of `vertices` whose edge's lower point lies
+// within `radius` points along each axis; infinity when there is none.
+double nearest_vertex(const Mesh& mesh, const VerticesByPoint& vertices, const std::array<std::int64_t, 3>& point,
+                      int radius) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int dz = -radius; dz <= radius; ++dz) {
+    for (int dy = -radius; dy <= radius; ++dy) {
+      for (int dx = -radius; dx <= radius; ++dx) {
+        const std::array<std::int64_t, 3> near = {point[0] + dx, point[1] + dy, point[2] + dz};
+        if (std::ranges::any_of(near, [](std::int64_t c) { return c < lattice_coordinate_min || c > lattice_coordinate_max; })) {
+          continue;
+        }
+        const auto found = vertices.find(point_id(near));
+        if (found == vertices.end()) continue;
+        for (const std::size_t vertex : found->second) {
+          double squared = 0.0;
+          for (int axis = 0; axis < 3; ++axis) {
+            const double d = mesh.positions[vertex][axis] - double(point[axis]);
+            squared += d * d;
+          }
+          nearest = std::min(nearest, std::sqrt(squared));
+        }
+      }
+    }
+  }
+  return nearest;
+}
+
+}  // namespace
+
+double keyed_hausdorff_bound(const Mesh& truth, const std::vector<std::array<std::int64_t, 3>>& changing_samples,
+                             int search_radius) {
+  const double diagonal = std::sqrt(3.0);
+  const auto changing = point_ids(changing_samples);
+  VerticesByPoint all, shared;  // every truth vertex; those on edges with no changing endpoint
+  std::unordered_set<std::uint64_t> on_truth_surface;  // changing samples that end a crossing edge of the truth
+  for (std::size_t vertex = 0; vertex < truth.edge_keys.size(); ++vertex) {
+    const std::uint64_t key = truth.edge_keys[vertex];
+    if (key == missing_vertex_key) continue;
+    const LatticeEdge edge = lattice_edge_from_key(key);
+    all[point_id(edge.lower_point)].push_back(vertex);
+    if (!touches(changing, key)) {
+      shared[point_id(edge.lower_point)].push_back(vertex);
+      continue;
+    }
+    for (const auto& end : {edge.lower_point, upper_point(edge)}) {
+      if (changing.contains(point_id(end))) on_truth_surface.insert(point_id(end));
+    }
+  }
+  double bound = 2.0 * diagonal;
+  for (const auto& sample : changing_samples) {
+    // A candidate's vertex on an edge of this sample lies within √3 of it, its triangle within √3
+    // more; the truth's nearest vertex within D_any.
+    bound = std::max(bound, 2.0 * diagonal + nearest_vertex(truth, all, sample, search_radius));
+    // A truth triangle at this sample: its points within 2√3 of the sample, the sample within
+    // D_shared of a vertex the candidate must have too (within √3 of it on the same edge).
+    if (on_truth_surface.contains(point_id(sample))) {
+      bound = std::max(bound, 3.0 * diagonal + nearest_vertex(truth, shared, sample, search_radius));
+    }
+  }
+  return bound;
+}
+
+std::size_t crossing_edges_unexplained(const Mesh& a, const Mesh& b,
+                                       const std::vector<std::array<std::int64_t, 3>>& changing_samples) {
+  const auto changing = point_ids(changing_samples);
+  const auto keys_of = [](const Mesh& mesh) {
+    std::unordered_set<std::uint64_t> keys(mesh.edge_keys.begin(), mesh.edge_keys.end());
+    keys.erase(missing_vertex_key);
+    return keys;
+  };
+  const auto keys_a = keys_of(a), keys_b = keys_of(b);
+  std::size_t unexplained = 0;
+  for (const auto& [from, to] : {std::pair{&keys_a, &keys_b}, std::pair{&keys_b, &keys_a}}) {
+    for (const std::uint64_t key : *from) unexplained += !to->contains(key) && !touches(changing, key) ? 1 : 0;
+  }
+  return unexplained;
 }
 
 template std::vector<KeyTriangle> key_triangles(const TriangleMesh<float>&);

@@ -136,19 +136,67 @@ FieldVolume volume_bound_from_field(const Volume<double>& density, double thresh
 
 struct VertexCrossings {
   std::size_t vertices = 0;
+  std::size_t unkeyed = 0;          // on no lattice edge (missing_vertex_key): not judged here
   std::size_t not_crossing = 0;     // keyed to an edge whose endpoints are both rock or both air
-  std::size_t off_crossing = 0;     // on a crossing edge, farther than vertex_crossing_bound from c
+  std::size_t excused = 0;          // on an edge whose crossing the density error leaves open
+  std::size_t off_crossing = 0;     // on a crossing edge, farther than its bound from c
   double max_distance = 0.0;        // largest ∞-norm distance from c over crossing edges (lattice units)
-  double max_bound_ratio = 0.0;     // largest distance / vertex_crossing_bound
+  double max_bound_ratio = 0.0;     // largest distance / its bound
+};
+
+// How far a mesher's vertices may stand off the crossing c, beyond the edge margin δ: 8u·(m + 2)
+// for its arithmetic's unit roundoff u (2^-53 for the references in double, 2^-24 for a float
+// mesher), and for a mesher that samples the density itself (a user's candidate mesh) its samples'
+// a-priori error ε (parity.density.float_vs_double's) plus the float rounding of the threshold,
+// e = ε + u_float·|θ|. An edge with an endpoint within e of θ may cross in its samples or not, and
+// its vertex lies anywhere on it (excused); on any other edge each endpoint value errs by at most e,
+// so t* moves by at most 2e / (|v_b - v_a| - 2e) (first order in e; the endpoints differ by more
+// than 2e since they lie on opposite sides of θ, each farther than e).
+struct CrossingModel {
+  double unit_roundoff = 0x1p-53;
+  double density_error = 0.0;  // e as above; 0: the mesher meshes these very samples
 };
 
 // The bound of the file comment for a mesh in double: the edge's margin (linear placement with
 // both endpoints samples, else 0) + 8u·(m + 2).
-double vertex_crossing_bound(double margin, double magnitude);
+double vertex_crossing_bound(double margin, double magnitude, double unit_roundoff = 0x1p-53);
 
 // Every vertex of `mesh` (keyed) against the field: sample (0, 0, 0) of `density` is global lattice
 // point `origin`; `linear_placement` false: midpoints everywhere.
 VertexCrossings vertex_crossings(const Mesh& mesh, const Volume<double>& density, double threshold,
-                                 const std::array<std::int64_t, 3>& origin, bool linear_placement);
+                                 const std::array<std::int64_t, 3>& origin, bool linear_placement,
+                                 const CrossingModel& model = {});
+
+// Keys a mesh that carries no edge keys (a user's file) by the lattice edges of the Kuhn
+// decomposition its vertices lie on, and returns how many lie on none. A vertex lies on edge
+// a -> a + d (d's components 0 or 1, not all 0) when every coordinate is within τ of an integer
+// (that of a) except those along d, whose fractional parts agree within τ; τ = δ/4 for the edge
+// margin δ of its neighbourhood (core/params/cave.hpp edge_margin): far above a float position's
+// rounding, far below the margin every honest vertex keeps from a lattice point. A vertex on no
+// such edge, on a lattice point, or beyond the keys' range gets missing_vertex_key.
+std::size_t key_by_lattice_edges(Mesh& mesh);
+
+// The symmetric Hausdorff bound of a mesh that passes key_by_lattice_edges, vertex_crossings and
+// parity.crossing_edges against the truth `truth` (see compare/algorithms/cave.cpp). Each triangle
+// of a marching-tetrahedra mesh lies in one cube (diameter √3) and each vertex on a lattice edge
+// (length at most √3), so:
+//   triangles at edges both meshes must cross (no endpoint may change side) lie within 2√3 of each
+//     other (a vertex on the same edge in the other mesh);
+//   a candidate's triangle at a sample s that may change side lies within 2√3 + D_any(s) of the
+//     truth, D_any the distance from s to the truth's nearest vertex;
+//   a truth triangle at such a sample (s ends one of the truth's crossing edges) lies within 3√3 +
+//     D_shared(s) of the candidate, D_shared the distance from s to the truth's nearest vertex on an
+//     edge with no changing endpoint, which the candidate has too.
+// The bound is the largest of these; vertices are searched up to `search_radius` points away, and
+// a sample with none there makes it infinite. Inputs: the truth mesh (keyed), the samples that may
+// change side (global lattice points). Fixed before any candidate is read.
+double keyed_hausdorff_bound(const Mesh& truth, const std::vector<std::array<std::int64_t, 3>>& changing_samples,
+                             int search_radius = 8);
+
+// The lattice edges (keys) in one mesh only, without an endpoint among `changing_samples`: edges
+// that must cross in both meshes or in neither (each lattice edge crossing the threshold carries
+// one vertex of a marching-tetrahedra mesh, whichever way its quads are split).
+std::size_t crossing_edges_unexplained(const Mesh& a, const Mesh& b,
+                                       const std::vector<std::array<std::int64_t, 3>>& changing_samples);
 
 }  // namespace gt

@@ -122,18 +122,6 @@ std::vector<double> largest_channel_differences(const FloatPixels& a, const Floa
   return largest;
 }
 
-Rgb heat_colour(double difference, double scale) {
-  if (difference <= 0.0) return heat_stops.front();
-  const double position = std::min(difference / scale, 1.0) * (heat_stops.size() - 1);
-  const std::size_t stop = std::min(static_cast<std::size_t>(position), heat_stops.size() - 2);
-  const double t = position - static_cast<double>(stop);
-  Rgb colour;
-  for (int c = 0; c < 3; ++c) {
-    colour[c] = static_cast<float>(heat_stops[stop][c] + (heat_stops[stop + 1][c] - heat_stops[stop][c]) * t);
-  }
-  return colour;
-}
-
 Rgb verdict_colour(PixelVerdict verdict) {
   switch (verdict) {
     case PixelVerdict::identical:
@@ -182,6 +170,18 @@ void require_flat(const OIIO::ImageBuf& image, const std::string& label) {
 }
 
 }  // namespace
+
+std::array<float, 3> heat_colour(double difference, double scale) {
+  if (difference <= 0.0) return heat_stops.front();
+  const double position = std::min(difference / scale, 1.0) * (heat_stops.size() - 1);
+  const std::size_t stop = std::min(static_cast<std::size_t>(position), heat_stops.size() - 2);
+  const double t = position - static_cast<double>(stop);
+  Rgb colour;
+  for (int c = 0; c < 3; ++c) {
+    colour[c] = static_cast<float>(heat_stops[stop][c] + (heat_stops[stop + 1][c] - heat_stops[stop][c]) * t);
+  }
+  return colour;
+}
 
 OIIO::ImageBuf read_image(const std::filesystem::path& file) {
   require_regular_file(file, "cannot read");

@@ -30,6 +30,7 @@
 //     into place; the format follows the extension (.png for the pictures of reports).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -83,6 +84,10 @@ NeighbourhoodComparison compare_neighbourhoods(const OIIO::ImageBuf& a, const OI
 // The verdicts as a picture: identical grey, within tolerance green, matched by a neighbour blue,
 // fails red.
 void write_verdict_mask(const NeighbourhoodComparison& comparison, const std::filesystem::path& file);
+
+// The heat maps' colour of a difference d >= 0 (channels in [0, 1]): black at 0, red at scale/3,
+// yellow at 2 scale/3, white at scale and beyond, linear between.
+std::array<float, 3> heat_colour(double difference, double scale);
 
 // Heat map of the per-pixel max |a - b| over channels, d: black at 0, red at scale/3, yellow at
 // 2 scale/3, white at scale and beyond (linear between). scale 0 means the largest finite d (an

@@ -49,6 +49,7 @@
 #include "compare/cases.hpp"
 #include "core/memory.hpp"
 #include "compare/cli/check_mesh.hpp"
+#include "compare/cli/compare_mesh.hpp"
 #include "compare/cli/diff_image.hpp"
 #include "compare/cli/render.hpp"
 #include "compare/cli/stats.hpp"
@@ -366,7 +367,8 @@ int run_command_line(int argc, char** argv) {
   std::string candidate;
   run->add_option("--candidate", candidate,
                   "grade your own output where the GPU twin's stands: a noise field (.npy float32/float64 or EXR) "
-                  "on the case's grid, sampled as the README says");
+                  "on the case's grid, a cave block's mesh (.ply/.obj/.off, lattice units) or a rendered image "
+                  "(render.phong, render.terrain: PNG/EXR/..., the case's size); docs/external-implementations.md");
   run->add_option("--gpu-shaders", gpu_shaders,
                   "grade your own GLSL: a folder of shader files laid over the built-in ones by their path "
                   "(erosion/thermal_transfer.comp, ...; docs/gpu-shader-drop-ins.md)");
@@ -486,6 +488,21 @@ int run_command_line(int argc, char** argv) {
   check_mesh->add_option("file", mesh_file, "OFF, OBJ, PLY or STL")->required();
   check_mesh->add_flag("--json", mesh_as_json, "machine-readable");
 
+  gt::CompareMeshOptions compare_mesh_options;
+  auto* compare_mesh = app.add_subcommand("compare-mesh", "how and where do two meshes differ? (topology, Hausdorff "
+                                                          "distance, the farthest vertices; CGAL)");
+  compare_mesh->add_option("a", compare_mesh_options.a, "first mesh: OFF, OBJ, PLY or STL")->required();
+  compare_mesh->add_option("b", compare_mesh_options.b, "second mesh")->required();
+  compare_mesh->add_flag("--json", compare_mesh_options.as_json, "machine-readable");
+  compare_mesh->add_option("--out", compare_mesh_options.out,
+                           "write a_to_b.ply and b_to_a.ply here: each mesh coloured by its distance to the other");
+  compare_mesh->add_option("--tolerance", compare_mesh_options.tolerance,
+                           "largest symmetric Hausdorff distance that counts as the same (the meshes' unit)")
+      ->check(finite_number & CLI::NonNegativeNumber);
+  compare_mesh->add_option("--spacing", compare_mesh_options.spacing,
+                           "CGAL's sampling grid (the meshes' unit; 1/200 of the larger bounding-box diagonal)")
+      ->check(finite_number & CLI::PositiveNumber);
+
   gt::DiffImageOptions diff_options;
   auto* diff_image = app.add_subcommand("diff-image", "how and where do two images differ? (OpenImageIO)");
   diff_image->add_option("a", diff_options.a, "first image (any format OpenImageIO reads)")->required();
@@ -587,6 +604,7 @@ int run_command_line(int argc, char** argv) {
 
   try {
     if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);
+    if (compare_mesh->parsed()) return gt::compare_mesh_command(compare_mesh_options);
     if (diff_image->parsed()) return gt::diff_image_command(diff_options);
     if (render->parsed()) return gt::render_command(render_options);
     if (stats->parsed()) return gt::stats_command(stats_file, stats_options);

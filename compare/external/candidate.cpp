@@ -1,14 +1,19 @@
-// A user's field file read and checked against the case's grid; see candidate_field.hpp.
-#include "compare/external/candidate_field.hpp"
+// A user's output files read and checked against the case; see candidate.hpp.
+#include "compare/external/candidate.hpp"
 
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <vector>
+
+#include <OpenImageIO/imagebuf.h>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "compare/checks/image.hpp"
 #include "core/io/heightmap_io.hpp"
+#include "core/io/mesh_io.hpp"
 
 namespace gt {
 namespace {
@@ -47,6 +52,37 @@ CandidateField load_candidate_field(const std::filesystem::path& file, const Hei
     }
   }
   candidate.double_precision = npy_holds_doubles(file);
+  return candidate;
+}
+
+CandidateMesh load_candidate_mesh(const std::filesystem::path& file) {
+  MeshFile read = read_mesh(file);  // refuses a file without faces
+  return {.file = std::filesystem::absolute(file), .mesh = std::move(read.mesh), .notes = std::move(read.notes)};
+}
+
+CandidateImage load_candidate_image(const std::filesystem::path& file, int width, int height) {
+  const OIIO::ImageBuf image = read_image(file);
+  const OIIO::ImageSpec& spec = image.spec();
+  if (spec.width != width || spec.height != height || spec.depth > 1) {
+    throw InputError(fmt::format("--candidate {}: {} × {} pixels where the case renders {} × {}", file.string(),
+                                 spec.width, spec.height, width, height));
+  }
+  if (spec.nchannels != 3 && spec.nchannels != 4) {
+    throw InputError(fmt::format("--candidate {}: {} channels; a rendered image is RGB or RGBA", file.string(),
+                                 spec.nchannels));
+  }
+  CandidateImage candidate{.file = std::filesystem::absolute(file), .width = width, .height = height};
+  candidate.rgb.resize(static_cast<std::size_t>(width) * height * 3);
+  // OpenImageIO converts any pixel type to 8-bit levels, rounding and clamping to [0, 1].
+  if (!image.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, candidate.rgb.data())) {
+    throw InputError(fmt::format("--candidate {}: cannot read its pixels as 8-bit RGB: {}", file.string(),
+                                 image.geterror()));
+  }
+  if (spec.format != OIIO::TypeDesc::UINT8) {
+    candidate.notes.push_back(fmt::format("{} pixels rounded to 8-bit levels, as the references' images are",
+                                          spec.format.c_str()));
+  }
+  if (spec.nchannels == 4) candidate.notes.push_back("its alpha channel is ignored");
   return candidate;
 }
 
