@@ -41,6 +41,14 @@
 //   determinism.gpu                  vertices or triangles differing between two GPU runs
 // Meshes are written beside the report as mesh.cpu.<format> and mesh.gpu.<format>.
 //
+// A user's mesh (`run --candidate FILE`, compare/external/candidate.hpp) stands where the GPU's
+// does and is held to ref<double> (run_candidate_half): its vertices keyed by the Kuhn edges they
+// lie on (cave_mesh.hpp key_by_lattice_edges; mesh.on_lattice_edges.candidate), its mesh.* checks,
+// spec.vertex_crossing.candidate with the float density's a-priori error ε, parity.crossing_edges
+// (edges with no endpoint within ε of the threshold must carry a vertex in both meshes or in
+// neither), parity.hausdorff with the bound keyed_hausdorff_bound derives from the truth before
+// the file is read; its triangles' keys are shown, not graded (a quad may be split either way).
+//
 // The density is the seed's noise, or a volume read from a file ({"volume": "f.npy"}, `--input
 // f.npy`): then the block's size is the volume's, origin_* places its first sample on the lattice,
 // threshold and solid apply, the noise parameters do not, ref<float> and the GPU mesh the samples

@@ -102,3 +102,13 @@ def test_your_own_dem_runs(ran):
     for file in ("fields.json", "terrain_input.npy", "terrain_cpu.npy", "terrain_cpu_float.npy", "terrain_cpu.exr"):
         assert (case / file).is_file(), file
     assert (ran["folder"] / "mine" / "report.md").is_file()
+
+
+def test_your_own_outputs_are_graded(ran):
+    """Step 4's outputs to judge: the float mesh passes (exit 0, checked above), the flipped
+    triangle and the bright patch fail the checks the text names, compare-mesh names the topology."""
+    assert "mesh.oriented.candidate = 3 (bound 0)" in ran["flipped"]
+    assert "image.share_beyond_tolerance_outside_edges.candidate_vs_cpu" in ran["patch"]
+    assert "spec.phong_quad.candidate" in ran["patch"]
+    assert "watertight_and_oriented (true against false)" in ran["compare-mesh"]
+    assert "1 pass" in ran["my_mesh"]
