@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -269,6 +270,46 @@ TEST(CompareMesh, SaysWhereTwoMeshesDifferAndColoursThem) {
   run = run_groundtruth({"compare-mesh", truth.string(), moved.string(), "--out", folder.path().string()}, folder.path());
   EXPECT_EQ(run.status, 2) << run;
   EXPECT_TRUE(fs::exists(moved));
+}
+
+// ---- check-mesh --annotate ------------------------------------------------------------------------
+
+TEST(CheckMesh, AnnotatesTheVerticesOfEachProblem) {
+  gt::testing::TemporaryFolder folder;
+  const fs::path truth = reference_file(block_case, "mesh.cpu.ply", folder);
+  const gt::Mesh original = gt::read_mesh(truth).mesh;
+  const auto flipped = written(changed(truth, [](gt::Mesh& mesh) { std::swap(mesh.triangles[0][1], mesh.triangles[0][2]); }),
+                               folder / "flipped.ply");
+  auto run = run_groundtruth({"check-mesh", flipped.string(), "--annotate", "annotated.ply"}, folder.path());
+  EXPECT_EQ(run.status, 1) << run;
+  // The flipped triangle's three edges are misoriented: its three corners, and only they, carry problems.
+  const gt::MeshFile annotated = gt::read_mesh(folder / "annotated.ply");
+  EXPECT_EQ(annotated.mesh.positions.size(), original.positions.size());
+  std::ifstream file(folder / "annotated.ply", std::ios::binary);
+  std::string header;
+  for (std::string line; std::getline(file, line) && line != "end_header";) header += line + "\n";
+  ASSERT_THAT(header, HasSubstr("property double x\nproperty double y\nproperty double z\nproperty uchar red\n"
+                                 "property uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+                                 "property double problems\n"));
+  std::vector<std::size_t> with_problems;
+  for (std::size_t vertex = 0; vertex < original.positions.size(); ++vertex) {
+    std::array<char, 3 * 8 + 4 + 8> record{};
+    file.read(record.data(), record.size());
+    double problems = 0.0;
+    std::memcpy(&problems, record.data() + 3 * 8 + 4, sizeof problems);
+    if (problems > 0.0) with_problems.push_back(vertex);
+  }
+  std::vector<std::size_t> corners(original.triangles[0].begin(), original.triangles[0].end());
+  std::ranges::sort(corners);
+  EXPECT_EQ(with_problems, corners);
+  // Never over the mesh being checked, and only .ply.
+  run = run_groundtruth({"check-mesh", flipped.string(), "--annotate", flipped.string()}, folder.path());
+  EXPECT_EQ(run.status, 2) << run;
+  run = run_groundtruth({"check-mesh", flipped.string(), "--annotate", "annotated.obj"}, folder.path());
+  EXPECT_EQ(run.status, 2) << run;
+  EXPECT_EQ(gt::read_mesh(flipped).mesh.triangles, changed(truth, [](gt::Mesh& mesh) {
+              std::swap(mesh.triangles[0][1], mesh.triangles[0][2]);
+            }).triangles);
 }
 
 }  // namespace

@@ -81,19 +81,19 @@ std::vector<VertexDistance> vertex_distances(const Mesh& from, const Mesh& to) {
   return distances;
 }
 
-std::size_t write_distance_ply(const Mesh& mesh, const std::vector<VertexDistance>& distances, double scale,
-                               const std::filesystem::path& file) {
+std::size_t write_vertex_values_ply(const Mesh& mesh, const std::vector<double>& values, const std::string& property,
+                                    double scale, const std::filesystem::path& file) {
   SurfaceMesh surface;
   auto colour = surface.add_property_map<SurfaceMesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-  auto distance = surface.add_property_map<SurfaceMesh::Vertex_index, double>("v:distance").first;
+  auto value_map = surface.add_property_map<SurfaceMesh::Vertex_index, double>("v:" + property).first;
   std::vector<SurfaceMesh::Vertex_index> vertices;
   for (std::size_t vertex = 0; vertex < mesh.positions.size(); ++vertex) {
     const auto added = surface.add_vertex(point_of(mesh.positions[vertex]));
-    const double value = distances[vertex].distance;
+    const double value = values[vertex];
     const auto heat = heat_colour(std::isfinite(value) ? value : 0.0, scale > 0.0 ? scale : 1.0);
     const auto level = [](float channel) { return static_cast<unsigned char>(std::lround(channel * 255.0f)); };
     colour[added] = CGAL::IO::Color(level(heat[0]), level(heat[1]), level(heat[2]));
-    distance[added] = value;
+    value_map[added] = value;
     vertices.push_back(added);
   }
   std::size_t left_out = 0;

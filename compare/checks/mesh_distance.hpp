@@ -9,16 +9,18 @@
 // meshes whose differences are at their vertices); compare-mesh reports CGAL's sampled distance
 // beside it.
 //
-// write_distance_ply(mesh, distances, scale, file): the mesh as binary PLY with each vertex's
-// distance as a `distance` property (double, NaN where unused) and the heat-map colour of
-// compare/checks/image.hpp (black 0 → red → yellow → white at `scale`) as red/green/blue, written
-// under a temporary name and renamed. Faces the half-edge structure cannot hold (a non-manifold
-// edge or vertex) are left out and counted in the return value.
+// write_vertex_values_ply(mesh, values, property, scale, file): the mesh as binary PLY with one
+// value a vertex as the double property `property` (compare-mesh: the distance, NaN where unused;
+// check-mesh: the problems at the vertex) and its heat-map colour of compare/checks/image.hpp
+// (black 0 → red → yellow → white at `scale`) as red/green/blue, written under a temporary name
+// and renamed. Faces the half-edge structure cannot hold (a non-manifold edge or vertex, a
+// misoriented neighbour, an unusable triangle) are left out and counted in the return value.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/mesh.hpp"
@@ -32,7 +34,7 @@ struct VertexDistance {
 
 std::vector<VertexDistance> vertex_distances(const Mesh& from, const Mesh& to);
 
-std::size_t write_distance_ply(const Mesh& mesh, const std::vector<VertexDistance>& distances, double scale,
-                               const std::filesystem::path& file);
+std::size_t write_vertex_values_ply(const Mesh& mesh, const std::vector<double>& values, const std::string& property,
+                                    double scale, const std::filesystem::path& file);
 
 }  // namespace gt

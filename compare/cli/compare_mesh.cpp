@@ -136,11 +136,11 @@ void print_paragraph(const Side& a, const Side& b, double symmetric, double spac
 }
 
 void write_coloured_meshes(const CompareMeshOptions& options, const Side& a, const Side& b, double scale) {
-  for (const auto& input : {options.a, options.b}) refuse_input_inside_output(options.out, input, "compare-mesh");
-  check_output_folder(options.out);
   write_folder_atomically(options.out, [&](const std::filesystem::path& folder) {
     for (const auto& [side, name] : {std::pair{&a, "a_to_b.ply"}, std::pair{&b, "b_to_a.ply"}}) {
-      const std::size_t left_out = write_distance_ply(side->read.mesh, side->to_other, scale, folder / name);
+      std::vector<double> distances;
+      for (const VertexDistance& distance : side->to_other) distances.push_back(distance.distance);
+      const std::size_t left_out = write_vertex_values_ply(side->read.mesh, distances, "distance", scale, folder / name);
       if (left_out > 0) {
         fmt::print(stderr, "groundtruth: {}: {} faces left out (a non-manifold edge or vertex, or unusable)\n", name,
                    left_out);
@@ -157,6 +157,7 @@ int compare_mesh_command(const CompareMeshOptions& options) {
     Side b{.file = options.b, .read = read_mesh(options.b)};
     if (!options.out.empty()) {
       for (const auto& input : {options.a, options.b}) refuse_input_inside_output(options.out, input, "compare-mesh");
+      check_output_folder(options.out);
     }
     const double spacing =
         options.spacing.value_or(default_grid_fraction * std::max(diagonal(a.read.mesh), diagonal(b.read.mesh)));

@@ -487,6 +487,9 @@ int run_command_line(int argc, char** argv) {
   auto* check_mesh = app.add_subcommand("check-mesh", "is a mesh file watertight and consistently oriented? (CGAL and OpenMesh)");
   check_mesh->add_option("file", mesh_file, "OFF, OBJ, PLY or STL")->required();
   check_mesh->add_flag("--json", mesh_as_json, "machine-readable");
+  std::string mesh_annotation;
+  check_mesh->add_option("--annotate", mesh_annotation,
+                         "write the mesh here (.ply) with each vertex's count of problems as a property and a colour");
 
   gt::CompareMeshOptions compare_mesh_options;
   auto* compare_mesh = app.add_subcommand("compare-mesh", "how and where do two meshes differ? (topology, Hausdorff "
@@ -603,7 +606,7 @@ int run_command_line(int argc, char** argv) {
   const std::string command_line = gt::command_line_of(argc, argv);
 
   try {
-    if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json);
+    if (check_mesh->parsed()) return gt::check_mesh_command(mesh_file, mesh_as_json, mesh_annotation);
     if (compare_mesh->parsed()) return gt::compare_mesh_command(compare_mesh_options);
     if (diff_image->parsed()) return gt::diff_image_command(diff_options);
     if (render->parsed()) return gt::render_command(render_options);
