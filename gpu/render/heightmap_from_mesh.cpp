@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 
 namespace gt::gpu {
 namespace {
@@ -77,7 +78,8 @@ HeightmapFromMesh::HeightmapFromMesh(const Mesh& mesh, int width, int height, co
     : target_(GL_R32F, width, height, "heightmap"),
       cell_size_x_(extent(box, 0) / width),
       cell_size_y_(extent(box, 1) / height),
-      index_count_(mesh.triangles.size() * 3),
+      // Mutant (GPU only): the triangle count passed where glDrawElements wants the index count.
+      index_count_(mesh.triangles.size() * (mutant_active("render.heightmap_from_mesh.gpu_count_in_triangles") ? 1 : 3)),
       program_(GraphicsProgram::load("render/heightmap_from_mesh.vert", "render/heightmap_from_mesh.frag")),
       positions_(StorageBuffer::from(centred_positions(mesh, box))),
       indices_(StorageBuffer::from(mesh.triangles)) {

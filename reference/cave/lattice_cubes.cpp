@@ -106,7 +106,10 @@ unsigned CaveMeshBuilder<Real>::rock_corners(const LatticePoint& cube) const {
 
 template <class Real>
 void CaveMeshBuilder<Real>::add_triangle(const LatticePoint& cube, const std::array<CornerPair, 3>& edges) {
-  mesh_.triangles.push_back({edge_vertex(cube, edges[0]), edge_vertex(cube, edges[1]), edge_vertex(cube, edges[2])});
+  // Mutant (both twins): the indices counted from 1, as an OBJ file counts them, in a 0-based buffer.
+  const std::uint32_t base = mutant_active("cave.marching_tetrahedra.vertex_numbers_from_one") ? 1 : 0;
+  const std::uint32_t first = edge_vertex(cube, edges[0]), second = edge_vertex(cube, edges[1]);
+  mesh_.triangles.push_back({first + base, second + base, edge_vertex(cube, edges[2]) + base});
 }
 
 template <class Real>

@@ -65,6 +65,9 @@ void main() {
           met = edge_set_with(met, edge);
           write_vertex(vertex, cube, edge);
         }
+#ifdef GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_VERTEX_NUMBERS_FROM_ONE
+        vertex += 1u;  // mutant (both twins): indices counted from 1, as an OBJ file counts them
+#endif
         triangles[3u * (triangle_slot - triangle_base) + uint(corner)] = vertex;
       }
       ++triangle_slot;
