@@ -5,6 +5,8 @@
 // (any bit), parity.plates.gpu_vs_cpu (any region), parity.collision.gpu_vs_float (a sign flips a
 // pressure term, far beyond the error model's per-region bound), parity.voronoi.gpu_vs_cpu (a label
 // farther than the exact nearest centroid), parity.plate_cycles.gpu_vs_cpu (a count off by one),
+// parity.noise.gpu_vs_float (the fBm sampled at the wrong frequency), parity.elevation.float_vs_double
+// (ref<float>'s smoothing in place),
 // image.psnr.gpu_vs_cpu (the rendered planet's colours),
 // determinism.gpu (state carried from one run into the next); and the calibrated pair of the float
 // position model in both float twins, parity.positions.float_vs_double.
@@ -39,6 +41,11 @@ std::vector<Mutant> planet_mutants() {
        .description = "ref<float>'s and the GPU's region positions times 1 + 2^-23, one rounding",
        .cases = probe,
        .must_survive = true},
+      {"planet.noise.gpu_frequency_dropped", MutantKind::one_twin,
+       "elevation_noise.comp samples the fBm at the region's position instead of f times it", probe},
+      {"planet.smoothing.float_in_place", MutantKind::one_twin,
+       "ref<float>'s Jacobi smoothing reads the neighbours before the region from its own output (Gauss-Seidel)",
+       probe},
       {"planet.plates.ceil_rate", MutantKind::both_twins,
        "both twins grow ceil(rate) rings a cycle (the extra ring's draw can never win)", probe},
       {"planet.collision.neighbour_sign", MutantKind::both_twins,

@@ -3,6 +3,7 @@
 #include "reference/planet/elevation.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 #include "core/mutant.hpp"
 #include "core/noise/permutation.hpp"
@@ -143,12 +144,15 @@ std::vector<Real> collided_elevation(const CubeSphere& sphere, const PlanetParam
 template <class Real>
 std::vector<Real> jacobi_smoothed(const CubeSphere& sphere, const std::vector<Real>& elevation) {
   std::vector<Real> smoothed(elevation.size());
+  // Mutant planet.smoothing.float_in_place (ref<float> only): neighbours before the region read
+  // from the smoothed output (Gauss-Seidel where the method is Jacobi).
+  const bool in_place = std::is_same_v<Real, float> && mutant_active("planet.smoothing.float_in_place");
   for (std::size_t region = 0; region < elevation.size(); ++region) {
     Real sum = elevation[region];
     int count = 1;
     for (const std::int32_t neighbour : sphere.neighbours(region)) {
       if (neighbour == invalid_region) continue;
-      sum = sum + elevation[neighbour];
+      sum = sum + (in_place && std::size_t(neighbour) < region ? smoothed[neighbour] : elevation[neighbour]);
       ++count;
     }
     // Mutant planet.smoothing.count_without_self (both twins): the region summed but not counted.

@@ -19,7 +19,11 @@ void main() {
   if (region >= region_count) return;
   float base = plates[plate[region]].base;
 #ifdef PLANET_NOISE
+#ifdef GT_MUTANT_PLANET_NOISE_GPU_FREQUENCY_DROPPED
+  precise vec3 sample_point = positions[region].xyz;  // mutant (GPU only): the frequency f dropped
+#else
   precise vec3 sample_point = perlin_frequency * positions[region].xyz;
+#endif
   precise float elevation = base + perlin_strength * gt_fbm(sample_point, fractal_terms);
   noisy[region] = elevation;
 #else
