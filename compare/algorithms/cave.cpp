@@ -39,7 +39,8 @@
 //                                    index buffers and keys; positions within GLSL's division
 //                                    error (3u of t plus one rounding of the position), 0 on llvmpipe
 //   determinism.gpu                  vertices or triangles differing between two GPU runs
-// Meshes are written beside the report as mesh.cpu.<format> and mesh.gpu.<format>.
+// Meshes are written beside the report as mesh.cpu.<format> and mesh.gpu.<format>, and ref<double>'s
+// (and a candidate's) drawn as mesh.cpu.png by the reference Phong rasterizer.
 //
 // A user's mesh (`run --candidate FILE`, compare/external/candidate.hpp) stands where the GPU's
 // does and is held to ref<double> (run_candidate_half): its vertices keyed by the Kuhn edges they
@@ -58,6 +59,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <future>
 #include <limits>
 #include <memory>
@@ -75,6 +77,7 @@
 #include "compare/checks/threshold.hpp"
 #include "compare/field_files.hpp"
 #include "compare/peers/vtk_isosurface.hpp"
+#include "compare/report/images.hpp"
 #include "compare/timing.hpp"
 #include "core/errors.hpp"
 #include "core/params/cave.hpp"
@@ -85,6 +88,7 @@
 #include "reference/cave/marching_cubes.hpp"
 #include "reference/cave/marching_tetrahedra.hpp"
 #include "reference/cave/normals.hpp"
+#include "reference/render/phong.hpp"
 
 namespace gt {
 namespace {
@@ -213,6 +217,38 @@ std::vector<Check> block_mesh_checks(const Block& block, const Mesh& mesh, const
                                    "border edges not lying on a face of the block's box"));
   }
   return checks;
+}
+
+// A picture of a mesh for the reader, who cannot open a mesh file in a browser: the reference
+// rasterizer's plain Phong look from render.phong's default orbit (azimuth 30°, elevation 20°,
+// field of view 40°, 0.6 of the default light so that near faces keep their shading), 320 × 320
+// pixels, beside the mesh file. None for a mesh the rasterizer cannot
+// take (an index out of range, a non-finite corner: mesh.invalid says so), or without pictures.
+void write_mesh_picture(const Mesh& mesh, const std::string& backend, const RunOptions& options, CaseResult& result) {
+  if (options.report_dir.empty() || !options.pictures || mesh.triangles.empty()) return;
+  const bool drawable = std::ranges::all_of(mesh.triangles, [&](const auto& triangle) {
+    return std::ranges::all_of(triangle, [&](std::uint32_t vertex) {
+      return vertex < mesh.positions.size() && std::ranges::all_of(mesh.positions[vertex], [](double c) { return std::isfinite(c); });
+    });
+  });
+  if (!drawable) return;
+  constexpr int side = 320;
+  const reference::Camera camera = reference::orbit_camera(mesh, 30.0, 20.0, 40.0, side, side);
+  reference::PhongScene scene = reference::phong_scene(mesh, camera);
+  scene.light_power *= 0.6;  // the faces nearest the eye would clamp to white at the default power
+  const reference::Rgb8Image image = reference::render_phong(scene);
+  std::vector<std::array<float, 3>> colours;
+  colours.reserve(static_cast<std::size_t>(side) * side);
+  for (std::size_t pixel = 0; pixel + 2 < image.rgb.size(); pixel += 3) {
+    colours.push_back({image.rgb[pixel] / 255.0f, image.rgb[pixel + 1] / 255.0f, image.rgb[pixel + 2] / 255.0f});
+  }
+  const std::string file = "mesh." + backend + ".png";
+  std::filesystem::create_directories(options.report_dir / result.name);
+  write_colour_image(side, side, colours, options.report_dir / result.name / file);
+  result.artifacts.push_back({result.name + "/" + file, "image",
+                              fmt::format("{} mesh, {} triangles: the reference rasterizer's Phong view from azimuth "
+                                          "30°, elevation 20° (lattice x to the right, y up)",
+                                          backend, mesh.triangles.size())});
 }
 
 std::optional<Check> volume_check(const Block& block, const BlockMeshes& meshes, const MeshReport& report) {
@@ -464,6 +500,7 @@ void run_candidate_half(const Block& block, const BlockMeshes& meshes, const Can
       not_applicable_check("determinism.candidate", "a file is read once: run your mesher twice and compare the files"));
   write_mesh_artifact(mesh, "mesh.candidate." + block.mesh_format,
                       fmt::format("candidate mesh, {} triangles", mesh.triangles.size()), options, result);
+  write_mesh_picture(mesh, "candidate", options, result);
 }
 
 // The GPU twin's half of a block case: its mesh against ref<float> and ref<double>, and its own
@@ -519,6 +556,7 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   add_vs_double(meshes, meshes.single, "float_vs_double", result);
   write_mesh_artifact(meshes.truth, "mesh.cpu." + block.mesh_format,
                       fmt::format("cpu mesh, {} triangles", meshes.truth.triangles.size()), options, result);
+  write_mesh_picture(meshes.truth, "cpu", options, result);
   run_gpu_half(block, meshes, options, result);
 
   const MeshReport report = cpu_report.get();
