@@ -651,6 +651,9 @@ TEST_F(ReportFiles, HtmlShowsRenderedTwinsSideBySideWithTheirMetrics) {
       << metrics;
   EXPECT_NE(metrics.find("0.0157 (4/255)"), std::string::npos);
   EXPECT_EQ(metrics.find("mesh.closed"), std::string::npos);  // not an image metric
+  // The three values without a bound are information, never a green pass.
+  EXPECT_EQ(count_of(metrics, "<div class=\"metric info\""), 3) << metrics;
+  EXPECT_EQ(count_of(metrics, " · pass</div>"), 1) << "only PSNR is a graded pass";
 
   // Reference only: the GPU panel says why, no difference or verdict panel, no metrics.
   const std::string alone = case_section(html, "render.phong.bunny00");
@@ -820,4 +823,53 @@ TEST_F(Plots, NoRowsGiveAReason) {
 }
 
 }  // namespace
+// A user's image (run --candidate) gets the comparison panel under its own name.
+TEST_F(ReportFiles, HtmlShowsACandidateImageBesideTheReference) {
+  CaseResult result = make_case("render.phong.mutant_probe.quad", "render.phong",
+                                {make_check("image.psnr.candidate_vs_cpu", -30.6, -40.0, Outcome::fail),
+                                 make_check("image.max_abs.candidate_vs_cpu", 0.157, std::nullopt, Outcome::pass)});
+  const std::string prefix = result.name + "/";
+  result.artifacts = {{prefix + "cpu.png", "image", "CPU reference"},
+                      {prefix + "candidate.png", "image", "candidate mine.png"},
+                      {prefix + "candidate_vs_cpu_heat.png", "image", "max |candidate - cpu|"},
+                      {prefix + "candidate_vs_cpu_mask.png", "image", "verdicts"}};
+  Report report;
+  report.environment = sample_report().environment;
+  report.cases = {result};
+  write_report_html(report, folder / "index.html");
+  const std::string section = case_section(read_text(folder / "index.html"), result.name);
+  EXPECT_NE(section.find("<div class=\"role\">Candidate</div><a href=\"render.phong.mutant_probe.quad/candidate.png\">"),
+            std::string::npos)
+      << section;
+  EXPECT_NE(section.find("<div class=\"role\">Verdicts</div>"), std::string::npos);
+  EXPECT_NE(section.find("<div class=\"label\">max |candidate − cpu|</div>"), std::string::npos) << section;
+  EXPECT_EQ(section.find("<div class=\"figures\">"), std::string::npos) << "no picture left over";
+}
+
+// A case with more checks than a screen holds lists what needs attention in its table and keeps
+// the passes and the values without a bound in two collapsed, counted lists after it.
+TEST_F(ReportFiles, HtmlCollapsesTheManyPassesOfACase) {
+  std::vector<Check> checks;
+  for (int k = 0; k < 20; ++k) checks.push_back(make_check(fmt::format("parity.shadow.f{}.gpu_vs_float", k), 0.0, 0.0, Outcome::pass));
+  for (int k = 0; k < 5; ++k) checks.push_back(make_check(fmt::format("parity.f{}.rms.gpu_vs_double", k), 1e-7, std::nullopt, Outcome::pass));
+  checks.push_back(make_check("mass.relative_drift.gpu", 0.5, 1e-6, Outcome::fail));
+  Report report;
+  report.environment = sample_report().environment;
+  report.cases = {make_case("erosion.layered.cone", "erosion.layered", checks)};
+  write_report_html(report, folder / "index.html");
+  const std::string section = case_section(read_text(folder / "index.html"), "erosion.layered.cone");
+  const auto table = section.find("<table class=\"checks\">");
+  const auto failing = section.find("<td>mass.relative_drift.gpu</td>");
+  const auto passes = section.find("<details class=\"more\"><summary>20 checks passed within their bounds</summary>");
+  const auto values = section.find("<details class=\"more\"><summary>5 values shown without a bound (info)</summary>");
+  ASSERT_NE(passes, std::string::npos) << section;
+  ASSERT_NE(values, std::string::npos) << section;
+  EXPECT_LT(table, failing);
+  EXPECT_LT(failing, passes);
+  EXPECT_LT(section.find("<td>parity.shadow.f0.gpu_vs_float</td>"), values) << "passes inside their list";
+  EXPECT_GT(section.find("<td>parity.f0.rms.gpu_vs_double</td>"), values);
+  // Every check is still in the page, once.
+  for (const Check& check : checks) EXPECT_EQ(count_of(section, "<td>" + check.name + "</td>"), 1) << check.name;
+}
+
 }  // namespace gt

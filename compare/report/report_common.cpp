@@ -175,23 +175,29 @@ std::string percent_text(double share) {
 
 std::optional<ImageComparison> image_comparison(const CaseResult& result) {
   ImageComparison comparison;
+  // A user's image graded in the GPU's place (run --candidate) has the same pictures under its name.
+  if (std::any_of(result.artifacts.begin(), result.artifacts.end(),
+                  [](const Artifact& artifact) { return file_named(artifact, "candidate.png"); })) {
+    comparison.twin = "candidate";
+  }
+  const std::string& twin = comparison.twin;
   for (const Artifact& artifact : result.artifacts) {
     if (artifact.kind != "image") continue;
     if (!comparison.reference && file_named(artifact, "cpu.png")) {
       comparison.reference = &artifact;
-    } else if (!comparison.gpu && file_named(artifact, "gpu.png")) {
+    } else if (!comparison.gpu && file_named(artifact, twin + ".png")) {
       comparison.gpu = &artifact;
     } else if (!comparison.difference &&
-               (file_named(artifact, "gpu_vs_cpu_heat.png") || file_named(artifact, "gpu_vs_cpu.png"))) {
+               (file_named(artifact, twin + "_vs_cpu_heat.png") || file_named(artifact, twin + "_vs_cpu.png"))) {
       comparison.difference = &artifact;
-    } else if (!comparison.mask && file_named(artifact, "gpu_vs_cpu_mask.png")) {
+    } else if (!comparison.mask && file_named(artifact, twin + "_vs_cpu_mask.png")) {
       comparison.mask = &artifact;
     } else {
       comparison.others.push_back(&artifact);
     }
   }
   for (const Check& check : result.checks) {
-    if (!ends_with(check.name, ".gpu_vs_cpu")) continue;
+    if (!ends_with(check.name, "." + twin + "_vs_cpu")) continue;
     if (check.status == Outcome::skip) {
       if (comparison.gpu_missing_reason.empty()) comparison.gpu_missing_reason = check.detail;
     } else {
@@ -208,21 +214,24 @@ std::optional<ImageComparison> image_comparison(const CaseResult& result) {
 MetricText metric_text(const Check& check) {
   const std::string& name = check.name;
   const std::optional<double>& bound = check.threshold;
-  if (name == "image.psnr.gpu_vs_cpu") {  // the value is -PSNR, the bound -(least PSNR)
+  // "image.psnr.gpu_vs_cpu": the metric, and the twin compared with the reference.
+  const auto last_dot = name.rfind('.');
+  const std::string metric = name.substr(0, last_dot);
+  const std::string pair = last_dot == std::string::npos ? "" : name.substr(last_dot + 1);
+  const std::string twin = pair.substr(0, pair.find("_vs_"));
+  if (metric == "image.psnr") {  // the value is -PSNR, the bound -(least PSNR)
     const double psnr = -check.value;
     return {"PSNR", std::isinf(psnr) && psnr > 0 ? "∞ dB (identical)" : fmt::format("{:.1f} dB", psnr),
             bound ? fmt::format("≥ {} dB", format_value(-*bound)) : ""};
   }
-  const auto shown = [&](const char* label, std::string (*text)(double)) {
+  const auto shown = [&](const std::string& label, std::string (*text)(double)) {
     return MetricText{label, text(check.value), bound ? "≤ " + text(*bound) : ""};
   };
-  if (name == "image.max_abs.gpu_vs_cpu") return shown("max |gpu − cpu|", channel_text);
-  if (name == "image.rms.gpu_vs_cpu") return shown("RMS", format_value);
-  if (name == "image.share_beyond_tolerance.gpu_vs_cpu") return shown("pixels beyond 4/255", percent_text);
-  if (name == "image.share_beyond_tolerance_outside_edges.gpu_vs_cpu") {
-    return shown("beyond 4/255, edge shifts allowed", percent_text);
-  }
-  std::string label = name.substr(0, name.size() - std::string_view(".gpu_vs_cpu").size());
+  if (metric == "image.max_abs") return shown("max |" + twin + " − cpu|", channel_text);
+  if (metric == "image.rms") return shown("RMS", format_value);
+  if (metric == "image.share_beyond_tolerance") return shown("pixels beyond 4/255", percent_text);
+  if (metric == "image.share_beyond_tolerance_outside_edges") return shown("beyond 4/255, edge shifts allowed", percent_text);
+  std::string label = metric;
   for (const std::string_view kind : {"image.", "parity."}) {
     if (label.starts_with(kind)) label = label.substr(kind.size());
   }

@@ -98,8 +98,9 @@ std::string format_bounds(const Check& check);
 // *.gpu_vs_cpu that did not skip, in the case's order; others are the case's image artifacts that
 // are not part of the comparison.
 struct ImageComparison {
+  std::string twin = "gpu";  // the image graded against the reference: "gpu", or "candidate" (run --candidate)
   const Artifact* reference = nullptr;
-  const Artifact* gpu = nullptr;
+  const Artifact* gpu = nullptr;  // the twin's picture
   const Artifact* difference = nullptr;
   const Artifact* mask = nullptr;
   std::string gpu_missing_reason;  // when gpu is null

@@ -73,7 +73,7 @@ dl.params dt { color: #555; } dl.params dd { margin: 0; font-variant-numeric: ta
 .metrics { display: grid; grid-template-columns: repeat(auto-fill, minmax(190px, 1fr)); gap: .5em; margin-top: .7em; }
 .metric { background: #f6f6f6; border-left: 4px solid #2e7d32; padding: .3em .6em; }
 .metric.fail { border-color: #c62828; background: #fbeaea; } .metric.warn { border-color: #f9a825; }
-.metric.error { border-color: #6a1b9a; } .metric.skip { border-color: #757575; } .metric.inconclusive { border-color: #0277bd; } .metric.flaky { border-color: #ef6c00; }
+.metric.info { border-color: #b0bec5; } .metric.error { border-color: #6a1b9a; } .metric.skip { border-color: #757575; } .metric.inconclusive { border-color: #0277bd; } .metric.flaky { border-color: #ef6c00; }
 .metric .label { font-size: .82em; color: #555; }
 .metric .value { font-size: 1.15em; font-weight: 600; font-variant-numeric: tabular-nums; }
 .metric .bound { font-size: .8em; color: #555; }
@@ -99,9 +99,10 @@ bool strictly_worse(Outcome a, Outcome b) { return a != b && worse(a, b) == a; }
 
 // A check's badge: a value shown without a bound is `info` (neutral), never a green pass; an
 // outcome the expectation list names is marked `expected`, with its reason on hover.
+bool shown_without_bound(const Check& check);
+
 std::string check_badge(const Check& check) {
-  const bool informative = check.status == Outcome::pass && !check.threshold && !check.loose_threshold;
-  if (informative) return "<span class=\"badge info\">info</span>";
+  if (shown_without_bound(check)) return "<span class=\"badge info\">info</span>";
   if (met_expectation(check) && check.status != Outcome::pass) {
     return fmt::format("{} <span class=\"badge expected\" title=\"{}\">expected</span>", badge(check.status),
                        h(check.expectation));
@@ -283,7 +284,7 @@ void append_comparison(std::string& out, const ImageComparison& comparison) {
   const std::string not_run = comparison.gpu_missing_reason.empty() ? "not run" : "not run: " + comparison.gpu_missing_reason;
   out += "<div class=\"comparison\">\n<div class=\"panels\">\n";
   append_panel(out, "Reference (CPU)", comparison.reference, "");
-  append_panel(out, "GPU", comparison.gpu, not_run);
+  append_panel(out, comparison.twin == "gpu" ? "GPU" : "Candidate", comparison.gpu, not_run);
   if (comparison.difference) append_panel(out, "Difference", comparison.difference, "");
   if (comparison.mask) append_panel(out, "Verdicts", comparison.mask, "");
   out += "</div>\n";
@@ -291,10 +292,12 @@ void append_comparison(std::string& out, const ImageComparison& comparison) {
     out += "<div class=\"metrics\">\n";
     for (const Check* check : comparison.metrics) {
       const MetricText text = metric_text(*check);
+      // A value without a bound is information, not a pass (neutral tile, "info").
+      const std::string verdict = shown_without_bound(*check) ? "info" : outcome_name(check->status);
       out += fmt::format("<div class=\"metric {}\" title=\"{}\"><div class=\"label\">{}</div><div class=\"value\">{}</div>"
                          "<div class=\"bound\">{}{}</div></div>\n",
-                         outcome_name(check->status), h(check->name + ": " + check->detail), h(text.label), h(text.value),
-                         text.bound.empty() ? "" : h(text.bound) + " · ", outcome_name(check->status));
+                         verdict, h(check->name + ": " + check->detail), h(text.label), h(text.value),
+                         text.bound.empty() ? "" : h(text.bound) + " · ", verdict);
     }
     out += "</div>\n";
   }
@@ -326,26 +329,64 @@ void append_artifacts(std::string& out, const CaseResult& result, const std::vec
   if (!links.empty()) out += fmt::format("<details class=\"more\"><summary>Field files</summary>\n<ul class=\"files\">\n{}</ul>\n</details>\n", links);
 }
 
+bool shown_without_bound(const Check& check) {
+  return check.status == Outcome::pass && !check.threshold && !check.loose_threshold;
+}
+
+void append_check_rows(std::string& out, const std::vector<const Check*>& checks) {
+  for (const Check* check : checks) {
+    out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
+                       h(check->name), format_value(check->value), h(format_bounds(*check)), check_badge(*check),
+                       h(check->detail));
+  }
+}
+
+constexpr const char* check_table_head =
+    "<table class=\"checks\">\n<tr><th>check</th><th>value</th><th>bound</th><th>status</th><th>detail</th></tr>\n";
+
+// A case's checks: those needing attention first, worst first; then the passes and the values shown
+// without a bound. A case with more rows than a screen holds keeps its passes and values in two
+// collapsed lists (counted in their summaries), so that what did not pass is on screen; the checks
+// the user left out (--backend cpu) come last.
 void append_checks(std::string& out, const CaseResult& result) {
   if (result.checks.empty()) {
     out += "<p class=\"note\">No checks.</p>\n";
     return;
   }
-  out += "<table class=\"checks\">\n<tr><th>check</th><th>value</th><th>bound</th><th>status</th><th>detail</th></tr>\n";
-  std::vector<const Check*> ordered = checks_needing_attention(result);
+  constexpr std::size_t rows_on_a_screen = 16;
+  const std::vector<const Check*> attention = checks_needing_attention(result);
+  std::vector<const Check*> passed, values, left_out;
   for (const Check& check : result.checks) {
-    if (check.status == Outcome::pass) ordered.push_back(&check);
+    if (left_out_by_request(check)) {
+      left_out.push_back(&check);
+    } else if (check.status == Outcome::pass) {
+      (shown_without_bound(check) ? values : passed).push_back(&check);
+    }
   }
-  for (const Check& check : result.checks) {  // the checks the user left out, last
-    if (left_out_by_request(check)) ordered.push_back(&check);
+  const bool collapse = result.checks.size() > rows_on_a_screen;
+  if (collapse && attention.empty()) {
+    out += "<p class=\"note\">Nothing needs attention: every graded check passed.</p>\n";
+  } else {
+    out += check_table_head;
+    append_check_rows(out, attention);
   }
-  for (const Check* listed : ordered) {
-    const Check& check = *listed;
-    out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
-                       h(check.name), format_value(check.value), h(format_bounds(check)), check_badge(check),
-                       h(check.detail));
+  if (!collapse) {
+    append_check_rows(out, passed);
+    append_check_rows(out, values);
+    append_check_rows(out, left_out);
+    out += "</table>\n";
+    return;
   }
-  out += "</table>\n";
+  if (!attention.empty()) out += "</table>\n";
+  const auto collapsed = [&](const std::vector<const Check*>& checks, const std::string& summary) {
+    if (checks.empty()) return;
+    out += fmt::format("<details class=\"more\"><summary>{}</summary>\n{}", h(summary), check_table_head);
+    append_check_rows(out, checks);
+    out += "</table>\n</details>\n";
+  };
+  collapsed(passed, fmt::format("{} passed within their bounds", counted(passed.size(), "check")));
+  collapsed(values, fmt::format("{} shown without a bound (info)", counted(values.size(), "value")));
+  collapsed(left_out, fmt::format("{} not run, as asked", counted(left_out.size(), "check")));
 }
 
 std::string optional_value(const std::optional<double>& value) { return value ? format_value(*value) : "—"; }
