@@ -222,8 +222,8 @@ std::vector<Check> block_mesh_checks(const Block& block, const Mesh& mesh, const
 // A picture of a mesh for the reader, who cannot open a mesh file in a browser: the reference
 // rasterizer's plain Phong look from render.phong's default orbit (azimuth 30°, elevation 20°,
 // field of view 40°, 0.6 of the default light so that near faces keep their shading), 320 × 320
-// pixels, beside the mesh file. None for a mesh the rasterizer cannot
-// take (an index out of range, a non-finite corner: mesh.invalid says so), or without pictures.
+// pixels, beside the mesh file. None for a mesh the rasterizer cannot take (an index out of range,
+// a non-finite corner: mesh.invalid says so), or in a run without pictures.
 void write_mesh_picture(const Mesh& mesh, const std::string& backend, const RunOptions& options, CaseResult& result) {
   if (options.report_dir.empty() || !options.pictures || mesh.triangles.empty()) return;
   const bool drawable = std::ranges::all_of(mesh.triangles, [&](const auto& triangle) {
@@ -247,7 +247,7 @@ void write_mesh_picture(const Mesh& mesh, const std::string& backend, const RunO
   write_colour_image(side, side, colours, options.report_dir / result.name / file);
   result.artifacts.push_back({result.name + "/" + file, "image",
                               fmt::format("{} mesh, {} triangles: the reference rasterizer's Phong view from azimuth "
-                                          "30°, elevation 20° (lattice x to the right, y up)",
+                                          "30°, elevation 20° (y up)",
                                           backend, mesh.triangles.size())});
 }
 
