@@ -178,6 +178,69 @@ TEST(CaveMeshChecks, VerticesSitOnTheFieldsCrossings) {
       << "at threshold -2 nothing is rock";
 }
 
+// A candidate's density errs by e: on the edge between -1 and 3 the crossing may move by
+// 2e/(4 - 2e) of the edge; a vertex there within that passes, beyond it fails; an edge with an
+// endpoint within e of the threshold is excused rather than judged.
+TEST(CaveMeshChecks, ACandidatesVerticesMayMoveByItsDensityError) {
+  Volume<double> volume(2, 1, 1);
+  volume.values = {-1.0, 3.0};
+  const std::array<std::int64_t, 3> origin{10, 20, 30};
+  Mesh mesh = reference::marching_tetrahedra(volume, 0.0, true, origin);
+  const std::uint64_t inner_key = lattice_edge_key({10, 20, 30}, 1);
+  const auto inner = std::find(mesh.edge_keys.begin(), mesh.edge_keys.end(), inner_key) - mesh.edge_keys.begin();
+  ASSERT_LT(std::size_t(inner), mesh.edge_keys.size());
+  const CrossingModel model{.unit_roundoff = 0x1p-24, .density_error = 0.02};
+  const double shift = 2.0 * 0.02 / (4.0 - 2.0 * 0.02);  // 0.0101: within it, and twice it
+  mesh.positions[inner][0] = 10.25 + 0.5 * shift;
+  EXPECT_EQ(vertex_crossings(mesh, volume, 0.0, origin, true, model).off_crossing, 0u);
+  mesh.positions[inner][0] = 10.25 + 2.0 * shift;
+  EXPECT_EQ(vertex_crossings(mesh, volume, 0.0, origin, true, model).off_crossing, 1u);
+  EXPECT_EQ(vertex_crossings(mesh, volume, 0.0, origin, true).off_crossing, 1u) << "no density error: no shift";
+  volume.values = {-0.01, 3.0};  // within e of the threshold: this edge may cross or not
+  const VertexCrossings excused = vertex_crossings(mesh, volume, 0.0, origin, true, model);
+  EXPECT_EQ(excused.off_crossing, 0u);
+  EXPECT_GE(excused.excused, 1u);
+}
+
+// A mesh file's vertices get the keys of the Kuhn edges they lie on: an axis edge, a face
+// diagonal, the body diagonal, each up to float rounding; a vertex between edges or on a lattice
+// point gets none.
+TEST(CaveMeshChecks, FileVerticesAreKeyedByTheKuhnEdgeTheyLieOn) {
+  Mesh mesh;
+  mesh.positions = {{1.25, 2.0, 3.0},
+                    {1.5, 2.5, 3.0},
+                    {1.3, 2.3, 3.3},
+                    {1.25 + 1e-6, 2.0 - 1e-6, 3.0},
+                    {1.3, 2.6, 3.0},
+                    {1.0, 2.0, 3.0},
+                    {-0.75, 5.0, 2.0}};
+  EXPECT_EQ(key_by_lattice_edges(mesh), 2u);
+  EXPECT_EQ(mesh.edge_keys[0], lattice_edge_key({1, 2, 3}, 1));
+  EXPECT_EQ(mesh.edge_keys[1], lattice_edge_key({1, 2, 3}, 3));
+  EXPECT_EQ(mesh.edge_keys[2], lattice_edge_key({1, 2, 3}, 7));
+  EXPECT_EQ(mesh.edge_keys[3], lattice_edge_key({1, 2, 3}, 1));
+  EXPECT_EQ(mesh.edge_keys[4], missing_vertex_key) << "fractions 0.3 and 0.6: between edges";
+  EXPECT_EQ(mesh.edge_keys[5], missing_vertex_key) << "a lattice point";
+  EXPECT_EQ(mesh.edge_keys[6], lattice_edge_key({-1, 5, 2}, 1));
+}
+
+// Edges with a vertex in one mesh only count unless an endpoint may change side; the Hausdorff
+// bound is 2√3 without such samples and grows by their distance to the truth's vertices.
+TEST(CaveMeshChecks, CrossingEdgesAndTheHausdorffBoundExcuseOnlyChangingSamples) {
+  Mesh truth, candidate;
+  truth.positions = {{0.5, 0.0, 0.0}, {0.0, 0.5, 0.0}};
+  truth.edge_keys = {lattice_edge_key({0, 0, 0}, 1), lattice_edge_key({0, 0, 0}, 2)};
+  candidate.positions = {{0.5, 0.0, 0.0}, {5.0, 0.5, 0.0}};
+  candidate.edge_keys = {lattice_edge_key({0, 0, 0}, 1), lattice_edge_key({5, 0, 0}, 2)};
+  EXPECT_EQ(crossing_edges_unexplained(candidate, truth, {}), 2u);
+  EXPECT_EQ(crossing_edges_unexplained(candidate, truth, {{5, 1, 0}}), 1u) << "the edge to (5, 1, 0) is excused";
+  EXPECT_EQ(crossing_edges_unexplained(candidate, truth, {{5, 1, 0}, {0, 1, 0}}), 0u);
+  EXPECT_DOUBLE_EQ(keyed_hausdorff_bound(truth, {}), 2.0 * std::sqrt(3.0));
+  // (5, 1, 0) is sqrt(4.5² + 1) from the truth's nearest vertex: the bound grows by that.
+  EXPECT_DOUBLE_EQ(keyed_hausdorff_bound(truth, {{5, 1, 0}}), 2.0 * std::sqrt(3.0) + std::sqrt(4.5 * 4.5 + 1.0));
+  EXPECT_TRUE(std::isinf(keyed_hausdorff_bound(truth, {{50, 1, 0}}))) << "no truth vertex within 8 points";
+}
+
 TEST(CaveMeshChecks, VertexCrossingBoundIsTheMarginPlusRounding) {
   EXPECT_DOUBLE_EQ(vertex_crossing_bound(0.0, 0.0), 16.0 * 0x1p-53);
   EXPECT_DOUBLE_EQ(vertex_crossing_bound(0x1p-10, 1000.0), 0x1p-10 + 8.0 * 0x1p-53 * 1002.0);
