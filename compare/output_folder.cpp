@@ -374,6 +374,14 @@ void check_output_folder(const std::filesystem::path& out) {
   lock_output_folder(target, out);
 }
 
+bool same_file(const std::filesystem::path& output, const std::filesystem::path& input) {
+  std::error_code equivalent_error, output_error, input_error;
+  if (std::filesystem::equivalent(output, input, equivalent_error)) return true;
+  const auto resolved_output = std::filesystem::weakly_canonical(output, output_error);
+  const auto resolved_input = std::filesystem::weakly_canonical(input, input_error);
+  return !output_error && !input_error && resolved_output == resolved_input;
+}
+
 void refuse_input_inside_output(const std::filesystem::path& out, const std::filesystem::path& input,
                                 const std::string& command) {
   std::error_code error;

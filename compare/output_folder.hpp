@@ -37,6 +37,10 @@ namespace gt {
 // is writing it; then holds `out`'s lock until write_folder_atomically ends or the process exits.
 void check_output_folder(const std::filesystem::path& out);
 
+// Whether an output file the user named would replace an input: the same existing file (hard links
+// included), or the same path once resolved (a file not written yet).
+bool same_file(const std::filesystem::path& output, const std::filesystem::path& input);
+
 // Throws InputError when `input`, a file or folder the command reads, is `out` or lies inside it:
 // replacing `out` would delete it. `command` starts the message.
 void refuse_input_inside_output(const std::filesystem::path& out, const std::filesystem::path& input,

@@ -10,9 +10,13 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <utility>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
@@ -37,6 +41,8 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
 using SoupTriangle = std::array<std::size_t, 3>;
+using DistanceTree = CGAL::AABB_tree<CGAL::AABB_traits<CGAL::Exact_predicates_inexact_constructions_kernel,
+                                                       CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>>>;
 
 struct OpenMeshTraits : OpenMesh::DefaultTraits {
   using Point = OpenMesh::Vec3d;
@@ -61,16 +67,6 @@ TriangleKind kind_of(const Mesh& mesh, const std::array<std::uint32_t, 3>& trian
     return TriangleKind::nonfinite;
   }
   return TriangleKind::usable;
-}
-
-// The triangles both libraries are given: three distinct in-range indices, finite corners.
-std::vector<SoupTriangle> usable_triangles(const Mesh& mesh) {
-  std::vector<SoupTriangle> usable;
-  usable.reserve(mesh.triangles.size());
-  for (const auto& triangle : mesh.triangles) {
-    if (kind_of(mesh, triangle) == TriangleKind::usable) usable.push_back({triangle[0], triangle[1], triangle[2]});
-  }
-  return usable;
 }
 
 bool has_zero_area(const Mesh& mesh, const SoupTriangle& triangle) {
@@ -687,12 +683,46 @@ SurfaceMesh target_surface(const Mesh& mesh) {
 
 }  // namespace
 
+std::vector<SoupTriangle> usable_triangles(const Mesh& mesh) {
+  std::vector<SoupTriangle> usable;
+  usable.reserve(mesh.triangles.size());
+  for (const auto& triangle : mesh.triangles) {
+    if (kind_of(mesh, triangle) == TriangleKind::usable) usable.push_back({triangle[0], triangle[1], triangle[2]});
+  }
+  return usable;
+}
+
 double approximate_one_sided_hausdorff_distance(const Mesh& from, const Mesh& to, double grid_spacing) {
   if (from.triangles.empty()) return 0.0;
   if (to.triangles.empty()) return std::numeric_limits<double>::infinity();
   return PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
       sampled_surface(from), target_surface(to),
       CGAL::parameters::use_grid_sampling(true).grid_spacing(grid_spacing), CGAL::parameters::default_values());
+}
+
+std::vector<VertexDistance> vertex_distances(const Mesh& from, const Mesh& to) {
+  constexpr double unused = std::numeric_limits<double>::quiet_NaN();
+  std::vector<VertexDistance> distances(from.positions.size(), VertexDistance{unused, {unused, unused, unused}});
+  const SurfaceMesh target = target_surface(to);
+  const bool reachable = target.number_of_faces() > 0;
+  std::optional<DistanceTree> tree;
+  if (reachable) {
+    tree.emplace(faces(target).first, faces(target).second, target);
+    tree->accelerate_distance_queries();
+  }
+  for (const SoupTriangle& triangle : usable_triangles(from)) {
+    for (const std::size_t vertex : triangle) {
+      if (!std::isnan(distances[vertex].distance)) continue;  // measured from an earlier triangle
+      if (!reachable) {
+        distances[vertex].distance = std::numeric_limits<double>::infinity();
+        continue;
+      }
+      const Point query = point_of(from.positions[vertex]);
+      const Point nearest = tree->closest_point(query);
+      distances[vertex] = {std::sqrt(CGAL::squared_distance(query, nearest)), {nearest.x(), nearest.y(), nearest.z()}};
+    }
+  }
+  return distances;
 }
 
 nlohmann::json locations_json(const MeshReport& report) {

@@ -167,4 +167,19 @@ std::vector<Check> mesh_checks(const MeshReport& report, const std::string& back
 // only `to` is.
 double approximate_one_sided_hausdorff_distance(const Mesh& from, const Mesh& to, double grid_spacing);
 
+// The triangles the libraries are given, as index triples: three distinct in-range indices, finite
+// corners.
+std::vector<std::array<std::size_t, 3>> usable_triangles(const Mesh& mesh);
+
+// For each vertex of `from` that a usable triangle uses, the Euclidean distance to the nearest
+// point of `to`'s usable triangles and that point (CGAL's AABB tree, exact closest-point queries in
+// double); unused vertices get NaN, and every used one +infinity when `to` has no usable triangle.
+// Their largest is a lower bound of the one-sided Hausdorff distance, attained where the meshes
+// differ at their vertices (`groundtruth compare-mesh` reports it beside the sampled one).
+struct VertexDistance {
+  double distance = 0.0;
+  std::array<double, 3> nearest{};  // the closest point of the other surface
+};
+std::vector<VertexDistance> vertex_distances(const Mesh& from, const Mesh& to);
+
 }  // namespace gt

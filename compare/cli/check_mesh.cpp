@@ -10,7 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/checks/mesh.hpp"
-#include "compare/checks/mesh_distance.hpp"
+#include "compare/checks/vertex_values_ply.hpp"
+#include "compare/output_folder.hpp"
 #include "core/errors.hpp"
 #include "core/io/mesh_io.hpp"
 
@@ -54,9 +55,7 @@ void refuse_annotation_path(const std::filesystem::path& file, const std::filesy
   if (annotate.extension() != ".ply") {
     throw InputError(fmt::format("--annotate {}: the annotated mesh is written as .ply", annotate.string()));
   }
-  std::error_code error;
-  if (std::filesystem::equivalent(file, annotate, error) ||
-      std::filesystem::weakly_canonical(file, error) == std::filesystem::weakly_canonical(annotate, error)) {
+  if (same_file(annotate, file)) {
     throw InputError(fmt::format("--annotate {}: that is the mesh being checked", annotate.string()));
   }
 }

@@ -11,7 +11,7 @@
 // located problems — an end of a border, non-manifold or misoriented edge, a corner of a
 // self-intersecting face, each listed up to located_cap per kind — as the vertex property
 // `problems` and as a heat-map colour (black none, white the most), for any mesh viewer
-// (compare/checks/mesh_distance.hpp write_vertex_values_ply).
+// (compare/checks/vertex_values_ply.hpp).
 #pragma once
 
 #include <filesystem>

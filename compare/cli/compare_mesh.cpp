@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/checks/mesh.hpp"
-#include "compare/checks/mesh_distance.hpp"
+#include "compare/checks/vertex_values_ply.hpp"
 #include "compare/output_folder.hpp"
 #include "core/errors.hpp"
 #include "core/io/mesh_io.hpp"
@@ -36,18 +36,8 @@ struct Side {
 };
 
 double diagonal(const Mesh& mesh) {
-  std::array<double, 3> low{}, high{};
-  low.fill(std::numeric_limits<double>::infinity());
-  high.fill(-std::numeric_limits<double>::infinity());
-  for (const auto& position : mesh.positions) {
-    for (int axis = 0; axis < 3; ++axis) {
-      low[axis] = std::min(low[axis], position[axis]);
-      high[axis] = std::max(high[axis], position[axis]);
-    }
-  }
-  double squared = 0.0;
-  for (int axis = 0; axis < 3; ++axis) squared += (high[axis] - low[axis]) * (high[axis] - low[axis]);
-  return std::sqrt(squared);
+  const Box3<double> box = bounding_box(mesh);
+  return std::hypot(box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2]);
 }
 
 nlohmann::json topology_json(const MeshReport& report) {

@@ -8,7 +8,7 @@
 //   distance   CGAL's approximate one-sided Hausdorff distance both ways (grid sampling every S,
 //              by default 1/200 of the larger bounding-box diagonal) and the symmetric one (the
 //              larger), beside the exact distance of every vertex to the other surface
-//              (compare/checks/mesh_distance.hpp)
+//              (compare/checks/mesh.hpp vertex_distances)
 //   where      the ten vertices of each mesh farthest from the other surface: index, position,
 //              distance and the nearest point there; with --out DIR, DIR/a_to_b.ply and
 //              DIR/b_to_a.ply, each mesh coloured by its vertices' distance (heat map, white at

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/checks/image.hpp"
+#include "compare/output_folder.hpp"
 #include "core/errors.hpp"
 
 namespace gt {
@@ -30,15 +31,6 @@ struct Pictures {
 
 fs::path mask_path(const fs::path& heat_map) {
   return heat_map.parent_path() / (heat_map.stem().string() + ".mask.png");
-}
-
-// The same existing file (hard links included), or the same path once resolved.
-bool same_file(const fs::path& output, const fs::path& input) {
-  std::error_code equivalent_error, output_error, input_error;
-  if (fs::equivalent(output, input, equivalent_error)) return true;
-  const fs::path resolved_output = fs::weakly_canonical(output, output_error);
-  const fs::path resolved_input = fs::weakly_canonical(input, input_error);
-  return !output_error && !input_error && resolved_output == resolved_input;
 }
 
 // The pictures go to an existing folder and overwrite neither input; the mask, which the user did

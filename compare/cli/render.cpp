@@ -19,6 +19,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "compare/algorithms/render_phong.hpp"
+#include "compare/output_folder.hpp"
 #include "core/errors.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/io/heightmap_io.hpp"
@@ -57,15 +58,6 @@ std::string lower(std::string text) {
 bool is_mesh_file(const fs::path& file) {
   const std::string extension = lower(file.extension().string());
   return extension == ".off" || extension == ".obj" || extension == ".ply" || extension == ".stl";
-}
-
-// The same existing file (hard links included), or the same path once resolved.
-bool same_file(const fs::path& output, const fs::path& input) {
-  std::error_code equivalent_error, output_error, input_error;
-  if (fs::equivalent(output, input, equivalent_error)) return true;
-  const fs::path resolved_output = fs::weakly_canonical(output, output_error);
-  const fs::path resolved_input = fs::weakly_canonical(input, input_error);
-  return !output_error && !input_error && resolved_output == resolved_input;
 }
 
 void check_request(const RenderOptions& options) {
