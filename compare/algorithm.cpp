@@ -9,6 +9,14 @@
 
 namespace gt {
 
+CaseRun in_turn(CaseRun first, CaseRun second) {
+  return [first = std::move(first), second = std::move(second)](const nlohmann::json& expect, const RunOptions& options,
+                                                                 CaseResult& result) {
+    first(expect, options, result);
+    second(expect, options, result);
+  };
+}
+
 const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> all = [] {
     std::vector<Algorithm> list = {thermal_algorithm(), thermal_jako_algorithm(), pipe_algorithm(),

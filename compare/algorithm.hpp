@@ -26,6 +26,9 @@ namespace gt {
 // `expect` is the case's, checks and artifacts go into the result.
 using CaseRun = std::function<void(const nlohmann::json& expect, const RunOptions& options, CaseResult& result)>;
 
+// `first`, then `second`, into the same result (a case's extra checks of two kinds).
+CaseRun in_turn(CaseRun first, CaseRun second);
+
 // A generator's twins (noise) and the grid they sample.
 struct GeneratedCase {
   FieldTwin twin;

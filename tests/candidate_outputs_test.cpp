@@ -199,7 +199,9 @@ TEST(CandidateOutputs, AnHonestImagePassesAndABrightPatchFails) {
     ASSERT_EQ(graded.status, 0) << case_name << graded.err << graded.report_case.dump(1);
     EXPECT_EQ(check_of(graded.report_case, "image.psnr.candidate_vs_cpu")["status"], "pass");
     EXPECT_TRUE(fs::exists(folder / ("honest_" + case_name) / case_name / "candidate_vs_cpu_mask.png"));
-    if (probe) EXPECT_EQ(check_of(graded.report_case, "spec.phong_quad.candidate")["status"], "pass");
+    if (probe) {
+      EXPECT_EQ(check_of(graded.report_case, "spec.phong_quad.candidate")["status"], "pass");
+    }
     // A patch of a fifth of the width, 40 levels brighter, in the middle of the picture (a shading
     // bug in one tile): 4 % of the pixels, the bound 0.5 %.
     const int side = image_of(truth).spec().width / 5, corner = image_of(truth).spec().width / 2 - side / 2;
@@ -209,7 +211,9 @@ TEST(CandidateOutputs, AnHonestImagePassesAndABrightPatchFails) {
     EXPECT_EQ(check_of(graded.report_case, "image.share_beyond_tolerance_outside_edges.candidate_vs_cpu")["status"],
               "fail")
         << case_name;
-    if (probe) EXPECT_EQ(check_of(graded.report_case, "spec.phong_quad.candidate")["status"], "fail");
+    if (probe) {
+      EXPECT_EQ(check_of(graded.report_case, "spec.phong_quad.candidate")["status"], "fail");
+    }
   }
 }
 

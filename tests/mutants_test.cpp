@@ -80,25 +80,7 @@ TEST(Mutants, ErosionDropletsAreKilled) {
   EXPECT_TRUE(killed_by(mutation, "erosion.beyer.apply_scaled", "ledger.apply_rounding.cpu_float")) << mutation.dump(2);
   EXPECT_TRUE(killed_by(mutation, "erosion.particle.step_by_velocity", "spec.droplet.positions.cpu"));
 }
-// The pipe model's one-twin mutants also run on a real DEM, where a one-step shadow check (its bound
-// per cell, from the cell's own state) must kill each, not only the probe's or the four-step one.
-TEST(Mutants, ErosionPipeIsKilled) {
-  const json mutation = expect_every_mutant_killed({"erosion.pipe.*"});
-  for (const char* check : {"mass.water_balance.gpu", "stability.max_cfl.gpu"}) {
-    EXPECT_TRUE(killed_by(mutation, "erosion.pipe.unscaled_outflow", check)) << check;
-  }
-  EXPECT_TRUE(killed_by(mutation, "erosion.pipe.gravity_in_cgs", "stability.pipe_wave_number"));
-  for (const auto& mutant : mutation.value("mutants", json::array())) {
-    if (mutant.at("kind") != "one-twin") continue;
-    bool on_a_dem = false;
-    for (const auto& kill : mutant.at("killed_by")) {
-      const auto text = kill.get<std::string>();
-      on_a_dem = on_a_dem || (text.find("mutant_probe") == std::string::npos &&
-                              text.find(": parity.shadow.") != std::string::npos && text.find(".multi.") == std::string::npos);
-    }
-    EXPECT_TRUE(on_a_dem) << mutant.dump(2);
-  }
-}
+
 // The calibrated pair of an error model: the mutant above the bound is killed by `check` at 2 to
 // 10 times the bound (a sharp bound, issue 38); its must-survive partner below it survived
 // (expect_every_mutant_killed holds that).
@@ -119,6 +101,31 @@ void expect_killed_near_the_bound(const json& mutation, const std::string& mutan
   EXPECT_TRUE(calibrated) << mutant_name << " is not killed by " << check << ": " << mutation.dump(2);
 }
 
+// The pipe model's one-twin mutants also run on a real DEM, where a one-step shadow check (its bound
+// per cell, from the cell's own state) must kill each, not only the probe's or the four-step one.
+TEST(Mutants, ErosionPipeIsKilled) {
+  const json mutation = expect_every_mutant_killed({"erosion.pipe.*"});
+  for (const char* check : {"mass.water_balance.gpu", "stability.max_cfl.gpu"}) {
+    EXPECT_TRUE(killed_by(mutation, "erosion.pipe.unscaled_outflow", check)) << check;
+  }
+  EXPECT_TRUE(killed_by(mutation, "erosion.pipe.gravity_in_cgs", "stability.pipe_wave_number"));
+  // Bugs that conserve water and material die by the host spec of one step, on the volcano too.
+  for (const char* mutant : {"erosion.pipe.capacity_doubled", "erosion.pipe.tilt_unhalved"}) {
+    EXPECT_TRUE(killed_by(mutation, mutant, "erosion.pipe.flux.volcano: spec.step.terrain.cpu")) << mutant;
+  }
+  EXPECT_TRUE(killed_by(mutation, "erosion.pipe.rates_swapped", "spec.step.sediment.cpu"));
+  expect_killed_near_the_bound(mutation, "erosion.pipe.capacity_off_above_bound", "spec.step.terrain.cpu");
+  for (const auto& mutant : mutation.value("mutants", json::array())) {
+    if (mutant.at("kind") != "one-twin") continue;
+    bool on_a_dem = false;
+    for (const auto& kill : mutant.at("killed_by")) {
+      const auto text = kill.get<std::string>();
+      on_a_dem = on_a_dem || (text.find("mutant_probe") == std::string::npos &&
+                              text.find(": parity.shadow.") != std::string::npos && text.find(".multi.") == std::string::npos);
+    }
+    EXPECT_TRUE(on_a_dem) << mutant.dump(2);
+  }
+}
 TEST(Mutants, ErosionThermalIsKilled) {
   const json mutation = expect_every_mutant_killed({"erosion.thermal.*", "erosion.thermal_jako.*"});
   expect_killed_near_the_bound(mutation, "erosion.thermal.inflow_off_above_bound", "parity.shadow.terrain.gpu_vs_float");

@@ -51,6 +51,9 @@
 //                  what is suspended or left): informative.
 //   stability.max_cfl              the largest Δt·|u|/l_x or Δt·|v|/l_y of the run: at most 1 by the K
 //                  scaling (max_cfl_bound), plus 24 float roundings; no warn band.
+// spec.step.<field>.cpu: ref<double>'s step 11 value by value against a host spec of one step
+// (compare/algorithms/pipe_spec.hpp, compare/checks/pipe_spec_check.hpp), where the spec covers the
+// parameters: the erosion law, which no ledger sees (a conserving bug of both twins).
 // And, from the parameters alone, stability.pipe_wave_number: the stability number of the pipe
 // scheme's gravity waves (see pipe_wave_number below), at most 1, no warn band.
 // Mutants: compare/mutants/pipe.cpp (killed on the erosion.pipe.mutant_probe.* cases).
@@ -72,11 +75,13 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/algorithms/pipe_spec.hpp"
 #include "compare/benchmark.hpp"
 #include "compare/case_descriptors.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/field_twin.hpp"
 #include "compare/checks/pipe_error_model.hpp"
+#include "compare/checks/pipe_spec_check.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/steppers/pipe.hpp"
@@ -418,6 +423,23 @@ CaseRun wave_number_check(const PipeScenario& scenario) {
   };
 }
 
+// spec.step.*.cpu (compare/checks/pipe_spec_check.hpp) from ref<double>'s state after
+// `spec_start_step` steps: flows and suspended sediment established.
+constexpr int spec_start_step = 10;
+
+CaseRun spec_step_check(std::shared_ptr<const PipeScenario> scenario) {
+  return [scenario](const nlohmann::json&, const RunOptions&, CaseResult& result) {
+    const HydraulicParams& params = scenario->params;
+    if (params.steps < 1 || !pipe_spec_unsupported(params).empty()) return;
+    const int from = std::min(params.steps - 1, spec_start_step);
+    reference::PipeErosion<double> truth(scenario->initial, scenario->constants, scenario->forcing);
+    truth.run(from);
+    for (Check& check : pipe_spec_checks(truth.state(), scenario->constants, params, scenario->forcing, from + 1)) {
+      result.checks.push_back(std::move(check));
+    }
+  };
+}
+
 PreparedTwin prepare_pipe(const nlohmann::json& resolved, const LoadedInput& input) {
   auto scenario = std::make_shared<const PipeScenario>(make_scenario(resolved, input.heights));
   const PipeConstants& constants = scenario->constants;
@@ -438,7 +460,7 @@ PreparedTwin prepare_pipe(const nlohmann::json& resolved, const LoadedInput& inp
                                                                    CaseResult& result) {
     plot_ledgers(ends, material, options, result);
   };
-  return {.kind = std::move(twin), .extra_checks = wave_number_check(*scenario)};
+  return {.kind = std::move(twin), .extra_checks = in_turn(wave_number_check(*scenario), spec_step_check(scenario))};
 }
 
 // Mei, Decaudin, Hu 2007's simulation time per step on a GeForce 8800 GTX (as quoted by issue 3).

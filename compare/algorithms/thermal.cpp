@@ -208,14 +208,6 @@ CaseRun moved_ledger(const Heightmap& input, int iterations, double additions_pe
   };
 }
 
-// Both the moved ledger and, when the case asks, eq. 4.10's spec vector.
-CaseRun both(CaseRun first, CaseRun second) {
-  return [=](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
-    first(expect, options, result);
-    second(expect, options, result);
-  };
-}
-
 PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& given) {
   require_heightmap(given, "erosion.thermal");
   const ThermalParams params = thermal_params_from_json(resolved);
@@ -244,7 +236,7 @@ PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& gi
       input, params.iterations, additions_per_iteration,
       [=](const Grid<double>& heights) { return reference::thermal_erosion(heights, constants, 1, neighbourhood, 0); },
       [=](const Grid<double>& heights) { return hydra_first_iteration(heights, constants, neighbourhood); });
-  return {.kind = std::move(twin), .extra_checks = both(moved, add_talus_spec)};
+  return {.kind = std::move(twin), .extra_checks = in_turn(moved, add_talus_spec)};
 }
 
 PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightmap& input) {

@@ -13,7 +13,11 @@
 // mass.evaporation.* (K_e·Δt of the water held), mass.material_drift.* (the flux form
 // conserves material), mass.water_balance.* (the water held against what was added, evaporated and
 // let out), stability.max_cfl.* (the K scaling keeps Δt·|u|/l at most 1) and
-// stability.pipe_wave_number (the scheme's gravity waves, from the constants alone).
+// stability.pipe_wave_number (the scheme's gravity waves, from the constants alone). Bugs that
+// conserve water and material (a capacity twice K_c, K_s and K_d exchanged, the tilt's central
+// difference over l instead of 2l) pass every ledger: spec.step.* kills them, ref<double>'s step held
+// cell by cell to a host spec of the step (compare/algorithms/pipe_spec.hpp), on the probe and on
+// the volcano (whose equal K_s and K_d hide the exchange: the probe alone shows it).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -25,6 +29,7 @@ std::vector<Mutant> pipe_mutants() {
   const std::vector<std::string> flux_probe_and_dem = {"erosion.pipe.mutant_probe.flux", "erosion.pipe.seed001.volcano"};
   const std::vector<std::string> semi_lagrangian_probe_and_dem = {"erosion.pipe.mutant_probe.semi_lagrangian",
                                                                   "erosion.pipe.semi_lagrangian.volcano_open"};
+  const std::vector<std::string> flux_probe_and_volcano = {"erosion.pipe.mutant_probe.flux", "erosion.pipe.flux.volcano"};
   return {
       {"erosion.pipe.gpu_drops_bottom_pipe", MutantKind::one_twin,
        "pipes_outflow.comp never gives the B pipe a flux (a loop bound or a skipped direction)", flux_probe_and_dem},
@@ -56,6 +61,29 @@ std::vector<Mutant> pipe_mutants() {
        "erosion adds 2·k_s·(C − s) to the sediment while the bed loses k_s·(C − s) (ref erode_and_deposit, "
        "pipes_flow.comp)",
        flux_probe},
+      {"erosion.pipe.capacity_doubled", MutantKind::both_twins,
+       "the capacity constant is taken as 2·K_c (core/params/hydraulic.cpp's pipe_constants, which both twins read): "
+       "twice the erosion, material still conserved",
+       flux_probe_and_volcano},
+      {"erosion.pipe.rates_swapped", MutantKind::both_twins,
+       "K_s and K_d exchanged in pipe_constants: dissolving at the deposition rate and depositing at the dissolving "
+       "rate, material still conserved",
+       flux_probe},
+      {"erosion.pipe.tilt_unhalved", MutantKind::both_twins,
+       "the tilt's central difference b(x+1) − b(x−1) divided by l, not 2l (core/params/hydraulic.cpp's tilt_span, "
+       "which both twins read): sin α about twice too large on gentle slopes, material still conserved",
+       flux_probe_and_volcano},
+      // The calibrated pair of the spec step's error model (rounding-interval widths at double's
+      // unit): on the probe a capacity 2^-41 too large lands at 5.3 times the bound of
+      // spec.step.terrain.cpu (2^-40: 10 times, 2^-38: 42 times) and must be killed; 2^-52, one
+      // ulp of K_c, lands at 0.33 times it (the honest run: 0.37) and must survive.
+      {"erosion.pipe.capacity_off_above_bound", MutantKind::both_twins,
+       "the capacity constant is taken as K_c·(1 + 2^-41) in pipe_constants", flux_probe},
+      {.name = "erosion.pipe.capacity_off_below_bound",
+       .kind = MutantKind::both_twins,
+       .description = "the capacity constant is taken as K_c·(1 + 2^-52), one ulp off, in pipe_constants",
+       .cases = flux_probe,
+       .must_survive = true},
   };
 }
 

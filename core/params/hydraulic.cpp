@@ -36,6 +36,8 @@ const char* diffusion_weighting_name(DiffusionWeighting weighting) { return choi
 const char* tilt_differences_name(TiltDifferences differences) { return choice_name(tilt_choices, differences); }
 
 double tilt_span(TiltDifferences differences, int sides, double length) {
+  // Mutant erosion.pipe.tilt_unhalved: a central difference divided by l, not 2l (both twins' spans).
+  if (differences == TiltDifferences::central && mutant_active("erosion.pipe.tilt_unhalved")) return length;
   return differences == TiltDifferences::central ? sides * length : 1.0;
 }
 
@@ -122,12 +124,21 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.pipe_area = params.pipe_area > 0.0 ? params.pipe_area : constants.cell_area;
   constants.rain_rate = params.rain_rate;
   constants.evaporation_kept = 1.0 - evaporated_share;
+  // Mutants (both twins read their constants here): erosion.pipe.capacity_doubled takes 2·K_c; the
+  // spec step's calibrated pair takes K_c·(1 + 2^-41) (above its bound) and K_c·(1 + 2^-52) (below).
   constants.capacity = params.capacity;
+  if (mutant_active("erosion.pipe.capacity_doubled")) constants.capacity = 2.0 * params.capacity;
+  if (mutant_active("erosion.pipe.capacity_off_above_bound")) constants.capacity = params.capacity * (1.0 + 0x1p-41);
+  if (mutant_active("erosion.pipe.capacity_off_below_bound")) constants.capacity = params.capacity * (1.0 + 0x1p-52);
   constants.min_tilt_sine = params.min_tilt_sine;
   constants.tilt_differences = params.tilt_differences;
   constants.depth_ramp = params.depth_ramp;
-  constants.dissolving_fraction = std::min(1.0, params.dissolving_rate * params.time_step);
-  constants.deposition_fraction = std::min(1.0, params.deposition_rate * params.time_step);
+  // Mutant erosion.pipe.rates_swapped: K_s and K_d exchanged (both twins read them here).
+  const bool rates_swapped = mutant_active("erosion.pipe.rates_swapped");
+  const double dissolving_rate = rates_swapped ? params.deposition_rate : params.dissolving_rate;
+  const double deposition_rate = rates_swapped ? params.dissolving_rate : params.deposition_rate;
+  constants.dissolving_fraction = std::min(1.0, dissolving_rate * params.time_step);
+  constants.deposition_fraction = std::min(1.0, deposition_rate * params.time_step);
   constants.velocity_depth_floor = params.velocity_depth_floor;
   constants.pipe_count = params.pipe_count;
   constants.transport = params.transport;

@@ -1,0 +1,231 @@
+// One pipe step on the host (see pipe_spec.hpp). Written from digest 000 §3.4's equations, stage by
+// stage over whole grids (each stage reads the previous one's fields, as Mei's passes do):
+//   2.10        d_A = d + Δt·(r + r_map) + Σ_sources rate·Δt/(l_x·l_y)
+//   2.11-2.13   f̂_k = max(0, f_k + Δt·A·g·Δh_k/l_k), Δh_k = (b + d_A) − (b_k + d_A,k);
+//               K = min(1, d_A·l_x·l_y/(Δt·Σf̂)), 1 when Σf̂ = 0; f_k = K·f̂_k
+//   2.14-2.17   d_B = max(0, d_A − Δt·Σf_out/(l_x·l_y)) + Δt·Σf_in/(l_x·l_y)
+//   2.18-2.19   u = ½((f_in,L − f_L) + (f_R − f_in,R))/(l_y·d̄), v likewise along y with l_x,
+//               d̄ = max(depth floor, ½(d_A + d_B))
+//   2.20-2.23   C = K_c·max(sin α, T_α)·|(u, v)|·min(1, d_B/K_w); sin α = |∇b|/√(1 + |∇b|²), ∇b by
+//               central differences over 2l (one-sided over l beside an exterior pipe, 0 with both
+//               sides exterior); C > s: b −= k_s·(C − s), s += the same; else b += k_d·(s − C),
+//               s −= the same; k = min(1, K·Δt)
+//   flux form   each pipe carries the share f_k·Δt/(d_A·l_x·l_y) of the eroded s (what the cell's
+//               water moved); a cell keeps s·(1 − min(1, Σ shares)) and gains its neighbours' sends
+//   evaporation d = d_B·(1 − K_e·Δt)
+// Exterior pipes (off the grid or into no data): walls with closed borders; with open borders a dry
+// neighbour at the cell's own height (Δh = d_A) that sends nothing back.
+#include "compare/algorithms/pipe_spec.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "core/rounding_interval.hpp"
+
+namespace gt {
+
+namespace {
+
+// Unqualified, so that RoundingInterval brings its own.
+using std::max;
+using std::min;
+using std::sqrt;
+
+// The four pipes in pipe_offsets' order, L, R, T (+y), B; pipe k's opposite is k ^ 1.
+constexpr int pipe_count = 4;
+constexpr int left = 0, right = 1, top = 2, bottom = 3;
+constexpr int towards_cell(int pipe) { return pipe ^ 1; }
+
+template <class Real>
+using Fluxes = std::array<Real, 4>;
+
+// What one stage needs of the grid: sizes, which cells take part, and where pipe k leads.
+template <class Real>
+struct Cells {
+  const Grid<Real>& terrain;
+
+  bool wet(int x, int y) const { return terrain.inside(x, y) && terrain.is_valid(x, y); }
+  // Pipe k of (x, y) leads to a cell that takes part.
+  bool interior(int x, int y, int pipe) const { return wet(x + pipe_offsets[pipe].dx, y + pipe_offsets[pipe].dy); }
+  std::size_t neighbour(int x, int y, int pipe) const {
+    return terrain.index(x + pipe_offsets[pipe].dx, y + pipe_offsets[pipe].dy);
+  }
+  template <class Visit>
+  void each(Visit visit) const {
+    for (int y = 0; y < terrain.height; ++y) {
+      for (int x = 0; x < terrain.width; ++x) {
+        if (terrain.is_valid(x, y)) visit(x, y, terrain.index(x, y));
+      }
+    }
+  }
+};
+
+template <class Real>
+Real total(const Fluxes<Real>& fluxes) {
+  return ((fluxes[0] + fluxes[1]) + fluxes[2]) + fluxes[3];
+}
+
+// What the neighbours send into (x, y): pipe k's neighbour sends through its opposite pipe.
+template <class Real>
+Fluxes<Real> arriving(const Cells<Real>& cells, const std::vector<Fluxes<Real>>& sent, int x, int y) {
+  Fluxes<Real> in{};
+  for (int k = 0; k < pipe_count; ++k) {
+    if (cells.interior(x, y, k)) in[k] = sent[cells.neighbour(x, y, k)][towards_cell(k)];
+  }
+  return in;
+}
+
+// eq. 2.10: the depth after rain, the rain map and the sources.
+template <class Real>
+std::vector<Real> water_after_additions(const Cells<Real>& cells, const Grid<Real>& water, const HydraulicParams& params,
+                                        const HydraulicForcing& forcing) {
+  std::vector<Real> depth(water.size(), Real(0));
+  const Real time_step(params.time_step);
+  cells.each([&](int, int, std::size_t cell) {
+    const double mapped = forcing.rain_map.values.empty() ? 0.0 : forcing.rain_map.values[cell];
+    depth[cell] = water.values[cell] + time_step * (Real(params.rain_rate) + Real(mapped));
+  });
+  const double cell_area = cells.terrain.cell_size_x * cells.terrain.cell_size_y;
+  for (const PointSource& source : forcing.sources) {
+    const std::size_t cell = cells.terrain.index(source.x, source.y);
+    depth[cell] = depth[cell] + Real(source.rate) * Real(params.time_step / cell_area);
+  }
+  return depth;
+}
+
+// eqs. 2.11-2.13: the outflows after the head accelerated them, scaled by K.
+template <class Real>
+std::vector<Fluxes<Real>> scaled_outflows(const Cells<Real>& cells, const std::vector<Fluxes<Real>>& flux,
+                                          const std::vector<Real>& depth, const HydraulicParams& params) {
+  const auto& terrain = cells.terrain;
+  const double cell_area = terrain.cell_size_x * terrain.cell_size_y;
+  const double cross_section = params.pipe_area > 0.0 ? params.pipe_area : cell_area;
+  const double pipe_length[pipe_count] = {terrain.cell_size_x, terrain.cell_size_x, terrain.cell_size_y,
+                                          terrain.cell_size_y};
+  const bool open = params.boundary == PipeBoundary::open;
+  std::vector<Fluxes<Real>> scaled(flux.size(), Fluxes<Real>{});
+  cells.each([&](int x, int y, std::size_t cell) {
+    const Real surface = terrain.values[cell] + depth[cell];
+    Fluxes<Real> accelerated{};
+    for (int k = 0; k < pipe_count; ++k) {
+      const bool inside = cells.interior(x, y, k);
+      if (!inside && !open) continue;
+      const std::size_t other = inside ? cells.neighbour(x, y, k) : cell;
+      const Real head = inside ? surface - (terrain.values[other] + depth[other]) : depth[cell];
+      const Real acceleration(params.time_step * cross_section * params.gravity / pipe_length[k]);
+      accelerated[k] = max(Real(0), flux[cell][k] + acceleration * head);
+    }
+    const Real asked = total(accelerated) * Real(params.time_step);
+    const Real held = depth[cell] * Real(cell_area);
+    const Real factor = asked > Real(0) ? min(Real(1), held / asked) : Real(1);
+    for (int k = 0; k < pipe_count; ++k) scaled[cell][k] = factor * accelerated[k];
+  });
+  return scaled;
+}
+
+// The terrain's tilt sin α at (x, y) from central differences (eq. 2.20's α).
+template <class Real>
+Real tilt_sine(const Cells<Real>& cells, int x, int y) {
+  const auto& terrain = cells.terrain;
+  const auto slope = [&](int down, int up, double length) {
+    const bool has_down = cells.interior(x, y, down);
+    const bool has_up = cells.interior(x, y, up);
+    if (!has_down && !has_up) return Real(0);
+    const Real lower = has_down ? terrain.values[cells.neighbour(x, y, down)] : terrain.at(x, y);
+    const Real upper = has_up ? terrain.values[cells.neighbour(x, y, up)] : terrain.at(x, y);
+    const double run = (has_down && has_up ? 2.0 : 1.0) * length;
+    return (upper - lower) / Real(run);
+  };
+  const Real along_x = slope(left, right, terrain.cell_size_x);
+  const Real along_y = slope(bottom, top, terrain.cell_size_y);
+  const Real squared = along_x * along_x + along_y * along_y;
+  return sqrt(squared / (Real(1) + squared));
+}
+
+}  // namespace
+
+std::string pipe_spec_unsupported(const HydraulicParams& params) {
+  std::vector<std::string> outside;
+  if (params.pipe_count != 4) outside.push_back("8 pipes");
+  if (params.transport != SedimentTransport::flux) outside.push_back("semi-Lagrangian transport");
+  if (params.tilt_differences != TiltDifferences::central) outside.push_back("seed 001's raw tilt differences");
+  if (params.sediment_diffusion > 0.0) outside.push_back("sediment diffusion");
+  if (params.regolith_depth > 0.0) outside.push_back("regolith");
+  if (params.thermal_step) outside.push_back("the combined thermal step");
+  return fmt::format("{}", fmt::join(outside, ", "));
+}
+
+template <class Real>
+PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicParams& params,
+                               const HydraulicForcing& forcing) {
+  const Cells<Real> cells{start.terrain};
+  const double cell_area = start.terrain.cell_size_x * start.terrain.cell_size_y;
+  const Real volume_to_depth(params.time_step / cell_area);
+  PipeState<Real> next = start;
+
+  const std::vector<Real> added = water_after_additions(cells, start.water, params, forcing);
+  std::vector<Fluxes<Real>> previous(start.outflow.size());
+  for (std::size_t cell = 0; cell < previous.size(); ++cell) {
+    for (int k = 0; k < pipe_count; ++k) previous[cell][k] = start.outflow[cell][k];
+  }
+  const std::vector<Fluxes<Real>> outflow = scaled_outflows(cells, previous, added, params);
+
+  // eqs. 2.14-2.19: depth after the flow, and the velocity from the net flux through the cell.
+  std::vector<Real> flowed(added.size(), Real(0));
+  cells.each([&](int x, int y, std::size_t cell) {
+    const Fluxes<Real>& out = outflow[cell];
+    const Fluxes<Real> in = arriving(cells, outflow, x, y);
+    flowed[cell] = max(Real(0), added[cell] - volume_to_depth * total(out)) + volume_to_depth * total(in);
+    const Real mean_depth = max(Real(params.velocity_depth_floor), Real(0.5) * (added[cell] + flowed[cell]));
+    const Real net_x = Real(0.5) * ((in[left] - out[left]) + (out[right] - in[right]));
+    const Real net_y = Real(0.5) * ((in[bottom] - out[bottom]) + (out[top] - in[top]));
+    next.velocity_x.values[cell] = net_x / (Real(start.terrain.cell_size_y) * mean_depth);
+    next.velocity_y.values[cell] = net_y / (Real(start.terrain.cell_size_x) * mean_depth);
+  });
+
+  // eqs. 2.20-2.23: erosion towards the capacity, deposition above it.
+  const Real dissolving(std::min(1.0, params.dissolving_rate * params.time_step));
+  const Real depositing(std::min(1.0, params.deposition_rate * params.time_step));
+  std::vector<Real> eroded_sediment(added.size(), Real(0));
+  cells.each([&](int x, int y, std::size_t cell) {
+    const Real u = next.velocity_x.values[cell];
+    const Real v = next.velocity_y.values[cell];
+    const Real ramp = params.depth_ramp > 0.0 ? min(Real(1), flowed[cell] / Real(params.depth_ramp)) : Real(1);
+    const Real tilt = max(Real(params.min_tilt_sine), tilt_sine(cells, x, y));
+    const Real capacity = Real(params.capacity) * tilt * sqrt(u * u + v * v) * ramp;
+    const Real suspended = start.sediment.values[cell];
+    const Real taken = capacity > suspended ? dissolving * (capacity - suspended) : -(depositing * (suspended - capacity));
+    next.terrain.values[cell] = start.terrain.values[cell] - taken;
+    eroded_sediment[cell] = suspended + taken;
+  });
+
+  // The flux form: the sediment goes where the water went, in the same shares of the cell's d_A.
+  std::vector<Fluxes<Real>> carried(added.size(), Fluxes<Real>{});
+  std::vector<Real> kept(added.size(), Real(0));
+  cells.each([&](int, int, std::size_t cell) {
+    Fluxes<Real> shares{};
+    if (added[cell] > Real(0)) {
+      for (int k = 0; k < pipe_count; ++k) shares[k] = outflow[cell][k] * volume_to_depth / added[cell];
+    }
+    for (int k = 0; k < pipe_count; ++k) carried[cell][k] = eroded_sediment[cell] * shares[k];
+    kept[cell] = eroded_sediment[cell] * (Real(1) - min(Real(1), total(shares)));
+  });
+  const Real evaporation_kept(1.0 - params.evaporation_rate * params.time_step);
+  cells.each([&](int x, int y, std::size_t cell) {
+    next.sediment.values[cell] = kept[cell] + total(arriving(cells, carried, x, y));
+    next.water.values[cell] = flowed[cell] * evaporation_kept;
+    for (int k = 0; k < pipe_count; ++k) next.outflow[cell][k] = outflow[cell][k];
+  });
+  return next;
+}
+
+template PipeState<double> pipe_spec_step(const PipeState<double>&, const HydraulicParams&, const HydraulicForcing&);
+template PipeState<RoundingInterval> pipe_spec_step(const PipeState<RoundingInterval>&, const HydraulicParams&,
+                                                    const HydraulicForcing&);
+
+}  // namespace gt
