@@ -115,6 +115,7 @@ TEST(Mutants, ErosionPipeIsKilled) {
   }
   EXPECT_TRUE(killed_by(mutation, "erosion.pipe.rates_swapped", "spec.step.sediment.cpu"));
   expect_killed_near_the_bound(mutation, "erosion.pipe.capacity_off_above_bound", "spec.step.terrain.cpu");
+  expect_killed_near_the_bound(mutation, "erosion.pipe.velocity_off_above_bound", "parity.shadow.velocity_x.gpu_vs_float");
   for (const auto& mutant : mutation.value("mutants", json::array())) {
     if (mutant.at("kind") != "one-twin") continue;
     bool on_a_dem = false;

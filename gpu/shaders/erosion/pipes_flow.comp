@@ -134,6 +134,11 @@ void main() {
   precise float mean_depth = ref_max(depth_floor, 0.5 * (depth_before + depth));
   precise float u = flow_x / (length_y * mean_depth);
   precise float v = flow_y / (length_x * mean_depth);
+#if defined(GT_MUTANT_EROSION_PIPE_VELOCITY_OFF_ABOVE_BOUND)
+  u = u * (1.0 + 1.0 / 65536.0);  // mutant: u scaled by 1 + 2^-16 (the calibrated pair's killed half)
+#elif defined(GT_MUTANT_EROSION_PIPE_VELOCITY_OFF_BELOW_BOUND)
+  u = u * (1.0 + 1.0 / 8388608.0);  // mutant: u one ulp high (1 + 2^-23), which an honest twin may be
+#endif
   velocity[index] = vec2(u, v);
 
   // 5 erosion and deposition
