@@ -94,10 +94,21 @@ HydraulicForcing basin_forcing() {
   return forcing;
 }
 
+// Seed 001's variant on top: regolith, sediment diffusion by `weighting`, the code's raw tilt.
+HydraulicParams seed001_params(gt::PipeBoundary boundary, gt::DiffusionWeighting weighting) {
+  HydraulicParams params = basin_params(boundary);
+  params.regolith_depth = 0.01;
+  params.regolith_dissolving_rate = 2.0;
+  params.regolith_deposition_rate = 3.0;
+  params.sediment_diffusion = 0.1;
+  params.diffusion_weighting = weighting;
+  params.tilt_differences = gt::TiltDifferences::seed001_code;
+  return params;
+}
+
 // The spec.step checks of the seventh step, with `mutant` active ("" = none) in the twins' constants.
-std::vector<gt::Check> spec_checks(const std::string& mutant, gt::PipeBoundary boundary) {
+std::vector<gt::Check> spec_checks(const std::string& mutant, const HydraulicParams& params) {
   gt::set_active_mutant(mutant);
-  const auto params = basin_params(boundary);
   const auto terrain = basin();
   const auto constants = gt::pipe_constants(params, terrain);
   auto start = gt::dry_pipe_state(terrain);
@@ -116,14 +127,20 @@ const gt::Check& named(const std::vector<gt::Check>& checks, const std::string& 
   throw std::runtime_error("no check " + name);
 }
 
-TEST(PipeSpec, ReferenceStepPassesOnBothBorders) {
+void expect_all_pass(const std::vector<gt::Check>& checks, std::size_t count) {
+  ASSERT_EQ(checks.size(), count);
+  for (const auto& check : checks) {
+    EXPECT_EQ(check.status, gt::Outcome::pass) << check.name << " = " << check.value << ": " << check.detail;
+    ASSERT_TRUE(check.threshold.has_value()) << check.name;
+    EXPECT_GT(*check.threshold, 0.0) << check.name;  // a bound from the model, not a tolerance of 0
+  }
+}
+
+TEST(PipeSpec, ReferenceStepPassesOnBothBordersAndSeed001sVariant) {
   for (const auto boundary : {gt::PipeBoundary::closed, gt::PipeBoundary::open}) {
-    const auto checks = spec_checks("", boundary);
-    ASSERT_EQ(checks.size(), 6u);
-    for (const auto& check : checks) {
-      EXPECT_EQ(check.status, gt::Outcome::pass) << check.name << " = " << check.value << ": " << check.detail;
-      ASSERT_TRUE(check.threshold.has_value()) << check.name;
-      EXPECT_GT(*check.threshold, 0.0) << check.name;  // a bound from the model, not a tolerance of 0
+    expect_all_pass(spec_checks("", basin_params(boundary)), 6);
+    for (const auto weighting : {gt::DiffusionWeighting::uniform, gt::DiffusionWeighting::water}) {
+      expect_all_pass(spec_checks("", seed001_params(boundary, weighting)), 7);
     }
   }
 }
@@ -132,16 +149,18 @@ TEST(PipeSpec, ConservingBugsOfBothTwinsFail) {
   for (const char* mutant : {"erosion.pipe.capacity_doubled", "erosion.pipe.rates_swapped", "erosion.pipe.tilt_unhalved",
                              "erosion.pipe.capacity_off_above_bound"}) {
     for (const auto boundary : {gt::PipeBoundary::closed, gt::PipeBoundary::open}) {
-      const auto checks = spec_checks(mutant, boundary);
+      const auto checks = spec_checks(mutant, basin_params(boundary));
       EXPECT_EQ(named(checks, "spec.step.terrain.cpu").status, gt::Outcome::fail) << mutant;
       EXPECT_EQ(named(checks, "spec.step.sediment.cpu").status, gt::Outcome::fail) << mutant;
       EXPECT_EQ(named(checks, "spec.step.water.cpu").status, gt::Outcome::pass) << mutant;  // the water is untouched
     }
   }
-  EXPECT_EQ(named(spec_checks("erosion.pipe.gravity_in_cgs", gt::PipeBoundary::open), "spec.step.outflow.cpu").status,
-            gt::Outcome::fail);
-  EXPECT_EQ(named(spec_checks("erosion.pipe.half_rain", gt::PipeBoundary::open), "spec.step.water.cpu").status,
-            gt::Outcome::fail);
+  const auto open = basin_params(gt::PipeBoundary::open);
+  EXPECT_EQ(named(spec_checks("erosion.pipe.gravity_in_cgs", open), "spec.step.outflow.cpu").status, gt::Outcome::fail);
+  EXPECT_EQ(named(spec_checks("erosion.pipe.half_rain", open), "spec.step.water.cpu").status, gt::Outcome::fail);
+  // In seed 001's variant, where the code's raw tilt takes no span, the rates still show.
+  const auto variant = seed001_params(gt::PipeBoundary::closed, gt::DiffusionWeighting::water);
+  EXPECT_EQ(named(spec_checks("erosion.pipe.rates_swapped", variant), "spec.step.terrain.cpu").status, gt::Outcome::fail);
 }
 
 // The spec's own balance with closed borders: material b + s is only moved, and the water after the
@@ -171,9 +190,13 @@ TEST(PipeSpec, ClosedBordersBalance) {
 TEST(PipeSpec, DomainIsSaid) {
   HydraulicParams params;
   EXPECT_EQ(gt::pipe_spec_unsupported(params), "");
-  params.pipe_count = 8;
   params.regolith_depth = 0.01;
-  EXPECT_EQ(gt::pipe_spec_unsupported(params), "8 pipes, regolith");
+  params.sediment_diffusion = 0.1;
+  params.tilt_differences = gt::TiltDifferences::seed001_code;
+  EXPECT_EQ(gt::pipe_spec_unsupported(params), "");
+  params.pipe_count = 8;
+  params.thermal_step = true;
+  EXPECT_EQ(gt::pipe_spec_unsupported(params), "8 pipes, the combined thermal step");
 }
 
 }  // namespace

@@ -10,8 +10,13 @@
 //               central differences over 2l (one-sided over l beside an exterior pipe, 0 with both
 //               sides exterior); C > s: b −= k_s·(C − s), s += the same; else b += k_d·(s − C),
 //               s −= the same; k = min(1, K·Δt)
-//   flux form   each pipe carries the share f_k·Δt/(d_A·l_x·l_y) of the eroded s (what the cell's
-//               water moved); a cell keeps s·(1 − min(1, Σ shares)) and gains its neighbours' sends
+//               with seed 001's code's tilt: the raw differences b(x+1) − b(x−1) in place of ∇b
+//   regolith    (seed 001 §3.9, K_r > 0) r_max = min(d_B, K_r); r < r_max: b −= k_re·(r_max − r),
+//               r += the same; else b += k_rd·(r − r_max), r −= the same
+//   flux form   each pipe carries the share f_k·Δt/(d_A·l_x·l_y) of the eroded s (and of r: what the
+//               cell's water moved); a cell keeps s·(1 − min(1, Σ shares)) and gains its neighbours'
+//   diffusion   (seed 001 §3.8, w > 0) s (and r with regolith_diffusion) to the 4 axis neighbours
+//               that take part, σ = w or ½d_k/(d + ½Σd_n) with depths d_B; kept: max(0, s − Σσ·s)
 //   evaporation d = d_B·(1 − K_e·Δt)
 // Exterior pipes (off the grid or into no data): walls with closed borders; with open borders a dry
 // neighbour at the cell's own height (Δh = d_A) that sends nothing back.
@@ -128,9 +133,11 @@ std::vector<Fluxes<Real>> scaled_outflows(const Cells<Real>& cells, const std::v
   return scaled;
 }
 
-// The terrain's tilt sin α at (x, y) from central differences (eq. 2.20's α).
+// The terrain's tilt sin α at (x, y) (eq. 2.20's α): from the slope by central differences over 2l
+// (one-sided over l beside an exterior pipe, 0 with both sides exterior), or, with seed 001's code,
+// from the raw height differences (its get_steepness: as if l were 1 and the difference not halved).
 template <class Real>
-Real tilt_sine(const Cells<Real>& cells, int x, int y) {
+Real tilt_sine(const Cells<Real>& cells, TiltDifferences differences, int x, int y) {
   const auto& terrain = cells.terrain;
   const auto slope = [&](int down, int up, double length) {
     const bool has_down = cells.interior(x, y, down);
@@ -138,13 +145,64 @@ Real tilt_sine(const Cells<Real>& cells, int x, int y) {
     if (!has_down && !has_up) return Real(0);
     const Real lower = has_down ? terrain.values[cells.neighbour(x, y, down)] : terrain.at(x, y);
     const Real upper = has_up ? terrain.values[cells.neighbour(x, y, up)] : terrain.at(x, y);
-    const double run = (has_down && has_up ? 2.0 : 1.0) * length;
-    return (upper - lower) / Real(run);
+    if (differences == TiltDifferences::seed001_code) return upper - lower;
+    return (upper - lower) / Real((has_down && has_up ? 2.0 : 1.0) * length);
   };
   const Real along_x = slope(left, right, terrain.cell_size_x);
   const Real along_y = slope(bottom, top, terrain.cell_size_y);
   const Real squared = along_x * along_x + along_y * along_y;
   return sqrt(squared / (Real(1) + squared));
+}
+
+// The flux form: `field` goes where the water went, in the shares of the cell's d_A its pipes
+// moved; a cell keeps field·(1 − min(1, Σ shares)) and gains what its neighbours send.
+template <class Real>
+std::vector<Real> carried_with_water(const Cells<Real>& cells, const std::vector<Real>& field,
+                                     const std::vector<Fluxes<Real>>& outflow, const std::vector<Real>& added,
+                                     const Real& volume_to_depth) {
+  std::vector<Fluxes<Real>> sent(field.size(), Fluxes<Real>{});
+  std::vector<Real> kept(field.size(), Real(0));
+  cells.each([&](int, int, std::size_t cell) {
+    Fluxes<Real> shares{};
+    if (added[cell] > Real(0)) {
+      for (int k = 0; k < pipe_count; ++k) shares[k] = outflow[cell][k] * volume_to_depth / added[cell];
+    }
+    for (int k = 0; k < pipe_count; ++k) sent[cell][k] = field[cell] * shares[k];
+    kept[cell] = field[cell] * (Real(1) - min(Real(1), total(shares)));
+  });
+  std::vector<Real> moved = field;
+  cells.each([&](int x, int y, std::size_t cell) { moved[cell] = kept[cell] + total(arriving(cells, sent, x, y)); });
+  return moved;
+}
+
+// Seed 001 §3.8's diffusion to the 4 axis neighbours that take part: each gets σ_k of the cell's
+// value, σ_k = w (the thesis) or ½d_k/(d + ½Σd_n) over depths `water` (its code; nothing moves
+// where that sum is 0); the cell keeps the rest, at least 0.
+template <class Real>
+std::vector<Real> diffused(const Cells<Real>& cells, const std::vector<Real>& field, const std::vector<Real>& water,
+                           const HydraulicParams& params) {
+  std::vector<Fluxes<Real>> sent(field.size(), Fluxes<Real>{});
+  std::vector<Real> kept(field.size(), Real(0));
+  cells.each([&](int x, int y, std::size_t cell) {
+    Fluxes<Real> shares{};
+    if (params.diffusion_weighting == DiffusionWeighting::uniform) {
+      for (int k = 0; k < pipe_count; ++k) shares[k] = cells.interior(x, y, k) ? Real(params.sediment_diffusion) : Real(0);
+    } else {
+      Fluxes<Real> halves{};
+      for (int k = 0; k < pipe_count; ++k) {
+        if (cells.interior(x, y, k)) halves[k] = Real(0.5) * water[cells.neighbour(x, y, k)];
+      }
+      const Real weight = water[cell] + total(halves);
+      if (weight > Real(0)) {
+        for (int k = 0; k < pipe_count; ++k) shares[k] = halves[k] / weight;
+      }
+    }
+    for (int k = 0; k < pipe_count; ++k) sent[cell][k] = field[cell] * shares[k];
+    kept[cell] = max(Real(0), field[cell] - total(sent[cell]));
+  });
+  std::vector<Real> spread = field;
+  cells.each([&](int x, int y, std::size_t cell) { spread[cell] = kept[cell] + total(arriving(cells, sent, x, y)); });
+  return spread;
 }
 
 }  // namespace
@@ -153,9 +211,6 @@ std::string pipe_spec_unsupported(const HydraulicParams& params) {
   std::vector<std::string> outside;
   if (params.pipe_count != 4) outside.push_back("8 pipes");
   if (params.transport != SedimentTransport::flux) outside.push_back("semi-Lagrangian transport");
-  if (params.tilt_differences != TiltDifferences::central) outside.push_back("seed 001's raw tilt differences");
-  if (params.sediment_diffusion > 0.0) outside.push_back("sediment diffusion");
-  if (params.regolith_depth > 0.0) outside.push_back("regolith");
   if (params.thermal_step) outside.push_back("the combined thermal step");
   return fmt::format("{}", fmt::join(outside, ", "));
 }
@@ -188,36 +243,47 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
     next.velocity_y.values[cell] = net_y / (Real(start.terrain.cell_size_x) * mean_depth);
   });
 
-  // eqs. 2.20-2.23: erosion towards the capacity, deposition above it.
+  // eqs. 2.20-2.23: erosion towards the capacity, deposition above it; then seed 001 §3.9's
+  // regolith: the water loosens the bed up to r_max = min(d_B, K_r) and lets it settle above.
   const Real dissolving(std::min(1.0, params.dissolving_rate * params.time_step));
   const Real depositing(std::min(1.0, params.deposition_rate * params.time_step));
-  std::vector<Real> eroded_sediment(added.size(), Real(0));
+  const Real loosening(std::min(1.0, params.regolith_dissolving_rate * params.time_step));
+  const Real settling(std::min(1.0, params.regolith_deposition_rate * params.time_step));
+  const bool regolith = params.regolith_depth > 0.0;
+  std::vector<Real> sediment(added.size(), Real(0));
+  std::vector<Real> loose(added.size(), Real(0));
   cells.each([&](int x, int y, std::size_t cell) {
     const Real u = next.velocity_x.values[cell];
     const Real v = next.velocity_y.values[cell];
     const Real ramp = params.depth_ramp > 0.0 ? min(Real(1), flowed[cell] / Real(params.depth_ramp)) : Real(1);
-    const Real tilt = max(Real(params.min_tilt_sine), tilt_sine(cells, x, y));
+    const Real tilt = max(Real(params.min_tilt_sine), tilt_sine(cells, params.tilt_differences, x, y));
     const Real capacity = Real(params.capacity) * tilt * sqrt(u * u + v * v) * ramp;
     const Real suspended = start.sediment.values[cell];
     const Real taken = capacity > suspended ? dissolving * (capacity - suspended) : -(depositing * (suspended - capacity));
-    next.terrain.values[cell] = start.terrain.values[cell] - taken;
-    eroded_sediment[cell] = suspended + taken;
+    Real bed = start.terrain.values[cell] - taken;
+    sediment[cell] = suspended + taken;
+    if (regolith) {
+      const Real most = min(flowed[cell], Real(params.regolith_depth));
+      const Real held = start.regolith.values[cell];
+      const Real loosened = held < most ? loosening * (most - held) : -(settling * (held - most));
+      bed = bed - loosened;
+      loose[cell] = held + loosened;
+    }
+    next.terrain.values[cell] = bed;
   });
 
-  // The flux form: the sediment goes where the water went, in the same shares of the cell's d_A.
-  std::vector<Fluxes<Real>> carried(added.size(), Fluxes<Real>{});
-  std::vector<Real> kept(added.size(), Real(0));
-  cells.each([&](int, int, std::size_t cell) {
-    Fluxes<Real> shares{};
-    if (added[cell] > Real(0)) {
-      for (int k = 0; k < pipe_count; ++k) shares[k] = outflow[cell][k] * volume_to_depth / added[cell];
-    }
-    for (int k = 0; k < pipe_count; ++k) carried[cell][k] = eroded_sediment[cell] * shares[k];
-    kept[cell] = eroded_sediment[cell] * (Real(1) - min(Real(1), total(shares)));
-  });
+  // What the water carries goes with it, then spreads (seed 001 §3.8, the regolith too with
+  // regolith_diffusion); the water evaporates (2.25's K_e).
+  sediment = carried_with_water(cells, sediment, outflow, added, volume_to_depth);
+  if (regolith) loose = carried_with_water(cells, loose, outflow, added, volume_to_depth);
+  if (params.sediment_diffusion > 0.0) {
+    sediment = diffused(cells, sediment, flowed, params);
+    if (regolith && params.regolith_diffusion) loose = diffused(cells, loose, flowed, params);
+  }
   const Real evaporation_kept(1.0 - params.evaporation_rate * params.time_step);
-  cells.each([&](int x, int y, std::size_t cell) {
-    next.sediment.values[cell] = kept[cell] + total(arriving(cells, carried, x, y));
+  cells.each([&](int, int, std::size_t cell) {
+    next.sediment.values[cell] = sediment[cell];
+    if (regolith) next.regolith.values[cell] = loose[cell];
     next.water.values[cell] = flowed[cell] * evaporation_kept;
     for (int k = 0; k < pipe_count; ++k) next.outflow[cell][k] = outflow[cell][k];
   });

@@ -8,14 +8,14 @@
 // Its constants come from HydraulicParams and the terrain's cell sizes alone, never from
 // PipeConstants, which both twins read: a bug in those is a bug of both twins.
 //
-// Covered: 4 pipes, flux transport, central tilt, closed or open borders, the depth ramp, rain,
-// a rain map, point sources and evaporation. Not covered (pipe_spec_unsupported names which):
-// 8 pipes, semi-Lagrangian transport, seed 001's tilt from raw differences, sediment diffusion,
-// regolith, the combined thermal step.
+// Covered: 4 pipes, flux transport, both tilts (central differences and seed 001's code's raw
+// ones), closed or open borders, the depth ramp, rain, a rain map, point sources, evaporation, seed
+// 001's regolith and sediment diffusion (both weightings). Not covered (pipe_spec_unsupported names
+// which): 8 pipes, semi-Lagrangian transport, the combined thermal step.
 //
 // Inputs:  start (every field as the twins' PipeState; no-data cells of the terrain's mask hold
 //          nothing and send nothing), params, forcing (rain map in m/s, point sources in m³/s).
-// Outputs: the state after one step: b, d, s after evaporation, u, v and the scaled outflows.
+// Outputs: the state after one step: b, d, s, r after evaporation, u, v and the scaled outflows.
 // Units:   core/params/hydraulic.hpp's (metres, seconds, m³/s).
 // Real:    double, or core/rounding_interval.hpp's RoundingInterval for the spec's own rounding
 //          bound (its value is the double computation).

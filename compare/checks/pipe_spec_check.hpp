@@ -1,6 +1,6 @@
 // spec.step.<field>.cpu: one step of ref<double> held value by value to the host spec of the pipe
-// step (compare/algorithms/pipe_spec.hpp), for the fields terrain, water, sediment, velocity_x,
-// velocity_y and outflow (each cell's four pipes).
+// step (compare/algorithms/pipe_spec.hpp), for the fields terrain, water, sediment, regolith (where
+// the parameters have it), velocity_x, velocity_y and outflow (each cell's four pipes).
 //
 // Error model: ref<double>'s step and the spec's, both from the same start, are each within their
 // rounding-interval width of the exact step (core/rounding_interval.hpp: both are run once more in
@@ -14,7 +14,7 @@
 // Inputs:  start (a state ref<double> reached; the spec's domain: pipe_spec_unsupported(params)
 //          empty), the twins' constants (what ref<double> steps with), params (what the spec
 //          steps with), forcing, and the number of the step graded (for the text).
-// Outputs: six checks, named as above.
+// Outputs: six checks, seven with regolith, named as above.
 #pragma once
 
 #include <vector>
