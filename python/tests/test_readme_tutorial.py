@@ -51,6 +51,18 @@ def test_the_tutorial_has_its_steps():
             assert out.startswith(README_OUT), f"every report goes under {README_OUT}: {out}"
 
 
+def test_the_readme_stays_a_guide():
+    """A user's guide that fits a sitting (issue 37): tasks first, theory in docs/. Under 250 lines,
+    the tutorial within its first 120, and every docs/ page it links exists."""
+    readme = (ROOT / "README.md").read_text()
+    lines = readme.splitlines()
+    assert len(lines) < 250, f"the README has {len(lines)} lines: move details to docs/"
+    tutorial = next(number for number, line in enumerate(lines) if line.startswith("## A five-minute tutorial"))
+    assert tutorial < 120, f"the tutorial starts at line {tutorial + 1}"
+    for page in set(re.findall(r"\]\((docs/[^)#]+)", readme)):
+        assert (ROOT / page).is_file(), f"the README links {page}, which does not exist"
+
+
 @pytest.fixture(scope="module")
 def ran(tmp_path_factory):
     """Every command of the tutorial, in order, into one temporary folder: {out folder or
