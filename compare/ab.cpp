@@ -150,7 +150,7 @@ void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::pa
                                      "full colour at {:.3g}; rms {:.3g} (the page: {}.html)",
                                      ab.ab_stem, stats.scale_used, stats.rms, ab.ab_stem);
     table["difference"] = {{"max_abs", stats.max_abs}, {"rms", stats.rms}};
-    report.plots.push_back({picture, "plot", difference_caption});
+    report.plots.push_back({picture, "plot", difference_caption, difference_scale(stats, field_a->vertical_unit)});
   }
   write_file_atomically(folder / (ab.ab_stem + ".json"), table.dump(2) + '\n');
   write_page(ab, *a, *b, rows, difference_caption, folder);

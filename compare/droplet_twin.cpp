@@ -432,10 +432,6 @@ double robust_scale(const Grid<double>& map) {
   return *at;
 }
 
-void add_artifact(CaseResult& result, const std::string& file, const std::string& caption) {
-  result.artifacts.push_back({result.name + "/" + file, "image", caption});
-}
-
 // One of Hydra's side maps of the truth: with a contrast c, full red at 1/c (Hydra's
 // min(1, c·amount)); and its field file in the state's unit (amounts scale as heights, without the
 // offset).
@@ -445,10 +441,12 @@ void write_side_map(const DropletTwin& twin, Grid<double> map, double contrast, 
   Grid<double> zero = map;
   std::fill(zero.values.begin(), zero.values.end(), 0.0);
   const double scale = contrast > 0.0 ? 1.0 / contrast : robust_scale(map);
-  write_difference_image(zero, map, folder / picture, scale);
-  add_artifact(result, picture,
-               contrast > 0.0 ? fmt::format("{} with its contrast {} (full red at {:.3g})", what, contrast, scale)
-                              : fmt::format("{}, full red at {:.3g} (99th percentile)", what, scale));
+  const auto drawn = write_difference_image(zero, map, folder / picture, scale);
+  add_picture(result, picture,
+              contrast > 0.0 ? fmt::format("{} with its contrast {} (full red at 1/contrast), in normalised heights",
+                                           what, contrast)
+                             : fmt::format("{}, full red at its 99th percentile, in normalised heights", what),
+              difference_scale(drawn, "1"));
   for (double& amount : map.values) amount *= twin.own.scale;
   map.vertical_unit = twin.unit;
   write_field_files(map, {field + "_cpu", field, "cpu", twin.unit, what + " over the run, ref<double>"}, options, result);
@@ -468,8 +466,9 @@ void write_pictures(const DropletTwin& twin, const std::vector<BackendEnd>& ends
   if (twin.setup.ordering != DropletOrdering::batch) return;
   const auto batch = write_difference_image(heights_of<double>(ends[0].final), heights_of<double>(ends[1].final),
                                             options.report_dir / result.name / "batch_vs_sequential.png");
-  add_artifact(result, "batch_vs_sequential.png",
-               fmt::format("batch ref<float> - sequential ref<double>: max {:.3g} {}", batch.max_abs, twin.unit));
+  add_picture(result, "batch_vs_sequential.png",
+              fmt::format("batch ref<float> - sequential ref<double>: max {:.3g} {}", batch.max_abs, twin.unit),
+              difference_scale(batch, twin.unit));
 }
 
 void finish(const DropletTwin& twin, const std::vector<BackendEnd>& ends, const RunOptions& options,

@@ -131,23 +131,19 @@ void add_parity(const FieldTwin& twin, const ReferenceRuns& runs, const std::opt
   add_determinism_check(*gpu, result);
 }
 
-void add_artifact(CaseResult& result, const std::string& file, const std::string& caption) {
-  result.artifacts.push_back({result.name + "/" + file, "image", caption});
-}
-
 // The field from both sides on its own colour scale, and where the GPU departs from the truth.
 void write_pictures(const Grid<double>& cpu, const std::optional<GpuOutputs>& gpu, const std::filesystem::path& folder,
                     CaseResult& result) {
   const auto totals = field_totals(cpu);
   const double exaggeration = write_height_image(cpu, totals.low, totals.high, folder / "cpu.png");
-  add_artifact(result, "cpu.png", "CPU reference (double)");
+  const ColourScale values = height_scale(totals.low, totals.high, "1");
+  add_picture(result, "cpu.png", "CPU reference (double)", values);
   if (!gpu) return;
   write_height_image(gpu->values, totals.low, totals.high, folder / (gpu->backend + ".png"), exaggeration);
-  add_artifact(result, gpu->backend + ".png", gpu->label);
+  add_picture(result, gpu->backend + ".png", gpu->label, values);
   const std::string difference_file = gpu->backend + "_vs_double.png";
   const auto disagreement = write_difference_image(cpu, gpu->values, folder / difference_file);
-  add_artifact(result, difference_file,
-               fmt::format("{} - reference (double) (±{:.3g})", gpu->label, disagreement.scale_used));
+  add_picture(result, difference_file, gpu->label + " - reference (double)", difference_scale(disagreement, "1"));
 }
 
 // A generator's output is a dimensionless value.

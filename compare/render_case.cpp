@@ -1,6 +1,7 @@
 // One Phong-rendered case: the reference and the GL pipeline on the same scene, the image checks
 // and the pictures; see render_case.hpp.
 #include "compare/render_case.hpp"
+#include "compare/report/images.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -145,7 +146,8 @@ void write_pictures(const OIIO::ImageBuf& cpu, const GradedImage* graded, const 
   write_image(graded->image, folder / (twin + ".png"));
   add(twin + ".png", graded->made_by);
   const double scale = write_difference_heat_map(cpu, graded->image, folder / (twin + "_vs_cpu_heat.png"));
-  add(twin + "_vs_cpu_heat.png", fmt::format("max |{} - cpu| over channels, white at {:.3g}", twin, scale));
+  add_picture(result, twin + "_vs_cpu_heat.png", fmt::format("max |{} - cpu| over channels: black 0, white the largest", twin),
+              sampled_scale("heat", 0.0, scale, "of full range", [scale](double difference) { return heat_colour(difference, scale); }));
   write_verdict_mask(*tolerant, folder / (twin + "_vs_cpu_mask.png"));
   add(twin + "_vs_cpu_mask.png",
       "3×3-tolerant verdicts at 4/255: grey identical, green within, blue edge shift, red fails");

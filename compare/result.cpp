@@ -127,4 +127,8 @@ std::vector<std::string> failing_checks(const CaseResult& result) {
   return failing;
 }
 
+void add_picture(CaseResult& result, const std::string& file, std::string caption, std::optional<ColourScale> scale) {
+  result.artifacts.push_back({result.name + "/" + file, "image", std::move(caption), std::move(scale)});
+}
+
 }  // namespace gt

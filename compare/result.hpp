@@ -3,6 +3,7 @@
 // report.md, junit.xml and index.html.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -53,11 +54,23 @@ struct Timings {
   int gpu_reps = 0;
 };
 
+// How a map's colours read as values: what its colour bar shows. Rendered views and colour
+// photographs carry none.
+struct ColourScale {
+  std::string palette;  // its name: "terrain" (hillshaded heights), "diverging" (blue −, white 0, red +), ...
+  double low = 0.0;     // the value at the palette's left end
+  double high = 0.0;    // the value at its right end
+  std::string unit;     // "m", "levels", ...; "1" for a dimensionless value
+  std::vector<std::array<float, 3>> colours;  // the palette sampled evenly from low to high, RGB in [0, 1]
+};
+
 struct Artifact {
   std::string path;     // relative to the report folder
   std::string kind;     // "image" (PNG to show), "field" (EXR data), "plot"
   std::string caption;
+  std::optional<ColourScale> scale;  // maps: their colour bar
 };
+
 
 struct CaseResult {
   std::string name;           // stable dotted name, e.g. erosion.thermal.cardinal.volcano
@@ -88,6 +101,11 @@ struct CaseResult {
   std::vector<Attempt> earlier_attempts;
   std::string known_flake;    // a flaky case's reason from the flake list (an expectation `flaky`)
 };
+
+// Adds the picture `file` of the case's folder (result.name/file) with its caption and, for a map,
+// its colour scale.
+void add_picture(CaseResult& result, const std::string& file, std::string caption,
+                 std::optional<ColourScale> scale = std::nullopt);
 
 struct Environment {
   std::string gl_renderer;    // GL_RENDERER, or "none: <reason>"

@@ -550,10 +550,6 @@ void add_ledger_checks(const SteppedTwin& twin, const BackendRun& run, const std
   }
 }
 
-void add_artifact(CaseResult& result, const std::string& file, const std::string& caption) {
-  result.artifacts.push_back({result.name + "/" + file, "image", caption});
-}
-
 // The shown field before and after, the change and the GPU's difference from ref<float>, on the
 // input's colour scale; every other field at the end of ref<double>'s run.
 void write_pictures(const SteppedTwin& twin, const Candidate& candidate, const BackendRun& truth,
@@ -565,22 +561,21 @@ void write_pictures(const SteppedTwin& twin, const Candidate& candidate, const B
   const Grid<double> after = component_grid(twin.fields, truth.final(), shown, 0);
   const auto totals = field_totals(before);
   const double exaggeration = write_height_image(before, totals.low, totals.high, folder / "before.png");
-  add_artifact(result, "before.png", "input");
+  const ColourScale heights = height_scale(totals.low, totals.high, unit);
+  add_picture(result, "before.png", "input", heights);
   write_height_image(after, totals.low, totals.high, folder / "after_cpu.png", exaggeration);
-  add_artifact(result, "after_cpu.png", "after, CPU reference (double)");
+  add_picture(result, "after_cpu.png", "after, CPU reference (double)", heights);
   const auto change = write_difference_image(before, after, folder / "change_cpu.png");
-  add_artifact(result, "change_cpu.png",
-               fmt::format("after - before, CPU (red gain, blue loss; ±{:.3g} {})", change.scale_used, unit));
+  add_picture(result, "change_cpu.png", "after - before, CPU: red gain, blue loss", difference_scale(change, unit));
   if (gpu) {
     const Grid<double> gpu_after = component_grid(twin.fields, gpu->final(), shown, 0);
     const std::string after_file = fmt::format("after_{}.png", candidate.backend);
     write_height_image(gpu_after, totals.low, totals.high, folder / after_file, exaggeration);
-    add_artifact(result, after_file, "after, " + candidate.label);
+    add_picture(result, after_file, "after, " + candidate.label, heights);
     const std::string difference_file = fmt::format("{}_vs_float.png", candidate.backend);
     const auto disagreement = write_difference_image(component_grid(twin.fields, float_run.final(), shown, 0), gpu_after,
                                                      folder / difference_file);
-    add_artifact(result, difference_file,
-                 fmt::format("{} - reference (float) (±{:.3g} {})", candidate.label, disagreement.scale_used, unit));
+    add_picture(result, difference_file, candidate.label + " - reference (float)", difference_scale(disagreement, unit));
   }
   for (std::size_t f = 0; f < twin.fields.size(); ++f) {
     if (f == shown) continue;
@@ -589,9 +584,8 @@ void write_pictures(const SteppedTwin& twin, const Candidate& candidate, const B
       const Grid<double> values = component_grid(twin.fields, truth.final(), f, k);
       const std::string label = component_label(field, k);
       const auto drawn = write_difference_image(twin.initial.grid.blank(0.0, field.unit), values, folder / (label + "_cpu.png"));
-      add_artifact(result, label + "_cpu.png",
-                   fmt::format("{}, end of ref<double>'s run: white 0, red positive, blue negative, full at ±{:.3g} {}",
-                               field.meaning, drawn.scale_used, field.unit));
+      add_picture(result, label + "_cpu.png", fmt::format("{}, end of ref<double>'s run", field.meaning),
+                  difference_scale(drawn, field.unit));
     }
   }
 }

@@ -19,6 +19,7 @@
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/report/report_common.hpp"
+#include "compare/report/report_read.hpp"
 #include "compare/report/writers.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/result.hpp"
@@ -397,6 +398,46 @@ TEST_F(ReportFiles, HtmlShowsAValueWithoutABoundAsInfo) {
   };
   EXPECT_THAT(row_of("parity.shown_only"), ::testing::HasSubstr("<span class=\"badge info\">info</span>"));
   EXPECT_THAT(row_of("parity.bounded"), ::testing::HasSubstr("<span class=\"badge pass\">pass</span>"));
+}
+
+// Every map carries a colour bar in its unit (issue 37): the HTML draws the palette the picture
+// was drawn with, labels its ends (and 0 of a diverging map) in the unit, and report.json keeps
+// the scale so a report read back (diff-reports, merge) draws the same bar.
+TEST_F(ReportFiles, MapsCarryAColourBarInTheirUnit) {
+  Report report = sample_report();
+  report.cases.resize(1);
+  Heightmap before(6, 4, 2.0), after(6, 4, 2.0);
+  after.at(1, 1) = 2.5;
+  const DifferenceStats change = write_difference_image(before, after, folder / "change.png");
+  report.cases[0].artifacts = {{"x/before.png", "image", "input", height_scale(-3.0, 11.6, "m")},
+                               {"x/change.png", "image", "after - before", difference_scale(change, "m")},
+                               {"x/view.png", "image", "a rendered view"}};
+  write_report_html(report, folder / "index.html");
+  const std::string html = read_text(folder / "index.html");
+  EXPECT_THAT(html, ::testing::HasSubstr("<span>-3\u202fm</span><span>11.6\u202fm</span>"));
+  EXPECT_THAT(html, ::testing::HasSubstr("<span>-0.5\u202fm</span><span>0\u202fm</span><span>0.5\u202fm</span>"));
+  // The diverging bar's ends are the picture's own colours at ±scale: blue and red.
+  const Picture picture = read_picture(folder / "change.png");
+  const auto& colours = report.cases[0].artifacts[1].scale->colours;
+  const unsigned char* red = picture.at(1 * 43 + 21, 1 * 43 + 21);  // the cell at +scale (6 cells enlarged by 43)
+  for (int channel = 0; channel < 3; ++channel) {
+    EXPECT_NEAR(colours.back()[channel] * 255.0f, red[channel], 1.0f) << channel;
+  }
+  EXPECT_GT(colours.front()[2], colours.front()[0]);  // blue at −scale
+  // A rendered view has no bar: three figures, two bars.
+  std::size_t bars = 0;
+  for (auto at = html.find("class=\"colourbar\""); at != std::string::npos; at = html.find("class=\"colourbar\"", at + 1)) {
+    ++bars;
+  }
+  EXPECT_EQ(bars, 2u);
+
+  write_report_json(report, folder / "report.json");
+  const Report read = report_from_json(json::parse(read_text(folder / "report.json")));
+  ASSERT_TRUE(read.cases.at(0).artifacts.at(1).scale.has_value());
+  EXPECT_EQ(read.cases[0].artifacts[1].scale->unit, "m");
+  EXPECT_DOUBLE_EQ(read.cases[0].artifacts[1].scale->high, 0.5);
+  EXPECT_EQ(read.cases[0].artifacts[1].scale->colours, colours);
+  EXPECT_FALSE(read.cases[0].artifacts[2].scale.has_value());
 }
 
 // What failed comes first (issue 37): a table of every check that did not pass, unexpected before

@@ -45,6 +45,7 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/report/images.hpp"
 #include "compare/case_descriptors.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
@@ -223,6 +224,20 @@ void add_droplet_spec(const ParticleScenario& scenario, const nlohmann::json& ex
                                         "heights after its life at the listed texels; " + why));
 }
 
+// A linear value in [0, 1] (clamped) sRGB-encoded.
+double srgb_encoded(double linear) {
+  const double c = std::clamp(linear, 0.0, 1.0);
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+
+// The flow map's colour bar: concentration 0 black to 1 white, as the picture encodes it.
+ColourScale flow_scale() {
+  return sampled_scale("grey (sRGB)", 0.0, 1.0, "1", [](double flow) {
+    const auto grey = static_cast<float>(srgb_encoded(flow));
+    return std::array<float, 3>{grey, grey, grey};
+  });
+}
+
 // The colour picture of a map: sRGB-encoded RGB8, each texel a block of identical pixels so that the
 // longer side reaches 256 px (as compare/report/images.hpp enlarges); masked texels grey.
 template <class Real>
@@ -230,11 +245,7 @@ void write_colour_image(const reference::ColourMap<Real>& colour, const std::fil
   const int factor = std::max(1, (255 + std::max(colour.width, colour.height)) / std::max(colour.width, colour.height));
   const int width = colour.width * factor, height = colour.height * factor;
   std::vector<std::uint8_t> pixels(std::size_t(width) * std::size_t(height) * 3);
-  const auto encode = [](double linear) {
-    const double c = std::clamp(linear, 0.0, 1.0);
-    const double srgb = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-    return static_cast<std::uint8_t>(std::lround(255.0 * srgb));
-  };
+  const auto encode = [](double linear) { return static_cast<std::uint8_t>(std::lround(255.0 * srgb_encoded(linear))); };
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const std::size_t cell = colour.index(x / factor, y / factor);
@@ -441,7 +452,7 @@ void add_gpu_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, c
     write_colour_image(flow_as_colour(gpu_flow), options.report_dir / result.name / "flow_gpu.png");
     write_field_files(gpu_flow.cast<double>(), {"flow_gpu", "flow", "gpu", "1", "flow map (§4.7), GPU"}, options,
                       result);
-    result.artifacts.push_back({result.name + "/flow_gpu.png", "image", "flow map, GPU (as flow_cpu.png)"});
+    add_picture(result, "flow_gpu.png", "flow map, GPU (as flow_cpu.png)", flow_scale());
   }
 }
 
@@ -472,9 +483,9 @@ void add_flow_checks(const FlowConstants& flow, const Grid<float>& eroded, bool 
     write_colour_image(flow_as_colour(truth.concentration), folder / "flow_cpu.png");
     write_field_files(truth.concentration, {"flow_cpu", "flow", "cpu", "1", "flow map (§4.7), ref<double> (sequential)"},
                       options, result);
-    result.artifacts.push_back({result.name + "/flow_cpu.png", "image",
-                                "flow map, ref<double> (sequential): concentration 0 black to 1 white, shown as a "
-                                "linear image (sRGB)"});
+    add_picture(result, "flow_cpu.png",
+                "flow map, ref<double> (sequential): concentration 0 black to 1 white, shown as a linear image (sRGB)",
+                flow_scale());
   }
   if (gpu) add_gpu_flow_checks(flow, eroded, float_run.concentration, options, result);
 }

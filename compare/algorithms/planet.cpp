@@ -856,9 +856,12 @@ void write_maps(const PlanetParams& params, const Planet<double>& planet, const 
     elevation_map.values[pixel] = planet.elevation.smoothed[region];
   }
   write_colour_image(map_width, map_height, elevation_pixels, folder / "elevation.png");
-  result.artifacts.push_back({result.name + "/elevation.png", "image",
-                              "elevation, ref<double>, equirectangular, each pixel its nearest centroid's region (§4.3 "
-                              "palette: blue below sea level, brown above)"});
+  const auto [lowest, highest] = std::minmax_element(planet.elevation.smoothed.begin(), planet.elevation.smoothed.end());
+  add_picture(result, "elevation.png",
+              "elevation, ref<double>, equirectangular, each pixel its nearest centroid's region (§4.3 palette: blue "
+              "below sea level, brown above)",
+              sampled_scale("§4.3 elevation", static_cast<double>(*lowest), static_cast<double>(*highest), "generator units",
+                            [](double elevation) { return elevation_colour(elevation); }));
   write_colour_image(map_width, map_height, plate_pixels, folder / "plates.png");
   result.artifacts.push_back({result.name + "/plates.png", "image",
                               fmt::format("the {} plates ({} rule), edge regions in full colour", params.plates,

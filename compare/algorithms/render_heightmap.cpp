@@ -255,11 +255,9 @@ void write_pictures(const reference::MeshHeightmap& cpu, const gpu::MeshHeightma
   if (options.report_dir.empty()) return;
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
-  const auto add = [&](const std::string& file, const std::string& caption) {
-    result.artifacts.push_back({result.name + "/" + file, "image", caption});
-  };
+  const ColourScale heights = height_scale(0.0, 1.0, "1");
   const double exaggeration = write_height_image(cpu.heights, 0.0, 1.0, folder / "cpu.png");
-  add("cpu.png", "CPU reference (double): 1 - z', top of the box 1, uncovered 0");
+  add_picture(result, "cpu.png", "CPU reference (double): 1 - z', top of the box 1, uncovered 0", heights);
   const std::string height_meaning = "1 - z' (seed 000 §4.3): top of the mesh's box 1, uncovered texels 0";
   write_field_files(cpu.heights, {"height_cpu", "height", "cpu", "1", height_meaning + ", CPU reference (double)"},
                     options, result);
@@ -268,9 +266,9 @@ void write_pictures(const reference::MeshHeightmap& cpu, const gpu::MeshHeightma
   write_field_files(gpu_heights, {"height_gpu", "height", "gpu", "1", height_meaning + ", GPU (GL pipeline, R32F)"},
                     options, result);
   write_height_image(gpu_heights, 0.0, 1.0, folder / "gpu.png", exaggeration);
-  add("gpu.png", "GPU (GL pipeline, R32F)");
+  add_picture(result, "gpu.png", "GPU (GL pipeline, R32F)", heights);
   const auto difference = write_difference_image(cpu.heights, gpu_heights, folder / "gpu_vs_cpu.png");
-  add("gpu_vs_cpu.png", fmt::format("GPU - reference (±{:.3g}; silhouette texels dominate)", difference.scale_used));
+  add_picture(result, "gpu_vs_cpu.png", "GPU - reference (silhouette texels dominate)", difference_scale(difference, "1"));
 }
 
 void run_render(const RenderCase& render, const std::string& file, const RunOptions& options, CaseResult& result) {

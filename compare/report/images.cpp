@@ -11,6 +11,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <OpenImageIO/imagebuf.h>
@@ -244,13 +245,14 @@ DifferenceStats difference_stats(const Heightmap& a, const Heightmap& b) {
   return stats;
 }
 
+constexpr Rgb diverging_low = {0.13f, 0.30f, 0.75f};   // blue: −scale
+constexpr Rgb diverging_zero = {1.0f, 1.0f, 1.0f};     // white: 0
+constexpr Rgb diverging_high = {0.75f, 0.08f, 0.08f};  // red: +scale
+
 Rgb diverging_colour(double difference, double scale) {
-  constexpr Rgb blue = {0.13f, 0.30f, 0.75f};
-  constexpr Rgb white = {1.0f, 1.0f, 1.0f};
-  constexpr Rgb red = {0.75f, 0.08f, 0.08f};
   if (!std::isfinite(difference)) return non_finite_colour;
   const double t = scale > 0.0 ? std::clamp(difference / scale, -1.0, 1.0) : 0.0;
-  return t < 0.0 ? mix(white, blue, -t) : mix(white, red, t);
+  return t < 0.0 ? mix(diverging_zero, diverging_low, -t) : mix(diverging_zero, diverging_high, t);
 }
 
 std::vector<Rgb> difference_colours(const DifferenceField& field, double scale) {
@@ -297,6 +299,24 @@ DifferenceStats write_difference_image(const Heightmap& a, const Heightmap& b, c
   const DifferenceField field = pooled_difference(a, b, picture.reduce);
   write_enlarged(rgb_image(field.width, field.height, difference_colours(field, stats.scale_used)), picture.enlarge, png);
   return stats;
+}
+
+ColourScale sampled_scale(std::string palette, double low, double high, std::string unit,
+                          const std::function<std::array<float, 3>(double)>& colour_of) {
+  constexpr int samples = 33;
+  ColourScale scale{.palette = std::move(palette), .low = low, .high = high, .unit = std::move(unit), .colours = {}};
+  for (int i = 0; i < samples; ++i) scale.colours.push_back(colour_of(low + (high - low) * i / (samples - 1)));
+  return scale;
+}
+
+ColourScale height_scale(double low, double high, std::string unit) {
+  return sampled_scale("terrain", low, high, std::move(unit), [&](double height) { return terrain_colour(height, low, high); });
+}
+
+ColourScale difference_scale(const DifferenceStats& drawn, std::string unit) {
+  const double scale = drawn.scale_used;
+  return sampled_scale("diverging", -scale, scale, std::move(unit),
+                       [&](double difference) { return diverging_colour(difference, scale); });
 }
 
 }  // namespace gt

@@ -17,8 +17,11 @@
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <string>
 #include <vector>
 
+#include "compare/result.hpp"
 #include "core/grid.hpp"
 
 namespace gt {
@@ -50,5 +53,15 @@ struct DifferenceStats {
 // no data.
 DifferenceStats write_difference_image(const Heightmap& a, const Heightmap& b, const std::filesystem::path& png,
                                        double scale = 0.0);
+
+// The colour bars of these pictures: heights over [low, high] in the terrain palette (before the
+// hillshade), and a difference picture's ±scale_used in the diverging one.
+ColourScale height_scale(double low, double high, std::string unit);
+ColourScale difference_scale(const DifferenceStats& drawn, std::string unit);
+
+// A colour bar for any colour function of the value: `colour_of` sampled at 33 values evenly from
+// low to high.
+ColourScale sampled_scale(std::string palette, double low, double high, std::string unit,
+                          const std::function<std::array<float, 3>(double)>& colour_of);
 
 }  // namespace gt

@@ -12,6 +12,7 @@
 // timings; then the Performance section with the benchmark table and the report-level plots.
 // Every piece of text goes through escape_markup.
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -57,8 +58,13 @@ pre.error { background: #fbeaea; padding: .6em; white-space: pre-wrap; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
 figure { margin: 0; }
 figure img { width: 280px; height: auto; image-rendering: pixelated; border: 1px solid #ccc; }
+figure.image { width: 280px; }
 figure.plot img { width: 100%; max-width: 1100px; image-rendering: auto; }
 figcaption { text-align: center; font-size: .9em; color: #444; }
+.colourbar { width: 280px; font-size: .78em; color: #333; margin-top: .15em; }
+.panel .colourbar { width: 100%; }
+.colourbar .ramp { display: block; height: 10px; border: 1px solid #999; }
+.colourbar .ticks { display: flex; justify-content: space-between; font-variant-numeric: tabular-nums; }
 dl.params { display: grid; grid-template-columns: repeat(auto-fill, minmax(250px, 1fr)); gap: 0 1.2em; margin: .6em 0 1em;
             font-size: .9em; }
 dl.params div { display: flex; justify-content: space-between; gap: .8em; border-bottom: 1px solid #eee; padding: .1em 0; }
@@ -263,9 +269,41 @@ void append_params(std::string& out, const nlohmann::json& params) {
   out += "</dl>\n";
 }
 
+// Evenly spaced colours as a CSS gradient from left to right (grey when there are none).
+std::string css_gradient(const std::vector<std::array<float, 3>>& colours) {
+  if (colours.empty()) return "#999";
+  std::vector<std::string> stops;
+  const auto channel = [](float c) { return static_cast<int>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); };
+  for (std::size_t i = 0; i < colours.size(); ++i) {
+    const double at = colours.size() == 1 ? 0.0 : 100.0 * double(i) / double(colours.size() - 1);
+    stops.push_back(fmt::format("rgb({},{},{}) {:.4g}%", channel(colours[i][0]), channel(colours[i][1]),
+                                channel(colours[i][2]), at));
+  }
+  return fmt::format("linear-gradient(to right, {})", fmt::join(stops, ", "));
+}
+
+// A map's colour bar: the palette from its low end to its high end, the ends (and 0 of a
+// diverging map) labelled in the map's unit.
+std::string colour_bar(const std::optional<ColourScale>& scale) {
+  if (!scale) return "";
+  const std::string unit = scale->unit.empty() || scale->unit == "1" ? "" : " " + scale->unit;
+  const auto label = [&](double value) { return h(fmt::format("{:.3g}{}", value == 0.0 ? 0.0 : value, unit)); };
+  if (scale->low == scale->high) {
+    return fmt::format("<div class=\"colourbar\"><span class=\"ticks\"><span>every value {}</span></span></div>",
+                       label(scale->low));
+  }
+  const bool centred = scale->low < 0.0 && scale->high == -scale->low;
+  const std::string middle = centred ? fmt::format("<span>0{}</span>", h(unit)) : std::string();
+  return fmt::format("<div class=\"colourbar\" title=\"{}\"><span class=\"ramp\" style=\"background: {}\"></span>"
+                     "<span class=\"ticks\"><span>{}</span>{}<span>{}</span></span></div>",
+                     h(scale->palette), css_gradient(scale->colours), label(scale->low), middle, label(scale->high));
+}
+
 void append_figure(std::string& out, const Artifact& artifact, std::string_view figure_class) {
-  out += fmt::format("<figure class=\"{}\"><a href=\"{}\"><img loading=\"lazy\" src=\"{}\" alt=\"{}\"></a><figcaption>{}</figcaption></figure>\n",
-                     figure_class, url(artifact.path), url(artifact.path), h(artifact.caption), h(artifact.caption));
+  out += fmt::format("<figure class=\"{}\"><a href=\"{}\"><img loading=\"lazy\" src=\"{}\" alt=\"{}\"></a>{}"
+                     "<figcaption>{}</figcaption></figure>\n",
+                     figure_class, url(artifact.path), url(artifact.path), h(artifact.caption),
+                     colour_bar(artifact.scale), h(artifact.caption));
 }
 
 void append_panel(std::string& out, std::string_view role, const Artifact* artifact, std::string_view missing) {
@@ -276,8 +314,9 @@ void append_panel(std::string& out, std::string_view role, const Artifact* artif
     return;
   }
   out += fmt::format("<figure class=\"panel\"><div class=\"role\">{}</div><a href=\"{}\"><img loading=\"lazy\" src=\"{}\" alt=\"{}\"></a>"
-                     "<figcaption>{}</figcaption></figure>\n",
-                     h(role), url(artifact->path), url(artifact->path), h(artifact->caption), h(artifact->caption));
+                     "{}<figcaption>{}</figcaption></figure>\n",
+                     h(role), url(artifact->path), url(artifact->path), h(artifact->caption),
+                     colour_bar(artifact->scale), h(artifact->caption));
 }
 
 void append_comparison(std::string& out, const ImageComparison& comparison) {

@@ -84,7 +84,13 @@ json case_to_json(const CaseResult& result) {
   out["artifact_details"] = json::array();
   for (const Artifact& artifact : result.artifacts) {
     out["artifacts"].push_back(artifact.path);
-    out["artifact_details"].push_back({{"kind", artifact.kind}, {"caption", artifact.caption}});
+    json details = {{"kind", artifact.kind}, {"caption", artifact.caption}};
+    if (artifact.scale) {
+      details["scale"] = {{"palette", artifact.scale->palette}, {"low", artifact.scale->low},
+                          {"high", artifact.scale->high}, {"unit", artifact.scale->unit},
+                          {"colours", artifact.scale->colours}};
+    }
+    out["artifact_details"].push_back(std::move(details));
   }
   if (!result.descriptors.is_null()) out["descriptors"] = result.descriptors;
   if (!result.error.empty()) out["error"] = result.error;

@@ -79,6 +79,21 @@ Timings timings_from_json(const json& in) {
   return timings;
 }
 
+// A map's colour scale as report_json writes it; colours that are not RGB triples of numbers are
+// left out (the bar is then drawn grey), so a hand-edited report cannot break the page.
+ColourScale colour_scale_from_json(const json& in) {
+  ColourScale scale{in.value("palette", ""), in.value("low", 0.0), in.value("high", 0.0), in.value("unit", ""), {}};
+  const json colours = in.value("colours", json::array());
+  for (const json& colour : colours) {
+    if (!colour.is_array() || colour.size() != 3 || !colour[0].is_number() || !colour[1].is_number() ||
+        !colour[2].is_number()) {
+      return {scale.palette, scale.low, scale.high, scale.unit, {}};
+    }
+    scale.colours.push_back({colour[0].get<float>(), colour[1].get<float>(), colour[2].get<float>()});
+  }
+  return scale;
+}
+
 std::vector<Artifact> artifacts_from_json(const json& in) {
   std::vector<Artifact> artifacts;
   const json paths = in.value("artifacts", json::array());
@@ -88,6 +103,9 @@ std::vector<Artifact> artifacts_from_json(const json& in) {
     if (index < details.size()) {
       artifact.kind = details[index].value("kind", artifact.kind);
       artifact.caption = details[index].value("caption", "");
+      if (const auto scale = details[index].find("scale"); scale != details[index].end() && scale->is_object()) {
+        artifact.scale = colour_scale_from_json(*scale);
+      }
     }
     artifacts.push_back(std::move(artifact));
   }
