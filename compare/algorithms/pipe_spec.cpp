@@ -13,6 +13,12 @@
 //               with seed 001's code's tilt: the raw differences b(x+1) − b(x−1) in place of ∇b
 //   regolith    (seed 001 §3.9, K_r > 0) r_max = min(d_B, K_r); r < r_max: b −= k_re·(r_max − r),
 //               r += the same; else b += k_rd·(r − r_max), r −= the same
+//   8 pipes     the diagonals TL, BR, TR, BL of length l_d = √(l_x² + l_y²), the same A; the net flux
+//               along x adds (l_x/l_d)·dx_k·(f_k − f_in,k) of each diagonal (y likewise); the tilt
+//               and the diffusion stay on the axes
+//   semi-Lagr.  (2.24-2.25) what left through exterior pipes is gone; each cell takes the bilinear
+//               value at x − (u, v)·Δt of what stayed, corners off the grid or on no data reading
+//               the cell itself
 //   flux form   each pipe carries the share f_k·Δt/(d_A·l_x·l_y) of the eroded s (and of r: what the
 //               cell's water moved); a cell keeps s·(1 − min(1, Σ shares)) and gains its neighbours'
 //   diffusion   (seed 001 §3.8, w > 0) s (and r with regolith_diffusion) to the 4 axis neighbours
@@ -39,20 +45,24 @@ namespace {
 // Unqualified, so that RoundingInterval brings its own.
 using std::max;
 using std::min;
+using std::floor;
 using std::sqrt;
 
-// The four pipes in pipe_offsets' order, L, R, T (+y), B; pipe k's opposite is k ^ 1.
-constexpr int pipe_count = 4;
+// The pipes in pipe_offsets' order, L, R, T (+y), B, then the diagonals TL, BR, TR, BL; pipe k's
+// opposite is k ^ 1. Diffusion uses the 4 axis pipes whatever the count.
+constexpr int axis_pipes = 4;
 constexpr int left = 0, right = 1, top = 2, bottom = 3;
 constexpr int towards_cell(int pipe) { return pipe ^ 1; }
 
 template <class Real>
-using Fluxes = std::array<Real, 4>;
+using Fluxes = std::array<Real, 8>;
 
-// What one stage needs of the grid: sizes, which cells take part, and where pipe k leads.
+// What one stage needs of the grid: sizes, which cells take part, where pipe k leads, how many
+// pipes there are.
 template <class Real>
 struct Cells {
   const Grid<Real>& terrain;
+  int pipes = axis_pipes;
 
   bool wet(int x, int y) const { return terrain.inside(x, y) && terrain.is_valid(x, y); }
   // Pipe k of (x, y) leads to a cell that takes part.
@@ -70,16 +80,19 @@ struct Cells {
   }
 };
 
+// The sum over the first `count` pipes.
 template <class Real>
-Real total(const Fluxes<Real>& fluxes) {
-  return ((fluxes[0] + fluxes[1]) + fluxes[2]) + fluxes[3];
+Real total(const Fluxes<Real>& fluxes, int count) {
+  Real sum = Real(0);
+  for (int k = 0; k < count; ++k) sum = sum + fluxes[k];
+  return sum;
 }
 
 // What the neighbours send into (x, y): pipe k's neighbour sends through its opposite pipe.
 template <class Real>
 Fluxes<Real> arriving(const Cells<Real>& cells, const std::vector<Fluxes<Real>>& sent, int x, int y) {
   Fluxes<Real> in{};
-  for (int k = 0; k < pipe_count; ++k) {
+  for (int k = 0; k < cells.pipes; ++k) {
     if (cells.interior(x, y, k)) in[k] = sent[cells.neighbour(x, y, k)][towards_cell(k)];
   }
   return in;
@@ -110,14 +123,15 @@ std::vector<Fluxes<Real>> scaled_outflows(const Cells<Real>& cells, const std::v
   const auto& terrain = cells.terrain;
   const double cell_area = terrain.cell_size_x * terrain.cell_size_y;
   const double cross_section = params.pipe_area > 0.0 ? params.pipe_area : cell_area;
-  const double pipe_length[pipe_count] = {terrain.cell_size_x, terrain.cell_size_x, terrain.cell_size_y,
-                                          terrain.cell_size_y};
+  const double diagonal = std::hypot(terrain.cell_size_x, terrain.cell_size_y);
+  const double pipe_length[8] = {terrain.cell_size_x, terrain.cell_size_x, terrain.cell_size_y, terrain.cell_size_y,
+                                 diagonal,            diagonal,            diagonal,            diagonal};
   const bool open = params.boundary == PipeBoundary::open;
   std::vector<Fluxes<Real>> scaled(flux.size(), Fluxes<Real>{});
   cells.each([&](int x, int y, std::size_t cell) {
     const Real surface = terrain.values[cell] + depth[cell];
     Fluxes<Real> accelerated{};
-    for (int k = 0; k < pipe_count; ++k) {
+    for (int k = 0; k < cells.pipes; ++k) {
       const bool inside = cells.interior(x, y, k);
       if (!inside && !open) continue;
       const std::size_t other = inside ? cells.neighbour(x, y, k) : cell;
@@ -125,10 +139,10 @@ std::vector<Fluxes<Real>> scaled_outflows(const Cells<Real>& cells, const std::v
       const Real acceleration(params.time_step * cross_section * params.gravity / pipe_length[k]);
       accelerated[k] = max(Real(0), flux[cell][k] + acceleration * head);
     }
-    const Real asked = total(accelerated) * Real(params.time_step);
+    const Real asked = total(accelerated, cells.pipes) * Real(params.time_step);
     const Real held = depth[cell] * Real(cell_area);
     const Real factor = asked > Real(0) ? min(Real(1), held / asked) : Real(1);
-    for (int k = 0; k < pipe_count; ++k) scaled[cell][k] = factor * accelerated[k];
+    for (int k = 0; k < cells.pipes; ++k) scaled[cell][k] = factor * accelerated[k];
   });
   return scaled;
 }
@@ -154,6 +168,17 @@ Real tilt_sine(const Cells<Real>& cells, TiltDifferences differences, int x, int
   return sqrt(squared / (Real(1) + squared));
 }
 
+// The share of the cell's water d_A each pipe moved, f_k·Δt/(d_A·l_x·l_y); none for a dry cell.
+template <class Real>
+Fluxes<Real> water_shares(const Cells<Real>& cells, const Fluxes<Real>& outflow, const Real& added,
+                          const Real& volume_to_depth) {
+  Fluxes<Real> shares{};
+  if (added > Real(0)) {
+    for (int k = 0; k < cells.pipes; ++k) shares[k] = outflow[k] * volume_to_depth / added;
+  }
+  return shares;
+}
+
 // The flux form: `field` goes where the water went, in the shares of the cell's d_A its pipes
 // moved; a cell keeps field·(1 − min(1, Σ shares)) and gains what its neighbours send.
 template <class Real>
@@ -163,15 +188,56 @@ std::vector<Real> carried_with_water(const Cells<Real>& cells, const std::vector
   std::vector<Fluxes<Real>> sent(field.size(), Fluxes<Real>{});
   std::vector<Real> kept(field.size(), Real(0));
   cells.each([&](int, int, std::size_t cell) {
-    Fluxes<Real> shares{};
-    if (added[cell] > Real(0)) {
-      for (int k = 0; k < pipe_count; ++k) shares[k] = outflow[cell][k] * volume_to_depth / added[cell];
-    }
-    for (int k = 0; k < pipe_count; ++k) sent[cell][k] = field[cell] * shares[k];
-    kept[cell] = field[cell] * (Real(1) - min(Real(1), total(shares)));
+    const Fluxes<Real> shares = water_shares(cells, outflow[cell], added[cell], volume_to_depth);
+    for (int k = 0; k < cells.pipes; ++k) sent[cell][k] = field[cell] * shares[k];
+    kept[cell] = field[cell] * (Real(1) - min(Real(1), total(shares, cells.pipes)));
   });
   std::vector<Real> moved = field;
-  cells.each([&](int x, int y, std::size_t cell) { moved[cell] = kept[cell] + total(arriving(cells, sent, x, y)); });
+  cells.each([&](int x, int y, std::size_t cell) {
+    moved[cell] = kept[cell] + total(arriving(cells, sent, x, y), cells.pipes);
+  });
+  return moved;
+}
+
+// Mei's semi-Lagrangian transport (eqs. 2.24-2.25): the share that left through exterior pipes
+// is gone; then each cell takes the bilinear value of what stayed at x − (u, v)·Δt (in cells; at
+// most the grid's width + height away), a corner off the grid or on no data reading the cell
+// itself.
+template <class Real>
+std::vector<Real> backtraced(const Cells<Real>& cells, const std::vector<Real>& field,
+                             const std::vector<Fluxes<Real>>& outflow, const std::vector<Real>& added,
+                             const PipeState<Real>& flowing, const HydraulicParams& params,
+                             const Real& volume_to_depth) {
+  const auto& terrain = cells.terrain;
+  std::vector<Real> staying = field;
+  cells.each([&](int x, int y, std::size_t cell) {
+    const Fluxes<Real> shares = water_shares(cells, outflow[cell], added[cell], volume_to_depth);
+    Real leaving = Real(0);
+    for (int k = 0; k < cells.pipes; ++k) {
+      if (!cells.interior(x, y, k)) leaving = leaving + shares[k];
+    }
+    staying[cell] = field[cell] * (Real(1) - min(Real(1), leaving));
+  });
+  const Real reach(terrain.width + terrain.height);
+  const auto bracket = [&](const Real& displacement) {
+    const Real offset = min(reach, max(-reach, displacement));
+    const Real below = floor(offset);
+    return std::pair{below, offset - below};  // the lower cell and the weight of the upper one
+  };
+  std::vector<Real> moved = field;
+  cells.each([&](int x, int y, std::size_t cell) {
+    const auto [below_x, upper_x] =
+        bracket(-flowing.velocity_x.values[cell] * Real(params.time_step / terrain.cell_size_x));
+    const auto [below_y, upper_y] =
+        bracket(-flowing.velocity_y.values[cell] * Real(params.time_step / terrain.cell_size_y));
+    const auto at = [&](int dx, int dy) {
+      const int cx = x + static_cast<int>(below_x) + dx, cy = y + static_cast<int>(below_y) + dy;
+      return cells.wet(cx, cy) ? staying[terrain.index(cx, cy)] : staying[cell];
+    };
+    const Real lower_row = (Real(1) - upper_x) * at(0, 0) + upper_x * at(1, 0);
+    const Real upper_row = (Real(1) - upper_x) * at(0, 1) + upper_x * at(1, 1);
+    moved[cell] = (Real(1) - upper_y) * lower_row + upper_y * upper_row;
+  });
   return moved;
 }
 
@@ -186,22 +252,25 @@ std::vector<Real> diffused(const Cells<Real>& cells, const std::vector<Real>& fi
   cells.each([&](int x, int y, std::size_t cell) {
     Fluxes<Real> shares{};
     if (params.diffusion_weighting == DiffusionWeighting::uniform) {
-      for (int k = 0; k < pipe_count; ++k) shares[k] = cells.interior(x, y, k) ? Real(params.sediment_diffusion) : Real(0);
+      for (int k = 0; k < axis_pipes; ++k) shares[k] = cells.interior(x, y, k) ? Real(params.sediment_diffusion) : Real(0);
     } else {
       Fluxes<Real> halves{};
-      for (int k = 0; k < pipe_count; ++k) {
+      for (int k = 0; k < axis_pipes; ++k) {
         if (cells.interior(x, y, k)) halves[k] = Real(0.5) * water[cells.neighbour(x, y, k)];
       }
-      const Real weight = water[cell] + total(halves);
+      const Real weight = water[cell] + total(halves, axis_pipes);
       if (weight > Real(0)) {
-        for (int k = 0; k < pipe_count; ++k) shares[k] = halves[k] / weight;
+        for (int k = 0; k < axis_pipes; ++k) shares[k] = halves[k] / weight;
       }
     }
-    for (int k = 0; k < pipe_count; ++k) sent[cell][k] = field[cell] * shares[k];
-    kept[cell] = max(Real(0), field[cell] - total(sent[cell]));
+    for (int k = 0; k < axis_pipes; ++k) sent[cell][k] = field[cell] * shares[k];
+    kept[cell] = max(Real(0), field[cell] - total(sent[cell], axis_pipes));
   });
+  const Cells<Real> axis{cells.terrain, axis_pipes};
   std::vector<Real> spread = field;
-  cells.each([&](int x, int y, std::size_t cell) { spread[cell] = kept[cell] + total(arriving(cells, sent, x, y)); });
+  cells.each([&](int x, int y, std::size_t cell) {
+    spread[cell] = kept[cell] + total(arriving(axis, sent, x, y), axis_pipes);
+  });
   return spread;
 }
 
@@ -209,8 +278,6 @@ std::vector<Real> diffused(const Cells<Real>& cells, const std::vector<Real>& fi
 
 std::string pipe_spec_unsupported(const HydraulicParams& params) {
   std::vector<std::string> outside;
-  if (params.pipe_count != 4) outside.push_back("8 pipes");
-  if (params.transport != SedimentTransport::flux) outside.push_back("semi-Lagrangian transport");
   if (params.thermal_step) outside.push_back("the combined thermal step");
   return fmt::format("{}", fmt::join(outside, ", "));
 }
@@ -218,7 +285,7 @@ std::string pipe_spec_unsupported(const HydraulicParams& params) {
 template <class Real>
 PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicParams& params,
                                const HydraulicForcing& forcing) {
-  const Cells<Real> cells{start.terrain};
+  const Cells<Real> cells{start.terrain, params.pipe_count};
   const double cell_area = start.terrain.cell_size_x * start.terrain.cell_size_y;
   const Real volume_to_depth(params.time_step / cell_area);
   PipeState<Real> next = start;
@@ -226,7 +293,7 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
   const std::vector<Real> added = water_after_additions(cells, start.water, params, forcing);
   std::vector<Fluxes<Real>> previous(start.outflow.size());
   for (std::size_t cell = 0; cell < previous.size(); ++cell) {
-    for (int k = 0; k < pipe_count; ++k) previous[cell][k] = start.outflow[cell][k];
+    for (int k = 0; k < cells.pipes; ++k) previous[cell][k] = start.outflow[cell][k];
   }
   const std::vector<Fluxes<Real>> outflow = scaled_outflows(cells, previous, added, params);
 
@@ -235,10 +302,22 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
   cells.each([&](int x, int y, std::size_t cell) {
     const Fluxes<Real>& out = outflow[cell];
     const Fluxes<Real> in = arriving(cells, outflow, x, y);
-    flowed[cell] = max(Real(0), added[cell] - volume_to_depth * total(out)) + volume_to_depth * total(in);
+    flowed[cell] = max(Real(0), added[cell] - volume_to_depth * total(out, cells.pipes)) +
+                   volume_to_depth * total(in, cells.pipes);
     const Real mean_depth = max(Real(params.velocity_depth_floor), Real(0.5) * (added[cell] + flowed[cell]));
-    const Real net_x = Real(0.5) * ((in[left] - out[left]) + (out[right] - in[right]));
-    const Real net_y = Real(0.5) * ((in[bottom] - out[bottom]) + (out[top] - in[top]));
+    // The net flux along x: each pipe's (out − in) times its x direction and the share of its
+    // length along x (1 for L and R, l_x/l_d for a diagonal); along y likewise.
+    Real net_x = Real(0), net_y = Real(0);
+    for (int k = 0; k < cells.pipes; ++k) {
+      const double length = k < axis_pipes ? 0.0 : std::hypot(start.terrain.cell_size_x, start.terrain.cell_size_y);
+      const double along_x = k < axis_pipes ? 1.0 : start.terrain.cell_size_x / length;
+      const double along_y = k < axis_pipes ? 1.0 : start.terrain.cell_size_y / length;
+      const Real net = out[k] - in[k];
+      if (pipe_offsets[k].dx != 0) net_x = net_x + Real(pipe_offsets[k].dx * along_x) * net;
+      if (pipe_offsets[k].dy != 0) net_y = net_y + Real(pipe_offsets[k].dy * along_y) * net;
+    }
+    net_x = Real(0.5) * net_x;
+    net_y = Real(0.5) * net_y;
     next.velocity_x.values[cell] = net_x / (Real(start.terrain.cell_size_y) * mean_depth);
     next.velocity_y.values[cell] = net_y / (Real(start.terrain.cell_size_x) * mean_depth);
   });
@@ -274,8 +353,13 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
 
   // What the water carries goes with it, then spreads (seed 001 §3.8, the regolith too with
   // regolith_diffusion); the water evaporates (2.25's K_e).
-  sediment = carried_with_water(cells, sediment, outflow, added, volume_to_depth);
-  if (regolith) loose = carried_with_water(cells, loose, outflow, added, volume_to_depth);
+  const auto transported = [&](const std::vector<Real>& field) {
+    return params.transport == SedimentTransport::flux
+               ? carried_with_water(cells, field, outflow, added, volume_to_depth)
+               : backtraced(cells, field, outflow, added, next, params, volume_to_depth);
+  };
+  sediment = transported(sediment);
+  if (regolith) loose = transported(loose);
   if (params.sediment_diffusion > 0.0) {
     sediment = diffused(cells, sediment, flowed, params);
     if (regolith && params.regolith_diffusion) loose = diffused(cells, loose, flowed, params);
@@ -285,7 +369,7 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
     next.sediment.values[cell] = sediment[cell];
     if (regolith) next.regolith.values[cell] = loose[cell];
     next.water.values[cell] = flowed[cell] * evaporation_kept;
-    for (int k = 0; k < pipe_count; ++k) next.outflow[cell][k] = outflow[cell][k];
+    for (int k = 0; k < cells.pipes; ++k) next.outflow[cell][k] = outflow[cell][k];
   });
   return next;
 }

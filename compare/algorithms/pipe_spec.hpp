@@ -8,10 +8,10 @@
 // Its constants come from HydraulicParams and the terrain's cell sizes alone, never from
 // PipeConstants, which both twins read: a bug in those is a bug of both twins.
 //
-// Covered: 4 pipes, flux transport, both tilts (central differences and seed 001's code's raw
-// ones), closed or open borders, the depth ramp, rain, a rain map, point sources, evaporation, seed
-// 001's regolith and sediment diffusion (both weightings). Not covered (pipe_spec_unsupported names
-// which): 8 pipes, semi-Lagrangian transport, the combined thermal step.
+// Covered: 4 or 8 pipes, flux or semi-Lagrangian transport, both tilts (central differences and
+// seed 001's code's raw ones), closed or open borders, the depth ramp, rain, a rain map, point
+// sources, evaporation, seed 001's regolith and sediment diffusion (both weightings). Not covered
+// (pipe_spec_unsupported says so): Jákó & Tóth's combined thermal step.
 //
 // Inputs:  start (every field as the twins' PipeState; no-data cells of the terrain's mask hold
 //          nothing and send nothing), params, forcing (rain map in m/s, point sources in m³/s).

@@ -25,7 +25,7 @@ struct SpecWorst {
   double ratio = -1.0;
   double truth = 0.0;
   double spec = 0.0;
-  std::size_t value = 0;  // the value's index: cell, or cell·4 + pipe
+  std::size_t value = 0;  // the value's index: cell, or cell·pipes + pipe
 };
 
 void keep_worst(SpecWorst& worst, std::size_t value, double truth, const RoundingInterval& spec,
@@ -84,14 +84,15 @@ std::vector<Check> pipe_spec_checks(const PipeState<double>& start, const PipeCo
   grade_grid("velocity_x", [](const auto& state) -> const auto& { return state.velocity_x; });
   grade_grid("velocity_y", [](const auto& state) -> const auto& { return state.velocity_y; });
   SpecWorst outflow;
+  const auto pipes = static_cast<std::size_t>(params.pipe_count);
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     if (!terrain.is_valid(cell)) continue;
-    for (std::size_t k = 0; k < 4; ++k) {
-      keep_worst(outflow, cell * 4 + k, truth.state().outflow[cell][k], spec.outflow[cell][k],
+    for (std::size_t k = 0; k < pipes; ++k) {
+      keep_worst(outflow, cell * pipes + k, truth.state().outflow[cell][k], spec.outflow[cell][k],
                  truth_interval.state().outflow[cell][k]);
     }
   }
-  checks.push_back(spec_step_field("outflow", outflow, terrain.width, 4, step));
+  checks.push_back(spec_step_field("outflow", outflow, terrain.width, params.pipe_count, step));
   return checks;
 }
 

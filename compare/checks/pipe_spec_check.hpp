@@ -1,6 +1,6 @@
 // spec.step.<field>.cpu: one step of ref<double> held value by value to the host spec of the pipe
 // step (compare/algorithms/pipe_spec.hpp), for the fields terrain, water, sediment, regolith (where
-// the parameters have it), velocity_x, velocity_y and outflow (each cell's four pipes).
+// the parameters have it), velocity_x, velocity_y and outflow (each cell's 4 or 8 pipes).
 //
 // Error model: ref<double>'s step and the spec's, both from the same start, are each within their
 // rounding-interval width of the exact step (core/rounding_interval.hpp: both are run once more in
