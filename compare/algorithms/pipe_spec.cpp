@@ -230,8 +230,9 @@ std::vector<Real> backtraced(const Cells<Real>& cells, const std::vector<Real>& 
         bracket(-flowing.velocity_x.values[cell] * Real(params.time_step / terrain.cell_size_x));
     const auto [below_y, upper_y] =
         bracket(-flowing.velocity_y.values[cell] * Real(params.time_step / terrain.cell_size_y));
+    const int corner_x = x + static_cast<int>(below_x), corner_y = y + static_cast<int>(below_y);
     const auto at = [&](int dx, int dy) {
-      const int cx = x + static_cast<int>(below_x) + dx, cy = y + static_cast<int>(below_y) + dy;
+      const int cx = corner_x + dx, cy = corner_y + dy;
       return cells.wet(cx, cy) ? staying[terrain.index(cx, cy)] : staying[cell];
     };
     const Real lower_row = (Real(1) - upper_x) * at(0, 0) + upper_x * at(1, 0);
