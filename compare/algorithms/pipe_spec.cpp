@@ -24,6 +24,7 @@
 //   diffusion   (seed 001 §3.8, w > 0) s (and r with regolith_diffusion) to the 4 axis neighbours
 //               that take part, σ = w or ½d_k/(d + ½Σd_n) with depths d_B; kept: max(0, s − Σσ·s)
 //   evaporation d = d_B·(1 − K_e·Δt)
+//   thermal     (Jákó & Tóth's combined step) one iteration of their thermal erosion on b
 // Exterior pipes (off the grid or into no data): walls with closed borders; with open borders a dry
 // neighbour at the cell's own height (Δh = d_A) that sends nothing back.
 #include "compare/algorithms/pipe_spec.hpp"
@@ -31,11 +32,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 
+#include "compare/algorithms/thermal_specs.hpp"
 #include "core/rounding_interval.hpp"
 
 namespace gt {
@@ -277,12 +278,6 @@ std::vector<Real> diffused(const Cells<Real>& cells, const std::vector<Real>& fi
 
 }  // namespace
 
-std::string pipe_spec_unsupported(const HydraulicParams& params) {
-  std::vector<std::string> outside;
-  if (params.thermal_step) outside.push_back("the combined thermal step");
-  return fmt::format("{}", fmt::join(outside, ", "));
-}
-
 template <class Real>
 PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicParams& params,
                                const HydraulicForcing& forcing) {
@@ -372,6 +367,17 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
     next.water.values[cell] = flowed[cell] * evaporation_kept;
     for (int k = 0; k < cells.pipes; ++k) next.outflow[cell][k] = outflow[cell][k];
   });
+  // Jákó & Tóth's combined step: one iteration of their thermal erosion on the bed, from the
+  // thermal spec (compare/algorithms/thermal_specs.hpp).
+  if (params.thermal_step) {
+    ThermalConstants thermal;
+    thermal.talus_slope = std::tan(params.thermal_talus_angle * std::numbers::pi / 180.0);
+    thermal.length_x = start.terrain.cell_size_x;
+    thermal.length_y = start.terrain.cell_size_y;
+    thermal.length_diagonal = std::hypot(thermal.length_x, thermal.length_y);
+    thermal.request_factor = params.thermal_rate;
+    next.terrain = jako_first_iteration(next.terrain, thermal);
+  }
   return next;
 }
 

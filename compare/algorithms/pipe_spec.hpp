@@ -8,10 +8,11 @@
 // Its constants come from HydraulicParams and the terrain's cell sizes alone, never from
 // PipeConstants, which both twins read: a bug in those is a bug of both twins.
 //
-// Covered: 4 or 8 pipes, flux or semi-Lagrangian transport, both tilts (central differences and
-// seed 001's code's raw ones), closed or open borders, the depth ramp, rain, a rain map, point
-// sources, evaporation, seed 001's regolith and sediment diffusion (both weightings). Not covered
-// (pipe_spec_unsupported says so): Jákó & Tóth's combined thermal step.
+// It covers every parameter of erosion.pipe: 4 or 8 pipes, flux or semi-Lagrangian transport, both
+// tilts (central differences and seed 001's code's raw ones), closed or open borders, the depth
+// ramp, rain, a rain map, point sources, evaporation, seed 001's regolith and sediment diffusion
+// (both weightings), and Jákó & Tóth's combined thermal step (the thermal spec of
+// compare/algorithms/thermal_specs.hpp).
 //
 // Inputs:  start (every field as the twins' PipeState; no-data cells of the terrain's mask hold
 //          nothing and send nothing), params, forcing (rain map in m/s, point sources in m³/s).
@@ -21,14 +22,9 @@
 //          bound (its value is the double computation).
 #pragma once
 
-#include <string>
-
 #include "core/params/hydraulic.hpp"
 
 namespace gt {
-
-// Why the spec does not cover these parameters, or empty when it does.
-std::string pipe_spec_unsupported(const HydraulicParams& params);
 
 template <class Real>
 PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicParams& params,

@@ -14,6 +14,7 @@
 
 #include "compare/algorithm.hpp"
 #include "compare/algorithms/thermal_specs.hpp"
+#include "core/rounding_interval.hpp"
 #include "compare/case_descriptors.hpp"
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
@@ -95,32 +96,39 @@ Grid<double> hydra_first_iteration(const Grid<double>& heights, const ThermalCon
   return after;
 }
 
-Grid<double> jako_first_iteration(const Grid<double>& heights, const ThermalConstants& constants) {
+template <class Real>
+Grid<Real> jako_first_iteration(const Grid<Real>& heights, const ThermalConstants& constants) {
+  using std::max;  // unqualified: RoundingInterval brings its own
   const std::array<Offset, 8> offsets{{{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
-  Grid<double> after = heights;
+  Grid<Real> after = heights;
   for (int y = 0; y < heights.height; ++y) {
     for (int x = 0; x < heights.width; ++x) {
       if (!heights.is_valid(x, y)) continue;
-      std::array<double, 8> drop{};
+      std::array<Real, 8> drop{};
       for (int k = 0; k < 8; ++k) {
         const int nx = x + offsets[k].dx, ny = y + offsets[k].dy;
-        if (!takes_part(heights, nx, ny)) continue;
+        if (!heights.inside(nx, ny) || !heights.is_valid(nx, ny)) continue;
         const double length = k >= 4 ? constants.length_diagonal : (k % 2 == 0 ? constants.length_x : constants.length_y);
-        const double fall = heights.at(x, y) - heights.at(nx, ny);
-        if (fall > constants.talus_slope * length) drop[k] = fall;
+        const Real fall = heights.at(x, y) - heights.at(nx, ny);
+        if (fall > Real(constants.talus_slope * length)) drop[k] = fall;
       }
-      const double drop_sum = drop[0] + drop[1] + drop[2] + drop[3] + drop[4] + drop[5] + drop[6] + drop[7];
-      if (drop_sum <= 0.0) continue;
-      const double sent = constants.request_factor * *std::max_element(drop.begin(), drop.end()) / 2.0;
+      const Real drop_sum = ((drop[0] + drop[1]) + (drop[2] + drop[3])) + ((drop[4] + drop[5]) + (drop[6] + drop[7]));
+      if (!(drop_sum > Real(0))) continue;
+      Real largest = drop[0];
+      for (int k = 1; k < 8; ++k) largest = max(largest, drop[k]);
+      const Real sent = Real(constants.request_factor) * largest / Real(2);
       for (int k = 0; k < 8; ++k) {
-        const double share = sent * drop[k] / drop_sum;
-        after.at(x, y) -= share;
-        if (drop[k] > 0.0) after.at(x + offsets[k].dx, y + offsets[k].dy) += share;
+        const Real share = sent * drop[k] / drop_sum;
+        after.at(x, y) = after.at(x, y) - share;
+        if (drop[k] > Real(0)) after.at(x + offsets[k].dx, y + offsets[k].dy) = after.at(x + offsets[k].dx, y + offsets[k].dy) + share;
       }
     }
   }
   return after;
 }
+
+template Grid<double> jako_first_iteration(const Grid<double>&, const ThermalConstants&);
+template Grid<RoundingInterval> jako_first_iteration(const Grid<RoundingInterval>&, const ThermalConstants&);
 
 namespace {
 

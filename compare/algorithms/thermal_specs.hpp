@@ -22,6 +22,9 @@ Grid<double> hydra_first_iteration(const Grid<double>& heights, const ThermalCon
 // Jákó & Tóth's first iteration (eqs. 2.30-2.34 as decided in reference/erosion/thermal_jako.cpp),
 // sending each outflow to its neighbour as it is computed: A = the lower neighbours beyond T·l,
 // ΔS = rate·H/2 with H the largest drop in A, shared by the drops.
-Grid<double> jako_first_iteration(const Grid<double>& heights, const ThermalConstants& constants);
+// Real: double, or core/rounding_interval.hpp's RoundingInterval (the pipe step's spec, compare/
+// algorithms/pipe_spec.hpp, runs it as its combined thermal step).
+template <class Real>
+Grid<Real> jako_first_iteration(const Grid<Real>& heights, const ThermalConstants& constants);
 
 }  // namespace gt

@@ -11,8 +11,7 @@
 // nearest to) its own bound, with where it is and both numbers. Neither bound reads the step's
 // result: the widths come from the start state alone.
 //
-// Inputs:  start (a state ref<double> reached; the spec's domain: pipe_spec_unsupported(params)
-//          empty), the twins' constants (what ref<double> steps with), params (what the spec
+// Inputs:  start (a state ref<double> reached), the twins' constants (what ref<double> steps with), params (what the spec
 //          steps with), forcing, and the number of the step graded (for the text).
 // Outputs: six checks, seven with regolith, named as above.
 #pragma once
