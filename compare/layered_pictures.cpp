@@ -55,8 +55,9 @@ void write_cross_section(const LayeredGround<double>& ground, const std::filesys
 }
 
 // The material masks (§3.17, reference/erosion/layered/material_masks.hpp) as fields `mask_<material>`
-// and one picture: a panel per material, left to right, each mask from black (0) to the material's
-// colour (1).
+// and a picture each, named in its caption: from black (0) to the material's colour at the mask's
+// largest share, so that a material showing on a few per cent of a cell is still visible; the
+// colour bar gives the share.
 void write_material_masks(const LayeredGround<double>& ground, const LayeredParams& params, const RunOptions& options,
                           CaseResult& result) {
   const std::size_t materials = soil_component_count + params.bedrock_types.size();
@@ -65,39 +66,35 @@ void write_material_masks(const LayeredGround<double>& ground, const LayeredPara
     const auto column = reference::material_masks(ground, params, c);
     for (std::size_t m = 0; m < materials; ++m) masks[m].values[c] = column[m];
   }
-  constexpr int gap = 2;
   const int scale = std::max(1, 240 / std::max(ground.width, ground.height));
-  const int panel = ground.width * scale;
-  const int width = int(materials) * (panel + gap) - gap;
-  std::vector<Colour> pixels(std::size_t(width) * std::size_t(ground.height * scale), Colour{1, 1, 1});
+  const auto folder = options.report_dir / result.name;
   for (std::size_t m = 0; m < materials; ++m) {
     auto& mask = masks[m];
     mask.cell_size_x = ground.cell_size_x;
     mask.cell_size_y = ground.cell_size_y;
     const Colour colour = m < soil_component_count ? layered_component_colour(int(m))
                                                    : layered_bedrock_colour(int(m - soil_component_count));
+    const double largest = *std::max_element(mask.values.begin(), mask.values.end());
+    const auto shade = [&](double share) {
+      const auto strength = static_cast<float>(largest > 0.0 ? std::clamp(share / largest, 0.0, 1.0) : 0.0);
+      return Colour{strength * colour[0], strength * colour[1], strength * colour[2]};
+    };
+    std::vector<Colour> pixels;
     for (int py = 0; py < ground.height * scale; ++py) {
-      for (int px = 0; px < panel; ++px) {
-        const auto value = float(mask.values[ground.cell(px / scale, py / scale)]);
-        Colour& pixel = pixels[std::size_t(py) * std::size_t(width) + std::size_t(int(m) * (panel + gap) + px)];
-        for (int channel = 0; channel < 3; ++channel) pixel[channel] = value * colour[channel];
-      }
+      for (int px = 0; px < ground.width * scale; ++px) pixels.push_back(shade(mask.values[ground.cell(px / scale, py / scale)]));
     }
     const std::string name = layered_material_name(m);
     std::string key = "mask_" + name;
     std::replace(key.begin(), key.end(), ' ', '_');
+    write_colour_image(ground.width * scale, ground.height * scale, pixels, folder / (key + ".png"));
+    add_picture(result, key + ".png",
+                fmt::format("{}: its share of the surface after the run, with the thesis's transparency (§3.17: a "
+                            "layer thinner than K_pmin lets the one below show)",
+                            name),
+                sampled_scale("black to " + name, 0.0, largest, "1", shade));
     write_field_files(mask, {key, key, "cpu", "1", fmt::format("share of the surface showing {} (§3.17), ref<double>", name)},
                       options, result);
   }
-  const auto folder = options.report_dir / result.name;
-  write_colour_image(width, ground.height * scale, pixels, folder / "material_masks.png");
-  std::string order;
-  for (std::size_t m = 0; m < materials; ++m) order += (m ? ", " : "") + layered_material_name(m);
-  result.artifacts.push_back(
-      {result.name + "/material_masks.png", "image",
-       fmt::format("material masks after the run with the thesis's transparency (§3.17: a layer thinner than "
-                   "K_pmin lets the one below show), a panel per material from black (0) to its colour (1): {}",
-                   order)});
 }
 
 }  // namespace

@@ -2,9 +2,9 @@
 //   surface_material.png  the top non-empty layer's colour, mixed by composition, greened by vegetation
 //   cross_section.png     the middle row: the surface's elevation above, the layers below, true to
 //                         scale in depth
-//   material_masks.png    the material masks with the thesis's transparency (§3.17,
-//                         reference/erosion/layered/material_masks.hpp), a panel per material, and
-//                         each mask as a field mask_<material> (EXR/NPY)
+//   mask_<material>.png   each material mask with the thesis's transparency (§3.17,
+//                         reference/erosion/layered/material_masks.hpp), black to the material's
+//                         colour at its largest share, with its colour bar; and as a field (EXR/NPY)
 // Colours: compare/layered_look.hpp. Nothing is written without a report folder.
 #pragma once
 

@@ -41,7 +41,7 @@ TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
       EXPECT_THAT(names, Contains(std::string(expected))) << layered["name"];
     }
     const std::string name = layered["name"];
-    for (const char* file : {"surface_material.png", "cross_section.png", "material_masks.png", "ledger.png",
+    for (const char* file : {"surface_material.png", "cross_section.png", "mask_org.png", "ledger.png",
                              "soil_topsoil_org_cpu.npy", "mask_org.npy"}) {
       EXPECT_TRUE(fs::exists(out / name / file)) << name << ": " << file;
     }

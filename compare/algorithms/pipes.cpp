@@ -353,7 +353,6 @@ void plot_ledgers(const std::vector<BackendEnd>& ends, double material, const Ru
     error_plot.series.push_back(ledger_series("water balance " + end.backend, error.steps, error.water, false, end.backend));
     error_plot.series.push_back(ledger_series("material drift " + end.backend, error.steps, error.material, true, end.backend));
   }
-  SeriesPlot volume_plot{.title = "Water ledger (ref<double>)", .x_label = "step", .y_label = "m³"};
   std::vector<double> steps, water, inflow, evaporated, out;
   for (const auto& entry : entries_of(ends.front().records)) {
     steps.push_back(entry.step);
@@ -362,12 +361,17 @@ void plot_ledgers(const std::vector<BackendEnd>& ends, double material, const Ru
     evaporated.push_back(entry.evaporated);
     out.push_back(entry.boundary_out_water);
   }
-  volume_plot.series = {ledger_series("water held W_t", steps, water), ledger_series("rain and sources in", steps, inflow),
-                        ledger_series("evaporated", steps, evaporated), ledger_series("out through borders", steps, out)};
+  // One panel each, on its own scale: the water held (53,000 m³ on the topobathy) would flatten
+  // what came in and went out onto 0 in a shared one.
+  const auto panel = [&](const std::string& title, const std::vector<double>& values) {
+    return SeriesPlot{.title = title, .x_label = "step", .y_label = "m³", .series = {ledger_series(title, steps, values)}};
+  };
   attach_plot({error_plot}, options, "ledger_error.png",
               "water balance (solid) and material drift (dashed), relative", result);
-  attach_plot({volume_plot}, options, "ledger_volumes.png", "water held and what came in and went out, m³",
-              result);
+  attach_plot({panel("water held W_t", water), panel("rain and sources in", inflow), panel("evaporated", evaporated),
+               panel("out through borders", out)},
+              options, "ledger_volumes.png",
+              "ref<double>'s water ledger, m³, each on its own scale: held, and what came in and went out", result);
 }
 
 // A bound wider than this share of the field's size (its 90th percentile over the cells, against
