@@ -35,7 +35,6 @@
 #include <numbers>
 #include <vector>
 
-
 #include "compare/algorithms/thermal_specs.hpp"
 #include "core/rounding_interval.hpp"
 
@@ -287,13 +286,10 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
   PipeState<Real> next = start;
 
   const std::vector<Real> added = water_after_additions(cells, start.water, params, forcing);
-  std::vector<Fluxes<Real>> previous(start.outflow.size());
-  for (std::size_t cell = 0; cell < previous.size(); ++cell) {
-    for (int k = 0; k < cells.pipes; ++k) previous[cell][k] = start.outflow[cell][k];
-  }
-  const std::vector<Fluxes<Real>> outflow = scaled_outflows(cells, previous, added, params);
+  const std::vector<Fluxes<Real>> outflow = scaled_outflows(cells, start.outflow, added, params);
 
   // eqs. 2.14-2.19: depth after the flow, and the velocity from the net flux through the cell.
+  const double diagonal = std::hypot(start.terrain.cell_size_x, start.terrain.cell_size_y);
   std::vector<Real> flowed(added.size(), Real(0));
   cells.each([&](int x, int y, std::size_t cell) {
     const Fluxes<Real>& out = outflow[cell];
@@ -305,9 +301,8 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
     // length along x (1 for L and R, l_x/l_d for a diagonal); along y likewise.
     Real net_x = Real(0), net_y = Real(0);
     for (int k = 0; k < cells.pipes; ++k) {
-      const double length = k < axis_pipes ? 0.0 : std::hypot(start.terrain.cell_size_x, start.terrain.cell_size_y);
-      const double along_x = k < axis_pipes ? 1.0 : start.terrain.cell_size_x / length;
-      const double along_y = k < axis_pipes ? 1.0 : start.terrain.cell_size_y / length;
+      const double along_x = k < axis_pipes ? 1.0 : start.terrain.cell_size_x / diagonal;
+      const double along_y = k < axis_pipes ? 1.0 : start.terrain.cell_size_y / diagonal;
       const Real net = out[k] - in[k];
       if (pipe_offsets[k].dx != 0) net_x = net_x + Real(pipe_offsets[k].dx * along_x) * net;
       if (pipe_offsets[k].dy != 0) net_y = net_y + Real(pipe_offsets[k].dy * along_y) * net;
