@@ -438,6 +438,16 @@ TEST_F(ReportFiles, MapsCarryAColourBarInTheirUnit) {
   EXPECT_DOUBLE_EQ(read.cases[0].artifacts[1].scale->high, 0.5);
   EXPECT_EQ(read.cases[0].artifacts[1].scale->colours, colours);
   EXPECT_FALSE(read.cases[0].artifacts[2].scale.has_value());
+  // A hand-edited report: channels beyond [0, 1] (or float's range) are clamped, a colour that is not
+  // three numbers leaves the bar grey; neither breaks the page.
+  json edited = json::parse(read_text(folder / "report.json"));
+  auto& details = edited["cases"][0]["artifact_details"];
+  details[0]["scale"]["colours"] = json::array({json::array({1e300, -1.0, 0.5})});
+  details[1]["scale"]["colours"] = json::array({json::array({"red", 0, 0})});
+  const Report hostile = report_from_json(edited);
+  EXPECT_EQ(hostile.cases[0].artifacts[0].scale->colours, (std::vector<std::array<float, 3>>{{1.0f, 0.0f, 0.5f}}));
+  EXPECT_TRUE(hostile.cases[0].artifacts[1].scale->colours.empty());
+  write_report_html(hostile, folder / "index.html");
 }
 
 // What failed comes first (issue 37): a table of every check that did not pass, unexpected before

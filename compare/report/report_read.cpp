@@ -1,6 +1,7 @@
 // report.json read back into a Report; see compare/report/report_read.hpp.
 #include "compare/report/report_read.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include <fmt/format.h>
@@ -89,7 +90,9 @@ ColourScale colour_scale_from_json(const json& in) {
         !colour[2].is_number()) {
       return {scale.palette, scale.low, scale.high, scale.unit, {}};
     }
-    scale.colours.push_back({colour[0].get<float>(), colour[1].get<float>(), colour[2].get<float>()});
+    // Clamped in double first: a channel beyond float's range would make the conversion undefined.
+    const auto channel = [&](std::size_t c) { return static_cast<float>(std::clamp(colour[c].get<double>(), 0.0, 1.0)); };
+    scale.colours.push_back({channel(0), channel(1), channel(2)});
   }
   return scale;
 }
