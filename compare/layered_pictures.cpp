@@ -117,19 +117,18 @@ void write_layered_pictures(const LayeredGround<double>& ground, const LayeredPa
     for (int px = 0; px < ground.width * scale; ++px) pixels.push_back(surface[ground.cell(px / scale, py / scale)]);
   }
   write_colour_image(ground.width * scale, ground.height * scale, pixels, folder / "surface_material.png");
-  result.artifacts.push_back({result.name + "/surface_material.png", "image",
-                              "surface material after the run, ref<double> (a cell a square of pixels): the top non-empty layer's mixture (organic "
+  add_picture(result, "surface_material.png",
+              "surface material after the run, ref<double> (a cell a square of pixels): the top non-empty layer's mixture (organic "
                               "dark brown, sand pale yellow, gravel light grey, stones grey, boulders slate; bedrock: "
-                              "soft rock red, hard rock dark grey), greened by 35 % of the vegetation density"});
+                              "soft rock red, hard rock dark grey), greened by 35 % of the vegetation density");
   write_material_masks(ground, params, options, result);
   double depth_shown = 0.0;
   write_cross_section(ground, folder / "cross_section.png", depth_shown);
-  result.artifacts.push_back(
-      {result.name + "/cross_section.png", "image",
-       fmt::format("cross-section along row {} after the run: above, the surface (elevation stretched to the panel); "
+  add_picture(result, "cross_section.png",
+              fmt::format("cross-section along row {} after the run: above, the surface (elevation stretched to the panel); "
                    "below, the layers from the surface down to {:.3g} m, true to scale in depth (topsoil, the subsoil "
                    "darker, soft rock red, hard rock grey; colours as the surface material)",
-                   ground.height / 2, depth_shown)});
+                   ground.height / 2, depth_shown));
 }
 
 }  // namespace gt

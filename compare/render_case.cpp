@@ -136,20 +136,17 @@ void write_pictures(const OIIO::ImageBuf& cpu, const GradedImage* graded, const 
   if (graded) write_image_fields(graded->image, graded->twin, graded->made_by, options, result);
   const auto folder = options.report_dir / result.name;
   std::filesystem::create_directories(folder);
-  const auto add = [&](const std::string& file, const std::string& caption) {
-    result.artifacts.push_back({result.name + "/" + file, "image", caption});
-  };
   write_image(cpu, folder / "cpu.png");
-  add("cpu.png", "CPU reference (double), rounded to 8 bits");
+  add_picture(result, "cpu.png", "CPU reference (double), rounded to 8 bits");
   if (!graded) return;
   const std::string& twin = graded->twin;
   write_image(graded->image, folder / (twin + ".png"));
-  add(twin + ".png", graded->made_by);
+  add_picture(result, twin + ".png", graded->made_by);
   const double scale = write_difference_heat_map(cpu, graded->image, folder / (twin + "_vs_cpu_heat.png"));
   add_picture(result, twin + "_vs_cpu_heat.png", fmt::format("max |{} - cpu| over channels: black 0, white the largest", twin),
               sampled_scale("heat", 0.0, scale, "of full range", [scale](double difference) { return heat_colour(difference, scale); }));
   write_verdict_mask(*tolerant, folder / (twin + "_vs_cpu_mask.png"));
-  add(twin + "_vs_cpu_mask.png",
+  add_picture(result, twin + "_vs_cpu_mask.png",
       "3×3-tolerant verdicts at 4/255: grey identical, green within, blue edge shift, red fails");
 }
 

@@ -245,10 +245,10 @@ void write_mesh_picture(const Mesh& mesh, const std::string& backend, const RunO
   const std::string file = "mesh." + backend + ".png";
   std::filesystem::create_directories(options.report_dir / result.name);
   write_colour_image(side, side, colours, options.report_dir / result.name / file);
-  result.artifacts.push_back({result.name + "/" + file, "image",
-                              fmt::format("{} mesh, {} triangles: the reference rasterizer's Phong view from azimuth "
-                                          "30°, elevation 20° (y up)",
-                                          backend, mesh.triangles.size())});
+  add_picture(result, file,
+              fmt::format("{} mesh, {} triangles: the reference rasterizer's Phong view from azimuth 30°, elevation "
+                          "20° (y up)",
+                          backend, mesh.triangles.size()));
 }
 
 std::optional<Check> volume_check(const Block& block, const BlockMeshes& meshes, const MeshReport& report) {

@@ -405,10 +405,9 @@ void add_colour_checks(const ParticleScenario& scenario, bool gpu, const RunOpti
   if (!options.report_dir.empty()) {
     const auto folder = options.report_dir / result.name;
     write_colour_image(colour, folder / "colour_before.png");
-    result.artifacts.push_back({result.name + "/colour_before.png", "image", "colour map before (sRGB)"});
+    add_picture(result, "colour_before.png", "colour map before (sRGB)");
     write_colour_image(truth.colour, folder / "colour_after_cpu.png");
-    result.artifacts.push_back({result.name + "/colour_after_cpu.png", "image",
-                                "colour map after the droplets carried it, ref<double> (sRGB)"});
+    add_picture(result, "colour_after_cpu.png", "colour map after the droplets carried it, ref<double> (sRGB)");
     write_colour_fields(colour, input, "input", "before the droplets", options, result);
     write_colour_fields(truth.colour, input, "cpu", "after the run, ref<double> (sequential)", options, result);
   }

@@ -52,8 +52,8 @@
 //   stability.max_cfl              the largest Δt·|u|/l_x or Δt·|v|/l_y of the run: at most 1 by the K
 //                  scaling (max_cfl_bound), plus 24 float roundings; no warn band.
 // spec.step.<field>.cpu: ref<double>'s step 11 value by value against a host spec of one step
-// (compare/algorithms/pipe_spec.hpp, compare/checks/pipe_spec_check.hpp), where the spec covers the
-// parameters: the erosion law, which no ledger sees (a conserving bug of both twins).
+// (compare/algorithms/pipe_spec.hpp, compare/checks/pipe_spec_check.hpp): the erosion law, which no
+// ledger sees (a conserving bug of both twins).
 // And, from the parameters alone, stability.pipe_wave_number: the stability number of the pipe
 // scheme's gravity waves (see pipe_wave_number below), at most 1, no warn band.
 // Mutants: compare/mutants/pipe.cpp (killed on the erosion.pipe.mutant_probe.* cases).

@@ -817,8 +817,8 @@ void write_cube_map(const PlanetParams& params, const Planet<double>& planet, co
     pixels[pixel] = elevation_colour(planet.elevation.smoothed[region]);
   }
   write_colour_image(cube.width, cube.height, pixels, options.report_dir / result.name / "elevation_cube.png");
-  result.artifacts.push_back({result.name + "/elevation_cube.png", "image",
-                              "cube map of the elevation: the faces front, right, back, left, north, south, a cell a pixel"});
+  add_picture(result, "elevation_cube.png",
+              "cube map of the elevation: the faces front, right, back, left, north, south, a cell a pixel");
   write_field_files(cube,
                     {"elevation_cube_cpu", "elevation", "cpu", "1",
                      "elevation per region as a cube map: faces in index order side by side, each R×R row-major"},
@@ -863,13 +863,13 @@ void write_maps(const PlanetParams& params, const Planet<double>& planet, const 
               sampled_scale("§4.3 elevation", static_cast<double>(*lowest), static_cast<double>(*highest), "generator units",
                             [](double elevation) { return elevation_colour(elevation); }));
   write_colour_image(map_width, map_height, plate_pixels, folder / "plates.png");
-  result.artifacts.push_back({result.name + "/plates.png", "image",
-                              fmt::format("the {} plates ({} rule), edge regions in full colour", params.plates,
-                                          plate_rule_name(params.plate_rule))});
+  add_picture(result, "plates.png",
+              fmt::format("the {} plates ({} rule), edge regions in full colour", params.plates,
+                          plate_rule_name(params.plate_rule)));
   write_region_borders(params, nearest, folder / "regions.png");
-  result.artifacts.push_back({result.name + "/regions.png", "image",
-                              "the spherical Voronoi cells of the region centroids (exact nearest centroid per pixel), "
-                              "their borders dark"});
+  add_picture(result, "regions.png",
+              "the spherical Voronoi cells of the region centroids (exact nearest centroid per pixel), "
+              "their borders dark");
   write_field_files(elevation_map,
                     {"elevation_cpu", "elevation", "cpu", "1",
                      "elevation (sea level 0) of the region under each pixel of an equirectangular map, ref<double>"},
