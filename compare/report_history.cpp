@@ -172,10 +172,22 @@ bool value_moved(double before, double after, std::optional<double> threshold) {
   return std::abs(after - before) > tolerance;
 }
 
+// Two values with the fewest significant digits (four at least) that still tell them apart: a
+// drift may be 1e-9 of the value, and seventeen digits of every value bury the magnitudes a reader
+// compares (report.json keeps them all).
+std::pair<std::string, std::string> distinct_texts(double before, double after) {
+  for (int digits = 4; digits < 17; ++digits) {
+    std::string before_text = fmt::format("{:.{}g}", before, digits);
+    std::string after_text = fmt::format("{:.{}g}", after, digits);
+    if (before_text != after_text) return {std::move(before_text), std::move(after_text)};
+  }
+  return {fmt::format("{}", before), fmt::format("{}", after)};
+}
+
 ChangeTexts check_change(const CheckPoint& before, const CheckPoint& after) {
   if (auto texts = status_change(before.status, after.status)) return texts;
   if (!value_moved(before.value, after.value, after.threshold ? after.threshold : before.threshold)) return std::nullopt;
-  return std::pair{fmt::format("{}", before.value), fmt::format("{}", after.value)};
+  return distinct_texts(before.value, after.value);
 }
 
 ChangeTexts timing_change(double before_ms, double after_ms, std::optional<double> before_unit,
@@ -303,7 +315,8 @@ std::string plot_html(const CaseHistory& series, const History& history, const s
   std::vector<SeriesPlot> panels;
   for (SeriesPlot panel : {threshold_panel(series, x), value_panel(series, x), timing_panel(series, history, x)}) {
     if (panel.series.empty()) continue;
-    for (std::size_t index = 0; index < x.size(); ++index) panel.x_ticks.emplace_back(x[index], history.revisions[index].label);
+    // "#k" as in the tables; the Revisions table names each (whole labels, rotated, left the panels a sliver).
+    for (std::size_t index = 0; index < x.size(); ++index) panel.x_ticks.emplace_back(x[index], fmt::format("#{}", index + 1));
     panels.push_back(std::move(panel));
   }
   if (panels.empty()) return "<p class=\"note\">plot unavailable: no checks and no timings</p>\n";
