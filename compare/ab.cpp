@@ -53,13 +53,64 @@ struct MetricRow {
 
 std::string number_cell(const std::optional<double>& value) { return value ? fmt::format("{:.6g}", *value) : "–"; }
 
+// B - A, and how far that is from A (a relative change reads faster than two 6-digit numbers).
+std::string change_cells(const MetricRow& row) {
+  if (!row.a || !row.b) return "<td class=\"n\">–</td><td class=\"n\">–</td>";
+  const double change = *row.b - *row.a;
+  const std::string relative = *row.a != 0.0 ? fmt::format("{:+.3g} %", 100.0 * change / std::abs(*row.a)) : "–";
+  return fmt::format("<td class=\"n\">{:.6g}</td><td class=\"n\">{}</td>", change, relative);
+}
+
+// The metrics as a reader takes them in: the results' terrain descriptors, then the checks, then
+// the timings apart (one run each, so their differences are mostly noise); in each group the rows
+// that moved first, most moved first (metrics_by_movement).
+void write_metric_tables(std::ofstream& html, const std::vector<MetricRow>& rows) {
+  struct Group {
+    const char* title;
+    const char* note;
+    bool (*holds)(const std::string&);
+  };
+  const Group groups[] = {
+      {"Terrain descriptors of the results", "ref<double>'s result of each variant, measured as `groundtruth stats` does.",
+       [](const std::string& name) { return name.rfind("descriptor.", 0) == 0; }},
+      {"Checks", "Each variant's checks (a check's outcome is in the report, linked above).",
+       [](const std::string& name) {
+         return name.rfind("descriptor.", 0) != 0 && name != "seconds" && name != "cpu_ms" && name != "gpu_ms";
+       }},
+      {"Timings", "One run of each variant: differences within about 25 % are the machine's noise; time variants "
+                  "with `groundtruth bench` or repeated runs before reading a speed-up here.",
+       [](const std::string& name) { return name == "seconds" || name == "cpu_ms" || name == "gpu_ms"; }},
+  };
+  for (const Group& group : groups) {
+    std::vector<const MetricRow*> members;
+    for (const MetricRow& row : rows) {
+      if (group.holds(row.name)) members.push_back(&row);
+    }
+    if (members.empty()) continue;
+    const auto moved = std::count_if(members.begin(), members.end(), [](const MetricRow* row) { return row->moved(); });
+    html << "<h3>" << escape_markup(group.title) << "</h3>\n<p>" << escape_markup(group.note) << " " << moved << " of "
+         << members.size() << " moved (highlighted).</p>\n<table><tr><th>metric</th><th>unit</th><th>A</th><th>B</th>"
+         << "<th>B - A</th><th>change</th></tr>\n";
+    for (const MetricRow* row : members) {
+      const MetricLabel label = metric_label(row->name);
+      html << "<tr" << (row->moved() ? " class=\"moved\"" : "") << "><td title=\"" << escape_markup(row->name) << "\">"
+           << escape_markup(label.label) << "</td><td>" << escape_markup(label.unit) << "</td><td class=\"n\">"
+           << number_cell(row->a) << "</td><td class=\"n\">" << number_cell(row->b) << "</td>" << change_cells(*row)
+           << "</tr>\n";
+    }
+    html << "</table>\n";
+  }
+}
+
 void write_page(const Sweep& ab, const CaseResult& a, const CaseResult& b, const std::vector<MetricRow>& rows,
-                const std::string& difference_caption, const std::filesystem::path& folder) {
+                const std::optional<Artifact>& difference, const std::filesystem::path& folder) {
   std::ofstream html(folder / (ab.ab_stem + ".html"));
   html << report_detail::page_head("A/B of " + a.algorithm,
-                                   "body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid "
-                                   "#ccc;padding:4px}td.n{text-align:right}img{width:320px;image-rendering:pixelated}"
-                                   "tr.moved{background:#fff6d6}")
+                                   std::string("body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px "
+                                               "solid #ccc;padding:4px}td.n{text-align:right}img{width:320px;image-"
+                                               "rendering:pixelated}tr.moved{background:#fff6d6}figure{margin:0}"
+                                               ".colourbar{width:320px}") +
+                                       std::string(report_detail::colour_bar_style))
        << "<h1>A/B of " << escape_markup(a.algorithm) << "</h1>\n<table><tr><th></th><th>A</th><th>B</th></tr>\n";
   const auto assignments = [](const AdHocCase& variant) {
     std::string text;
@@ -75,20 +126,15 @@ void write_page(const Sweep& ab, const CaseResult& a, const CaseResult& b, const
     html << "<td>" << (picture.empty() ? "" : "<img src=\"" + escape_markup(picture) + "\" alt=\"\">") << "</td>";
   }
   html << "</tr>\n</table>\n";
-  if (!difference_caption.empty()) {
-    html << "<figure><img src=\"" << escape_markup(ab.ab_stem) << "_difference.png\" alt=\"B - A\"><figcaption>"
-         << escape_markup(difference_caption)
+  if (difference) {
+    html << "<figure><img src=\"" << escape_markup(difference->path) << "\" alt=\"B - A\">"
+         << report_detail::colour_bar(difference->scale) << "<figcaption>" << escape_markup(difference->caption)
          << "</figcaption></figure>\n";
   }
-  html << "<h2>Metrics</h2>\n<p>Those that moved first (highlighted). The table as <a href=\""
-       << escape_markup(ab.ab_stem) << ".json\">JSON</a>.</p>\n<table><tr><th>metric</th><th>A</th><th>B</th><th>B - A</th></tr>\n";
-  for (const MetricRow& row : rows) {
-    const std::string delta = row.a && row.b ? fmt::format("{:.6g}", *row.b - *row.a) : "–";
-    html << "<tr" << (row.moved() ? " class=\"moved\"" : "") << "><td>" << escape_markup(row.name)
-         << "</td><td class=\"n\">" << number_cell(row.a) << "</td><td class=\"n\">" << number_cell(row.b)
-         << "</td><td class=\"n\">" << delta << "</td></tr>\n";
-  }
-  html << "</table>\n</body></html>\n";
+  html << "<h2>Metrics</h2>\n<p>The table as <a href=\"" << escape_markup(ab.ab_stem)
+       << ".json\">JSON</a>; hover a metric for its key there.</p>\n";
+  write_metric_tables(html, rows);
+  html << "</body></html>\n";
 }
 
 }  // namespace
@@ -128,7 +174,9 @@ void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::pa
   const CaseResult* b = find(ab.variants[1]);
   if (a == nullptr || b == nullptr) return;  // a shard holds one of them only
   std::vector<MetricRow> rows;
-  for (const auto& name : run_metric_names({a, b})) rows.push_back({name, run_metric(*a, name), run_metric(*b, name)});
+  for (const auto& name : metrics_by_movement({a, b}, run_metric_names({a, b}))) {
+    rows.push_back({name, run_metric(*a, name), run_metric(*b, name)});
+  }
   std::stable_partition(rows.begin(), rows.end(), [](const MetricRow& row) { return row.moved(); });
   nlohmann::json table = {{"a", {{"case", a->name}, {"assignments", ab.variants[0].assignments},
                                  {"outcome", outcome_name(a->status)}}},
@@ -140,20 +188,22 @@ void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::pa
     table["metrics"].push_back({{"name", row.name}, {"a", value(row.a)}, {"b", value(row.b)},
                                 {"b_minus_a", row.a && row.b ? nlohmann::json(*row.b - *row.a) : nlohmann::json(nullptr)}});
   }
-  std::string difference_caption;
+  std::optional<Artifact> difference;
   const auto field_a = cpu_field(folder, *a);
   const auto field_b = cpu_field(folder, *b);
   if (field_a && field_b && field_a->width == field_b->width && field_a->height == field_b->height) {
     const std::string picture = ab.ab_stem + "_difference.png";
     const DifferenceStats stats = write_difference_image(*field_a, *field_b, folder / picture);
-    difference_caption = fmt::format("{}: B - A, ref<double>'s results: blue where B is lower, red where higher, "
-                                     "full colour at {:.3g}; rms {:.3g} (the page: {}.html)",
-                                     ab.ab_stem, stats.scale_used, stats.rms, ab.ab_stem);
+    difference = Artifact{picture, "plot",
+                          fmt::format("{}: B - A, ref<double>'s results: blue where B is lower, red where higher; "
+                                      "rms {:.3g} (the page: {}.html)",
+                                      ab.ab_stem, stats.rms, ab.ab_stem),
+                          difference_scale(stats, field_a->vertical_unit)};
     table["difference"] = {{"max_abs", stats.max_abs}, {"rms", stats.rms}};
-    report.plots.push_back({picture, "plot", difference_caption, difference_scale(stats, field_a->vertical_unit)});
+    report.plots.push_back(*difference);
   }
   write_file_atomically(folder / (ab.ab_stem + ".json"), table.dump(2) + '\n');
-  write_page(ab, *a, *b, rows, difference_caption, folder);
+  write_page(ab, *a, *b, rows, difference, folder);
 }
 
 void write_case_ab_summaries(const std::vector<CaseSpec>& specs, Report& report, const std::filesystem::path& folder) {

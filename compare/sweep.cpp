@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "compare/algorithm.hpp"
 #include "compare/cases.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/report/report_common.hpp"
@@ -142,8 +143,38 @@ void write_table(const Sweep& sweep, const std::vector<Row>& rows, const std::ve
   write_file_atomically(folder / "sweep.json", table.dump(2) + '\n');
 }
 
+// How far a metric moved across the runs, as a share of its largest magnitude (0 when it did not):
+// the plots' order, so that the parameter's effect comes before the noise of the timings.
+double relative_spread(const std::vector<const CaseResult*>& results, const std::string& name) {
+  std::optional<double> low, high;
+  for (const CaseResult* result : results) {
+    const auto value = run_metric(*result, name);
+    if (!value) continue;
+    low = std::min(low.value_or(*value), *value);
+    high = std::max(high.value_or(*value), *value);
+  }
+  if (!low || *high == *low) return 0.0;
+  return (*high - *low) / std::max(std::abs(*high), std::abs(*low));
+}
+
+// The varied parameter as an axis: its name and its declared unit ("talus_angle (degree)").
+std::string axis_label(const std::string& algorithm, const std::string& parameter) {
+  const Algorithm& declared = find_algorithm(algorithm);
+  if (declared.params != nullptr) {
+    for (const ParamSpec& spec : *declared.params) {
+      if (spec.name == parameter && !spec.unit.empty() && spec.unit != "1") return fmt::format("{} ({})", parameter, spec.unit);
+    }
+  }
+  return parameter;
+}
+
+std::string labelled(const MetricLabel& label) {
+  return label.unit.empty() ? label.label : fmt::format("{} ({})", label.label, label.unit);
+}
+
 // One plot per metric that differs between the runs: against the first varied parameter, a line
-// per combination of the others.
+// per combination of the others; the result's descriptors first, then the checks, then the
+// timings, each group by how far its metrics moved (relative_spread), largest first.
 std::vector<Artifact> plot_metrics(const Sweep& sweep, const std::vector<Row>& rows,
                                    const std::vector<std::string>& metrics, const std::filesystem::path& folder) {
   bool numeric = true;
@@ -159,20 +190,14 @@ std::vector<Artifact> plot_metrics(const Sweep& sweep, const std::vector<Row>& r
     return static_cast<double>(std::find(first_values.begin(), first_values.end(), row.values.front()) -
                                first_values.begin());
   };
-  // What the experimenter varies the parameter for comes first: the result's descriptors, then the
-  // timings and the checks.
-  std::vector<std::string> order;
-  for (const auto& name : metrics) {
-    if (name.rfind("descriptor.", 0) == 0) order.push_back(name);
-  }
-  for (const auto& name : metrics) {
-    if (name.rfind("descriptor.", 0) != 0) order.push_back(name);
-  }
+  const std::vector<std::string> order = metrics_by_movement(results_of(rows), metrics);
+  const std::string x_label = rows.empty() ? sweep.varied.front() : axis_label(rows.front().result->algorithm, sweep.varied.front());
   std::vector<Artifact> plots;
   for (const std::string& name : order) {
     if (plots.size() == sweep_plot_cap) break;
     std::set<double> distinct;
     std::map<std::string, Series> lines;  // by the other varied values
+    const std::string title = labelled(metric_label(name));
     for (const Row& row : rows) {
       const auto value = run_metric(*row.result, name);
       if (!value) continue;
@@ -182,19 +207,21 @@ std::vector<Artifact> plot_metrics(const Sweep& sweep, const std::vector<Row>& r
         others += fmt::format("{}{}={}", others.empty() ? "" : ", ", sweep.varied[k], row.values[k]);
       }
       Series& line = lines[others];
-      line.label = others.empty() ? name : others;
+      line.label = others;  // empty for a single line: the title names it
       line.x.push_back(x_of(row));
       line.y.push_back(*value);
     }
     if (distinct.size() < 2) continue;
-    SeriesPlot plot{.title = name, .x_label = sweep.varied.front(), .y_label = name};
+    SeriesPlot plot{.title = title, .x_label = x_label, .y_label = title};
     if (!numeric) {
       for (std::size_t i = 0; i < first_values.size(); ++i) plot.x_ticks.emplace_back(double(i), first_values[i]);
     }
     for (auto& [others, line] : lines) plot.series.push_back(std::move(line));
     const std::string file = fmt::format("sweep_{}.png", plots.size() + 1);
     std::string reason;
-    if (auto artifact = plot_series({plot}, folder, file, fmt::format("{} against {}", name, sweep.varied.front()),
+    if (auto artifact = plot_series({plot}, folder, file,
+                                    fmt::format("{} against {} ({} moved {:.3g} % of its largest value)", title, x_label,
+                                                name, 100.0 * relative_spread(results_of(rows), name)),
                                     reason)) {
       plots.push_back(*artifact);
     } else {
@@ -211,7 +238,9 @@ void write_page(const Sweep& sweep, const std::vector<Row>& rows, const std::vec
   const std::string algorithm = rows.empty() ? "" : rows.front().result->algorithm;
   html << report_detail::page_head("sweep of " + algorithm,
                                    "body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid "
-                                   "#ccc;padding:4px}img.thumb{width:128px;image-rendering:pixelated}");
+                                   "#ccc;padding:4px}img.thumb{width:128px;image-rendering:pixelated}"
+                                   "div.plots{display:grid;grid-template-columns:repeat(auto-fill,minmax(400px,1fr));gap:1em}"
+                                   "div.plots img{width:100%}figure{margin:0}figcaption{font-size:.9em;color:#444}");
   html << "<h1>Sweep of " << escape_markup(algorithm) << "</h1>\n<p>" << rows.size()
        << " runs; the table as <a href=\"sweep.csv\">CSV</a> and <a href=\"sweep.json\">JSON</a>; every run in full "
           "in <a href=\"index.html\">the report</a>.</p>\n<table><tr>";
@@ -226,16 +255,18 @@ void write_page(const Sweep& sweep, const std::vector<Row>& rows, const std::vec
     if (!picture.empty()) html << "<img class=\"thumb\" src=\"" << escape_markup(picture) << "\" alt=\"\">";
     html << "</td></tr>\n";
   }
-  html << "</table>\n";
+  html << "</table>\n<h2>What moved</h2>\n<p>Each metric against " << escape_markup(sweep.varied.front())
+       << ": the result's terrain descriptors first, then the checks, then the timings; in each, what moved most "
+          "first.</p>\n<div class=\"plots\">\n";
   for (const Artifact& plot : plots) {
     if (plot.path.empty()) {
       html << "<p>" << escape_markup(plot.caption) << "</p>\n";
     } else {
       html << "<figure><img src=\"" << escape_markup(plot.path) << "\" alt=\"" << escape_markup(plot.caption)
-           << "\"><figcaption>" << escape_markup(plot.caption) << "</figcaption></figure>\n";
+           << "\" loading=\"lazy\"><figcaption>" << escape_markup(plot.caption) << "</figcaption></figure>\n";
     }
   }
-  html << "</body></html>\n";
+  html << "</div>\n</body></html>\n";
 }
 
 }  // namespace
@@ -270,6 +301,53 @@ std::optional<double> run_metric(const CaseResult& result, const std::string& na
     if (check.name == name && check.status != Outcome::skip && std::isfinite(check.value)) return check.value;
   }
   return std::nullopt;
+}
+
+MetricLabel metric_label(const std::string& name) {
+  if (name == "seconds") return {"the case's wall time", "s"};
+  if (name == "cpu_ms") return {"CPU reference time, median", "ms"};
+  if (name == "gpu_ms") return {"GPU time, median", "ms"};
+  if (name.rfind("descriptor.", 0) != 0) return {name, ""};
+  // descriptor.<group>.<name>: a unit suffix on either names the unit (slope_deg, laplacian_per_m,
+  // stream_threshold_m2, drainage_density_per_m); the hypsometry's min, mean and max are heights.
+  std::string rest = name.substr(std::string("descriptor.").size());
+  std::string unit;
+  const auto strip_unit = [&](std::string word) {
+    for (const auto& [suffix, symbol] : {std::pair{"_per_m", "1/m"}, {"_deg", "°"}, {"_m2", "m²"}, {"_m", "m"}}) {
+      const std::string tail = suffix;
+      if (word.size() > tail.size() && word.compare(word.size() - tail.size(), tail.size(), tail) == 0) {
+        unit = symbol;
+        return word.substr(0, word.size() - tail.size());
+      }
+    }
+    return word;
+  };
+  const auto dot = rest.find('.');
+  const std::string group = strip_unit(rest.substr(0, dot));
+  const std::string leaf = dot == std::string::npos ? "" : strip_unit(rest.substr(dot + 1));
+  if (group == "hypsometry" && (leaf == "min" || leaf == "mean" || leaf == "max")) unit = "m";
+  if (leaf == "count" || leaf.ends_with("cells")) unit = "";  // how many cells were measured
+  std::string label = leaf.empty() || leaf == group ? group : group + ", " + leaf;
+  std::replace(label.begin(), label.end(), '_', ' ');
+  return {label, unit};
+}
+
+std::vector<std::string> metrics_by_movement(const std::vector<const CaseResult*>& results,
+                                             const std::vector<std::string>& metrics) {
+  const auto group_of = [](const std::string& name) {
+    if (name.rfind("descriptor.", 0) == 0) return 0;
+    if (name == "seconds" || name == "cpu_ms" || name == "gpu_ms") return 2;
+    return 1;
+  };
+  std::vector<std::pair<std::string, double>> ranked;
+  for (const auto& name : metrics) ranked.emplace_back(name, relative_spread(results, name));
+  std::stable_sort(ranked.begin(), ranked.end(), [&](const auto& a, const auto& b) {
+    if (group_of(a.first) != group_of(b.first)) return group_of(a.first) < group_of(b.first);
+    return a.second > b.second;
+  });
+  std::vector<std::string> order;
+  for (auto& [name, spread] : ranked) order.push_back(std::move(name));
+  return order;
 }
 
 std::string result_picture(const CaseResult& result) {

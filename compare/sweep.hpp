@@ -10,9 +10,10 @@
 // write_sweep_summary, after the runs, writes into the report folder:
 //   sweep.csv, sweep.json  one row per run: the varied values, the outcome, the case's wall time,
 //                          the CPU and GPU medians, and the value of every check the runs report
-//   sweep_<n>.png          a metric against the first varied parameter (one line per combination
-//                          of the others; categorical values at their index), for every timing and
-//                          every check whose value differs between the runs
+//   sweep_<n>.png          a metric against the first varied parameter and its unit (one line per
+//                          combination of the others; categorical values at their index), for
+//                          every descriptor, check and timing whose value differs between the runs,
+//                          in metrics_by_movement's order, titled by metric_label
 //   sweep.html             the table with a thumbnail of each run's result and the plots
 // and lists the plots as report-level plots, so index.html shows them too.
 #pragma once
@@ -59,6 +60,20 @@ std::vector<std::string> run_metric_names(const std::vector<const CaseResult*>& 
 
 // A metric of one run, or nullopt where the run has none (or a non-finite value).
 std::optional<double> run_metric(const CaseResult& result, const std::string& name);
+
+// A metric as a reader names it, and its unit ("" where it has none): the timings and the
+// descriptors in words ("slope, mean", "°"); a check by its stable dotted name.
+struct MetricLabel {
+  std::string label;
+  std::string unit;
+};
+MetricLabel metric_label(const std::string& name);
+
+// The metrics in the order a reader wants them: the result's descriptors, then the checks, then the
+// timings (noise of one run); in each group, what moved most across the runs first (the spread
+// max - min as a share of the largest magnitude).
+std::vector<std::string> metrics_by_movement(const std::vector<const CaseResult*>& results,
+                                             const std::vector<std::string>& metrics);
 
 // The picture of a run's result: ref<double>'s terrain after it (after_cpu.png) or its field
 // (cpu.png), else its first picture; empty when it has none.

@@ -77,6 +77,16 @@ TEST(Sweep, TalusAngleOverSixValuesOnARealDem) {
   }
   EXPECT_EQ(thumbnails, 6u);
   EXPECT_THAT(page, HasSubstr("after_cpu.png"));
+  // The plots: the parameter with its declared unit on the axis, a descriptor in words, the
+  // descriptors before the checks and the timings last (what the parameter does before the noise).
+  EXPECT_THAT(page, HasSubstr("against talus_angle (degree)"));
+  EXPECT_THAT(page, HasSubstr("slope, mean (°)"));
+  const auto first_descriptor = page.find("(descriptor.");
+  const auto first_check = page.find("(parity.");
+  const auto first_timing = page.find("against talus_angle (degree) (cpu_ms");
+  ASSERT_NE(first_descriptor, std::string::npos);
+  if (first_check != std::string::npos) EXPECT_LT(first_descriptor, first_check);
+  if (first_timing != std::string::npos) EXPECT_LT(std::max(first_descriptor, first_check == std::string::npos ? std::size_t{0} : first_check), first_timing);
 }
 
 // Two varied parameters make every combination, named after their values; -j runs them in workers
@@ -226,6 +236,18 @@ TEST(Ab, PipeThesisAgainstCodeTiltDifferences) {
   EXPECT_THAT(page, HasSubstr("ab.erosion.pipe.volcano.a/after_cpu.png"));
   EXPECT_THAT(page, HasSubstr("ab.erosion.pipe.volcano.b/after_cpu.png"));
   EXPECT_THAT(page, HasSubstr("ab_difference.png"));
+  // The difference map carries its colour bar in metres; the descriptors and checks come before the
+  // timings, which stand apart (one run each: noise).
+  EXPECT_THAT(page, HasSubstr("class=\"colourbar\""));
+  EXPECT_THAT(page, HasSubstr("\xE2\x80\xAFm</span>"));  // the ends labelled in metres
+  const auto descriptors = page.find("<h3>Terrain descriptors of the results</h3>");
+  const auto checks = page.find("<h3>Checks</h3>");
+  const auto timings = page.find("<h3>Timings</h3>");
+  ASSERT_NE(descriptors, std::string::npos);
+  ASSERT_NE(checks, std::string::npos);
+  ASSERT_NE(timings, std::string::npos);
+  EXPECT_LT(descriptors, checks);
+  EXPECT_LT(checks, timings);
 }
 
 TEST(Ab, BadVariantsAreRefused) {

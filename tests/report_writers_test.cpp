@@ -504,12 +504,23 @@ TEST_F(ReportFiles, MarkdownHasSummaryDetailsAndBenchmarks) {
   EXPECT_NE(markdown.find("RUN FAILED"), std::string::npos);
   EXPECT_NE(markdown.find("### erosion.thermal.diagonal.volcano — fail"), std::string::npos);
   EXPECT_EQ(markdown.find("### erosion.thermal.cardinal.volcano"), std::string::npos);  // all checks pass
-  // B/cell, × floor (median over floor), × peer (and which), note
-  EXPECT_NE(markdown.find("| erosion.thermal | gpu | llvmpipe | 256×256 | 50 | 5 | 12 | 273 |  | 52 | 2× |  | 2 compute passes per iteration |"), std::string::npos)
+  // Each backend's device once above the table; the GPU's speed-up over the CPU reference of the
+  // same size (120 ms / 12 ms); B/cell, × floor (median over floor), × peer (and which), note
+  EXPECT_NE(markdown.find("Devices: cpu: Intel Xeon; gpu: llvmpipe\n"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| erosion.thermal | gpu | 256×256 | 50 | 5 | 12 | 10× | 273 |  | 52 | 2× |  | 2 compute passes per iteration |"), std::string::npos)
       << markdown;
-  EXPECT_NE(markdown.find("| cave.marching_tetrahedra | cpu | Intel Xeon | 64³ | 1 | 3 | 50 | 5.24 | 12.5 |  |  | 4× VTK vtkFlyingEdges3D |  |"), std::string::npos)
+  EXPECT_NE(markdown.find("| cave.marching_tetrahedra | cpu | 64³ | 1 | 3 | 50 |  | 5.24 | 12.5 |  |  | 4× VTK vtkFlyingEdges3D |  |"), std::string::npos)
       << markdown;
-  EXPECT_NE(markdown.find("| 256³ | 1 | 0 | — | — | — |  |  |  | not run: triangles need 444 MB"), std::string::npos);
+  EXPECT_NE(markdown.find("| 256³ | 1 | 0 | — |  | — | — |  |  |  | not run: triangles need 444 MB"), std::string::npos);
+  // A merged report whose GPU rows come from two machines names the device in every row.
+  Report merged = sample_report();
+  for (BenchmarkRow& row : merged.benchmarks) {
+    if (row.backend == "gpu" && row.algorithm == "cave.marching_tetrahedra") row.device = "NVIDIA H100";
+  }
+  write_report_markdown(merged, folder / "merged.md");
+  const std::string merged_markdown = read_text(folder / "merged.md");
+  EXPECT_EQ(merged_markdown.find("Devices:"), std::string::npos);
+  EXPECT_NE(merged_markdown.find("| erosion.thermal | gpu | llvmpipe | 256×256 |"), std::string::npos) << merged_markdown;
   EXPECT_NE(markdown.find("not run: triangles need 444 MB"), std::string::npos);
   EXPECT_NE(markdown.find("| 2 compute passes per iteration |"), std::string::npos);
   EXPECT_NE(markdown.find("| nan |"), std::string::npos);

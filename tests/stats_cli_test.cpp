@@ -122,7 +122,13 @@ TEST(CaseDescriptors, ErosionCasesReportDescriptorsAndTheFidelityTable) {
   EXPECT_GT(fidelity_checks, 0);
   EXPECT_TRUE(parity_seen);
   EXPECT_TRUE(fs::exists(work.path() / "out" / "mine.fidelity" / "descriptors.png"));
-  EXPECT_THAT(gt::testing::read_text(work.path() / "out" / "index.html"), HasSubstr("Fidelity: does it look like Earth?"));
+  const std::string index = gt::testing::read_text(work.path() / "out" / "index.html");
+  EXPECT_THAT(index, HasSubstr("Fidelity: does it look like Earth?"));
+  // A row per descriptor in words with the literature's range (Horton's R_B of 3 to 5), a column
+  // per case, inside a scrolling wrapper so that no column leaves a 1,280 px page.
+  EXPECT_THAT(index, HasSubstr("hypsometric integral HI"));
+  EXPECT_THAT(index, HasSubstr(">3–5</td>"));
+  EXPECT_THAT(index, HasSubstr("<div class=\"wide\"><table>\n<tr><th>descriptor</th>"));
 }
 
 TEST(CaseDescriptors, FidelityMustBeABoolean) {

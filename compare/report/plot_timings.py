@@ -81,8 +81,19 @@ def plot(rows, out_path):
                   title="Time per run (lower is better)")
     rate_axis.set(xscale="log", yscale="log", xlabel="side n (n × n cells; n³ voxels for 3-D rows)", ylabel="Mcell-iterations / s (M voxels / s)",
                   title="Throughput (higher is better)")
+    # The measured sides as the x ticks, in plain numbers, and decades only on the y axes: matplotlib's
+    # labelled minor ticks of a log axis spanning under a decade overlapped into an unreadable row.
+    from matplotlib.ticker import FixedLocator, LogLocator, NullFormatter
+    sides = sorted({point[0] for points in lines.values() for point in points})
+    if len(sides) > 10:
+        sides = sides[::(len(sides) + 9) // 10]
     for axis in (time_axis, rate_axis):
         axis.grid(True, which="both", alpha=0.3)
+        axis.xaxis.set_major_locator(FixedLocator(sides))
+        axis.set_xticklabels([str(side) for side in sides])
+        axis.xaxis.set_minor_formatter(NullFormatter())
+        axis.yaxis.set_major_locator(LogLocator(base=10, numticks=12))
+        axis.yaxis.set_minor_formatter(NullFormatter())
     # One legend for both plots, below them, so that it covers no line.
     fig.legend(loc="lower center", ncol=legend_columns, fontsize="small")
     fig.subplots_adjust(left=0.07, right=0.98, wspace=0.25, top=1.0 - 0.9 / height,

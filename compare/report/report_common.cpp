@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <system_error>
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compare/report/writers.hpp"
 
@@ -286,6 +289,31 @@ std::string benchmark_peer_text(const BenchmarkRow& row) {
   return row.times_peer ? fmt::format("{} {}", times_text(row.times_peer), row.fastest_peer) : "";
 }
 
+std::string benchmark_speedup_text(const std::vector<BenchmarkRow>& rows, const BenchmarkRow& row) {
+  if (row.backend != "gpu" || !row.peer.empty() || !row.note.empty() || !(row.median_ms > 0.0)) return "";
+  for (const BenchmarkRow& reference : rows) {
+    if (reference.backend == "cpu" && reference.peer.empty() && reference.note.empty() &&
+        reference.algorithm == row.algorithm && reference.size == row.size && reference.dimensions == row.dimensions &&
+        reference.iterations == row.iterations && reference.median_ms > 0.0) {
+      return times_text(reference.median_ms / row.median_ms);
+    }
+  }
+  return "";
+}
+
+std::string benchmark_devices_once(const std::vector<BenchmarkRow>& rows) {
+  std::map<std::string, std::set<std::string>> devices;  // by backend
+  for (const BenchmarkRow& row : rows) {
+    devices[row.backend].insert(row.device.empty() ? "unknown device" : row.device);
+  }
+  std::vector<std::string> parts;
+  for (const auto& [backend, names] : devices) {
+    if (names.size() != 1) return "";
+    parts.push_back(fmt::format("{}: {}", backend, *names.begin()));
+  }
+  return fmt::format("{}", fmt::join(parts, "; "));
+}
+
 std::string scaling_explanation() {
   return fmt::format("Exponent p of time ∝ (cells · iterations)^p, least squares over each line's sizes (at least {}); "
                      "above {} work that is linear in the cells scales worse than linearly. × floor: the median over "
@@ -307,6 +335,37 @@ std::string scaling_exponent_text(const ScalingFit& fit) {
   return fit.linear() ? fmt::format("{:.2f} linear", fit.exponent)
                       : fmt::format("{:.2f} superlinear (> {})", fit.exponent, linear_exponent_limit);
 }
+
+// Evenly spaced colours as a CSS gradient from left to right (grey when there are none).
+std::string css_gradient(const std::vector<std::array<float, 3>>& colours) {
+  if (colours.empty()) return "#999";
+  std::vector<std::string> stops;
+  const auto channel = [](float c) { return static_cast<int>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); };
+  for (std::size_t i = 0; i < colours.size(); ++i) {
+    const double at = colours.size() == 1 ? 0.0 : 100.0 * double(i) / double(colours.size() - 1);
+    stops.push_back(fmt::format("rgb({},{},{}) {:.4g}%", channel(colours[i][0]), channel(colours[i][1]),
+                                channel(colours[i][2]), at));
+  }
+  return fmt::format("linear-gradient(to right, {})", fmt::join(stops, ", "));
+}
+
+// A map's colour bar: the palette from its low end to its high end, the ends (and 0 of a
+// diverging map) labelled in the map's unit.
+std::string colour_bar(const std::optional<ColourScale>& scale) {
+  if (!scale) return "";
+  const std::string unit = scale->unit.empty() || scale->unit == "1" ? "" : " " + scale->unit;
+  const auto label = [&](double value) { return escape_markup(fmt::format("{:.3g}{}", value == 0.0 ? 0.0 : value, unit)); };
+  if (scale->low == scale->high) {
+    return fmt::format("<div class=\"colourbar\"><span class=\"ticks\"><span>every value {}</span></span></div>",
+                       label(scale->low));
+  }
+  const bool centred = scale->low < 0.0 && scale->high == -scale->low;
+  const std::string middle = centred ? fmt::format("<span>0{}</span>", escape_markup(unit)) : std::string();
+  return fmt::format("<div class=\"colourbar\" title=\"{}\"><span class=\"ramp\" style=\"background: {}\"></span>"
+                     "<span class=\"ticks\"><span>{}</span>{}<span>{}</span></span></div>",
+                     escape_markup(scale->palette), css_gradient(scale->colours), label(scale->low), middle, label(scale->high));
+}
+
 
 }  // namespace gt::report_detail
 

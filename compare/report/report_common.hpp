@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/benchmark_table.hpp"
+#include "compare/case_descriptors.hpp"
 #include "compare/result.hpp"
 
 namespace gt::report_detail {
@@ -74,6 +75,13 @@ std::string benchmark_bytes_text(const BenchmarkRow& row);
 // "3.1×" (median over the memory-bound floor, median over the fastest peer's), "" without one.
 std::string benchmark_floor_text(const BenchmarkRow& row);
 std::string benchmark_peer_text(const BenchmarkRow& row);
+// A GPU row's speed-up over the CPU reference (double) timed on the same algorithm, size and
+// iterations in the same table: "41×" (the reference's median over the GPU's), "" for other rows.
+std::string benchmark_speedup_text(const std::vector<BenchmarkRow>& rows, const BenchmarkRow& row);
+// The devices of a table, "gpu: llvmpipe (...); cpu: AMD EPYC ..." (each backend once), when every
+// backend ran on one device: the table then names them once above it instead of in every row.
+// Empty when a backend ran on several devices (a merged report): each row names its own then.
+std::string benchmark_devices_once(const std::vector<BenchmarkRow>& rows);
 // The scaling table's introduction (what the exponent and × floor mean), its line when no line
 // has enough sizes, and its backend cell ("cpu", or "peer: NAME").
 std::string scaling_explanation();
@@ -150,6 +158,8 @@ struct FidelityTable {
   };
   std::string real_name;
   std::vector<std::string> descriptors;        // ScalarDescriptor names
+  std::vector<std::string> labels;             // each one's label in words ("hypsometric integral HI")
+  std::vector<std::optional<FidelityTarget>> targets;  // each one's range from the literature, where it has one
   std::vector<std::optional<double>> real;     // the real DEM's value of each
   std::vector<Row> rows;
 };
@@ -168,5 +178,16 @@ bool unreserved(char c);
 
 // The id of a case's section in index.html: "case-" and its name, other characters as '_'.
 std::string case_anchor(const std::string& case_name);
+
+// A map's colour bar as HTML (class "colourbar", styled by colour_bar_style): the palette from its
+// low end to its high end as a CSS gradient, the ends (and 0 of a diverging map) labelled in the
+// map's unit; "" without a scale.
+std::string colour_bar(const std::optional<ColourScale>& scale);
+inline constexpr std::string_view colour_bar_style = R"(
+.colourbar { width: 280px; font-size: .78em; color: #333; margin-top: .15em; }
+.panel .colourbar { width: 100%; }
+.colourbar .ramp { display: block; height: 10px; border: 1px solid #999; }
+.colourbar .ticks { display: flex; justify-content: space-between; font-variant-numeric: tabular-nums; }
+)";
 
 }  // namespace gt::report_detail

@@ -65,15 +65,25 @@ std::optional<FidelityTable> fidelity_table(const Report& report) {
   // Scale-free descriptors only: slopes, curvatures and drainage density depend on the cell size,
   // and the generated terrain (1 m cells) and the real DEM (about 90 m) do not share one.
   std::vector<std::string> names{"hypsometric_integral"};
-  for (const auto& target : fidelity_targets()) names.push_back(target.descriptor);
   FidelityTable table;
+  table.targets.push_back(std::nullopt);
+  for (const auto& target : fidelity_targets()) {
+    names.push_back(target.descriptor);
+    table.targets.push_back(target);
+  }
   table.descriptors = names;
+  table.labels = names;
   for (const auto& result : report.cases) {
     const auto& descriptors = result.descriptors;
     if (descriptors.is_null() || !descriptors.value("fidelity", false) || !descriptors.contains("real")) continue;
     const auto& terrains = descriptors["terrains"];
     if (!terrains.contains("before") || !terrains.contains("cpu")) continue;
     const auto& real = descriptors["real"]["descriptors"];
+    for (std::size_t index = 0; index < names.size(); ++index) {
+      for (const auto& scalar : real.at("scalars")) {
+        if (scalar.at("name") == names[index]) table.labels[index] = scalar.at("label");
+      }
+    }
     table.real_name = descriptors["real"]["name"];
     table.real.clear();
     FidelityTable::Row row{result.name, result.algorithm, {}};

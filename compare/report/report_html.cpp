@@ -53,6 +53,9 @@ details.more { margin: .6em 0; } details.more > summary { cursor: pointer; color
 .summary .badge { font-size: 1.05em; margin-right: .4em; }
 section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
 .note { color: #555; font-style: italic; }
+.wide { overflow-x: auto; max-width: 100%; }
+.fidelity td.toward, .fidelity span.toward { background: #e3f1e4; } .fidelity td.away, .fidelity span.away { background: #f8d7d7; }
+.devices { font-weight: 600; }
 .performance tr.peer td { background: #f3f6fb; } .performance tr.superlinear td { background: #fbeaea; }
 pre.error { background: #fbeaea; padding: .6em; white-space: pre-wrap; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
@@ -61,10 +64,6 @@ figure img { width: 280px; height: auto; image-rendering: pixelated; border: 1px
 figure.image { width: 280px; }
 figure.plot img { width: 100%; max-width: 1100px; image-rendering: auto; }
 figcaption { text-align: center; font-size: .9em; color: #444; }
-.colourbar { width: 280px; font-size: .78em; color: #333; margin-top: .15em; }
-.panel .colourbar { width: 100%; }
-.colourbar .ramp { display: block; height: 10px; border: 1px solid #999; }
-.colourbar .ticks { display: flex; justify-content: space-between; font-variant-numeric: tabular-nums; }
 dl.params { display: grid; grid-template-columns: repeat(auto-fill, minmax(250px, 1fr)); gap: 0 1.2em; margin: .6em 0 1em;
             font-size: .9em; }
 dl.params div { display: flex; justify-content: space-between; gap: .8em; border-bottom: 1px solid #eee; padding: .1em 0; }
@@ -269,36 +268,6 @@ void append_params(std::string& out, const nlohmann::json& params) {
   out += "</dl>\n";
 }
 
-// Evenly spaced colours as a CSS gradient from left to right (grey when there are none).
-std::string css_gradient(const std::vector<std::array<float, 3>>& colours) {
-  if (colours.empty()) return "#999";
-  std::vector<std::string> stops;
-  const auto channel = [](float c) { return static_cast<int>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); };
-  for (std::size_t i = 0; i < colours.size(); ++i) {
-    const double at = colours.size() == 1 ? 0.0 : 100.0 * double(i) / double(colours.size() - 1);
-    stops.push_back(fmt::format("rgb({},{},{}) {:.4g}%", channel(colours[i][0]), channel(colours[i][1]),
-                                channel(colours[i][2]), at));
-  }
-  return fmt::format("linear-gradient(to right, {})", fmt::join(stops, ", "));
-}
-
-// A map's colour bar: the palette from its low end to its high end, the ends (and 0 of a
-// diverging map) labelled in the map's unit.
-std::string colour_bar(const std::optional<ColourScale>& scale) {
-  if (!scale) return "";
-  const std::string unit = scale->unit.empty() || scale->unit == "1" ? "" : " " + scale->unit;
-  const auto label = [&](double value) { return h(fmt::format("{:.3g}{}", value == 0.0 ? 0.0 : value, unit)); };
-  if (scale->low == scale->high) {
-    return fmt::format("<div class=\"colourbar\"><span class=\"ticks\"><span>every value {}</span></span></div>",
-                       label(scale->low));
-  }
-  const bool centred = scale->low < 0.0 && scale->high == -scale->low;
-  const std::string middle = centred ? fmt::format("<span>0{}</span>", h(unit)) : std::string();
-  return fmt::format("<div class=\"colourbar\" title=\"{}\"><span class=\"ramp\" style=\"background: {}\"></span>"
-                     "<span class=\"ticks\"><span>{}</span>{}<span>{}</span></span></div>",
-                     h(scale->palette), css_gradient(scale->colours), label(scale->low), middle, label(scale->high));
-}
-
 void append_figure(std::string& out, const Artifact& artifact, std::string_view figure_class) {
   out += fmt::format("<figure class=\"{}\"><a href=\"{}\"><img loading=\"lazy\" src=\"{}\" alt=\"{}\"></a>{}"
                      "<figcaption>{}</figcaption></figure>\n",
@@ -445,30 +414,51 @@ void append_descriptors(std::string& out, const CaseResult& result) {
   out += "</table>\n";
 }
 
-// How far each erosion algorithm moved a generated terrain's descriptors toward a real DEM's.
+// How far the descriptor moved toward the real DEM's, as a cell class: toward (green) from +5 %,
+// away (red) from -5 %, neutral between (a descriptor measured on a few hundred cells moves a few
+// percent by chance).
+const char* fidelity_class(const std::optional<double>& moved) {
+  if (!moved) return "";
+  if (*moved >= 0.05) return " class=\"num toward\"";
+  if (*moved <= -0.05) return " class=\"num away\"";
+  return " class=\"num\"";
+}
+
+std::string fidelity_cell(const std::optional<FidelityTable::Cell>& cell) {
+  if (!cell) return "<td>—</td>";
+  return fmt::format("<td{}>{} → {}<br><b>{}</b></td>", fidelity_class(cell->moved), format_value(cell->before),
+                     format_value(cell->after), cell->moved ? fmt::format("{:+.0f} %", 100.0 * *cell->moved) : "—");
+}
+
+// How far each erosion algorithm moved a generated terrain's descriptors toward a real DEM's: a
+// row per descriptor (its words, the literature's range, the real DEM's value), a column per case.
 void append_fidelity(std::string& out, const Report& report) {
   const auto table = fidelity_table(report);
   if (!table) return;
   out += "<section class=\"fidelity\">\n<h2>Fidelity: does it look like Earth?</h2>\n"
          "<p>Each cell: the descriptor before → after (CPU reference, double), and how far it moved toward "
-         + h(table->real_name) + "'s value (100 %: reached it, 0 %: no closer, negative: further away).</p>\n"
-         "<table>\n<tr><th>case</th><th>algorithm</th>";
-  for (const auto& name : table->descriptors) out += fmt::format("<th>{}</th>", h(name));
-  out += fmt::format("</tr>\n<tr><td>{}</td><td></td>", h(table->real_name));
-  for (const auto& value : table->real) out += fmt::format("<td class=\"num\">{}</td>", optional_value(value));
-  out += "</tr>\n";
+         + h(table->real_name) + "'s value: <span class=\"toward\">green</span> toward it (100 %: reached it), "
+         "<span class=\"away\">red</span> away from it, uncoloured within ±5 %. The range is the literature's for "
+         "natural terrain (hover it for the source).</p>\n<div class=\"wide\"><table>\n<tr><th>descriptor</th>"
+         "<th>range</th><th>" + h(table->real_name) + "</th>";
   for (const auto& row : table->rows) {
-    out += fmt::format("<tr><td><a href=\"#{}\">{}</a></td><td>{}</td>", case_anchor(row.case_name), h(row.case_name),
-                       h(row.algorithm));
-    for (const auto& cell : row.cells) {
-      out += cell ? fmt::format("<td class=\"num\">{} → {} ({})</td>", format_value(cell->before),
-                                format_value(cell->after),
-                                cell->moved ? fmt::format("{:.0f} %", 100.0 * *cell->moved) : "—")
-                  : std::string("<td>—</td>");
-    }
+    std::string variant = row.case_name;
+    if (variant.starts_with(row.algorithm + ".")) variant.erase(0, row.algorithm.size() + 1);
+    out += fmt::format("<th><a href=\"#{}\">{}</a><br><small>{}</small></th>", case_anchor(row.case_name),
+                       h(row.algorithm), h(variant));
+  }
+  out += "</tr>\n";
+  for (std::size_t index = 0; index < table->descriptors.size(); ++index) {
+    const auto& target = table->targets[index];
+    const std::string range =
+        target ? fmt::format("<td class=\"num\" title=\"{}\">{:g}–{:g}</td>", h(target->source), target->low, target->high)
+               : std::string("<td>—</td>");
+    out += fmt::format("<tr><td title=\"{}\">{}</td>{}<td class=\"num\">{}</td>", h(table->descriptors[index]),
+                       h(table->labels[index]), range, optional_value(table->real[index]));
+    for (const auto& row : table->rows) out += fidelity_cell(row.cells[index]);
     out += "</tr>\n";
   }
-  out += "</table>\n</section>\n";
+  out += "</table></div>\n</section>\n";
 }
 
 // What changed against --baseline, at the top: the diff-reports summary.
@@ -536,20 +526,28 @@ void append_performance(std::string& out, const Report& report) {
   if (report.benchmarks.empty()) {
     out += "<p class=\"note\">No benchmarks in this run.</p>\n";
   } else {
-    out += "<table>\n<tr><th>device</th><th>algorithm</th><th>backend</th><th>size</th><th>iterations</th>"
-           "<th>reps</th><th>median ms</th><th>Mcell-it/s (noise: M samples/s; cave: M voxels/s)</th>"
+    const std::string devices = benchmark_devices_once(report.benchmarks);
+    if (!devices.empty()) out += fmt::format("<p class=\"devices\">Devices: {}</p>\n", h(devices));
+    const std::string device_heading = devices.empty() ? "<th>device</th>" : "";
+    out += "<div class=\"wide\"><table>\n<tr>" + device_heading +
+           "<th>algorithm</th><th>backend</th><th>size</th><th>iterations</th>"
+           "<th>reps</th><th>median ms</th><th title=\"GPU over the CPU reference (double) on the same size\">GPU "
+           "speed-up</th><th>Mcell-it/s (noise: M samples/s; cave: M voxels/s)</th>"
            "<th>M triangles/s</th><th>B/cell</th><th>× floor</th><th>× peer</th><th>note</th></tr>\n";
     for (const BenchmarkRow& row : report.benchmarks) {
+      const std::string device = devices.empty() ? fmt::format("<td>{}</td>", h(row.device)) : "";
       out += fmt::format(
-          "<tr{}><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
+          "<tr{}>{}<td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
           "<td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
-          "<td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td></tr>\n",
-          row.peer.empty() ? "" : " class=\"peer\"", h(row.device), h(row.algorithm), h(benchmark_backend_text(row)),
+          "<td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>"
+          "<td>{}</td><td>{}</td></tr>\n",
+          row.peer.empty() ? "" : " class=\"peer\"", device, h(row.algorithm), h(benchmark_backend_text(row)),
           h(benchmark_size_text(row)), row.iterations, row.reps, h(benchmark_time_text(row)),
-          h(benchmark_rate_text(row)), h(benchmark_triangle_rate_text(row)), h(benchmark_bytes_text(row)),
-          h(benchmark_floor_text(row)), h(benchmark_peer_text(row)), h(benchmark_note_text(row)));
+          h(benchmark_speedup_text(report.benchmarks, row)), h(benchmark_rate_text(row)),
+          h(benchmark_triangle_rate_text(row)), h(benchmark_bytes_text(row)), h(benchmark_floor_text(row)),
+          h(benchmark_peer_text(row)), h(benchmark_note_text(row)));
     }
-    out += "</table>\n";
+    out += "</table></div>\n";
     append_scaling(out, report);
   }
   for (const Artifact& plot : report.plots) {
@@ -646,17 +644,22 @@ void append_mutation(std::string& out, const Report& report) {
 }  // namespace
 
 void write_report_html(const Report& report, const std::filesystem::path& file) {
-  std::string out = page_head("groundtruth report", style);
+  std::string out = page_head("groundtruth report", std::string(style) + std::string(colour_bar_style));
   append_header(out, report);
-  append_summary(out, report);
-  append_failures(out, report);
+  // `groundtruth mutants` alone: its page is the mutation score, without the scaffolding of a case
+  // run ("0 cases", an empty Cases table, "No benchmarks"); each mutant's run has its own report.
+  const bool mutants_only = report.cases.empty() && report.mutation.has_value();
+  if (!mutants_only) {
+    append_summary(out, report);
+    append_failures(out, report);
+  }
   append_baseline(out, report);
   append_expectation_problems(out, report);
-  append_case_table(out, report);
+  if (!mutants_only) append_case_table(out, report);
   append_mutation(out, report);
   append_fidelity(out, report);
   for (const CaseResult& result : report.cases) append_case_section(out, result);
-  append_performance(out, report);
+  if (!mutants_only) append_performance(out, report);
   out += "</body>\n</html>\n";
   write_file_atomically(file, out);
 }

@@ -123,15 +123,19 @@ void append_benchmarks(std::string& out, const Report& report) {
   if (report.benchmarks.empty()) {
     out += "No benchmarks in this run.\n\n";
   } else {
-    out += "| algorithm | backend | device | size | iterations | reps | median ms | Mcell-it/s (noise: M samples/s; cave: "
-           "M voxels/s) | M triangles/s | B/cell | × floor | × peer | note |\n"
-           "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
+    const std::string devices = benchmark_devices_once(report.benchmarks);
+    if (!devices.empty()) out += fmt::format("Devices: {}\n\n", cell(devices));
+    out += fmt::format("| algorithm | backend | {}size | iterations | reps | median ms | GPU speed-up | Mcell-it/s (noise: "
+                       "M samples/s; cave: M voxels/s) | M triangles/s | B/cell | × floor | × peer | note |\n"
+                       "|---|---|{}---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n",
+                       devices.empty() ? "device | " : "", devices.empty() ? "---|" : "");
     for (const BenchmarkRow& row : report.benchmarks) {
-      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", cell(row.algorithm),
-                         cell(benchmark_backend_text(row)), cell(row.device), benchmark_size_text(row), row.iterations,
-                         row.reps, benchmark_time_text(row), benchmark_rate_text(row), benchmark_triangle_rate_text(row),
-                         benchmark_bytes_text(row), benchmark_floor_text(row), cell(benchmark_peer_text(row)),
-                         cell(benchmark_note_text(row)));
+      out += fmt::format("| {} | {} | {}{} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", cell(row.algorithm),
+                         cell(benchmark_backend_text(row)), devices.empty() ? cell(row.device) + " | " : "",
+                         benchmark_size_text(row), row.iterations, row.reps, benchmark_time_text(row),
+                         benchmark_speedup_text(report.benchmarks, row), benchmark_rate_text(row),
+                         benchmark_triangle_rate_text(row), benchmark_bytes_text(row), benchmark_floor_text(row),
+                         cell(benchmark_peer_text(row)), cell(benchmark_note_text(row)));
     }
     out += '\n';
     append_scaling(out, report);
@@ -179,6 +183,12 @@ void append_mutation(std::string& out, const Report& report) {
 void write_report_markdown(const Report& report, const std::filesystem::path& file) {
   std::string out = "# groundtruth report\n\n";
   append_environment(out, report.environment);
+  // `groundtruth mutants` alone: the mutation score without the scaffolding of a case run.
+  if (report.cases.empty() && report.mutation) {
+    append_mutation(out, report);
+    write_file_atomically(file, out);
+    return;
+  }
   append_summary(out, report);
   append_case_table(out, report);
   out += "## Details\n\n";
