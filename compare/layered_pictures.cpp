@@ -11,6 +11,7 @@
 #include "compare/field_files.hpp"
 #include "compare/layered_look.hpp"
 #include "compare/report/images.hpp"
+#include "compare/report/plots.hpp"
 #include "reference/erosion/layered/material_masks.hpp"
 
 namespace gt {
@@ -52,6 +53,40 @@ void write_cross_section(const LayeredGround<double>& ground, const std::filesys
     }
   }
   write_colour_image(width, elevation_rows + rule_rows + layer_rows, pixels, png);
+}
+
+// The same row with axes in metres (the picture above has no room for text): the surface's
+// elevation along the row, and beside it the base of each layer below the surface, true depth,
+// with a legend: the depth scale and the legend the colour picture cannot carry.
+void plot_cross_section(const LayeredGround<double>& ground, const RunOptions& options, CaseResult& result) {
+  const int row = ground.height / 2;
+  SeriesPlot surface{fmt::format("surface along row {}", row), "distance along the row (m)", "elevation (m)"};
+  SeriesPlot layers{"the layers' bases under the surface", "distance along the row (m)",
+                    "depth below the surface (m, negative down)"};
+  Series elevation{"surface"};
+  std::vector<Series> bases{{"base of the topsoil"}, {"base of the subsoil"}};
+  for (int layer = 0; layer + 1 < ground.bedrock_layer_count; ++layer) {
+    bases.push_back({fmt::format("base of bedrock layer {}", layer + 1)});
+  }
+  for (int x = 0; x < ground.width; ++x) {
+    const std::size_t c = ground.cell(x, row);
+    const double distance = (x + 0.5) * ground.cell_size_x;
+    elevation.x.push_back(distance);
+    elevation.y.push_back(ground.surface[c]);
+    double depth = 0.0;
+    for (std::size_t base = 0; base < bases.size(); ++base) {
+      depth += base < 2 ? ground.soil_thickness(int(base), c) : ground.bedrock_at(int(base) - 2, c);
+      bases[base].x.push_back(distance);
+      bases[base].y.push_back(-depth);
+    }
+  }
+  surface.series.push_back(std::move(elevation));
+  layers.series = std::move(bases);
+  attach_plot({surface, layers}, options, "cross_section_axes.png",
+              fmt::format("cross-section along row {} in metres: the surface's elevation, and the base of each layer "
+                          "below the surface (the last bedrock layer's base is not stored)",
+                          row),
+              result);
 }
 
 // The material masks (§3.17, reference/erosion/layered/material_masks.hpp) as fields `mask_<material>`
@@ -127,8 +162,10 @@ void write_layered_pictures(const LayeredGround<double>& ground, const LayeredPa
   add_picture(result, "cross_section.png",
               fmt::format("cross-section along row {} after the run: above, the surface (elevation stretched to the panel); "
                    "below, the layers from the surface down to {:.3g} m, true to scale in depth (topsoil, the subsoil "
-                   "darker, soft rock red, hard rock grey; colours as the surface material)",
+                   "darker, soft rock red, hard rock grey; colours as the surface material); the same row with "
+                   "axes in metres: cross_section_axes.png",
                    ground.height / 2, depth_shown));
+  plot_cross_section(ground, options, result);
 }
 
 }  // namespace gt

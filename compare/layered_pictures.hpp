@@ -2,6 +2,8 @@
 //   surface_material.png  the top non-empty layer's colour, mixed by composition, greened by vegetation
 //   cross_section.png     the middle row: the surface's elevation above, the layers below, true to
 //                         scale in depth
+//   cross_section_axes.png the same row with axes in metres: the surface's elevation, and the base
+//                         of each layer below the surface (matplotlib; a note where unavailable)
 //   mask_<material>.png   each material mask with the thesis's transparency (§3.17,
 //                         reference/erosion/layered/material_masks.hpp), black to the material's
 //                         colour at its largest share, with its colour bar; and as a field (EXR/NPY)

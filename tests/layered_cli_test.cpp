@@ -41,8 +41,8 @@ TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
       EXPECT_THAT(names, Contains(std::string(expected))) << layered["name"];
     }
     const std::string name = layered["name"];
-    for (const char* file : {"surface_material.png", "cross_section.png", "mask_org.png", "ledger.png",
-                             "soil_topsoil_org_cpu.npy", "mask_org.npy"}) {
+    for (const char* file : {"surface_material.png", "cross_section.png", "cross_section_axes.png", "mask_org.png",
+                             "ledger.png", "soil_topsoil_org_cpu.npy", "mask_org.npy"}) {
       EXPECT_TRUE(fs::exists(out / name / file)) << name << ": " << file;
     }
     const bool wet = name.find("rain") != std::string::npos || name.find("river") != std::string::npos;
