@@ -213,6 +213,15 @@ Environment base_environment(const std::string& command_line) {
   return environment;
 }
 
+// What the run grades where the GPU twin stands (Environment::graded), empty for our own twins.
+std::string graded_in_the_gpu_twins_place(const DriverOptions& options) {
+  if (!options.candidate.empty()) return fmt::format("the candidate file {}", options.candidate.string());
+  if (options.implementation) return fmt::format("the implementation {}", options.implementation->text());
+  if (options.external_model) return "a Python model (groundtruth.check)";
+  if (!options.gpu_shaders.empty()) return fmt::format("the GPU shaders in {} over groundtruth's", options.gpu_shaders.string());
+  return "";
+}
+
 // A case that skipped a check because the GPU was unavailable, when the user required the GPU.
 bool skipped_for_want_of_gpu(const CaseResult& result, const RunOptions& options) {
   return std::any_of(result.checks.begin(), result.checks.end(), [&](const Check& check) {
@@ -290,6 +299,11 @@ void print_summary(const Report& report, const std::filesystem::path& out) {
     if (!result.error.empty()) fmt::print("             {}\n", result.error);
   }
   for (const auto& problem : report.expectation_problems) fmt::print("expectation  {}\n", problem);
+  if (report.cases.empty()) {  // `groundtruth bench`: the rows, not "0 cases: 0 pass, ..."
+    fmt::print("groundtruth: {}; report in {}\n", counted(report.benchmarks.size(), "benchmark row"),
+               (out / "index.html").string());
+    return;
+  }
   fmt::print("groundtruth: {}: {} pass, {} warn, {} inconclusive, {} skip, {} flaky, {} fail, {} error; report in {}\n",
              counted(report.cases.size(), "case"), counts[Outcome::pass], counts[Outcome::warn], counts[Outcome::inconclusive],
              counts[Outcome::skip], counts[Outcome::flaky], counts[Outcome::fail], counts[Outcome::error],
@@ -702,6 +716,7 @@ int run_driver(const DriverOptions& options) {
   check_output_folder(options.out);
 
   report.environment = base_environment(options.command_line);
+  report.environment.graded = graded_in_the_gpu_twins_place(options);
   // Only runs that time their cases need it: workers report to a parent, and untimed runs time nothing.
   if (!options.worker && (options.cpu_reps > 0 || options.gpu_reps > 0)) report.environment.calibration_ms = calibration_ms();
 

@@ -116,6 +116,10 @@ struct Environment {
   std::string build_type;
   std::string git;            // `git describe --always --dirty` of the source tree at run time
   std::string mutant;         // the deliberate bug this run was made with (compare/mutants/), or empty
+  // What stood where the GPU twin stands, when it was not groundtruth's own shaders: "the candidate
+  // file F", "the implementation LIB:SYMBOL", "a Python model (groundtruth.check)", "the GPU shaders
+  // in DIR over groundtruth's"; empty for groundtruth's GPU twins. The report's headline names it.
+  std::string graded;
   std::optional<double> calibration_ms;  // compare/calibration.hpp: timings are compared as ratios to it
   // Provenance (compare/provenance.hpp): what exactly ran, so that two reports can be told apart.
   std::string run_started;       // UTC, ISO 8601, e.g. "2026-12-02T04:13:46Z"

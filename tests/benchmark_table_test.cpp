@@ -219,6 +219,7 @@ TEST(BenchCli, TableHasTheProbePeersFloorAndScaling) {
   const auto run = testing::run_program(groundtruth, {"bench", "noise.perlin3", "--sizes", "16,24,32,48", "--iterations",
                                                       "1", "--reps", "1", "--quiet", "--out", out.path().string()});
   ASSERT_EQ(run.status, 0) << run;
+  EXPECT_THAT(run.out, HasSubstr(" benchmark rows; report in ")) << "rows counted, not \"0 cases\"";
   const json report = json::parse(testing::read_text(out / "report.json"));
   int probes = 0, peers = 0, ours = 0;
   for (const json& row : report.at("benchmarks")) {

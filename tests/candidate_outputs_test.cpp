@@ -199,6 +199,12 @@ TEST(CandidateOutputs, AnHonestImagePassesAndABrightPatchFails) {
     ASSERT_EQ(graded.status, 0) << case_name << graded.err << graded.report_case.dump(1);
     EXPECT_EQ(check_of(graded.report_case, "image.psnr.candidate_vs_cpu")["status"], "pass");
     EXPECT_TRUE(fs::exists(folder / ("honest_" + case_name) / case_name / "candidate_vs_cpu_mask.png"));
+    // The headline names what was graded (the candidate file, not the GL renderer), and so does
+    // report.json's environment.
+    EXPECT_THAT(gt::testing::read_text(folder / ("honest_" + case_name) / "index.html"),
+                HasSubstr("Graded in the GPU twin's place: the candidate file "));
+    EXPECT_THAT(gt::testing::read_text(folder / ("honest_" + case_name) / "report.json"),
+                HasSubstr("\"graded\": \"the candidate file "));
     if (probe) {
       EXPECT_EQ(check_of(graded.report_case, "spec.phong_quad.candidate")["status"], "pass");
     }

@@ -321,6 +321,34 @@ TEST_F(ReportFiles, JsonAndHtmlShowTheMutationScore) {
   const std::string html = read_text(folder / "index.html");
   EXPECT_NE(html.find("1 of 2 killed (50 %)"), std::string::npos);
   EXPECT_NE(html.find("mass.water_added.cpu = 0.049"), std::string::npos);
+  EXPECT_NE(html.find("<h2>Cases</h2>"), std::string::npos) << "a report with cases keeps its case table";
+  // `groundtruth mutants` alone: the page is the mutation score, without "0 cases", an empty Cases
+  // table or "No benchmarks".
+  Report mutants_only;
+  mutants_only.environment = report.environment;
+  mutants_only.mutation = mutation;
+  fs::create_directories(folder / "mutants");
+  write_report_files(mutants_only, folder / "mutants");
+  const std::string page = read_text(folder / "mutants" / "index.html");
+  EXPECT_NE(page.find("1 of 2 killed (50 %)"), std::string::npos);
+  for (const char* scaffolding : {"0 cases", "<h2>Cases</h2>", "No benchmarks", "<h2>Summary</h2>"}) {
+    EXPECT_EQ(page.find(scaffolding), std::string::npos) << scaffolding;
+  }
+  const std::string markdown = read_text(folder / "mutants" / "report.md");
+  EXPECT_EQ(markdown.find("No benchmarks"), std::string::npos);
+  EXPECT_EQ(markdown.find("0 cases"), std::string::npos);
+  // `groundtruth bench` alone: the performance table without the case run's scaffolding.
+  Report bench_only;
+  bench_only.environment = report.environment;
+  bench_only.benchmarks = report.benchmarks;
+  fs::create_directories(folder / "bench");
+  write_report_files(bench_only, folder / "bench");
+  const std::string bench_page = read_text(folder / "bench" / "index.html");
+  EXPECT_NE(bench_page.find("<h2>Performance</h2>"), std::string::npos);
+  for (const char* scaffolding : {"0 cases", "<h2>Cases</h2>", "<h2>Summary</h2>"}) {
+    EXPECT_EQ(bench_page.find(scaffolding), std::string::npos) << scaffolding;
+  }
+  EXPECT_NE(read_text(folder / "bench" / "report.md").find("## Benchmarks"), std::string::npos);
 }
 
 // The kill matrix lists every graded check of the baselines with the mutants of its kind it killed

@@ -41,8 +41,9 @@ int OutcomeCounts::total() const {
   return sum;
 }
 
-std::array<LabelledField, 13> environment_fields(const Environment& environment) {
-  return {{{"GL renderer", &environment.gl_renderer},
+std::array<LabelledField, 14> environment_fields(const Environment& environment) {
+  return {{{"graded in the GPU twin's place", &environment.graded},
+           {"GL renderer", &environment.gl_renderer},
            {"GL version", &environment.gl_version},
            {"GL platform", &environment.gl_platform},
            {"CPU", &environment.cpu},
@@ -266,7 +267,8 @@ std::string benchmark_note_text(const BenchmarkRow& row) {
 }
 
 std::string benchmark_backend_text(const BenchmarkRow& row) {
-  return row.peer.empty() ? row.backend : "peer: " + row.peer;
+  if (!row.peer.empty()) return "peer: " + row.peer;
+  return row.backend == "published" ? "published: " + row.device : row.backend;
 }
 
 namespace {
@@ -304,7 +306,8 @@ std::string benchmark_speedup_text(const std::vector<BenchmarkRow>& rows, const 
 std::string benchmark_devices_once(const std::vector<BenchmarkRow>& rows) {
   std::map<std::string, std::set<std::string>> devices;  // by backend
   for (const BenchmarkRow& row : rows) {
-    devices[row.backend].insert(row.device.empty() ? "unknown device" : row.device);
+    // A published figure names its own machine in its backend cell.
+    if (row.backend != "published") devices[row.backend].insert(row.device.empty() ? "unknown device" : row.device);
   }
   std::vector<std::string> parts;
   for (const auto& [backend, names] : devices) {

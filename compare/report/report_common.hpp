@@ -25,7 +25,7 @@ struct LabelledField {
   const char* label;
   const std::string* value;
 };
-std::array<LabelledField, 13> environment_fields(const Environment& environment);
+std::array<LabelledField, 14> environment_fields(const Environment& environment);
 
 // A retried case's earlier attempts, one line each: "attempt 1: fail: check = value (bound)", and
 // for a flaky case what it was ("known flake: REASON" or that it is a new flake).
@@ -68,7 +68,8 @@ std::string benchmark_time_text(const BenchmarkRow& row);
 std::string benchmark_rate_text(const BenchmarkRow& row);
 std::string benchmark_triangle_rate_text(const BenchmarkRow& row);
 std::string benchmark_note_text(const BenchmarkRow& row);
-// "gpu", "cpu", or "peer: VTK 9.1.0 vtkFlyingEdges3D (...)" for a peer's row.
+// "gpu", "cpu", "peer: VTK 9.1.0 vtkFlyingEdges3D (...)" for a peer's row, or "published: <the
+// machine>" for a figure from a paper.
 std::string benchmark_backend_text(const BenchmarkRow& row);
 // Bytes read plus written per cell and iteration ("24"), "" where not counted.
 std::string benchmark_bytes_text(const BenchmarkRow& row);
@@ -79,7 +80,7 @@ std::string benchmark_peer_text(const BenchmarkRow& row);
 // iterations in the same table: "41×" (the reference's median over the GPU's), "" for other rows.
 std::string benchmark_speedup_text(const std::vector<BenchmarkRow>& rows, const BenchmarkRow& row);
 // The devices of a table, "gpu: llvmpipe (...); cpu: AMD EPYC ..." (each backend once), when every
-// backend ran on one device: the table then names them once above it instead of in every row.
+// backend we measured ran on one device (published figures name theirs in their backend cell): the table then names them once above it instead of in every row.
 // Empty when a backend ran on several devices (a merged report): each row names its own then.
 std::string benchmark_devices_once(const std::vector<BenchmarkRow>& rows);
 // The scaling table's introduction (what the exponent and × floor mean), its line when no line

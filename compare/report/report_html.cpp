@@ -56,6 +56,7 @@ section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
 .wide { overflow-x: auto; max-width: 100%; }
 .fidelity td.toward, .fidelity span.toward { background: #e3f1e4; } .fidelity td.away, .fidelity span.away { background: #f8d7d7; }
 .devices { font-weight: 600; }
+.performance td:last-child { min-width: 26em; } /* the note: a few lines, not a column of words */
 .performance tr.peer td { background: #f3f6fb; } .performance tr.superlinear td { background: #fbeaea; }
 pre.error { background: #fbeaea; padding: .6em; white-space: pre-wrap; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
@@ -139,10 +140,19 @@ void append_digests(std::string& out, const std::string& title, const std::map<s
 
 void append_header(std::string& out, const Report& report) {
   const Environment& environment = report.environment;
-  out += fmt::format("<header>\n<h1>groundtruth report</h1>\n<div class=\"renderer\">GL renderer: {}</div>\n",
-                     h(environment.gl_renderer));
+  // The headline names what was graded: the GL renderer our GPU twins ran on, or the outside
+  // implementation that stood in their place (a candidate run never touches the GPU twin).
+  out += "<header>\n<h1>groundtruth report</h1>\n";
+  if (environment.graded.empty()) {
+    out += fmt::format("<div class=\"renderer\">GL renderer: {}</div>\n", h(environment.gl_renderer));
+  } else {
+    out += fmt::format("<div class=\"renderer\">Graded in the GPU twin's place: {}</div>\n<p>GL renderer of the "
+                       "references and comparisons: {}</p>\n",
+                       h(environment.graded), h(environment.gl_renderer));
+  }
   out += "<details class=\"more\"><summary>Environment, shaders and data files</summary>\n<table class=\"environment\">\n";
   for (const auto& [label, value] : environment_fields(environment)) {
+    if (value->empty()) continue;  // no mutant, nothing graded but our own twins
     out += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", label, h(*value));
   }
   out += "</table>\n";
@@ -646,20 +656,21 @@ void append_mutation(std::string& out, const Report& report) {
 void write_report_html(const Report& report, const std::filesystem::path& file) {
   std::string out = page_head("groundtruth report", std::string(style) + std::string(colour_bar_style));
   append_header(out, report);
-  // `groundtruth mutants` alone: its page is the mutation score, without the scaffolding of a case
-  // run ("0 cases", an empty Cases table, "No benchmarks"); each mutant's run has its own report.
-  const bool mutants_only = report.cases.empty() && report.mutation.has_value();
-  if (!mutants_only) {
+  // `groundtruth mutants` or `bench` alone: the page is the mutation score or the performance table,
+  // without the scaffolding of a case run ("0 cases", an empty Cases table, "No benchmarks"); each
+  // mutant's run has its own report.
+  const bool any_cases = !report.cases.empty();
+  if (any_cases) {
     append_summary(out, report);
     append_failures(out, report);
   }
   append_baseline(out, report);
   append_expectation_problems(out, report);
-  if (!mutants_only) append_case_table(out, report);
+  if (any_cases) append_case_table(out, report);
   append_mutation(out, report);
   append_fidelity(out, report);
   for (const CaseResult& result : report.cases) append_case_section(out, result);
-  if (!mutants_only) append_performance(out, report);
+  if (any_cases || !report.benchmarks.empty()) append_performance(out, report);
   out += "</body>\n</html>\n";
   write_file_atomically(file, out);
 }

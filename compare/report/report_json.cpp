@@ -25,7 +25,8 @@ json environment_to_json(const Environment& environment) {
   json out = {{"gl_renderer", environment.gl_renderer}, {"gl_version", environment.gl_version},
               {"gl_platform", environment.gl_platform}, {"cpu", environment.cpu},
               {"compiler", environment.compiler},       {"build_type", environment.build_type},
-              {"git", environment.git},                 {"mutant", environment.mutant}};
+              {"git", environment.git},                 {"mutant", environment.mutant},
+              {"graded", environment.graded}};
   if (environment.calibration_ms) out["calibration_ms"] = number_or_null(*environment.calibration_ms);
   out["run_started"] = environment.run_started;
   out["command_line"] = environment.command_line;

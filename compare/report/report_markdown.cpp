@@ -44,6 +44,7 @@ std::string cell(std::string_view text) {
 void append_environment(std::string& out, const Environment& environment) {
   out += "| environment | |\n|---|---|\n";
   for (const auto& [label, value] : environment_fields(environment)) {
+    if (value->empty()) continue;  // no mutant, nothing graded but our own twins
     out += fmt::format("| {} | {} |\n", label, cell(*value));
   }
   out += '\n';
@@ -183,8 +184,10 @@ void append_mutation(std::string& out, const Report& report) {
 void write_report_markdown(const Report& report, const std::filesystem::path& file) {
   std::string out = "# groundtruth report\n\n";
   append_environment(out, report.environment);
-  // `groundtruth mutants` alone: the mutation score without the scaffolding of a case run.
-  if (report.cases.empty() && report.mutation) {
+  // `groundtruth mutants` or `bench` alone: the mutation score or the performance table, without
+  // the scaffolding of a case run.
+  if (report.cases.empty()) {
+    if (!report.benchmarks.empty()) append_benchmarks(out, report);
     append_mutation(out, report);
     write_file_atomically(file, out);
     return;

@@ -44,6 +44,7 @@ Environment environment_from_json(const json& in) {
   environment.build_type = in.value("build_type", "");
   environment.git = in.value("git", "");
   environment.mutant = in.value("mutant", "");
+  environment.graded = in.value("graded", "");
   environment.calibration_ms = optional_number(in, "calibration_ms");
   environment.run_started = in.value("run_started", "");
   environment.command_line = in.value("command_line", "");
