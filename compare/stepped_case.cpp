@@ -584,7 +584,7 @@ void write_pictures(const SteppedTwin& twin, const Candidate& candidate, const B
       const Grid<double> values = component_grid(twin.fields, truth.final(), f, k);
       const std::string label = component_label(field, k);
       const auto drawn = write_difference_image(twin.initial.grid.blank(0.0, field.unit), values, folder / (label + "_cpu.png"));
-      add_picture(result, label + "_cpu.png", fmt::format("{}, end of ref<double>'s run", field.meaning),
+      add_picture(result, label + "_cpu.png", fmt::format("{}: {}, end of ref<double>'s run", label, field.meaning),
                   difference_scale(drawn, field.unit));
     }
   }

@@ -508,6 +508,8 @@ TEST(CliRun, CaveSuiteIsWatertightSeamlessAndCatchesTheHoles) {
       EXPECT_EQ(find_check(solid, fmt::format("mesh.bounds_volume.{}", backend))->at("status"), "pass");
     }
     EXPECT_EQ(check_value(solid, "parity.topology.gpu_vs_float"), 0.0);
+    // A rendered view of each backend's mesh, side by side in the case's section.
+    for (const char* view : {"mesh.cpu.png", "mesh.gpu.png"}) EXPECT_TRUE(fs::exists(out / name / view)) << view;
     EXPECT_LE(check_value(solid, "volume.mesh_vs_field.cpu"), find_check(solid, "volume.mesh_vs_field.cpu")->at("threshold").get<double>());
   }
   const json& open = cases.at("cave.marching_tetrahedra.open.big_cube30");

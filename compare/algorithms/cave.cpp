@@ -533,6 +533,7 @@ void run_gpu_half(const Block& block, const BlockMeshes& meshes, const RunOption
   result.checks.insert(result.checks.end(), checks.begin(), checks.end());
   write_mesh_artifact(gpu_double, "mesh.gpu." + block.mesh_format,
                       fmt::format("gpu mesh, {} triangles", gpu_double.triangles.size()), options, result);
+  write_mesh_picture(gpu_double, "gpu", options, result);  // beside the cpu mesh's, from the same camera
 }
 
 void run_block(const Block& block, const std::string& volume_file, const nlohmann::json& expect,

@@ -326,8 +326,8 @@ void finish_layered(const LayeredSetup& setup, const std::vector<BackendEnd>& en
 std::vector<std::string> setup_notes(const LayeredSetup& setup) {
   const LayeredParams& params = setup.params;
   const std::string profile = fmt::format(
-      "initial profile in every column, top down: {} m topsoil and {} m subsoil of {}, {} m soft rock (type 0), {} m "
-      "hard rock (type 1); vegetation {}",
+      "initial profile in every column, top down: {:.6g} m topsoil and {:.6g} m subsoil of {}, {:.6g} m soft rock (type "
+      "0), {:.6g} m hard rock (type 1); vegetation {:.6g}",
       std::accumulate(setup.profile.topsoil.begin(), setup.profile.topsoil.end(), 0.0),
       std::accumulate(setup.profile.subsoil.begin(), setup.profile.subsoil.end(), 0.0), setup.soil,
       setup.profile.bedrock[0].thickness, setup.profile.bedrock[1].thickness, setup.vegetation);

@@ -790,6 +790,13 @@ std::array<float, 3> elevation_colour(double elevation) {
   return {static_cast<float>(colour[0]), static_cast<float>(colour[1]), static_cast<float>(colour[2])};
 }
 
+// The colour bar of the elevation maps: the §4.3 palette from the lowest region to the highest.
+ColourScale elevation_scale(const Planet<double>& planet) {
+  const auto [lowest, highest] = std::minmax_element(planet.elevation.smoothed.begin(), planet.elevation.smoothed.end());
+  return sampled_scale("§4.3 elevation", static_cast<double>(*lowest), static_cast<double>(*highest), "generator units",
+                       [](double elevation) { return elevation_colour(elevation); });
+}
+
 // A colour per index (a plate, a region) from the counter RNG on a stream of its own: full, or mixed
 // with white (pale).
 std::array<float, 3> index_colour(const PlanetParams& params, std::int32_t index, bool full) {
@@ -818,7 +825,8 @@ void write_cube_map(const PlanetParams& params, const Planet<double>& planet, co
   }
   write_colour_image(cube.width, cube.height, pixels, options.report_dir / result.name / "elevation_cube.png");
   add_picture(result, "elevation_cube.png",
-              "cube map of the elevation: the faces front, right, back, left, north, south, a cell a pixel");
+              "cube map of the elevation: the faces front, right, back, left, north, south, a cell a pixel",
+              elevation_scale(planet));
   write_field_files(cube,
                     {"elevation_cube_cpu", "elevation", "cpu", "1",
                      "elevation per region as a cube map: faces in index order side by side, each R×R row-major"},
@@ -856,12 +864,10 @@ void write_maps(const PlanetParams& params, const Planet<double>& planet, const 
     elevation_map.values[pixel] = planet.elevation.smoothed[region];
   }
   write_colour_image(map_width, map_height, elevation_pixels, folder / "elevation.png");
-  const auto [lowest, highest] = std::minmax_element(planet.elevation.smoothed.begin(), planet.elevation.smoothed.end());
   add_picture(result, "elevation.png",
               "elevation, ref<double>, equirectangular, each pixel its nearest centroid's region (§4.3 palette: blue "
               "below sea level, brown above)",
-              sampled_scale("§4.3 elevation", static_cast<double>(*lowest), static_cast<double>(*highest), "generator units",
-                            [](double elevation) { return elevation_colour(elevation); }));
+              elevation_scale(planet));
   write_colour_image(map_width, map_height, plate_pixels, folder / "plates.png");
   add_picture(result, "plates.png",
               fmt::format("the {} plates ({} rule), edge regions in full colour", params.plates,
