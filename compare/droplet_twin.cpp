@@ -12,6 +12,7 @@
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/checks/threshold.hpp"
+#include "compare/field_twin.hpp"
 #include "compare/field_files.hpp"
 #include "compare/steppers/height.hpp"
 #include "compare/report/images.hpp"
@@ -520,6 +521,36 @@ void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise
       "heights normalised to [0, 1] as seed 000 does ((h - {:.6g})/{:.6g}); the kernel works in texels, so the cell "
       "size does not enter; the state, its files, pictures and terrain descriptors are in the input's own heights",
       twin.own.offset, twin.own.scale));
+}
+
+nlohmann::json droplet_spec_shape() {
+  return {{"start", nlohmann::json::array({"integer", "integer"})},
+          {"positions", nlohmann::json::array({nlohmann::json::array({"number", "number"})})},
+          {"sediment", "number"},
+          {"cells", cell_values_shape()},
+          {"tolerance", "number"}};
+}
+
+void add_droplet_spec_checks(const nlohmann::json& spec, const DropletTrace& trace, CaseResult& result) {
+  const double tolerance = spec.at("tolerance");
+  const auto& positions = spec.at("positions");
+  double position_error = positions.size() == trace.positions.size() ? 0.0 : INFINITY;
+  for (std::size_t k = 0; k < std::min(positions.size(), trace.positions.size()); ++k) {
+    position_error = std::max({position_error, std::abs(trace.positions[k].first - positions[k][0].get<double>()),
+                               std::abs(trace.positions[k].second - positions[k][1].get<double>())});
+  }
+  double cell_error = 0.0;
+  for (const auto& cell : spec.at("cells")) {
+    cell_error = std::max(cell_error, std::abs(trace.heights_after.at(cell[0], cell[1]) - cell[2].get<double>()));
+  }
+  const std::string why = fmt::format("tolerance {:g}: the hand derivation's decimals against double roundings", tolerance);
+  result.checks.push_back(bounded_check("spec.droplet.positions.cpu", position_error, tolerance, std::nullopt,
+                                        "largest coordinate error over the droplet's positions (count must match); " + why));
+  result.checks.push_back(bounded_check("spec.droplet.sediment.cpu",
+                                        std::abs(trace.sediment - spec.at("sediment").get<double>()), tolerance,
+                                        std::nullopt, "sediment carried at the end of its life; " + why));
+  result.checks.push_back(bounded_check("spec.droplet.cells.cpu", cell_error, tolerance, std::nullopt,
+                                        "heights after its life at the listed texels; " + why));
 }
 
 SteppedTwin droplet_stepped_twin(std::shared_ptr<const DropletTwin> twin) {

@@ -127,6 +127,20 @@ struct DropletTwin {
 // with a note saying so) and the scale between them.
 void set_droplet_input(DropletTwin& twin, const Heightmap& given, bool normalise);
 
+// A hand-derived droplet in a case's "expect" (droplet_spec_shape()): {"droplet": {"start": [x, y]
+// (the texel it starts in), "positions": [[x, y], ...] (after each completed step, the start first),
+// "sediment": s (carried when it ended), "cells": [[x, y, h], ...] (heights after its life),
+// "tolerance": t}}. add_droplet_spec_checks grades ref<double>'s trace of that droplet against it:
+// spec.droplet.{positions,sediment,cells}.cpu, each against the tolerance the case states for its
+// decimals (the hand derivation's, not the run's).
+nlohmann::json droplet_spec_shape();
+struct DropletTrace {
+  std::vector<std::pair<double, double>> positions;
+  double sediment = 0.0;
+  Heightmap heights_after;
+};
+void add_droplet_spec_checks(const nlohmann::json& spec, const DropletTrace& trace, CaseResult& result);
+
 // The eroder as the runner's twin: its state, steppers, shadow bounds, ledger terms and own checks.
 SteppedTwin droplet_stepped_twin(std::shared_ptr<const DropletTwin> twin);
 

@@ -74,10 +74,12 @@ TEST(Mutants, ErosionLayeredAToGIsKilled) {
 TEST(Mutants, ErosionLayeredHToZIsKilled) { expect_every_mutant_killed({"erosion.layered.[h-z]*"}, 0); }
 
 // apply_scaled passes ledger.closure (the excess is booked as the apply pass's rounding): the
-// bound on that rounding must kill it.
+// bound on that rounding must kill it. capacity_doubled conserves material: only the hand-derived
+// droplet sees it.
 TEST(Mutants, ErosionDropletsAreKilled) {
   const json mutation = expect_every_mutant_killed({"erosion.particle.*", "erosion.beyer.*"});
   EXPECT_TRUE(killed_by(mutation, "erosion.beyer.apply_scaled", "ledger.apply_rounding.cpu_float")) << mutation.dump(2);
+  EXPECT_TRUE(killed_by(mutation, "erosion.beyer.capacity_doubled", "spec.droplet.sediment.cpu"));
   EXPECT_TRUE(killed_by(mutation, "erosion.particle.step_by_velocity", "spec.droplet.positions.cpu"));
 }
 

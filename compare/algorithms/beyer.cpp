@@ -13,8 +13,9 @@
 //          ref<double> runs them one after the other (the truth). A droplet's random directions are
 //          numbered by its iteration, pass and block, so a state resumed after `done` iterations
 //          draws them on from there (the references' first_iteration, the GPU's load).
-// Checks: the runner's and the droplet twin's; the brush weights of eq. 2.42 (Fig. 2.10) and a
-//          hand-derived step are the spec vectors of tests/beyer_test.cpp.
+// Checks: the runner's and the droplet twin's; a case's hand-derived droplet (spec.droplet.*,
+//          compare/droplet_twin.hpp); the brush weights of eq. 2.42 (Fig. 2.10) and more
+//          hand-derived steps are the spec vectors of tests/beyer_test.cpp.
 // Mutants: compare/mutants/beyer.cpp.
 #include <cmath>
 #include <memory>
@@ -102,8 +103,34 @@ DropletTwin make_twin(const nlohmann::json& resolved, const Heightmap& given) {
   return twin;
 }
 
+// A hand-derived droplet in the case (compare/droplet_twin.hpp droplet_spec_shape()): ref<double>
+// traces it from the centre of its start texel on the twins' input, with the case's constants.
+void add_droplet_spec(const DropletTwin& twin, const BeyerConstants& constants, const nlohmann::json& expect,
+                      CaseResult& result) {
+  if (!expect.is_object() || !expect.contains("droplet")) return;
+  const auto& spec = expect["droplet"];
+  DropletTrace trace{.heights_after = twin.input};
+  const auto path = reference::beyer_one_droplet(trace.heights_after, constants, spec.at("start")[0].get<int>() + 0.5,
+                                                 spec.at("start")[1].get<int>() + 0.5, 0);
+  trace.positions.assign(path.positions.begin(), path.positions.end());
+  trace.sediment = path.sediment;
+  add_droplet_spec_checks(spec, trace, result);
+}
+
 PreparedTwin prepare_beyer(const nlohmann::json& resolved, const LoadedInput& input) {
-  return {.kind = droplet_stepped_twin(std::make_shared<const DropletTwin>(make_twin(resolved, input.heights)))};
+  const auto twin = std::make_shared<const DropletTwin>(make_twin(resolved, input.heights));
+  const bool normalised = resolved.at("normalised").get<bool>();
+  const BeyerConstants constants = beyer_constants(resolved, normalised ? normalise_heights(input.heights) : input.heights);
+  return {.kind = droplet_stepped_twin(twin),
+          .extra_checks = [twin, constants](const nlohmann::json& expect, const RunOptions&, CaseResult& result) {
+            add_droplet_spec(*twin, constants, expect, result);
+          }};
+}
+
+nlohmann::json beyer_expect_shape() {
+  nlohmann::json shape = descriptor_expect_shape();
+  shape["droplet"] = droplet_spec_shape();
+  return shape;
 }
 
 // A noisy cone normalised to [0, 1] with the defaults at spacing 4, up to 1024² (as Hydra's rows).
@@ -135,7 +162,7 @@ Algorithm beyer_algorithm() {
           .prepare = prepare_beyer,
           .kind = CaseKind::stepped,
           .benchmark = benchmark_beyer,
-          .expect_shape = descriptor_expect_shape(),
+          .expect_shape = beyer_expect_shape(),
           // As erosion.particle's without colour and flow map: the same grids are kept; measured within
           // this by tests/memory_estimates_test.cpp at 768².
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {

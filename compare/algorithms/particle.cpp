@@ -195,33 +195,17 @@ ParticleScenario make_scenario(const nlohmann::json& resolved, const Heightmap& 
   return scenario;
 }
 
-// A hand-derived trajectory in the case: {"droplet": {"start": [x, y], "positions": [[x, y], ...],
-// "sediment": s, "cells": [[x, y, h], ...], "tolerance": t}} on the case's input, ref<double>.
+// A hand-derived trajectory in the case (compare/droplet_twin.hpp droplet_spec_shape()), traced by
+// ref<double> on the case's input from the start texel.
 void add_droplet_spec(const ParticleScenario& scenario, const nlohmann::json& expect, CaseResult& result) {
   if (!expect.is_object() || !expect.contains("droplet")) return;
   const auto& spec = expect["droplet"];
-  Heightmap heights = scenario.twin.input;
-  const auto path = reference::run_one_droplet(heights, scenario.constants, spec.at("start")[0].get<int>(),
+  DropletTrace trace{.heights_after = scenario.twin.input};
+  const auto path = reference::run_one_droplet(trace.heights_after, scenario.constants, spec.at("start")[0].get<int>(),
                                                spec.at("start")[1].get<int>());
-  const double tolerance = spec.at("tolerance");
-  const auto& positions = spec.at("positions");
-  double position_error = positions.size() == path.positions.size() ? 0.0 : INFINITY;
-  for (std::size_t k = 0; k < std::min(positions.size(), path.positions.size()); ++k) {
-    position_error = std::max({position_error, std::abs(path.positions[k].first - positions[k][0].get<double>()),
-                               std::abs(path.positions[k].second - positions[k][1].get<double>())});
-  }
-  double cell_error = 0.0;
-  for (const auto& cell : spec.at("cells")) {
-    cell_error = std::max(cell_error, std::abs(heights.at(cell[0], cell[1]) - cell[2].get<double>()));
-  }
-  const std::string why = fmt::format("tolerance {:g}: the hand derivation's decimals against double roundings", tolerance);
-  result.checks.push_back(bounded_check("spec.droplet.positions.cpu", position_error, tolerance, std::nullopt,
-                                        "largest coordinate error over the droplet's positions (count must match); " + why));
-  result.checks.push_back(bounded_check("spec.droplet.sediment.cpu",
-                                        std::abs(path.sediment - spec.at("sediment").get<double>()), tolerance,
-                                        std::nullopt, "sediment carried at the end of its life; " + why));
-  result.checks.push_back(bounded_check("spec.droplet.cells.cpu", cell_error, tolerance, std::nullopt,
-                                        "heights after its life at the listed texels; " + why));
+  trace.positions.assign(path.positions.begin(), path.positions.end());
+  trace.sediment = path.sediment;
+  add_droplet_spec_checks(spec, trace, result);
 }
 
 // A linear value in [0, 1] (clamped) sRGB-encoded.
@@ -570,11 +554,7 @@ PreparedTwin prepare_particle(const nlohmann::json& resolved, const LoadedInput&
 
 nlohmann::json particle_expect_shape() {
   nlohmann::json shape = descriptor_expect_shape();
-  shape["droplet"] = {{"start", nlohmann::json::array({"integer", "integer"})},
-                      {"positions", nlohmann::json::array({nlohmann::json::array({"number", "number"})})},
-                      {"sediment", "number"},
-                      {"cells", cell_values_shape()},
-                      {"tolerance", "number"}};
+  shape["droplet"] = droplet_spec_shape();
   return shape;
 }
 

@@ -7,7 +7,9 @@
 // brush_unnormalised also by the disjoint ordering's same-arithmetic bound (parity.shadow.terrain).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by the droplet ledger
-// (ledger.*: material neither created nor lost where the model does not say so). A droplet that
+// (ledger.*: material neither created nor lost where the model does not say so), or, for a
+// conserving error of the law (capacity_doubled, in the constants both twins read), by the
+// hand-derived droplet of erosion.beyer.spec.tilted_plane (spec.droplet.*). A droplet that
 // takes up nothing never fills and digs without bound: in batch ordering the probe's pass piles more
 // into a cell than the GPU's counters hold and ref<float> refuses the run, so that mutant runs on
 // the disjoint cone, whose references run the droplets one after the other. apply_scaled changes
@@ -35,6 +37,10 @@ std::vector<Mutant> beyer_mutants() {
        {"erosion.beyer.disjoint.cone"}},
       {"erosion.beyer.apply_scaled", MutantKind::both_twins,
        "both twins' batch apply adds delta·quantum·(1 + 2^-10) to each cell, not delta·quantum", probe},
+      {"erosion.beyer.capacity_doubled", MutantKind::both_twins,
+       "both twins take the capacity factor c_c of eq. 2.39 twice: a conserving error of the law, which no ledger "
+       "sees and the hand-derived droplet does",
+       {"erosion.beyer.spec.tilted_plane"}},
       {"erosion.beyer.uphill_deposit_unbounded", MutantKind::both_twins,
        "both twins deposit the whole climb Δh uphill, not min(Δh, sediment), and clamp the sediment at 0: material "
        "created",

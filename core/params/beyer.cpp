@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 
 namespace gt {
 namespace {
@@ -90,6 +91,9 @@ BeyerConstants beyer_constants(const nlohmann::json& resolved, const Heightmap& 
         "droplets of a pass meet; spacing is {} (use `race` or `batch`, or a spacing of at least {})",
         2 * beyer_reach(constants), constants.spacing, 2 * beyer_reach(constants) + 1));
   }
+  // Mutant (both twins read their constants here): erosion.beyer.capacity_doubled takes 2·c_c, a
+  // conserving error of the law that only the hand-derived droplet (spec.droplet.*) sees.
+  if (mutant_active("erosion.beyer.capacity_doubled")) constants.capacity_factor *= 2.0;
   const auto [low, high] = valid_range(heights);
   constants.quantum = batch_quantum(low > high ? 0.0 : std::max(std::abs(low), std::abs(high)));
   return constants;
