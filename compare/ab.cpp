@@ -106,11 +106,11 @@ void write_page(const Sweep& ab, const CaseResult& a, const CaseResult& b, const
                 const std::optional<Artifact>& difference, const std::filesystem::path& folder) {
   std::ofstream html(folder / (ab.ab_stem + ".html"));
   html << report_detail::page_head("A/B of " + a.algorithm,
-                                   std::string("body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px "
-                                               "solid #ccc;padding:4px}td.n{text-align:right}img{width:320px;image-"
-                                               "rendering:pixelated}tr.moved{background:#fff6d6}figure{margin:0}"
-                                               ".colourbar{width:320px}") +
-                                       std::string(report_detail::colour_bar_style))
+                                   std::string(report_detail::colour_bar_style) +
+                                       "body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px "
+                                       "solid #ccc;padding:4px}td.n{text-align:right}img{width:320px;image-"
+                                       "rendering:pixelated}tr.moved{background:#fff6d6}figure{margin:0}"
+                                       ".colourbar,.scalebar{width:320px}")
        << "<h1>A/B of " << escape_markup(a.algorithm) << "</h1>\n<table><tr><th></th><th>A</th><th>B</th></tr>\n";
   const auto assignments = [](const AdHocCase& variant) {
     std::string text;
@@ -128,8 +128,8 @@ void write_page(const Sweep& ab, const CaseResult& a, const CaseResult& b, const
   html << "</tr>\n</table>\n";
   if (difference) {
     html << "<figure><img src=\"" << escape_markup(difference->path) << "\" alt=\"B - A\">"
-         << report_detail::colour_bar(difference->scale) << "<figcaption>" << escape_markup(difference->caption)
-         << "</figcaption></figure>\n";
+         << report_detail::colour_bar(difference->scale) << report_detail::scale_bar(difference->width_m)
+         << "<figcaption>" << escape_markup(difference->caption) << "</figcaption></figure>\n";
   }
   html << "<h2>Metrics</h2>\n<p>The table as <a href=\"" << escape_markup(ab.ab_stem)
        << ".json\">JSON</a>; hover a metric for its key there.</p>\n";
@@ -198,7 +198,8 @@ void write_ab_summary(const Sweep& ab, Report& report, const std::filesystem::pa
                           fmt::format("{}: B - A, ref<double>'s results: blue where B is lower, red where higher; "
                                       "rms {:.3g} (the page: {}.html)",
                                       ab.ab_stem, stats.rms, ab.ab_stem),
-                          difference_scale(stats, field_a->vertical_unit)};
+                          difference_scale(stats, field_a->vertical_unit),
+                          map_width_m(field_a->width, field_a->cell_size_x)};
     table["difference"] = {{"max_abs", stats.max_abs}, {"rms", stats.rms}};
     report.plots.push_back(*difference);
   }

@@ -447,7 +447,7 @@ void write_side_map(const DropletTwin& twin, Grid<double> map, double contrast, 
               contrast > 0.0 ? fmt::format("{} with its contrast {} (full red at 1/contrast), in normalised heights",
                                            what, contrast)
                              : fmt::format("{}, full red at its 99th percentile, in normalised heights", what),
-              difference_scale(drawn, "1"));
+              difference_scale(drawn, "1"), map_width_m(map.width, map.cell_size_x));
   for (double& amount : map.values) amount *= twin.own.scale;
   map.vertical_unit = twin.unit;
   write_field_files(map, {field + "_cpu", field, "cpu", twin.unit, what + " over the run, ref<double>"}, options, result);

@@ -126,7 +126,8 @@ void write_material_masks(const LayeredGround<double>& ground, const LayeredPara
                 fmt::format("{}: its share of the surface after the run, with the thesis's transparency (§3.17: a "
                             "layer thinner than K_pmin lets the one below show)",
                             name),
-                sampled_scale("black to " + name, 0.0, largest, "1", shade));
+                sampled_scale("black to " + name, 0.0, largest, "1", shade),
+                map_width_m(ground.width, ground.cell_size_x));
     write_field_files(mask, {key, key, "cpu", "1", fmt::format("share of the surface showing {} (§3.17), ref<double>", name)},
                       options, result);
   }
@@ -155,7 +156,8 @@ void write_layered_pictures(const LayeredGround<double>& ground, const LayeredPa
   add_picture(result, "surface_material.png",
               "surface material after the run, ref<double> (a cell a square of pixels): the top non-empty layer's mixture (organic "
                               "dark brown, sand pale yellow, gravel light grey, stones grey, boulders slate; bedrock: "
-                              "soft rock red, hard rock dark grey), greened by 35 % of the vegetation density");
+                              "soft rock red, hard rock dark grey), greened by 35 % of the vegetation density",
+              std::nullopt, map_width_m(ground.width, ground.cell_size_x));
   write_material_masks(ground, params, options, result);
   double depth_shown = 0.0;
   write_cross_section(ground, folder / "cross_section.png", depth_shown);

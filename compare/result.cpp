@@ -2,6 +2,8 @@
 // checks, and whether a run failed once the expectation list is taken into account.
 #include "compare/result.hpp"
 
+#include <cmath>
+
 #include <algorithm>
 #include <map>
 
@@ -127,8 +129,15 @@ std::vector<std::string> failing_checks(const CaseResult& result) {
   return failing;
 }
 
-void add_picture(CaseResult& result, const std::string& file, std::string caption, std::optional<ColourScale> scale) {
-  result.artifacts.push_back({result.name + "/" + file, "image", std::move(caption), std::move(scale)});
+void add_picture(CaseResult& result, const std::string& file, std::string caption, std::optional<ColourScale> scale,
+                 std::optional<double> width_m) {
+  result.artifacts.push_back({result.name + "/" + file, "image", std::move(caption), std::move(scale), width_m});
+}
+
+std::optional<double> map_width_m(int width, double cell_size_x) {
+  const double metres = width * cell_size_x;
+  if (!std::isfinite(metres) || metres <= 0.0) return std::nullopt;
+  return metres;
 }
 
 }  // namespace gt

@@ -69,6 +69,9 @@ struct Artifact {
   std::string kind;     // "image" (PNG to show), "field" (EXR data), "plot"
   std::string caption;
   std::optional<ColourScale> scale;  // maps: their colour bar
+  // Maps of a grid: the picture's width in metres (the grid's width times its cell size), for its
+  // scale bar; unset for rendered views, photographs and plots.
+  std::optional<double> width_m;
 };
 
 
@@ -103,9 +106,13 @@ struct CaseResult {
 };
 
 // Adds the picture `file` of the case's folder (result.name/file) with its caption and, for a map,
-// its colour scale.
+// its colour scale and its width in metres (map_width_m of the grid it shows).
 void add_picture(CaseResult& result, const std::string& file, std::string caption,
-                 std::optional<ColourScale> scale = std::nullopt);
+                 std::optional<ColourScale> scale = std::nullopt, std::optional<double> width_m = std::nullopt);
+
+// The width in metres of a map of a grid `width` cells across of `cell_size_x` metres; unset when
+// that is not a positive finite length.
+std::optional<double> map_width_m(int width, double cell_size_x);
 
 struct Environment {
   std::string gl_renderer;    // GL_RENDERER, or "none: <reason>"

@@ -562,20 +562,23 @@ void write_pictures(const SteppedTwin& twin, const Candidate& candidate, const B
   const auto totals = field_totals(before);
   const double exaggeration = write_height_image(before, totals.low, totals.high, folder / "before.png");
   const ColourScale heights = height_scale(totals.low, totals.high, unit);
-  add_picture(result, "before.png", "input", heights);
+  const auto width_m = map_width_m(before.width, before.cell_size_x);
+  add_picture(result, "before.png", "input", heights, width_m);
   write_height_image(after, totals.low, totals.high, folder / "after_cpu.png", exaggeration);
-  add_picture(result, "after_cpu.png", "after, CPU reference (double)", heights);
+  add_picture(result, "after_cpu.png", "after, CPU reference (double)", heights, width_m);
   const auto change = write_difference_image(before, after, folder / "change_cpu.png");
-  add_picture(result, "change_cpu.png", "after - before, CPU: red gain, blue loss", difference_scale(change, unit));
+  add_picture(result, "change_cpu.png", "after - before, CPU: red gain, blue loss", difference_scale(change, unit),
+              width_m);
   if (gpu) {
     const Grid<double> gpu_after = component_grid(twin.fields, gpu->final(), shown, 0);
     const std::string after_file = fmt::format("after_{}.png", candidate.backend);
     write_height_image(gpu_after, totals.low, totals.high, folder / after_file, exaggeration);
-    add_picture(result, after_file, "after, " + candidate.label, heights);
+    add_picture(result, after_file, "after, " + candidate.label, heights, width_m);
     const std::string difference_file = fmt::format("{}_vs_float.png", candidate.backend);
     const auto disagreement = write_difference_image(component_grid(twin.fields, float_run.final(), shown, 0), gpu_after,
                                                      folder / difference_file);
-    add_picture(result, difference_file, candidate.label + " - reference (float)", difference_scale(disagreement, unit));
+    add_picture(result, difference_file, candidate.label + " - reference (float)", difference_scale(disagreement, unit),
+                width_m);
   }
   for (std::size_t f = 0; f < twin.fields.size(); ++f) {
     if (f == shown) continue;
@@ -585,7 +588,7 @@ void write_pictures(const SteppedTwin& twin, const Candidate& candidate, const B
       const std::string label = component_label(field, k);
       const auto drawn = write_difference_image(twin.initial.grid.blank(0.0, field.unit), values, folder / (label + "_cpu.png"));
       add_picture(result, label + "_cpu.png", fmt::format("{}: {}, end of ref<double>'s run", label, field.meaning),
-                  difference_scale(drawn, field.unit));
+                  difference_scale(drawn, field.unit), width_m);
     }
   }
 }

@@ -437,7 +437,9 @@ TEST_F(ReportFiles, MapsCarryAColourBarInTheirUnit) {
   Heightmap before(6, 4, 2.0), after(6, 4, 2.0);
   after.at(1, 1) = 2.5;
   const DifferenceStats change = write_difference_image(before, after, folder / "change.png");
-  report.cases[0].artifacts = {{"x/before.png", "image", "input", height_scale(-3.0, 11.6, "m")},
+  // The input is 870 m wide (87 cells of 10 m): its scale bar is the round length below a quarter
+  // of that, 200 m, drawn at 200/870 of the picture's width.
+  report.cases[0].artifacts = {{"x/before.png", "image", "input", height_scale(-3.0, 11.6, "m"), map_width_m(87, 10.0)},
                                {"x/change.png", "image", "after - before", difference_scale(change, "m")},
                                {"x/view.png", "image", "a rendered view"}};
   write_report_html(report, folder / "index.html");
@@ -458,6 +460,10 @@ TEST_F(ReportFiles, MapsCarryAColourBarInTheirUnit) {
     ++bars;
   }
   EXPECT_EQ(bars, 2u);
+  EXPECT_THAT(html, ::testing::HasSubstr("<span class=\"bar\" style=\"width: 22.989%\"></span><span>200 m</span>"));
+  EXPECT_EQ(html.find("class=\"scalebar\""), html.rfind("class=\"scalebar\"")) << "only the map with a width has one";
+  EXPECT_THAT(report_detail::scale_bar(map_width_m(4, 2500.0)), ::testing::HasSubstr("<span>2 km</span>"));  // 10 km wide
+  EXPECT_EQ(report_detail::scale_bar(map_width_m(0, 1.0)), "") << "no width, no bar";
 
   write_report_json(report, folder / "report.json");
   const Report read = report_from_json(json::parse(read_text(folder / "report.json")));
@@ -466,13 +472,17 @@ TEST_F(ReportFiles, MapsCarryAColourBarInTheirUnit) {
   EXPECT_DOUBLE_EQ(read.cases[0].artifacts[1].scale->high, 0.5);
   EXPECT_EQ(read.cases[0].artifacts[1].scale->colours, colours);
   EXPECT_FALSE(read.cases[0].artifacts[2].scale.has_value());
+  EXPECT_EQ(read.cases[0].artifacts[0].width_m, std::optional<double>(870.0));
+  EXPECT_FALSE(read.cases[0].artifacts[1].width_m.has_value());
   // A hand-edited report: channels beyond [0, 1] (or float's range) are clamped, a colour that is not
   // three numbers leaves the bar grey; neither breaks the page.
   json edited = json::parse(read_text(folder / "report.json"));
   auto& details = edited["cases"][0]["artifact_details"];
   details[0]["scale"]["colours"] = json::array({json::array({1e300, -1.0, 0.5})});
   details[1]["scale"]["colours"] = json::array({json::array({"red", 0, 0})});
+  details[0]["width_m"] = -5.0;
   const Report hostile = report_from_json(edited);
+  EXPECT_FALSE(hostile.cases[0].artifacts[0].width_m.has_value()) << "a negative width draws no bar";
   EXPECT_EQ(hostile.cases[0].artifacts[0].scale->colours, (std::vector<std::array<float, 3>>{{1.0f, 0.0f, 0.5f}}));
   EXPECT_TRUE(hostile.cases[0].artifacts[1].scale->colours.empty());
   write_report_html(hostile, folder / "index.html");

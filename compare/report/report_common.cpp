@@ -370,6 +370,20 @@ std::string colour_bar(const std::optional<ColourScale>& scale) {
 }
 
 
+std::string scale_bar(const std::optional<double>& width_m) {
+  if (!width_m || !std::isfinite(*width_m) || *width_m <= 0.0) return "";
+  const double wanted = *width_m / 4.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(wanted)));
+  double length = decade;
+  for (const double step : {2.0, 5.0}) {
+    if (step * decade <= wanted) length = step * decade;
+  }
+  const std::string label = length >= 1000.0 ? fmt::format("{:g} km", length / 1000.0) : fmt::format("{:g} m", length);
+  return fmt::format("<div class=\"scalebar\" title=\"the map is {:.4g} m wide\"><span class=\"bar\" style=\"width: "
+                     "{:.3f}%\"></span><span>{}</span></div>",
+                     *width_m, 100.0 * length / *width_m, escape_markup(label));
+}
+
 }  // namespace gt::report_detail
 
 namespace gt {

@@ -184,11 +184,17 @@ std::string case_anchor(const std::string& case_name);
 // low end to its high end as a CSS gradient, the ends (and 0 of a diverging map) labelled in the
 // map's unit; "" without a scale.
 std::string colour_bar(const std::optional<ColourScale>& scale);
+// A map's scale bar as HTML (class "scalebar"): a bar of a round length (1, 2 or 5 × 10^k m, about a
+// quarter of the map's width) drawn at its share of the picture's width and labelled in m or km;
+// "" without a width.
+std::string scale_bar(const std::optional<double>& width_m);
 inline constexpr std::string_view colour_bar_style = R"(
 .colourbar { width: 280px; font-size: .78em; color: #333; margin-top: .15em; }
 .panel .colourbar { width: 100%; }
 .colourbar .ramp { display: block; height: 10px; border: 1px solid #999; }
 .colourbar .ticks { display: flex; justify-content: space-between; font-variant-numeric: tabular-nums; }
+.scalebar { font-size: .78em; color: #333; margin-top: .2em; display: flex; align-items: center; gap: .4em; }
+.scalebar .bar { display: inline-block; height: 4px; border: 1px solid #333; border-top: none; }
 )";
 
 }  // namespace gt::report_detail

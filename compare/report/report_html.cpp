@@ -54,6 +54,7 @@ details.more { margin: .6em 0; } details.more > summary { cursor: pointer; color
 section.case { border-top: 2px solid #e4e4e4; margin-top: 2em; }
 .note { color: #555; font-style: italic; }
 .wide { overflow-x: auto; max-width: 100%; }
+.fidelity th small { font-weight: normal; }
 .fidelity td.toward, .fidelity span.toward { background: #e3f1e4; } .fidelity td.away, .fidelity span.away { background: #f8d7d7; }
 .devices { font-weight: 600; }
 .performance td:last-child { min-width: 26em; } /* the note: a few lines, not a column of words */
@@ -282,7 +283,7 @@ void append_figure(std::string& out, const Artifact& artifact, std::string_view 
   out += fmt::format("<figure class=\"{}\"><a href=\"{}\"><img loading=\"lazy\" src=\"{}\" alt=\"{}\"></a>{}"
                      "<figcaption>{}</figcaption></figure>\n",
                      figure_class, url(artifact.path), url(artifact.path), h(artifact.caption),
-                     colour_bar(artifact.scale), h(artifact.caption));
+                     colour_bar(artifact.scale) + scale_bar(artifact.width_m), h(artifact.caption));
 }
 
 void append_panel(std::string& out, std::string_view role, const Artifact* artifact, std::string_view missing) {
@@ -295,7 +296,7 @@ void append_panel(std::string& out, std::string_view role, const Artifact* artif
   out += fmt::format("<figure class=\"panel\"><div class=\"role\">{}</div><a href=\"{}\"><img loading=\"lazy\" src=\"{}\" alt=\"{}\"></a>"
                      "{}<figcaption>{}</figcaption></figure>\n",
                      h(role), url(artifact->path), url(artifact->path), h(artifact->caption),
-                     colour_bar(artifact->scale), h(artifact->caption));
+                     colour_bar(artifact->scale) + scale_bar(artifact->width_m), h(artifact->caption));
 }
 
 void append_comparison(std::string& out, const ImageComparison& comparison) {
@@ -454,8 +455,11 @@ void append_fidelity(std::string& out, const Report& report) {
   for (const auto& row : table->rows) {
     std::string variant = row.case_name;
     if (variant.starts_with(row.algorithm + ".")) variant.erase(0, row.algorithm.size() + 1);
+    // A line break allowed after each dot, so that six or more columns fit a 1,280 px page.
+    std::string breakable;
+    for (const char c : h(variant)) breakable += c == '.' ? std::string(".<wbr>") : std::string(1, c);
     out += fmt::format("<th><a href=\"#{}\">{}</a><br><small>{}</small></th>", case_anchor(row.case_name),
-                       h(row.algorithm), h(variant));
+                       h(row.algorithm), breakable);
   }
   out += "</tr>\n";
   for (std::size_t index = 0; index < table->descriptors.size(); ++index) {

@@ -91,6 +91,7 @@ json case_to_json(const CaseResult& result) {
                           {"high", artifact.scale->high}, {"unit", artifact.scale->unit},
                           {"colours", artifact.scale->colours}};
     }
+    if (artifact.width_m) details["width_m"] = number_or_null(*artifact.width_m);
     out["artifact_details"].push_back(std::move(details));
   }
   if (!result.descriptors.is_null()) out["descriptors"] = result.descriptors;

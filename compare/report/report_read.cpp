@@ -110,6 +110,10 @@ std::vector<Artifact> artifacts_from_json(const json& in) {
       if (const auto scale = details[index].find("scale"); scale != details[index].end() && scale->is_object()) {
         artifact.scale = colour_scale_from_json(*scale);
       }
+      // A width that is not a positive finite number draws no scale bar (a hand-edited report).
+      if (const auto width = details[index].find("width_m"); width != details[index].end() && width->is_number()) {
+        artifact.width_m = map_width_m(1, width->get<double>());
+      }
     }
     artifacts.push_back(std::move(artifact));
   }
