@@ -56,6 +56,7 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/case_descriptors.hpp"
 #include "compare/benchmark.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/inputs.hpp"
@@ -450,6 +451,13 @@ std::vector<BenchmarkRow> benchmark_layered(const BenchmarkOptions& options, boo
   return rows;
 }
 
+// "at_rest" (finish_layered's check that talus came to rest) and the descriptors' "fidelity".
+nlohmann::json layered_expect_shape() {
+  nlohmann::json shape = descriptor_expect_shape();
+  shape["at_rest"] = "boolean";
+  return shape;
+}
+
 }  // namespace
 
 Algorithm layered_algorithm() {
@@ -462,7 +470,7 @@ Algorithm layered_algorithm() {
           .prepare = prepare_layered,
           .kind = CaseKind::stepped,
           .benchmark = benchmark_layered,
-          .expect_shape = {{"at_rest", "boolean"}},
+          .expect_shape = layered_expect_shape(),
           // The models: the double state (5·2 components, 2 bedrock layers, types, surface,
           // vegetation: ~112 B), its snapshot each step and its start copy, 8 outflows (64 B), the
           // float run's half of all that, the pictures' grids: under 700 B a cell; 1000 kept. With
