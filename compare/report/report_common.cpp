@@ -339,6 +339,8 @@ std::string scaling_exponent_text(const ScalingFit& fit) {
                       : fmt::format("{:.2f} superlinear (> {})", fit.exponent, linear_exponent_limit);
 }
 
+namespace {
+
 // Evenly spaced colours as a CSS gradient from left to right (grey when there are none).
 std::string css_gradient(const std::vector<std::array<float, 3>>& colours) {
   if (colours.empty()) return "#999";
@@ -352,12 +354,16 @@ std::string css_gradient(const std::vector<std::array<float, 3>>& colours) {
   return fmt::format("linear-gradient(to right, {})", fmt::join(stops, ", "));
 }
 
+}  // namespace
+
 // A map's colour bar: the palette from its low end to its high end, the ends (and 0 of a
 // diverging map) labelled in the map's unit.
 std::string colour_bar(const std::optional<ColourScale>& scale) {
   if (!scale) return "";
   const std::string unit = scale->unit.empty() || scale->unit == "1" ? "" : " " + scale->unit;
-  const auto label = [&](double value) { return escape_markup(fmt::format("{:.3g}{}", value == 0.0 ? 0.0 : value, unit)); };
+  const auto label = [&](double value) {
+    return escape_markup(fmt::format("{:.3g}{}", value == 0.0 ? 0.0 : value, unit));
+  };
   if (scale->low == scale->high) {
     return fmt::format("<div class=\"colourbar\"><span class=\"ticks\"><span>every value {}</span></span></div>",
                        label(scale->low));
@@ -366,9 +372,9 @@ std::string colour_bar(const std::optional<ColourScale>& scale) {
   const std::string middle = centred ? fmt::format("<span>0{}</span>", escape_markup(unit)) : std::string();
   return fmt::format("<div class=\"colourbar\" title=\"{}\"><span class=\"ramp\" style=\"background: {}\"></span>"
                      "<span class=\"ticks\"><span>{}</span>{}<span>{}</span></span></div>",
-                     escape_markup(scale->palette), css_gradient(scale->colours), label(scale->low), middle, label(scale->high));
+                     escape_markup(scale->palette), css_gradient(scale->colours), label(scale->low), middle,
+                     label(scale->high));
 }
-
 
 std::string scale_bar(const std::optional<double>& width_m) {
   if (!width_m || !std::isfinite(*width_m) || *width_m <= 0.0) return "";
