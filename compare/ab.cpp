@@ -66,25 +66,22 @@ std::string change_cells(const MetricRow& row) {
 // that moved first, most moved first (metrics_by_movement).
 void write_metric_tables(std::ofstream& html, const std::vector<MetricRow>& rows) {
   struct Group {
+    MetricGroup holds;
     const char* title;
     const char* note;
-    bool (*holds)(const std::string&);
   };
   const Group groups[] = {
-      {"Terrain descriptors of the results", "ref<double>'s result of each variant, measured as `groundtruth stats` does.",
-       [](const std::string& name) { return name.rfind("descriptor.", 0) == 0; }},
-      {"Checks", "Each variant's checks (a check's outcome is in the report, linked above).",
-       [](const std::string& name) {
-         return name.rfind("descriptor.", 0) != 0 && name != "seconds" && name != "cpu_ms" && name != "gpu_ms";
-       }},
-      {"Timings", "One run of each variant: differences within about 25 % are the machine's noise; time variants "
-                  "with `groundtruth bench` or repeated runs before reading a speed-up here.",
-       [](const std::string& name) { return name == "seconds" || name == "cpu_ms" || name == "gpu_ms"; }},
+      {MetricGroup::descriptor, "Terrain descriptors of the results",
+       "ref<double>'s result of each variant, measured as `groundtruth stats` does."},
+      {MetricGroup::check, "Checks", "Each variant's checks (a check's outcome is in the report, linked above)."},
+      {MetricGroup::timing, "Timings",
+       "One run of each variant: differences within about 25 % are the machine's noise; time variants with "
+       "`groundtruth bench` or repeated runs before reading a speed-up here."},
   };
   for (const Group& group : groups) {
     std::vector<const MetricRow*> members;
     for (const MetricRow& row : rows) {
-      if (group.holds(row.name)) members.push_back(&row);
+      if (metric_group(row.name) == group.holds) members.push_back(&row);
     }
     if (members.empty()) continue;
     const auto moved = std::count_if(members.begin(), members.end(), [](const MetricRow* row) { return row->moved(); });

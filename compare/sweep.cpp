@@ -332,17 +332,19 @@ MetricLabel metric_label(const std::string& name) {
   return {label, unit};
 }
 
+MetricGroup metric_group(const std::string& name) {
+  if (name.rfind("descriptor.", 0) == 0) return MetricGroup::descriptor;
+  if (name == "seconds" || name == "cpu_ms" || name == "gpu_ms") return MetricGroup::timing;
+  return MetricGroup::check;
+}
+
 std::vector<std::string> metrics_by_movement(const std::vector<const CaseResult*>& results,
                                              const std::vector<std::string>& metrics) {
-  const auto group_of = [](const std::string& name) {
-    if (name.rfind("descriptor.", 0) == 0) return 0;
-    if (name == "seconds" || name == "cpu_ms" || name == "gpu_ms") return 2;
-    return 1;
-  };
   std::vector<std::pair<std::string, double>> ranked;
   for (const auto& name : metrics) ranked.emplace_back(name, relative_spread(results, name));
-  std::stable_sort(ranked.begin(), ranked.end(), [&](const auto& a, const auto& b) {
-    if (group_of(a.first) != group_of(b.first)) return group_of(a.first) < group_of(b.first);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
+    const MetricGroup group_a = metric_group(a.first), group_b = metric_group(b.first);
+    if (group_a != group_b) return group_a < group_b;
     return a.second > b.second;
   });
   std::vector<std::string> order;

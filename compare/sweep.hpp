@@ -69,6 +69,11 @@ struct MetricLabel {
 };
 MetricLabel metric_label(const std::string& name);
 
+// What a metric is: a terrain descriptor of the result ("descriptor.*"), a timing ("seconds",
+// "cpu_ms", "gpu_ms") or a check (anything else).
+enum class MetricGroup { descriptor, check, timing };
+MetricGroup metric_group(const std::string& name);
+
 // The metrics in the order a reader wants them: the result's descriptors, then the checks, then the
 // timings (noise of one run); in each group, what moved most across the runs first (the spread
 // max - min as a share of the largest magnitude).

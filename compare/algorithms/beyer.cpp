@@ -78,7 +78,13 @@ DropletTwin beyer_twin(const Heightmap& given, bool normalised, const BeyerConst
   return twin;
 }
 
-DropletTwin make_twin(const nlohmann::json& resolved, const Heightmap& given) {
+// The twins of a case and the constants they were made with (the hand-derived droplet's too).
+struct BeyerCase {
+  DropletTwin twin;
+  BeyerConstants constants;
+};
+
+BeyerCase make_case(const nlohmann::json& resolved, const Heightmap& given) {
   if (given.size() == 0) throw InputError("erosion.beyer erodes a heightmap: the case needs an input");
   check_finite(given, "erosion.beyer input");
   check_fits_float(given, "erosion.beyer input");
@@ -100,7 +106,7 @@ DropletTwin make_twin(const nlohmann::json& resolved, const Heightmap& given) {
     twin.notes.push_back("speed rule physical: without friction a droplet speeds up on every downhill step and its "
                          "capacity with it; expect the terrain to run away over several iterations");
   }
-  return twin;
+  return {std::move(twin), c};
 }
 
 // A hand-derived droplet in the case (compare/droplet_twin.hpp droplet_spec_shape()): ref<double>
@@ -118,9 +124,9 @@ void add_droplet_spec(const DropletTwin& twin, const BeyerConstants& constants, 
 }
 
 PreparedTwin prepare_beyer(const nlohmann::json& resolved, const LoadedInput& input) {
-  const auto twin = std::make_shared<const DropletTwin>(make_twin(resolved, input.heights));
-  const bool normalised = resolved.at("normalised").get<bool>();
-  const BeyerConstants constants = beyer_constants(resolved, normalised ? normalise_heights(input.heights) : input.heights);
+  BeyerCase made = make_case(resolved, input.heights);
+  const auto twin = std::make_shared<const DropletTwin>(std::move(made.twin));
+  const BeyerConstants constants = made.constants;
   return {.kind = droplet_stepped_twin(twin),
           .extra_checks = [twin, constants](const nlohmann::json& expect, const RunOptions&, CaseResult& result) {
             add_droplet_spec(*twin, constants, expect, result);
