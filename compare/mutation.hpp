@@ -5,8 +5,9 @@
 //   2. each mutant runs its cases with the mutant on, in a worker process of this executable
 //      (`groundtruth run CASES --mutant NAME`), with a time limit;
 //   3. the mutant is killed when one of its cases has a check that fails under the mutant, did not
-//      fail in the baseline, and is of the kind meant for the mutant (check_kind_kills: parity or
-//      image checks for one-twin mutants, anything but those and determinism for both-twins ones).
+//      fail in the baseline, and is of the kind meant for the mutant (check_kind_kills: parity,
+//      image and determinism checks or a float twin's own ledgers and invariants for one-twin
+//      mutants, anything but parity, image and determinism for both-twins ones).
 //      A run that errors or times out cannot tell: the mutant's status says so, it is not killed.
 // The mutation score is killed / selected. Every run's report stays under the folder given; the
 // HTML links each mutant to its run's report (runs/<name>/index.html below the mutation folder).

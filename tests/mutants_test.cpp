@@ -1,6 +1,6 @@
 // The mutation score (issue 11): every registered mutant, run on its cases in a worker process, is
-// killed by a check of the kind meant for it (parity or image checks for one-twin mutants, ledger,
-// spec and invariant checks for both-twins ones), a must-survive calibration mutant (below its
+// killed by a check of the kind meant for it (parity or image checks, or the twin's own ledgers and
+// invariants, for one-twin mutants; ledger, spec and invariant checks for both-twins ones), a must-survive calibration mutant (below its
 // error model's bound) survives, and the same cases pass unmutated. One test per
 // family, so that ctest runs them side by side; `groundtruth mutants` is run as a user runs it.
 #include <cstdio>
@@ -70,6 +70,11 @@ TEST(Mutants, ErosionLayeredAToGIsKilled) {
   const json mutation = expect_every_mutant_killed({"erosion.layered.[a-g]*"}, 2);
   EXPECT_TRUE(killed_by(mutation, "erosion.layered.gpu_previous_after_move", "parity.shadow.previous_water.gpu_vs_float"));
   EXPECT_TRUE(killed_by(mutation, "erosion.layered.gpu_flux_unscaled", "parity.shadow.water_flux.gpu_vs_float"));
+  // The GPU's own ledger and invariants, and the parity of a field no twin writes.
+  EXPECT_TRUE(killed_by(mutation, "erosion.layered.gpu_flux_unscaled", "ledger.materials.gpu"));
+  EXPECT_TRUE(killed_by(mutation, "erosion.layered.gpu_deposit_without_reserve", "layers.invalid.gpu"));
+  EXPECT_TRUE(
+      killed_by(mutation, "erosion.layered.gpu_types_layers_reversed", "parity.shadow.bedrock_type.gpu_vs_float"));
 }
 TEST(Mutants, ErosionLayeredHToZIsKilled) { expect_every_mutant_killed({"erosion.layered.[h-z]*"}, 0); }
 
@@ -167,6 +172,7 @@ TEST(Mutants, PlanetFamilyIsKilled) {
   }
   expect_killed_near_the_bound(mutation, "planet.jitter.float_off_above_bound", "parity.positions.float_vs_double");
   EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.unwarp_over_tan", "topology.round_trip"));
+  EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_last_seed_missing", "partition.empty_plates.gpu"));
   for (const char* check : {"topology.asymmetric_neighbours", "partition.disconnected_plates.gpu"}) {
     EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.overshoot_doubled", check)) << check;
   }

@@ -16,7 +16,9 @@
 // one_twin: a bug in the GPU twin alone, killed by a parity.shadow.<field>.gpu_vs_float check (bit for
 // bit) or the end of the run's parity.<field>.max_abs.gpu_vs_float (bit for bit); the water's two
 // (previous_after_move, flux_unscaled) each change one field of the water state, previous_water or
-// water_flux, in the step.
+// water_flux, in the step. The GPU's own ledgers and layers.invalid.gpu see those that break what
+// was asked: flux_unscaled creates water and material, deposit_without_reserve overfills the
+// topsoil; types_layers_reversed changes bedrock_type, a field no twin writes, on the GPU.
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -30,6 +32,14 @@ std::vector<Mutant> layered_mutants() {
       {"erosion.layered.gpu_gather_reversed", MutantKind::one_twin,
        "apply.comp sums the arriving fluxes from neighbour 7 down to 0 instead of 0 up to 7: the same terms, other "
        "roundings, which only a bit-exact comparison sees",
+       cone},
+      {"erosion.layered.gpu_deposit_without_reserve", MutantKind::one_twin,
+       "column.glsl's deposit_soil (the GPU alone) adds the arriving material to the topsoil without reserving room "
+       "or pushing the excess down",
+       cone},
+      {"erosion.layered.gpu_types_layers_reversed", MutantKind::one_twin,
+       "the host uploads the bedrock layers' types to the GPU bottom layer first: the soft rock on top reads as the "
+       "hard rock below it",
        cone},
       {"erosion.layered.deposit_without_reserve", MutantKind::both_twins,
        "deposit_soil adds the arriving material to the topsoil without reserving room or pushing the excess down: "

@@ -6,7 +6,9 @@
 //   one_twin    the bug is in one twin only (usually the GPU): the twins disagree, and a parity
 //               check (`parity.*`, or `image.*` where rendered images are compared) must fail, or
 //               the twin disagrees with its own rerun (`determinism.*`: state left over from the
-//               last run, which the first run, the one compared, cannot show);
+//               last run, which the first run, the one compared, cannot show), or the twin's own
+//               ledger or invariant fails (a check of the `.gpu` or `.cpu_float` backend: a GPU bug
+//               that loses material is seen by the GPU's ledger, as an outside implementation's is);
 //   both_twins  the same bug in both twins: they agree with each other, so only a check against
 //               something outside them (ledgers against what was asked, spec vectors, invariants:
 //               `mass.*`, `spec.*`, `mesh.*`, ...) can fail. Parity and determinism checks do not

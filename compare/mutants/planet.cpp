@@ -8,8 +8,9 @@
 // parity.noise.gpu_vs_float (the fBm sampled at the wrong frequency), parity.elevation.float_vs_double
 // (ref<float>'s smoothing in place),
 // image.psnr.gpu_vs_cpu (the rendered planet's colours),
-// determinism.gpu (state carried from one run into the next); and the calibrated pair of the float
-// position model in both float twins, parity.positions.float_vs_double.
+// determinism.gpu (state carried from one run into the next), partition.empty_plates.gpu (the GPU's
+// own partition: a plate left without a seed); and the calibrated pair of the float position model
+// in both float twins, parity.positions.float_vs_double.
 //
 // both_twins: the same bug in the reference and the shader (or in the cube sphere both share),
 // killed by checks against what was asked: spec.expansion_rate.cpu (rings per cycle average to the
@@ -56,6 +57,8 @@ std::vector<Mutant> planet_mutants() {
        "both twins' Jacobi mean sums the region but divides by its neighbours' count only", probe},
       {"planet.mesh.flipped_front_face", MutantKind::both_twins,
        "the planet mesh winds the front face's triangles clockwise, against the other five faces", probe},
+      {"planet.plates.gpu_last_seed_missing", MutantKind::one_twin,
+       "plate_seeds.comp stops one plate short: the last plate gets no seed and no region", probe},
       {"planet.plates.gpu_cycles_carried_over", MutantKind::one_twin,
        "the GPU's growth-cycle count, which keys the expansion draws, is not reset between runs", probe},
       {"planet.plates.gpu_cycle_count_off_by_one", MutantKind::one_twin,

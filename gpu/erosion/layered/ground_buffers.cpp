@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/mutant.hpp"
+
 namespace gt::gpu {
 namespace {
 
@@ -128,6 +130,18 @@ std::size_t bytes_of(const std::vector<T>& values) {
   return values.size() * sizeof(T);
 }
 
+// The bedrock types as the buffer holds them: layer-major, as the ground does. Mutant
+// erosion.layered.gpu_types_layers_reversed: the layers' types uploaded bottom layer first.
+std::vector<std::int32_t> uploaded_types(const LayeredGround<float>& ground) {
+  if (!mutant_active("erosion.layered.gpu_types_layers_reversed")) return ground.bedrock_type;
+  std::vector<std::int32_t> reversed;
+  reversed.reserve(ground.bedrock_type.size());
+  for (int layer = ground.bedrock_layer_count - 1; layer >= 0; --layer) {
+    for (std::size_t c = 0; c < ground.cells(); ++c) reversed.push_back(ground.bedrock_type_at(layer, c));
+  }
+  return reversed;
+}
+
 }  // namespace
 
 ComputeProgram layered_program(const std::string& shader, const std::vector<std::string>& defines) {
@@ -202,7 +216,8 @@ void LayeredGroundBuffers::upload(const LayeredGround<float>& ground) {
   surface_.upload(ground.surface.data(), bytes_of(ground.surface));
   soil_.upload(ground.soil.data(), bytes_of(ground.soil));
   bedrock_.upload(ground.bedrock.data(), bytes_of(ground.bedrock));
-  bedrock_type_.upload(ground.bedrock_type.data(), bytes_of(ground.bedrock_type));
+  const std::vector<std::int32_t> types = uploaded_types(ground);
+  bedrock_type_.upload(types.data(), bytes_of(types));
   vegetation_.upload(ground.vegetation.data(), bytes_of(ground.vegetation));
 }
 

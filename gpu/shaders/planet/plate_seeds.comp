@@ -35,10 +35,18 @@ void place(int k, int region) {
   plates[k].rate = plate_rate(uint(k));
 }
 
+// Mutant planet.plates.gpu_last_seed_missing: the loop stops one plate short, so the last plate
+// has no seed and grows no region.
+#ifdef GT_MUTANT_PLANET_PLATES_GPU_LAST_SEED_MISSING
+const int seeds_placed_short = 1;
+#else
+const int seeds_placed_short = 0;
+#endif
+
 void main() {
   int k = 0, attempt = 0, first_free = 0;
   int step_bound = plate_count * (seed_attempts + 2);
-  for (int step = 0; step < step_bound && k < plate_count; ++step) {
+  for (int step = 0; step < step_bound && k < plate_count - seeds_placed_short; ++step) {
     int region = first_free;
     if (attempt < seed_attempts) {
       region = int(random_u32(seed, uint(k), uint(attempt), PLANET_STREAM_PLATE_SEED) % uint(region_count));

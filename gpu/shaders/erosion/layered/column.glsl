@@ -86,11 +86,18 @@ void organize_horizon(uint c, float needed) {
   }
 }
 
+// Mutants erosion.layered.deposit_without_reserve (both twins) and gpu_deposit_without_reserve
+// (this shader alone): deposit_soil makes no room and pushes nothing down.
+#if defined(GT_MUTANT_EROSION_LAYERED_DEPOSIT_WITHOUT_RESERVE) || \
+    defined(GT_MUTANT_EROSION_LAYERED_GPU_DEPOSIT_WITHOUT_RESERVE)
+#define DEPOSIT_WITHOUT_RESERVE
+#endif
+
 // deposit_soil: reserve room for the whole material, add it to the topsoil, push the excess down.
 void deposit_soil(uint c, float material[5]) {
   float total = composition_total(material);
   if (total <= 0.0) return;
-#ifndef GT_MUTANT_EROSION_LAYERED_DEPOSIT_WITHOUT_RESERVE
+#ifndef DEPOSIT_WITHOUT_RESERVE
   organize_horizon(c, total);
 #endif
   for (int i = 0; i < COMPONENTS; ++i) {
@@ -98,7 +105,7 @@ void deposit_soil(uint c, float material[5]) {
     precise float sum = soil[at] + material[i];
     soil[at] = sum;
   }
-#ifndef GT_MUTANT_EROSION_LAYERED_DEPOSIT_WITHOUT_RESERVE
+#ifndef DEPOSIT_WITHOUT_RESERVE
   organize_horizon(c, 0.0);
 #endif
   precise float raised = surface[c] + total;
