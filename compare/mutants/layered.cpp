@@ -49,6 +49,19 @@ std::vector<Mutant> layered_mutants() {
        "remove_soil takes the material from the layers but leaves the surface height where it was", cone},
       {"erosion.layered.flux_components_shifted", MutantKind::both_twins,
        "the soil–rock flux delivers each component as the next one (organic as sand, ..., boulders as organic)", cone},
+      {"erosion.layered.diagonal_arrivals_dropped", MutantKind::both_twins,
+       "talus and creep gather what arrives from the 4 edge neighbours only: what the diagonal ones send is lost",
+       cone},
+      // The calibrated pair of the float ledger's model (S·R·2u of the volume, 72u a dry step), in both
+      // float twins so that only their ledgers against what was asked can see it: a creep and a talus
+      // pass a step lose 2·2^-16 of the volume (7.1 times the bound) or 2·2^-22 (0.11 times).
+      {"erosion.layered.float_leak_above_bound", MutantKind::one_twin,
+       "ref<float> and the GPU keep 1 − 2^-16 of every stored thickness after each creep and talus pass", cone},
+      {.name = "erosion.layered.float_leak_below_bound",
+       .kind = MutantKind::one_twin,
+       .description = "ref<float> and the GPU keep 1 − 2^-22 of every stored thickness after each creep and talus pass",
+       .cases = cone,
+       .must_survive = true},
       {"erosion.layered.repose_doubled", MutantKind::both_twins,
        "talus takes every soil layer's repose slope twice as steep as eq. 3.1 gives", cone},
       {"erosion.layered.weathering_loses_organic", MutantKind::both_twins,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <type_traits>
 
 #include "core/mutant.hpp"
 #include "core/rng.hpp"
@@ -56,7 +57,9 @@ template <class Real>
 Composition<Real> gather(const LayeredGround<Real>& before, const Outflows<Real>& outflows, const LayeredParams& params,
                          int x, int y, LayeredConversions& conversions) {
   Composition<Real> arriving{};
-  for (int k = 0; k < layered_neighbour_count; ++k) {
+  // Mutant erosion.layered.diagonal_arrivals_dropped: only the 4 edge neighbours (k < 4) are gathered.
+  const int gathered = mutant_active("erosion.layered.diagonal_arrivals_dropped") ? 4 : layered_neighbour_count;
+  for (int k = 0; k < gathered; ++k) {
     const auto n = layered_neighbour(before, params.border, x, y, k);
     if (!n) continue;
     const Real amount = outflows[*n][static_cast<std::size_t>(k ^ 1)];
@@ -65,6 +68,22 @@ Composition<Real> gather(const LayeredGround<Real>& before, const Outflows<Real>
     for (std::size_t i = 0; i < carried.size(); ++i) arriving[i] += carried[i];
   }
   return arriving;
+}
+
+// The calibrated pair of the float ledger's model (ledger.* in compare/algorithms/layered.cpp:
+// 2u·R = 72u of the volume a step, dry), in both float twins (apply.comp alike): every stored
+// thickness times 1 − 2^-16 after each creep and talus pass (2^-16/72u = 3.6 times the bound a pass;
+// a dry step runs both: 7.1 times) or 1 − 2^-22 (0.11 times a step).
+template <class Real>
+void calibrated_leak(LayeredGround<Real>& ground) {
+  if constexpr (std::is_same_v<Real, float>) {
+    const float kept = mutant_active("erosion.layered.float_leak_above_bound")   ? 1.0f - 0x1p-16f
+                       : mutant_active("erosion.layered.float_leak_below_bound") ? 1.0f - 0x1p-22f
+                                                                                  : 1.0f;
+    if (kept == 1.0f) return;
+    for (float& thickness : ground.soil) thickness *= kept;
+    for (float& thickness : ground.bedrock) thickness *= kept;
+  }
 }
 
 }  // namespace
@@ -111,6 +130,7 @@ void apply_outflows(LayeredGround<Real>& ground, const Outflows<Real>& outflows,
       if (clear_vegetation && (received || outflow > Real(0))) ground.vegetation[c] = Real(0);
     }
   }
+  calibrated_leak(ground);
 }
 
 #define GT_LAYERED_TRANSFER_INSTANTIATE(Real)                                                              \

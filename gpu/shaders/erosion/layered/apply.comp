@@ -54,6 +54,9 @@ void gather(ivec2 cell, inout vec4 into, out float arriving[5]) {
 #else
     int k = order;
 #endif
+#ifdef GT_MUTANT_EROSION_LAYERED_DIAGONAL_ARRIVALS_DROPPED
+    if (k >= 4) continue;  // mutant (both twins): the diagonal neighbours' arrivals never gathered
+#endif
     int n = neighbour(cell, k);
     if (n < 0) continue;
     float amount = outflow[uint(NEIGHBOURS) * uint(n) + uint(k ^ 1)];
@@ -70,6 +73,33 @@ void gather(ivec2 cell, inout vec4 into, out float arriving[5]) {
 float layer_thickness_before(int layer, uint c) {
   return layer < SOIL_LAYERS ? soil_thickness(SNAPSHOT, layer, c)
                              : bedrock[bedrock_at(SNAPSHOT, layer - SOIL_LAYERS, c)];
+}
+
+// The calibrated pair of the float ledger's model, in both float twins (reference/erosion/layered/
+// transfer.cpp's calibrated_leak alike): every stored thickness of the column times 1 − 2^-16
+// (above the bound) or 1 − 2^-22 (below it) after the pass.
+#if defined(GT_MUTANT_EROSION_LAYERED_FLOAT_LEAK_ABOVE_BOUND)
+const float kept_share = 1.0 - 1.0 / 65536.0;
+#elif defined(GT_MUTANT_EROSION_LAYERED_FLOAT_LEAK_BELOW_BOUND)
+const float kept_share = 1.0 - 1.0 / 4194304.0;
+#else
+const float kept_share = 1.0;
+#endif
+
+void calibrated_leak(uint c) {
+  if (kept_share == 1.0) return;
+  for (int layer = 0; layer < SOIL_LAYERS; ++layer) {
+    for (int i = 0; i < COMPONENTS; ++i) {
+      uint at = soil_at(CURRENT, layer, i, c);
+      precise float kept = soil[at] * kept_share;
+      soil[at] = kept;
+    }
+  }
+  for (int layer = 0; layer < bedrock_layer_count; ++layer) {
+    uint at = bedrock_at(CURRENT, layer, c);
+    precise float kept = bedrock[at] * kept_share;
+    bedrock[at] = kept;
+  }
 }
 
 void main() {
@@ -92,5 +122,6 @@ void main() {
 #ifdef LAYERED_CLEAR_VEGETATION
   if (received || given > 0.0) vegetation[c] = 0.0;
 #endif
+  calibrated_leak(c);
   conversions[c] = ColumnConversion(into, rock, rock_layer >= 0 ? type_at(rock_layer, c) : 0);
 }
