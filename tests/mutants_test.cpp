@@ -1,8 +1,9 @@
 // The mutation score (issue 11): every registered mutant, run on its cases in a worker process, is
 // killed by a check of the kind meant for it (parity or image checks, or the twin's own ledgers and
-// invariants, for one-twin mutants; ledger, spec and invariant checks for both-twins ones), a must-survive calibration mutant (below its
-// error model's bound) survives, and the same cases pass unmutated. One test per
-// family, so that ctest runs them side by side; `groundtruth mutants` is run as a user runs it.
+// invariants, for one-twin mutants; ledger, spec and invariant checks for both-twins ones), a
+// must-survive calibration mutant (below its error model's bound) survives, and the same cases
+// pass unmutated. One test per family, so that ctest runs them side by side; `groundtruth mutants`
+// is run as a user runs it.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -124,6 +125,8 @@ TEST(Mutants, ErosionPipeIsKilled) {
     EXPECT_TRUE(killed_by(mutation, mutant, "erosion.pipe.flux.volcano: spec.step.terrain.cpu")) << mutant;
   }
   EXPECT_TRUE(killed_by(mutation, "erosion.pipe.rates_swapped", "spec.step.sediment.cpu"));
+  EXPECT_TRUE(
+      killed_by(mutation, "erosion.pipe.regolith_deepest", "erosion.pipe.seed001.volcano: spec.step.regolith.cpu"));
   expect_killed_near_the_bound(mutation, "erosion.pipe.capacity_off_above_bound", "spec.step.terrain.cpu");
   expect_killed_near_the_bound(mutation, "erosion.pipe.velocity_off_above_bound",
                                "erosion.pipe.mutant_probe.flux: parity.shadow.velocity_x.gpu_vs_float");
@@ -165,7 +168,10 @@ TEST(Mutants, CaveFamilyIsKilled) {
   expect_killed_near_the_bound(mutation, "cave.marching_tetrahedra.float_density_off_above_bound",
                                "parity.density.float_vs_double");
 }
-TEST(Mutants, RenderFamilyIsKilled) { expect_every_mutant_killed({"render.*"}); }
+TEST(Mutants, RenderFamilyIsKilled) {
+  const json mutation = expect_every_mutant_killed({"render.*"});
+  EXPECT_TRUE(killed_by(mutation, "render.phong.camera_faces_away", "image.uncovered_share.cpu"));
+}
 TEST(Mutants, PlanetFamilyIsKilled) {
   const json mutation = expect_every_mutant_killed({"planet.*"});
   for (const char* check : {"mesh.degenerate.planet", "mesh.duplicates.planet", "topology.mesh_vertices"}) {
@@ -174,6 +180,11 @@ TEST(Mutants, PlanetFamilyIsKilled) {
   expect_killed_near_the_bound(mutation, "planet.jitter.float_off_above_bound", "parity.positions.float_vs_double");
   EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.unwarp_over_tan", "topology.round_trip"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_last_seed_missing", "partition.empty_plates.gpu"));
+  EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_counts_visits", "partition.unassigned.gpu"));
+  EXPECT_TRUE(killed_by(mutation, "planet.plates.seeds_repeat", "partition.empty_plates.cpu"));
+  EXPECT_TRUE(killed_by(mutation, "planet.plates.seeds_counted_twice", "partition.unassigned.cpu"));
+  // The case then errors (the drawing refuses the mesh), after the mesh checks have failed.
+  EXPECT_TRUE(killed_by(mutation, "planet.mesh.index_after_push", "mesh.invalid.planet"));
   for (const char* check : {"topology.asymmetric_neighbours", "partition.disconnected_plates.gpu"}) {
     EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.overshoot_doubled", check)) << check;
   }

@@ -260,6 +260,25 @@ TEST(PlanetElevation, WithoutNoiseAndCollisionsEveryRegionHasItsPlatesBaseAndJac
   }
 }
 
+// A partition with a region left without a plate (or naming a plate that does not exist) is refused
+// with the region named: the elevation indexes the plates by it.
+TEST(PlanetElevation, APartitionThatIsNotWholeIsRefused) {
+  const CubeSphere sphere(6);
+  const PlanetParams params = params_of(6, 4);
+  const auto regions = reference::jitter_regions<double>(sphere, params);
+  for (const std::int32_t wrong : {std::int32_t{-1}, std::int32_t{4}}) {
+    auto partition = reference::grow_plates(sphere, params);
+    partition.plate[17] = wrong;
+    try {
+      reference::planet_elevation(sphere, params, regions.positions, partition);
+      ADD_FAILURE() << "plate " << wrong << " was accepted";
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("region 17 has plate " + std::to_string(wrong)), std::string::npos)
+          << error.what();
+    }
+  }
+}
+
 // The code's blend (§4.4.3): in index order, e = E(i), then e = (e + E(n))/2 for up, upLeft, left,
 // downLeft, down, downRight, right, upRight, so with 8 neighbours the weights are up 1/256, upLeft
 // 1/128, left 1/64, downLeft 1/32, down 1/16, downRight 1/8, right 1/4, upRight 1/2 (self 1/256),

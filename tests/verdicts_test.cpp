@@ -250,6 +250,10 @@ TEST(MutantRegistry, EachKindIsKilledOnlyByTheChecksMeantForIt) {
   EXPECT_TRUE(gt::check_kind_kills(MutantKind::both_twins, "mass.water_added.cpu"));
   EXPECT_TRUE(gt::check_kind_kills(MutantKind::both_twins, "spec.points.cpu"));
   EXPECT_FALSE(gt::check_kind_kills(MutantKind::both_twins, "parity.max_abs.gpu_vs_float"));
+  EXPECT_FALSE(gt::check_kind_kills(MutantKind::both_twins, "image.psnr.gpu_vs_cpu"));
+  // One picture against what was asked (the camera must see rock), not a comparison of the twins.
+  EXPECT_TRUE(gt::check_kind_kills(MutantKind::both_twins, "image.uncovered_share.cpu"));
+  EXPECT_FALSE(gt::check_kind_kills(MutantKind::one_twin, "image.uncovered_share.cpu"));
   EXPECT_FALSE(gt::check_kind_kills(MutantKind::both_twins, "determinism.gpu"));
 }
 

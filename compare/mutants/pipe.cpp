@@ -84,6 +84,10 @@ std::vector<Mutant> pipe_mutants() {
        "the tilt's central difference b(x+1) − b(x−1) divided by l, not 2l (core/params/hydraulic.cpp's tilt_span, "
        "which both twins read): sin α about twice too large on gentle slopes, material still conserved",
        flux_probe_and_volcano},
+      {"erosion.pipe.regolith_deepest", MutantKind::both_twins,
+       "r_max = max(d_B, K_r) instead of min (ref regolith_exchange, pipes_flow.comp): the water loosens the bed "
+       "down to its own depth, material still conserved",
+       {"erosion.pipe.seed001.volcano"}},
       // The calibrated pair of the spec step's error model (rounding-interval widths at double's
       // unit): on the probe a capacity 2^-41 too large lands at 5.3 times the bound of
       // spec.step.terrain.cpu (2^-40: 10 times, 2^-38: 42 times) and must be killed; 2^-52, one

@@ -1,5 +1,6 @@
 // Mutants of seed 002's planet twins (planet.earth_like); see compare/mutants/mutants.hpp. Each runs
-// on the small planet.mutant_probe.r12 case (R = 12, 20 plates).
+// on the small planet.mutant_probe.r12 case (R = 12, 20 plates), seeds_repeat on the same planet
+// with seed 3 (its first seed draws repeat a region).
 //
 // one_twin: bugs in the GPU twin only, killed by the parity checks: parity.offsets.gpu_vs_float
 // (any bit), parity.plates.gpu_vs_cpu (any region), parity.collision.gpu_vs_float (a sign flips a
@@ -8,15 +9,19 @@
 // parity.noise.gpu_vs_float (the fBm sampled at the wrong frequency), parity.elevation.float_vs_double
 // (ref<float>'s smoothing in place),
 // image.psnr.gpu_vs_cpu (the rendered planet's colours),
-// determinism.gpu (state carried from one run into the next), partition.empty_plates.gpu (the GPU's
-// own partition: a plate left without a seed); and the calibrated pair of the float position model
-// in both float twins, parity.positions.float_vs_double.
+// determinism.gpu (state carried from one run into the next), partition.empty_plates.gpu and
+// partition.unassigned.gpu (the GPU's own partition: a plate left without a seed, a growth stopped
+// on a count too high); and the calibrated pair of the float position model in both float twins,
+// parity.positions.float_vs_double.
 //
 // both_twins: the same bug in the reference and the shader (or in the cube sphere both share),
 // killed by checks against what was asked: spec.expansion_rate.cpu (rings per cycle average to the
 // rate), spec.smoothing_constant.cpu (the mean of a constant), spec.pressure_symmetry.cpu (the
 // pressure of a pair both ways), partition.edge_definition.cpu (is_edge against its definition,
 // written apart), partition.disconnected_plates.* (a plate grows through its own neighbours only),
+// partition.empty_plates.* (a seed placed on another's region), partition.unassigned.cpu (a fill
+// stopped early; the elevation then refuses the partition), mesh.invalid.planet (an index past
+// the vertices: the drawing then refuses the mesh, after the mesh checks have spoken),
 // topology.* (neighbour counts and symmetry of the shared table, the map's round trip),
 // mesh.*.planet (the planet mesh's orientation).
 #include "compare/mutants/mutants.hpp"
@@ -51,6 +56,14 @@ std::vector<Mutant> planet_mutants() {
        "both twins grow ceil(rate) rings a cycle (the extra ring's draw can never win)", probe},
       {"planet.collision.neighbour_sign", MutantKind::both_twins,
        "both twins project the neighbour's chord on d instead of −d in the code's pressure", probe},
+      {"planet.plates.seeds_repeat", MutantKind::both_twins,
+       "both twins take each plate's first seed draw whether or not an earlier plate holds the region (§9.2's "
+       "seeds are distinct): a later plate takes the region over and the earlier one is left empty",
+       {"planet.mutant_probe.r12_seed3"}},
+      {"planet.plates.seeds_counted_twice", MutantKind::both_twins,
+       "both twins count the seeds as assigned twice when the fill starts: it stops with regions still without a "
+       "plate",
+       probe},
       {"planet.plates.edges_without_diagonals", MutantKind::both_twins,
        "both twins flag a region as an edge only from its 4 cardinal neighbours, not all 8", probe},
       {"planet.smoothing.count_without_self", MutantKind::both_twins,
@@ -59,6 +72,10 @@ std::vector<Mutant> planet_mutants() {
        "the planet mesh winds the front face's triangles clockwise, against the other five faces", probe},
       {"planet.plates.gpu_last_seed_missing", MutantKind::one_twin,
        "plate_seeds.comp stops one plate short: the last plate gets no seed and no region", probe},
+      {"planet.plates.gpu_counts_visits", MutantKind::one_twin,
+       "plate_claim.comp adds to the assigned count for every region it visits without a plate, claimed or not: "
+       "the host stops the growth with regions still unassigned",
+       probe},
       {"planet.plates.gpu_cycles_carried_over", MutantKind::one_twin,
        "the GPU's growth-cycle count, which keys the expansion draws, is not reset between runs", probe},
       {"planet.plates.gpu_cycle_count_off_by_one", MutantKind::one_twin,
@@ -71,6 +88,10 @@ std::vector<Mutant> planet_mutants() {
        probe},
       {"planet.mesh.key_without_z", MutantKind::both_twins,
        "the planet mesh welds its corners on (X, Y) alone: corners that differ only in Z become one vertex", probe},
+      {"planet.mesh.index_after_push", MutantKind::both_twins,
+       "the planet mesh gives a new corner the vertex count after adding it as its index, one past its own: the "
+       "last corner's triangles name a vertex that does not exist",
+       probe},
       {"planet.cube_sphere.unwarp_over_tan", MutantKind::both_twins,
        "the inverse warp divides by tan θ instead of θ (core/planet/cube_sphere.cpp, which both twins share)", probe},
       {"planet.cube_sphere.overshoot_doubled", MutantKind::both_twins,

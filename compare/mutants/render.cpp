@@ -44,6 +44,11 @@ std::vector<Mutant> render_mutants() {
        "both twins: the two-sided normal turned away from the viewer instead of towards it", quad},
       {"render.phong.vertical_flip", MutantKind::both_twins,
        "both twins: the picture upside down (reference rows read bottom first, GL clip y negated)", quad},
+      // The camera inside the cave must see rock on 95 % of the picture (image.uncovered_share.cpu):
+      // looking back along the tunnel it sees out of the block.
+      {"render.phong.camera_faces_away", MutantKind::both_twins,
+       "both twins: the look-at's forward direction taken from the target to the eye (the camera looks away)",
+       {"render.cave.tunnel.start"}},
       {"render.heightmap_from_mesh.lowest_surface", MutantKind::both_twins,
        "both twins: the depth is 1 - z' (the box seen from below), so the lowest surface is kept", tent},
       {"render.heightmap_from_mesh.rows_flipped", MutantKind::both_twins,

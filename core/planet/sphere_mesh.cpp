@@ -22,6 +22,9 @@ Mesh sphere_mesh(const CubeSphere& sphere) {
   // Mutant planet.mesh.key_without_z: the weld keyed on (X, Y) alone, so corners that differ only
   // in Z are one vertex.
   const bool key_without_z = mutant_active("planet.mesh.key_without_z");
+  // Mutant planet.mesh.index_after_push: a new corner's index is the vertex count once it is added
+  // (one past its own), so the last corner's triangles name a vertex that does not exist.
+  const std::uint32_t index_shift = mutant_active("planet.mesh.index_after_push") ? 1 : 0;
   const auto corner = [&](int face, int x, int y) {
     const FaceMatrix& matrix = face_matrix(static_cast<CubeFace>(face));
     const std::array<int, 3> face_space{2 * x - resolution, resolution - 2 * y, resolution};
@@ -30,7 +33,8 @@ Mesh sphere_mesh(const CubeSphere& sphere) {
       for (int column = 0; column < 3; ++column) lattice[row] += matrix[row][column] * face_space[column];
     }
     const std::array<int, 3> key{lattice[0], lattice[1], key_without_z ? 0 : lattice[2]};
-    const auto [found, inserted] = welded.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+    const auto [found, inserted] =
+        welded.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()) + index_shift);
     if (inserted) {
       const Vec3 warped{warp(double(lattice[0]) / resolution), warp(double(lattice[1]) / resolution),
                         warp(double(lattice[2]) / resolution)};

@@ -517,9 +517,13 @@ void PipeErosion<Real>::regolith_exchange() {
   const Real most = static_cast<Real>(constants_.regolith_depth);
   const Real dissolving = static_cast<Real>(constants_.regolith_dissolving_fraction);
   const Real deposition = static_cast<Real>(constants_.regolith_deposition_fraction);
+  // Mutant erosion.pipe.regolith_deepest (both twins): r_max = max(d_B, K_r), the water loosens
+  // the bed down to its own depth.
+  const bool deepest = mutant_active("erosion.pipe.regolith_deepest");
   for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
     if (!terrain.is_valid(cell)) continue;
-    const Real loosened = min(state_.water.values[cell], most);
+    const Real depth = state_.water.values[cell];
+    const Real loosened = deepest ? max(depth, most) : min(depth, most);
     const Real held = regolith[cell];
     const Real moved = held < loosened ? dissolving * (loosened - held) : -(deposition * (held - loosened));
     state_.terrain.values[cell] = terrain.values[cell] - moved;

@@ -3,7 +3,10 @@
 #include "reference/planet/elevation.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <type_traits>
+
+#include <fmt/format.h>
 
 #include "core/mutant.hpp"
 #include "core/noise/permutation.hpp"
@@ -14,6 +17,18 @@
 
 namespace gt::reference {
 namespace {
+
+// Every region's plate must name one of the P plates: the steps below index the plates by it.
+void require_whole(const PlanetParams& params, const PlatePartition& partition) {
+  for (std::size_t region = 0; region < partition.plate.size(); ++region) {
+    const std::int32_t plate = partition.plate[region];
+    if (plate < 0 || plate >= params.plates) {
+      throw std::invalid_argument(fmt::format("planet elevation: region {} has plate {}, not one of 0..{} (the "
+                                              "partition is not whole: see partition.unassigned)",
+                                              region, plate, params.plates - 1));
+    }
+  }
+}
 
 template <class Real>
 Real dot3(const Vector3<Real>& a, const Vector3<Real>& b) {
@@ -210,6 +225,7 @@ Real pressure(PressureFormula formula, const Vector3<Real>& position, const Vect
 template <class Real>
 PlanetElevation<Real> planet_elevation(const CubeSphere& sphere, const PlanetParams& params,
                                        const std::vector<Real>& positions, const PlatePartition& partition) {
+  require_whole(params, partition);
   PlanetElevation<Real> result;
   result.motion = plate_motion(params, positions, partition);
   result.noisy = noisy_elevation(params, positions, partition, result.motion.base);

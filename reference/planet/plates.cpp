@@ -58,7 +58,14 @@ PlatePartition grow_synchronously(const CubeSphere& sphere, const PlanetParams& 
   partition.plate = seeded_plates(params);
   const auto rates = plate_rates(params);
   const int max_expansions = plate_rate_bounds(params).max_expansions;
-  std::size_t unassigned = partition.plate.size() - static_cast<std::size_t>(params.plates);
+  // Counted, not taken as N − P: a seed placed twice (planet.plates.seeds_repeat) leaves one more.
+  // Mutant planet.plates.seeds_counted_twice (both twins): the seeds counted again as the fill
+  // starts, so it stops with P regions still unassigned.
+  const std::size_t counted_again =
+      mutant_active("planet.plates.seeds_counted_twice") ? static_cast<std::size_t>(params.plates) : 0;
+  std::size_t unassigned =
+      static_cast<std::size_t>(std::count(partition.plate.begin(), partition.plate.end(), invalid_region));
+  unassigned -= std::min(unassigned, counted_again);
   std::vector<std::uint8_t> on_frontier(partition.plate.size(), 0);
   std::vector<std::size_t> frontier, claimed;
   const auto seeds = plate_seeds(params);
@@ -80,7 +87,7 @@ PlatePartition grow_synchronously(const CubeSphere& sphere, const PlanetParams& 
         partition.plate[region] = owner;
         claimed.push_back(region);
       }
-      unassigned -= claims.size();
+      unassigned -= std::min(unassigned, claims.size());
       std::erase_if(frontier, [&](std::size_t region) { return partition.plate[region] != invalid_region; });
       extend_frontier(sphere, partition.plate, claimed, on_frontier, frontier);
     }
@@ -188,7 +195,8 @@ std::vector<std::int32_t> plate_seeds(const PlanetParams& params) {
       const std::uint32_t candidate = random_u32(params.seed, static_cast<std::uint32_t>(plate),
                                                  static_cast<std::uint32_t>(attempt), planet_stream_plate_seed) %
                                       region_count;
-      if (!taken[candidate]) region = candidate;
+      // Mutant planet.plates.seeds_repeat (both twins): the first draw is taken, free or not.
+      if (!taken[candidate] || mutant_active("planet.plates.seeds_repeat")) region = candidate;
     }
     if (region == region_count) region = static_cast<std::uint32_t>(std::find(taken.begin(), taken.end(), false) - taken.begin());
     taken[region] = true;

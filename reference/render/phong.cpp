@@ -166,7 +166,10 @@ RasterInput clip_input(const PhongScene& scene) {
 
 Matrix4 view_matrix(const Camera& camera) {
   require_valid(camera);
-  const Vec3 forward = normalised(camera.target - camera.eye);
+  // Mutant render.phong.camera_faces_away (both twins: they draw with this matrix): the forward
+  // direction taken from the target to the eye, so the camera looks away from what it was aimed at.
+  const Vec3 forward = mutant_active("render.phong.camera_faces_away") ? normalised(camera.eye - camera.target)
+                                                                       : normalised(camera.target - camera.eye);
   const Vec3 right = normalised(cross(forward, camera.up));
   const Vec3 up = cross(right, forward);
   return {right[0],    right[1],    right[2],    -dot(right, camera.eye),   //

@@ -161,7 +161,11 @@ void main() {
 
 #ifdef REGOLITH
   // 5b regolith exchange, after the erosion's terrain change
+#ifdef GT_MUTANT_EROSION_PIPE_REGOLITH_DEEPEST
+  precise float loosened = ref_max(depth, regolith_depth);  // mutant (both twins): r_max = max(d_B, K_r)
+#else
   precise float loosened = ref_min(depth, regolith_depth);
+#endif
   precise float held = regolith[index];
   precise float exchanged;
   if (held < loosened) {

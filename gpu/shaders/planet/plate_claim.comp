@@ -37,7 +37,11 @@ void main() {
   int owner = plate[region];
   if (owner < 0) {
     owner = lowest_active_neighbour_plate(region);
+#ifdef GT_MUTANT_PLANET_PLATES_GPU_COUNTS_VISITS
+    atomicAdd(assigned_count, 1u);  // mutant (this twin alone): every visit counted, claimed or not
+#else
     if (owner >= 0) atomicAdd(assigned_count, 1u);
+#endif
   }
   plate_next[region] = owner;
 }

@@ -55,10 +55,16 @@ void main() {
       ++first_free;
       continue;
     }
-    if (plate[region] >= 0) continue;
+#ifndef GT_MUTANT_PLANET_PLATES_SEEDS_REPEAT
+    if (plate[region] >= 0) continue;  // mutant (both twins): the first draw is taken, free or not
+#endif
     place(k, region);
     ++k;
     attempt = 0;
   }
+#ifdef GT_MUTANT_PLANET_PLATES_SEEDS_COUNTED_TWICE
+  assigned_count = 2u * uint(k);  // mutant (both twins): the seeds counted twice, the fill stops P early
+#else
   assigned_count = uint(k);
+#endif
 }
