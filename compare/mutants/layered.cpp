@@ -62,6 +62,15 @@ std::vector<Mutant> layered_mutants() {
        .description = "ref<float> and the GPU keep 1 − 2^-22 of every stored thickness after each creep and talus pass",
        .cases = cone,
        .must_survive = true},
+      // The calibrated pair of ledger.conversions' model (32u of what was converted out and in):
+      // fragments 2^-16 short are 2^-16/64u = 4 times it where fragmentation is all that converts.
+      {"erosion.layered.fragments_short_above_bound", MutantKind::one_twin,
+       "ref<float> and the GPU break fallen rock into 1 − 2^-16 of its volume", cliff},
+      {.name = "erosion.layered.fragments_short_below_bound",
+       .kind = MutantKind::one_twin,
+       .description = "ref<float> and the GPU break fallen rock into 1 − 2^-22 of its volume",
+       .cases = cliff,
+       .must_survive = true},
       {"erosion.layered.repose_doubled", MutantKind::both_twins,
        "talus takes every soil layer's repose slope twice as steep as eq. 3.1 gives", cone},
       {"erosion.layered.weathering_loses_organic", MutantKind::both_twins,

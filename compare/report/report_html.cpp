@@ -625,8 +625,8 @@ void append_mutation(std::string& out, const Report& report) {
   out += fmt::format(
       "<section class=\"mutation\" id=\"mutants\">\n<h2>Mutants</h2>\n<p>Mutation score <span class=\"badge {}\">{} of {} killed "
       "({:.0f} %)</span>. Each mutant is a deliberate bug run on its cases in a worker process; a one-twin mutant "
-      "must be killed by a parity or image check, a both-twins mutant by any other kind (ledgers, spec vectors, "
-      "invariants).</p>\n",
+      "must be killed by a check comparing the twins (parity, pictures, reruns) or by the mutated twin's own ledger "
+      "or invariant, a both-twins mutant by a check against what was asked (ledgers, spec vectors, invariants).</p>\n",
       mutation.passed() ? "pass" : "fail", mutation.killed(), mutation.bugs(), 100.0 * mutation.score());
   append_specificity(out, mutation);
   out += "<table>\n<tr><th>family</th><th>cases unmutated</th><th>problems</th></tr>\n";

@@ -3,6 +3,7 @@
 #include "reference/erosion/layered/column.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "core/mutant.hpp"
 
@@ -33,6 +34,18 @@ void take_from_soil_layer(LayeredGround<Real>& ground, int layer, std::size_t c,
   const Composition<Real> taken = take_share(ground, layer, c, whole_layer ? Real(1) : left / thickness);
   for (std::size_t i = 0; i < taken.size(); ++i) removed[i] += taken[i];
   left = whole_layer ? left - thickness : Real(0);
+}
+
+// The calibrated pair of ledger.conversions' model (32u of what was converted, counted out and in:
+// 64u of it), in both float twins (column.glsl alike): the rock breaks into 1 − 2^-16 of itself,
+// 2^-16/64u = 4 times the bound where fragmentation is all that converts, or 1 − 2^-22 (1/16).
+template <class Real>
+Real calibrated_broken(Real amount) {
+  if constexpr (std::is_same_v<Real, float>) {
+    if (mutant_active("erosion.layered.fragments_short_above_bound")) return amount * (1.0f - 0x1p-16f);
+    if (mutant_active("erosion.layered.fragments_short_below_bound")) return amount * (1.0f - 0x1p-22f);
+  }
+  return amount;
 }
 
 }  // namespace
@@ -90,16 +103,17 @@ Removed<Real> remove_soil(LayeredGround<Real>& ground, std::size_t c, Real amoun
 
 template <class Real>
 Composition<Real> fragments(const BedrockType& type, Real amount) {
+  const Real broken = calibrated_broken(amount);
   Composition<Real> out{};
   Real given = 0;
   for (int size = 0; size + 1 < fragment_size_count; ++size) {
-    const Real part = static_cast<Real>(type.fragments[static_cast<std::size_t>(size)]) * amount;
+    const Real part = static_cast<Real>(type.fragments[static_cast<std::size_t>(size)]) * broken;
     out[static_cast<std::size_t>(size + 1)] = part;
     given += part;
   }
   // Mutant: the boulders' remainder is lost.
   out[fragment_size_count] = mutant_active("erosion.layered.fragments_without_boulders") ? Real(0)
-                                                                                          : std::max(amount - given, Real(0));
+                                                                                          : std::max(broken - given, Real(0));
   return out;
 }
 

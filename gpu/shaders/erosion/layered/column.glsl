@@ -112,16 +112,28 @@ void deposit_soil(uint c, float material[5]) {
   surface[c] = raised;
 }
 
+// The calibrated pair of ledger.conversions' model, in both float twins (reference/erosion/
+// layered/column.cpp's calibrated_broken alike): the rock breaks into 1 − 2^-16 (above the bound)
+// or 1 − 2^-22 (below it) of itself.
+#if defined(GT_MUTANT_EROSION_LAYERED_FRAGMENTS_SHORT_ABOVE_BOUND)
+const float broken_share = 1.0 - 1.0 / 65536.0;
+#elif defined(GT_MUTANT_EROSION_LAYERED_FRAGMENTS_SHORT_BELOW_BOUND)
+const float broken_share = 1.0 - 1.0 / 4194304.0;
+#else
+const float broken_share = 1.0;
+#endif
+
 // fragments(type, amount): sand, gravel, stones by K_rock, boulders the remainder.
 void fragments(int type, float amount, out float broken[5]) {
+  precise float whole = amount * broken_share;
   precise float given = 0.0;
   broken[0] = 0.0;
   for (int size = 0; size < 3; ++size) {
-    precise float part = bedrock_types[type].fragments[size] * amount;
+    precise float part = bedrock_types[type].fragments[size] * whole;
     broken[size + 1] = part;
     given += part;
   }
-  precise float rest = amount - given;
+  precise float rest = whole - given;
 #ifdef GT_MUTANT_EROSION_LAYERED_FRAGMENTS_WITHOUT_BOULDERS
   broken[4] = 0.0;
 #else
