@@ -62,6 +62,7 @@
 #include <filesystem>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -901,11 +902,15 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
   add_topology_checks(sphere, result);
   add_mesh_checks(sphere, result);
   if (options.progress) options.progress->stage("CPU reference (double)");
-  // The partition's checks before the run that needs it whole: its elevation refuses a region
-  // without a plate, and the checks say why.
-  add_partition_checks(sphere, params, reference::grow_plates(sphere, params), "cpu", result);
   Planet<double> planet;
-  time_cpu(std::max(options.cpu_reps, 1), [&] { planet = generate<double>(sphere, params); }, result.timings);
+  try {
+    time_cpu(std::max(options.cpu_reps, 1), [&] { planet = generate<double>(sphere, params); }, result.timings);
+  } catch (const std::invalid_argument&) {
+    // The elevation refuses a partition that is not whole: its checks say why before the case errs.
+    add_partition_checks(sphere, params, reference::grow_plates(sphere, params), "cpu", result);
+    throw;
+  }
+  add_partition_checks(sphere, params, planet.partition, "cpu", result);
   add_expansion_rate_check(twins, result);
   add_smoothing_check(sphere, result);
   add_pressure_symmetry_check(sphere, params, planet, result);

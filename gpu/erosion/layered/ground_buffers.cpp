@@ -130,10 +130,9 @@ std::size_t bytes_of(const std::vector<T>& values) {
   return values.size() * sizeof(T);
 }
 
-// The bedrock types as the buffer holds them: layer-major, as the ground does. Mutant
-// erosion.layered.gpu_types_layers_reversed: the layers' types uploaded bottom layer first.
-std::vector<std::int32_t> uploaded_types(const LayeredGround<float>& ground) {
-  if (!mutant_active("erosion.layered.gpu_types_layers_reversed")) return ground.bedrock_type;
+// The bedrock types layer-major with the bottom layer first (the ground holds the top one first):
+// mutant erosion.layered.gpu_types_layers_reversed's upload.
+std::vector<std::int32_t> types_bottom_layer_first(const LayeredGround<float>& ground) {
   std::vector<std::int32_t> reversed;
   reversed.reserve(ground.bedrock_type.size());
   for (int layer = ground.bedrock_layer_count - 1; layer >= 0; --layer) {
@@ -216,8 +215,12 @@ void LayeredGroundBuffers::upload(const LayeredGround<float>& ground) {
   surface_.upload(ground.surface.data(), bytes_of(ground.surface));
   soil_.upload(ground.soil.data(), bytes_of(ground.soil));
   bedrock_.upload(ground.bedrock.data(), bytes_of(ground.bedrock));
-  const std::vector<std::int32_t> types = uploaded_types(ground);
-  bedrock_type_.upload(types.data(), bytes_of(types));
+  if (mutant_active("erosion.layered.gpu_types_layers_reversed")) {
+    const std::vector<std::int32_t> reversed = types_bottom_layer_first(ground);
+    bedrock_type_.upload(reversed.data(), bytes_of(reversed));
+  } else {
+    bedrock_type_.upload(ground.bedrock_type.data(), bytes_of(ground.bedrock_type));
+  }
   vegetation_.upload(ground.vegetation.data(), bytes_of(ground.vegetation));
 }
 
