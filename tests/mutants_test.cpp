@@ -110,6 +110,7 @@ TEST(Mutants, ErosionLayeredHToZIsKilled) { expect_every_mutant_killed({"erosion
 TEST(Mutants, ErosionDropletsAreKilled) {
   const json mutation = expect_every_mutant_killed({"erosion.particle.*", "erosion.beyer.*"});
   EXPECT_TRUE(killed_by(mutation, "erosion.beyer.apply_scaled", "ledger.apply_rounding.cpu_float")) << mutation.dump(2);
+  expect_killed_near_the_bound(mutation, "erosion.beyer.apply_scaled_above_bound", "ledger.apply_rounding.cpu_float");
   EXPECT_TRUE(killed_by(mutation, "erosion.beyer.capacity_doubled", "spec.droplet.sediment.cpu"));
   EXPECT_TRUE(killed_by(mutation, "erosion.particle.step_by_velocity", "spec.droplet.positions.cpu"));
 }
@@ -185,6 +186,10 @@ TEST(Mutants, PlanetFamilyIsKilled) {
     EXPECT_TRUE(killed_by(mutation, "planet.mesh.key_without_z", check)) << check;
   }
   expect_killed_near_the_bound(mutation, "planet.jitter.float_off_above_bound", "parity.positions.float_vs_double");
+  expect_killed_near_the_bound(mutation, "planet.noise.float_off_above_bound", "parity.noise.float_vs_double");
+  expect_killed_near_the_bound(mutation, "planet.collision.float_off_above_bound", "parity.collision.float_vs_double");
+  expect_killed_near_the_bound(mutation, "planet.smoothing.float_off_above_bound", "parity.elevation.float_vs_double");
+  expect_killed_near_the_bound(mutation, "planet.noise.gpu_off_above_bound", "parity.noise.gpu_vs_float");
   EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.unwarp_over_tan", "topology.round_trip"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_last_seed_missing", "partition.empty_plates.gpu"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_counts_visits", "partition.unassigned.gpu"));

@@ -37,6 +37,14 @@ std::vector<Mutant> beyer_mutants() {
        {"erosion.beyer.disjoint.cone"}},
       {"erosion.beyer.apply_scaled", MutantKind::both_twins,
        "both twins' batch apply adds delta·quantum·(1 + 2^-10) to each cell, not delta·quantum", probe},
+      // The calibrated pair of ledger.apply_rounding's bound (Σ u·(|change| + |height after|)).
+      {"erosion.beyer.apply_scaled_above_bound", MutantKind::both_twins,
+       "both twins' batch apply adds delta·quantum·(1 + 2^-15) to each cell", probe},
+      {.name = "erosion.beyer.apply_scaled_below_bound",
+       .kind = MutantKind::both_twins,
+       .description = "both twins' batch apply adds delta·quantum·(1 + 2^-23) to each cell, one rounding",
+       .cases = probe,
+       .must_survive = true},
       {"erosion.beyer.capacity_doubled", MutantKind::both_twins,
        "both twins take the capacity factor c_c of eq. 2.39 twice: a conserving error of the law, which no ledger "
        "sees and the hand-derived droplet does",

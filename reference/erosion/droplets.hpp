@@ -80,8 +80,7 @@ class BatchDelta {
 
   void apply(Grid<Real>& heights, DropletLedger& ledger) {
     constexpr double unit_roundoff = std::numeric_limits<Real>::epsilon() / 2.0;
-    // Mutant erosion.beyer.apply_scaled (both twins; beyer_apply.comp alike): each change 2^-10 too large.
-    const bool scaled = mutant_active(algorithm_ + ".apply_scaled");
+    const Real scale = apply_scale();
     for (std::size_t i = 0; i < delta_.size(); ++i) {
       const long long delta = delta_[i];
       if (delta == 0) continue;
@@ -91,7 +90,7 @@ class BatchDelta {
       if (std::llabs(delta) > std::numeric_limits<std::int32_t>::max()) refuse(delta);
       const Real before = heights.values[i];
       Real change = static_cast<Real>(delta) * quantum_;
-      if (scaled) change = change * static_cast<Real>(1.0009765625);
+      change = change * scale;
       const Real after = before + change;
       const double exact_change = static_cast<double>(delta) * static_cast<double>(quantum_);
       ledger.apply_rounding += (static_cast<double>(after) - static_cast<double>(before)) - exact_change;
@@ -101,6 +100,16 @@ class BatchDelta {
   }
 
  private:
+  // Mutants erosion.beyer.apply_scaled (both twins; beyer_apply.comp alike): each change 2^-10 too
+  // large, far above ledger.apply_rounding's bound; its calibrated pair _above_bound (2^-15, a few
+  // times the bound on the probe) and _below_bound (2^-23, one rounding). 1 on an honest run.
+  Real apply_scale() const {
+    if (mutant_active(algorithm_ + ".apply_scaled")) return static_cast<Real>(1.0 + 0x1p-10);
+    if (mutant_active(algorithm_ + ".apply_scaled_above_bound")) return static_cast<Real>(1.0 + 0x1p-15);
+    if (mutant_active(algorithm_ + ".apply_scaled_below_bound")) return static_cast<Real>(1.0 + 0x1p-23);
+    return Real(1);
+  }
+
   // The counter holds 2^31 quanta, 128 times the magnitude the quantum was sized for
   // (core/params/droplets.hpp): one cell changing more in one pass is no longer erosion of that map.
   [[noreturn]] void refuse(long long delta) const {

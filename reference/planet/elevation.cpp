@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -100,6 +101,25 @@ Vector3<Real> plate_shift(const PlanetParams& params, int plate, const Vector3<R
   return tangent_length > Real(0) ? scaled(tangent, magnitude / tangent_length) : Vector3<Real>{};
 }
 
+// The calibrated pairs of the elevation's float error model (compare/checks/planet_error_model.hpp):
+// the factor a float stage's result is multiplied by, 1 on an honest run. In both float twins
+// (gpu/shaders/planet/elevation_*.comp alike), so that only the comparison with ref<double> sees
+// it: 1 + 2^-above (a few times the stage's bound on the probe) or 1 + 2^-23 (one rounding).
+template <class Real>
+Real calibration_factor(std::string_view stage, int above) {
+  if constexpr (std::is_same_v<Real, float>) {
+    if (mutant_active(fmt::format("planet.{}.float_off_above_bound", stage))) return 1.0f + std::ldexp(1.0f, -above);
+    if (mutant_active(fmt::format("planet.{}.float_off_below_bound", stage))) return 1.0f + 0x1p-23f;
+  }
+  return Real(1);
+}
+// The exponents `above` of the three stages, calibrated on planet.mutant_probe.r12 to 2–10 times the
+// bound (the shaders hold the same): the noise's result, the collision's term C·Σ pressure (its bound
+// carries the pressure's own, some 10 times the noise's), the smoothed mean.
+constexpr int noise_above_bound = 12;
+constexpr int collision_above_bound = 9;
+constexpr int smoothing_above_bound = 12;
+
 // Step 6: uniform in [−e_r, e_r], or bimodal: oceanic in [−e_r, −e_r/2], continental in [0, e_r/4].
 template <class Real>
 Real plate_base(const PlanetParams& params, int plate) {
@@ -123,12 +143,13 @@ std::vector<Real> noisy_elevation(const PlanetParams& params, const std::vector<
   const auto terms = fractal_terms<Real>(fractal);
   const auto frequency = static_cast<Real>(params.perlin_frequency);
   const auto strength = static_cast<Real>(params.perlin_strength);
+  const Real drift = calibration_factor<Real>("noise", noise_above_bound);
   std::vector<Real> elevation(partition.plate.size());
   for (std::size_t region = 0; region < elevation.size(); ++region) {
     elevation[region] = base[partition.plate[region]];
     if (!params.noise) continue;
     const Vector3<Real> point = scaled(position_of(positions, region), frequency);
-    elevation[region] = elevation[region] + strength * fbm(basis, terms, point[0], point[1], point[2]);
+    elevation[region] = (elevation[region] + strength * fbm(basis, terms, point[0], point[1], point[2])) * drift;
   }
   return elevation;
 }
@@ -141,6 +162,7 @@ std::vector<Real> collided_elevation(const CubeSphere& sphere, const PlanetParam
   if (!params.collisions) return noisy;
   std::vector<Real> elevation = noisy;
   const auto strength = static_cast<Real>(params.collision_strength);
+  const Real drift = calibration_factor<Real>("collision", collision_above_bound);
   for (std::size_t region = 0; region < elevation.size(); ++region) {
     if (!partition.is_edge[region]) continue;
     const std::int32_t own = partition.plate[region];
@@ -150,7 +172,7 @@ std::vector<Real> collided_elevation(const CubeSphere& sphere, const PlanetParam
       total = total + pressure(params.pressure, position_of(positions, region), motion.shift[own],
                                position_of(positions, neighbour), motion.shift[partition.plate[neighbour]]);
     }
-    elevation[region] = elevation[region] + strength * total;
+    elevation[region] = elevation[region] + strength * total * drift;
   }
   return elevation;
 }
@@ -162,6 +184,7 @@ std::vector<Real> jacobi_smoothed(const CubeSphere& sphere, const std::vector<Re
   // Mutant planet.smoothing.float_in_place (ref<float> only): neighbours before the region read
   // from the smoothed output (Gauss-Seidel where the method is Jacobi).
   const bool in_place = std::is_same_v<Real, float> && mutant_active("planet.smoothing.float_in_place");
+  const Real drift = calibration_factor<Real>("smoothing", smoothing_above_bound);
   for (std::size_t region = 0; region < elevation.size(); ++region) {
     Real sum = elevation[region];
     int count = 1;
@@ -171,7 +194,8 @@ std::vector<Real> jacobi_smoothed(const CubeSphere& sphere, const std::vector<Re
       ++count;
     }
     // Mutant planet.smoothing.count_without_self (both twins): the region summed but not counted.
-    smoothed[region] = sum / static_cast<Real>(mutant_active("planet.smoothing.count_without_self") ? count - 1 : count);
+    smoothed[region] =
+        sum / static_cast<Real>(mutant_active("planet.smoothing.count_without_self") ? count - 1 : count) * drift;
   }
   return smoothed;
 }

@@ -19,8 +19,12 @@ void main() {
   if (!open_cell(cell)) return;
   uint index = cell_index(cell, grid_size);
   precise float change = float(delta[index]) * quantum;
-#ifdef GT_MUTANT_EROSION_BEYER_APPLY_SCALED
+#if defined(GT_MUTANT_EROSION_BEYER_APPLY_SCALED)
   change = change * 1.0009765625;  // 1 + 2^-10
+#elif defined(GT_MUTANT_EROSION_BEYER_APPLY_SCALED_ABOVE_BOUND)
+  change = change * (1.0 + 1.0 / 32768.0);  // 1 + 2^-15
+#elif defined(GT_MUTANT_EROSION_BEYER_APPLY_SCALED_BELOW_BOUND)
+  change = change * (1.0 + 1.0 / 8388608.0);  // 1 + 2^-23
 #endif
   precise float height = heights[index] + change;
   heights[index] = height;

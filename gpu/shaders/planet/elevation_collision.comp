@@ -63,6 +63,16 @@ float pressure(vec3 p, vec3 shift_p, vec3 q, vec3 shift_q) {
 }
 #endif
 
+// The calibrated pair of the collision's float model in both float twins (reference/planet/
+// elevation.cpp's calibration_factor): C·Σ pressure times 1 + 2^-9 above the bound, 1 + 2^-23 below.
+#if defined(GT_MUTANT_PLANET_COLLISION_FLOAT_OFF_ABOVE_BOUND)
+const float drift = 1.0 + 1.0 / 512.0;
+#elif defined(GT_MUTANT_PLANET_COLLISION_FLOAT_OFF_BELOW_BOUND)
+const float drift = 1.0 + 1.0 / 8388608.0;
+#else
+const float drift = 1.0;
+#endif
+
 float collided_elevation(int region) {
   int own = plate[region];
   vec3 p = positions[region].xyz;
@@ -75,7 +85,7 @@ float collided_elevation(int region) {
     if (other == own) continue;
     total = total + pressure(p, shift_p, positions[neighbour].xyz, plates[other].shift.xyz);
   }
-  precise float elevation = noisy[region] + collision_strength * total;
+  precise float elevation = noisy[region] + collision_strength * total * drift;
   return elevation;
 }
 

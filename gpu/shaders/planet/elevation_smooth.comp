@@ -12,6 +12,16 @@ layout(local_size_x = 256) in;
 
 #include "planet/planet.glsl"
 
+// The calibrated pair of the smoothing's float model in both float twins (reference/planet/
+// elevation.cpp's calibration_factor): the mean times 1 + 2^-12 above the bound, 1 + 2^-23 below.
+#if defined(GT_MUTANT_PLANET_SMOOTHING_FLOAT_OFF_ABOVE_BOUND)
+const float drift = 1.0 + 1.0 / 4096.0;
+#elif defined(GT_MUTANT_PLANET_SMOOTHING_FLOAT_OFF_BELOW_BOUND)
+const float drift = 1.0 + 1.0 / 8388608.0;
+#else
+const float drift = 1.0;
+#endif
+
 void main() {
   int region = int(gl_GlobalInvocationID.x);
   if (region >= region_count) return;
@@ -25,9 +35,9 @@ void main() {
     ++count;
   }
 #ifdef GT_MUTANT_PLANET_SMOOTHING_COUNT_WITHOUT_SELF
-  precise float mean = sum / float(count - 1);  // mutant (both twins): the region summed but not counted
+  precise float mean = sum / float(count - 1) * drift;  // mutant (both twins): the region summed but not counted
 #else
-  precise float mean = sum / float(count);
+  precise float mean = sum / float(count) * drift;
 #endif
   smoothed[region] = mean;
 #else
