@@ -83,6 +83,9 @@ struct Algorithm {
                                           const Environment& environment)>
       benchmark = {};
   MemoryTraffic traffic;
+  // Figures published for the same work (a seed's timing tables, backend "published"): the
+  // performance table shows each beside ours at the sizes it times.
+  std::vector<BenchmarkRow> published;
   // Other libraries' implementations of the same work, timed beside the generic field-twin rows.
   std::vector<Peer> peers;
   // The keys a case's "expect" may hold (core/json_keys.hpp require_shape): what this algorithm's

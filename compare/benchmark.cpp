@@ -242,6 +242,11 @@ std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool g
       benchmark_field_twin(algorithm, options, gpu_available, environment, progress, rows);
     }
     add_traffic(algorithm, rows.begin() + static_cast<std::ptrdiff_t>(first_row), rows.end());
+    for (const BenchmarkRow& published : algorithm.published) {
+      if (std::find(options.sizes.begin(), options.sizes.end(), published.size) != options.sizes.end()) {
+        rows.push_back(published);
+      }
+    }
   }
   progress.finish();
   annotate_benchmarks(rows);

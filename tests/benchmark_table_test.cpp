@@ -252,6 +252,26 @@ TEST(BenchCli, TableHasTheProbePeersFloorAndScaling) {
   EXPECT_THAT(markdown, HasSubstr("### Scaling"));
 }
 
+// A seed's published timings stand beside our rows of the same size, and only there: Hydra's
+// Table 5.6 has 128 px (RTX 3080 1.80 ms, GTX 745 22 ms for 50 iterations) and no 64 px column.
+TEST(BenchCli, PublishedFiguresStandBesideOurRowsOfTheirSize) {
+  const testing::TemporaryFolder out("gt_bench");
+  const auto run = testing::run_program(groundtruth, {"bench", "erosion.thermal", "--sizes", "64,128", "--iterations",
+                                                      "1", "--reps", "1", "--quiet", "--out", out.path().string()});
+  ASSERT_EQ(run.status, 0) << run;
+  const json report = json::parse(testing::read_text(out / "report.json"));
+  std::vector<double> published_ms;
+  for (const json& row : report.at("benchmarks")) {
+    if (row.at("backend") != "published") continue;
+    EXPECT_EQ(row.at("algorithm"), "erosion.thermal");
+    EXPECT_EQ(row.at("size"), 128) << row;
+    EXPECT_EQ(row.at("iterations"), 50) << row;
+    EXPECT_THAT(row.at("device").get<std::string>(), HasSubstr("Table 5.6"));
+    published_ms.push_back(row.at("median_ms").get<double>());
+  }
+  EXPECT_THAT(published_ms, ::testing::UnorderedElementsAre(1.80, 22.0));
+}
+
 TEST(BenchCli, APatternThatMatchesNoAlgorithmIsBadInput) {
   const testing::TemporaryFolder out("gt_bench");
   const auto run = testing::run_program(groundtruth, {"bench", "nothing.*", "--quiet", "--out", out.path().string()});

@@ -499,6 +499,12 @@ BenchmarkRow published_row(const PublishedTiming& published) {
   return row;
 }
 
+std::vector<BenchmarkRow> hydra_particle_rows() {
+  std::vector<BenchmarkRow> rows;
+  for (const auto& published : hydra_table_5_1) rows.push_back(published_row(published));
+  return rows;
+}
+
 // A noisy cone normalised to [0, 1] with Hydra's defaults at spacing 4.
 std::vector<BenchmarkRow> benchmark_particle(const BenchmarkOptions& options, bool gpu_available,
                                              const Environment& environment) {
@@ -512,11 +518,6 @@ std::vector<BenchmarkRow> benchmark_particle(const BenchmarkOptions& options, bo
     for (auto& row : droplet_benchmark_rows(particle_twin(field, false, particle_constants(resolved, field)),
                                             options.reps, gpu_available, environment)) {
       rows.push_back(std::move(row));
-    }
-  }
-  for (const auto& published : hydra_table_5_1) {
-    if (std::find(options.sizes.begin(), options.sizes.end(), published.size) != options.sizes.end()) {
-      rows.push_back(published_row(published));
     }
   }
   return rows;
@@ -568,6 +569,7 @@ Algorithm particle_algorithm() {
           .prepare = prepare_particle,
           .kind = CaseKind::stepped,
           .benchmark = benchmark_particle,
+          .published = hydra_particle_rows(),
           .expect_shape = particle_expect_shape(),
           // The input, ref<double>'s run with its two side maps (5 doubles), the GPU's copies,
           // the difference and change maps of the checks (6 doubles), the descriptors, and the

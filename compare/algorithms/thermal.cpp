@@ -283,6 +283,32 @@ nlohmann::json talus_spec_shape() {
   return shape;
 }
 
+// Hydra's Table 5.6 (digest 000 §6.6): thermal erosion, total time of 50 iterations, by texture side.
+struct PublishedThermalTiming {
+  const char* device;
+  int size;
+  double ms_for_50_iterations;
+};
+constexpr PublishedThermalTiming hydra_table_5_6[] = {
+    {"NVIDIA RTX 3080 12GB", 128, 1.80}, {"NVIDIA RTX 3080 12GB", 256, 5.75}, {"NVIDIA RTX 3080 12GB", 512, 19},
+    {"NVIDIA RTX 3080 12GB", 1024, 79},  {"NVIDIA RTX 3080 12GB", 2048, 318}, {"NVIDIA GTX 745 4GB", 128, 22},
+    {"NVIDIA GTX 745 4GB", 256, 85},     {"NVIDIA GTX 745 4GB", 512, 427},    {"NVIDIA GTX 745 4GB", 1024, 1708},
+    {"NVIDIA GTX 745 4GB", 2048, 11054}};
+
+// As our rows count them: the time of the 50 iterations, cell-iterations per second.
+std::vector<BenchmarkRow> hydra_thermal_rows() {
+  std::vector<BenchmarkRow> rows;
+  for (const auto& published : hydra_table_5_6) {
+    BenchmarkRow row{.algorithm = "erosion.thermal", .backend = "published", .size = published.size,
+                     .iterations = 50, .reps = 0, .median_ms = published.ms_for_50_iterations,
+                     .device = fmt::format("{} (Hydra, thesis Table 5.6)", published.device)};
+    row.mcell_iterations_per_s = double(published.size) * published.size * 50 / (published.ms_for_50_iterations * 1e-3) / 1e6;
+    row.detail = "Hydra's two-pass thermal erosion in fragment shaders, total of 50 iterations, as published";
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 }  // namespace
 
 Algorithm thermal_algorithm() {
@@ -296,6 +322,7 @@ Algorithm thermal_algorithm() {
           .kind = CaseKind::stepped,
           // Counted in reference/erosion/thermal.cpp and gpu/erosion/thermal.cpp.
           .traffic = {.cpu = 88.0, .gpu = 52.0},
+          .published = hydra_thermal_rows(),
           .expect_shape = talus_spec_shape(),
           // Measured 395 B a cell (1024² vs 256², 64 iterations, both backends, 8 shadow checkpoints).
           .memory = [](const nlohmann::json&, const LoadedInput& input) {
