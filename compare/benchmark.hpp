@@ -25,6 +25,9 @@ struct BenchmarkOptions {
   int iterations = 10;
   int reps = 3;
   bool quiet = false;  // no progress lines (--quiet)
+  // The parameter studies beside the main rows (Hydra's droplet spacing and interpolation, thesis
+  // Tables 5.3–5.5); the report's quick tier leaves them out.
+  bool studies = true;
 };
 
 // Whether an algorithm's own row of `cells` cells (voxels, samples of a sphere) belongs to a table of

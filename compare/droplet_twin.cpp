@@ -593,6 +593,25 @@ MemoryEstimate droplet_checkpoint_memory(double cells, int iterations) {
   return memory_for(cells * marks, "cell-checkpoints", 2.0 * sizeof(double));
 }
 
+BenchmarkRow droplet_gpu_row(const DropletTwin& twin, DropletOrdering ordering, int reps, const Environment& environment,
+                             const std::string& backend) {
+  const Grid<float> input = twin.input.cast<float>();
+  const int passes = twin.setup.spacing * twin.setup.spacing;
+  const DropletSetup setup{twin.setup.spacing, ordering};
+  const auto gpu_steps = twin.reference_float(input, 0, 1, setup).ledger.steps;
+  DropletGpu gpu = twin.make_gpu(setup);
+  std::vector<double> times;
+  for (int rep = 0; rep < reps; ++rep) {
+    gpu.load(input, 0);  // the upload is not timed
+    times.push_back(gpu_wall_ms([&] { gpu.step(1); }));
+  }
+  return iteration_row(twin.algorithm, backend, twin.input.width, reps, median(times), double(gpu_steps),
+                       environment.gl_renderer,
+                       ordering == DropletOrdering::batch
+                           ? fmt::format("batch droplets, {} passes + {} applies", passes, passes)
+                           : fmt::format("race droplets, {} passes", passes));
+}
+
 std::vector<BenchmarkRow> droplet_benchmark_rows(const DropletTwin& twin, int reps, bool gpu_available,
                                                  const Environment& environment) {
   std::vector<BenchmarkRow> rows;
@@ -606,22 +625,8 @@ std::vector<BenchmarkRow> droplet_benchmark_rows(const DropletTwin& twin, int re
   rows.push_back(iteration_row(twin.algorithm, "cpu", size, reps, median(cpu_times), double(steps), environment.cpu,
                                "ref<double>, sequential droplets"));
   if (!gpu_available) return rows;
-  const Grid<float> input = twin.input.cast<float>();
-  const int passes = twin.setup.spacing * twin.setup.spacing;
   for (const DropletOrdering ordering : {DropletOrdering::race, DropletOrdering::batch}) {
-    const DropletSetup setup{twin.setup.spacing, ordering};
-    const auto gpu_steps = twin.reference_float(input, 0, 1, setup).ledger.steps;
-    DropletGpu gpu = twin.make_gpu(setup);
-    std::vector<double> times;
-    for (int rep = 0; rep < reps; ++rep) {
-      gpu.load(input, 0);  // the upload is not timed
-      times.push_back(gpu_wall_ms([&] { gpu.step(1); }));
-    }
-    rows.push_back(iteration_row(twin.algorithm, "gpu", size, reps, median(times), double(gpu_steps),
-                                 environment.gl_renderer,
-                                 ordering == DropletOrdering::batch
-                                     ? fmt::format("batch droplets, {} passes + {} applies", passes, passes)
-                                     : fmt::format("race droplets, {} passes", passes)));
+    rows.push_back(droplet_gpu_row(twin, ordering, reps, environment, "gpu"));
   }
   return rows;
 }

@@ -148,6 +148,11 @@ SteppedTwin droplet_stepped_twin(std::shared_ptr<const DropletTwin> twin);
 // states (a double a cell each) at every shadow start and at the end.
 MemoryEstimate droplet_checkpoint_memory(double cells, int iterations);
 
+// One GPU performance row (needs a current GL context): the twin's droplets in `ordering` at its
+// spacing, one outer iteration per timed run (the upload not timed), the median of `reps`.
+BenchmarkRow droplet_gpu_row(const DropletTwin& twin, DropletOrdering ordering, int reps, const Environment& environment,
+                             const std::string& backend);
+
 // Performance rows for one grid side: ref<double> (sequential) and, with a GPU, its race and batch
 // orderings, one outer iteration per timed run, the median of `reps`, in cell-iterations and droplet
 // steps per second (steps from the references' ledgers: droplets may end early).

@@ -272,6 +272,32 @@ TEST(BenchCli, PublishedFiguresStandBesideOurRowsOfTheirSize) {
   EXPECT_THAT(published_ms, ::testing::UnorderedElementsAre(1.80, 22.0));
 }
 
+// Hydra's spacing study at 128 px: Table 5.3 alone has that side (spacing 16, with and without
+// interpolation, on both GPUs), so the study times our GPU in those two variants and no other, and
+// shows the four published rows beside them; Tables 5.4/5.5 (256 and 512 px) stay out.
+TEST(BenchCli, TheSpacingStudyTimesTheVariantsThePublishedTablesHaveAtThatSide) {
+  const testing::TemporaryFolder out("gt_bench");
+  const auto run = testing::run_program(groundtruth, {"bench", "erosion.particle", "--sizes", "128", "--reps", "1",
+                                                      "--quiet", "--out", out.path().string()});
+  ASSERT_EQ(run.status, 0) << run;
+  const json report = json::parse(testing::read_text(out / "report.json"));
+  std::vector<std::string> study_backends, published_tables;
+  for (const json& row : report.at("benchmarks")) {
+    if (row.at("algorithm") != "erosion.particle") continue;
+    const auto backend = row.at("backend").get<std::string>();
+    const auto device = row.at("device").get<std::string>();
+    if (backend.starts_with("gpu (")) study_backends.push_back(backend);
+    if (backend == "published" && device.find("Table 5.1") == std::string::npos) {
+      published_tables.push_back(device.substr(device.find("Table ")));
+    }
+  }
+  EXPECT_THAT(study_backends, ::testing::UnorderedElementsAre("gpu (spacing 16)", "gpu (spacing 16, interpolated)"));
+  EXPECT_THAT(published_tables,
+              ::testing::UnorderedElementsAre("Table 5.3: spacing 16)", "Table 5.3: spacing 16)",
+                                              "Table 5.3: spacing 16, interpolated)",
+                                              "Table 5.3: spacing 16, interpolated)"));
+}
+
 TEST(BenchCli, APatternThatMatchesNoAlgorithmIsBadInput) {
   const testing::TemporaryFolder out("gt_bench");
   const auto run = testing::run_program(groundtruth, {"bench", "nothing.*", "--quiet", "--out", out.path().string()});

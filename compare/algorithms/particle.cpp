@@ -4,7 +4,8 @@
 // (core/params/particle.hpp), the twins (reference/erosion/particle.hpp, gpu/erosion/particle.hpp)
 // as a droplet twin that the stepped runner runs (compare/droplet_twin.hpp: state, orderings, shadow
 // bounds, ledger, race statistics), the hand-derived droplets of a case and the performance rows
-// beside the thesis's Table 5.1.
+// beside the thesis's Table 5.1, with its spacing study (Tables 5.3–5.5: our GPU's race droplets by
+// spacing and interpolation; the sequential reference does the same work at any spacing).
 //
 // Inputs:  a heightmap, normalised to [0, 1] as seed 000 does unless `normalised` is off; with
 //          `colour`, a bundled texture resampled bilinearly to the grid and sRGB-decoded.
@@ -499,6 +500,81 @@ BenchmarkRow published_row(const PublishedTiming& published) {
   return row;
 }
 
+// Hydra's spacing study (digest 000 §6.4–6.5): total time of 50 iterations by droplet spacing,
+// Table 5.3 at spacing 16 with and without interpolation (128–1024 px), Tables 5.4 and 5.5 by
+// spacing at 256 and 512 px. The 16 px values of 5.4/5.5 agree with 5.3's rows without
+// interpolation: the spacing tables are taken as measured without it.
+struct PublishedSpacingTiming {
+  const char* device;
+  const char* table;
+  int size;
+  int spacing;
+  bool interpolate;
+  double ms_for_50_iterations;
+};
+constexpr const char* rtx = "NVIDIA RTX 3080 12GB";
+constexpr const char* gtx = "NVIDIA GTX 745 4GB";
+constexpr PublishedSpacingTiming hydra_spacing_tables[] = {
+    {rtx, "5.3", 128, 16, false, 23},   {rtx, "5.3", 256, 16, false, 38},   {rtx, "5.3", 512, 16, false, 48},
+    {rtx, "5.3", 1024, 16, false, 203}, {rtx, "5.3", 128, 16, true, 23},    {rtx, "5.3", 256, 16, true, 62},
+    {rtx, "5.3", 512, 16, true, 83},    {rtx, "5.3", 1024, 16, true, 344},  {gtx, "5.3", 128, 16, false, 72},
+    {gtx, "5.3", 256, 16, false, 282},  {gtx, "5.3", 512, 16, false, 1301}, {gtx, "5.3", 128, 16, true, 103},
+    {gtx, "5.3", 256, 16, true, 407},   {gtx, "5.3", 512, 16, true, 1915},  {rtx, "5.4", 256, 1, false, 5.55},
+    {rtx, "5.4", 256, 2, false, 6.80},  {rtx, "5.4", 256, 4, false, 9},     {rtx, "5.4", 256, 8, false, 16},
+    {rtx, "5.4", 256, 16, false, 40},   {rtx, "5.4", 256, 32, false, 90},   {gtx, "5.4", 256, 1, false, 120},
+    {gtx, "5.4", 256, 2, false, 142},   {gtx, "5.4", 256, 4, false, 184},   {gtx, "5.4", 256, 8, false, 236},
+    {gtx, "5.4", 256, 16, false, 285},  {gtx, "5.4", 256, 32, false, 334},  {rtx, "5.5", 512, 1, false, 9},
+    {rtx, "5.5", 512, 2, false, 11},    {rtx, "5.5", 512, 4, false, 20},    {rtx, "5.5", 512, 8, false, 42},
+    {rtx, "5.5", 512, 16, false, 48},   {rtx, "5.5", 512, 32, false, 202},  {gtx, "5.5", 512, 1, false, 516},
+    {gtx, "5.5", 512, 2, false, 617},   {gtx, "5.5", 512, 4, false, 836},   {gtx, "5.5", 512, 8, false, 1082},
+    {gtx, "5.5", 512, 16, false, 1281}, {gtx, "5.5", 512, 32, false, 1414}};
+
+// The variants the study times: each spacing of the tables, and spacing 16 both ways.
+struct SpacingVariant {
+  int spacing;
+  bool interpolate;
+  std::string name() const { return fmt::format("spacing {}{}", spacing, interpolate ? ", interpolated" : ""); }
+  bool operator==(const SpacingVariant&) const = default;
+};
+constexpr SpacingVariant spacing_variants[] = {{1, false}, {2, false}, {4, false}, {8, false},
+                                               {16, false}, {32, false}, {16, true}};
+
+BenchmarkRow published_spacing_row(const PublishedSpacingTiming& published) {
+  const SpacingVariant variant{published.spacing, published.interpolate};
+  const double ms = published.ms_for_50_iterations / 50.0;
+  BenchmarkRow row{.algorithm = "erosion.particle", .backend = "published", .size = published.size, .iterations = 1,
+                   .reps = 0, .median_ms = ms,
+                   .device = fmt::format("{} (Hydra, thesis Table {}: {})", published.device, published.table,
+                                         variant.name())};
+  row.mcell_iterations_per_s = double(published.size) * published.size / (ms * 1e-3) / 1e6;
+  row.detail = fmt::format("race droplets, {}, total of 50 iterations / 50, as published", variant.name());
+  return row;
+}
+
+// The study at one grid side: our GPU's race droplets in each variant the tables have at that side
+// (backend "gpu (spacing s[, interpolated])"), then the tables' rows of that side.
+std::vector<BenchmarkRow> spacing_study_rows(const Heightmap& field, int reps, bool gpu_available,
+                                             const Environment& environment) {
+  const int size = field.width;
+  std::vector<BenchmarkRow> rows;
+  for (const SpacingVariant& variant : spacing_variants) {
+    const auto published_here = [&](const PublishedSpacingTiming& published) {
+      return published.size == size && SpacingVariant{published.spacing, published.interpolate} == variant;
+    };
+    if (!gpu_available || std::ranges::none_of(hydra_spacing_tables, published_here)) continue;
+    const auto resolved = resolve_params("erosion.particle", particle_param_specs(),
+                                         {{"iterations", 1}, {"spacing", variant.spacing},
+                                          {"interpolate", variant.interpolate}});
+    const auto twin = particle_twin(field, false, particle_constants(resolved, field));
+    rows.push_back(droplet_gpu_row(twin, DropletOrdering::race, reps, environment,
+                                   fmt::format("gpu ({})", variant.name())));
+  }
+  for (const auto& published : hydra_spacing_tables) {
+    if (published.size == size) rows.push_back(published_spacing_row(published));
+  }
+  return rows;
+}
+
 std::vector<BenchmarkRow> hydra_particle_rows() {
   std::vector<BenchmarkRow> rows;
   for (const auto& published : hydra_table_5_1) rows.push_back(published_row(published));
@@ -515,10 +591,11 @@ std::vector<BenchmarkRow> benchmark_particle(const BenchmarkOptions& options, bo
                                   {"peak", 30.0}, {"noise", 1.0}, {"seed", 7}};
     const Heightmap field = normalise_heights(load_input(input, nullptr, {}).heights);
     const auto resolved = resolve_params("erosion.particle", particle_param_specs(), {{"iterations", 1}});
-    for (auto& row : droplet_benchmark_rows(particle_twin(field, false, particle_constants(resolved, field)),
-                                            options.reps, gpu_available, environment)) {
-      rows.push_back(std::move(row));
-    }
+    std::ranges::move(droplet_benchmark_rows(particle_twin(field, false, particle_constants(resolved, field)),
+                                             options.reps, gpu_available, environment),
+                      std::back_inserter(rows));
+    if (options.studies) std::ranges::move(spacing_study_rows(field, options.reps, gpu_available, environment),
+                                           std::back_inserter(rows));
   }
   return rows;
 }

@@ -691,13 +691,17 @@ int run_command_line(int argc, char** argv) {
       }
       if (!skip_benchmark) {
         options.benchmark = gt::BenchmarkOptions{.quiet = report_shared.quiet};
-        if (!full_report) options.benchmark->sizes = report_tier_benchmark_sizes;
+        if (!full_report) {
+          options.benchmark->sizes = report_tier_benchmark_sizes;
+          options.benchmark->studies = false;
+        }
       }
       if (!full_report) {
         options.left_out = fmt::format("the benchmark {}, the mutants not run (`groundtruth report --full` runs "
                                        "everything, `groundtruth mutants` the mutants alone)",
                                        skip_benchmark ? "not run"
-                                                      : fmt::format("at {} cells a side only",
+                                                      : fmt::format("at {} cells a side only, without the parameter "
+                                                                    "studies",
                                                                     fmt::join(report_tier_benchmark_sizes, ", ")));
       }
       if (!skip_mutants) {
