@@ -216,6 +216,15 @@ std::vector<const Algorithm*> selected_algorithms(const BenchmarkOptions& option
 
 }  // namespace
 
+BenchmarkRow published_row(const std::string& algorithm, const std::string& device, int size, int iterations,
+                           double total_ms, const std::string& detail) {
+  BenchmarkRow row{.algorithm = algorithm, .backend = "published", .size = size, .iterations = iterations, .reps = 0,
+                   .median_ms = total_ms, .device = device};
+  row.mcell_iterations_per_s = double(size) * size * iterations / (total_ms * 1e-3) / 1e6;
+  row.detail = detail;
+  return row;
+}
+
 std::vector<BenchmarkRow> run_benchmarks(const BenchmarkOptions& options, bool gpu_available,
                                          const Environment& environment) {
   const auto selected = selected_algorithms(options);

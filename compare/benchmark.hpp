@@ -35,6 +35,12 @@ struct BenchmarkOptions {
 // holds every cave block up to 256³; the report's (256²) the 32³ and 64³ blocks.
 bool within_table_sizes(double cells, const BenchmarkOptions& options);
 
+// A figure a paper or thesis published for the same work (backend "published"): `total_ms` for
+// `iterations` iterations of a size×size grid on `device` (as the source names it, with the table),
+// in cell-iterations per second like our rows; `detail` says what was measured.
+BenchmarkRow published_row(const std::string& algorithm, const std::string& device, int size, int iterations,
+                           double total_ms, const std::string& detail);
+
 // Throws InputError when a pattern matches no algorithm that has rows in the table.
 // The times (ms) of `reps` runs of a stepped twin's iterations from its start state after a warm-up
 // run, on ref<double> (steady clock) and on the GPU (glFinish and a steady clock; needs a current GL

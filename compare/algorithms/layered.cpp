@@ -411,10 +411,10 @@ PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& 
 // GPU of 2008, one erosion step a frame: at most 50 ms a step. Other work (their layers are
 // (material, thickness) pairs under water erosion), named for scale in every table.
 BenchmarkRow published_layered_row() {
-  BenchmarkRow row{.algorithm = "erosion.layered", .backend = "published", .size = 2048, .iterations = 1, .reps = 1,
-                   .median_ms = 50.0, .device = "Šťava et al. 2008 (GPU of 2008)", .dimensions = 2};
-  row.mcell_iterations_per_s = 2048.0 * 1024.0 / 0.05 / 1e6;
-  row.detail = "≥ 20 fps at 2048×1024 cells (not 2048²), 4 layers, water erosion: other work, as published";
+  BenchmarkRow row = published_row("erosion.layered", "Šťava et al. 2008 (GPU of 2008)", 2048, 1, 50.0,
+                                   "≥ 20 fps at 2048×1024 cells (not 2048²), 4 layers, water erosion: other work, as "
+                                   "published");
+  row.mcell_iterations_per_s = 2048.0 * 1024.0 / 0.05 / 1e6;  // the cells they had
   return row;
 }
 
@@ -422,12 +422,9 @@ BenchmarkRow published_layered_row() {
 // on, single-threaded Cython in double, hardware not named; the midpoint shown beside our rows at
 // 128 (`bench 'erosion.layered' --sizes 128`), whose "+water" rows run the same processes.
 std::vector<BenchmarkRow> seed_layered_rows() {
-  BenchmarkRow seed{.algorithm = "erosion.layered", .backend = "published", .size = 128, .iterations = 1, .reps = 0,
-                    .median_ms = 37.5, .device = "seed 001 (Cython, one thread, double; hardware not named)",
-                    .dimensions = 2};
-  seed.mcell_iterations_per_s = 128.0 * 128.0 / 0.0375 / 1e6;
-  seed.detail = "0.03–0.045 s a step on 128×128, every process on (compare the +water rows), as published; midpoint shown";
-  return {seed};
+  return {published_row("erosion.layered", "seed 001 (Cython, one thread, double; hardware not named)", 128, 1, 37.5,
+                        "0.03–0.045 s a step on 128×128, every process on (compare the +water rows), as published; "
+                        "midpoint shown")};
 }
 
 // A benchmark variant: the processes without water, then the whole model under rain (backends

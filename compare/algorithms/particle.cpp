@@ -487,17 +487,15 @@ constexpr PublishedTiming hydra_table_5_1[] = {
 // The thesis measured up to 1024²; the sequential reference takes seconds an iteration there.
 constexpr int largest_benchmark_side = 1024;
 
-BenchmarkRow published_row(const PublishedTiming& published) {
+// Per iteration, as our droplet rows count them.
+BenchmarkRow published_table_5_1_row(const PublishedTiming& published) {
   const double ms = published.ms_for_50_iterations / 50.0;
   const double steps = double(published.size) * published.size * 50;  // every droplet its whole life, as quoted
-  BenchmarkRow row{.algorithm = "erosion.particle", .backend = "published", .size = published.size,
-                   .iterations = 1, .reps = 0, .median_ms = ms,
-                   .device = fmt::format("{} (Hydra, thesis Table 5.1)", published.device)};
-  row.mcell_iterations_per_s = double(published.size) * published.size / (ms * 1e-3) / 1e6;
-  row.detail = fmt::format("race droplets (Hydra's fragment shader), total of 50 iterations / 50; {:.3g} droplet "
-                           "steps/s if every droplet lives 50 steps",
-                           steps / (ms * 1e-3));
-  return row;
+  return published_row("erosion.particle", fmt::format("{} (Hydra, thesis Table 5.1)", published.device),
+                       published.size, 1, ms,
+                       fmt::format("race droplets (Hydra's fragment shader), total of 50 iterations / 50; {:.3g} "
+                                   "droplet steps/s if every droplet lives 50 steps",
+                                   steps / (ms * 1e-3)));
 }
 
 // Hydra's spacing study (digest 000 §6.4–6.5): total time of 50 iterations by droplet spacing,
@@ -541,14 +539,11 @@ constexpr SpacingVariant spacing_variants[] = {{1, false}, {2, false}, {4, false
 
 BenchmarkRow published_spacing_row(const PublishedSpacingTiming& published) {
   const SpacingVariant variant{published.spacing, published.interpolate};
-  const double ms = published.ms_for_50_iterations / 50.0;
-  BenchmarkRow row{.algorithm = "erosion.particle", .backend = "published", .size = published.size, .iterations = 1,
-                   .reps = 0, .median_ms = ms,
-                   .device = fmt::format("{} (Hydra, thesis Table {}: {})", published.device, published.table,
-                                         variant.name())};
-  row.mcell_iterations_per_s = double(published.size) * published.size / (ms * 1e-3) / 1e6;
-  row.detail = fmt::format("race droplets, {}, total of 50 iterations / 50, as published", variant.name());
-  return row;
+  return published_row(
+      "erosion.particle",
+      fmt::format("{} (Hydra, thesis Table {}: {})", published.device, published.table, variant.name()),
+      published.size, 1, published.ms_for_50_iterations / 50.0,
+      fmt::format("race droplets, {}, total of 50 iterations / 50, as published", variant.name()));
 }
 
 // The study at one grid side: our GPU's race droplets in each variant the tables have at that side
@@ -577,7 +572,7 @@ std::vector<BenchmarkRow> spacing_study_rows(const Heightmap& field, int reps, b
 
 std::vector<BenchmarkRow> hydra_particle_rows() {
   std::vector<BenchmarkRow> rows;
-  for (const auto& published : hydra_table_5_1) rows.push_back(published_row(published));
+  for (const auto& published : hydra_table_5_1) rows.push_back(published_table_5_1_row(published));
   return rows;
 }
 
