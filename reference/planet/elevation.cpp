@@ -115,7 +115,7 @@ Real calibration_factor(std::string_view stage, int above) {
 }
 // The exponents `above` of the three stages, calibrated on planet.mutant_probe.r12 to 2–10 times the
 // bound (the shaders hold the same): the noise's result, the collision's term C·Σ pressure (its bound
-// carries the pressure's own, some 10 times the noise's), the smoothed mean.
+// carries the pressure's own, some 7 times the noise's on edge regions), the smoothed mean.
 constexpr int noise_above_bound = 12;
 constexpr int collision_above_bound = 9;
 constexpr int smoothing_above_bound = 12;
