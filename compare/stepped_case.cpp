@@ -657,6 +657,24 @@ MemoryEstimate kept_states_memory(const SteppedTwin& twin) {
 
 }  // namespace
 
+std::size_t expected_field(const SteppedTwin& twin, const nlohmann::json& expect) {
+  if (!expect.is_object() || !expect.contains("field")) return twin.shown_field;
+  const std::string name = expect["field"].get<std::string>();
+  std::vector<std::string> names;
+  for (std::size_t field = 0; field < twin.fields.size(); ++field) {
+    if (twin.fields[field].name == name) return field;
+    names.push_back(twin.fields[field].name);
+  }
+  throw InputError(fmt::format("expect.field '{}' is not a field of {}; its fields: {}", name, twin.algorithm,
+                               fmt::join(names, ", ")));
+}
+
+nlohmann::json stepped_spec_shape() {
+  nlohmann::json shape = field_spec_shape();
+  shape["field"] = "string";
+  return shape;
+}
+
 std::vector<int> shadow_starts(int iterations, int checkpoints) {
   std::vector<int> starts;
   const int count = std::clamp(iterations, 1, std::max(1, checkpoints));
@@ -716,12 +734,12 @@ void run_stepped_case(const SteppedTwin& given, const nlohmann::json& expect, co
   const BackendRun* gpu_run = gpu ? &gpu->run : nullptr;
   add_ledger_checks(twin, truth, "cpu", result);
   add_ledger_checks(twin, float_run, "cpu_float", result);
-  const std::size_t shown = twin.shown_field;
-  add_field_spec_checks(expect, component_grid(twin.fields, truth.final(), shown, 0), "cpu", result);
+  const std::size_t spec_field = expected_field(twin, expect);
+  add_field_spec_checks(expect, component_grid(twin.fields, truth.final(), spec_field, 0), "cpu", result);
   if (gpu) {
     add_ledger_checks(twin, gpu->run, candidate.backend, result, truth.ledger);
     add_shadow_checks(twin, candidate, *gpu, result);
-    add_field_spec_checks(expect, component_grid(twin.fields, gpu->run.final(), shown, 0), candidate.backend, result);
+    add_field_spec_checks(expect, component_grid(twin.fields, gpu->run.final(), spec_field, 0), candidate.backend, result);
   } else if (!candidate.external) {
     for (const auto& name : gpu_check_names(twin, expect)) result.checks.push_back(skipped_check(name, unavailable));
   }

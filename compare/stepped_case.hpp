@@ -21,7 +21,7 @@
 //   determinism.gpu                       values differing in any bit, every field, between a GPU run
 //                                         stepped through the checkpoints and one in one go: bound 0
 //   <term>.{cpu,cpu_float,gpu}            each ledger term on each backend's whole run
-//   spec.cells.{cpu,gpu}, spec.total.{cpu,gpu}   the shown field against the case's expected values
+//   spec.cells.{cpu,gpu}, spec.total.{cpu,gpu}   the shown field (or expect.field) against the case's expected values
 //                                         (the "expect" keys of field_spec_shape)
 // Without a GPU every check the GPU half makes is there by the same name as `skip` with the reason
 // (gpu_check_names): the harness, not each algorithm, decides what is skipped.
@@ -125,8 +125,16 @@ struct SteppedTwin {
                      CaseResult& result)>
       finish;
   std::function<std::vector<std::string>(const nlohmann::json& expect)> finish_gpu_checks;
-  std::size_t shown_field = 0;  // drawn before and after, held to spec vectors, described as terrain
+  // Drawn before and after, held to spec vectors (unless expect.field names another), described as terrain.
+  std::size_t shown_field = 0;
 };
+
+// The field the case's spec vectors ("cells", "total") are read against: expect's "field" by name
+// (InputError naming the declared fields when there is none of that name), else the shown field.
+std::size_t expected_field(const SteppedTwin& twin, const nlohmann::json& expect);
+// field_spec_shape() and "field": the expect keys of a stepped twin whose spec vectors may hold
+// another field than the shown one.
+nlohmann::json stepped_spec_shape();
 
 // The iterations the shadow steps start from.
 std::vector<int> shadow_starts(int iterations, int checkpoints);
