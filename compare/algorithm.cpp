@@ -19,8 +19,9 @@ CaseRun in_turn(CaseRun first, CaseRun second) {
 
 const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> all = [] {
-    std::vector<Algorithm> list = {thermal_algorithm(), thermal_jako_algorithm(), pipe_algorithm(),
-                                   particle_algorithm(), beyer_algorithm(), layered_algorithm()};
+    std::vector<Algorithm> list = {thermal_algorithm(),  thermal_jako_algorithm(), dissolution_algorithm(),
+                                   pipe_algorithm(),     particle_algorithm(),     beyer_algorithm(),
+                                   layered_algorithm()};
     for (auto& algorithm : noise_algorithms()) list.push_back(std::move(algorithm));
     for (auto& algorithm : cave_algorithms()) list.push_back(std::move(algorithm));
     list.push_back(cave_endless_algorithm());

@@ -114,6 +114,7 @@ nlohmann::json algorithm_json(const Algorithm& algorithm);
 // Defined by each file of compare/algorithms/.
 Algorithm thermal_algorithm();
 Algorithm thermal_jako_algorithm();
+Algorithm dissolution_algorithm();
 Algorithm pipe_algorithm();
 Algorithm particle_algorithm();
 Algorithm beyer_algorithm();

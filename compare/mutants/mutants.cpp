@@ -14,8 +14,8 @@ namespace {
 
 std::vector<Mutant> all_mutants() {
   std::vector<Mutant> all;
-  for (auto family : {thermal_mutants, pipe_mutants, particle_mutants, beyer_mutants, layered_mutants, noise_mutants,
-                      cave_mutants, render_mutants, planet_mutants}) {
+  for (auto family : {thermal_mutants, dissolution_mutants, pipe_mutants, particle_mutants, beyer_mutants,
+                      layered_mutants, noise_mutants, cave_mutants, render_mutants, planet_mutants}) {
     for (auto& mutant : family()) all.push_back(std::move(mutant));
   }
   std::set<std::string> names;

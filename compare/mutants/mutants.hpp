@@ -41,6 +41,7 @@ struct Mutant {
 
 // Per family (one file each).
 std::vector<Mutant> thermal_mutants();  // compare/mutants/thermal.cpp: erosion.thermal*, erosion family
+std::vector<Mutant> dissolution_mutants();  // compare/mutants/dissolution.cpp: erosion.dissolution, erosion family
 std::vector<Mutant> pipe_mutants();     // compare/mutants/pipe.cpp: erosion.pipe, erosion family
 std::vector<Mutant> particle_mutants();  // compare/mutants/particle.cpp: erosion.particle, erosion family
 std::vector<Mutant> beyer_mutants();     // compare/mutants/beyer.cpp: erosion.beyer, erosion family
