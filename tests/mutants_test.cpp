@@ -159,6 +159,21 @@ TEST(Mutants, ErosionThermalIsKilled) {
     EXPECT_TRUE(killed_by(mutation, "erosion.thermal.mirrored_slope", at)) << at;
   }
 }
+// Beneš's dissolution erosion: each one-twin bug is seen by a one-step shadow check on the volcano
+// (a real DEM) as well as on a probe; the pair examples catch eq. 2.9's halving, the material
+// ledger the deposit that stays in the water.
+TEST(Mutants, ErosionDissolutionIsKilled) {
+  const json mutation = expect_every_mutant_killed({"erosion.dissolution.*"});
+  expect_killed_near_the_bound(mutation, "erosion.dissolution.inflow_off_above_bound",
+                               "parity.shadow.water.gpu_vs_float");
+  for (const char* mutant : {"erosion.dissolution.dropped_pipe", "erosion.dissolution.dissolved_left_behind",
+                             "erosion.dissolution.evaporated_uncounted"}) {
+    EXPECT_TRUE(killed_by(mutation, mutant, "erosion.dissolution.mutant_probe.volcano: parity.shadow.")) << mutant;
+  }
+  EXPECT_TRUE(killed_by(mutation, "erosion.dissolution.unhalved_pair", "erosion.dissolution.spec.pair_level: spec.cells.cpu"));
+  EXPECT_TRUE(killed_by(mutation, "erosion.dissolution.deposition_kept", "mass.material_drift.cpu"));
+  EXPECT_TRUE(killed_by(mutation, "erosion.dissolution.threshold_ignored", "spec.step.water.cpu"));
+}
 TEST(Mutants, NoiseFamilyIsKilled) {
   const json mutation = expect_every_mutant_killed({"noise.*"});
   expect_killed_near_the_bound(mutation, "noise.perlin3.float_off_above_bound", "parity.max_abs.float_vs_double");

@@ -21,6 +21,7 @@
 #include "core/param_table.hpp"
 #include "core/params/beyer.hpp"
 #include "core/params/cave.hpp"
+#include "core/params/dissolution.hpp"
 #include "core/params/hydraulic.hpp"
 #include "core/params/layered.hpp"
 #include "core/params/noise.hpp"
@@ -104,6 +105,7 @@ TEST(ParamTables, EveryRegisteredAlgorithmDeclaresUniqueNamesWithDefaultsInRange
 TEST(ParamTables, ErosionTablesAreSound) {
   expect_sound("erosion.thermal", gt::thermal_param_table());
   expect_sound("erosion.thermal_jako", gt::thermal_jako_param_table());
+  expect_sound("erosion.dissolution", gt::dissolution_param_table());
   expect_sound("erosion.pipe", gt::hydraulic_param_table());
   expect_sound("erosion.pipe", gt::pipe_case_param_table());
   expect_sound("erosion.layered", gt::layered_param_table());
@@ -112,6 +114,7 @@ TEST(ParamTables, ErosionTablesAreSound) {
   expect_sound("erosion.beyer", gt::beyer_param_table());
   expect_registered("erosion.thermal", gt::thermal_param_specs());
   expect_registered("erosion.thermal_jako", gt::thermal_jako_param_specs());
+  expect_registered("erosion.dissolution", gt::dissolution_param_specs());
   expect_registered("erosion.pipe", gt::param_specs(gt::pipe_case_param_table()));
   expect_registered("erosion.layered", gt::layered_case_param_specs());
   expect_registered("erosion.particle", gt::particle_param_specs());

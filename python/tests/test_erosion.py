@@ -10,11 +10,12 @@ import pytest
 import groundtruth
 from conftest import float32_sum_bound, cone
 
-EROSION = ["erosion.thermal", "erosion.thermal_jako", "erosion.pipe", "erosion.particle", "erosion.beyer",
-           "erosion.layered"]
+EROSION = ["erosion.thermal", "erosion.thermal_jako", "erosion.dissolution", "erosion.pipe", "erosion.particle",
+           "erosion.beyer", "erosion.layered"]
 
 # Few iterations keep each run under a few seconds on llvmpipe; the properties hold for any count.
 SHORT_RUN = {"erosion.thermal": {"iterations": 12}, "erosion.thermal_jako": {"iterations": 12},
+             "erosion.dissolution": {"iterations": 12, "rain": 0.02},
              "erosion.pipe": {"steps": 12, "rain_rate": 0.001}, "erosion.particle": {}, "erosion.beyer": {},
              "erosion.layered": {"steps": 12}}
 
@@ -100,6 +101,27 @@ def test_the_pipe_model_gives_every_state_field_and_the_water_the_rain_brought(r
         float32_sum_bound(before, after) + 1e-12 * expected
     assert result.check("mass.water_balance.cpu")["status"] == "pass"
     assert "mass.water_balance.cpu" in result.ledger
+
+
+def test_dissolution_keeps_terrain_and_dissolved_material_together_and_books_the_water(results):
+    heights, result = results
+    result = result["erosion.dissolution"]
+    fields, params = result.fields, result.params
+    assert {"terrain", "water", "dissolved", "evaporated"} <= set(fields), list(fields)
+    for backend in ("cpu", "gpu"):
+        # Material only moves between the ground and the water: terrain + dissolved keeps its sum
+        # (the float twin within the rounding of its ~35 additions a cell and iteration).
+        after = fields["terrain"][backend].astype(numpy.float64) + fields["dissolved"][backend]
+        scale = float(numpy.abs(heights).sum())
+        twin_rounding = params["iterations"] * 35 * 2.0**-24 * scale if backend == "gpu" else 1e-12 * scale
+        assert abs(float(after.sum()) - float(heights.sum())) <= \
+            float32_sum_bound(fields["terrain"]["input"], fields["terrain"][backend]) + twin_rounding
+        # Every drop of rain is either on the ground or booked as evaporated.
+        rained = params["rain"] * params["iterations"] * heights.size
+        booked = float(fields["water"][backend].astype(numpy.float64).sum() + fields["evaporated"][backend].sum())
+        assert abs(booked - rained) <= 1e-5 * rained
+    # The flanks lost ground to the water somewhere.
+    assert (fields["terrain"]["cpu"] < heights - 1e-6).any()
 
 
 def test_the_flow_map_is_a_share_of_droplets(results):
