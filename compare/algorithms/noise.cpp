@@ -45,10 +45,43 @@ double float_grid_extent(const NoiseParams& params) {
   return largest_coordinate(float_side);
 }
 
+// A bound on |value| of the function: its terms' scale times the octaves' weights.
+double value_scale(const NoiseParams& params) { return traits_of(params.basis).arithmetic_terms * octave_sums(params).first; }
+
+// Seed 001's tile blends four values with weights that sum to 1, so each sample's error carries
+// over at most once; the blend itself rounds the weights (c = i·(1/W) and 1 − c, both twins alike)
+// and its four products and three sums: 8u of the value's scale.
+double tile_blend_bound(const NoiseParams& params) {
+  return params.tileable ? 8.0 * 0x1p-24 * value_scale(params) : 0.0;
+}
+
+// A tileable field repeats with the grid's period: ref<double>'s sample one grid past the right edge
+// equals the first of its row, and one past the top the first of its column (the points are the
+// same numbers and the weights 1 and 0 there, up to one rounding of W·(1/W): u of the difference of
+// two values, plus the blend's other roundings, 8u of the value's scale, at each end).
+void add_tile_period_check(const NoiseParams& params, CaseResult& result) {
+  if (!params.tileable) return;
+  const int width = params.sampling.width, height = params.sampling.height;
+  std::vector<std::array<int, 2>> cells;
+  for (int j = 0; j < height; ++j) cells.insert(cells.end(), {{0, j}, {width, j}});
+  for (int i = 0; i < width; ++i) cells.insert(cells.end(), {{i, 0}, {i, height}});
+  const auto samples = reference::noise_samples_at(params, params.sampling.origin, cells);
+  double worst = 0.0;
+  for (std::size_t pair = 0; pair + 1 < samples.size(); pair += 2) worst = std::max(worst, std::abs(samples[pair + 1] - samples[pair]));
+  const double bound = 2.0 * 10.0 * 0x1p-53 * value_scale(params);
+  result.checks.push_back(bounded_check(
+      "spec.tile_period.cpu", worst, bound, std::nullopt,
+      fmt::format("largest |sample(i + {}, j) − sample(i, j)| over the first column and |sample(i, j + {}) − sample(i, j)| "
+                  "over the first row, ref<double>: a tile repeats; bound 2·10u·{:.3g} (the value's scale), the "
+                  "blend's roundings at each end",
+                  width, height, value_scale(params))));
+}
+
 FieldTwin::GeneratedField noise_bounds(const NoiseParams& params) {
   const double weights = octave_sums(params).first;
-  const double arithmetic = noise_arithmetic_bound(params);
-  const double precision = noise_precision_bound(params, float_grid_extent(params));
+  const double arithmetic = noise_arithmetic_bound(params) + tile_blend_bound(params);
+  // float_grid_extent reaches one grid further along x and y where the field is tileable.
+  const double precision = noise_precision_bound(params, float_grid_extent(params)) + tile_blend_bound(params);
   return {{arithmetic, arithmetic, "same float operations in the same order, no division: 8u per term"},
           {precision, precision,
            fmt::format("float coordinates up to |x| = {:.4g} (2u·|x|·lipschitz), arithmetic, and {:.3g} for "
@@ -472,6 +505,7 @@ PreparedTwin prepare_noise(NoiseBasis basis, Fractal fractal, const nlohmann::js
   PreparedTwin prepared{.kind = std::move(generated)};
   prepared.extra_checks = [params](const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
     add_distribution_checks(params, reference::noise_field<double>(params, params.sampling.origin), result);
+    add_tile_period_check(params, result);
     add_gradient_check(params, result);
     add_lattice_gradient_check(params, result);
     add_octave_sum_check(params, result);

@@ -22,6 +22,9 @@ std::vector<Mutant> noise_mutants() {
       {"noise.perlin3_texture.gpu_decode", MutantKind::one_twin,
        "GLSL texture Perlin decodes gradients as rgb·2 - 1 (the usual unorm decode) instead of rgb·4 - 1",
        {"noise.perlin3_texture.near_origin"}},
+      {"noise.hetero_terrain.gpu_tile_shift_by_width", MutantKind::one_twin,
+       "GLSL's tileable blend takes the samples above one grid width up instead of one grid height",
+       {"terrain.hetero_terrain.seed001_tileable"}},
       {"noise.fbm.gpu_octave_shift", MutantKind::one_twin,
        "GLSL fBm starts at p·lacunarity: every octave one lacunarity too high",
        {"noise.fbm.perlin3"}},
@@ -36,6 +39,10 @@ std::vector<Mutant> noise_mutants() {
        .cases = {"noise.perlin3.near_origin"},
        .must_survive = true},
       // Both twins: they agree, a spec check against published values or an invariant fails.
+      {"noise.hetero_terrain.tile_weights_mirrored", MutantKind::both_twins,
+       "both twins' tileable blend weighs the sample one grid to the right by c_x and its own by 1 − c_x: the field "
+       "no longer repeats",
+       {"terrain.hetero_terrain.seed001_tileable"}},
       {"noise.simplex3.grad3_swapped", MutantKind::both_twins,
        "grad3's first two entries (1,1,0) and (-1,1,0) exchanged in both twins (2-D and 3-D simplex)",
        {"noise.simplex3.spec.digest_vectors"}},

@@ -53,6 +53,9 @@ ParamTable<NoiseParams> sampling_rows(int dimension) {
                                       "distance between neighbouring samples")),
       boolean_param("reduce_origin", &P::reduce_origin,
                     "move the origin by a period of the noise (in double) before the float twins see it"),
+      boolean_param("tileable", &P::tileable,
+                    "seed 001's wrapping noise: each sample the cross-blend of four, one grid extent apart, so the "
+                    "field repeats with the grid's period"),
   };
   for (int axis = 0; axis < dimension; ++axis) {
     rows.push_back(nested(&P::sampling, real_param(origin_names[axis], element(&NoiseSampling::origin, axis), -1e9,
@@ -199,8 +202,10 @@ double largest_coordinate(const NoiseParams& params) {
   const auto& sampling = params.sampling;
   double largest = 0.0;
   for (int axis = 0; axis < noise_dimension(params.basis); ++axis) {
-    const double extent = axis == 0 ? (sampling.width - 1) * sampling.step
-                          : axis == 1 ? (sampling.height - 1) * sampling.step
+    // A tileable field also samples one grid extent further along x and y.
+    const int copies = params.tileable ? 2 : 1;
+    const double extent = axis == 0 ? (copies * sampling.width - 1) * sampling.step
+                          : axis == 1 ? (copies * sampling.height - 1) * sampling.step
                                       : 0.0;
     largest = std::max({largest, std::abs(sampling.origin[axis]), std::abs(sampling.origin[axis] + extent)});
   }

@@ -43,6 +43,11 @@ struct NoiseParams {
   std::uint32_t seed = 0;               // 0: Perlin's reference permutation
   double kernel_radius_squared = 0.6;   // simplex 3-D/4-D: 0.6 (seed 004) or 0.5 (Gustavson's correction)
   bool reduce_origin = false;
+  // Seed 001's wrapping noise (digest 001 §3.18, the code's InitTerrainObject): each sample is the
+  // bilinear cross-blend of the function at p, p + N_x, p + N_y and p + N_x + N_y (N = the grid's
+  // extent, width·step and height·step), weights c_x = i·(1/width), c_y = j·(1/height), so that the
+  // field repeats with the grid's period.
+  bool tileable = false;
   FractalParams fractal_params;         // fbm, ridged, hetero_terrain
   double amplitude = 1.0;               // terrain synthesis: height = base + amplitude·value (m),
   double base = 0.0;                    //   applied by the driver to both twins' outputs

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -45,6 +46,15 @@ std::string basis_call(const NoiseParams& params, const std::string& q) {
   }
 }
 
+// TILEABLE and the tile's weights per sample, 1/width and 1/height rounded once from double as the
+// reference rounds them (printed to 9 digits: the same float).
+std::vector<std::string> tile_defines(const NoiseParams& params) {
+  if (!params.tileable) return {};
+  return {"TILEABLE",
+          fmt::format("TILE_INVERSE_WIDTH={:.9g}", static_cast<float>(1.0 / params.sampling.width)),
+          fmt::format("TILE_INVERSE_HEIGHT={:.9g}", static_cast<float>(1.0 / params.sampling.height))};
+}
+
 std::vector<std::string> function_defines(const NoiseParams& params) {
   switch (params.fractal) {
     case Fractal::fbm: return {"FRACTAL_BASIS(q)=" + basis_call(params, "q"), "NOISE_VALUE(p)=gt_fbm(p.xyz, fractal_terms)"};
@@ -66,7 +76,9 @@ std::vector<std::string> function_defines(const NoiseParams& params) {
 // noise_field.comp for `params`, its NoiseFieldBlock checked against the mirror. Without a fractal
 // the GLSL block has no fractal_terms and ends where they would begin.
 ComputeProgram noise_field_program(const NoiseParams& params) {
-  ComputeProgram program = ComputeProgram::load("noise/noise_field.comp", function_defines(params));
+  std::vector<std::string> defines = function_defines(params);
+  for (auto& define : tile_defines(params)) defines.push_back(std::move(define));
+  ComputeProgram program = ComputeProgram::load("noise/noise_field.comp", defines);
   BlockLayout layout = {{"origin", offsetof(NoiseFieldBlock, origin)},
                         {"grid_size", offsetof(NoiseFieldBlock, grid_size)},
                         {"step", offsetof(NoiseFieldBlock, step)},

@@ -92,23 +92,65 @@ Real stored_sample(Real value) {
   return value;
 }
 
+// The point of sample (i, j): origin + (i·step, j·step), each coordinate rounded twice in Real.
+template <class Real>
+std::array<Real, 4> sample_point(const std::array<Real, 4>& start, Real step, int i, int j) {
+  std::array<Real, 4> point = start;
+  point[0] = start[0] + static_cast<Real>(i) * step;
+  point[1] = start[1] + static_cast<Real>(j) * step;
+  return point;
+}
+
+// Sample (i, j), any i and j (the tile's period check reads one grid past the edge). Tileable: seed
+// 001's cross-blend c_y·(c_x·n(i, j) + (1 − c_x)·n(i + W, j)) + (1 − c_y)·(c_x·n(i, j + H) +
+// (1 − c_x)·n(i + W, j + H)), the shifted points formed like any sample's, c_x = i·(1/W) with 1/W
+// rounded once from double (both twins multiply: no division). Mutant noise.hetero_terrain.tile_weights_mirrored
+// (both twins): c_x and 1 − c_x exchanged, so the blend no longer wraps.
+template <class Real>
+Real sample_at(const Evaluator<Real>& evaluate, const NoiseParams& params, const std::array<Real, 4>& start, Real step,
+               int i, int j) {
+  if (!params.tileable) return evaluate(sample_point(start, step, i, j));
+  const int width = params.sampling.width, height = params.sampling.height;
+  const Real near_x = static_cast<Real>(i) * static_cast<Real>(1.0 / width);
+  const Real near_y = static_cast<Real>(j) * static_cast<Real>(1.0 / height);
+  const bool mirrored = mutant_active("noise.hetero_terrain.tile_weights_mirrored");
+  const Real weight_x = mirrored ? Real(1) - near_x : near_x;
+  const Real other_x = mirrored ? near_x : Real(1) - near_x;
+  const Real here = weight_x * evaluate(sample_point(start, step, i, j)) +
+                    other_x * evaluate(sample_point(start, step, i + width, j));
+  const Real above = weight_x * evaluate(sample_point(start, step, i, j + height)) +
+                     other_x * evaluate(sample_point(start, step, i + width, j + height));
+  return near_y * here + (Real(1) - near_y) * above;
+}
+
+template <class Real>
+std::array<Real, 4> rounded_origin(const std::array<double, 4>& origin) {
+  std::array<Real, 4> start{};
+  for (int axis = 0; axis < 4; ++axis) start[axis] = static_cast<Real>(origin[axis]);
+  return start;
+}
+
 template <class Real>
 Grid<Real> noise_field(const NoiseParams& params, const std::array<double, 4>& origin) {
   const auto& sampling = params.sampling;
   const Evaluator<Real> evaluate(params);
   const Real step = static_cast<Real>(sampling.step);
-  std::array<Real, 4> start{};
-  for (int axis = 0; axis < 4; ++axis) start[axis] = static_cast<Real>(origin[axis]);
+  const std::array<Real, 4> start = rounded_origin<Real>(origin);
   Grid<Real> field(sampling.width, sampling.height);
   for (int j = 0; j < sampling.height; ++j) {
-    for (int i = 0; i < sampling.width; ++i) {
-      std::array<Real, 4> point = start;
-      point[0] = start[0] + static_cast<Real>(i) * step;
-      point[1] = start[1] + static_cast<Real>(j) * step;
-      field.at(i, j) = stored_sample(evaluate(point));
-    }
+    for (int i = 0; i < sampling.width; ++i) field.at(i, j) = stored_sample(sample_at(evaluate, params, start, step, i, j));
   }
   return field;
+}
+
+std::vector<double> noise_samples_at(const NoiseParams& params, const std::array<double, 4>& origin,
+                                     const std::vector<std::array<int, 2>>& cells) {
+  const Evaluator<double> evaluate(params);
+  const std::array<double, 4> start = rounded_origin<double>(origin);
+  std::vector<double> samples;
+  samples.reserve(cells.size());
+  for (const auto& [i, j] : cells) samples.push_back(sample_at(evaluate, params, start, params.sampling.step, i, j));
+  return samples;
 }
 
 double noise_at(const NoiseParams& params, const std::array<double, 4>& point) {

@@ -3,7 +3,7 @@
 // origin + (i·step, j·step, 0, 0) in noise units. The host chooses the function with the define
 // NOISE_VALUE(p) (p a vec4; e.g. gt_simplex3(p.xyz, kernel_radius_squared)) and, for fractal sums,
 // FRACTAL_BASIS(q) (e.g. gt_perlin3(q)) with NOISE_VALUE(p) = gt_fbm(p.xyz, fractal_terms).
-// Sample (i, j) is values[j·width + i].
+// Sample (i, j) is values[j·width + i]; TILEABLE blends four samples (sample_at below).
 // Inputs:  NoiseFieldBlock (uniform binding 0: grid size, origin, step, kernel_radius_squared and,
 //          for fractal sums, fractal_terms), the permutation (binding 5, noise/permutation.glsl), for
 //          perlin3_texture the texture on unit 0 (noise/perlin_texture.glsl).
@@ -48,11 +48,48 @@ float stored_sample(float value) {
 #endif
 }
 
+// The point of sample (i, j), each coordinate rounded twice as the reference forms it.
+vec4 sample_point(int i, int j) {
+  precise vec4 p = origin;
+  p.x = origin.x + float(i) * step;
+  p.y = origin.y + float(j) * step;
+  return p;
+}
+
+// Sample (i, j). TILEABLE (the host defines it, with TILE_INVERSE_WIDTH and TILE_INVERSE_HEIGHT,
+// 1/width and 1/height rounded once from double): seed 001's cross-blend of four samples one grid
+// extent apart, in the reference's order (reference/noise/noise_field.cpp sample_at).
+// Mutants: TILE_WEIGHTS_MIRRORED (both twins: c_x and 1 − c_x exchanged), GPU_TILE_SHIFT_BY_WIDTH
+// (GPU only: the samples above shifted by the width instead of the height).
+float sample_at(ivec2 cell) {
+#ifdef TILEABLE
+  precise float near_x = float(cell.x) * TILE_INVERSE_WIDTH;
+  precise float near_y = float(cell.y) * TILE_INVERSE_HEIGHT;
+#ifdef GT_MUTANT_NOISE_HETERO_TERRAIN_TILE_WEIGHTS_MIRRORED
+  precise float weight_x = 1.0 - near_x;
+  precise float other_x = near_x;
+#else
+  precise float weight_x = near_x;
+  precise float other_x = 1.0 - near_x;
+#endif
+#ifdef GT_MUTANT_NOISE_HETERO_TERRAIN_GPU_TILE_SHIFT_BY_WIDTH
+  int shift_y = grid_size.x;
+#else
+  int shift_y = grid_size.y;
+#endif
+  precise float here = weight_x * NOISE_VALUE(sample_point(cell.x, cell.y)) +
+                       other_x * NOISE_VALUE(sample_point(cell.x + grid_size.x, cell.y));
+  precise float above = weight_x * NOISE_VALUE(sample_point(cell.x, cell.y + shift_y)) +
+                        other_x * NOISE_VALUE(sample_point(cell.x + grid_size.x, cell.y + shift_y));
+  precise float blended = near_y * here + (1.0 - near_y) * above;
+  return blended;
+#else
+  return NOISE_VALUE(sample_point(cell.x, cell.y));
+#endif
+}
+
 void main() {
   ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
   if (!inside_grid(cell, grid_size)) return;
-  precise vec4 p = origin;
-  p.x = origin.x + float(cell.x) * step;
-  p.y = origin.y + float(cell.y) * step;
-  values[cell_index(cell, grid_size)] = stored_sample(NOISE_VALUE(p));
+  values[cell_index(cell, grid_size)] = stored_sample(sample_at(cell));
 }
