@@ -150,6 +150,34 @@ TEST(CaveMeshChecks, VolumeOfOneRockSampleIsWithinTheCutCubeBound) {
   EXPECT_LE(std::abs(*report.cgal.volume - field.rock_samples), field.bound);
 }
 
+// One rock sample in the air pad is a corner of the 24 Kuhn tetrahedra around it (6 in the cubes
+// where it is corner 0 or 7, 2 in each of the other six), each cut at its edges' midpoints: 24 ×
+// (1/6)/8 = 1/2 lattice units³, which the mesh encloses. On a 2x2x1 block of two rock and two air
+// samples the quads mix interpolated crossings with midpoints at the pad (not planar, so the spec's
+// diagonal matters), and the mesh meets the spec there too, linear or midpoint.
+TEST(CaveMeshChecks, OneRockSampleEnclosesHalfALatticeCell) {
+  const Volume<double> volume(1, 1, 1, -1.0);
+  const std::array<std::int64_t, 3> origin{0, 0, 0};
+  const PiecewiseLinearVolume field = piecewise_linear_volume(volume, 0.0, origin, true);
+  EXPECT_EQ(field.cut_tetrahedra, 24u);
+  EXPECT_NEAR(field.volume, 0.5, 1e-15);
+  EXPECT_NEAR(enclosed_volume(reference::marching_tetrahedra(volume, 0.0, true, origin), origin), 0.5, 1e-15);
+}
+
+TEST(CaveMeshChecks, TheMeshEnclosesThePiecewiseLinearRockOfItsField) {
+  Volume<double> volume(2, 2, 1);
+  volume.values = {-1.0, -0.5, 2.0, 3.0};  // (0,0) and (1,0) rock, (0,1) and (1,1) air
+  const std::array<std::int64_t, 3> origin{10, 20, 30};
+  const Mesh mesh = reference::marching_tetrahedra(volume, 0.0, true, origin);
+  const PiecewiseLinearVolume field = piecewise_linear_volume(volume, 0.0, origin, true);
+  EXPECT_NEAR(enclosed_volume(mesh, origin), field.volume, 1e-13);
+  // Midpoints everywhere give another volume, which the midpoint mesh encloses.
+  const PiecewiseLinearVolume midpoints = piecewise_linear_volume(volume, 0.0, origin, false);
+  EXPECT_GT(std::abs(midpoints.volume - field.volume), 1e-3);
+  const Mesh midpoint_mesh = reference::marching_tetrahedra(volume, 0.0, true, origin, reference::EdgePlacement::midpoint);
+  EXPECT_NEAR(enclosed_volume(midpoint_mesh, origin), midpoints.volume, 1e-13);
+}
+
 // Two samples -1 and 3 padded with air: the x edge between them crosses 0 at t = 1/4, every other
 // crossing edge runs into the pad (midpoints). Moving the inner vertex to 3/4 (measured from the
 // wrong end) or asking about another threshold is caught; the bound holds the clamp margin.

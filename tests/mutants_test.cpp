@@ -188,6 +188,12 @@ TEST(Mutants, CaveFamilyIsKilled) {
   }
   expect_killed_near_the_bound(mutation, "cave.marching_tetrahedra.float_t_off_above_bound",
                                "parity.vertex_model.float_vs_double");
+  // The enclosed volume against the field's piecewise-linear rock, from the samples alone.
+  for (const char* mutant : {"cave.marching_tetrahedra.vertex_wrong_end", "cave.marching_tetrahedra.quad_half",
+                             "cave.marching_tetrahedra.midpoint_off"}) {
+    EXPECT_TRUE(killed_by(mutation, mutant, "volume.mesh_vs_pl.cpu")) << mutant;
+  }
+  EXPECT_TRUE(killed_by(mutation, "cave.marching_tetrahedra.gpu_midpoint_off", "parity.max_abs.gpu_vs_float"));
   expect_killed_near_the_bound(mutation, "cave.marching_tetrahedra.float_density_off_above_bound",
                                "parity.density.float_vs_double");
 }

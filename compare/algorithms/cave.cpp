@@ -11,6 +11,10 @@
 //                                    twins may differ where samples change side, see below)
 //   volume.mesh_vs_field.cpu         solid: |CGAL volume - rock samples| against the cut-cube
 //                                    bound of compare/checks/cave_mesh.hpp
+//   volume.mesh_vs_pl.cpu            solid, tetrahedra: |volume the mesh encloses - the field's
+//                                    piecewise-linear rock under the mesher's placement rule|, per
+//                                    Kuhn tetrahedron from the samples (cave_mesh.hpp), against the
+//                                    rounding of both (fixed before the mesh is read)
 //   spec.vertex_crossing.cpu         ref<double>'s vertices against the field (cave_mesh.hpp): on an
 //                                    edge whose endpoints differ in rock, within δ + 8u·(m + 2) of the
 //                                    linear interpolant's crossing (the midpoint at the pad or with
@@ -262,6 +266,36 @@ std::optional<Check> volume_check(const Block& block, const BlockMeshes& meshes,
       fmt::format("mesh volume {:.6g} vs {} rock samples (lattice units³); bound: Σ max(k, 8 - k)/8 over the {} cubes "
                   "the surface cuts (k rock corners)",
                   *report.cgal.volume, field.rock_samples, field.cut_cubes));
+}
+
+// The volume ref<double>'s mesh encloses against the piecewise-linear volume the field and the
+// mesher's placement rule give (cave_mesh.hpp piecewise_linear_volume), both from the field alone.
+// Bound, fixed before the mesh is read, for N cut tetrahedra: each vertex within ε = 8u·(m + 2) of
+// its crossing moves the volume by at most ε times the area around it, each triangle's area at
+// most 1 (a plane section of a Kuhn tetrahedron) and at most 2N triangles, counted at 3 corners:
+// 6N·ε; the mesh's determinants on coordinates up to e (the block's extent) 4u·e³ a triangle,
+// 2N triangles; the field's polytopes 32u a tetrahedron.
+Check piecewise_linear_volume_check(const Block& block, const BlockMeshes& meshes) {
+  const auto origin = lattice_origin(block.params);
+  const PiecewiseLinearVolume field = piecewise_linear_volume(meshes.density, block.params.threshold, origin,
+                                                              block.placement == EdgePlacement::linear);
+  double magnitude = 0.0, extent = 0.0;
+  const std::array<int, 3> sizes{meshes.density.nx, meshes.density.ny, meshes.density.nz};
+  for (int axis = 0; axis < 3; ++axis) {
+    magnitude = std::max({magnitude, std::abs(double(origin[axis]) - 1.0), std::abs(double(origin[axis]) + sizes[axis])});
+    extent = std::max(extent, double(sizes[axis]) + 1.0);
+  }
+  constexpr double u = 0x1p-53;
+  const double cut = double(field.cut_tetrahedra);
+  const double bound = 6.0 * cut * vertex_crossing_bound(0.0, magnitude, u) + 2.0 * cut * 4.0 * u * extent * extent * extent +
+                       32.0 * u * cut;
+  const double enclosed = enclosed_volume(meshes.truth, origin);
+  return bounded_check(
+      "volume.mesh_vs_pl.cpu", std::abs(enclosed - field.volume), bound, std::nullopt,
+      fmt::format("ref<double>'s mesh encloses {:.12g} lattice units³ where the field's piecewise-linear rock under the "
+                  "mesher's placement rule holds {:.12g} ({} cut Kuhn tetrahedra, computed from the samples); bound: the "
+                  "vertices' rounding 6N·8u(m + 2), the mesh's determinants 8N·u·e³, the polytopes 32N·u",
+                  enclosed, field.volume, field.cut_tetrahedra));
 }
 
 void add_crossing_check(const Block& block, const BlockMeshes& meshes, CaseResult& result) {
@@ -563,6 +597,9 @@ void run_block(const Block& block, const std::string& volume_file, const nlohman
   const MeshReport report = cpu_report.get();
   std::vector<Check> cpu_checks = block_mesh_checks(block, meshes.truth, report, "cpu");
   if (auto volume = volume_check(block, meshes, report)) cpu_checks.push_back(std::move(*volume));
+  if (block.params.solid && block.mesher == Mesher::tetrahedra) {
+    cpu_checks.push_back(piecewise_linear_volume_check(block, meshes));
+  }
   result.checks.insert(result.checks.begin() + static_cast<std::ptrdiff_t>(cpu_checks_at), cpu_checks.begin(),
                        cpu_checks.end());
   if (block.mesher == Mesher::tetrahedra && !options.gpu_available && !options.candidate.mesh) {

@@ -10,10 +10,12 @@
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
+#include <vector>
 
 #include "compare/checks/error_model.hpp"
 #include "core/io/mesh_io.hpp"
 #include "core/params/cave.hpp"
+#include "core/sum.hpp"
 
 namespace gt {
 
@@ -195,6 +197,107 @@ FieldVolume volume_bound_from_field(const Volume<double>& density, double thresh
     }
   }
   return volume;
+}
+
+namespace {
+
+using Point3 = std::array<double, 3>;
+
+double tetrahedron_volume(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const Point3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const Point3 v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const Point3 w{d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+  return std::abs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                  u[2] * (v[0] * w[1] - v[1] * w[0])) /
+         6.0;
+}
+
+}  // namespace
+
+PiecewiseLinearVolume piecewise_linear_volume(const Volume<double>& density, double threshold,
+                                              const std::array<std::int64_t, 3>& origin, bool linear_placement) {
+  const auto sample = [&](int x, int y, int z) -> std::optional<double> {
+    if (x < 0 || y < 0 || z < 0 || x >= density.nx || y >= density.ny || z >= density.nz) return std::nullopt;
+    return density.at(x, y, z);
+  };
+  const auto rock = [threshold](const std::optional<double>& value) { return value && *value < threshold; };
+  // The digest's Kuhn tetrahedra (seed 004 §2.6), each a list of cube corners (bit 0 x, 1 y, 2 z)
+  // in its positively oriented order; its table splits a quad along the diagonal from the first
+  // rock vertex's crossing towards the first air vertex to the second's towards the second.
+  constexpr std::array<std::array<int, 4>, 6> tetrahedra{
+      {{0, 1, 3, 7}, {0, 5, 1, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 6, 4, 7}}};
+  PiecewiseLinearVolume result;
+  CompensatedSum total;
+  for (int z = -1; z < density.nz; ++z) {
+    for (int y = -1; y < density.ny; ++y) {
+      for (int x = -1; x < density.nx; ++x) {
+        for (const auto& tetrahedron : tetrahedra) {
+          std::array<std::optional<double>, 4> value;
+          std::vector<int> inside, outside;  // tetrahedron vertices 0-3, in its order
+          for (int k = 0; k < 4; ++k) {
+            const int corner = tetrahedron[k];
+            value[k] = sample(x + (corner & 1), y + ((corner >> 1) & 1), z + (corner >> 2));
+            (rock(value[k]) ? inside : outside).push_back(k);
+          }
+          if (inside.empty()) continue;
+          if (outside.empty()) {
+            total.add(1.0 / 6.0);
+            continue;
+          }
+          ++result.cut_tetrahedra;
+          const auto point = [&](int k) {
+            const int corner = tetrahedron[k];
+            return Point3{double(corner & 1), double((corner >> 1) & 1), double(corner >> 2)};
+          };
+          // The crossing on the edge between vertices i and j, t measured from its lower lattice point.
+          const auto crossing = [&](int i, int j) {
+            if (tetrahedron[i] > tetrahedron[j]) std::swap(i, j);  // a lower corner's bits are a subset
+            const int direction = tetrahedron[j] - tetrahedron[i];
+            double t = 0.5;
+            if (linear_placement && value[i] && value[j]) {
+              const int corner = tetrahedron[i];
+              const std::array<std::int64_t, 3> lower{origin[0] + x + (corner & 1), origin[1] + y + ((corner >> 1) & 1),
+                                                      origin[2] + z + (corner >> 2)};
+              const double margin = edge_margin(lower, direction);
+              t = std::clamp((threshold - *value[i]) / (*value[j] - *value[i]), margin, 1.0 - margin);
+            }
+            const Point3 a = point(i), b = point(j);
+            return Point3{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+          };
+          if (inside.size() == 1) {
+            total.add(tetrahedron_volume(point(inside[0]), crossing(inside[0], outside[0]), crossing(inside[0], outside[1]),
+                                         crossing(inside[0], outside[2])));
+          } else if (inside.size() == 3) {
+            total.add(1.0 / 6.0 - tetrahedron_volume(point(outside[0]), crossing(outside[0], inside[0]),
+                                                     crossing(outside[0], inside[1]), crossing(outside[0], inside[2])));
+          } else {
+            // The prism (a0 a1 a2 | b0 b1 b2) between the two rock vertices' cut triangles, a_i ↔ b_i,
+            // in three tetrahedra whose cut face is split along a1–b2, the table's diagonal.
+            const Point3 a0 = point(inside[0]), a1 = crossing(inside[0], outside[0]), a2 = crossing(inside[0], outside[1]);
+            const Point3 b0 = point(inside[1]), b1 = crossing(inside[1], outside[0]), b2 = crossing(inside[1], outside[1]);
+            total.add(tetrahedron_volume(a0, a1, a2, b2) + tetrahedron_volume(a0, a1, b1, b2) +
+                      tetrahedron_volume(a0, b0, b1, b2));
+          }
+        }
+      }
+    }
+  }
+  result.volume = total.value();
+  return result;
+}
+
+double enclosed_volume(const Mesh& mesh, const std::array<std::int64_t, 3>& origin) {
+  CompensatedSum total;
+  for (const auto& triangle : mesh.triangles) {
+    std::array<Point3, 3> p{};
+    for (int corner = 0; corner < 3; ++corner) {
+      for (int axis = 0; axis < 3; ++axis) p[corner][axis] = mesh.positions[triangle[corner]][axis] - double(origin[axis]);
+    }
+    total.add((p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+               p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
+              6.0);
+  }
+  return total.value();
 }
 
 double vertex_crossing_bound(double margin, double magnitude, double unit_roundoff) {

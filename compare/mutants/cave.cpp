@@ -72,6 +72,12 @@ std::vector<Mutant> cave_mutants() {
       {"cave.marching_tetrahedra.vertex_wrong_end", MutantKind::both_twins,
        "the vertex placed at 1 - t, measured from the upper end of its edge, in both twins",
        {"cave.marching_tetrahedra.mutant_probe.solid8"}},
+      // Midpoint placement (the seed's marching cubes' choice, offered to the tetrahedra).
+      {"cave.marching_tetrahedra.gpu_midpoint_off", MutantKind::one_twin,
+       "lattice.glsl places a midpoint vertex a quarter along its edge", {"cave.marching_tetrahedra.mutant_probe.solid8_midpoint"}},
+      {"cave.marching_tetrahedra.midpoint_off", MutantKind::both_twins,
+       "both twins place a midpoint vertex a quarter along its edge",
+       {"cave.marching_tetrahedra.mutant_probe.solid8_midpoint"}},
   };
 }
 

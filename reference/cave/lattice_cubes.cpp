@@ -146,6 +146,11 @@ template <class Real>
 std::array<Real, 3> CaveMeshBuilder<Real>::vertex_position(const LatticePoint& lower, const LatticePoint& upper,
                                                            int direction) const {
   Real t = Real(0.5);
+  // The both-twins mutant midpoint_off: midpoint placement a quarter along the edge (lattice.glsl alike).
+  if (placement_ == EdgePlacement::midpoint && !is_pad(lower) && !is_pad(upper) &&
+      mutant_active("cave.marching_tetrahedra.midpoint_off")) {
+    t = Real(0.25);
+  }
   if (placement_ == EdgePlacement::linear && !is_pad(lower) && !is_pad(upper)) {
     const Real lower_value = density_.at(lower[0], lower[1], lower[2]);
     const Real upper_value = density_.at(upper[0], upper[1], upper[2]);

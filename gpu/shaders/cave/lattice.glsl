@@ -66,6 +66,10 @@ float edge_margin(ivec3 global_lower, ivec3 step) {
 // Where on the edge from local point `lower` to lower + step the vertex sits (0 at lower).
 float edge_parameter(ivec3 lower, ivec3 step) {
   ivec3 upper = lower + step;
+#if defined(GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_GPU_MIDPOINT_OFF) || defined(GT_MUTANT_CAVE_MARCHING_TETRAHEDRA_MIDPOINT_OFF)
+  // Mutants: midpoint placement a quarter along the edge (GPU only, or both twins).
+  if (linear_placement == 0u && !is_pad(lower) && !is_pad(upper)) return 0.25;
+#endif
   if (linear_placement == 0u || is_pad(lower) || is_pad(upper)) return 0.5;
   precise float lower_value = density[sample_index(lower)];
   precise float upper_value = density[sample_index(upper)];
