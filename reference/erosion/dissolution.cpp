@@ -47,27 +47,12 @@
 
 #include "core/mutant.hpp"
 #include "core/rounding_interval.hpp"
+#include "reference/erosion/moore_pipes.hpp"
 
 namespace gt::reference {
 
 using std::min;  // unqualified: RoundingInterval (core/rounding_interval.hpp) brings its own
 namespace {
-
-struct Pipe {
-  int dx;
-  int dy;
-};
-
-// Pipe k and pipe opposite(k) point in opposite directions (the GPU twin numbers them alike).
-constexpr std::array<Pipe, 8> pipes{{{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
-constexpr int opposite(int k) { return k < 4 ? (k + 2) % 4 : 4 + (k - 2) % 4; }
-
-template <class Real>
-bool pipe_open(const Grid<Real>& terrain, int x, int y, int k) {
-  const int nx = x + pipes[k].dx;
-  const int ny = y + pipes[k].dy;
-  return terrain.inside(nx, ny) && terrain.is_valid(nx, ny);
-}
 
 // The constants rounded once to Real, as the GPU twin receives them.
 template <class Real>
@@ -133,7 +118,7 @@ std::array<Real, 8> water_outflows(const DissolutionState<Real>& state, int x, i
   int lower = 0;
   for (int k = 0; k < 8; ++k) {
     if (!pipe_open(state.terrain, x, y, k)) continue;
-    const std::size_t neighbour = state.terrain.index(x + pipes[k].dx, y + pipes[k].dy);
+    const std::size_t neighbour = state.terrain.index(x + moore_pipes[k].dx, y + moore_pipes[k].dy);
     const Real difference = surface - (state.terrain.values[neighbour] + state.water.values[neighbour]);
     if (difference > Real(0)) {
       fall[k] = difference;
@@ -172,8 +157,8 @@ std::pair<Real, Real> gathered(const DissolutionState<Real>& state, const Outflo
   }
   for (int k = 0; k < 8; ++k) {
     if (!pipe_open(state.terrain, x, y, k)) continue;
-    const std::size_t neighbour = state.terrain.index(x + pipes[k].dx, y + pipes[k].dy);
-    const Real received = outflows[neighbour][opposite(k)];
+    const std::size_t neighbour = state.terrain.index(x + moore_pipes[k].dx, y + moore_pipes[k].dy);
+    const Real received = outflows[neighbour][opposite_pipe(k)];
     water = water + received;
     dissolved = dissolved + carried(state.dissolved.values[neighbour], received, state.water.values[neighbour]);
   }

@@ -26,30 +26,15 @@
 
 #include "core/mutant.hpp"
 #include "core/rounding_interval.hpp"
+#include "reference/erosion/moore_pipes.hpp"
 
 namespace gt::reference {
 
 using std::max;  // unqualified: RoundingInterval (core/rounding_interval.hpp) brings its own
 namespace {
 
-struct Pipe {
-  int dx;
-  int dy;
-};
-
-// Pipe k and pipe opposite(k) point in opposite directions.
-constexpr std::array<Pipe, 8> pipes{{{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
-constexpr int opposite(int k) { return k < 4 ? (k + 2) % 4 : 4 + (k - 2) % 4; }
-
 template <class Real>
 using Outflows = std::vector<std::array<Real, 8>>;
-
-template <class Real>
-bool pipe_open(const Grid<Real>& heights, int x, int y, int k) {
-  const int nx = x + pipes[k].dx;
-  const int ny = y + pipes[k].dy;
-  return heights.inside(nx, ny) && heights.is_valid(nx, ny);
-}
 
 // `half` is 1/2 of eq. 2.32 (mutant erosion.thermal_jako.unhalved_transfer: 1).
 template <class Real>
@@ -61,7 +46,7 @@ std::array<Real, 8> cell_outflows(const Grid<Real>& heights, int x, int y, const
   Real drop_total = Real(0);
   for (int k = 0; k < 8; ++k) {
     if (!pipe_open(heights, x, y, k)) continue;
-    const Real difference = height - heights.at(x + pipes[k].dx, y + pipes[k].dy);
+    const Real difference = height - heights.at(x + moore_pipes[k].dx, y + moore_pipes[k].dy);
     if (difference > talus_limit[k]) {
       drop[k] = difference;
       largest_drop = max(largest_drop, difference);
@@ -85,7 +70,7 @@ Real gathered_height(const Grid<Real>& heights, const Outflows<Real>& outflows, 
   for (int k = first_paid; k < 8; ++k) height = height - own[k];
   for (int k = 0; k < 8; ++k) {
     if (!pipe_open(heights, x, y, k)) continue;
-    height = height + outflows[heights.index(x + pipes[k].dx, y + pipes[k].dy)][opposite(k)];
+    height = height + outflows[heights.index(x + moore_pipes[k].dx, y + moore_pipes[k].dy)][opposite_pipe(k)];
   }
   return height;
 }

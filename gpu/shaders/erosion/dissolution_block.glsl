@@ -7,7 +7,8 @@
 // Inputs:  declares DissolutionBlock (uniform binding 0), terrain (1), valid (2, read only), outflows
 //          (3), water (4), dissolved (5), evaporated (6), next_water (7), next_dissolved (8); the
 //          host swaps water and dissolved with their next buffers after each gather.
-// Outputs: the block, buffers, pipe_open and outflow(index, k) of the three passes.
+// Outputs: the block, buffers and outflow(index, k) of the three passes; the pipes
+//          (common/moore_pipes.glsl).
 // Twin:    reference/erosion/dissolution.cpp; host: gpu/erosion/dissolution.cpp.
 layout(local_size_x = 16, local_size_y = 16) in;
 
@@ -31,14 +32,6 @@ layout(std430, binding = 6) buffer Evaporated { float evaporated[]; };
 layout(std430, binding = 7) writeonly buffer NextWater { float next_water[]; };
 layout(std430, binding = 8) writeonly buffer NextDissolved { float next_dissolved[]; };
 
-const ivec2 pipe_offsets[8] = ivec2[8](ivec2(-1, 0), ivec2(0, 1), ivec2(1, 0), ivec2(0, -1),
-                                       ivec2(-1, -1), ivec2(-1, 1), ivec2(1, 1), ivec2(1, -1));
-
-int opposite_pipe(int k) { return k < 4 ? (k + 2) % 4 : 4 + (k - 2) % 4; }
-
-bool pipe_open(ivec2 cell, int k) {
-  ivec2 target = cell + pipe_offsets[k];
-  return inside_grid(target, grid_size) && valid[cell_index(target, grid_size)] != 0u;
-}
+#include "common/moore_pipes.glsl"
 
 float outflow(uint index, int k) { return outflows[2u * index + uint(k / 4)][k % 4]; }

@@ -6,7 +6,8 @@
 // outflows of a cell are stored as two vec4: pipes 0-3, then 4-7.
 // Inputs:  declares ThermalJakoBlock (uniform binding 0), heights (1, read only), valid (2), outflows
 //          (3), next_heights (4, write only).
-// Outputs: the block, buffers and outflow(index, k) of the two passes.
+// Outputs: the block, buffers, talus_limit(k) and outflow(index, k) of the two passes; the pipes
+//          (common/moore_pipes.glsl).
 // Twin:    reference/erosion/thermal_jako.cpp; host: gpu/erosion/thermal_jako.cpp.
 layout(local_size_x = 16, local_size_y = 16) in;
 
@@ -22,16 +23,8 @@ layout(std430, binding = 2) readonly buffer Valid { uint valid[]; };
 layout(std430, binding = 3) buffer Outflows { vec4 outflows[]; };
 layout(std430, binding = 4) writeonly buffer NextHeights { float next_heights[]; };
 
-const ivec2 pipe_offsets[8] = ivec2[8](ivec2(-1, 0), ivec2(0, 1), ivec2(1, 0), ivec2(0, -1),
-                                       ivec2(-1, -1), ivec2(-1, 1), ivec2(1, 1), ivec2(1, -1));
-
-int opposite_pipe(int k) { return k < 4 ? (k + 2) % 4 : 4 + (k - 2) % 4; }
+#include "common/moore_pipes.glsl"
 
 float talus_limit(int k) { return k < 4 ? talus_limit_cardinal[k] : talus_limit_diagonal[k - 4]; }
-
-bool pipe_open(ivec2 cell, int k) {
-  ivec2 target = cell + pipe_offsets[k];
-  return inside_grid(target, grid_size) && valid[cell_index(target, grid_size)] != 0u;
-}
 
 float outflow(uint index, int k) { return outflows[2u * index + uint(k / 4)][k % 4]; }
