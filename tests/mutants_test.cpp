@@ -212,6 +212,7 @@ TEST(Mutants, PlanetFamilyIsKilled) {
   expect_killed_near_the_bound(mutation, "planet.smoothing.float_off_above_bound", "parity.elevation.float_vs_double");
   expect_killed_near_the_bound(mutation, "planet.noise.gpu_off_above_bound", "parity.noise.gpu_vs_float");
   EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.unwarp_over_tan", "topology.round_trip"));
+  EXPECT_TRUE(killed_by(mutation, "planet.plates.thesis_rate_as_code", "planet.rate_formula.thesis_e2: spec.rate_bounds.cpu"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_last_seed_missing", "partition.empty_plates.gpu"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_counts_visits", "partition.unassigned.gpu"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.seeds_repeat", "partition.empty_plates.cpu"));

@@ -21,6 +21,8 @@
 //   partition.*.{cpu,gpu}     regions without a plate, empty plates, plates not 8-connected,
 //                             regions whose is_edge is not the definition (all must be 0)
 //   spec.expansion_rate.cpu   Algorithm 3 as intended: rings per cycle average to the rate (6σ)
+//   spec.rate_bounds.cpu      every plate's rate within the asked formula's interval (the code's
+//                             or the thesis's, rate_formula), written here from the parameters
 //   spec.smoothing_constant.cpu   the Jacobi mean keeps a constant field
 //   spec.pressure_symmetry.cpu    pressure(i, n) = pressure(n, i) bit for bit (§9.5)
 //   legacy.*                  informative: the share of regions whose plate the seed code's
@@ -271,6 +273,28 @@ void add_expansion_rate_check(const PlanetParams& params, CaseResult& result) {
                                         std::nullopt,
                                         "largest |mean rings per cycle − rate| over the plates, 4000 cycles each; "
                                         "bound 6σ of a Bernoulli mean"));
+}
+
+// Step 2's rates against the formula asked, written here from the parameters (not from the twins'
+// plate_rate_bounds): every plate's rate in [lo, hi] of the code's U[max(0, 1 − e), 1 + e] or the
+// thesis's (U[1 − e, 1 + e] for e < 1, U[0, e] for e > 1), up to the floor of 1/256 and the float
+// rounding of lo + (hi − lo)·U (2u of hi).
+void add_rate_bounds_check(const PlanetParams& params, CaseResult& result) {
+  const double e = params.expansion_range;
+  const bool thesis = params.rate_formula == RateFormula::thesis;
+  const double low = thesis && e > 1.0 ? 0.0 : std::max(0.0, 1.0 - e);
+  const double high = thesis && e > 1.0 ? e : 1.0 + e;
+  const double slack = 2.0 * 0x1p-24 * high;
+  double outside = 0.0;
+  for (const float rate : reference::plate_rates(params)) {
+    const double floor_low = std::max(low, double(minimum_plate_rate));
+    outside = std::max({outside, floor_low - slack - rate, rate - (high + slack)});
+  }
+  result.checks.push_back(bounded_check(
+      "spec.rate_bounds.cpu", std::max(outside, 0.0), 0.0, std::nullopt,
+      fmt::format("largest distance of a plate's rate outside [{:.6g}, {:.6g}], the {} formula's interval for e = {:g} "
+                  "(with the floor 1/256), beyond 2u of float rounding",
+                  low, high, thesis ? "thesis's" : "code's", e)));
 }
 
 // The thesis' smoothing is a mean: a constant field stays that constant, up to the rounding of nine
@@ -912,6 +936,7 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
   }
   add_partition_checks(sphere, params, planet.partition, "cpu", result);
   add_expansion_rate_check(twins, result);
+  add_rate_bounds_check(twins, result);
   add_smoothing_check(sphere, result);
   add_pressure_symmetry_check(sphere, params, planet, result);
   const Planet<double> truth = uses_legacy(params) ? generate<double>(sphere, twins) : planet;

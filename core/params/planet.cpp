@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 
 namespace gt {
 namespace {
@@ -17,6 +18,7 @@ constexpr Choice<PlateRule> plate_rule_choices[] = {{"synchronous", PlateRule::s
 constexpr Choice<PlateCentre> centre_choices[] = {{"mean", PlateCentre::mean}, {"edge_sum", PlateCentre::edge_sum}};
 constexpr Choice<PressureFormula> pressure_choices[] = {{"code", PressureFormula::code},
                                                         {"thesis", PressureFormula::thesis}};
+constexpr Choice<RateFormula> rate_formula_choices[] = {{"code", RateFormula::code}, {"thesis", RateFormula::thesis}};
 constexpr Choice<PlateBases> plate_bases_choices[] = {{"uniform", PlateBases::uniform},
                                                       {"bimodal", PlateBases::bimodal}};
 constexpr Choice<Smoothing> smoothing_choices[] = {
@@ -30,8 +32,13 @@ const char* smoothing_name(Smoothing smoothing) { return choice_name(smoothing_c
 
 PlateRateBounds plate_rate_bounds(const PlanetParams& params) {
   PlateRateBounds bounds;
-  bounds.low = static_cast<float>(std::max(0.0, 1.0 - params.expansion_range));
-  bounds.high = static_cast<float>(1.0 + params.expansion_range);
+  const double e = params.expansion_range;
+  // Mutant planet.plates.thesis_rate_as_code (both twins take their bounds here): the thesis's
+  // formula asked, the code's upper bound 1 + e used for e > 1.
+  const bool thesis_above_one = params.rate_formula == RateFormula::thesis && e > 1.0;
+  const bool code_high = !thesis_above_one || mutant_active("planet.plates.thesis_rate_as_code");
+  bounds.low = static_cast<float>(std::max(0.0, 1.0 - e));
+  bounds.high = static_cast<float>(code_high ? 1.0 + e : e);
   bounds.max_expansions = static_cast<int>(std::floor(bounds.high)) + 1;
   return bounds;
 }
@@ -47,6 +54,9 @@ const ParamTable<PlanetParams>& planet_param_table() {
       integer_param("plates", &P::plates, 1, 500, "count", "plateNumber: at most 6R²"),
       real_param("expansion_range", &P::expansion_range, 0.0, 5.0, "1",
                  "e: plate rates uniform in [max(0, 1 − e), 1 + e] rings per cycle (the code's formula)"),
+      choice_param("rate_formula", &P::rate_formula, rate_formula_choices, "",
+                   "plate rates: the code's U[max(0, 1 − e), 1 + e], or the thesis's U[1 − e, 1 + e] for e < 1 and "
+                   "U[0, e] for e > 1 (undefined at e = 1)"),
       choice_param("plate_rule", &P::plate_rule, plate_rule_choices, "",
                    "synchronous ring-BFS with the lowest-index rule (both twins), "
                    "the seed code's sequential first-come fill (CPU only), or its random-driven variant: one random "
@@ -85,6 +95,10 @@ const ParamSpecs& planet_param_specs() {
 
 PlanetParams planet_params_from_json(const nlohmann::json& resolved) {
   const PlanetParams params = params_from_json(planet_param_table(), resolved);
+  if (params.rate_formula == RateFormula::thesis && params.expansion_range == 1.0) {
+    throw InputError("rate_formula = thesis is undefined at expansion_range = 1 (the thesis gives [1 − e, 1 + e] below "
+                     "1 and [0, e] above it, and nothing at 1): choose another e, or rate_formula = code");
+  }
   if (params.plates > params.region_count()) {
     throw InputError(fmt::format("plates = {} exceeds the {} regions of resolution {} (6R²)", params.plates,
                                  params.region_count(), params.resolution));

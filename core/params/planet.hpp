@@ -14,8 +14,9 @@
 //      attempt = 0, 1, ... until the region is not already a seed; after 64 attempts it takes the
 //      first free region in index order. So no plate is empty (the code's duplicate seeds left
 //      plates empty, §4.4.2; §9.2 lets us reject them).
-//    Rate (erratum 9, the code's formula): rate_k = max(lo + (hi − lo)·U(k, 0, rate), 1/256) in
-//      float, lo = max(0, 1 − e), hi = 1 + e rounded to float once. The floor of 1/256 keeps every
+//    Rate (erratum 9, the code's formula by default): rate_k = max(lo + (hi − lo)·U(k, 0, rate), 1/256)
+//      in float, lo = max(0, 1 − e), hi = 1 + e rounded to float once; rate_formula = thesis takes
+//      lo = 1 − e, hi = 1 + e for e < 1 and lo = 0, hi = e for e > 1. The floor of 1/256 keeps every
 //      plate growing: a plate of rate 0 would never grow, and could leave regions no plate reaches.
 //    Expansions in cycle c (erratum 10, the intended Algorithm 3): whole = floor(rate_k),
 //      expansions(k, c) = whole + (U(k, c, expansion) < rate_k − whole ? 1 : 0).
@@ -79,6 +80,9 @@ namespace gt {
 enum class PlateRule { synchronous, legacy, legacy_random };
 enum class PlateCentre { mean, edge_sum };
 enum class PressureFormula { code, thesis };
+// Step 2's rates: the code's U[max(0, 1 − e), 1 + e], or the thesis's (erratum 9) U[1 − e, 1 + e]
+// for e < 1 and U[0, e] for e > 1 (undefined at e = 1, refused; a jump there).
+enum class RateFormula { code, thesis };
 enum class Smoothing { jacobi, legacy, off };
 enum class PlateBases { uniform, bimodal };
 
@@ -102,6 +106,7 @@ struct PlanetParams {
   double jitter = 1.0;          // j in [0, 1]
   int plates = 50;              // P, at most 6R²
   double expansion_range = 0.5; // e
+  RateFormula rate_formula = RateFormula::code;
   PlateRule plate_rule = PlateRule::synchronous;
   PlateCentre centre = PlateCentre::mean;
   double elevation_range = 0.8;     // e_r
@@ -122,8 +127,9 @@ struct PlanetParams {
   bool smooths() const { return smoothing != Smoothing::off && (collisions || !smooth_only_with_collisions); }
 };
 
-// The rate bounds of step 2 as the twins use them: lo = max(0, 1 − e), hi = 1 + e, each rounded to
-// float once; max_expansions = floor(hi) + 1 sub-steps per cycle.
+// The rate bounds of step 2 as the twins use them: lo = max(0, 1 − e), hi = 1 + e (the code's; the
+// thesis's lo = 0, hi = e for e > 1), each rounded to float once; max_expansions = floor(hi) + 1
+// sub-steps per cycle.
 struct PlateRateBounds {
   float low = 0.5f;
   float high = 1.5f;
