@@ -172,6 +172,7 @@ TEST(Mutants, ErosionDissolutionIsKilled) {
   }
   EXPECT_TRUE(killed_by(mutation, "erosion.dissolution.unhalved_pair", "erosion.dissolution.spec.pair_level: spec.cells.cpu"));
   EXPECT_TRUE(killed_by(mutation, "erosion.dissolution.deposition_kept", "mass.material_drift.cpu"));
+  EXPECT_TRUE(killed_by(mutation, "erosion.dissolution.float_evaporated_uncounted", "mass.water_balance.cpu_float"));
   EXPECT_TRUE(killed_by(mutation, "erosion.dissolution.threshold_ignored", "spec.step.water.cpu"));
 }
 TEST(Mutants, NoiseFamilyIsKilled) {

@@ -6,7 +6,9 @@
 // one_twin: bugs in the GPU shaders only, killed by the shadow step (parity.shadow.<field>.gpu_vs_float,
 // the GPU loaded with ref<float>'s state and stepped one iteration beside it, against the step's
 // rounding-interval bounds). The first two conserve water and material, so no ledger sees them;
-// evaporated_uncounted is seen by the GPU's water ledger as well.
+// evaporated_uncounted is seen by the GPU's water ledger as well. float_evaporated_uncounted is the
+// same bug in both float twins (ref<float> and the GPU agree): their own water ledgers
+// (mass.water_balance.cpu_float, .gpu) see it.
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what was
 // asked: the pair examples (spec.cells), the host's spec of one iteration (spec.step.<field>.cpu) and
@@ -32,6 +34,10 @@ std::vector<Mutant> dissolution_mutants() {
        probe_and_real},
       {"erosion.dissolution.dissolved_left_behind", MutantKind::one_twin,
        "dissolution_gather.comp moves the water but not the material dissolved in it", worked_and_real},
+      {"erosion.dissolution.float_evaporated_uncounted", MutantKind::one_twin,
+       "ref<float> and the GPU book kept − remaining as evaporated (what e^{-K_e} took unrecorded): the float twins' "
+       "water ledgers against ref<double>'s",
+       worked_and_real},
       {"erosion.dissolution.evaporated_uncounted", MutantKind::one_twin,
        "dissolution_local.comp books kept − remaining as evaporated instead of rained − remaining: what e^{-K_e} took "
        "goes unrecorded (the water itself is right)",

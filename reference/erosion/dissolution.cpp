@@ -34,7 +34,7 @@
 // until the next rain or evaporation.
 // Units: heights, depths and dissolved material in the terrain's vertical unit (metres).
 // Mutants (compare/mutants/dissolution.cpp; the GPU twin carries the same ones): unhalved_pair,
-// deposition_kept, threshold_ignored.
+// deposition_kept, threshold_ignored; and in ref<float> and the GPU, float_evaporated_uncounted.
 //
 // Memory traffic per cell and iteration (ref<double>, the performance table's floor column): the
 // local step reads and writes 4 doubles (64 B), the outflow pass reads terrain and water (16 B) and
@@ -43,6 +43,7 @@
 #include "reference/erosion/dissolution.hpp"
 
 #include <array>
+#include <type_traits>
 #include <vector>
 
 #include "core/mutant.hpp"
@@ -61,6 +62,7 @@ struct Rounded {
   bool mean_level;
   bool threshold_applied;
   bool deposition_paid;
+  bool evaporation_booked_short;
 };
 
 template <class Real>
@@ -77,7 +79,11 @@ Rounded<Real> rounded(const DissolutionConstants& constants) {
           // Mutant erosion.dissolution.threshold_ignored: d_e kept whole, T never subtracted.
           .threshold_applied = !mutant_active("erosion.dissolution.threshold_ignored"),
           // Mutant erosion.dissolution.deposition_kept: deposited material stays in the water too.
-          .deposition_paid = !mutant_active("erosion.dissolution.deposition_kept")};
+          .deposition_paid = !mutant_active("erosion.dissolution.deposition_kept"),
+          // Mutant erosion.dissolution.float_evaporated_uncounted (the float twins, ref<float> and the
+          // GPU): what e^{-K_e} took is not booked as evaporated.
+          .evaporation_booked_short =
+              std::is_same_v<Real, float> && mutant_active("erosion.dissolution.float_evaporated_uncounted")};
 }
 
 // Steps 1-3 on one cell, in place.
@@ -87,7 +93,7 @@ void rain_evaporate_dissolve(DissolutionState<Real>& state, std::size_t cell, co
   const Real kept = water * c.retained;
   Real remaining = kept;
   if (c.threshold_applied) remaining = kept < c.threshold ? Real(0) : kept - c.threshold;
-  state.evaporated.values[cell] = state.evaporated.values[cell] + (water - remaining);
+  state.evaporated.values[cell] = state.evaporated.values[cell] + ((c.evaporation_booked_short ? kept : water) - remaining);
   water = remaining;
   state.water.values[cell] = water;
   const Real capacity = c.saturation * water;

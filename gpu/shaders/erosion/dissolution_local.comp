@@ -3,8 +3,8 @@
 // rain, evaporation with its threshold, then dissolution or deposition towards S = K_s·d.
 // Decisions: reference/erosion/dissolution.cpp. All arithmetic is `precise` (no fused multiply-add),
 // in the reference's order, so that ref<float> repeats it.
-// Mutants (compare/mutants/dissolution.cpp): EVAPORATED_UNCOUNTED (GPU only), THRESHOLD_IGNORED,
-// DEPOSITION_KEPT (both twins).
+// Mutants (compare/mutants/dissolution.cpp): EVAPORATED_UNCOUNTED (GPU only), FLOAT_EVAPORATED_UNCOUNTED
+// (the float twins: ref<float> makes the same change), THRESHOLD_IGNORED, DEPOSITION_KEPT (both twins).
 // Inputs:  DissolutionBlock (uniform binding 0), terrain (1), valid (2), water (4), dissolved (5),
 //          evaporated (6) (dissolution_block.glsl).
 // Outputs: terrain, water, dissolved, evaporated, in place.
@@ -24,7 +24,8 @@ void main() {
 #else
   precise float remaining = kept < threshold ? 0.0 : kept - threshold;
 #endif
-#ifdef GT_MUTANT_EROSION_DISSOLUTION_EVAPORATED_UNCOUNTED
+#if defined(GT_MUTANT_EROSION_DISSOLUTION_EVAPORATED_UNCOUNTED) || \
+    defined(GT_MUTANT_EROSION_DISSOLUTION_FLOAT_EVAPORATED_UNCOUNTED)
   evaporated[index] = evaporated[index] + (kept - remaining);
 #else
   evaporated[index] = evaporated[index] + (depth - remaining);
