@@ -278,10 +278,19 @@ void print_list(const ListRequest& request) {
   for (const auto& algorithm : listing["algorithms"]) {
     fmt::print("  {}  {}\n    source: {}\n", algorithm["name"].get<std::string>(),
                algorithm["summary"].get<std::string>(), algorithm["source"].get<std::string>());
+    // Columns as wide as the algorithm's widest entry (at least the usual widths), so that a long
+    // name or range does not push the rest of its row out of line.
+    std::size_t name_width = 16, default_width = 12, range_width = 22, unit_width = 8;
     for (const auto& param : algorithm["params"]) {
-      const auto range = range_text(param);
-      fmt::print("    {:16} default {:12} {:22} {:8} {}\n", param["name"].get<std::string>(), param["default"].dump(),
-                 range, param["unit"].get<std::string>(), param["description"].get<std::string>());
+      name_width = std::max(name_width, param["name"].get<std::string>().size());
+      default_width = std::max(default_width, param["default"].dump().size());
+      range_width = std::max(range_width, range_text(param).size());
+      unit_width = std::max(unit_width, param["unit"].get<std::string>().size());
+    }
+    for (const auto& param : algorithm["params"]) {
+      fmt::print("    {:{}} default {:{}} {:{}} {:{}} {}\n", param["name"].get<std::string>(), name_width,
+                 param["default"].dump(), default_width, range_text(param), range_width,
+                 param["unit"].get<std::string>(), unit_width, param["description"].get<std::string>());
     }
   }
   if (request.algorithms_only) return;
