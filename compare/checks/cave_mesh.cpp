@@ -16,6 +16,7 @@
 #include "core/io/mesh_io.hpp"
 #include "core/params/cave.hpp"
 #include "core/sum.hpp"
+#include "core/vec3.hpp"
 
 namespace gt {
 
@@ -172,11 +173,21 @@ void write_mesh_artifact(const Mesh& mesh, const std::string& file, const std::s
   result.artifacts.push_back({relative, "mesh", caption});
 }
 
+namespace {
+
+// The sample at local lattice point (x, y, z) of a solid block, none in the air pad around it.
+std::optional<double> padded_sample(const Volume<double>& density, std::int64_t x, std::int64_t y, std::int64_t z) {
+  if (x < 0 || y < 0 || z < 0 || x >= density.nx || y >= density.ny || z >= density.nz) return std::nullopt;
+  return density.at(int(x), int(y), int(z));
+}
+
+// Rock iff a sample below the threshold; the pad is air.
+bool is_rock(const std::optional<double>& value, double threshold) { return value && *value < threshold; }
+
+}  // namespace
+
 FieldVolume volume_bound_from_field(const Volume<double>& density, double threshold) {
-  const auto rock = [&](int x, int y, int z) {
-    const bool inside = x >= 0 && y >= 0 && z >= 0 && x < density.nx && y < density.ny && z < density.nz;
-    return inside && density.at(x, y, z) < threshold;
-  };
+  const auto rock = [&](int x, int y, int z) { return is_rock(padded_sample(density, x, y, z), threshold); };
   FieldVolume volume;
   for (int z = 0; z < density.nz; ++z) {
     for (int y = 0; y < density.ny; ++y) {
@@ -201,26 +212,14 @@ FieldVolume volume_bound_from_field(const Volume<double>& density, double thresh
 
 namespace {
 
-using Point3 = std::array<double, 3>;
-
-double tetrahedron_volume(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-  const Point3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const Point3 v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const Point3 w{d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-  return std::abs(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                  u[2] * (v[0] * w[1] - v[1] * w[0])) /
-         6.0;
+double tetrahedron_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return std::abs(dot(b - a, cross(c - a, d - a))) / 6.0;
 }
 
 }  // namespace
 
 PiecewiseLinearVolume piecewise_linear_volume(const Volume<double>& density, double threshold,
                                               const std::array<std::int64_t, 3>& origin, bool linear_placement) {
-  const auto sample = [&](int x, int y, int z) -> std::optional<double> {
-    if (x < 0 || y < 0 || z < 0 || x >= density.nx || y >= density.ny || z >= density.nz) return std::nullopt;
-    return density.at(x, y, z);
-  };
-  const auto rock = [threshold](const std::optional<double>& value) { return value && *value < threshold; };
   // The digest's Kuhn tetrahedra (seed 004 §2.6), each a list of cube corners (bit 0 x, 1 y, 2 z)
   // in its positively oriented order; its table splits a quad along the diagonal from the first
   // rock vertex's crossing towards the first air vertex to the second's towards the second.
@@ -236,8 +235,8 @@ PiecewiseLinearVolume piecewise_linear_volume(const Volume<double>& density, dou
           std::vector<int> inside, outside;  // tetrahedron vertices 0-3, in its order
           for (int k = 0; k < 4; ++k) {
             const int corner = tetrahedron[k];
-            value[k] = sample(x + (corner & 1), y + ((corner >> 1) & 1), z + (corner >> 2));
-            (rock(value[k]) ? inside : outside).push_back(k);
+            value[k] = padded_sample(density, x + (corner & 1), y + ((corner >> 1) & 1), z + (corner >> 2));
+            (is_rock(value[k], threshold) ? inside : outside).push_back(k);
           }
           if (inside.empty()) continue;
           if (outside.empty()) {
@@ -247,7 +246,7 @@ PiecewiseLinearVolume piecewise_linear_volume(const Volume<double>& density, dou
           ++result.cut_tetrahedra;
           const auto point = [&](int k) {
             const int corner = tetrahedron[k];
-            return Point3{double(corner & 1), double((corner >> 1) & 1), double(corner >> 2)};
+            return Vec3{double(corner & 1), double((corner >> 1) & 1), double(corner >> 2)};
           };
           // The crossing on the edge between vertices i and j, t measured from its lower lattice point.
           const auto crossing = [&](int i, int j) {
@@ -261,8 +260,8 @@ PiecewiseLinearVolume piecewise_linear_volume(const Volume<double>& density, dou
               const double margin = edge_margin(lower, direction);
               t = std::clamp((threshold - *value[i]) / (*value[j] - *value[i]), margin, 1.0 - margin);
             }
-            const Point3 a = point(i), b = point(j);
-            return Point3{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+            const Vec3 a = point(i), b = point(j);
+            return a + t * (b - a);
           };
           if (inside.size() == 1) {
             total.add(tetrahedron_volume(point(inside[0]), crossing(inside[0], outside[0]), crossing(inside[0], outside[1]),
@@ -273,8 +272,8 @@ PiecewiseLinearVolume piecewise_linear_volume(const Volume<double>& density, dou
           } else {
             // The prism (a0 a1 a2 | b0 b1 b2) between the two rock vertices' cut triangles, a_i ↔ b_i,
             // in three tetrahedra whose cut face is split along a1–b2, the table's diagonal.
-            const Point3 a0 = point(inside[0]), a1 = crossing(inside[0], outside[0]), a2 = crossing(inside[0], outside[1]);
-            const Point3 b0 = point(inside[1]), b1 = crossing(inside[1], outside[0]), b2 = crossing(inside[1], outside[1]);
+            const Vec3 a0 = point(inside[0]), a1 = crossing(inside[0], outside[0]), a2 = crossing(inside[0], outside[1]);
+            const Vec3 b0 = point(inside[1]), b1 = crossing(inside[1], outside[0]), b2 = crossing(inside[1], outside[1]);
             total.add(tetrahedron_volume(a0, a1, a2, b2) + tetrahedron_volume(a0, a1, b1, b2) +
                       tetrahedron_volume(a0, b0, b1, b2));
           }
@@ -289,13 +288,10 @@ PiecewiseLinearVolume piecewise_linear_volume(const Volume<double>& density, dou
 double enclosed_volume(const Mesh& mesh, const std::array<std::int64_t, 3>& origin) {
   CompensatedSum total;
   for (const auto& triangle : mesh.triangles) {
-    std::array<Point3, 3> p{};
-    for (int corner = 0; corner < 3; ++corner) {
-      for (int axis = 0; axis < 3; ++axis) p[corner][axis] = mesh.positions[triangle[corner]][axis] - double(origin[axis]);
-    }
-    total.add((p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-               p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
-              6.0);
+    const Vec3 shift{double(origin[0]), double(origin[1]), double(origin[2])};
+    const Vec3 p0 = mesh.positions[triangle[0]] - shift, p1 = mesh.positions[triangle[1]] - shift,
+               p2 = mesh.positions[triangle[2]] - shift;
+    total.add(dot(p0, cross(p1, p2)) / 6.0);
   }
   return total.value();
 }
@@ -332,16 +328,10 @@ VertexCrossings vertex_crossings(const Mesh& mesh, const Volume<double>& density
                                  const std::array<std::int64_t, 3>& origin, bool linear_placement,
                                  const CrossingModel& model) {
   // The sample at a global lattice point, none in the pad.
-  const auto sample = [&](const std::array<std::int64_t, 3>& point) -> std::optional<double> {
-    std::array<std::int64_t, 3> local{};
-    for (int axis = 0; axis < 3; ++axis) local[axis] = point[axis] - origin[axis];
-    if (local[0] < 0 || local[1] < 0 || local[2] < 0 || local[0] >= density.nx || local[1] >= density.ny ||
-        local[2] >= density.nz) {
-      return std::nullopt;
-    }
-    return density.at(int(local[0]), int(local[1]), int(local[2]));
+  const auto sample = [&](const std::array<std::int64_t, 3>& point) {
+    return padded_sample(density, point[0] - origin[0], point[1] - origin[1], point[2] - origin[2]);
   };
-  const auto rock = [threshold](const std::optional<double>& value) { return value && *value < threshold; };
+  const auto rock = [threshold](const std::optional<double>& value) { return is_rock(value, threshold); };
   const auto undecided = [&](const std::optional<double>& value) {
     return model.density_error > 0.0 && value && std::abs(*value - threshold) <= model.density_error;
   };
