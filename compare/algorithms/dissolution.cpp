@@ -42,8 +42,6 @@
 namespace gt {
 namespace {
 
-constexpr const char* field_names[] = {"terrain", "water", "dissolved", "evaporated"};
-
 StateDecl dissolution_fields(const std::string& unit) {
   return {terrain_field(unit),
           {.name = "water", .unit = unit, .meaning = "water depth d", .conserved = true,
@@ -127,19 +125,19 @@ struct RunScales {
   double water_handled = 0.0;  // Σ(d_0 + evaporated_0) + N·K_r·cells: the most water the run holds
   double material = 0.0;       // Σ(|b_0| + s_0) + 2·N·K_s·water_handled: Σ(|b| + s) never exceeds it
   double rain_total = 0.0;     // N·K_r·cells, asked
-  std::size_t cells = 0;       // valid cells
 };
 
 RunScales run_scales(const State& initial, const DissolutionParams& params) {
   RunScales scales;
   CompensatedSum water, material;
+  std::size_t cells = 0;  // valid
   for (std::size_t cell = 0; cell < initial.grid.cells(); ++cell) {
     if (!initial.grid.is_valid(cell)) continue;
-    ++scales.cells;
+    ++cells;
     water.add(initial.fields[1][cell] + initial.fields[3][cell]);
     material.add(std::abs(initial.fields[0][cell]) + initial.fields[2][cell]);
   }
-  scales.rain_total = params.iterations * params.rain * static_cast<double>(scales.cells);
+  scales.rain_total = params.iterations * params.rain * static_cast<double>(cells);
   scales.water_handled = water.value() + scales.rain_total;
   scales.material = material.value() + 2.0 * params.iterations * params.saturation * scales.water_handled;
   return scales;
@@ -161,10 +159,6 @@ constexpr double material_roundings = 1.0 + 2.0 * (1.0 + 16.0);
 constexpr double water_roundings = 1.0 + 2.0 + 2.0 * 16.0;
 // The host's compensated sums of the totals.
 constexpr double ledger_slack = 4.0 * unit_roundoff_double;
-
-double unit_roundoff_of(const std::string& backend) {
-  return backend == "cpu" ? unit_roundoff_double : unit_roundoff_float;
-}
 
 std::vector<LedgerTerm> dissolution_ledger(const RunScales& scales, const DissolutionParams& params) {
   const int iterations = params.iterations;
@@ -328,13 +322,14 @@ CaseRun spec_step_check(std::shared_ptr<const State> initial, DissolutionParams 
     const State spec = runner_state(spec_iteration(start, params));
     const State twin = runner_state(reference::dissolution_erosion(start, constants, 1));
     const double tolerance = spec_tolerance(start, params);
-    for (std::size_t field = 0; field < spec.fields.size(); ++field) {
+    const StateDecl fields = dissolution_fields(unit);
+    for (std::size_t field = 0; field < fields.size(); ++field) {
       double worst = 0.0;
       for (std::size_t cell = 0; cell < spec.grid.cells(); ++cell) {
         if (spec.grid.is_valid(cell)) worst = std::max(worst, std::abs(spec.fields[field][cell] - twin.fields[field][cell]));
       }
       result.checks.push_back(bounded_check(
-          fmt::format("spec.step.{}.cpu", field_names[field]), worst, tolerance, std::nullopt,
+          fmt::format("spec.step.{}.cpu", fields[field].name), worst, tolerance, std::nullopt,
           fmt::format("largest |ref<double> − spec| over the cells, iteration {} from ref<double>'s own state (the spec: "
                       "eqs. 2.1-2.9 on the host, ŵ as printed, scattered); 2·16·32·u·(max|b| + max evaporated + "
                       "9·(max d + max s))",

@@ -80,6 +80,7 @@
 #include "compare/case_descriptors.hpp"
 #include "compare/checks/field.hpp"
 #include "compare/field_twin.hpp"
+#include "compare/checks/error_model.hpp"
 #include "compare/checks/pipe_error_model.hpp"
 #include "compare/checks/pipe_spec_check.hpp"
 #include "compare/checks/threshold.hpp"
@@ -244,10 +245,6 @@ double pipe_wave_number(const PipeConstants& c) {
 }
 
 bool conservative(const PipeScenario& scenario) { return scenario.constants.transport == SedimentTransport::flux; }
-
-double unit_roundoff_of(const std::string& backend) {
-  return backend == "cpu" ? pipe_double_roundoff : pipe_float_roundoff;
-}
 
 // The CFL number's bound. |ΔW_X| ≤ ½(Σf_out + Σf_in) (a diagonal's share l_x/l_d ≤ 1), K makes
 // Σf_out·Δt ≤ d_A·l_x·l_y and the inflows arrive in d_B, so |u| = |ΔW_X|/(l_y·d̄) ≤ l_x/Δt:

@@ -176,7 +176,7 @@ SteppedTwin thermal_twin(const std::string& algorithm, const Heightmap& input, i
   twin.ledger.push_back({"mass.relative_drift", [=](const LedgerRun& run) {
     // The float twins round the input to float first: one rounding more.
     const bool in_double = run.backend == "cpu";
-    const auto bounds = mass_drift_bounds(in_double ? unit_roundoff_double : unit_roundoff_float,
+    const auto bounds = mass_drift_bounds(unit_roundoff_of(run.backend),
                                           in_double ? additions : additions + 1.0, totals);
     return bounded_check("", relative_mass_drift(heights_of<double>(run.initial), heights_of<double>(run.final)),
                          bounds.strict, bounds.loose, bounds.model);

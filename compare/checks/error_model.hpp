@@ -28,6 +28,12 @@ struct Bounds {
 constexpr double unit_roundoff_double = 0x1p-53;
 constexpr double unit_roundoff_float = 0x1p-24;
 
+// The unit roundoff of a backend's arithmetic: ref<double> ("cpu") rounds in double, every other
+// backend (ref<float>, the GPU, an outside float implementation) in float.
+inline double unit_roundoff_of(const std::string& backend) {
+  return backend == "cpu" ? unit_roundoff_double : unit_roundoff_float;
+}
+
 inline Bounds mass_drift_bounds(double unit_roundoff, double additions_per_cell, const FieldTotals& before) {
   Bounds bounds;
   const double ledger = 2.0 * unit_roundoff_double;
