@@ -6,6 +6,12 @@
 
 namespace gt::gpu {
 
+void upload_validity(StorageBuffer& buffer, const Grid<float>& grid) {
+  std::vector<GLuint> valid(grid.size(), 1u);
+  if (grid.has_mask()) valid.assign(grid.valid.begin(), grid.valid.end());
+  buffer.upload(valid.data(), valid.size() * sizeof(GLuint));
+}
+
 HeightfieldBuffers::HeightfieldBuffers(int width, int height)
     : layout_(width, height),
       current_(layout_.size() * sizeof(float)),
@@ -19,9 +25,7 @@ void HeightfieldBuffers::load(const Grid<float>& heights) {
   layout_ = heights;
   layout_.values.clear();
   current_.upload(heights.values.data(), heights.values.size() * sizeof(float));
-  std::vector<GLuint> valid(heights.size(), 1u);
-  if (heights.has_mask()) valid.assign(heights.valid.begin(), heights.valid.end());
-  valid_.upload(valid.data(), valid.size() * sizeof(GLuint));
+  upload_validity(valid_, heights);
 }
 
 Grid<float> HeightfieldBuffers::current() const {

@@ -12,6 +12,10 @@
 
 namespace gt::gpu {
 
+// The mask of `grid` as the shaders read it, one uint per cell (1 = valid; every cell valid when the
+// grid has no mask), uploaded into `buffer`.
+void upload_validity(StorageBuffer& buffer, const Grid<float>& grid);
+
 class HeightfieldBuffers {
  public:
   HeightfieldBuffers(int width, int height);

@@ -11,7 +11,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
-#include <vector>
+
+#include "gpu/heightfield_buffers.hpp"
 
 namespace gt::gpu {
 namespace {
@@ -105,9 +106,7 @@ void DissolutionErosion::load(const DissolutionState<float>& state) {
   upload(water_[0], state.water);
   upload(dissolved_[0], state.dissolved);
   upload(evaporated_, state.evaporated);
-  std::vector<GLuint> valid(terrain.size(), 1u);
-  if (terrain.has_mask()) valid.assign(terrain.valid.begin(), terrain.valid.end());
-  valid_.upload(valid.data(), valid.size() * sizeof(GLuint));
+  upload_validity(valid_, terrain);
 }
 
 void DissolutionErosion::step(int count) {

@@ -3,7 +3,8 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
-#include <vector>
+
+#include "gpu/heightfield_buffers.hpp"
 
 namespace gt::gpu {
 
@@ -59,9 +60,7 @@ Grid<float> load_heightfield(const Grid<float>& heights, int width, int height, 
     throw std::invalid_argument(std::string(eroder) + "::load: mask size differs from the grid's");
   }
   heights_buffer.upload(heights.values.data(), heights.values.size() * sizeof(float));
-  std::vector<GLuint> valid(heights.size(), 1u);
-  if (heights.has_mask()) valid.assign(heights.valid.begin(), heights.valid.end());
-  valid_buffer.upload(valid.data(), valid.size() * sizeof(GLuint));
+  upload_validity(valid_buffer, heights);
   Grid<float> layout = heights;
   layout.values.clear();
   return layout;
