@@ -22,8 +22,6 @@ void require(bool condition, const std::string& what) {
 constexpr Choice<SedimentTransport> transport_choices[] = {{"semi_lagrangian", SedimentTransport::semi_lagrangian},
                                                            {"flux", SedimentTransport::flux}};
 constexpr Choice<PipeBoundary> boundary_choices[] = {{"closed", PipeBoundary::closed}, {"open", PipeBoundary::open}};
-constexpr Choice<DiffusionWeighting> weighting_choices[] = {{"uniform", DiffusionWeighting::uniform},
-                                                            {"water", DiffusionWeighting::water}};
 constexpr Choice<TiltDifferences> tilt_choices[] = {{"central", TiltDifferences::central},
                                                     {"seed001_code", TiltDifferences::seed001_code}};
 constexpr Choice<int> pipe_count_choices[] = {{"4", 4}, {"8", 8}};
@@ -32,7 +30,6 @@ constexpr Choice<int> pipe_count_choices[] = {{"4", 4}, {"8", 8}};
 
 const char* sediment_transport_name(SedimentTransport transport) { return choice_name(transport_choices, transport); }
 const char* pipe_boundary_name(PipeBoundary boundary) { return choice_name(boundary_choices, boundary); }
-const char* diffusion_weighting_name(DiffusionWeighting weighting) { return choice_name(weighting_choices, weighting); }
 const char* tilt_differences_name(TiltDifferences differences) { return choice_name(tilt_choices, differences); }
 
 double tilt_span(TiltDifferences differences, int sides, double length) {
@@ -76,7 +73,7 @@ const ParamTable<HydraulicParams>& hydraulic_param_table() {
                    "grid border and no-data cells: closed walls or open (water and sediment leave and are counted)"),
       real_param("sediment_diffusion", &P::sediment_diffusion, 0.0, 0.25, "1",
                  "seed 001 §3.8: share w of the sediment (and regolith) sent to each neighbour per step; 0 = off"),
-      choice_param("diffusion_weighting", &P::diffusion_weighting, weighting_choices, "",
+      choice_param("diffusion_weighting", &P::diffusion_weighting, diffusion_weighting_choices, "",
                    "seed 001 §3.8: the thesis's uniform w, or its code's weights by water depth (w only switches it on)"),
       real_param("regolith_depth", &P::regolith_depth, 0.0, 10.0, "m",
                  "seed 001 §3.9: K_r, the largest regolith thickness r_max = min(d, K_r); 0 = no regolith layer"),

@@ -40,6 +40,7 @@
 
 #include "core/grid.hpp"
 #include "core/param_table.hpp"
+#include "core/params/diffusion_weighting.hpp"
 #include "core/params/thermal.hpp"
 #include "core/sum.hpp"
 
@@ -47,16 +48,13 @@ namespace gt {
 
 enum class SedimentTransport { semi_lagrangian, flux };
 enum class PipeBoundary { closed, open };
-// Seed 001 §3.8: the thesis's uniform weights, or its code's weights by water depth.
-enum class DiffusionWeighting { uniform, water };
 // Seed 001 §3.5: sin α from central differences over the distance, or its code's raw differences.
 enum class TiltDifferences { central, seed001_code };
 
-// "semi_lagrangian", "flux", "closed", "open", "uniform", "water", "central", "seed001_code": the names
-// of the `transport`, `boundary`, `diffusion_weighting` and `tilt_differences` parameters.
+// "semi_lagrangian", "flux", "closed", "open", "central", "seed001_code": the names of the `transport`,
+// `boundary` and `tilt_differences` parameters (diffusion_weighting_name: core/params/diffusion_weighting.hpp).
 const char* sediment_transport_name(SedimentTransport transport);
 const char* pipe_boundary_name(PipeBoundary boundary);
-const char* diffusion_weighting_name(DiffusionWeighting weighting);
 const char* tilt_differences_name(TiltDifferences differences);
 
 // Pipe k of a cell leads to (x + dx, y + dy): L, R, T, B = 0..3 (Mei: T is +y), then the diagonals
