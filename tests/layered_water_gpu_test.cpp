@@ -32,6 +32,7 @@
 #include "gpu/erosion/layered/iteration.hpp"
 #include "gpu/erosion/layered/water.hpp"
 #include "gpu/erosion/layered/water_buffers.hpp"
+#include "reference/erosion/layered/diffusion.hpp"
 #include "reference/erosion/layered/dissolution.hpp"
 #include "reference/erosion/layered/force_erosion.hpp"
 #include "reference/erosion/layered/impact_erosion.hpp"
@@ -72,6 +73,8 @@ LayeredParams params_for(const Variant& variant) {
     params.share_form = gt::ShareForm::seed001_code;
     params.velocity_depth_floor = 0.05;
     params.erosion_rate = 0.1;
+    params.diffusion_weighting = gt::DiffusionWeighting::water;
+    params.regolith_diffusion = false;
   } else {
     params.rain_rate = 0.02;
   }
@@ -164,6 +167,7 @@ TEST_P(LayeredWaterGpu, EveryWaterPassIsTheFloatReferenceBitForBit) {
   const gt::gpu::LayeredForceErosion force_erosion;
   const gt::gpu::LayeredImpactErosion impact;
   const gt::gpu::LayeredWaterPass dissolution("erosion/layered/dissolution.comp");
+  const gt::gpu::LayeredWaterPass diffusion("erosion/layered/diffusion.comp");
   const gt::gpu::LayeredWaterPass wetness("erosion/layered/wetness.comp");
   auto expected = gt::no_conversions(params.bedrock_types.size());
   auto actual = gt::no_conversions(params.bedrock_types.size());
@@ -206,6 +210,13 @@ TEST_P(LayeredWaterGpu, EveryWaterPassIsTheFloatReferenceBitForBit) {
   dissolution.step(ground_buffers, water_buffers, 0);
   expect_same_state(ground, water, ground_buffers, water_buffers, "dissolution");
   EXPECT_NE(before_dissolution, water.carried) << "no regolith moved";
+
+  const auto before_diffusion = water.carried;
+  gt::reference::diffusion_step(ground, water, params);
+  water_buffers.snapshot();
+  diffusion.step(ground_buffers, water_buffers, 0);
+  expect_same_state(ground, water, ground_buffers, water_buffers, "diffusion");
+  EXPECT_NE(before_diffusion, water.carried) << "no sediment diffused";
 
   gt::reference::wetness_step(water, params);
   wetness.step(ground_buffers, water_buffers, 0);

@@ -13,6 +13,7 @@
 #include "core/layered/layered_water.hpp"
 #include "core/params/layered.hpp"
 #include "reference/erosion/layered/column.hpp"
+#include "reference/erosion/layered/diffusion.hpp"
 #include "reference/erosion/layered/dissolution.hpp"
 #include "reference/erosion/layered/force_erosion.hpp"
 #include "reference/erosion/layered/impact_erosion.hpp"
@@ -261,6 +262,88 @@ TEST(LayeredDissolution, RegolithGrowsToItsDepthAndSettlesWhenTheWaterLeaves) {
   const auto end = gt::layered_ledger(ground, params.bedrock_types.size());
   for (std::size_t i = 0; i < 5; ++i) EXPECT_NEAR(end.components[i], start.components[i], 1e-14) << i;
   EXPECT_NEAR(ground.surface[0], 10.0, 1e-14);
+}
+
+// The carried amounts of kind `kind` over a row of `width` columns.
+std::vector<double> carried_row(const LayeredWater<double>& water, int kind, int width) {
+  std::vector<double> row;
+  for (int x = 0; x < width; ++x) row.push_back(water.carried_at(kind, static_cast<std::size_t>(x)));
+  return row;
+}
+
+TEST(LayeredDiffusion, UniformWeightsAreTheThesisBlurAndKeepTheSum) {
+  // §3.8 by hand: 1 m of suspended sand in the middle of a 3 × 3 ground, σ = 0.1: the middle keeps
+  // 1 − 4σ = 0.6, each edge neighbour gets 0.1, the corners nothing; the sum stays 1 (one rounding
+  // of each product and sum: 1e-15). A border column of a closed grid sends to its 2 or 3
+  // neighbours only. The regolith diffuses only with regolith_diffusion.
+  LayeredParams params;
+  params.sediment_diffusion = 0.1;
+  auto ground = gt::make_layered_ground<double>(gt::Heightmap(3, 3, 10.0), loam_profile(), params);
+  auto water = gt::make_layered_water<double>(ground.cells(), 0.0);
+  water.carried_at(gt::suspended_kind(sand), ground.cell(1, 1)) = 1.0;
+  water.carried_at(gt::regolith_kind(org), ground.cell(0, 0)) = 1.0;
+  params.regolith_diffusion = false;
+  ref::diffusion_step(ground, water, params);
+  const int kind = gt::suspended_kind(sand);
+  EXPECT_NEAR(water.carried_at(kind, ground.cell(1, 1)), 0.6, 1e-15);
+  for (auto [x, y] : {std::pair{0, 1}, std::pair{2, 1}, std::pair{1, 0}, std::pair{1, 2}}) {
+    EXPECT_NEAR(water.carried_at(kind, ground.cell(x, y)), 0.1, 1e-16) << x << "," << y;
+  }
+  for (auto [x, y] : {std::pair{0, 0}, std::pair{2, 0}, std::pair{0, 2}, std::pair{2, 2}}) {
+    EXPECT_EQ(water.carried_at(kind, ground.cell(x, y)), 0.0) << x << "," << y;
+  }
+  EXPECT_EQ(water.carried_at(gt::regolith_kind(org), ground.cell(0, 0)), 1.0);
+  params.regolith_diffusion = true;
+  ref::diffusion_step(ground, water, params);
+  EXPECT_NEAR(water.carried_at(gt::regolith_kind(org), ground.cell(0, 0)), 0.8, 1e-15);  // corner: 2 neighbours
+  EXPECT_NEAR(water.carried_at(gt::regolith_kind(org), ground.cell(1, 0)), 0.1, 1e-16);
+  double total = 0.0;
+  for (std::size_t c = 0; c < ground.cells(); ++c) total += water.carried_at(kind, c);
+  EXPECT_NEAR(total, 1.0, 1e-15);
+  // σ = 0 switches the step off.
+  params.sediment_diffusion = 0.0;
+  const auto before = water.carried;
+  ref::diffusion_step(ground, water, params);
+  EXPECT_EQ(water.carried, before);
+}
+
+TEST(LayeredDiffusion, TheCodesWeightsFollowTheWaterAndSendNothingToADryColumn) {
+  // The code's weights on a row of 3 with water 0, 1, 0.5 m: the middle's base is 1 + ½·0 + ½·0.5
+  // = 1.25, so it sends 0.25/1.25 = 0.2 to the right and nothing to the dry left; the right's base
+  // is 0.5 + ½·1 = 1, it sends 0.5 back. Sand 0, 1, 1 becomes 0, 1 − 0.2 + 0.5 = 1.3, 1 − 0.5 + 0.2 = 0.7.
+  LayeredParams params;
+  params.diffusion_weighting = gt::DiffusionWeighting::water;
+  auto ground = gt::make_layered_ground<double>(gt::Heightmap(3, 1, 10.0), loam_profile(), params);
+  auto water = gt::make_layered_water<double>(ground.cells(), 0.0);
+  water.water = {0.0, 1.0, 0.5};
+  const int kind = gt::suspended_kind(sand);
+  water.carried_at(kind, 1) = 1.0;
+  water.carried_at(kind, 2) = 1.0;
+  ref::diffusion_step(ground, water, params);
+  const auto row = carried_row(water, kind, 3);
+  EXPECT_EQ(row[0], 0.0);
+  EXPECT_NEAR(row[1], 1.3, 1e-15);
+  EXPECT_NEAR(row[2], 0.7, 1e-15);
+}
+
+TEST(LayeredDiffusion, ADryColumnKeepsWhatTheBlurBroughtItThroughTheFlow) {
+  // The thesis's uniform blur brings sediment to a dry column. Its outflow is scaled to the 0 m³ it
+  // holds, so it sends nothing: the flow must leave what it carries there (a column drained of its
+  // water sends everything with it, but a dry one has nothing to send it with).
+  LayeredParams params;
+  gt::Heightmap step_down(3, 1, 10.0);
+  step_down.at(0, 0) = 12.0;  // the dry column stands above its wet neighbours: its pipes open
+  auto ground = gt::make_layered_ground<double>(step_down, loam_profile(), params);
+  auto water = gt::make_layered_water<double>(ground.cells(), 0.0);
+  water.water = {0.0, 0.2, 0.2};
+  const int kind = gt::suspended_kind(sand);
+  water.carried_at(kind, 0) = 0.05;
+  const auto start = gt::layered_water_ledger(water, 1.0);
+  ref::water_flow(ground, water, params);
+  EXPECT_EQ(water.flux_at(1, 0), 0.0);  // its head opened the pipe; step 6 scaled it to the 0 m³ held
+  EXPECT_EQ(water.carried_at(kind, 0), 0.05);
+  const auto end = gt::layered_water_ledger(water, 1.0);
+  EXPECT_NEAR(end.carried[sand], start.carried[sand], 1e-16);
 }
 
 TEST(LayeredWetness, GrowsUnderWaterDriesAndFloodsKillVegetation) {

@@ -3,10 +3,10 @@
 // rock that comes to rest, and a 32×24 bare cliff of soft rock that falls and fragments.
 //
 // both_twins: the same bug in the reference (column.cpp, transfer.cpp, talus.cpp, weathering.cpp,
-// water.cpp, force_erosion.cpp) and the GPU twin (apply.comp, talus_outflow.comp, weathering.comp,
-// water_move.comp; the host's counting in gpu/erosion/layered/{water,force_erosion}.cpp), killed by
-// checks against what
-// was asked, computed on the host: ledger.materials (each material's volume, conversions counted),
+// water.cpp, force_erosion.cpp, diffusion.cpp) and the GPU twin (apply.comp, talus_outflow.comp,
+// weathering.comp, water_move.comp, diffusion.comp; the host's counting in
+// gpu/erosion/layered/{water,force_erosion}.cpp), killed by checks against what was asked, computed
+// on the host: ledger.materials (each material's volume, conversions counted),
 // ledger.total and ledger.conversions (fragments hold the bedrock they come from), layers.invalid
 // (the topsoil's maximum), layers.surface (the surface moves with the layers), spec.repose (a
 // resting slope below the repose slope of eq. 3.1, written apart) and ledger.water (the water
@@ -96,6 +96,11 @@ std::vector<Mutant> layered_mutants() {
       {"erosion.layered.impact_never_delivered", MutantKind::both_twins,
        "impact erosion takes the bank's material into its pipes toward the water that hit it, and the water never "
        "receives it",
+       rain},
+      {"erosion.layered.gpu_diffusion_skips_regolith", MutantKind::one_twin,
+       "diffusion.comp diffuses the suspended sediment but never the regolith, which regolith_diffusion asks for", rain},
+      {"erosion.layered.diffusion_sent_kept", MutantKind::both_twins,
+       "sediment diffusion sends each column's shares to its neighbours and keeps them as well: material is created",
        rain},
       {"erosion.layered.sinks_uncounted", MutantKind::both_twins,
        "the river's sink rows take the water's sediment out of the ground without counting it", river},

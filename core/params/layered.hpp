@@ -44,6 +44,10 @@
 //   - The thesis leaves open and the code gives: K_w 0.45 m, K_c 0.25, organic capacity 0.12,
 //     K_wveg 0.2, K_emin 0.1, K_pmin 0.1 m, the bedrock matrices A^rock, B^rock, K_i 0.25, K_dry 0.5,
 //     a flood at wetness 1.0; A and B are eq. 3.8-3.9. Rain is a rate here (the code's is one shot).
+//   - Sediment diffusion (§3.8, step 8 of §4; reference/erosion/layered/diffusion.hpp): on by default
+//     with the thesis's example weight σ = 0.1 to each edge neighbour (`sediment_diffusion`, 0: off);
+//     `diffusion_weighting=water` is the code's weighting by water depth; `regolith_diffusion` diffuses
+//     the regolith too (the thesis, default; the code does not).
 #pragma once
 
 #include <array>
@@ -53,6 +57,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/param_table.hpp"
+#include "core/params/diffusion_weighting.hpp"
 
 namespace gt {
 
@@ -111,6 +116,7 @@ struct LayeredParams {
   double critical_slope = 1.40;    // S_c, > 0
   CreepDenominator creep_denominator = CreepDenominator::singular;
   double creep_denominator_floor = 0.1;  // the seed001_code variant's least denominator, in (0, 1]
+  bool talus = true;               // false switches talus off (creep alone: seed 001 Fig. 5.3)
   TalusAmount talus_amount = TalusAmount::thesis;
   bool talus_random = true;
   bool creep_random = true;
@@ -161,6 +167,11 @@ struct LayeredParams {
   double regolith_depth = 0.01;       // K_r, m (0: off)
   double regolith_erosion = 1.0;      // K_re
   double regolith_deposition = 1.0;   // K_rd
+  // Sediment diffusion (§3.8): σ, the share of each carried kind sent to each edge neighbour a step,
+  // in [0, 1/4] (0: off); with `water` weighting any σ > 0 switches the code's weights on.
+  double sediment_diffusion = 0.1;
+  DiffusionWeighting diffusion_weighting = DiffusionWeighting::uniform;
+  bool regolith_diffusion = true;     // the regolith diffuses like the sediment (thesis) or not (code)
   // Wetness (§3.15, eq. 3.12) and the flood death of vegetation.
   double drying = 0.5;                // K_dry, per second
   double flood_wetness = 1.0;         // vegetation dies above this wetness, m·s

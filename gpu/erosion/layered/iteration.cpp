@@ -6,7 +6,8 @@
 namespace gt::gpu {
 
 LayeredWaterProcesses::LayeredWaterProcesses()
-    : dissolution("erosion/layered/dissolution.comp"), wetness("erosion/layered/wetness.comp") {}
+    : dissolution("erosion/layered/dissolution.comp"), diffusion("erosion/layered/diffusion.comp"),
+      wetness("erosion/layered/wetness.comp") {}
 
 LayeredIteration::LayeredIteration(bool with_water)
     : creep_(layered_creep()), talus_(layered_talus()), vegetation_(layered_vegetation(with_water)),
@@ -21,12 +22,16 @@ void LayeredIteration::step(LayeredGroundBuffers& ground, std::uint32_t step, La
   }
   if (water != nullptr) water_->flow.sources(ground, *water, step, conversions);
   creep_.step(ground, step, conversions);
-  talus_.step(ground, step, conversions);
+  if (ground.params().talus) talus_.step(ground, step, conversions);
   if (water != nullptr) {
     water_->flow.flow(ground, *water, step);
     water_->force_erosion.step(ground, *water, step, conversions);
     water_->impact_erosion.step(ground, *water, step, conversions);
     if (ground.params().regolith_depth > 0.0) water_->dissolution.step(ground, *water, step);
+    if (ground.params().sediment_diffusion > 0.0) {
+      water->snapshot();  // diffusion.comp reads the carried kinds as they were before the pass
+      water_->diffusion.step(ground, *water, step);
+    }
     water_->wetness.step(ground, *water, step);
     water->bind();
   }

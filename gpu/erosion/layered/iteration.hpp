@@ -1,7 +1,7 @@
 // One iteration of seed 001's layered ground on the GPU in the code's order (digest 001 §4), GPU twin.
 //
-// with water, 1 sources and sinks; 2 creep; 3 talus; with water, 4 the pipe flow, 5 force erosion,
-// 6 impact erosion, 7 dissolution, 9 wetness; 10 vegetation (with the flood death when there is
+// with water, 1 sources and sinks; 2 creep; 3 talus (unless switched off); with water, 4 the pipe flow, 5 force erosion,
+// 6 impact erosion, 7 dissolution, 8 sediment diffusion, 9 wetness; 10 vegetation (with the flood death when there is
 // water); 11 weathering — each process's passes dispatched in turn on the same buffers.
 // LayeredIteration(with_water = false) compiles the programs (the water's only when asked:
 //   LayeredWaterProcesses).
@@ -39,6 +39,7 @@ struct LayeredWaterProcesses {
   LayeredForceErosion force_erosion;
   LayeredImpactErosion impact_erosion;
   LayeredWaterPass dissolution;
+  LayeredWaterPass diffusion;
   LayeredWaterPass wetness;
 };
 

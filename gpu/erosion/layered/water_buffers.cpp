@@ -64,6 +64,9 @@ LayeredWaterBlock make_block(const LayeredGround<float>& shape, const LayeredPar
   block.drying_factor = static_cast<float>(std::pow(params.drying, params.time_step));
   block.flood_wetness = static_cast<float>(params.flood_wetness);
   block.impact_scale = static_cast<float>(params.impact_rate * params.time_step / area);
+  block.sediment_diffusion = static_cast<float>(params.sediment_diffusion);
+  block.diffusion_water = params.diffusion_weighting == DiffusionWeighting::water ? 1 : 0;
+  block.regolith_diffusion = params.regolith_diffusion ? 1 : 0;
   return block;
 }
 
@@ -187,7 +190,10 @@ ComputeProgram layered_water_program(const std::string& shader, const std::vecto
                        {"regolith_deposition", offsetof(LayeredWaterBlock, regolith_deposition)},
                        {"drying_factor", offsetof(LayeredWaterBlock, drying_factor)},
                        {"flood_wetness", offsetof(LayeredWaterBlock, flood_wetness)},
-                       {"impact_scale", offsetof(LayeredWaterBlock, impact_scale)}});
+                       {"impact_scale", offsetof(LayeredWaterBlock, impact_scale)},
+                       {"sediment_diffusion", offsetof(LayeredWaterBlock, sediment_diffusion)},
+                       {"diffusion_water", offsetof(LayeredWaterBlock, diffusion_water)},
+                       {"regolith_diffusion", offsetof(LayeredWaterBlock, regolith_diffusion)}});
   return program;
 }
 

@@ -14,7 +14,7 @@
 //   pass's tallies to `conversions`.
 // layered_water_program(shader, defines) -> a program of water.glsl with its blocks checked.
 // LayeredWaterPass(shader) is a pass of one invocation per column that needs nothing but the bound
-//   buffers (dissolution.comp, wetness.comp): step(ground, water, step) binds and dispatches it.
+//   buffers (dissolution.comp, diffusion.comp, wetness.comp): step(ground, water, step) binds and dispatches it.
 //
 // Inputs:  ground (LayeredGroundBuffers), water (LayeredWater<float>). Needs a current GlContext.
 // Outputs: the water state on the GPU; download(); records; conversions.
@@ -24,7 +24,7 @@
 //          wetness (check_layered_water); std::runtime_error when a shader does not compile or link or
 //          its LayeredWaterBlock does not match the C++ mirror.
 // Twin:    the state: core/layered/layered_water.hpp; the passes: reference/erosion/layered/dissolution.hpp
-//          (dissolution.comp) and wetness.hpp (wetness.comp).
+//          (dissolution.comp), diffusion.hpp (diffusion.comp) and wetness.hpp (wetness.comp).
 #pragma once
 
 #include <cstdint>
@@ -71,6 +71,10 @@ struct LayeredWaterBlock {
   float drying_factor;
   float flood_wetness;
   float impact_scale;
+  float sediment_diffusion;
+  std::int32_t diffusion_water;
+  std::int32_t regolith_diffusion;
+  std::int32_t padding;  // std140 rounds the block up to 16 bytes
 };
 
 // Floats per column of the records scratch: the most any water pass writes (impact erosion's 48).

@@ -2,6 +2,7 @@
 #include "reference/erosion/layered/iteration.hpp"
 
 #include "reference/erosion/layered/creep.hpp"
+#include "reference/erosion/layered/diffusion.hpp"
 #include "reference/erosion/layered/dissolution.hpp"
 #include "reference/erosion/layered/force_erosion.hpp"
 #include "reference/erosion/layered/impact_erosion.hpp"
@@ -18,12 +19,13 @@ void layered_iteration(LayeredGround<Real>& ground, const LayeredParams& params,
                        LayeredConversions& conversions, LayeredWater<Real>* water) {
   if (water != nullptr) water_sources(ground, *water, params, conversions);
   creep_step(ground, params, step, conversions);
-  talus_step(ground, params, step, conversions);
+  if (params.talus) talus_step(ground, params, step, conversions);
   if (water != nullptr) {
     water_flow(ground, *water, params);
     force_erosion_step(ground, *water, params, conversions);
     impact_erosion_step(ground, *water, params, conversions);
     dissolution_step(ground, *water, params);
+    diffusion_step(ground, *water, params);
     wetness_step(*water, params);
   }
   vegetation_step(ground, params, step, conversions, water);

@@ -27,7 +27,7 @@ std::array<std::optional<std::size_t>, water_pipe_count> pipe_neighbours(const L
 }
 
 // Column c's new outflows (pass 1), from the water and surface as they stand; `drained`: step 6
-// scaled them, so they take everything the column holds.
+// scaled the outflows of a column that holds water, so they take everything it holds.
 template <class Real>
 PipeValues<Real> outflows(const LayeredGround<Real>& ground, const LayeredWater<Real>& water,
                           const LayeredParams& params, int x, int y, bool& drained) {
@@ -48,11 +48,12 @@ PipeValues<Real> outflows(const LayeredGround<Real>& ground, const LayeredWater<
   const auto area = static_cast<Real>(ground.cell_size_x * ground.cell_size_y);
   const Real leaving = time_step * (((flux[0] + flux[1]) + flux[2]) + flux[3]);
   const Real held = area * water.water[c];
-  drained = leaving > held;
-  if (drained) {
+  if (leaving > held) {
     const Real scale = held / leaving;
     for (Real& f : flux) f *= scale;
   }
+  // A dry column sends nothing, so it keeps what it carries (sediment diffusion can bring some).
+  drained = leaving > held && held > Real(0);
   return flux;
 }
 

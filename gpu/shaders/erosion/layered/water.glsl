@@ -54,6 +54,9 @@ layout(std140, binding = 1) uniform LayeredWaterBlock {
   float drying_factor;           // K_dry^Δt
   float flood_wetness;           // m·s
   float impact_scale;            // K_i·Δt/(l_x·l_y), 1/m (§3.14)
+  float sediment_diffusion;      // σ (§3.8)
+  int diffusion_water;           // 1: the code's weights by water depth
+  int regolith_diffusion;        // 1: the regolith diffuses too
 };
 
 layout(std430, binding = 10) buffer LayeredWaterState { float water_state[]; };
