@@ -1,6 +1,9 @@
 #include "compare/algorithm.hpp"
 
+#include <algorithm>
+#include <string>
 #include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -90,7 +93,26 @@ nlohmann::json algorithm_json(const Algorithm& algorithm) {
   nlohmann::json json = {{"name", algorithm.name}, {"summary", algorithm.summary}, {"source", algorithm.source},
                          {"input", input},         {"kind", kind_name(algorithm.kind)}, {"params", params}};
   if (algorithm.kind == CaseKind::stepped) json["state"] = state_json(algorithm);
+  if (!algorithm.input_fields.empty()) {
+    json["input_fields"] = nlohmann::json::array();
+    for (const InputFieldSpec& field : algorithm.input_fields) {
+      json["input_fields"].push_back({{"name", field.name}, {"unit", field.unit}, {"description", field.description}});
+    }
+  }
   return json;
+}
+
+void require_known_fields(const Algorithm& algorithm, const LoadedInput& input) {
+  for (const auto& [name, field] : input.fields) {
+    const auto declared = std::find_if(algorithm.input_fields.begin(), algorithm.input_fields.end(),
+                                       [&](const InputFieldSpec& known) { return known.name == name; });
+    if (declared != algorithm.input_fields.end()) continue;
+    std::vector<std::string> known;
+    for (const InputFieldSpec& field_spec : algorithm.input_fields) known.push_back(field_spec.name);
+    throw InputError(fmt::format("{} reads no input field '{}'{}", algorithm.name, name,
+                                 known.empty() ? std::string(" (it reads none)")
+                                               : fmt::format("; it reads: {}", fmt::join(known, ", "))));
+  }
 }
 
 }  // namespace gt

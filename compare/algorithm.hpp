@@ -76,6 +76,8 @@ struct Algorithm {
   // `iterations` (or steps) and needs one; a generated one samples a grid (a flat one by default).
   CaseKind kind = CaseKind::stepped;
   AdHocInput ad_hoc_input = AdHocInput::heightmap;
+  // The input fields prepare() reads (LoadedInput::fields); a case giving any other is refused.
+  std::vector<InputFieldSpec> input_fields;
   CandidateOutput candidate = CandidateOutput::none;
   // The algorithm's own rows of the performance table (cave meshing: voxels and triangles per
   // second); unset: the generic timing of compare/benchmark.cpp, or none for custom cases.
@@ -110,6 +112,10 @@ const Algorithm& find_algorithm(const std::string& name);
 // "state": its declared fields at the default parameters ({"name", "unit", "meaning", "extent",
 // "components", "component_names", "conserved", "standard_name"}: compare/stepper.hpp).
 nlohmann::json algorithm_json(const Algorithm& algorithm);
+
+// Throws InputError naming the first of input.fields that `algorithm` does not read (its
+// input_fields), with the ones it reads: a field no algorithm reads would be silently ignored.
+void require_known_fields(const Algorithm& algorithm, const LoadedInput& input);
 
 // Defined by each file of compare/algorithms/.
 Algorithm thermal_algorithm();

@@ -174,6 +174,7 @@ std::vector<Job> prepare_jobs(const std::vector<CaseSpec>& specs, const std::fil
     }
     try {
       job.input = load_input(spec.input, spec.crop, dataset_dir);
+      require_known_fields(algorithm, job.input);
       require_memory(algorithm.memory(job.resolved, job.input), spec.algorithm);
       job.prepared = algorithm.prepare(job.resolved, job.input);
       if (job.prepared.kind.index() != static_cast<std::size_t>(algorithm.kind)) {

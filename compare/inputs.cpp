@@ -82,6 +82,58 @@ Heightmap step(const nlohmann::json& input) {
   return field;
 }
 
+// `count` strips across the axis, strip i holding peak·i: a category map (which profile in which
+// column) or stepped levels.
+Heightmap strips(const nlohmann::json& input) {
+  Heightmap field = blank_field(input);
+  const auto count = json_integer(input, "count", 2, 1, 64, "input generator strips");
+  const double peak = json_number(input, "peak", 1.0, -1e6, 1e6, "input generator strips");
+  const std::string axis = input.value("axis", std::string("x"));
+  if (axis != "x" && axis != "y") throw InputError(fmt::format("input generator strips: axis '{}' is neither x nor y", axis));
+  const long long side = axis == "x" ? field.width : field.height;
+  for (int y = 0; y < field.height; ++y) {
+    for (int x = 0; x < field.width; ++x) field.at(x, y) = peak * double(count * (axis == "x" ? x : y) / side);
+  }
+  return field;
+}
+
+// `count` cones in a row along x, one centred in each of `count` equal strips and on the middle
+// row, each `peak` high with a base radius of `radius` times the strip's width (seed 001's Fig. 5.1
+// hills of four materials).
+Heightmap hills(const nlohmann::json& input) {
+  Heightmap field = blank_field(input);
+  const auto count = json_integer(input, "count", 4, 1, 64, "input generator hills");
+  const double peak = json_number(input, "peak", 10.0, -1e6, 1e6, "input generator hills");
+  const double strip = field.width * field.cell_size_x / double(count);
+  const double radius = json_number(input, "radius", 0.45, 1e-6, 1e3, "input generator hills") * strip;
+  const double centre_y = 0.5 * field.height * field.cell_size_y;
+  for (int y = 0; y < field.height; ++y) {
+    for (int x = 0; x < field.width; ++x) {
+      const double position = (x + 0.5) * field.cell_size_x;
+      const double centre_x = (std::floor(position / strip) + 0.5) * strip;
+      const double distance = std::hypot(position - centre_x, (y + 0.5) * field.cell_size_y - centre_y);
+      field.at(x, y) = peak * std::max(0.0, 1.0 - distance / radius);
+    }
+  }
+  return field;
+}
+
+// A block of height `peak` on the cells x .. x + box_width − 1, y .. y + box_height − 1 (an obstacle
+// to raise a surface by, or a category map: 1 inside, 0 outside), 0 elsewhere.
+Heightmap box(const nlohmann::json& input) {
+  Heightmap field = blank_field(input);
+  const char* what = "input generator box";
+  const auto x0 = json_integer(input, "x", 0, 0, field.width - 1, what);
+  const auto y0 = json_integer(input, "y", 0, 0, field.height - 1, what);
+  const auto box_width = json_integer(input, "box_width", 1, 1, field.width - x0, what);
+  const auto box_height = json_integer(input, "box_height", 1, 1, field.height - y0, what);
+  const double peak = json_number(input, "peak", 1.0, -1e6, 1e6, what);
+  for (long long y = y0; y < y0 + box_height; ++y) {
+    for (long long x = x0; x < x0 + box_width; ++x) field.at(int(x), int(y)) = peak;
+  }
+  return field;
+}
+
 // A plane rising along +x: base + gradient·x (x in metres from the first column's centre).
 Heightmap slope(const nlohmann::json& input) {
   Heightmap field = blank_field(input);
@@ -136,13 +188,16 @@ const std::vector<std::string>& generator_keys(const std::string& name) {
         {"cone", with({"peak", "radius"})},
         {"step", with({"peak"})},
         {"slope", with({"base", "gradient", "axis"})},
+        {"strips", with({"count", "peak", "axis"})},
+        {"hills", with({"count", "peak", "radius"})},
+        {"box", with({"x", "y", "box_width", "box_height", "peak"})},
         {"flat", grid},
         {"terrain", {"generator", "width", "height", "cell_size", "cell_size_y", "algorithm", "params"}},
         {"example_3x3", {"generator"}}};
   }();
   const auto found = keys.find(name);
   if (found == keys.end()) {
-    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, slope, flat, terrain, example_3x3", name));
+    throw InputError(fmt::format("unknown input generator '{}'; known: cone, step, slope, strips, hills, box, flat, terrain, example_3x3", name));
   }
   return found->second;
 }
@@ -157,6 +212,12 @@ LoadedInput generated_input(const nlohmann::json& input) {
     loaded.heights = step(input);
   } else if (name == "slope") {
     loaded.heights = slope(input);
+  } else if (name == "strips") {
+    loaded.heights = strips(input);
+  } else if (name == "hills") {
+    loaded.heights = hills(input);
+  } else if (name == "box") {
+    loaded.heights = box(input);
   } else if (name == "terrain") {
     loaded.heights = noise_terrain(input);
   } else if (name == "flat") {
@@ -222,6 +283,56 @@ Heightmap cropped(const Heightmap& heights, const nlohmann::json& crop) {
   return out;
 }
 
+// Input fields beside a heightmap: at most this many, names this long.
+constexpr std::size_t most_fields = 8;
+constexpr std::size_t longest_field_name = 64;
+
+// The grid a field must match before the crop: its generators default to it.
+struct GridShape {
+  int width = 0, height = 0;
+  double cell_size_x = 1.0, cell_size_y = 1.0;
+};
+
+// Each of input["fields"] (a file or a generator, as the heightmap; a generator without a grid gets
+// the heightmap's) loaded, cropped as the heightmap, and refused unless it has the heightmap's size,
+// finite values and no no-data cells.
+void load_fields(const nlohmann::json& fields, const GridShape& shape, const nlohmann::json& crop,
+                 const std::filesystem::path& dataset_dir, LoadedInput& loaded) {
+  if (!fields.is_object()) throw InputError(fmt::format("input fields must be an object of named fields, not {}", fields.dump()));
+  if (fields.size() > most_fields) {
+    throw InputError(fmt::format("input fields: {} fields given, at most {} are read", fields.size(), most_fields));
+  }
+  for (const auto& [name, given] : fields.items()) {
+    const std::string what = fmt::format("input field '{}'", name.substr(0, longest_field_name));
+    if (name.empty() || name.size() > longest_field_name) throw InputError(what + ": a name of 1 to 64 characters");
+    nlohmann::json spec = given;
+    if (spec.is_object() && spec.contains("generator") && spec["generator"].is_string() && !spec.contains("width")) {
+      spec["width"] = shape.width;
+      spec["height"] = shape.height;
+      spec["cell_size"] = shape.cell_size_x;
+      spec["cell_size_y"] = shape.cell_size_y;
+    }
+    LoadedInput field;
+    if (spec.is_object() && spec.contains("file") && spec["file"].is_string()) {
+      field = file_input(spec, dataset_dir);
+    } else if (spec.is_object() && spec.contains("generator") && spec["generator"].is_string()) {
+      field = generated_input(spec);
+    } else {
+      throw InputError(fmt::format("{} needs a string 'file' or 'generator': {}", what, given.dump()));
+    }
+    if (field.heights.width != shape.width || field.heights.height != shape.height) {
+      throw InputError(fmt::format("{} is {}x{} cells, the heightmap {}x{}: a field covers the heightmap cell for cell",
+                                   what, field.heights.width, field.heights.height, shape.width, shape.height));
+    }
+    if (!crop.is_null()) field.heights = cropped(field.heights, crop);
+    if (field.heights.has_mask()) throw InputError(what + " has no-data cells: every cell needs a value");
+    check_finite(field.heights, what);
+    loaded.description += fmt::format("; field {}: {}", name, field.description);
+    loaded.notes.insert(loaded.notes.end(), field.notes.begin(), field.notes.end());
+    loaded.fields.emplace(name, std::move(field.heights));
+  }
+}
+
 }  // namespace
 
 LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, const std::filesystem::path& dataset_dir) {
@@ -267,13 +378,17 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
     loaded.source = path;
     return loaded;
   }
+  nlohmann::json surface = input;
+  if (surface.is_object()) surface.erase("fields");
   if (input.contains("file") && input["file"].is_string()) {
-    loaded = file_input(input, dataset_dir);
+    loaded = file_input(surface, dataset_dir);
   } else if (input.contains("generator") && input["generator"].is_string()) {
-    loaded = generated_input(input);
+    loaded = generated_input(surface);
   } else {
     throw InputError(fmt::format("input {} needs a string 'file', 'mesh', 'volume' or 'generator'", input.dump()));
   }
+  const GridShape shape{loaded.heights.width, loaded.heights.height, loaded.heights.cell_size_x,
+                        loaded.heights.cell_size_y};
   if (!crop.is_null()) {
     loaded.heights = cropped(loaded.heights, crop);
     loaded.description += fmt::format(", crop {}", crop.dump());
@@ -282,6 +397,7 @@ LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop, 
   check_fits_float(loaded.heights, loaded.description);
   check_cell_size(loaded.heights, loaded.description);
   if (count_valid(loaded.heights) == 0) throw InputError(loaded.description + ": every cell is no-data");
+  if (input.contains("fields")) load_fields(input["fields"], shape, crop, dataset_dir, loaded);
   return loaded;
 }
 

@@ -15,8 +15,19 @@
 //   terrain       "width", "height", "cell_size", "algorithm" (a noise.* algorithm), "params": the
 //                 terrain that algorithm's double reference synthesises (see terrain.* cases).
 //   example_3x3   seed 000's 3×3 test field: centre 1, other cells 0, cell size 1.
-//   cone, step, slope and flat take "noise" (m, default 0) and "seed" (default 1): uniform noise in
+//   strips        "width", "height", "cell_size", "count" (2), "axis" (x), "peak" (1): `count` equal
+//                 strips across the axis, strip i holding peak·i (a category map: 0, 1, 2, ...).
+//   hills         "width", "height", "cell_size", "count" (4), "peak" (m, 10), "radius" (share of a
+//                 strip's width, 0.45): a row of cones along x, one centred in each of `count` strips.
+//   box           "width", "height", "cell_size", "x", "y", "box_width", "box_height" (cells; 0, 0, 1,
+//                 1), "peak" (1): `peak` on that block of cells, 0 elsewhere.
+//   cone, step, slope, strips, hills, box and flat take "noise" (m, default 0) and "seed" (default 1): uniform noise in
 //   [0, noise) added to every cell from random_u32(seed, cell, 0, 0).
+// A file or generator heightmap may carry input fields beside it (seed 001's spatial inputs: which
+// soil profile in which column, a vegetation map): "fields": {NAME: a file or generator as above},
+// at most 8. A field generator without "width" takes the heightmap's grid; each field is cropped
+// as the heightmap and must then have its size, finite values and no no-data cells. Which names
+// an algorithm reads is its Algorithm::input_fields (the driver refuses the others).
 // {"mesh": "real/meshes/cow.off"}   a triangle mesh (OFF, OBJ, PLY, STL; core/io/mesh_io.hpp).
 // {"volume": "sdf.npy"}            a scalar volume, a 3-D .npy array (core/io/volume_io.hpp): the
 //                                  cave's density when it is not the seed's noise.
@@ -28,6 +39,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +53,13 @@
 
 namespace gt {
 
+// An input field an algorithm reads beside its heightmap ("fields" above).
+struct InputFieldSpec {
+  std::string name;
+  std::string unit;         // "1", "index", "m"
+  std::string description;  // what it sets, in a line
+};
+
 struct LoadedInput {
   Heightmap heights;
   std::string description;          // e.g. "volcano.json, 87x61 cells of 10 m"
@@ -49,6 +68,7 @@ struct LoadedInput {
   std::optional<Volume<double>> volume;  // for {"volume": path}
   std::optional<GlobalGrid> global_grid;  // for {"global_grid": path}
   std::filesystem::path source;     // the file read, empty for generated fields (provenance digests it)
+  std::map<std::string, Heightmap> fields;  // the heightmap's input fields, by name
 };
 
 LoadedInput load_input(const nlohmann::json& input, const nlohmann::json& crop,

@@ -118,4 +118,67 @@ TEST(LayeredCli, BadLayerDefinitionsAreRefused) {
   }
 }
 
+// Seed 001's spatial inputs through a user's case file: the "profile" field picks each column's
+// profile (loam left, bare rock right) and the "vegetation" field each column's cover; the report
+// says which profile went where. A field the algorithm does not read, a profile value naming no
+// profile, a field of another size, and soil_1 without a profile field are refused with exit 2.
+TEST(LayeredCli, InputFieldsPickEachColumnsProfileAndVegetation) {
+  gt::testing::TemporaryFolder folder;
+  const nlohmann::json hills = {{"generator", "hills"}, {"count", 2},   {"width", 24},
+                                {"height", 12},         {"peak", 4.0}, {"cell_size", 1.0}};
+  const auto with_fields = [&](const nlohmann::json& fields) {
+    nlohmann::json input = hills;
+    input["fields"] = fields;
+    return input;
+  };
+  const nlohmann::json strips = {{"generator", "strips"}, {"count", 2}};
+  const nlohmann::json halves = {{"generator", "step"}, {"peak", 1.0}};
+  const nlohmann::json cases = nlohmann::json::array({
+      {{"name", "mine.maps.good"}, {"algorithm", "erosion.layered"},
+       {"input", with_fields({{"profile", strips}, {"vegetation", halves}})},
+       {"params", {{"steps", 10}, {"soil_1", "bare"}}}},
+      {{"name", "mine.maps.unread"}, {"algorithm", "erosion.thermal"},
+       {"input", with_fields({{"vegetation", halves}})}},
+      {{"name", "mine.maps.half_profile"}, {"algorithm", "erosion.layered"},
+       {"input", with_fields({{"profile", {{"generator", "strips"}, {"count", 2}, {"peak", 0.5}}}})},
+       {"params", {{"steps", 10}, {"soil_1", "bare"}}}},
+      {{"name", "mine.maps.other_size"}, {"algorithm", "erosion.layered"},
+       {"input", with_fields({{"vegetation", {{"file", GT_DATASET_DIR "/real/volcano.json"}}}})},
+       {"params", {{"steps", 10}}}},
+      {{"name", "mine.maps.no_profile_field"}, {"algorithm", "erosion.layered"}, {"input", hills},
+       {"params", {{"steps", 10}, {"soil_1", "sand"}}}},
+  });
+  const auto file = folder.path() / "maps.json";
+  std::ofstream(file) << cases.dump(1);
+
+  const auto out = folder.path() / "good";
+  const auto result = run_groundtruth({"run", "mine.maps.good", "--cases", file.string(), "--out", out.string()},
+                                      folder.path());
+  ASSERT_EQ(result.status, 0) << result;
+  const auto report = report_of(out);
+  ASSERT_EQ(report["cases"].size(), 1u);
+  const auto& run = report["cases"][0];
+  EXPECT_EQ(run["status"], "pass");
+  const std::string notes = run["notes"].dump();
+  EXPECT_THAT(notes, HasSubstr("profile 0 (the profile field's value 0) in 144 of 288 columns"));
+  EXPECT_THAT(notes, HasSubstr("profile 1 (the profile field's value 1) in 144 of 288 columns, top down: 0 m topsoil"));
+  EXPECT_THAT(notes, HasSubstr("vegetation from the input field 'vegetation', 0 .. 1"));
+
+  const struct {
+    const char* name;
+    const char* message;
+  } refused[] = {{"mine.maps.unread", "reads no input field 'vegetation'"},
+                 {"mine.maps.half_profile", "the profile field holds 0.5"},
+                 {"mine.maps.other_size", "is 87x61 cells, the heightmap 24x12"},
+                 {"mine.maps.no_profile_field", "no input field 'profile'"}};
+  for (const auto& [name, message] : refused) {
+    const auto refused_out = folder.path() / name;
+    const auto refusal = run_groundtruth({"run", name, "--cases", file.string(), "--out", refused_out.string()},
+                                         folder.path());
+    EXPECT_EQ(refusal.status, 2) << name << ": " << refusal;
+    EXPECT_THAT(refusal.err, HasSubstr(message)) << name;
+    EXPECT_FALSE(fs::exists(refused_out / "report.json")) << name;
+  }
+}
+
 }  // namespace

@@ -117,16 +117,19 @@ TEST(LayeredParams, RefusesBadProfiles) {
 TEST(LayeredParams, ValidateLayeredInputsRefusesWhatMakeLayeredGroundRefuses) {
   const LayeredParams params;
   const LayeredProfile profile = profile_with({0.5, 0, 0, 0, 0}, {}, 5.0);
-  const auto same_refusal = [&](const gt::Heightmap& surface, const LayeredProfile& with, double vegetation,
-                                const std::string& named) {
-    const std::string validated =
-        gt::testing::refusal([&] { gt::validate_layered_inputs(surface, with, params, vegetation); });
+  const auto same_columns_refusal = [&](const gt::Heightmap& surface, const gt::LayeredColumns& columns,
+                                        const std::string& named) {
+    const std::string validated = gt::testing::refusal([&] { gt::validate_layered_inputs(surface, columns, params); });
     const std::string made =
-        gt::testing::refusal([&] { (void)gt::make_layered_ground<double>(surface, with, params, vegetation); });
+        gt::testing::refusal([&] { (void)gt::make_layered_ground<double>(surface, columns, params); });
     EXPECT_NE(validated.find(named), std::string::npos) << validated;
     EXPECT_EQ(validated, made);
   };
-  EXPECT_NO_THROW(gt::validate_layered_inputs(flat_surface(3, 3, 0.0), profile, params, 0.5));
+  const auto same_refusal = [&](const gt::Heightmap& surface, const LayeredProfile& with, double vegetation,
+                                const std::string& named) {
+    same_columns_refusal(surface, gt::LayeredColumns{{with}, {}, {vegetation}}, named);
+  };
+  EXPECT_NO_THROW(gt::validate_layered_inputs(flat_surface(3, 3, 0.0), gt::LayeredColumns{{profile}, {}, {0.5}}, params));
   same_refusal(flat_surface(3, 3, 0.0), profile_with({}, {}, -5.0), 0.0, "erosion.layered");
   gt::Heightmap masked = flat_surface(3, 3, 0.0);
   masked.valid.assign(9, 1);
@@ -139,6 +142,30 @@ TEST(LayeredParams, ValidateLayeredInputsRefusesWhatMakeLayeredGroundRefuses) {
   no_spacing.cell_size_x = 0.0;
   same_refusal(no_spacing, profile, 0.0, "layered ground surface");
   same_refusal(flat_surface(3, 3, 0.0), profile, 1.5, "vegetation 1.5");
+  // The spatial inputs: a map of another size, an index without a profile, a vegetation map value
+  // outside [0, 1], profiles with different bedrock layer counts.
+  LayeredProfile deeper = profile;
+  deeper.bedrock.push_back({1, 10.0});
+  same_columns_refusal(flat_surface(3, 3, 0.0), {{profile}, std::vector<std::int32_t>(8, 0), {0.0}}, "profile map");
+  same_columns_refusal(flat_surface(3, 3, 0.0), {{profile, profile}, {0, 1, 2, 0, 0, 0, 0, 0, 0}, {0.0}},
+                       "profile 2 at cell 2");
+  same_columns_refusal(flat_surface(3, 3, 0.0), {{profile}, {}, {0, 0, 0, 0, -0.5, 0, 0, 0, 0}}, "vegetation -0.5");
+  same_columns_refusal(flat_surface(3, 3, 0.0), {{profile, deeper}, {}, {0.0}}, "same number of bedrock layers");
+}
+
+TEST(LayeredGround, EachColumnTakesTheProfileAndVegetationItsMapsName) {
+  const LayeredParams params;
+  const LayeredProfile loam = profile_with({0.5, 0, 0, 0, 0}, {}, 5.0);
+  const LayeredProfile bare = profile_with({}, {}, 7.0);
+  const auto ground = gt::make_layered_ground<double>(
+      flat_surface(2, 2, 3.0), gt::LayeredColumns{{loam, bare}, {0, 1, 1, 0}, {0.0, 0.25, 0.5, 0.75}}, params);
+  for (std::size_t c = 0; c < 4; ++c) {
+    const bool is_bare = c == 1 || c == 2;
+    EXPECT_EQ(ground.soil_thickness(0, c), is_bare ? 0.0 : 0.5) << c;
+    EXPECT_EQ(ground.bedrock_at(0, c), is_bare ? 7.0 : 5.0) << c;
+    EXPECT_EQ(ground.vegetation[c], 0.25 * double(c)) << c;
+    EXPECT_EQ(ground.surface[c], 3.0) << c;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

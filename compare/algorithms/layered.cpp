@@ -2,7 +2,7 @@
 // heightmap given a stated soil–rock profile in every column (compare/layered_case.hpp), then `steps`
 // iterations of reference/erosion/layered/iteration.hpp (creep, talus, vegetation, weathering and,
 // when water is given — initial_water, rain_rate or the river — sources and sinks, the pipe flow,
-// force erosion, dissolution and wetness) in ref<double> and ref<float>, beside the GPU twin
+// force erosion, dissolution, sediment diffusion and wetness) in ref<double> and ref<float>, beside the GPU twin
 // gpu/erosion/layered/iteration.hpp, run by the stepped runner (compare/stepped_case.hpp).
 //
 // Inputs:  a surface without no-data cells (m), the profile and LayeredParams.
@@ -33,7 +33,7 @@
 //     passes through at most R = 36 roundings an iteration, each within u of what the cell holds of
 //     the material, and what moved is at most V). With water R = 64: the flow rounds a carried amount
 //     13 times (4 shares sent, their sum, the rest, 4 arrivals and their sums), force erosion and
-//     dissolution a stored amount up to 15 more. The GPU's fragments are summed per column in float
+//     dissolution a stored amount up to 15 more; sediment diffusion (when on) 13 more, as the flow. The GPU's fragments are summed per column in float
 //     before the host's double sum (γ_7 of the total, far inside R·2u).
 //   ledger.water      (with water) |W(end) − W(start) − added + sunk| / (W(start) + added): rain and
 //                     the river's rise in, the sinks out; bound S·13·2u
@@ -62,6 +62,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compare/algorithm.hpp"
 #include "compare/case_descriptors.hpp"
@@ -90,6 +91,7 @@ namespace {
 // more (see the header). A depth of water: 13 roundings an iteration.
 constexpr double roundings_per_step = 36.0;
 constexpr double roundings_per_step_with_water = 64.0;
+constexpr double diffusion_roundings_per_step = 13.0;
 constexpr double water_roundings_per_step = 13.0;
 
 // The unit roundoff of the backend's type: ref<double> in double, ref<float> and the GPU in float.
@@ -101,8 +103,12 @@ struct LedgerModel {
   std::size_t types = 0;
   int bedrock_layers = 0;
   bool wet = false;
+  bool diffusing = false;  // wet, with sediment diffusion on
   double topsoil_max = 0.0;
-  double roundings() const { return wet ? roundings_per_step_with_water : roundings_per_step; }
+  double roundings() const {
+    if (!wet) return roundings_per_step;
+    return roundings_per_step_with_water + (diffusing ? diffusion_roundings_per_step : 0.0);
+  }
   double bound(const std::string& backend) const { return steps * roundings() * 2.0 * unit_roundoff(backend); }
 };
 
@@ -328,7 +334,7 @@ void plot_ledger(const std::vector<LedgerRecord>& records, std::size_t materials
 void finish_layered(const LayeredSetup& setup, const std::vector<BackendEnd>& ends, const nlohmann::json& expect,
                     const RunOptions& options, CaseResult& result) {
   const BackendEnd& truth = ends.front();
-  const int bedrock_layers = static_cast<int>(setup.profile.bedrock.size());
+  const int bedrock_layers = setup.bedrock_layers();
   const LayeredGround<double> ground = layered_ground_of(truth.final, bedrock_layers);
   if (has_water(setup.params)) add_courant_check(truth.records, setup.params, truth.final.grid, result);
   if (expect.is_object() && expect.value("at_rest", false)) add_repose_check(ground, setup.params, result);
@@ -339,25 +345,64 @@ void finish_layered(const LayeredSetup& setup, const std::vector<BackendEnd>& en
 
 // ---- the case -------------------------------------------------------------------------------
 
-// Decisions taken for the user: the profile, and whether and how water runs.
+// A profile, top down: "1.25 m topsoil and 2.25 m subsoil of seed001_code, bedrock 3 m type 0, ...".
+std::string profile_words(const LayeredProfile& profile, const std::string& soil) {
+  std::vector<std::string> bedrock;
+  for (const auto& layer : profile.bedrock) bedrock.push_back(fmt::format("{:.6g} m type {}", layer.thickness, layer.type));
+  return fmt::format("{:.6g} m topsoil and {:.6g} m subsoil of {}, bedrock {}",
+                     std::accumulate(profile.topsoil.begin(), profile.topsoil.end(), 0.0),
+                     std::accumulate(profile.subsoil.begin(), profile.subsoil.end(), 0.0), soil,
+                     fmt::join(bedrock, ", "));
+}
+
+// The initial columns as said to the user: each profile with the columns that take it, and the
+// vegetation (one value, or the map's range).
+std::vector<std::string> columns_notes(const LayeredSetup& setup) {
+  const LayeredColumns& columns = setup.columns;
+  std::vector<std::string> notes;
+  if (columns.profile_of.empty()) {
+    notes.push_back("initial profile in every column, top down: " + profile_words(columns.profiles[0], setup.soils[0]));
+  } else {
+    for (std::size_t p = 0; p < columns.profiles.size(); ++p) {
+      const auto count = std::count(columns.profile_of.begin(), columns.profile_of.end(), std::int32_t(p));
+      notes.push_back(fmt::format("profile {} (the profile field's value {}) in {} of {} columns, top down: {}", p, p,
+                                  count, columns.profile_of.size(), profile_words(columns.profiles[p], setup.soils[p])));
+    }
+  }
+  if (columns.vegetation.size() == 1) {
+    notes.push_back(fmt::format("vegetation {:.6g} on every column", columns.vegetation[0]));
+  } else {
+    const auto [least, most] = std::minmax_element(columns.vegetation.begin(), columns.vegetation.end());
+    notes.push_back(fmt::format("vegetation from the input field 'vegetation', {:.6g} .. {:.6g} (the vegetation "
+                                "parameter is not read)",
+                                *least, *most));
+  }
+  if (!setup.params.talus) notes.push_back("talus is switched off (talus=false)");
+  return notes;
+}
+
+// Decisions taken for the user: the columns, and whether and how water runs.
 std::vector<std::string> setup_notes(const LayeredSetup& setup) {
   const LayeredParams& params = setup.params;
-  const std::string profile = fmt::format(
-      "initial profile in every column, top down: {:.6g} m topsoil and {:.6g} m subsoil of {}, {:.6g} m soft rock (type "
-      "0), {:.6g} m hard rock (type 1); vegetation {:.6g}",
-      std::accumulate(setup.profile.topsoil.begin(), setup.profile.topsoil.end(), 0.0),
-      std::accumulate(setup.profile.subsoil.begin(), setup.profile.subsoil.end(), 0.0), setup.soil,
-      setup.profile.bedrock[0].thickness, setup.profile.bedrock[1].thickness, setup.vegetation);
+  std::vector<std::string> notes = columns_notes(setup);
   if (!has_water(params)) {
-    return {profile, "no water given (initial_water, rain_rate and river all off): the water processes do not run"};
+    notes.push_back("no water given (initial_water, rain_rate and river all off): the water processes do not run");
+    return notes;
   }
   const std::string river =
       params.river ? fmt::format(", the river: {} m held at column ({}, {}), rows y >= {} a sink", params.river_depth,
                                  setup.surface.width / 2, setup.surface.height / 16, (15 * setup.surface.height + 15) / 16)
                    : std::string();
-  return {profile, fmt::format("water: {} m on every column at the start, rain {} m/s{}; the water processes run each "
-                               "step (pipe flow, force erosion, dissolution with K_r = {} m, wetness and the flood death)",
-                               params.initial_water, params.rain_rate, river, params.regolith_depth)};
+  const std::string diffusion =
+      params.sediment_diffusion > 0.0
+          ? fmt::format("sediment diffusion with {} weights (σ = {}{})", diffusion_weighting_name(params.diffusion_weighting),
+                        params.sediment_diffusion, params.regolith_diffusion ? ", the regolith too" : ", not the regolith")
+          : std::string("no sediment diffusion");
+  notes.push_back(fmt::format("water: {} m on every column at the start, rain {} m/s{}; the water processes run each "
+                              "step (pipe flow, force erosion, dissolution with K_r = {} m, {}, wetness and the flood "
+                              "death)",
+                              params.initial_water, params.rain_rate, river, params.regolith_depth, diffusion));
+  return notes;
 }
 
 const std::string bit_exact_model =
@@ -366,7 +411,7 @@ const std::string bit_exact_model =
 
 SteppedTwin layered_twin(const LayeredSetup& given) {
   auto setup = std::make_shared<const LayeredSetup>(given);
-  const int bedrock_layers = static_cast<int>(setup->profile.bedrock.size());
+  const int bedrock_layers = setup->bedrock_layers();
   const bool wet = has_water(setup->params);
   SteppedTwin twin{.algorithm = "erosion.layered",
                    .fields = layered_fields(bedrock_layers, wet),
@@ -391,6 +436,7 @@ SteppedTwin layered_twin(const LayeredSetup& given) {
   };
   twin.ledger = layered_ledger_terms({.steps = setup->steps, .types = setup->params.bedrock_types.size(),
                                       .bedrock_layers = bedrock_layers, .wet = wet,
+                                      .diffusing = wet && setup->params.sediment_diffusion > 0.0,
                                       .topsoil_max = setup->params.topsoil_max});
   twin.finish = [setup](const std::vector<BackendEnd>& ends, const nlohmann::json& expect, const RunOptions& options,
                         CaseResult& result) { finish_layered(*setup, ends, expect, options, result); };
@@ -398,7 +444,7 @@ SteppedTwin layered_twin(const LayeredSetup& given) {
 }
 
 PreparedTwin prepare_layered(const nlohmann::json& resolved, const LoadedInput& input) {
-  const LayeredSetup setup = layered_setup(resolved, input.heights);
+  const LayeredSetup setup = layered_setup(resolved, input.heights, input.fields);
   return {.kind = layered_twin(setup),
           .extra_checks = [notes = setup_notes(setup)](const nlohmann::json&, const RunOptions&, CaseResult& result) {
             result.notes.insert(result.notes.end(), notes.begin(), notes.end());
@@ -440,10 +486,11 @@ const std::vector<BenchmarkVariant> benchmark_variants = {
      "9 passes an iteration (creep and talus: snapshot copy, outflow, apply; vegetation 2; weathering 1) and the "
      "conversions read back after each process"},
     {"+water", 0.01,
-     "the whole model under rain 0.01 m/s (sources, creep, talus, flow, force erosion, dissolution, wetness, "
-     "vegetation, weathering); ref<double>, one thread",
-     "17 passes an iteration (the 9 above; sources 1; flow: flux, snapshot copy, move; force erosion: surface copy "
-     "and its pass; dissolution 1; wetness 1) and the conversions read back after each process"}};
+     "the whole model under rain 0.01 m/s (sources, creep, talus, flow, force erosion, dissolution, sediment "
+     "diffusion, wetness, vegetation, weathering); ref<double>, one thread",
+     "19 passes an iteration (the 9 above; sources 1; flow: flux, snapshot copy, move; force erosion: surface copy "
+     "and its pass; dissolution 1; diffusion: snapshot copy and its pass; wetness 1) and the conversions read back "
+     "after each process"}};
 
 // Up to 4 iterations on a noisy cone under the default loam profile, each variant, timed as the
 // case's steppers run them (time_stepped_work).
@@ -488,12 +535,13 @@ nlohmann::json layered_expect_shape() {
 Algorithm layered_algorithm() {
   return {.name = "erosion.layered",
           .summary = "seed 001's layered ground: soil–rock layers over bedrock, creep and per-material talus, "
-                     "vegetation and weathering, and with water the pipe flow, force, impact and dissolution erosion; a "
-                     "ledger per material",
-          .source = "seed 001 §3.1, §3.3–3.5, §3.10–3.17, §3.19, §4 (eq. 2.1–2.7, 3.1–3.12)",
+                     "vegetation and weathering, and with water the pipe flow, force, impact and dissolution erosion and "
+                     "sediment diffusion; a ledger per material",
+          .source = "seed 001 §3.1, §3.3–3.5, §3.8, §3.10–3.17, §3.19, §4 (eq. 2.1–2.7, 3.1–3.12)",
           .params = &layered_case_param_specs(),
           .prepare = prepare_layered,
           .kind = CaseKind::stepped,
+          .input_fields = layered_input_fields(),
           .benchmark = benchmark_layered,
           .published = seed_layered_rows(),
           .expect_shape = layered_expect_shape(),
@@ -502,13 +550,14 @@ Algorithm layered_algorithm() {
           // float run's half of all that, the pictures' grids: under 700 B a cell; 1000 kept. With
           // water, the water's state (14 values: 112 B in double, 56 in float, on the GPU twice
           // over), the flow's copies of it and its fractions (~150 B), impact erosion's pipe loads
-          // (20 values: 160 B), the material masks' grids (8 × 8 B): about 700 B more; 1800 kept.
+          // (20 values: 160 B), the material masks' grids (8 × 8 B), the diffusion's shares and copy
+          // (4 + 7 values: 88 B): about 800 B more; 1900 kept.
           // The runner: ref<double>'s and ref<float>'s states at the 8 checkpoints and the end, 16
           // doubles a cell dry, 30 wet (layered_fields), 2·9·8 B each: 2304 B dry, 4320 B wet.
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const bool wet = resolved.value("initial_water", 0.0) > 0.0 || resolved.value("rain_rate", 0.0) > 0.0 ||
                              resolved.value("river", false);
-            return memory_for(static_cast<double>(input.heights.size()), "cells", wet ? 1800 + 4320 : 1000 + 2304);
+            return memory_for(static_cast<double>(input.heights.size()), "cells", wet ? 1900 + 4320 : 1000 + 2304);
           }};
 }
 

@@ -133,7 +133,7 @@ Eroded layered_eroded(const Heightmap& input, const LayeredCaseParams& params) {
   for (std::size_t c = 0; c < ground.cells(); ++c) out.heights.values[c] = ground.surface[c];
   out.description = fmt::format("layered ground (reference, double): {} steps of {} s, {} soil, vegetation {}, rain {} "
                                 "m/s{}; largest height change {:.3g} {}",
-                                setup.steps, setup.params.time_step, setup.soil, setup.vegetation,
+                                setup.steps, setup.params.time_step, setup.soils[0], setup.columns.vegetation[0],
                                 setup.params.rain_rate, out.layered->water ? "" : " (no water)",
                                 largest_change(input, out.heights), input.vertical_unit);
   return out;

@@ -158,7 +158,7 @@ class LayeredReferenceStepper : public Stepper {
   explicit LayeredReferenceStepper(const LayeredSetup& setup)
       : params_(setup.params),
         grid_(StateGrid::of(setup.surface)),
-        ground_(make_layered_ground<Real>(setup.surface, setup.profile, setup.params, setup.vegetation)),
+        ground_(make_layered_ground<Real>(setup.surface, setup.columns, setup.params)),
         book_(setup.params.bedrock_types.size()) {
     if (has_water(params_)) water_ = make_layered_water<Real>(ground_.cells(), params_.initial_water);
   }
@@ -197,7 +197,7 @@ class LayeredGpuStepper : public Stepper {
  public:
   explicit LayeredGpuStepper(const LayeredSetup& setup)
       : grid_(StateGrid::of(setup.surface)),
-        buffers_(make_layered_ground<float>(setup.surface, setup.profile, setup.params, setup.vegetation), setup.params),
+        buffers_(make_layered_ground<float>(setup.surface, setup.columns, setup.params), setup.params),
         iteration_(has_water(setup.params)),
         book_(setup.params.bedrock_types.size()) {
     if (has_water(setup.params)) {
@@ -271,7 +271,7 @@ StateDecl layered_fields(int bedrock_layers, bool wet) {
 }
 
 State layered_start_state(const LayeredSetup& setup) {
-  const auto ground = make_layered_ground<double>(setup.surface, setup.profile, setup.params, setup.vegetation);
+  const auto ground = make_layered_ground<double>(setup.surface, setup.columns, setup.params);
   if (!has_water(setup.params)) return state_of<double>(ground, nullptr, StateGrid::of(setup.surface));
   const auto water = make_layered_water<double>(ground.cells(), setup.params.initial_water);
   return state_of(ground, &water, StateGrid::of(setup.surface));

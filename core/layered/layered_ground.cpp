@@ -82,17 +82,46 @@ void check_column(const LayeredGround<Real>& ground, const LayeredParams& params
 
 }  // namespace
 
-void validate_layered_inputs(const Heightmap& surface, const LayeredProfile& profile, const LayeredParams& params,
-                             double vegetation, std::size_t real_bytes) {
+namespace {
+
+void validate_columns(const Heightmap& surface, const LayeredColumns& columns, const LayeredParams& params) {
+  require(!columns.profiles.empty(), "the ground needs at least one profile");
+  for (const LayeredProfile& profile : columns.profiles) {
+    validate_layered_profile(profile, params);
+    require(profile.bedrock.size() == columns.profiles.front().bedrock.size(),
+            "every profile needs the same number of bedrock layers");
+  }
+  const std::size_t cells = surface.size();
+  require(columns.profile_of.empty() || columns.profile_of.size() == cells,
+          fmt::format("the profile map has {} cells, the surface {}", columns.profile_of.size(), cells));
+  for (std::size_t c = 0; c < columns.profile_of.size(); ++c) {
+    const auto index = columns.profile_of[c];
+    require(index >= 0 && static_cast<std::size_t>(index) < columns.profiles.size(), [&] {
+      return fmt::format("the profile map names profile {} at cell {}; there are {}", index, c, columns.profiles.size());
+    });
+  }
+  require(columns.vegetation.size() == 1 || columns.vegetation.size() == cells,
+          fmt::format("the vegetation holds {} values: one, or one per cell ({})", columns.vegetation.size(), cells));
+  for (std::size_t c = 0; c < columns.vegetation.size(); ++c) {
+    const double vegetation = columns.vegetation[c];
+    require(vegetation >= 0.0 && vegetation <= 1.0, [&] {
+      return fmt::format("vegetation {} at cell {} is not in [0, 1]", vegetation, c);
+    });
+  }
+}
+
+}  // namespace
+
+void validate_layered_inputs(const Heightmap& surface, const LayeredColumns& columns, const LayeredParams& params,
+                             std::size_t real_bytes) {
   validate_layered_params(params);
-  validate_layered_profile(profile, params);
+  validate_columns(surface, columns, params);
   require(!surface.has_mask(), "the layered ground takes a surface without no-data cells");
   check_finite(surface, "layered ground surface");
   check_cell_size(surface, "layered ground surface");
-  require(vegetation >= 0.0 && vegetation <= 1.0, fmt::format("vegetation {} is not in [0, 1]", vegetation));
   // Per cell: the state (surface, vegetation, 10 soil components, the bedrock thicknesses and
   // types) twice (a step's snapshot) and the 8 outflows of a step.
-  const auto bedrock_layers = static_cast<long long>(profile.bedrock.size());
+  const auto bedrock_layers = static_cast<long long>(columns.profiles.front().bedrock.size());
   const auto real = static_cast<long long>(real_bytes);
   const auto state_bytes = real * (2 + soil_layer_count * soil_component_count + bedrock_layers) +
                            static_cast<long long>(sizeof(std::int32_t)) * bedrock_layers;
@@ -100,22 +129,25 @@ void validate_layered_inputs(const Heightmap& surface, const LayeredProfile& pro
 }
 
 template <class Real>
-LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredProfile& profile,
-                                        const LayeredParams& params, double vegetation) {
-  validate_layered_inputs(surface, profile, params, vegetation, sizeof(Real));
+LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredColumns& columns,
+                                        const LayeredParams& params) {
+  validate_layered_inputs(surface, columns, params, sizeof(Real));
   LayeredGround<Real> ground;
   ground.width = surface.width;
   ground.height = surface.height;
   ground.cell_size_x = surface.cell_size_x;
   ground.cell_size_y = surface.cell_size_y;
-  ground.bedrock_layer_count = static_cast<int>(profile.bedrock.size());
+  ground.bedrock_layer_count = static_cast<int>(columns.profiles.front().bedrock.size());
   const std::size_t cells = ground.cells();
+  const auto layers = static_cast<std::size_t>(ground.bedrock_layer_count);
   ground.surface.assign(surface.values.begin(), surface.values.end());
-  ground.vegetation.assign(cells, static_cast<Real>(vegetation));
+  ground.vegetation.resize(cells);
   ground.soil.assign(cells * soil_layer_count * soil_component_count, Real(0));
-  ground.bedrock.assign(cells * profile.bedrock.size(), Real(0));
-  ground.bedrock_type.assign(cells * profile.bedrock.size(), 0);
+  ground.bedrock.assign(cells * layers, Real(0));
+  ground.bedrock_type.assign(cells * layers, 0);
   for (std::size_t c = 0; c < cells; ++c) {
+    const auto& profile = columns.profiles[columns.profile_of.empty() ? 0 : std::size_t(columns.profile_of[c])];
+    ground.vegetation[c] = static_cast<Real>(columns.vegetation[columns.vegetation.size() == 1 ? 0 : c]);
     for (int component = 0; component < soil_component_count; ++component) {
       const auto i = static_cast<std::size_t>(component);
       ground.soil_at(0, component, c) = static_cast<Real>(profile.topsoil[i]);
@@ -128,6 +160,12 @@ LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredP
     }
   }
   return ground;
+}
+
+template <class Real>
+LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredProfile& profile,
+                                        const LayeredParams& params, double vegetation) {
+  return make_layered_ground<Real>(surface, LayeredColumns{{profile}, {}, {vegetation}}, params);
 }
 
 template <class Real>
@@ -220,6 +258,7 @@ LayeredConversions no_conversions(std::size_t bedrock_type_count) {
 }
 
 #define GT_LAYERED_GROUND_INSTANTIATE(Real)                                                                    \
+  template LayeredGround<Real> make_layered_ground(const Heightmap&, const LayeredColumns&, const LayeredParams&); \
   template LayeredGround<Real> make_layered_ground(const Heightmap&, const LayeredProfile&, const LayeredParams&, \
                                                    double);                                                   \
   template void check_layered_ground(const LayeredGround<Real>&, const LayeredParams&);                       \

@@ -78,19 +78,33 @@ struct LayeredGround {
   std::size_t bedrock_index(int layer, std::size_t c) const { return static_cast<std::size_t>(layer) * cells() + c; }
 };
 
-// Every column gets `profile` under the surface height of `surface` (its grid sets the size and
-// cell sizes; a mask is refused), vegetation `vegetation`. Throws InputError for a bad profile or
-// surface (validate_layered_profile, check_finite, check_cell_size) and for a grid whose state, its
-// step snapshot and outflows do not fit in memory (check_grid_fits): validate_layered_inputs.
+// What the columns start with (the spatial inputs of seed 001's scenarios): column c gets
+// profiles[profile_of[c]] (profiles[0] everywhere when profile_of is empty) and vegetation[c] (one
+// value for every column when it holds one). Every profile has the same number of bedrock layers.
+struct LayeredColumns {
+  std::vector<LayeredProfile> profiles;
+  std::vector<std::int32_t> profile_of;  // empty, or one index per cell in [0, profiles.size())
+  std::vector<double> vegetation{0.0};   // one value, or one per cell, each in [0, 1]
+};
+
+// Every column gets its profile (columns) under the surface height of `surface` (its grid sets the
+// size and cell sizes; a mask is refused), and its vegetation. Throws InputError for a bad profile,
+// map or surface (validate_layered_profile, check_finite, check_cell_size) and for a grid whose
+// state, its step snapshot and outflows do not fit in memory (check_grid_fits):
+// validate_layered_inputs. The second form: one profile and one vegetation everywhere.
+template <class Real>
+LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredColumns& columns,
+                                        const LayeredParams& params);
 template <class Real>
 LayeredGround<Real> make_layered_ground(const Heightmap& surface, const LayeredProfile& profile,
                                         const LayeredParams& params, double vegetation = 0.0);
 
 // make_layered_ground's checks, in its order and with its messages, without making the ground:
-// params, profile, no mask, finite surface, cell sizes, vegetation in [0, 1], and the memory of a
+// params, profiles (at least one, each valid, all with the same bedrock layer count), the maps'
+// sizes, indices and vegetation in [0, 1], no mask, finite surface, cell sizes, and the memory of a
 // ground of `real_bytes`-byte reals (sizeof(Real): the default, double, is the larger).
-void validate_layered_inputs(const Heightmap& surface, const LayeredProfile& profile, const LayeredParams& params,
-                             double vegetation, std::size_t real_bytes = sizeof(double));
+void validate_layered_inputs(const Heightmap& surface, const LayeredColumns& columns, const LayeredParams& params,
+                             std::size_t real_bytes = sizeof(double));
 
 // What the processes refuse before a step (InputError, "erosion.layered: ..."): arrays of the
 // wrong size, non-finite values, negative thicknesses, a topsoil thicker than the maximum (beyond
