@@ -17,6 +17,17 @@
 
 namespace gt {
 
+// A neighbour's offset in cells.
+struct CellOffset {
+  int dx;
+  int dy;
+};
+
+// The Moore neighbourhood in the order of the 8-neighbour cellular models (Jákó & Tóth's thermal
+// erosion, Beneš's dissolution): the cardinal (-1,0) (0,1) (1,0) (0,-1), then the diagonal (-1,-1)
+// (-1,1) (1,1) (1,-1). GLSL twin: gpu/shaders/common/moore_pipes.glsl.
+inline constexpr CellOffset moore_offsets[8] = {{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}};
+
 // Where a user sets a cell size, for the messages that ask for one (an assumed 1 m, a size out of range).
 inline constexpr const char* cell_size_settings = "--cell-size, cell_size= from Python, or \"cell_size\" in a case file";
 

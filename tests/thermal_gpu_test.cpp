@@ -88,6 +88,27 @@ TEST_F(ThermalJakoGpu, MatchesTheFloatReferenceAndRepeats) {
   EXPECT_GT(gt::field_difference(field, first).max_abs, 0.1f);
 }
 
+TEST_F(ThermalJakoGpu, FollowsTheReferenceUnderAHardnessMap) {
+  // R varies cell by cell (0 .. 1.5), so each pipe's threshold depends on which neighbour it leads
+  // to: a GPU reading another pipe's threshold or ignoring R departs from ref<float>.
+  const auto field = masked_terrain();
+  gt::ThermalJakoParams params;
+  params.talus_angle_deg = 20.0;
+  params.hardness_talus = 0.4;
+  auto constants = gt::thermal_jako_constants(params, field.cast<double>());
+  constants.hardness.resize(field.size());
+  for (std::size_t c = 0; c < field.size(); ++c) constants.hardness[c] = 0.25 * double((c * 5) % 7);
+  const int iterations = 25;
+  gt::gpu::ThermalJakoErosion gpu(field.width, field.height, constants, iterations);
+  gpu.load(field);
+  gpu.run();
+  const auto reference = gt::reference::thermal_jako_erosion(field, constants, iterations);
+  expect_same_arithmetic(reference, gpu.result(), 16.0 * iterations, range_of(field));
+  const auto uniform = gt::reference::thermal_jako_erosion(field, gt::thermal_jako_constants(params, field.cast<double>()),
+                                                           iterations);
+  EXPECT_GT(gt::field_difference(reference, uniform).max_abs, 0.1f) << "the hardness map should change the result";
+}
+
 class ThermalGpuSpec : public gt::testing::GlTest {};
 
 TEST_F(ThermalGpuSpec, ReproducesTheSeedsThreeByThreeExample) {

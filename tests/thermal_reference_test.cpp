@@ -181,4 +181,22 @@ TEST(ThermalJakoReference, SplitsInProportionToHeightDifferences) {
   EXPECT_DOUBLE_EQ(eroded.at(2, 0), 3.375);
 }
 
+TEST(ThermalJakoReference, TheHardnessMapScalesTheMoveAndSteepensTheTalusBelowAHardNeighbour) {
+  // Eqs. 2.32-2.33 by hand on a row 0, 1, 0 with C_i = 0, C_a = 0.5, rate 0.5 and R = 2, 1, 0: the
+  // left neighbour's threshold is (0.5·2 + 0)·1 = 1, not exceeded by its drop of 1, so only the
+  // right one (threshold 0) takes part; the middle moves rate·R·H/2 = 0.5·1·1/2 = 0.25 to it. With
+  // R = 0 in the middle nothing moves at all.
+  Grid<double> field(3, 1, 0.0);
+  field.at(1, 0) = 1.0;
+  auto constants = unit_constants(0.0, 0.5);
+  constants.hardness_talus = 0.5;
+  constants.hardness = {2.0, 1.0, 0.0};
+  const auto eroded = gt::reference::thermal_jako_erosion(field, constants, 1);
+  EXPECT_EQ(eroded.at(0, 0), 0.0);
+  EXPECT_EQ(eroded.at(1, 0), 0.75);
+  EXPECT_EQ(eroded.at(2, 0), 0.25);
+  constants.hardness = {2.0, 0.0, 0.0};
+  EXPECT_EQ(gt::reference::thermal_jako_erosion(field, constants, 1).values, field.values);
+}
+
 }  // namespace

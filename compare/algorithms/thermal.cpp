@@ -97,6 +97,16 @@ Grid<double> hydra_first_iteration(const Grid<double>& heights, const ThermalCon
   return after;
 }
 
+namespace {
+
+// R(x, y) of the hardness map, 1 without one.
+template <class Real>
+double hardness_at(const ThermalConstants& constants, const Grid<Real>& heights, int x, int y) {
+  return constants.hardness.empty() ? 1.0 : constants.hardness[heights.index(x, y)];
+}
+
+}  // namespace
+
 template <class Real>
 Grid<Real> jako_first_iteration(const Grid<Real>& heights, const ThermalConstants& constants) {
   using std::max;  // unqualified: RoundingInterval brings its own
@@ -111,13 +121,15 @@ Grid<Real> jako_first_iteration(const Grid<Real>& heights, const ThermalConstant
         if (!heights.inside(nx, ny) || !heights.is_valid(nx, ny)) continue;
         const double length = k >= 4 ? constants.length_diagonal : (k % 2 == 0 ? constants.length_x : constants.length_y);
         const Real fall = heights.at(x, y) - heights.at(nx, ny);
-        if (fall > Real(constants.talus_slope * length)) drop[k] = fall;
+        // Eq. 2.33: the talus slope toward n is C_a·R(n) + C_i.
+        const double slope = constants.hardness_talus * hardness_at(constants, heights, nx, ny) + constants.talus_slope;
+        if (fall > Real(slope * length)) drop[k] = fall;
       }
       const Real drop_sum = ((drop[0] + drop[1]) + (drop[2] + drop[3])) + ((drop[4] + drop[5]) + (drop[6] + drop[7]));
       if (!(drop_sum > Real(0))) continue;
       Real largest = drop[0];
       for (int k = 1; k < 8; ++k) largest = max(largest, drop[k]);
-      const Real sent = Real(constants.request_factor) * largest / Real(2);
+      const Real sent = Real(constants.request_factor * hardness_at(constants, heights, x, y)) * largest / Real(2);
       for (int k = 0; k < 8; ++k) {
         const Real share = sent * drop[k] / drop_sum;
         after.at(x, y) = after.at(x, y) - share;
@@ -248,10 +260,35 @@ PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& gi
   return {.kind = std::move(twin), .extra_checks = in_turn(moved, add_talus_spec)};
 }
 
-PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightmap& input) {
+// The "hardness" input field as R per cell (each finite, >= 0, and rate·R <= 1: a cell moves at
+// most half its largest drop), and what was decided, said.
+std::vector<double> hardness_map(const LoadedInput& loaded, double rate, std::vector<std::string>& notes) {
+  const auto field = loaded.fields.find("hardness");
+  if (field == loaded.fields.end()) {
+    notes.push_back("no hardness field: R = 1 in every cell (eq. 2.32's rate and eq. 2.33's talus C_a + C_i)");
+    return {};
+  }
+  const auto& values = field->second.values;
+  for (std::size_t c = 0; c < values.size(); ++c) {
+    if (!(values[c] >= 0.0) || rate * values[c] > 1.0) {
+      throw InputError(fmt::format("erosion.thermal_jako: the hardness field holds {} at cell ({}, {}); R must be >= 0 "
+                                   "and rate·R at most 1 (rate = {}: a cell moves rate·R of half its largest drop)",
+                                   values[c], c % std::size_t(field->second.width), c / std::size_t(field->second.width),
+                                   rate));
+    }
+  }
+  const auto [least, most] = std::minmax_element(values.begin(), values.end());
+  notes.push_back(fmt::format("hardness R from the input field 'hardness', {:.6g} .. {:.6g}", *least, *most));
+  return values;
+}
+
+PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const LoadedInput& loaded) {
+  const Heightmap& input = loaded.heights;
   require_heightmap(input, "erosion.thermal_jako");
   const ThermalJakoParams params = thermal_jako_params_from_json(resolved);
-  const ThermalConstants constants = thermal_jako_constants(params, input);
+  std::vector<std::string> notes;
+  ThermalConstants constants = thermal_jako_constants(params, input);
+  constants.hardness = hardness_map(loaded, params.rate, notes);
   constexpr double additions_per_iteration = 16.0;  // 8 outflows subtracted, 8 inflows added
   SteppedTwin twin = thermal_twin("erosion.thermal_jako", input, params.iterations, additions_per_iteration);
   twin.reference_double = [=] {
@@ -274,7 +311,10 @@ PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const Heightma
       input, params.iterations, additions_per_iteration,
       [=](const Grid<double>& heights) { return reference::thermal_jako_erosion(heights, constants, 1); },
       [=](const Grid<double>& heights) { return jako_first_iteration(heights, constants); });
-  return {.kind = std::move(twin), .extra_checks = moved};
+  const CaseRun say_hardness = [notes](const nlohmann::json&, const RunOptions&, CaseResult& result) {
+    result.notes.insert(result.notes.end(), notes.begin(), notes.end());
+  };
+  return {.kind = std::move(twin), .extra_checks = in_turn(moved, say_hardness)};
 }
 
 // The field's spec vectors plus add_talus_spec's eq. 4.10 vector.
@@ -328,15 +368,19 @@ Algorithm thermal_jako_algorithm() {
           .source = "seed 000 §2.6, eqs. 2.30-2.34 (digest 000 §3.6)",
           .params = &thermal_jako_param_specs(),
           .prepare = [](const nlohmann::json& resolved, const LoadedInput& input) {
-            return prepare_thermal_jako(resolved, input.heights);
+            return prepare_thermal_jako(resolved, input);
           },
           .kind = CaseKind::stepped,
+          .input_fields = {{"hardness", "1",
+                            "R(x, y) of eqs. 2.32-2.33, >= 0: the cell's rate × R, and the talus toward it C_a·R + C_i"}},
           // Counted in reference/erosion/thermal_jako.cpp and gpu/erosion/thermal_jako.cpp.
-          .traffic = {.cpu = 152.0, .gpu = 84.0},
+          .traffic = {.cpu = 224.0, .gpu = 120.0},
           .expect_shape = field_spec_shape(),
-          // Measured 438 B a cell (1024² vs 256², 64 iterations, both backends, 8 shadow checkpoints).
+          // Measured 438 B a cell (1024² vs 256², 64 iterations, both backends, 8 shadow checkpoints),
+          // before the per-cell constants: 9 doubles on the host, rounded copies in the float and
+          // interval runs (9 floats, 9 pairs of doubles) and on the GPU (9 floats): 288 B more.
           .memory = [](const nlohmann::json&, const LoadedInput& input) {
-            return memory_for(static_cast<double>(input.heights.size()), "cells", 500 + descriptor_bytes_per_cell);
+            return memory_for(static_cast<double>(input.heights.size()), "cells", 800 + descriptor_bytes_per_cell);
           }};
 }
 

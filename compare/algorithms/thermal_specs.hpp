@@ -20,8 +20,9 @@ Grid<double> hydra_first_iteration(const Grid<double>& heights, const ThermalCon
                                    Neighbourhood neighbourhood);
 
 // Jákó & Tóth's first iteration (eqs. 2.30-2.34 as decided in reference/erosion/thermal_jako.cpp),
-// sending each outflow to its neighbour as it is computed: A = the lower neighbours beyond T·l,
-// ΔS = rate·H/2 with H the largest drop in A, shared by the drops.
+// sending each outflow to its neighbour as it is computed: A = the lower neighbours n beyond
+// (C_a·R(n) + C_i)·l, ΔS = rate·R·H/2 with H the largest drop in A, shared by the drops (R = 1
+// without a hardness map).
 // Real: double, or core/rounding_interval.hpp's RoundingInterval (the pipe step's spec, compare/
 // algorithms/pipe_spec.hpp, runs it as its combined thermal step).
 template <class Real>

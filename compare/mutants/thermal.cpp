@@ -14,7 +14,9 @@
 // iteration moves, against a host spec of the transfer from the thesis' equations) and
 // spec.first_iteration_cells.cpu (that first iteration cell by cell: mirrored_slope runs on the
 // probe cone and on the volcano, which is not symmetric) and spec.talus_eq_4_10 (eq. 4.10's
-// threshold, which both twins read from core/params/thermal.cpp).
+// threshold, which both twins read from core/params/thermal.cpp). The hardness map's two
+// (hardness_of_the_cell, both twins; gpu_limit_of_opposite_pipe, the GPU alone) run on the probe
+// cone and on the volcano, each with a banded hardness field.
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -25,6 +27,8 @@ std::vector<Mutant> thermal_mutants() {
   const std::vector<std::string> jako = {"erosion.thermal_jako.spec.example_3x3",
                                          "erosion.thermal_jako.mutant_probe.cone"};
   const std::vector<std::string> jako_probe = {"erosion.thermal_jako.mutant_probe.cone"};
+  const std::vector<std::string> hardness = {"erosion.thermal_jako.hardness.mutant_probe.cone",
+                                             "erosion.thermal_jako.hardness.volcano"};
   return {
       {"erosion.thermal.swapped_gather", MutantKind::one_twin,
        "thermal_transfer.comp pairs a cell's pipe k with the neighbour's request on its pipe k instead of the "
@@ -72,6 +76,14 @@ std::vector<Mutant> thermal_mutants() {
        "both twins move ΔS = rate·H instead of rate·H/2 (eq. 2.32's halving forgotten)", jako},
       {"erosion.thermal_jako.first_outflow_kept", MutantKind::both_twins,
        "both twins' gather subtracts the outflows of pipes 1-7 only: what leaves through pipe 0 is created", jako},
+      {"erosion.thermal_jako.hardness_of_the_cell", MutantKind::both_twins,
+       "both twins (core/params/thermal.cpp's jako_cell_constants) steepen the talus below a cell by its own "
+       "hardness instead of the lower neighbour's (eq. 2.33's R(n))",
+       hardness},
+      {"erosion.thermal_jako.gpu_limit_of_opposite_pipe", MutantKind::one_twin,
+       "thermal_jako_outflow.comp compares each drop with the threshold of the pipe pointing the other way: the same "
+       "length, another neighbour's hardness",
+       hardness},
   };
 }
 

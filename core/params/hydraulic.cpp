@@ -147,7 +147,8 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.regolith_deposition_fraction = std::min(1.0, params.regolith_deposition_rate * params.time_step);
   constants.regolith_diffusion = params.regolith_diffusion;
   constants.thermal_step = params.thermal_step;
-  constants.thermal = thermal_jako_constants({1, params.thermal_talus_angle, params.thermal_rate}, terrain);
+  constants.thermal = thermal_jako_constants(
+      {.iterations = 1, .talus_angle_deg = params.thermal_talus_angle, .rate = params.thermal_rate}, terrain);
   return constants;
 }
 

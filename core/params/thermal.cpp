@@ -45,9 +45,12 @@ const ParamTable<ThermalJakoParams>& thermal_jako_param_table() {
   using P = ThermalJakoParams;
   static const ParamTable<P> table = {
       integer_param("iterations", &P::iterations, 0, 100000, "count", "iterations (outflow + gather each)"),
-      real_param("talus_angle", &P::talus_angle_deg, 0.0, 85.0, "degree", "talus angle: tan = C_a·R + C_i of eq. 2.33"),
+      real_param("talus_angle", &P::talus_angle_deg, 0.0, 85.0, "degree",
+                 "talus angle: C_i = its tan, the talus slope where R = 0 (eq. 2.33; R = 1 without a hardness map)"),
+      real_param("hardness_talus", &P::hardness_talus, 0.0, 100.0, "1",
+                 "C_a of eq. 2.33: the talus slope toward neighbour n is C_a·R(n) + C_i"),
       real_param("rate", &P::rate, 0.0, 1.0, "1",
-                 "Δt·C_t·R of eq. 2.32: the share of half the largest excess difference moved per iteration"),
+                 "Δt·C_t of eq. 2.32: the share of half the largest excess difference moved per iteration, times R"),
   };
   return table;
 }
@@ -108,7 +111,33 @@ ThermalConstants thermal_jako_constants(const ThermalJakoParams& params, const H
   constants.length_y = heights.cell_size_y;
   constants.length_diagonal = std::hypot(constants.length_x, constants.length_y);
   constants.request_factor = params.rate;
+  constants.hardness_talus = params.hardness_talus;
   return constants;
+}
+
+std::vector<std::array<double, 9>> jako_cell_constants(const ThermalConstants& constants, double talus_slope,
+                                                        int width, int height) {
+  const auto hardness = [&](int x, int y) {
+    return constants.hardness.empty() ? 1.0 : constants.hardness[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+  };
+  // Mutant erosion.thermal_jako.hardness_of_the_cell (both twins): the talus below a cell read from
+  // its own hardness, not the lower neighbour's.
+  const bool own_hardness = mutant_active("erosion.thermal_jako.hardness_of_the_cell");
+  std::vector<std::array<double, 9>> cells(std::size_t(width) * std::size_t(height));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      auto& cell = cells[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + moore_offsets[k].dx, ny = y + moore_offsets[k].dy;
+        const bool inside = nx >= 0 && ny >= 0 && nx < width && ny < height;
+        const double neighbour_hardness = !inside ? 0.0 : own_hardness ? hardness(x, y) : hardness(nx, ny);
+        const double length = k >= 4 ? constants.length_diagonal : (k % 2 == 0 ? constants.length_x : constants.length_y);
+        cell[std::size_t(k)] = (constants.hardness_talus * neighbour_hardness + talus_slope) * length;
+      }
+      cell[8] = constants.request_factor * hardness(x, y);
+    }
+  }
+  return cells;
 }
 
 Heightmap normalise_heights(const Heightmap& heights) {

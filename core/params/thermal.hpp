@@ -7,9 +7,17 @@
 // diagonal | alternating (even iterations cardinal, odd diagonal), heights physical (metres, the
 // default: T = tan α, lengths in metres) or normalised (seed 000's [0,1] heights, T from eq. 4.10).
 //
-// erosion.thermal_jako (Jákó & Tóth 2011, digest 000 §3.6): 8 neighbours, talus angle, and the
-// fraction `rate` = Δt·C_t·R of eq. 2.32 (R = 1, no hardness map).
+// erosion.thermal_jako (Jákó & Tóth 2011, digest 000 §3.6): 8 neighbours, the talus angle (C_i =
+// tan of it), `hardness_talus` C_a and the fraction `rate` = Δt·C_t of eq. 2.32, with a hardness
+// map R(x, y) (the case's "hardness" input field; R = 1 everywhere without one): a cell moves
+// rate·R(x, y)·H/2 (eq. 2.32) to the neighbours n whose drop exceeds (C_a·R(n) + C_i)·l (eq. 2.33).
+// Decision: R is taken as printed, a factor of both: eq. 2.32 moves more where R is larger (the
+// thesis calls R a "hardness" but multiplies by it), eq. 2.33 steepens the talus below a hard
+// neighbour.
 #pragma once
+
+#include <array>
+#include <vector>
 
 #include "core/grid.hpp"
 #include "core/param_table.hpp"
@@ -34,6 +42,7 @@ struct ThermalJakoParams {
   int iterations = 100;
   double talus_angle_deg = 30.0;
   double rate = 0.5;
+  double hardness_talus = 0.0;  // C_a of eq. 2.33
 };
 
 // The declarations (core/param_table.hpp), their ParamSpecs, and the structs from resolve_params'
@@ -53,7 +62,18 @@ struct ThermalConstants {
   double length_diagonal = 1.0;  // distance to the diagonal neighbours, sqrt(lx² + ly²)
   double request_factor = 0.5;   // f_s of Algorithm 10 (Hydra) or `rate` (Jákó)
   bool clamp_unit = false;       // clamp results to [0, 1] (Hydra, normalised heights only)
+  // Jákó only: C_a of eq. 2.33, and R per cell (row-major; empty: R = 1 everywhere).
+  double hardness_talus = 0.0;
+  std::vector<double> hardness;
 };
+
+// Jákó's per-cell constants on a width × height grid, in double, both twins rounding each once to
+// their type: [k] for the Moore pipes k = 0..7 (core/grid.hpp's moore_offsets) the threshold
+// (C_a·R(n) + talus_slope)·l_k of eq. 2.33 with n the neighbour through k (a pipe out of the grid is
+// closed: its threshold is talus_slope·l_k), and [8] the fraction rate·R(c) of eq. 2.32.
+// `talus_slope` is C_i (tan of the talus angle; a mutant may steepen it for both twins).
+std::vector<std::array<double, 9>> jako_cell_constants(const ThermalConstants& constants, double talus_slope,
+                                                        int width, int height);
 
 // T_α = tan(π/180·α) / (width·d_z), eq. 4.10 of seed 000 taken literally. The digest shows it is a
 // factor 2 steeper than the geometry implies (effective angle atan(tan α / 2)); kept for parity.

@@ -36,6 +36,7 @@ class ThermalJakoErosion {
   ComputeProgram outflow_program_;
   ComputeProgram gather_program_;
   UniformBuffer block_;
+  StorageBuffer cell_constants_;
   StorageBuffer outflows_;
   HeightfieldBuffers heights_;
 };

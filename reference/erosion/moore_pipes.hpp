@@ -1,8 +1,8 @@
 // The 8 pipes of the Moore neighbourhood along which the 8-neighbour cellular models exchange
 // material or water (Jákó & Tóth's thermal erosion, Beneš's dissolution erosion), CPU reference.
 //
-// moore_pipes[k] -> the offset (dx, dy) of pipe k: pipes 0-3 the cardinal (-1,0) (0,1) (1,0) (0,-1),
-//   pipes 4-7 the diagonals (-1,-1) (-1,1) (1,1) (1,-1).
+// moore_pipes[k] -> the offset (dx, dy) of pipe k (core/grid.hpp's moore_offsets): pipes 0-3 the
+//   cardinal (-1,0) (0,1) (1,0) (0,-1), pipes 4-7 the diagonals (-1,-1) (-1,1) (1,1) (1,-1).
 // opposite_pipe(k) -> the pipe of the neighbour that points back at the cell.
 // pipe_open(grid, x, y, k) -> whether pipe k of cell (x, y) leads to a cell inside the grid and valid:
 //   neighbours outside the grid or masked are absent (no exchange across the border).
@@ -22,13 +22,7 @@
 
 namespace gt::reference {
 
-struct MoorePipe {
-  int dx;
-  int dy;
-};
-
-inline constexpr std::array<MoorePipe, 8> moore_pipes{
-    {{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
+inline constexpr const auto& moore_pipes = moore_offsets;  // core/grid.hpp
 
 constexpr int opposite_pipe(int k) { return k < 4 ? (k + 2) % 4 : 4 + (k - 2) % 4; }
 

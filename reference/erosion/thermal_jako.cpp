@@ -1,22 +1,25 @@
 // Thermal erosion of Jákó & Tóth 2011 as surveyed by seed 000 (digest 000 §3.6, eqs. 2.30-2.34),
 // on the 8-neighbourhood pipe system. Each iteration has two synchronous passes:
-//   outflow: A = the neighbours n with b - b_n > T·l_n (eq. 2.33, R·C_a + C_i = T = tan angle);
+//   outflow: A = the neighbours n with b - b_n > (C_a·R(n) + C_i)·l_n (eq. 2.33, C_i = tan angle;
+//            R = 1 without a hardness map);
 //            H = max over A of (b - b_n) (eq. 2.30 restricted to A, see below);
-//            ΔS = rate·H/2 (eq. 2.32 with a = 1: heights, not volumes, move);
+//            ΔS = rate·R(x, y)·H/2 (eq. 2.32 with a = 1: heights, not volumes, move);
 //            ΔS_n = ΔS·(b - b_n)/Σ_A (b - b_j) (eq. 2.34 with height differences: the printed
 //            form with absolute heights is not translation-invariant, digest Appendix B item 4).
 //   gather:  b' = b - Σ_n ΔS_n + Σ_n (what neighbour n sends to this cell).
 // Decisions: H is taken over A rather than over all 8 neighbours, so a cell whose largest drop is
 // within the talus limit moves nothing; distances are l_x, l_y and sqrt(l_x² + l_y²); neighbours
-// outside the grid or masked are absent (no flow across the border). What leaves one cell arrives
+// outside the grid or masked are absent (no flow across the border); the thresholds and the rate of
+// every cell are computed in double once (core/params/thermal.hpp's jako_cell_constants) and
+// rounded once to Real, as the GPU twin receives them. What leaves one cell arrives
 // at the other as the same number, so material is conserved up to the rounding of the additions.
 // Units: heights and lengths in metres; rate dimensionless in [0, 1].
 // Mutants (compare/mutants/thermal.cpp; the GPU twin carries the same ones): talus_degree_off,
 // unhalved_transfer, first_outflow_kept.
 //
 // Memory traffic per cell and iteration (ref<double>, the performance table's floor column):
-// 2 passes, 80 B read + 72 B written = 152 B (heights read by both passes, the outflows
-// double[8] written then read, the next heights written).
+// 2 passes, 152 B read + 72 B written = 224 B (heights read by both passes, the cell's 9 constants
+// read by the outflow pass, the outflows double[8] written then read, the next heights written).
 #include "reference/erosion/thermal_jako.hpp"
 
 #include <algorithm>
@@ -36,10 +39,18 @@ namespace {
 template <class Real>
 using Outflows = std::vector<std::array<Real, 8>>;
 
+// A cell's thresholds (C_a·R(n) + C_i)·l_k of its 8 pipes and its rate·R, rounded once from double.
+template <class Real>
+struct CellConstants {
+  std::array<Real, 8> talus_limit;
+  Real rate;
+};
+
 // `half` is 1/2 of eq. 2.32 (mutant erosion.thermal_jako.unhalved_transfer: 1).
 template <class Real>
-std::array<Real, 8> cell_outflows(const Grid<Real>& heights, int x, int y, const std::array<Real, 8>& talus_limit,
-                                  Real rate, Real half) {
+std::array<Real, 8> cell_outflows(const Grid<Real>& heights, int x, int y, const CellConstants<Real>& cell, Real half) {
+  const auto& talus_limit = cell.talus_limit;
+  const Real rate = cell.rate;
   const Real height = heights.at(x, y);
   std::array<Real, 8> drop{};
   Real largest_drop = Real(0);
@@ -85,14 +96,12 @@ double applied_talus_slope(const ThermalConstants& constants) {
 
 template <class Real>
 Grid<Real> thermal_jako_erosion(const Grid<Real>& heights, const ThermalConstants& constants, int iterations) {
-  // T·l per pipe, computed in double and rounded once, as the GPU twin receives it.
-  const double talus_slope = applied_talus_slope(constants);
-  const Real cardinal_x = static_cast<Real>(talus_slope * constants.length_x);
-  const Real cardinal_y = static_cast<Real>(talus_slope * constants.length_y);
-  const Real diagonal = static_cast<Real>(talus_slope * constants.length_diagonal);
-  const std::array<Real, 8> talus_limit{cardinal_x, cardinal_y, cardinal_x, cardinal_y,
-                                        diagonal,   diagonal,   diagonal,   diagonal};
-  const Real rate = static_cast<Real>(constants.request_factor);
+  std::vector<CellConstants<Real>> cells(heights.size());
+  const auto exact = jako_cell_constants(constants, applied_talus_slope(constants), heights.width, heights.height);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    for (std::size_t k = 0; k < 8; ++k) cells[c].talus_limit[k] = static_cast<Real>(exact[c][k]);
+    cells[c].rate = static_cast<Real>(exact[c][8]);
+  }
   const Real half = mutant_active("erosion.thermal_jako.unhalved_transfer") ? Real(1) : Real(0.5);
   const int first_paid = mutant_active("erosion.thermal_jako.first_outflow_kept") ? 1 : 0;
 
@@ -103,7 +112,7 @@ Grid<Real> thermal_jako_erosion(const Grid<Real>& heights, const ThermalConstant
     for (int y = 0; y < current.height; ++y) {
       for (int x = 0; x < current.width; ++x) {
         outflows[current.index(x, y)] =
-            current.is_valid(x, y) ? cell_outflows(current, x, y, talus_limit, rate, half) : std::array<Real, 8>{};
+            current.is_valid(x, y) ? cell_outflows(current, x, y, cells[current.index(x, y)], half) : std::array<Real, 8>{};
       }
     }
     for (int y = 0; y < current.height; ++y) {

@@ -4,8 +4,9 @@
 // Real = double is the truth; Real = float repeats the shader's arithmetic operation by operation.
 //
 // Inputs:  heights     Grid<Real> on the 8-neighbourhood pipe system; cells with valid == 0 take no part.
-//          constants   thermal_jako_constants(): talus slope T = tan(angle), neighbour distances,
-//                      request_factor = rate = Δt·C_t·R of eq. 2.32.
+//          constants   thermal_jako_constants(): talus slope C_i = tan(angle), C_a, neighbour
+//                      distances, request_factor = rate = Δt·C_t of eq. 2.32, and the hardness map
+//                      R (empty: 1 everywhere; same size as heights).
 //          iterations  the number of iterations (two synchronous passes each: outflow, gather).
 // Outputs: the heights after the iterations, with the input's geometry, units and mask.
 // Units:   heights and lengths in metres; rate dimensionless in [0, 1].

@@ -2,8 +2,10 @@
 // Outflow pass of Jákó & Tóth's thermal erosion (digest 000 §3.6, eqs. 2.30-2.34): what each cell
 // sends down each of its 8 pipes. Decisions: reference/erosion/thermal_jako.cpp.
 // All arithmetic is `precise` so that no multiply-add is fused: ref<float> repeats it exactly.
-// Mutants (compare/mutants/thermal.cpp): DROPPED_DIRECTION (GPU only), UNHALVED_TRANSFER (both twins).
-// Inputs:  ThermalJakoBlock (uniform binding 0), heights (1), valid (2) (thermal_jako_block.glsl).
+// Mutants (compare/mutants/thermal.cpp): DROPPED_DIRECTION, LIMIT_OF_OPPOSITE_PIPE (GPU only),
+// UNHALVED_TRANSFER (both twins).
+// Inputs:  ThermalJakoBlock (uniform binding 0), heights (1), valid (2), cell constants (5)
+//          (thermal_jako_block.glsl).
 // Outputs: outflows (3): 8 per cell, two vec4.
 // Twin:    reference/erosion/thermal_jako.cpp.
 #include "common/grid.glsl"
@@ -25,7 +27,12 @@ void main() {
 #endif
       if (!pipe_open(cell, k)) continue;
       precise float difference = height - heights[cell_index(cell + pipe_offsets[k], grid_size)];
-      if (difference > talus_limit(k)) {
+#ifdef GT_MUTANT_EROSION_THERMAL_JAKO_GPU_LIMIT_OF_OPPOSITE_PIPE
+      // mutant (this twin alone): the threshold of the pipe pointing the other way
+      if (difference > talus_limit(index, k < 4 ? (k + 2) % 4 : 4 + (k - 2) % 4)) {
+#else
+      if (difference > talus_limit(index, k)) {
+#endif
         drop[k] = difference;
         largest_drop = max(largest_drop, difference);
         drop_total = drop_total + difference;
@@ -35,9 +42,9 @@ void main() {
   precise float sent[8] = float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
   if (drop_total > 0.0) {
 #ifdef GT_MUTANT_EROSION_THERMAL_JAKO_UNHALVED_TRANSFER
-    precise float moved = rate * largest_drop * 1.0;
+    precise float moved = cell_rate(index) * largest_drop * 1.0;
 #else
-    precise float moved = rate * largest_drop * 0.5;
+    precise float moved = cell_rate(index) * largest_drop * 0.5;
 #endif
     for (int k = 0; k < 8; ++k) sent[k] = moved * drop[k] / drop_total;
   }
