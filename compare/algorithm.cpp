@@ -103,7 +103,8 @@ nlohmann::json algorithm_json(const Algorithm& algorithm) {
 }
 
 void require_known_fields(const Algorithm& algorithm, const LoadedInput& input) {
-  for (const auto& [name, field] : input.fields) {
+  for (const auto& given : input.fields) {
+    const std::string& name = given.first;
     const auto declared = std::find_if(algorithm.input_fields.begin(), algorithm.input_fields.end(),
                                        [&](const InputFieldSpec& known) { return known.name == name; });
     if (declared != algorithm.input_fields.end()) continue;

@@ -33,8 +33,9 @@
 //     passes through at most R = 36 roundings an iteration, each within u of what the cell holds of
 //     the material, and what moved is at most V). With water R = 64: the flow rounds a carried amount
 //     13 times (4 shares sent, their sum, the rest, 4 arrivals and their sums), force erosion and
-//     dissolution a stored amount up to 15 more; sediment diffusion (when on) 13 more, as the flow. The GPU's fragments are summed per column in float
-//     before the host's double sum (γ_7 of the total, far inside R·2u).
+//     dissolution a stored amount up to 15 more; sediment diffusion (when on) 13 more, as the flow.
+//     The GPU's fragments are summed per column in float before the host's double sum (γ_7 of the
+//     total, far inside R·2u).
 //   ledger.water      (with water) |W(end) − W(start) − added + sunk| / (W(start) + added): rain and
 //                     the river's rise in, the sinks out; bound S·13·2u
 //   layers.invalid    columns with a negative or non-finite thickness, or a topsoil above

@@ -16,7 +16,8 @@
 //      [code]); water and each carried kind q move alike (§3.7): q' = kept + Σ_k q_{n_k}·f_{n_k, k^1},
 //      sums in pipe order, with kept = max(q − Σ_k q·f_k, 0), or 0 when step 6 scaled the outflows
 //      of a column that holds water (it is drained; a dry column sends nothing and keeps what it
-//      carries, which sediment diffusion can bring). previous_water ← w before the move (w^{t−Δt} of eq. 2.2's w̄).
+//      carries, which sediment diffusion can bring). previous_water ← w before the move (w^{t−Δt}
+//      of eq. 2.2's w̄).
 //
 // Inputs:  ground (its surface h, read only), water (LayeredWater<Real>: w, fluxes, carried kinds),
 //          params (rain_rate, the river, Δt, g, cell sizes).

@@ -1,7 +1,8 @@
 #version 450
 // Pass 1 of the pipe flow on the layered ground (digest 001 §3.3 steps 1-6), GPU twin of
 // `outflows` in reference/erosion/layered/water.cpp: F_k ← max(0, F_k + P_k·Δ(h + w)) per pipe to a
-// neighbour (0 to none), then scaled by l_x·l_y·w/ΔV when ΔV = Δt·ΣF exceeds what the column holds (DRAINED records it for a column that holds water).
+// neighbour (0 to none), then scaled by l_x·l_y·w/ΔV when ΔV = Δt·ΣF exceeds what the column holds
+// (DRAINED records it for a column that holds water).
 // One invocation per column; it reads its own old flux and its neighbours' w and h (which no
 // invocation writes here) and writes its own flux, so the pass runs in place. Units: m, m³/s.
 // Inputs:  LayeredBlock (uniform binding 0) and surface (1) of layered.glsl; LayeredWaterBlock
