@@ -68,6 +68,7 @@
 #include "compare/algorithm.hpp"
 #include "compare/case_descriptors.hpp"
 #include "compare/benchmark.hpp"
+#include "compare/checks/error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/inputs.hpp"
 #include "compare/layered_case.hpp"
@@ -95,9 +96,6 @@ constexpr double roundings_per_step_with_water = 64.0;
 constexpr double diffusion_roundings_per_step = 13.0;
 constexpr double water_roundings_per_step = 13.0;
 
-// The unit roundoff of the backend's type: ref<double> in double, ref<float> and the GPU in float.
-double unit_roundoff(const std::string& backend) { return backend == "cpu" ? 0x1p-53 : 0x1p-24; }
-
 // What the terms read beside a run: the setup's counts and limits.
 struct LedgerModel {
   int steps = 0;
@@ -110,7 +108,7 @@ struct LedgerModel {
     if (!wet) return roundings_per_step;
     return roundings_per_step_with_water + (diffusing ? diffusion_roundings_per_step : 0.0);
   }
-  double bound(const std::string& backend) const { return steps * roundings() * 2.0 * unit_roundoff(backend); }
+  double bound(const std::string& backend) const { return steps * roundings() * 2.0 * unit_roundoff_of(backend); }
 };
 
 std::vector<double> volumes_of(const State& state, const LedgerModel& model) {
@@ -153,7 +151,7 @@ Check conversions_term(const LedgerRun& run, const LedgerModel& model) {
   const double out = totals.at("converted_out"), in = totals.at("converted_in");
   const double total = total_of(volumes_of(run.initial, model));
   const double addends = conversion_addends_per_cell_step * double(run.initial.grid.cells()) * model.steps;
-  const double relative = conversion_roundings * unit_roundoff(run.backend) + addends * unit_roundoff("cpu");
+  const double relative = conversion_roundings * unit_roundoff_of(run.backend) + addends * unit_roundoff_of("cpu");
   return bounded_check("", std::abs(out - in) / total, relative * (out + in) / total, std::nullopt,
                        fmt::format("|converted out of all materials − converted into them| / V: {:.6g} m³ out (bedrock "
                                    "fragmented, eroded or turned to soil, rock weathered or broken by water), {:.6g} m³ "
@@ -168,7 +166,7 @@ Check water_term(const LedgerRun& run, const LedgerModel& model) {
   const double scale = std::max(start + added, std::numeric_limits<double>::min());
   return bounded_check(
       "", std::abs(end - start - added + sunk) / scale,
-      model.steps * water_roundings_per_step * 2.0 * unit_roundoff(run.backend), std::nullopt,
+      model.steps * water_roundings_per_step * 2.0 * unit_roundoff_of(run.backend), std::nullopt,
       fmt::format("|W_end − W_start − added + sunk| / (W_start + added): W {:.6g} → {:.6g} m³, {:.6g} m³ added (rain, "
                   "the river's rise), {:.6g} m³ sunk; bound S·{}·2u",
                   start, end, added, sunk, water_roundings_per_step));
@@ -202,7 +200,7 @@ bool invalid_column(const LayeredGround<double>& ground, std::size_t c, double t
 Check invalid_term(const LedgerRun& run, const LedgerModel& model) {
   const LayeredGround<double> ground = layered_ground_of(run.final, model.bedrock_layers);
   const auto water = layered_water_of(run.final);
-  const double topsoil_limit = model.topsoil_max * (1.0 + 64.0 * unit_roundoff(run.backend));
+  const double topsoil_limit = model.topsoil_max * (1.0 + 64.0 * unit_roundoff_of(run.backend));
   std::size_t invalid = 0;
   for (std::size_t c = 0; c < ground.cells(); ++c) {
     invalid += invalid_column(ground, c, topsoil_limit) || (water && invalid_water(*water, c)) ? 1 : 0;

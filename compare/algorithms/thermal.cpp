@@ -110,7 +110,7 @@ double hardness_at(const ThermalConstants& constants, const Grid<Real>& heights,
 template <class Real>
 Grid<Real> jako_first_iteration(const Grid<Real>& heights, const ThermalConstants& constants) {
   using std::max;  // unqualified: RoundingInterval brings its own
-  const std::array<Offset, 8> offsets{{{-1, 0}, {0, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 1}, {1, 1}, {1, -1}}};
+  const auto& offsets = moore_offsets;  // core/grid.hpp, the pipes of both twins
   Grid<Real> after = heights;
   for (int y = 0; y < heights.height; ++y) {
     for (int x = 0; x < heights.width; ++x) {

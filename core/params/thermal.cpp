@@ -115,8 +115,12 @@ ThermalConstants thermal_jako_constants(const ThermalJakoParams& params, const H
   return constants;
 }
 
-std::vector<std::array<double, 9>> jako_cell_constants(const ThermalConstants& constants, double talus_slope,
-                                                        int width, int height) {
+std::vector<std::array<double, 9>> jako_cell_constants(const ThermalConstants& constants, int width, int height) {
+  // Mutant erosion.thermal_jako.talus_degree_off (both twins): the slope of an angle one degree
+  // steeper than asked.
+  const double talus_slope = mutant_active("erosion.thermal_jako.talus_degree_off")
+                                 ? std::tan(std::atan(constants.talus_slope) + std::numbers::pi / 180.0)
+                                 : constants.talus_slope;
   const auto hardness = [&](int x, int y) {
     return constants.hardness.empty() ? 1.0 : constants.hardness[std::size_t(y) * std::size_t(width) + std::size_t(x)];
   };

@@ -69,11 +69,11 @@ struct ThermalConstants {
 
 // Jákó's per-cell constants on a width × height grid, in double, both twins rounding each once to
 // their type: [k] for the Moore pipes k = 0..7 (core/grid.hpp's moore_offsets) the threshold
-// (C_a·R(n) + talus_slope)·l_k of eq. 2.33 with n the neighbour through k (a pipe out of the grid is
-// closed: its threshold is talus_slope·l_k), and [8] the fraction rate·R(c) of eq. 2.32.
-// `talus_slope` is C_i (tan of the talus angle; a mutant may steepen it for both twins).
-std::vector<std::array<double, 9>> jako_cell_constants(const ThermalConstants& constants, double talus_slope,
-                                                        int width, int height);
+// (C_a·R(n) + C_i)·l_k of eq. 2.33 with C_i = constants.talus_slope and n the neighbour through k (a
+// pipe out of the grid is closed: its threshold is C_i·l_k), and [8] the fraction rate·R(c) of eq.
+// 2.32. Both twins take their thresholds from here, so the mutants of Jákó's parameters
+// (talus_degree_off, hardness_of_the_cell) live here too.
+std::vector<std::array<double, 9>> jako_cell_constants(const ThermalConstants& constants, int width, int height);
 
 // T_α = tan(π/180·α) / (width·d_z), eq. 4.10 of seed 000 taken literally. The digest shows it is a
 // factor 2 steeper than the geometry implies (effective angle atan(tan α / 2)); kept for parity.

@@ -7,13 +7,9 @@
 // f32 by the outflow pass, outflows 2 × vec4 written then read, next heights f32 written).
 #include "gpu/erosion/thermal_jako.hpp"
 
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <numbers>
 #include <vector>
-
-#include "core/mutant.hpp"
 
 namespace gt::gpu {
 namespace {
@@ -35,13 +31,6 @@ constexpr int local_size = 16;  // local_size_x/y of thermal_jako_block.glsl
 constexpr GLuint block_binding = 0, outflows_binding = 3, cell_constants_binding = 5;  // heights: HeightfieldBuffers
 constexpr std::size_t floats_per_cell = 9;  // 8 thresholds, the rate (thermal_jako_block.glsl)
 
-// T, or under mutant erosion.thermal_jako.talus_degree_off the slope of an angle one degree steeper
-// (a parameter misapplied in both twins: the shader receives the thresholds from here).
-double applied_talus_slope(const ThermalConstants& constants) {
-  if (!mutant_active("erosion.thermal_jako.talus_degree_off")) return constants.talus_slope;
-  return std::tan(std::atan(constants.talus_slope) + std::numbers::pi / 180.0);
-}
-
 UniformBuffer block_buffer(int width, int height) {
   ThermalJakoBlock block{};
   block.grid_size[0] = width;
@@ -53,7 +42,7 @@ UniformBuffer block_buffer(int width, int height) {
 
 // Every cell's thresholds and rate, each rounded once from double, as the reference rounds them.
 StorageBuffer cell_constants_buffer(const ThermalConstants& constants, int width, int height) {
-  const auto exact = jako_cell_constants(constants, applied_talus_slope(constants), width, height);
+  const auto exact = jako_cell_constants(constants, width, height);
   std::vector<float> rounded;
   rounded.reserve(exact.size() * floats_per_cell);
   for (const auto& cell : exact) {

@@ -14,8 +14,9 @@
 // rounded once to Real, as the GPU twin receives them. What leaves one cell arrives
 // at the other as the same number, so material is conserved up to the rounding of the additions.
 // Units: heights and lengths in metres; rate dimensionless in [0, 1].
-// Mutants (compare/mutants/thermal.cpp; the GPU twin carries the same ones): talus_degree_off,
-// unhalved_transfer, first_outflow_kept.
+// Mutants (compare/mutants/thermal.cpp; the GPU twin carries the same ones): unhalved_transfer,
+// first_outflow_kept; talus_degree_off and hardness_of_the_cell in the thresholds both twins take
+// from core/params/thermal.cpp.
 //
 // Memory traffic per cell and iteration (ref<double>, the performance table's floor column):
 // 2 passes, 152 B read + 72 B written = 224 B (heights read by both passes, the cell's 9 constants
@@ -25,7 +26,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 
 #include "core/mutant.hpp"
 #include "core/rounding_interval.hpp"
@@ -86,18 +86,12 @@ Real gathered_height(const Grid<Real>& heights, const Outflows<Real>& outflows, 
   return height;
 }
 
-// T, or under mutant erosion.thermal_jako.talus_degree_off the slope of an angle one degree steeper.
-double applied_talus_slope(const ThermalConstants& constants) {
-  if (!mutant_active("erosion.thermal_jako.talus_degree_off")) return constants.talus_slope;
-  return std::tan(std::atan(constants.talus_slope) + std::numbers::pi / 180.0);
-}
-
 }  // namespace
 
 template <class Real>
 Grid<Real> thermal_jako_erosion(const Grid<Real>& heights, const ThermalConstants& constants, int iterations) {
   std::vector<CellConstants<Real>> cells(heights.size());
-  const auto exact = jako_cell_constants(constants, applied_talus_slope(constants), heights.width, heights.height);
+  const auto exact = jako_cell_constants(constants, heights.width, heights.height);
   for (std::size_t c = 0; c < cells.size(); ++c) {
     for (std::size_t k = 0; k < 8; ++k) cells[c].talus_limit[k] = static_cast<Real>(exact[c][k]);
     cells[c].rate = static_cast<Real>(exact[c][8]);

@@ -13,14 +13,22 @@ namespace {
 
 template <class Real>
 using Shares = std::array<Real, water_pipe_count>;
+using Neighbours = std::array<std::optional<std::size_t>, water_pipe_count>;
+
+// The edge neighbours L, R, T, B of column (x, y) (none outside a closed border).
+template <class Real>
+Neighbours edge_neighbours(const LayeredGround<Real>& ground, const LayeredParams& params, int x, int y) {
+  Neighbours neighbours;
+  for (int k = 0; k < water_pipe_count; ++k) neighbours[std::size_t(k)] = layered_neighbour(ground, params.border, x, y, k);
+  return neighbours;
+}
 
 // σ_k of column (x, y) toward its edge neighbours.
 template <class Real>
 Shares<Real> diffusion_shares(const LayeredGround<Real>& ground, const LayeredWater<Real>& water,
                               const LayeredParams& params, int x, int y) {
   Shares<Real> shares{};
-  std::array<std::optional<std::size_t>, water_pipe_count> neighbours;
-  for (int k = 0; k < water_pipe_count; ++k) neighbours[std::size_t(k)] = layered_neighbour(ground, params.border, x, y, k);
+  const Neighbours neighbours = edge_neighbours(ground, params, x, y);
   if (params.diffusion_weighting == DiffusionWeighting::uniform) {
     const auto weight = static_cast<Real>(params.sediment_diffusion);
     for (int k = 0; k < water_pipe_count; ++k) shares[std::size_t(k)] = neighbours[std::size_t(k)] ? weight : Real(0);
@@ -56,6 +64,7 @@ void diffusion_step(const LayeredGround<Real>& ground, LayeredWater<Real>& water
   for (int y = 0; y < ground.height; ++y) {
     for (int x = 0; x < ground.width; ++x) {
       const std::size_t c = ground.cell(x, y);
+      const Neighbours neighbours = edge_neighbours(ground, params, x, y);
       for (int kind = 0; kind < kinds; ++kind) {
         const std::size_t offset = std::size_t(kind) * cells;
         const Real amount = before[offset + c];
@@ -63,7 +72,7 @@ void diffusion_step(const LayeredGround<Real>& ground, LayeredWater<Real>& water
         for (const Real share : shares[c]) sent += amount * share;
         Real result = sent_leaves ? std::max(amount - sent, Real(0)) : amount;
         for (int k = 0; k < water_pipe_count; ++k) {
-          const auto n = layered_neighbour(ground, params.border, x, y, k);
+          const auto& n = neighbours[std::size_t(k)];
           if (n) result += before[offset + *n] * shares[*n][std::size_t(k ^ 1)];
         }
         water.carried[offset + c] = result;
