@@ -150,7 +150,8 @@ double own_range(const DropletTwin& twin) { return twin_range(field_totals(twin.
 ShadowBound disjoint_bound(const DropletTwin& twin, int count) {
   const FieldTotals totals = field_totals(twin.input);
   const double range = twin_range(totals);
-  const double additions = twin.writes_per_cell_per_step * twin.lifetime * twin.setup.spacing * twin.setup.spacing;
+  const double additions = twin.writes_per_cell_per_step * twin.lifetime * twin.setup.spacing * twin.setup.spacing +
+                           twin.cell_roundings_per_iteration;
   const Bounds bounds =
       parity_bounds_same_arithmetic(additions * count, std::max(std::abs(totals.low), std::abs(totals.high)) / range);
   const double own = range * twin.own.scale;
@@ -158,8 +159,9 @@ ShadowBound disjoint_bound(const DropletTwin& twin, int count) {
           .loose = bounds.loose * own,
           .scale = own,
           .model = fmt::format("disjoint droplets: {} additions per cell and iteration ({} per step of the one droplet "
-                               "per pass that reaches it); {}",
-                               additions, twin.writes_per_cell_per_step, bounds.model)};
+                               "per pass that reaches it, {} of the blur blend); {}",
+                               additions, twin.writes_per_cell_per_step, twin.cell_roundings_per_iteration,
+                               bounds.model)};
 }
 
 // The terrain's bound after `count` iterations, by ordering (see droplet_twin.hpp).
@@ -211,7 +213,8 @@ Check ledger_closure(const DropletTwin& twin, const LedgerRun& run) {
                           scale;
   if (!in_float || twin.setup.ordering == DropletOrdering::batch) {
     // Double: each event rounds once in double (≤ u of its amount, amounts ≤ the height range) and the
-    // ledger's sums are compensated; 1e-12 of Σ|before| leaves room for 10⁴ events per cell at u.
+    // ledger's sums are compensated; 1e-12 of Σ|before| leaves room for 10⁴ events per cell at u (a
+    // blur blend adds 18 per cell and iteration: far inside it at the few iterations cases run).
     // Batch float: the terrain changes by integer quanta, exactly counted, and the rounding of
     // heights + delta is measured per cell in double: only the double sums remain.
     return bounded_check("", residual, 1e-12, std::nullopt,
@@ -221,16 +224,19 @@ Check ledger_closure(const DropletTwin& twin, const LedgerRun& run) {
   // Float, sequential: every stored height rounds once (≤ u·M, M the largest |height| of the input,
   // which the eroders' bounds keep the heights within) and so does every update of the carried
   // sediment: at most roundings_per_step of them per droplet step, and at most lifetime steps for
-  // each droplet the run releases (known before it runs). Worst case all add up (loose); strict: a
-  // random walk.
+  // each droplet the run releases (known before it runs). A blur blend adds
+  // cell_roundings_per_iteration at each cell and iteration: sums of exchanges, each |w·(h_b - h_a)|
+  // ≤ 2M/9, so every partial sum stays below 2M, and the blended height (a convex mix, ≤ M): counted
+  // as two roundings of u·M each. Worst case all add up (loose); strict: a random walk.
   const double magnitude = std::max(std::abs(totals.low), std::abs(totals.high));
-  const double roundings = twin.roundings_per_step * most_droplet_steps(twin);
+  const double blend_roundings = 2.0 * twin.cell_roundings_per_iteration * double(twin.input.size()) * twin.iterations;
+  const double roundings = twin.roundings_per_step * most_droplet_steps(twin) + blend_roundings;
   const double per_rounding = unit_roundoff_float * magnitude / scale;
   return bounded_check("", residual, 6.0 / std::sqrt(3.0) * std::sqrt(roundings) * per_rounding,
                        roundings * per_rounding,
                        fmt::format("as ledger.closure.cpu, in float: {} roundings of at most u·{:.3g} ({} per droplet "
-                                   "step), random walk (strict) and worst case (loose)",
-                                   roundings, magnitude, twin.roundings_per_step));
+                                   "step, {} of the blur blend), random walk (strict) and worst case (loose)",
+                                   roundings, magnitude, twin.roundings_per_step, blend_roundings));
 }
 
 Check ledger_quanta(const LedgerRun& run) {

@@ -23,7 +23,8 @@
 //                    apply rounding − Σ before| / Σ|before|, in the twin's heights. Bound 1e-12 in
 //                    double and in batch float (the terrain changes by exactly counted quanta);
 //                    sequential float: roundings_per_step roundings of at most u·max|h| for every
-//                    droplet step the run can take, random walk (strict) and worst case (loose)
+//                    droplet step the run can take, and cell_roundings_per_iteration of at most
+//                    2u·max|h| at each cell and iteration, random walk (strict) and worst case (loose)
 //   ledger.quanta    batch: the same identity in integer quanta, exactly 0 (ref<double> counts none)
 // Own checks (SteppedTwin::finish), the GPU's skipped by name without one:
 //   batch.largest_cell_delta_quanta           ref<float>'s largest change of a cell in a pass
@@ -109,6 +110,10 @@ struct DropletTwin {
   double roundings_per_step = 0.0;
   // Writes one droplet step can make to one cell at most: the disjoint shadow step's error model.
   double writes_per_cell_per_step = 0.0;
+  // Roundings at each cell per iteration outside the droplets (Beyer's blur blend of eq. 2.43: 8 sums
+  // of its exchanges and the final add, 9; 0 without one): a term of both error models above. The
+  // blend's exchanges cancel exactly in pairs, so only these sums move the float ledger.
+  double cell_roundings_per_iteration = 0.0;
   // The references: `count` iterations from `heights`, the first numbered `first`; race and
   // disjoint run the droplets of a pass one after the other (the sequential truth).
   std::function<reference::DropletRun<double>(const Grid<double>& heights, int first, int count, DropletSetup setup)>

@@ -1,8 +1,9 @@
 // Beyer's droplet erosion (seed 000 §2.7): the reference against eq. 2.42's weights of Fig. 2.10
 // and hand-derived droplets (a step down a tilted plane, a step uphill without sediment, the
 // compass fallback on a flat), its ledger on a masked terrain in every ordering (and the mutants of
-// both twins it must catch), the parameters' refusals, and the GPU twin against ref<float> (batch
-// bit for bit; disjoint, where llvmpipe rounds division and sqrt correctly, too).
+// both twins it must catch), eq. 2.43's blend with a blurred map (the box blur, the volume, the
+// quanta), the parameters' refusals, and the GPU twin against ref<float> (batch bit for bit;
+// disjoint, where llvmpipe rounds division and sqrt correctly, too), with and without the blend.
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -17,6 +18,7 @@
 #include "core/rng.hpp"
 #include "gpu/erosion/beyer.hpp"
 #include "reference/erosion/beyer.hpp"
+#include "reference/erosion/blur_blend.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/masked_terrain.hpp"
 #include "tests/support/printers.hpp"
@@ -283,6 +285,111 @@ TEST(BatchDelta, TheApplyRoundingStaysWithinItsBoundAndAScaledApplyDoesNot) {
   const auto mutated = apply_random_deltas();
   EXPECT_GT(std::abs(mutated.apply_rounding), mutated.apply_rounding_bound);
 }
+
+// ---- eq. 2.43: the blend with a blurred map --------------------------------------------------------
+
+// The 3x3 box blur of the grid extended by mirroring each cell into its missing neighbours (the
+// border's decision): c_b·blurred + (1 - c_b)·h, written from eq. 2.43 directly in double.
+double blended_by_eq_2_43(const Grid<double>& heights, int x, int y, double blend) {
+  double sum = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const bool open = heights.inside(x + dx, y + dy) && heights.is_valid(x + dx, y + dy);
+      sum += open ? heights.at(x + dx, y + dy) : heights.at(x, y);
+    }
+  }
+  return blend * (sum / 9.0) + (1.0 - blend) * heights.at(x, y);
+}
+
+// On the masked terrain (37x23, heights 500-540 m, a no-data blob): every open cell is eq. 2.43 with
+// the box blur and the mirror border, to the few roundings either form takes at 540 m (10 u·540 ≈
+// 1.2e-12); no-data cells keep their heights.
+TEST(BlurBlend, IsEq2_43WithABoxBlurAndAMirrorBorder) {
+  const Grid<double> before = gt::testing::masked_terrain(5, 10, 8, 9).cast<double>();
+  Grid<double> blended = before;
+  gt::reference::blur_blend(blended, 0.4, "erosion.beyer");
+  const double tolerance = 10.0 * 0x1p-53 * 540.0;
+  int open = 0;
+  for (int y = 0; y < before.height; ++y) {
+    for (int x = 0; x < before.width; ++x) {
+      if (!before.is_valid(x, y)) {
+        EXPECT_EQ(blended.at(x, y), before.at(x, y));
+        continue;
+      }
+      ++open;
+      EXPECT_NEAR(blended.at(x, y), blended_by_eq_2_43(before, x, y, 0.4), tolerance) << x << ", " << y;
+    }
+  }
+  EXPECT_GT(gt::field_difference(before, blended).max_abs, 1.0) << "the relief of 40 m should have been smoothed";
+  EXPECT_GT(open, 800);
+}
+
+// The exchanges cancel in pairs: in double the volume moves by the sums' roundings only (18 per
+// cell of at most u·540: 1e-10 over 850 cells), in float by those of float (18·850·u_float·540 ≈
+// 0.5, the model's worst case; it lands far below); the box blur renormalised at the border
+// (the mutant) loses metres of volume over the terrain's edge.
+TEST(BlurBlend, KeepsTheVolumeWhereARenormalisedBlurDoesNot) {
+  const Grid<float> before = gt::testing::masked_terrain(5, 10, 8, 9);
+  const double cells = static_cast<double>(before.size());
+  Grid<double> in_double = before.cast<double>();
+  gt::reference::blur_blend(in_double, 0.5, "erosion.beyer");
+  EXPECT_LE(std::abs(sum_of(in_double) - sum_of(before)), 18.0 * cells * 0x1p-53 * 540.0);
+  Grid<float> in_float = before;
+  gt::reference::blur_blend(in_float, 0.5, "erosion.beyer");
+  EXPECT_LE(std::abs(sum_of(in_float) - sum_of(before)), 18.0 * cells * 0x1p-24 * 540.0);
+  const ActiveMutant renormalised("erosion.beyer.blur_renormalised_at_border");
+  Grid<double> mutated = before.cast<double>();
+  gt::reference::blur_blend(mutated, 0.5, "erosion.beyer");
+  EXPECT_GT(std::abs(sum_of(mutated) - sum_of(before)), 1.0);
+}
+
+// Batch: each exchange's count of quanta is exactly minus its pair's, so the applied quanta sum to
+// 0 (the ledger's identity), and the result lies within the quanta's rounding (half a quantum per
+// exchange, 8 a cell, and the apply's) of the blend in float.
+TEST(BlurBlend, InQuantaThePairsCancelExactly) {
+  const Grid<float> before = gt::testing::masked_terrain(5, 10, 8, 9);
+  const double quantum = gt::batch_quantum(540.0);
+  gt::reference::BatchDelta<float> delta(before.size(), static_cast<float>(quantum), "erosion.beyer");
+  gt::reference::blur_blend_quanta(before, 0.5, static_cast<float>(1.0 / quantum), delta, "erosion.beyer");
+  Grid<float> in_quanta = before;
+  gt::reference::DropletLedger ledger;
+  delta.apply(in_quanta, ledger);
+  EXPECT_EQ(ledger.applied_quanta, 0);
+  EXPECT_GT(ledger.largest_cell_delta_quanta, 1000);
+  Grid<float> in_place = before;
+  gt::reference::blur_blend(in_place, 0.5, "erosion.beyer");
+  EXPECT_LE(gt::field_difference(in_place, in_quanta).max_abs, 4.0 * quantum + 4.0 * 0x1p-24 * 540.0);
+}
+
+class BlurBlendGpu : public gt::testing::GlTestWithParam<DropletOrdering> {};
+
+// Beyer's droplets with c_b 0.5 after each of two iterations, on the GPU against ref<float>: every
+// bit equal in batch (the blend's quanta through one more apply) and in disjoint (the blend in place,
+// the same float operations in the same order); the blend changes the result.
+TEST_P(BlurBlendGpu, EqualsTheFloatReferenceBitForBit) {
+  const DropletOrdering ordering = GetParam();
+  const Grid<float> field = normalised_terrain().cast<float>();
+  auto constants = terrain_constants(ordering);
+  if (ordering == DropletOrdering::disjoint) {
+    constants.lifetime = 6;
+    constants.spacing = 21;  // > 2·(6 + 2 + 2)
+  }
+  constants.iterations = 2;
+  constants.blur_blend = 0.5;
+  const DropletOrdering reference_ordering =
+      ordering == DropletOrdering::batch ? DropletOrdering::batch : DropletOrdering::race;
+  const auto reference = gt::reference::beyer_erosion(field, constants, 2, reference_ordering);
+  gt::gpu::BeyerErosion gpu(field.width, field.height, constants);
+  gpu.load(field);
+  gpu.run();
+  EXPECT_EQ(gt::field_difference(reference.heights, gpu.result()).differing_bits, 0u);
+  auto unblended = constants;
+  unblended.blur_blend = 0.0;
+  const auto without = gt::reference::beyer_erosion(field, unblended, 2, reference_ordering);
+  EXPECT_GT(gt::field_difference(without.heights, reference.heights).max_abs, 1e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Orderings, BlurBlendGpu, ::testing::Values(DropletOrdering::disjoint, DropletOrdering::batch));
 
 TEST(BeyerParams, DisjointNeedsTheSpacingThatKeepsDropletsApart) {
   const gt::Heightmap field(8, 8, 1.0);

@@ -64,6 +64,8 @@ DropletTwin beyer_twin(const Heightmap& given, bool normalised, const BeyerConst
   // samples (a store each, one sediment update): each sample, a distinct cell, written once.
   twin.roundings_per_step = 2.0 * brush_samples(constants);
   twin.writes_per_cell_per_step = 1.0;
+  // Eq. 2.43's blend: 8 sums of exchanges and the final add at each cell (blur_blend.hpp).
+  twin.cell_roundings_per_iteration = constants.blur_blend > 0.0 ? 9.0 : 0.0;
   twin.reference_double = [constants](const Grid<double>& heights, int first, int count, DropletSetup setup) {
     return reference::beyer_erosion(heights, with_setup(constants, setup), count, reference_ordering(setup.ordering),
                                     first);
@@ -102,6 +104,12 @@ BeyerCase make_case(const nlohmann::json& resolved, const Heightmap& given) {
       droplet_ordering_name(c.ordering),
       static_cast<long long>((given.width + c.spacing - 1) / c.spacing) * ((given.height + c.spacing - 1) / c.spacing),
       c.spacing * c.spacing, c.lifetime, c.radius, beyer_speed_rule_name(c.speed_rule), c.quantum));
+  if (c.blur_blend > 0.0) {
+    twin.notes.push_back(fmt::format(
+        "blur blend c_b = {} (eq. 2.43) after each iteration: the 3x3 box blur as exchanges between neighbours (c_b/9 "
+        "of each height difference), none across the border or with no-data cells, so the volume is kept{}",
+        c.blur_blend, c.ordering == DropletOrdering::batch ? "; in batch ordering as quanta, applied as a pass's delta" : ""));
+  }
   if (c.speed_rule == BeyerSpeedRule::physical) {
     twin.notes.push_back("speed rule physical: without friction a droplet speeds up on every downhill step and its "
                          "capacity with it; expect the terrain to run away over several iterations");

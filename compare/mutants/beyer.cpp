@@ -22,6 +22,8 @@ namespace gt {
 
 std::vector<Mutant> beyer_mutants() {
   const std::vector<std::string> probe = {"erosion.beyer.mutant_probe.batch"};
+  const std::vector<std::string> blur_probe = {"erosion.beyer.blur_blend.mutant_probe.batch",
+                                               "erosion.beyer.ab.blur_blend.volcano.b"};
   return {
       {"erosion.beyer.gradient_swapped_corners", MutantKind::one_twin,
        "beyer_droplets.comp takes eq. 2.35's y component from the corner pairs swapped: (h11 - h10)(1-u) + "
@@ -49,6 +51,15 @@ std::vector<Mutant> beyer_mutants() {
        "both twins take the capacity factor c_c of eq. 2.39 twice: a conserving error of the law, which no ledger "
        "sees and the hand-derived droplet does",
        {"erosion.beyer.spec.tilted_plane"}},
+      {"erosion.beyer.gpu_blur_truncated", MutantKind::one_twin,
+       "blur_blend.comp counts each exchange of eq. 2.43's blend in batch as int(x) quanta (toward zero), not "
+       "roundEven(x): the volume is still kept, the cells are not ref<float>'s",
+       blur_probe},
+      {"erosion.beyer.blur_renormalised_at_border", MutantKind::both_twins,
+       "both twins blend with a box blur renormalised over the samples it finds (weight c_b/(1 + open neighbours)): "
+       "at the border a cell gives its neighbour more than it takes back, and the volume drifts",
+       {"erosion.beyer.blur_blend.mutant_probe.batch", "erosion.beyer.blur_blend.disjoint.cone",
+        "erosion.beyer.ab.blur_blend.volcano.b"}},
       {"erosion.beyer.uphill_deposit_unbounded", MutantKind::both_twins,
        "both twins deposit the whole climb Δh uphill, not min(Δh, sediment), and clamp the sediment at 0: material "
        "created",

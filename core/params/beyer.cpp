@@ -43,6 +43,9 @@ ParamTable<BeyerConstants> kernel_rows() {
       real_param("radius", &K::radius, 1.0, 8.0, "texel", "c_r (p_radius): radius of the erosion brush, eq. 2.42"),
       real_param("initial_speed", &K::initial_speed, 0.0, 100.0, "texel/step", "a new droplet's speed v_0"),
       real_param("initial_water", &K::initial_water, 1e-6, 100.0, "1", "a new droplet's water w_0"),
+      real_param("blur_blend", &K::blur_blend, 0.0, 1.0, "1",
+                 "c_b of eq. 2.43: after each outer iteration the heights become c_b·(3x3 box blur) + (1 - c_b)·"
+                 "heights, exchanged between neighbours so that the volume is kept; 0 is off"),
       choice_param("speed_rule", &K::speed_rule, speed_rule_choices, "",
                    "eq. 2.44: physical v = sqrt(max(v² - Δh·c_g, 0)) (downhill speeds up), "
                    "or printed v = sqrt(max(v² + Δh·c_g, 0))"),

@@ -18,7 +18,10 @@
 //     lowest height -0.89 after 5 iterations, -818 after 9);
 //   - the evaporation constant of eq. 2.45 is its own parameter (Beyer's p_evaporation), not the
 //     erosion constant c_e of eq. 2.41 that shares its symbol;
-//   - the erosion brush of eq. 2.42 is centred at the droplet's old position (Beyer's choice).
+//   - the erosion brush of eq. 2.42 is centred at the droplet's old position (Beyer's choice);
+//   - eq. 2.43's blend with a blurred map (c_b, `blur_blend`, off by default as in Beyer's own
+//     path) follows each outer iteration, with a 3x3 box blur written as exchanges between
+//     neighbours so that it conserves the volume (reference/erosion/blur_blend.hpp).
 // Orderings of the droplets of a pass and the batch quantum: core/params/droplets.hpp.
 #pragma once
 
@@ -52,6 +55,7 @@ struct BeyerConstants {
   double radius = 3.0;            // c_r (p_radius), texels
   double initial_speed = 1.0;     // v_0, texels per step
   double initial_water = 1.0;     // w_0
+  double blur_blend = 0.0;        // c_b of eq. 2.43: after each iteration h = c_b·blur(h) + (1 - c_b)·h
   BeyerSpeedRule speed_rule = BeyerSpeedRule::printed;
   std::uint32_t seed = 1;         // of the random directions taken where the new direction is 0
   DropletOrdering ordering = DropletOrdering::race;

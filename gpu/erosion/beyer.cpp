@@ -10,7 +10,9 @@
 // oy·S + ox (uint32, wrapping; the droplets' RNG counter), then a storage barrier. Race and
 // disjoint: the droplets work in place on `heights`. Batch (compiled with BEYER_BATCH): the
 // droplets read `heights` and atomically add integer quanta into `delta`; beyer_apply.comp then
-// adds delta·quantum to each valid cell and clears delta, followed by another barrier. Constants
+// adds delta·quantum to each valid cell and clears delta, followed by another barrier. With c_b > 0
+// each iteration ends with blur_blend.comp (eq. 2.43): in place, or its quanta through one more
+// beyer_apply.comp in batch. Constants
 // are rounded to float once here (quantum and 1/quantum are powers of two, so both are exact);
 // 1 - inertia and 1 - evaporation are computed in the shader, as the reference computes them in
 // Real. Mutants (compare/mutants/beyer.cpp) live in the shader only.
@@ -106,6 +108,11 @@ BeyerBlock make_block(const BeyerConstants& constants, int width, int height) {
   return block;
 }
 
+std::optional<BlurBlend> blur_blend(int width, int height, const BeyerConstants& constants) {
+  if (constants.blur_blend == 0.0) return std::nullopt;
+  return BlurBlend(width, height, constants.blur_blend, is_batch(constants) ? 1.0 / constants.quantum : 0.0);
+}
+
 // One int per cell for the batch delta; a 16-byte placeholder (never bound) otherwise.
 std::size_t delta_bytes(const BeyerConstants& constants, int width, int height) {
   return is_batch(constants) ? cell_count(width, height) * sizeof(std::int32_t) : 16;
@@ -126,7 +133,8 @@ BeyerErosion::BeyerErosion(int width, int height, const BeyerConstants& constant
       block_(UniformBuffer::from(make_block(constants, width, height))),
       heights_(cell_count(width, height) * sizeof(float)),
       valid_(cell_count(width, height) * sizeof(GLuint)),
-      delta_(delta_bytes(constants, width, height)) {}
+      delta_(delta_bytes(constants, width, height)),
+      blur_blend_(blur_blend(width, height, constants)) {}
 
 void BeyerErosion::load(const Grid<float>& heights, int iterations_done) {
   layout_ = load_heightfield(heights, layout_.width, layout_.height, heights_, valid_, "BeyerErosion");
@@ -149,6 +157,7 @@ void BeyerErosion::step(int count) {
         run_pass(offset_x, offset_y, iterations_done_ * passes + pass);
       }
     }
+    blend_with_blur();
   }
 }
 
@@ -169,6 +178,12 @@ void BeyerErosion::bind() const {
 void BeyerErosion::run_pass(int offset_x, int offset_y, std::uint32_t pass_number) const {
   glProgramUniform1ui(droplets_program_.id(), pass_number_location_, pass_number);
   dispatch_droplet_pass(droplets_program_, offset_location_, offset_x, offset_y, droplets_x_, droplets_y_);
+  if (apply_program_) dispatch_cell_pass(*apply_program_, layout_.width, layout_.height);
+}
+
+void BeyerErosion::blend_with_blur() {
+  if (!blur_blend_) return;
+  blur_blend_->run(heights_, valid_, batch() ? &delta_ : nullptr);
   if (apply_program_) dispatch_cell_pass(*apply_program_, layout_.width, layout_.height);
 }
 

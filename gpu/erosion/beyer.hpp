@@ -8,7 +8,9 @@
 // run() dispatches constants.iterations outer iterations, each spacing² passes of one droplet per
 //   spacing x spacing block (Algorithm 7), without synchronisation (bracket with glFinish to time it).
 // step(count) dispatches `count` outer iterations from the current state, the droplets numbered on
-//   from the previous call's (so load + step(a) + step(b) equals load + run() for a + b iterations).
+//   from the previous call's (so load + step(a) + step(b) equals load + run() for a + b iterations);
+//   with c_b > 0 each iteration ends with eq. 2.43's blend (gpu/erosion/blur_blend.hpp), applied in
+//   batch ordering as one more delta.
 // result() downloads.
 // Orderings as core/params/droplets.hpp: race and disjoint run the droplets of a pass in place on one
 // height buffer; batch freezes the heights during a pass and applies the droplets' fixed-point delta
@@ -31,6 +33,7 @@
 #include "core/grid.hpp"
 #include "core/params/beyer.hpp"
 #include "gpu/buffer.hpp"
+#include "gpu/erosion/blur_blend.hpp"
 #include "gpu/shader_program.hpp"
 
 namespace gt::gpu {
@@ -50,6 +53,8 @@ class BeyerErosion {
   // One draw of Algorithm 7: every droplet of the pass with offset (offset_x, offset_y), numbered
   // from `pass_number` (iteration·S² + offset_y·S + offset_x), then (batch) the delta applied.
   void run_pass(int offset_x, int offset_y, std::uint32_t pass_number) const;
+  // Eq. 2.43 after an iteration (c_b > 0), then (batch) its delta applied.
+  void blend_with_blur();
 
   int iterations_;
   int spacing_;
@@ -65,6 +70,7 @@ class BeyerErosion {
   StorageBuffer heights_;
   StorageBuffer valid_;
   StorageBuffer delta_;  // batch: one int per cell; otherwise 16 unused bytes
+  std::optional<BlurBlend> blur_blend_;  // c_b > 0 only
 };
 
 }  // namespace gt::gpu

@@ -13,6 +13,9 @@
 //      erodes min(c_e·(C - s), -dh) (eq. 2.41) with the radius brush of eq. 2.42;
 //   6. v = sqrt(max(v² - dh·c_g, 0)) (eq. 2.44 with the physically intended sign; `printed`:
 //      v² + dh·c_g as printed); 7. w = w·(1 - c_evap) (eq. 2.45); 8. p = p_new.
+// After each outer iteration (every texel has released its droplet) the heights are blended with
+// their blur when c_b > 0 (eq. 2.43, reference/erosion/blur_blend.hpp): in place in race and
+// disjoint, as quanta through one more batch apply in batch.
 // Decisions of this project (digest notes, Appendix B item 6):
 //   - heights are samples at integer points; a position's cell is floor(p), its offsets (u, v) =
 //     p - cell; a droplet is on the map when the cell's four samples exist and are valid, so reads
@@ -43,6 +46,7 @@
 
 #include "core/mutant.hpp"
 #include "core/rng.hpp"
+#include "reference/erosion/blur_blend.hpp"
 
 namespace gt::reference {
 namespace {
@@ -63,6 +67,7 @@ struct Kernel {
         initial_water(static_cast<Real>(c.initial_water)),
         quantum(static_cast<Real>(c.quantum)),
         inverse_quantum(static_cast<Real>(1.0 / c.quantum)),
+        blur_blend(c.blur_blend),
         lifetime(c.lifetime),
         seed(c.seed),
         printed_speed(c.speed_rule == BeyerSpeedRule::printed) {}
@@ -72,6 +77,7 @@ struct Kernel {
   Real water_kept;  // 1 - c_evap, computed once in Real
   Real radius, initial_speed, initial_water, quantum, inverse_quantum;
   Real diagonal = static_cast<Real>(0.70710678118654752);  // s of the compass directions
+  double blur_blend;  // c_b of eq. 2.43 (blur_blend.cpp rounds its weight)
   int lifetime;
   std::uint32_t seed;
   bool printed_speed;
@@ -423,6 +429,20 @@ void run_pass(DropletRun<Real>& run, const Kernel<Real>& k, int spacing, Texel o
   terrain.apply();
 }
 
+// Eq. 2.43 after an outer iteration: in place (sequential) or as one more batch delta, applied and
+// booked as the droplets' are (its quanta sum to 0).
+template <class Real>
+void blend_with_blur(DropletRun<Real>& run, const Kernel<Real>& k, bool batch) {
+  if (k.blur_blend == 0.0) return;
+  if (!batch) {
+    blur_blend(run.heights, k.blur_blend, "erosion.beyer");
+    return;
+  }
+  BatchDelta<Real> delta(run.heights.size(), k.quantum, "erosion.beyer");
+  blur_blend_quanta(run.heights, k.blur_blend, k.inverse_quantum, delta, "erosion.beyer");
+  delta.apply(run.heights, run.ledger);
+}
+
 template <class Real>
 DropletRun<Real> empty_run(const Grid<Real>& heights) {
   DropletRun<Real> run{heights, heights.template cast<double>(), heights.template cast<double>(), {}};
@@ -449,6 +469,7 @@ DropletRun<Real> beyer_erosion(const Grid<Real>& heights, const BeyerConstants& 
         run_pass(run, kernel, spacing, {x, y}, pass_number, batch);
       }
     }
+    blend_with_blur(run, kernel, batch);
   }
   if (batch) express_quanta(run.ledger, constants.quantum);
   return run;
