@@ -62,6 +62,32 @@ struct Job {
 
 const std::string ad_hoc_origin = "command line";
 
+// --field name=file: the heightmap input's "fields" as a case file gives them (compare/inputs.hpp
+// checks each when it loads: its size, its values, the names the algorithm reads).
+void add_ad_hoc_fields(const AdHocCase& ad_hoc, nlohmann::json& input) {
+  for (const auto& field : ad_hoc.fields) {
+    const auto equals = field.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == field.size()) {
+      throw InputError(fmt::format("--field '{}': expected name=file (an input field of the heightmap, as a case file's "
+                                   "\"fields\")",
+                                   field));
+    }
+    const auto name = field.substr(0, equals);
+    if (input.contains("fields") && input["fields"].contains(name)) {
+      throw InputError(fmt::format("--field names '{}' twice", name));
+    }
+    input["fields"][name] = {{"file", std::filesystem::absolute(field.substr(equals + 1)).string()}};
+  }
+}
+
+// Refuses --field where the case has no heightmap file to carry it.
+void require_no_fields(const AdHocCase& ad_hoc) {
+  if (ad_hoc.fields.empty()) return;
+  throw InputError(fmt::format("--field '{}': input fields ride on a heightmap file; {} takes none here (give --input a "
+                               "heightmap, or drop --field)",
+                               ad_hoc.fields.front(), ad_hoc.algorithm));
+}
+
 CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   const auto& algorithm = find_algorithm(ad_hoc.algorithm);
   if (ad_hoc.cell_size_y > 0.0 && !(ad_hoc.cell_size > 0.0)) {
@@ -70,6 +96,8 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
   CaseSpec spec;
   spec.algorithm = ad_hoc.algorithm;
   spec.origin = ad_hoc_origin;
+  const bool heightmap_file = algorithm.ad_hoc_input == AdHocInput::heightmap && !ad_hoc.input.empty();
+  if (!heightmap_file) require_no_fields(ad_hoc);
   if (algorithm.ad_hoc_input == AdHocInput::none) {
     if (!ad_hoc.input.empty()) {
       throw InputError(fmt::format("{} makes its own field from its parameters: drop --input, use --set", ad_hoc.algorithm));
@@ -90,6 +118,7 @@ CaseSpec ad_hoc_spec(const AdHocCase& ad_hoc) {
     if (ad_hoc.image_vertical_scale > 0.0) spec.input["vertical_scale"] = ad_hoc.image_vertical_scale;
     if (ad_hoc.cell_size > 0.0) spec.input["cell_size"] = ad_hoc.cell_size;
     if (ad_hoc.cell_size_y > 0.0) spec.input["cell_size_y"] = ad_hoc.cell_size_y;
+    add_ad_hoc_fields(ad_hoc, spec.input);
   } else if (algorithm.kind == CaseKind::generated) {
     spec.input = {{"generator", "flat"}, {"width", ad_hoc.width}, {"height", ad_hoc.height}, {"cell_size", ad_hoc.cell_size > 0.0 ? ad_hoc.cell_size : 1.0}};
     if (ad_hoc.cell_size_y > 0.0) spec.input["cell_size_y"] = ad_hoc.cell_size_y;
@@ -417,6 +446,7 @@ std::vector<std::string> job_selection(const Job& job, const DriverOptions& opti
   }
   if (!ad_hoc.input.empty()) args.insert(args.end(), {"--input", std::filesystem::absolute(ad_hoc.input).string()});
   for (const auto& assignment : ad_hoc.assignments) args.insert(args.end(), {"--set", assignment});
+  for (const auto& field : ad_hoc.fields) args.insert(args.end(), {"--field", field});
   if (ad_hoc.red_channel) args.push_back("--red-channel");
   if (!ad_hoc.name.empty()) args.insert(args.end(), {"--case-name", ad_hoc.name});
   return args;

@@ -31,6 +31,7 @@ struct AdHocCase {
   std::vector<std::string> assignments;  // "name=value"
   bool red_channel = false;              // a colour image's red channel as height (else it is refused)
   double image_vertical_scale = 0.0;     // metres per unit of an 8/16-bit image (0: the reader's 1)
+  std::vector<std::string> fields;       // input fields of the heightmap, "name=file" (--field)
   std::string name;                      // the case's name; empty: adhoc.<algorithm>.<input>
 };
 

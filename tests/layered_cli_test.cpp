@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/io/heightmap_io.hpp"
 #include "tests/support/cli_report.hpp"
 #include "tests/support/temporary_folder.hpp"
 
@@ -178,6 +179,50 @@ TEST(LayeredCli, InputFieldsPickEachColumnsProfileAndVegetation) {
     EXPECT_EQ(refusal.status, 2) << name << ": " << refusal;
     EXPECT_THAT(refusal.err, HasSubstr(message)) << name;
     EXPECT_FALSE(fs::exists(refused_out / "report.json")) << name;
+  }
+}
+
+// The same maps from the command line: `run --algorithm erosion.layered --input DEM --field
+// profile=FILE` puts the file where a case file's "fields" would (and a worker of -j 2 gets it too);
+// a malformed, repeated or misplaced --field is refused with exit 2 before anything is written.
+TEST(LayeredCli, AFieldFromTheCommandLineIsACaseFilesField) {
+  gt::testing::TemporaryFolder folder;
+  gt::Heightmap heights(12, 8, 0.0), profile(12, 8, 0.0);
+  for (int y = 0; y < heights.height; ++y) {
+    for (int x = 0; x < heights.width; ++x) {
+      heights.at(x, y) = 10.0 + 0.5 * x;
+      profile.at(x, y) = x < 3 ? 1.0 : 0.0;
+    }
+  }
+  gt::write_heightmap(heights, folder / "dem.npy");
+  gt::write_heightmap(profile, folder / "profile.npy");
+  const std::vector<std::string> ad_hoc = {"run", "--algorithm", "erosion.layered", "--input", "dem.npy",
+                                           "--cell-size", "1", "--set", "steps=5", "--set", "soil_1=sand"};
+  const auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = ad_hoc;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  const auto result = run_groundtruth(with({"--field", "profile=profile.npy", "-j", "2", "--out", "good"}), folder.path());
+  ASSERT_EQ(result.status, 0) << result;
+  const std::string notes = report_of(folder / "good")["cases"][0]["notes"].dump();
+  EXPECT_THAT(notes, HasSubstr("profile 1 (the profile field's value 1) in 24 of 96 columns"));
+  EXPECT_THAT(notes, HasSubstr("of sand"));
+
+  const struct {
+    std::vector<std::string> args;
+    const char* message;
+  } refused[] = {{with({"--field", "profile"}), "expected name=file"},
+                 {with({"--field", "profile=profile.npy", "--field", "profile=dem.npy"}), "names 'profile' twice"},
+                 {with({"--field", "profile=missing.npy"}), "missing.npy"},
+                 {{"run", "--algorithm", "noise.fbm", "--field", "profile=profile.npy"}, "ride on a heightmap file"}};
+  for (const auto& [args, message] : refused) {
+    auto out_args = args;
+    out_args.insert(out_args.end(), {"--out", "refused"});
+    const auto refusal = run_groundtruth(out_args, folder.path());
+    EXPECT_EQ(refusal.status, 2) << message << ": " << refusal;
+    EXPECT_THAT(refusal.err, HasSubstr(message));
+    EXPECT_FALSE(fs::exists(folder / "refused")) << message;
   }
 }
 

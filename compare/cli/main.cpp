@@ -106,6 +106,10 @@ struct Shared {
 void add_ad_hoc_options(CLI::App& command, gt::AdHocCase& ad_hoc, std::string& grid_size, Shared& shared) {
   command.add_option("--input", ad_hoc.input, "a heightmap file (PNG, TIFF/GeoTIFF, EXR, volcano JSON, npz, npy)");
   command.add_option("--set", ad_hoc.assignments, "a parameter, name=value (repeatable)");
+  command.add_option("--field", ad_hoc.fields,
+                     "an input field of the --input heightmap, name=file, of its size (repeatable; `groundtruth list "
+                     "--json` names the fields each algorithm reads, e.g. erosion.layered's profile, vegetation and "
+                     "obstacle, erosion.thermal_jako's hardness)");
   command.add_flag("--red-channel", ad_hoc.red_channel,
                    "take a colour image's red channel as height (seed 000 §4.2); without it a colour image is refused "
                    "as not a heightmap");
