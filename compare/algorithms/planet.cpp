@@ -75,6 +75,7 @@
 #include "compare/descriptors/global_relief.hpp"
 #include "compare/descriptors/spherical_spectrum.hpp"
 #include "compare/field_files.hpp"
+#include "compare/planet_relief.hpp"
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
@@ -96,24 +97,9 @@
 namespace gt {
 namespace {
 
-constexpr double earth_land_fraction = 0.290;  // ETOPO 1°, area-weighted (tests/global_relief_test.cpp)
-constexpr double land_fraction_tolerance = 0.1;  // issue 13: within ±0.1 of the Earth's
-constexpr double bimodal_threshold = 5.0 / 9.0;  // Sarle's coefficient of a uniform distribution
-// Spherical power spectra (compare/descriptors/spherical_spectrum.hpp) on a HEALPix map of ~0.9°
-// pixels, ETOPO 1°'s own resolution, to degree 128 (< 3·nside); the exponent is fitted from l = 2
-// (l = 0 is the mean, l = 1 a hemisphere's offset) to l = R, a wavelength of 4 cells at the
-// equator's 4R: the smallest features the planet's regions can draw, and the same band for both.
-constexpr int spectrum_nside = 64;
-constexpr int spectrum_lmax = 128;
-constexpr int spectrum_low_degree = 2;
-// The exponents' allowed gap, a judgement fixed before any run: half a unit, against the exponent's
-// range from 0 (independent regions: white noise) to 4 and above (smooth blobs); the Earth's own
-// exponent moves by 0.7 as the band's upper end goes from l = 10 to 128, which is why both are fitted
-// over the same band. Warn-only, like the other fidelity checks.
-constexpr double spectral_exponent_tolerance = 0.5;
 constexpr double tellable_share = 0.1;           // a parity bound wider than this share of the range tells nothing
-constexpr int map_width = 512;
-constexpr int map_height = 256;
+constexpr int map_width = planet_map_width;
+constexpr int map_height = planet_map_height;
 
 template <class Real>
 struct Planet {
@@ -610,219 +596,9 @@ void add_render_checks(const CubeSphere& sphere, const Planet<double>& truth, co
                   both)));
 }
 
-// ---- the Earth ------------------------------------------------------------------------------
-
-// Solid angle of a cell: its two triangles on the sphere (Van Oosterom & Strackee 1983).
-double triangle_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double numerator = dot(a, cross(b, c));
-  const double denominator = 1.0 + dot(a, b) + dot(b, c) + dot(c, a);
-  return 2.0 * std::abs(std::atan2(numerator, denominator));
-}
-
-std::vector<AreaSample> planet_samples(const CubeSphere& sphere, const std::vector<double>& elevation) {
-  std::vector<AreaSample> samples;
-  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
-    Vec3 corners[4];
-    for (int corner = 0; corner < 4; ++corner) corners[corner] = sphere_position(sphere.local_position(region, corner % 2, corner / 2));
-    const double area = triangle_solid_angle(corners[0], corners[1], corners[3]) +
-                        triangle_solid_angle(corners[0], corners[3], corners[2]);
-    samples.push_back({elevation[region], area});
-  }
-  return samples;
-}
-
-// The relief a planet is set beside: ETOPO 1° (datasets/fetch.sh), or the global grid the case
-// gives as its input.
-struct ReferenceRelief {
-  std::string name;
-  GlobalRelief relief;
-  double bimodality = 0.0;
-  std::vector<double> spectrum;  // C_l, l = 0..spectrum_lmax
-  std::size_t no_data_cells = 0;  // set to the mean for the spectrum
-};
-
-ReferenceRelief reference_relief(const GlobalGrid& grid, const std::string& name) {
-  const auto samples = area_samples(grid);
-  ReferenceRelief reference{name, weighted_relief(samples), bimodality_coefficient(samples), {}, 0};
-  const auto& valid = grid.elevation.valid;
-  reference.no_data_cells = std::size_t(std::count(valid.begin(), valid.end(), std::uint8_t{0}));
-  reference.spectrum =
-      angular_power_spectrum(nearest_cell_sampler(grid, reference.relief.mean), spectrum_nside, spectrum_lmax);
-  return reference;
-}
-
-// ETOPO 1° when datasets/fetch.sh has fetched it, read once per process; otherwise none and why.
-const std::optional<ReferenceRelief>& etopo_relief(const std::filesystem::path& dataset_dir, std::string& reason) {
-  static std::optional<ReferenceRelief> earth;
-  static std::string why;
-  static bool read = false;
-  if (!read) {
-    read = true;
-    const auto path = dataset_dir / "real" / "etopo60.cdf";
-    if (std::filesystem::exists(path)) {
-      earth = reference_relief(read_global_grid(path.string()), "Earth (ETOPO 1°)");
-    } else {
-      why = fmt::format("{} is missing: datasets/fetch.sh fetches it", path.string());
-    }
-  }
-  reason = why;
-  return earth;
-}
-
-// The hypsometric curves (elevation over its largest magnitude against the share of the surface
-// above) and the histograms of the planet and the Earth on one plot each.
-void plot_relief(const GlobalRelief& planet, const std::optional<ReferenceRelief>& earth, const RunOptions& options,
-                 CaseResult& result) {
-  const auto curve = [](const GlobalRelief& relief, const std::string& label) {
-    Series series{label, {}, {}, false, {}};
-    const double scale = std::max(std::abs(relief.min), std::abs(relief.max));
-    for (std::size_t point = 0; point < relief.hypsometry.size(); ++point) {
-      series.x.push_back(1.0 - double(point) / double(relief.hypsometry.size() - 1));
-      series.y.push_back(relief.hypsometry[point] / scale);
-    }
-    return series;
-  };
-  SeriesPlot hypsometry{"hypsometric curves", "share of the surface above", "elevation / largest |elevation|", false,
-                        false, {curve(planet, "planet")}};
-  if (earth) hypsometry.series.push_back(curve(earth->relief, earth->name));
-  hypsometry.series.push_back({"sea level", {0.0, 1.0}, {0.0, 0.0}, true, {}});
-  // Area density over the scaled elevation: each bin's area share over its scaled width.
-  const auto density = [](const GlobalRelief& relief, const std::string& label) {
-    Series series{label, {}, {}, false, {}};
-    const double scale = std::max(std::abs(relief.min), std::abs(relief.max));
-    for (std::size_t bin = 0; bin < relief.histogram.size(); ++bin) {
-      series.x.push_back((relief.histogram_start + (double(bin) + 0.5) * relief.bin_width) / scale);
-      series.y.push_back(relief.histogram[bin] / (relief.bin_width / scale));
-    }
-    return series;
-  };
-  SeriesPlot histogram{"elevation histograms", "elevation / largest |elevation|", "area density", false, false,
-                       {density(planet, "planet")}};
-  if (earth) histogram.series.push_back(density(earth->relief, earth->name));
-  attach_plot({hypsometry, histogram}, options, "hypsometry.png",
-              earth ? fmt::format("hypsometric curves and histograms of the planet and {}, each scaled by its largest "
-                                  "|elevation|",
-                                  earth->name)
-                    : std::string("hypsometric curve and histogram of the planet (no global grid to set it beside)"),
-              result);
-}
-
-// The planet's relief as the picture shows it (each direction its nearest centroid's region) on the
-// HEALPix map, its exponent beside the Earth's over the same band, and both spectra on one plot,
-// each as its share of the variance per degree, (2l + 1)·C_l / Σ_{l>=1} (2l + 1)·C_l.
-void add_spectrum_checks(const CubeSphere& sphere, const Planet<double>& planet, bool earth_like,
-                         const std::optional<ReferenceRelief>& earth, const RunOptions& options, CaseResult& result) {
-  const reference::VoronoiSearch search(planet.regions.positions);
-  const auto& elevation = planet.elevation.smoothed;
-  const auto spectrum = angular_power_spectrum(
-      [&](const std::array<double, 3>& direction) {
-        return elevation[static_cast<std::size_t>(search.nearest({direction[0], direction[1], direction[2]}).region)];
-      },
-      spectrum_nside, spectrum_lmax);
-  const int high_degree = std::min(sphere.resolution(), spectrum_lmax);
-  const double exponent = spectral_exponent(spectrum, spectrum_low_degree, high_degree);
-  if (!earth) {
-    result.checks.push_back(informative_check(
-        "fidelity.spectral_exponent", exponent,
-        fmt::format("β of C_l ∝ l^-β over l = {}..{} (no global grid to set it beside)", spectrum_low_degree, high_degree)));
-  } else {
-    const double earth_exponent = spectral_exponent(earth->spectrum, spectrum_low_degree, high_degree);
-    if (earth->no_data_cells > 0) {
-      result.notes.push_back(fmt::format("{}'s {} no-data cells were set to its mean elevation for its spectrum",
-                                         earth->name, earth->no_data_cells));
-    }
-    const std::string detail = fmt::format("|β − {}'s β| of C_l ∝ l^-β over l = {}..{}: planet {:.2f}, {} {:.2f}",
-                                           earth->name, spectrum_low_degree, high_degree, exponent, earth->name,
-                                           earth_exponent);
-    const double gap = std::abs(exponent - earth_exponent);
-    result.checks.push_back(earth_like ? bounded_check("fidelity.spectral_exponent", gap, spectral_exponent_tolerance,
-                                                       std::numeric_limits<double>::infinity(), detail)
-                                       : informative_check("fidelity.spectral_exponent", gap, detail));
-  }
-  if (options.report_dir.empty()) return;
-  const auto shares = [&](const std::vector<double>& power, const std::string& label) {
-    double total = 0.0;
-    for (int degree = 1; degree <= spectrum_lmax; ++degree) total += (2.0 * degree + 1.0) * power[std::size_t(degree)];
-    Series series{label, {}, {}, false, {}};
-    for (int degree = 1; degree <= spectrum_lmax; ++degree) {
-      series.x.push_back(degree);
-      series.y.push_back((2.0 * degree + 1.0) * power[std::size_t(degree)] / total);
-    }
-    return series;
-  };
-  SeriesPlot plot{"spherical power spectra", "degree l", "share of the variance at degree l", true, true,
-                  {shares(spectrum, "planet")}};
-  if (earth) plot.series.push_back(shares(earth->spectrum, earth->name));
-  attach_plot({plot}, options, "spectrum.png",
-              fmt::format("angular power spectra (HEALPix nside {}), each degree's share of the variance; the exponent "
-                          "is fitted over l = {}..{}",
-                          spectrum_nside, spectrum_low_degree, high_degree),
-              result);
-}
-
-void add_fidelity_checks(const CubeSphere& sphere, const Planet<double>& planet, bool earth_like,
-                         const std::optional<ReferenceRelief>& given, const RunOptions& options, CaseResult& result) {
-  const auto samples = planet_samples(sphere, planet.elevation.smoothed);
-  const GlobalRelief relief = weighted_relief(samples, 0.0, 101, 0.1);
-  const double bimodality = bimodality_coefficient(samples);
-  std::string reason;
-  const auto& earth = given ? given : etopo_relief(options.dataset_dir, reason);
-  if (!earth) result.notes.push_back("no global grid to set the planet beside: " + reason);
-  const double target_land = earth ? earth->relief.land_fraction : earth_land_fraction;
-  const std::string target = earth ? earth->name : "the Earth (ETOPO 1°, data-sources.md)";
-  const std::string land_detail = fmt::format("|land share − {}'s {:.3f}|: land (not below 0) {:.3f} of the area",
-                                              target, target_land, relief.land_fraction);
-  const std::string bimodal_detail =
-      fmt::format("5/9 − Sarle's bimodality coefficient {:.3f} (above 5/9 suggests two modes){}", bimodality,
-                  earth ? fmt::format("; {}'s {:.3f}", earth->name, earth->bimodality) : std::string());
-  const double land_gap = std::abs(relief.land_fraction - target_land);
-  if (earth_like) {
-    const double unbounded = std::numeric_limits<double>::infinity();
-    result.checks.push_back(bounded_check("fidelity.land_fraction", land_gap, land_fraction_tolerance, unbounded, land_detail));
-    result.checks.push_back(bounded_check("fidelity.bimodality", bimodal_threshold - bimodality, 0.0, unbounded, bimodal_detail));
-  } else {
-    result.checks.push_back(informative_check("fidelity.land_fraction", land_gap, land_detail));
-    result.checks.push_back(informative_check("fidelity.bimodality", bimodal_threshold - bimodality, bimodal_detail));
-  }
-  result.checks.push_back(informative_check(
-      "fidelity.mean", relief.mean,
-      fmt::format("area-weighted mean elevation; range {:.3f} .. {:.3f} (generator units, sea level 0)", relief.min,
-                  relief.max)));
-  add_spectrum_checks(sphere, planet, earth_like, earth, options, result);
-  if (!options.report_dir.empty()) plot_relief(relief, earth, options, result);
-}
 
 // ---- pictures -------------------------------------------------------------------------------
 
-// The directions of an equirectangular map's pixel centres, row-major: row 0 at the north pole (+y),
-// column 0 at longitude −180° (the −z side); longitude 0 faces +z (the front face).
-std::vector<Vector3<double>> map_directions() {
-  std::vector<Vector3<double>> directions;
-  for (int row = 0; row < map_height; ++row) {
-    const double latitude = std::numbers::pi / 2 - (row + 0.5) / map_height * std::numbers::pi;
-    for (int column = 0; column < map_width; ++column) {
-      const double longitude = (column + 0.5) / map_width * 2 * std::numbers::pi - std::numbers::pi;
-      directions.push_back({std::cos(latitude) * std::sin(longitude), std::sin(latitude),
-                            std::cos(latitude) * std::cos(longitude)});
-    }
-  }
-  return directions;
-}
-
-// §4.3's palette (reference/planet/render.hpp) as a picture's pixel.
-std::array<float, 3> elevation_colour(double elevation) {
-  const Vec3 colour = reference::elevation_colour(elevation);
-  return {static_cast<float>(colour[0]), static_cast<float>(colour[1]), static_cast<float>(colour[2])};
-}
-
-// The colour bar of the elevation maps: the §4.3 palette from the lowest region to the highest.
-ColourScale elevation_scale(const Planet<double>& planet) {
-  const auto [lowest, highest] = std::minmax_element(planet.elevation.smoothed.begin(), planet.elevation.smoothed.end());
-  return sampled_scale("§4.3 elevation", static_cast<double>(*lowest), static_cast<double>(*highest), "generator units",
-                       [](double elevation) { return elevation_colour(elevation); });
-}
-
-// A colour per index (a plate, a region) from the counter RNG on a stream of its own: full, or mixed
 // with white (pale).
 std::array<float, 3> index_colour(const PlanetParams& params, std::int32_t index, bool full) {
   std::array<float, 3> colour{};
@@ -831,31 +607,6 @@ std::array<float, 3> index_colour(const PlanetParams& params, std::int32_t index
     colour[channel] = full ? value : 0.5f * (value + 1.0f);
   }
   return colour;
-}
-
-// The cube map: the six faces side by side in index order (front, right, back, left, north, south),
-// each R×R cells row-major from its top-left as the regions are numbered: region i is pixel
-// (face·R + x, y). EXR/NPY elevation and a PNG in the elevation palette.
-void write_cube_map(const PlanetParams& params, const Planet<double>& planet, const RunOptions& options,
-                    CaseResult& result) {
-  const int resolution = params.resolution;
-  Grid<double> cube(cube_face_count * resolution, resolution);
-  std::vector<std::array<float, 3>> pixels(cube.values.size());
-  for (std::size_t region = 0; region < planet.elevation.smoothed.size(); ++region) {
-    const auto side = static_cast<std::size_t>(resolution);
-    const std::size_t face = region / (side * side), y = region / side % side, x = region % side;
-    const std::size_t pixel = y * cube_face_count * side + face * side + x;
-    cube.values[pixel] = planet.elevation.smoothed[region];
-    pixels[pixel] = elevation_colour(planet.elevation.smoothed[region]);
-  }
-  write_colour_image(cube.width, cube.height, pixels, options.report_dir / result.name / "elevation_cube.png");
-  add_picture(result, "elevation_cube.png",
-              "cube map of the elevation: the faces front, right, back, left, north, south, a cell a pixel",
-              elevation_scale(planet));
-  write_field_files(cube,
-                    {"elevation_cube_cpu", "elevation", "cpu", "1",
-                     "elevation per region as a cube map: faces in index order side by side, each R×R row-major"},
-                    options, result);
 }
 
 // The Voronoi cells: each region a pale colour of its own, a pixel whose right or lower neighbour
@@ -874,25 +625,18 @@ void write_region_borders(const PlanetParams& params, const std::vector<referenc
   write_colour_image(map_width, map_height, pixels, png);
 }
 
-// Pictures of the spherical Voronoi cells (the exact reference's nearest centroid per pixel).
-void write_maps(const PlanetParams& params, const Planet<double>& planet, const std::vector<reference::NearestSite>& nearest,
-                const RunOptions& options, CaseResult& result) {
+// Pictures of the spherical Voronoi cells (the exact reference's nearest centroid per pixel): the
+// elevation maps (compare/planet_relief.hpp), the plates and the regions.
+void write_maps(const CubeSphere& sphere, const PlanetParams& params, const Planet<double>& planet,
+                const std::vector<reference::NearestSite>& nearest, const RunOptions& options, CaseResult& result) {
   if (options.report_dir.empty()) return;
+  write_elevation_maps({sphere, planet.regions.positions, planet.elevation.smoothed}, nearest, options, result);
   const auto folder = options.report_dir / result.name;
-  std::filesystem::create_directories(folder);
-  std::vector<std::array<float, 3>> elevation_pixels, plate_pixels;
-  Grid<double> elevation_map(map_width, map_height);
-  for (std::size_t pixel = 0; pixel < nearest.size(); ++pixel) {
-    const auto region = static_cast<std::size_t>(nearest[pixel].region);
-    elevation_pixels.push_back(elevation_colour(planet.elevation.smoothed[region]));
+  std::vector<std::array<float, 3>> plate_pixels;
+  for (const auto& site : nearest) {
+    const auto region = static_cast<std::size_t>(site.region);
     plate_pixels.push_back(index_colour(params, planet.partition.plate[region], planet.partition.is_edge[region] != 0));
-    elevation_map.values[pixel] = planet.elevation.smoothed[region];
   }
-  write_colour_image(map_width, map_height, elevation_pixels, folder / "elevation.png");
-  add_picture(result, "elevation.png",
-              "elevation, ref<double>, equirectangular, each pixel its nearest centroid's region (§4.3 palette: blue "
-              "below sea level, brown above)",
-              elevation_scale(planet));
   write_colour_image(map_width, map_height, plate_pixels, folder / "plates.png");
   add_picture(result, "plates.png",
               fmt::format("the {} plates ({} rule), edge regions in full colour", params.plates,
@@ -901,11 +645,6 @@ void write_maps(const PlanetParams& params, const Planet<double>& planet, const 
   add_picture(result, "regions.png",
               "the spherical Voronoi cells of the region centroids (exact nearest centroid per pixel), "
               "their borders dark");
-  write_field_files(elevation_map,
-                    {"elevation_cpu", "elevation", "cpu", "1",
-                     "elevation (sea level 0) of the region under each pixel of an equirectangular map, ref<double>"},
-                    options, result);
-  write_cube_map(params, planet, options, result);
 }
 
 // ---- the case -------------------------------------------------------------------------------
@@ -944,10 +683,11 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
   if (options.progress) options.progress->stage("CPU reference (float)");
   const Planet<float> single = generate<float>(sphere, twins);
   add_float_parity(sphere, twins, truth, single, result);
-  add_fidelity_checks(sphere, planet, expect.is_object() && expect.value("earth_like", false), given, options, result);
-  const auto directions = map_directions();
+  add_fidelity_checks({sphere, planet.regions.positions, planet.elevation.smoothed},
+                      expect.is_object() && expect.value("earth_like", false), given, options, result);
+  const auto directions = planet_map_directions();
   const auto nearest = reference::nearest_sites(planet.regions.positions, directions);
-  write_maps(params, planet, nearest, options, result);
+  write_maps(sphere, params, planet, nearest, options, result);
   add_render_checks(sphere, truth, single, options, result);
   if (!options.gpu_available) {
     for (const auto& name : gpu_check_names()) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
