@@ -29,6 +29,7 @@ const std::vector<Algorithm>& algorithms() {
     for (auto& algorithm : cave_algorithms()) list.push_back(std::move(algorithm));
     list.push_back(cave_endless_algorithm());
     list.push_back(planet_algorithm());
+    list.push_back(fault_lines_algorithm());
     list.push_back(mesh_check_algorithm());
     list.push_back(render_heightmap_algorithm());
     list.push_back(render_phong_algorithm());

@@ -129,6 +129,7 @@ std::vector<Algorithm> noise_algorithms();
 std::vector<Algorithm> cave_algorithms();
 Algorithm cave_endless_algorithm();
 Algorithm planet_algorithm();
+Algorithm fault_lines_algorithm();
 Algorithm mesh_check_algorithm();
 Algorithm render_heightmap_algorithm();
 Algorithm render_phong_algorithm();

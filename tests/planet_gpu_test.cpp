@@ -29,14 +29,17 @@
 
 #include "compare/checks/planet_error_model.hpp"
 #include "core/errors.hpp"
+#include "core/params/fault_planet.hpp"
 #include "core/params/planet.hpp"
 #include "core/planet/cube_sphere.hpp"
 #include "core/rng.hpp"
 #include "core/planet/sphere_mesh.hpp"
+#include "gpu/planet/fault_lines.hpp"
 #include "gpu/planet/generator.hpp"
 #include "gpu/planet/render.hpp"
 #include "gpu/planet/voronoi.hpp"
 #include "reference/planet/elevation.hpp"
+#include "reference/planet/fault_lines.hpp"
 #include "reference/planet/jitter.hpp"
 #include "reference/planet/plates.hpp"
 #include "reference/planet/render.hpp"
@@ -426,6 +429,23 @@ TEST_F(PlanetChainGpu, RefusesTheCpuOnlyModes) {
   const auto too_many_plates = planet_params(6, 217, 0.5, 1);
   EXPECT_NE(refusal([&] { gt::gpu::PlanetGenerator(sphere, too_many_plates); }).find("outside 1..216"),
             std::string::npos);
+}
+
+
+// The fault-line planet on the GPU against ref<float>: the same float inputs and the same `precise`
+// dot in the same order, every region's votes equal (R = 20, 300 faults).
+class FaultLinesGpu : public gt::testing::GlTest {};
+
+TEST_F(FaultLinesGpu, VotesEqualTheFloatReference) {
+  const gt::FaultPlanetParams params{.resolution = 20, .faults = 300, .seed = 4};
+  std::vector<float> normals;
+  for (const auto& n : gt::fault_normals(params)) normals.insert(normals.end(), n.begin(), n.end());
+  const auto positions_double = gt::fault_planet_positions(params.resolution);
+  const std::vector<float> positions(positions_double.begin(), positions_double.end());
+  const auto expected = gt::reference::fault_votes(positions, normals);
+  gt::gpu::FaultLines gpu;
+  EXPECT_EQ(gpu.votes(positions, normals), expected);
+  EXPECT_NE(*std::max_element(expected.begin(), expected.end()), *std::min_element(expected.begin(), expected.end()));
 }
 
 }  // namespace

@@ -11,9 +11,11 @@
 
 #include "core/errors.hpp"
 #include "core/params.hpp"
+#include "core/params/fault_planet.hpp"
 #include "core/params/planet.hpp"
 #include "core/rng.hpp"
 #include "reference/planet/elevation.hpp"
+#include "reference/planet/fault_lines.hpp"
 #include "reference/planet/jitter.hpp"
 #include "reference/planet/plates.hpp"
 #include "reference/planet/render.hpp"
@@ -416,6 +418,50 @@ TEST(PlanetParams, PlatesBeyondTheRegionsAreRefused) {
   EXPECT_THROW(planet_params_from_json(resolve_params("planet.earth_like", planet_param_specs(), given)), InputError);
   given["plates"] = 24;
   EXPECT_EQ(planet_params_from_json(resolve_params("planet.earth_like", planet_param_specs(), given)).plates, 24);
+}
+
+
+// ---- the fault-line planet (seed 002 §2.5) -------------------------------------------------------
+
+// One plane by hand: n = +z raises the north pole, lowers the south pole, and lowers a point on the
+// plane itself (dot 0: the loop's `else`).
+TEST(FaultLines, OnePlaneRaisesItsSideAndLowersTheOther) {
+  const std::vector<double> positions = {0, 0, 1, 0, 0, -1, 1, 0, 0};
+  const std::vector<double> normal = {0, 0, 1};
+  EXPECT_EQ(reference::fault_votes(positions, normal), (std::vector<std::int32_t>{1, -1, -1}));
+}
+
+// The spec's normals are unit vectors spread over the sphere: their mean within 6σ of 0 (each
+// component's variance 1/3, σ = sqrt(1/(3N))); and on the cube sphere every region's votes cancel
+// its antipode's (no region centre lies on one of 37 random planes).
+TEST(FaultLines, NormalsAreUnitAndVotesCancelAtAntipodes) {
+  const FaultPlanetParams params{.resolution = 6, .faults = 37, .seed = 9};
+  const auto normals = fault_normals(params);
+  ASSERT_EQ(normals.size(), 37u);
+  std::array<double, 3> mean{};
+  for (const auto& n : normals) {
+    EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-15);
+    for (int c = 0; c < 3; ++c) mean[c] += n[c] / 37.0;
+  }
+  for (int c = 0; c < 3; ++c) EXPECT_LE(std::abs(mean[c]), 6.0 * std::sqrt(1.0 / (3.0 * 37.0)));
+  std::vector<double> flat;
+  for (const auto& n : normals) flat.insert(flat.end(), n.begin(), n.end());
+  const auto positions = fault_planet_positions(params.resolution);
+  const auto votes = reference::fault_votes(positions, flat);
+  const CubeSphere sphere(params.resolution);
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    const Vec3 opposite{-positions[3 * region], -positions[3 * region + 1], -positions[3 * region + 2]};
+    const auto antipode = sphere.region_at(local_position_of(opposite));
+    ASSERT_TRUE(antipode.has_value());
+    EXPECT_EQ(votes[region] + votes[*antipode], 0) << region;
+  }
+}
+
+TEST(FaultLines, ParametersRefuseMoreDotProductsThanACaseMayTake) {
+  const auto resolved = resolve_params("planet.fault_lines", fault_planet_param_specs(),
+                                       {{"resolution", 300}, {"faults", 10000}});
+  EXPECT_THROW(fault_planet_params_from_json(resolved), InputError);
+  EXPECT_THROW(resolve_params("planet.fault_lines", fault_planet_param_specs(), {{"step", 0.0}}), InputError);
 }
 
 }  // namespace

@@ -24,12 +24,19 @@
 // the vertices: the drawing then refuses the mesh, after the mesh checks have spoken),
 // topology.* (neighbour counts and symmetry of the shared table, the map's round trip),
 // mesh.*.planet (the planet mesh's orientation).
+//
+// The fault-line planet's (planet.fault_lines, on its probe R = 12 and on its default R = 50 beside
+// the Earth): the GPU's dropped fault dies by parity.votes.gpu_vs_float; the float twins' dots
+// nudged beyond their error model (one_twin as the position pair above: a bug of the float twins
+// that ref<double> does not share) by parity.votes_beyond_flips.{float,gpu}_vs_double; both twins'
+// faults that do not pass through the centre or never lower by spec.antipodal.cpu.
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
 
 std::vector<Mutant> planet_mutants() {
   const std::vector<std::string> probe = {"planet.mutant_probe.r12"};
+  const std::vector<std::string> fault_cases = {"planet.fault_lines.mutant_probe.r12", "planet.fault_lines.default"};
   return {
       {"planet.jitter.gpu_swapped_axes", MutantKind::one_twin,
        "jitter.comp draws offset a on b's counter and b on a's", probe},
@@ -132,6 +139,19 @@ std::vector<Mutant> planet_mutants() {
        "a neighbour across a face edge is folded twice as far down the next face (the shared neighbour table)", probe},
       {"planet.cube_sphere.no_wrap", MutantKind::both_twins,
        "the shared neighbour table leaves out neighbours across the cube's edges", probe},
+      // The fault-line planet (planet.fault_lines).
+      {"planet.fault_lines.gpu_last_fault_skipped", MutantKind::one_twin,
+       "fault_lines.comp stops one fault early: every region's votes off by one", fault_cases},
+      {"planet.fault_lines.raise_only", MutantKind::both_twins,
+       "both twins raise the side a plane faces and never lower the other", fault_cases},
+      {"planet.fault_lines.plane_off_centre", MutantKind::both_twins,
+       "both twins cut with planes 0.05 off the centre (dot > 0.05): the regions near a plane are lowered on both "
+       "sides",
+       fault_cases},
+      {"planet.fault_lines.float_dot_nudged", MutantKind::one_twin,
+       "both float twins (ref<float>, the GPU) take each dot 2^-12·Σ|n_c·p_c| too high: more planes flip than the "
+       "6u error model lets flip",
+       fault_cases},
   };
 }
 

@@ -10,7 +10,8 @@
 //
 // Inputs:  heights and valid: the caller's float and uint buffers of width·height cells; blend c_b in
 //          [0, 1]; inverse_quantum 1/quantum (a power of two) or 0. Needs a current GlContext.
-// Outputs: see run(). Units: heights in the caller's units.
+// Outputs: see run().
+// Units:   heights in the caller's units; c_b dimensionless.
 // Throws:  std::runtime_error when the shader does not compile or link or lacks its uniforms.
 // Twin:    reference/erosion/blur_blend.hpp (the decisions).
 #pragma once

@@ -20,7 +20,10 @@
 //     the count of b → a is exactly minus that of a → b), so the ledger's identity in quanta holds.
 // Inputs:  heights Grid<Real> with its mask; blend c_b in [0, 1] (0 changes nothing); inverse_quantum
 //          1/quantum (a power of two); `algorithm` names the caller's mutants ("erosion.beyer").
+// Outputs: heights blended in place (blur_blend), or each open cell's quanta added to `delta`
+//          (blur_blend_quanta); no-data cells unchanged, and their delta 0.
 // Units:   heights in the caller's units; c_b dimensionless.
+// Throws:  nothing (BatchDelta::apply, the caller's, refuses a delta beyond int32).
 // Mutant:  <algorithm>.blur_renormalised_at_border (both twins): the box blur renormalised over the
 //          samples it finds, w = c_b/(1 + open neighbours): the border's exchanges lose their pairs and
 //          the volume drifts (ledger.closure).
