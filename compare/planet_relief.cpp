@@ -239,28 +239,35 @@ ColourScale elevation_scale(const std::vector<double>& elevation) {
 
 namespace {
 
+struct ElevationPicture {
+  std::string file;         // <file>.png beside the case
+  std::string caption;
+  std::string field;        // its EXR/NPY fields' name
+  std::string description;  // theirs
+};
+
+// A grid of elevations as a PNG in §4.3's palette with the planet's colour bar, and as EXR/NPY fields.
+void write_elevation_grid(const Grid<double>& grid, const std::vector<double>& elevation, const ElevationPicture& picture,
+                          const RunOptions& options, CaseResult& result) {
+  std::vector<std::array<float, 3>> pixels;
+  pixels.reserve(grid.values.size());
+  for (const double value : grid.values) pixels.push_back(elevation_colour(value));
+  write_colour_image(grid.width, grid.height, pixels, options.report_dir / result.name / (picture.file + ".png"));
+  add_picture(result, picture.file + ".png", picture.caption, elevation_scale(elevation));
+  write_field_files(grid, {picture.field, "elevation", "cpu", "1", picture.description}, options, result);
+}
+
 // The cube map: the six faces side by side in index order (front, right, back, left, north, south),
 // each R×R cells row-major from its top-left as the regions are numbered: region i is pixel
-// (face·R + x, y). EXR/NPY elevation and a PNG in the elevation palette.
-void write_cube_map(const RegionRelief& planet, const RunOptions& options, CaseResult& result) {
-  const int resolution = planet.sphere.resolution();
-  Grid<double> cube(cube_face_count * resolution, resolution);
-  std::vector<std::array<float, 3>> pixels(cube.values.size());
+// (face·R + x, y).
+Grid<double> cube_map(const RegionRelief& planet) {
+  const auto side = static_cast<std::size_t>(planet.sphere.resolution());
+  Grid<double> cube(cube_face_count * planet.sphere.resolution(), planet.sphere.resolution());
   for (std::size_t region = 0; region < planet.elevation.size(); ++region) {
-    const auto side = static_cast<std::size_t>(resolution);
     const std::size_t face = region / (side * side), y = region / side % side, x = region % side;
-    const std::size_t pixel = y * cube_face_count * side + face * side + x;
-    cube.values[pixel] = planet.elevation[region];
-    pixels[pixel] = elevation_colour(planet.elevation[region]);
+    cube.values[y * cube_face_count * side + face * side + x] = planet.elevation[region];
   }
-  write_colour_image(cube.width, cube.height, pixels, options.report_dir / result.name / "elevation_cube.png");
-  add_picture(result, "elevation_cube.png",
-              "cube map of the elevation: the faces front, right, back, left, north, south, a cell a pixel",
-              elevation_scale(planet.elevation));
-  write_field_files(cube,
-                    {"elevation_cube_cpu", "elevation", "cpu", "1",
-                     "elevation per region as a cube map: faces in index order side by side, each R×R row-major"},
-                    options, result);
+  return cube;
 }
 
 }  // namespace
@@ -268,25 +275,24 @@ void write_cube_map(const RegionRelief& planet, const RunOptions& options, CaseR
 void write_elevation_maps(const RegionRelief& planet, const std::vector<reference::NearestSite>& nearest,
                           const RunOptions& options, CaseResult& result) {
   if (options.report_dir.empty()) return;
-  const auto folder = options.report_dir / result.name;
-  std::filesystem::create_directories(folder);
-  std::vector<std::array<float, 3>> pixels;
-  Grid<double> elevation_map(planet_map_width, planet_map_height);
+  std::filesystem::create_directories(options.report_dir / result.name);
+  Grid<double> map(planet_map_width, planet_map_height);
   for (std::size_t pixel = 0; pixel < nearest.size(); ++pixel) {
-    const double elevation = planet.elevation[static_cast<std::size_t>(nearest[pixel].region)];
-    pixels.push_back(elevation_colour(elevation));
-    elevation_map.values[pixel] = elevation;
+    map.values[pixel] = planet.elevation[static_cast<std::size_t>(nearest[pixel].region)];
   }
-  write_colour_image(planet_map_width, planet_map_height, pixels, folder / "elevation.png");
-  add_picture(result, "elevation.png",
-              "elevation, ref<double>, equirectangular, each pixel its nearest centroid's region (§4.3 palette: blue "
-              "below sea level, brown above)",
-              elevation_scale(planet.elevation));
-  write_field_files(elevation_map,
-                    {"elevation_cpu", "elevation", "cpu", "1",
-                     "elevation (sea level 0) of the region under each pixel of an equirectangular map, ref<double>"},
-                    options, result);
-  write_cube_map(planet, options, result);
+  write_elevation_grid(map, planet.elevation,
+                       {"elevation",
+                        "elevation, ref<double>, equirectangular, each pixel its nearest centroid's region (§4.3 palette: "
+                        "blue below sea level, brown above)",
+                        "elevation_cpu",
+                        "elevation (sea level 0) of the region under each pixel of an equirectangular map, ref<double>"},
+                       options, result);
+  write_elevation_grid(cube_map(planet), planet.elevation,
+                       {"elevation_cube",
+                        "cube map of the elevation: the faces front, right, back, left, north, south, a cell a pixel",
+                        "elevation_cube_cpu",
+                        "elevation per region as a cube map: faces in index order side by side, each R×R row-major"},
+                       options, result);
 }
 
 }  // namespace gt
