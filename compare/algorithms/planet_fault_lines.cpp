@@ -30,6 +30,7 @@
 #include <fmt/format.h>
 
 #include "compare/algorithm.hpp"
+#include "compare/checks/error_model.hpp"
 #include "compare/checks/threshold.hpp"
 #include "compare/planet_relief.hpp"
 #include "compare/timing.hpp"
@@ -42,9 +43,6 @@
 
 namespace gt {
 namespace {
-
-constexpr double unit_roundoff_double = 0x1p-53;
-constexpr double unit_roundoff_float_ = 0x1p-24;
 
 std::vector<double> flat(const std::vector<std::array<double, 3>>& normals) {
   std::vector<double> values;
@@ -168,7 +166,7 @@ void run_fault_lines(const FaultPlanetParams& params, const std::optional<Refere
   time_cpu(std::max(options.cpu_reps, 1), [&] { truth = reference::fault_votes(positions, flat_normals); },
            result.timings);
   add_antipodal_check(sphere, positions, normals, truth, result);
-  const auto uncertain = uncertain_planes(positions, normals, unit_roundoff_float_);
+  const auto uncertain = uncertain_planes(positions, normals, unit_roundoff_float);
   const std::vector<float> float_positions = rounded(positions), float_normals = rounded(flat_normals);
   const auto single = reference::fault_votes(float_positions, float_normals);
   add_flip_check("parity.votes_beyond_flips.float_vs_double", single, truth, uncertain, result);

@@ -158,13 +158,14 @@ PhongCase prepared_case(const nlohmann::json& resolved, const LoadedInput& input
     if (look == reference::Look::terrain) scene.terrain = reference::terrain_look(*mesh, params.up);
     if (light_power > 0.0) scene.light_power = light_power;
   } else {
-    if (look != reference::Look::cave || !fixed) {
+    if (look == reference::Look::terrain || !fixed) {
       throw InputError("render.phong needs a mesh input ({\"mesh\": \"path.off\"}), generated = quad, or look = cave "
-                       "with camera = fixed "
-                       "to mesh a block of the seed's cave");
+                       "(or plain: seed 004 Fig. 3.8's first stage) with camera = fixed to mesh a block of the seed's "
+                       "cave");
     }
     const CaveParams block = cave_block(params);
     scene = reference::cave_scene(block, fixed_camera(params), {}, light_power > 0.0 ? light_power : 25.0);
+    scene.look = look;  // plain: the block in one diffuse hue
     description = fmt::format("the seed's cave, block of {}x{}x{} cells at ({}, {}, {})", block.size[0], block.size[1],
                               block.size[2], block.origin[0], block.origin[1], block.origin[2]);
   }
@@ -276,7 +277,7 @@ const ParamTable<PhongRenderParams>& phong_render_param_table() {
       nested(&P::terrain, real_param("rock_full_deg", &T::rock_full_deg, 0.0, 180.0, "degree",
                                      "terrain look: slope from which the surface is all rock")),
       choice_param("generated", &P::quad, generated_choices, "1",
-                   "without an input: cave (the seed's cave, look = cave and camera = fixed) or quad (the probe quad "
+                   "without an input: cave (the seed's cave, look = cave or plain and camera = fixed) or quad (the probe quad "
                    "of render_probe.hpp, whose plain look has closed-form colours)"),
       integer_param("block_origin_x", element(&P::block_origin, 0), -100000, 100000, "lattice",
                     "generated cave: block origin x"),
