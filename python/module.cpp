@@ -91,6 +91,7 @@ struct CaseCall {
   bool force = false;             // a sweep of more runs than compare/sweep.hpp's cap
   std::vector<std::string> a;     // an A/B comparison: A's name=value assignments, then B's
   std::vector<std::string> b;
+  std::vector<std::string> fields;  // the heightmap's input fields, name=file
 };
 
 // The command line refuses these in its option parser (--size, --cell-size): the same limits.
@@ -130,7 +131,8 @@ int run_case(const CaseCall& call) {
                                  .cell_size = call.cell_size.value_or(0.0),
                                  .cell_size_y = call.cell_size_y.value_or(0.0),
                                  .assignments = call.assignments,
-                                 .red_channel = call.red_channel};
+                                 .red_channel = call.red_channel,
+                                 .fields = call.fields};
   set_cases(call, base, options);
   options.backends = parse_backends(call.backend);
   options.gl = gt::parse_gl_backend(call.gl);
@@ -216,15 +218,16 @@ PYBIND11_MODULE(_core, module) {
          bool descriptors, std::optional<int> reps, const std::filesystem::path& out, const std::string& command_line,
          const py::object& external, const std::string& external_label, const std::filesystem::path& scratch,
          const std::vector<std::string>& vary, bool force, const std::vector<std::string>& a,
-         const std::vector<std::string>& b) {
+         const std::vector<std::string>& b, const std::vector<std::string>& fields) {
         return run_case({algorithm, input, width, height, cell_size, cell_size_y, assignments, red_channel, backend, gl, mutant,
                          require_gpu, quiet, pictures, descriptors, reps, out, command_line, external, external_label,
-                         scratch, vary, force, a, b});
+                         scratch, vary, force, a, b, fields});
       },
       py::arg("algorithm"), py::arg("input"), py::arg("width"), py::arg("height"), py::arg("cell_size"), py::arg("cell_size_y"),
       py::arg("assignments"), py::arg("red_channel"), py::arg("backend"), py::arg("gl"), py::arg("mutant"),
       py::arg("require_gpu"), py::arg("quiet"), py::arg("pictures"), py::arg("descriptors"), py::arg("reps"),
       py::arg("out"), py::arg("command_line"), py::arg("external") = py::none(), py::arg("external_label") = "",
       py::arg("scratch") = std::filesystem::path(), py::arg("vary") = std::vector<std::string>(),
-      py::arg("force") = false, py::arg("a") = std::vector<std::string>(), py::arg("b") = std::vector<std::string>());
+      py::arg("force") = false, py::arg("a") = std::vector<std::string>(), py::arg("b") = std::vector<std::string>(),
+      py::arg("fields") = std::vector<std::string>());
 }

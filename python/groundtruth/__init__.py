@@ -218,11 +218,11 @@ def _readable(array):
     return array.astype("<f8"), notes
 
 
-def _save_heights(heights, folder):
+def _save_heights(heights, folder, stem="heights"):
     """Writes an array as the .npy file the driver reads (C order); returns the path and the notes
     of what was converted."""
     array, notes = _readable(heights)
-    path = folder / "heights.npy"
+    path = folder / f"{stem}.npy"
     numpy.save(path, numpy.ascontiguousarray(array), allow_pickle=False)
     return path, notes
 
@@ -255,7 +255,8 @@ def _georeferenced(heights, cell_size):
 
 def _drive(algorithm, heights, read, *, _call, cell_size=None, backend="both", size=(256, 256), red_channel=False,
            mutant=None, require_gpu=False, gl="egl", out=None, quiet=True, pictures=True, descriptors=True, reps=None,
-           quick=False, _external=None, _external_label="", _vary=(), _force=False, _a=(), _b=(), **params):
+           quick=False, fields=None, _external=None, _external_label="", _vary=(), _force=False, _a=(), _b=(),
+           **params):
     """Runs the driver once (one case, a sweep's runs or an A/B pair) on `heights` into `out` or a
     temporary report folder, and returns read(report folder, Georeference, notes) before that
     folder is removed. `_call` is the Python call as the report's command line shows it; _vary,
@@ -279,19 +280,45 @@ def _drive(algorithm, heights, read, *, _call, cell_size=None, backend="both", s
             saved, conversions = _save_heights(heights, scratch)
             notes += conversions
             input_path = str(saved)
+        field_files, saved_fields = _field_files(fields, scratch, notes)
         report = pathlib.Path(out) if out is not None else scratch / "report"
         command = f"{_call}({algorithm!r}, backend={backend!r}{''.join(', ' + a for a in assignments)})"
         try:
             _core.run_case(algorithm, input_path, int(width), int(height), *_cell_sizes(cell_size), assignments,
                            bool(red_channel), backend, gl, mutant or "", bool(require_gpu), bool(quiet),
                            bool(pictures), bool(descriptors), None if reps is None else int(reps), report, command,
-                           _external, _external_label, scratch, list(_vary), bool(_force), list(_a), list(_b))
+                           _external, _external_label, scratch, list(_vary), bool(_force), list(_a), list(_b),
+                           field_files)
         except InputError as error:
             # The driver names the file it read; the caller gave an array. A Python call forces a
             # sweep with an argument, not an option.
             message = str(error).replace(str(saved), "heights") if saved else str(error)
+            for path, label in saved_fields.items():
+                message = message.replace(path, label)
             raise InputError(message.replace("pass --force", "pass force=True")) from None
         return read(report, georeference, notes)
+
+
+def _field_files(fields, folder, notes):
+    """The input fields ({name: array or path}) as the driver's name=file list, arrays saved to
+    `folder` as the heights are, and {saved file: what the caller called it} for messages."""
+    if fields is None:
+        return [], {}
+    if not isinstance(fields, dict):
+        raise InputError(f"fields {fields!r}: expected {{name: array or path}}, as a case file's \"fields\"")
+    files, saved = [], {}
+    for name, values in fields.items():
+        if not isinstance(name, str) or not name or "=" in name or "/" in name:
+            raise InputError(f"fields: {name!r} is not a field name (`groundtruth.parameters` lists the fields an "
+                             "algorithm reads)")
+        if isinstance(values, (str, os.PathLike)):
+            files.append(f"{name}={os.fspath(values)}")
+        else:
+            path, conversions = _save_heights(values, folder, f"field_{name}")
+            notes += [f"field {name}: {conversion}" for conversion in conversions]
+            files.append(f"{name}={path}")
+            saved[str(path)] = f"fields[{name!r}]"
+    return files, saved
 
 
 def run(algorithm, heights=None, **kwargs):
@@ -315,6 +342,8 @@ def run(algorithm, heights=None, **kwargs):
     descriptors=False computes no terrain descriptors (nor their checks), reps sets the timed
     repetitions of each twin (0: untimed, one run each; None: 3 CPU, 5 GPU), and quick=True is all
     three cheap (pictures=False, descriptors=False, reps=0) for a notebook loop or a property test.
+    fields: the heightmap's input fields, {name: array or path} of its size (erosion.thermal_jako's
+    hardness, erosion.layered's profile, vegetation and obstacle), as `--field` gives them.
     Every other keyword is a parameter of the algorithm (`parameters(algorithm)`).
     Bad input raises InputError with the command line's message.
     """

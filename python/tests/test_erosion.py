@@ -228,3 +228,28 @@ def test_quick_keeps_the_checks_and_fields_and_drops_pictures_descriptors_and_ti
     for check in quick.checks:
         assert check["value"] == full_values[check["name"]], check["name"]
     numpy.testing.assert_array_equal(quick.fields["terrain"]["cpu"], full.fields["terrain"]["cpu"])
+
+
+def test_input_fields_reach_the_algorithm_as_arrays_or_files(tmp_path):
+    """fields= gives the heightmap its input fields as a case file's "fields" and --field do: an
+    array (saved beside the heights) or a path; a field of another size or an unread one is refused
+    naming the caller's field, not a temporary file."""
+    heights = cone(16, peak=10.0)
+    hardness = numpy.zeros_like(heights)
+    hardness[:, 8:] = 1.5
+    from_array = groundtruth.run("erosion.thermal_jako", heights, backend="cpu", iterations=4, quick=True,
+                                 fields={"hardness": hardness})
+    assert any("hardness R from the input field 'hardness', 0 .. 1.5" in note for note in from_array.notes)
+    numpy.save(tmp_path / "hardness.npy", hardness)
+    from_file = groundtruth.run("erosion.thermal_jako", heights, backend="cpu", iterations=4, quick=True,
+                                fields={"hardness": tmp_path / "hardness.npy"})
+    numpy.testing.assert_array_equal(from_file.fields["terrain"]["cpu"], from_array.fields["terrain"]["cpu"])
+    uniform = groundtruth.run("erosion.thermal_jako", heights, backend="cpu", iterations=4, quick=True)
+    assert not numpy.array_equal(uniform.fields["terrain"]["cpu"], from_array.fields["terrain"]["cpu"])
+    with pytest.raises(groundtruth.InputError, match=r"fields\['hardness'\]|10x10"):
+        groundtruth.run("erosion.thermal_jako", heights, backend="cpu", quick=True,
+                        fields={"hardness": numpy.zeros((10, 10))})
+    with pytest.raises(groundtruth.InputError, match="reads no input field 'profile'"):
+        groundtruth.run("erosion.thermal_jako", heights, backend="cpu", quick=True, fields={"profile": hardness})
+    with pytest.raises(groundtruth.InputError, match="expected"):
+        groundtruth.run("erosion.thermal_jako", heights, backend="cpu", quick=True, fields=["hardness"])
