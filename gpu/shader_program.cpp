@@ -382,6 +382,12 @@ void GlProgram::use() const { glUseProgram(id_); }
 
 GLint GlProgram::uniform(const char* name) const { return glGetUniformLocation(id_, name); }
 
+GLint GlProgram::required_uniform(const char* name) const {
+  const GLint location = uniform(name);
+  if (location < 0) throw std::runtime_error(fmt::format("{}: no active uniform `{}`", description_, name));
+  return location;
+}
+
 void GlProgram::check_block(const char* block_name, std::size_t size, const BlockLayout& members) const {
   GLenum block_interface = GL_UNIFORM_BLOCK, member_interface = GL_UNIFORM;
   GLuint block = glGetProgramResourceIndex(id_, block_interface, block_name);

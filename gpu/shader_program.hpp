@@ -118,6 +118,9 @@ class GlProgram {
   void use() const;
   // glGetUniformLocation: -1 for a name that is not an active uniform.
   GLint uniform(const char* name) const;
+  // The same for a uniform the host must set: std::runtime_error naming the program when it is not
+  // active (a shader that lost it, or the compiler optimised it away).
+  GLint required_uniform(const char* name) const;
   // The shader files of the program as messages name them (with their defines), " + " between stages.
   const std::string& description() const { return description_; }
 

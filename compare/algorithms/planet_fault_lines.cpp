@@ -52,18 +52,23 @@ std::vector<double> flat(const std::vector<std::array<double, 3>>& normals) {
 
 std::vector<float> rounded(const std::vector<double>& values) { return {values.begin(), values.end()}; }
 
-// Per region, the planes whose exact dot lies within `unit_roundoff`'s dot error of 0 (so that a
-// Real dot's sign may differ from the double one's), from the double dots alone.
-std::vector<int> uncertain_planes(const std::vector<double>& positions, const std::vector<std::array<double, 3>>& normals,
-                                  double unit_roundoff) {
-  std::vector<int> counts(positions.size() / 3, 0);
-  for (std::size_t region = 0; region < counts.size(); ++region) {
+// Per region, the planes whose exact dot lies within a Real dot's error of 0 (so that its sign may
+// differ from the double one's), for Real = double and float, from one pass over the double dots.
+struct UncertainPlanes {
+  std::vector<int> in_double;
+  std::vector<int> in_float;
+};
+
+UncertainPlanes uncertain_planes(const std::vector<double>& positions, const std::vector<std::array<double, 3>>& normals) {
+  const std::size_t regions = positions.size() / 3;
+  UncertainPlanes counts{std::vector<int>(regions, 0), std::vector<int>(regions, 0)};
+  for (std::size_t region = 0; region < regions; ++region) {
     const double* p = &positions[3 * region];
     for (const auto& n : normals) {
-      const double dot = (n[0] * p[0] + n[1] * p[1]) + n[2] * p[2];
-      const double error = reference::dot_error_bound(n, p, unit_roundoff) +
-                           reference::dot_error_bound(n, p, unit_roundoff_double);
-      counts[region] += std::abs(dot) <= error ? 1 : 0;
+      const double dot = std::abs((n[0] * p[0] + n[1] * p[1]) + n[2] * p[2]);
+      const double double_error = reference::dot_error_bound(n, p, unit_roundoff_double);
+      counts.in_double[region] += dot <= 2.0 * double_error ? 1 : 0;
+      counts.in_float[region] += dot <= reference::dot_error_bound(n, p, unit_roundoff_float) + double_error ? 1 : 0;
     }
   }
   return counts;
@@ -82,10 +87,8 @@ std::vector<std::size_t> antipodes(const CubeSphere& sphere, const std::vector<d
 }
 
 void add_antipodal_check(const CubeSphere& sphere, const std::vector<double>& positions,
-                         const std::vector<std::array<double, 3>>& normals, const std::vector<std::int32_t>& votes,
-                         CaseResult& result) {
+                         const std::vector<std::int32_t>& votes, const std::vector<int>& uncertain, CaseResult& result) {
   const auto opposite = antipodes(sphere, positions);
-  const auto uncertain = uncertain_planes(positions, normals, unit_roundoff_double);
   std::size_t broken = 0;
   std::int64_t largest = 0;
   for (std::size_t region = 0; region < votes.size(); ++region) {
@@ -165,13 +168,13 @@ void run_fault_lines(const FaultPlanetParams& params, const std::optional<Refere
   std::vector<std::int32_t> truth;
   time_cpu(std::max(options.cpu_reps, 1), [&] { truth = reference::fault_votes(positions, flat_normals); },
            result.timings);
-  add_antipodal_check(sphere, positions, normals, truth, result);
-  const auto uncertain = uncertain_planes(positions, normals, unit_roundoff_float);
+  const UncertainPlanes uncertain = uncertain_planes(positions, normals);
+  add_antipodal_check(sphere, positions, truth, uncertain.in_double, result);
   const std::vector<float> float_positions = rounded(positions), float_normals = rounded(flat_normals);
   const auto single = reference::fault_votes(float_positions, float_normals);
-  add_flip_check("parity.votes_beyond_flips.float_vs_double", single, truth, uncertain, result);
+  add_flip_check("parity.votes_beyond_flips.float_vs_double", single, truth, uncertain.in_float, result);
   double pairs = 0.0;
-  for (const int count : uncertain) pairs += count;
+  for (const int count : uncertain.in_float) pairs += count;
   result.checks.push_back(informative_check(
       "votes.uncertain_planes.float", pairs,
       "(region, plane) pairs whose dot lies within the float dot's error of 0: where a float twin may vote otherwise"));
@@ -183,7 +186,7 @@ void run_fault_lines(const FaultPlanetParams& params, const std::optional<Refere
     for (const auto& name : gpu_checks) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
     return;
   }
-  add_gpu_checks(float_positions, float_normals, truth, single, uncertain, options, result);
+  add_gpu_checks(float_positions, float_normals, truth, single, uncertain.in_float, options, result);
 }
 
 PreparedTwin prepare_fault_lines(const nlohmann::json& resolved, const LoadedInput& input) {

@@ -21,10 +21,10 @@ ComputeProgram blend_program(bool batch) {
 
 void set_uniforms(const ComputeProgram& program, int width, int height, double blend, double inverse_quantum,
                   bool batch) {
-  glProgramUniform2i(program.id(), required_uniform(program, shader, "grid_size"), width, height);
-  glProgramUniform1f(program.id(), required_uniform(program, shader, "weight"), static_cast<float>(blend / 9.0));
+  glProgramUniform2i(program.id(), program.required_uniform("grid_size"), width, height);
+  glProgramUniform1f(program.id(), program.required_uniform("weight"), static_cast<float>(blend / 9.0));
   if (batch) {
-    glProgramUniform1f(program.id(), required_uniform(program, shader, "inverse_quantum"),
+    glProgramUniform1f(program.id(), program.required_uniform("inverse_quantum"),
                        static_cast<float>(inverse_quantum));
   }
   // Read only under the mutant blur_renormalised_at_border (location -1 otherwise: ignored).

@@ -66,10 +66,5 @@ Grid<float> load_heightfield(const Grid<float>& heights, int width, int height, 
   return layout;
 }
 
-GLint required_uniform(const ComputeProgram& program, const char* shader, const char* name) {
-  const GLint location = program.uniform(name);
-  if (location < 0) throw std::runtime_error(std::string(shader) + ": no active uniform `" + name + "`");
-  return location;
-}
 
 }  // namespace gt::gpu

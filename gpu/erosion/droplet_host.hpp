@@ -61,8 +61,5 @@ Grid<float> empty_layout(int width, int height);
 Grid<float> load_heightfield(const Grid<float>& heights, int width, int height, StorageBuffer& heights_buffer,
                              StorageBuffer& valid_buffer, const char* eroder);
 
-// The location of the active uniform `name` of `program` (the shader file `shader`), or
-// std::runtime_error when the shader has none.
-GLint required_uniform(const ComputeProgram& program, const char* shader, const char* name);
 
 }  // namespace gt::gpu

@@ -77,7 +77,7 @@ FlowMap::FlowMap(int width, int height, const FlowConstants& constants)
       layout_(empty_layout(width, height)),
       droplets_program_(flow_program("erosion/flow_map_droplets.comp", constants)),
       plug_program_(flow_program("erosion/flow_map_plug.comp", constants)),
-      offset_location_(required_uniform(droplets_program_, "flow_map_droplets.comp", "pass_offset")),
+      offset_location_(droplets_program_.required_uniform("pass_offset")),
       block_(UniformBuffer::from(make_block(constants, width, height))),
       heights_(cell_count(width, height) * sizeof(float)),
       valid_(cell_count(width, height) * sizeof(GLuint)),

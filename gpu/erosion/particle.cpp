@@ -142,7 +142,7 @@ ParticleErosion::ParticleErosion(int width, int height, const ParticleConstants&
       layout_(empty_layout(width, height)),
       droplets_program_(particle_program("erosion/particle_droplets.comp", constants, transport_colour)),
       apply_program_(apply_program(constants, transport_colour)),
-      offset_location_(required_uniform(droplets_program_, "particle_droplets.comp", "pass_offset")),
+      offset_location_(droplets_program_.required_uniform("pass_offset")),
       block_(UniformBuffer::from(make_block(constants, width, height))),
       heights_(cell_count(width, height) * sizeof(float)),
       valid_(cell_count(width, height) * sizeof(GLuint)),

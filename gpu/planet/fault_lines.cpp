@@ -12,12 +12,6 @@ constexpr int local_size = 64;
 
 enum Binding : GLuint { positions_binding = 1, normals_binding = 2, votes_binding = 3 };
 
-GLint uniform_of(const ComputeProgram& program, const char* name) {
-  const GLint location = program.uniform(name);
-  if (location < 0) throw std::runtime_error(std::string(shader) + ": no active uniform `" + name + "`");
-  return location;
-}
-
 void check_xyz(const std::vector<float>& values, const char* what) {
   if (values.empty() || values.size() % 3 != 0) {
     throw std::invalid_argument(std::string("FaultLines::votes: ") + what + " must be x, y, z per item, at least one");
@@ -28,8 +22,8 @@ void check_xyz(const std::vector<float>& values, const char* what) {
 
 FaultLines::FaultLines()
     : program_(ComputeProgram::load(shader)),
-      region_count_location_(uniform_of(program_, "region_count")),
-      fault_count_location_(uniform_of(program_, "fault_count")) {}
+      region_count_location_(program_.required_uniform("region_count")),
+      fault_count_location_(program_.required_uniform("fault_count")) {}
 
 std::vector<std::int32_t> FaultLines::votes(const std::vector<float>& positions, const std::vector<float>& normals) {
   check_xyz(positions, "positions");

@@ -6,15 +6,10 @@
 #include <cmath>
 
 #include "core/mutant.hpp"
+#include "reference/erosion/moore_pipes.hpp"
 
 namespace gt::reference {
 namespace {
-
-// Whether the sample (x, y) takes part in the blend: inside the grid and valid.
-template <class Real>
-bool open_sample(const Grid<Real>& heights, int x, int y) {
-  return heights.inside(x, y) && heights.is_valid(x, y);
-}
 
 // The weight of one exchange of the cell (x, y): Real(c_b/9); under the mutant the box blur
 // renormalised over the samples it finds, Real(c_b/(1 + open neighbours)).
@@ -22,18 +17,18 @@ template <class Real>
 Real exchange_weight(const Grid<Real>& heights, int x, int y, double blend, bool renormalised) {
   if (!renormalised) return static_cast<Real>(blend / 9.0);
   int open = 0;
-  for (const CellOffset offset : moore_offsets) open += open_sample(heights, x + offset.dx, y + offset.dy) ? 1 : 0;
+  for (int k = 0; k < 8; ++k) open += pipe_open(heights, x, y, k) ? 1 : 0;
   return static_cast<Real>(blend / (1.0 + open));
 }
 
-// Calls visit(exchange) with w·(h_b - h_a) for each open neighbour b of the open cell (x, y), in
-// the order of moore_offsets.
+// Calls visit(exchange) with w·(h_b - h_a) for each neighbour b of the valid cell (x, y) through
+// an open pipe (moore_pipes.hpp: inside the grid and valid), in pipe order.
 template <class Real, class Visit>
 void for_each_exchange(const Grid<Real>& heights, int x, int y, Real weight, Visit visit) {
   const Real own = heights.at(x, y);
-  for (const CellOffset offset : moore_offsets) {
-    if (!open_sample(heights, x + offset.dx, y + offset.dy)) continue;
-    const Real difference = heights.at(x + offset.dx, y + offset.dy) - own;
+  for (int k = 0; k < 8; ++k) {
+    if (!pipe_open(heights, x, y, k)) continue;
+    const Real difference = heights.at(x + moore_pipes[k].dx, y + moore_pipes[k].dy) - own;
     visit(weight * difference);
   }
 }
@@ -51,7 +46,7 @@ void blur_blend(Grid<Real>& heights, double blend, const std::string& algorithm)
   const Grid<Real> before = heights;
   for (int y = 0; y < heights.height; ++y) {
     for (int x = 0; x < heights.width; ++x) {
-      if (!open_sample(before, x, y)) continue;
+      if (!before.is_valid(x, y)) continue;
       Real received = 0;
       for_each_exchange(before, x, y, exchange_weight(before, x, y, blend, renormalised),
                         [&](Real exchange) { received = received + exchange; });
@@ -67,7 +62,7 @@ void blur_blend_quanta(const Grid<Real>& heights, double blend, Real inverse_qua
   const bool renormalised = renormalised_mutant(algorithm);
   for (int y = 0; y < heights.height; ++y) {
     for (int x = 0; x < heights.width; ++x) {
-      if (!open_sample(heights, x, y)) continue;
+      if (!heights.is_valid(x, y)) continue;
       long long received = 0;
       for_each_exchange(heights, x, y, exchange_weight(heights, x, y, blend, renormalised), [&](Real exchange) {
         const Real scaled = exchange * inverse_quantum;

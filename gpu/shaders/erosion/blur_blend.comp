@@ -35,8 +35,6 @@ layout(std430, binding = 4) writeonly buffer Blended { float blended[]; };
 
 #include "common/moore_pipes.glsl"
 
-bool open_sample(ivec2 cell) { return inside_grid(cell, grid_size) && valid[cell_index(cell, grid_size)] != 0u; }
-
 // c_b/9, or under the mutant c_b/(1 + open neighbours), each rounded once from double on the host.
 float exchange_weight(ivec2 cell) {
 #if defined(GT_MUTANT_EROSION_BEYER_BLUR_RENORMALISED_AT_BORDER)
