@@ -67,6 +67,7 @@ nlohmann::json field_json(const FieldDecl& field) {
           {"components", field.components},
           {"component_names", field.component_names},
           {"conserved", field.conserved},
+          {"read_only", field.read_only},
           {"standard_name", field.standard_name}};
 }
 

@@ -110,7 +110,7 @@ const Algorithm& find_algorithm(const std::string& name);
 // "source", "input" (heightmap, mesh, optional_volume, optional_global_grid or none), "kind"
 // (generated, stepped or custom), "params": [core/params.hpp to_json]}, and for a stepped one
 // "state": its declared fields at the default parameters ({"name", "unit", "meaning", "extent",
-// "components", "component_names", "conserved", "standard_name"}: compare/stepper.hpp).
+// "components", "component_names", "conserved", "read_only", "standard_name"}: compare/stepper.hpp).
 nlohmann::json algorithm_json(const Algorithm& algorithm);
 
 // Throws InputError naming the first of input.fields that `algorithm` does not read (its

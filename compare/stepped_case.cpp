@@ -310,8 +310,22 @@ struct GpuRun {
 
 // The bounds of a shadow step for the candidate's precision: the models are linear in the unit
 // roundoff, so a double candidate's are the float model's scaled by u_double/u_float.
+// A read-only field is bounded at 0 here: a model hands it back as loaded.
 std::vector<ShadowBound> candidate_bounds(const SteppedTwin& twin, const Candidate& candidate, const State& from, int count) {
-  std::vector<ShadowBound> bounds = twin.shadow_bounds(from, count);
+  std::vector<ShadowBound> modelled = twin.shadow_bounds(from, count);
+  const auto changing = std::count_if(twin.fields.begin(), twin.fields.end(), [](const FieldDecl& field) {
+    return !field.read_only;
+  });
+  if (modelled.size() != std::size_t(changing)) {
+    throw std::logic_error(fmt::format("{}: {} shadow bounds for {} declared fields that are not read-only",
+                                       twin.algorithm, modelled.size(), changing));
+  }
+  std::vector<ShadowBound> bounds;
+  auto next = modelled.begin();
+  for (const FieldDecl& field : twin.fields) {
+    bounds.push_back(field.read_only ? ShadowBound{.model = "an input the model reads and hands back as loaded"}
+                                     : std::move(*next++));
+  }
   if (!candidate.double_precision) return bounds;
   constexpr double double_over_float = 0x1p-53 / 0x1p-24;
   for (ShadowBound& bound : bounds) {
@@ -336,10 +350,6 @@ void shadow_steps(const SteppedTwin& twin, const Candidate& candidate, const Bac
     const State expected = reference->get_state();
     const State got = gpu.get_state();
     std::vector<ShadowBound> bounds = candidate_bounds(twin, candidate, from, count);
-    if (bounds.size() != twin.fields.size()) {
-      throw std::logic_error(fmt::format("{}: {} shadow bounds for {} declared fields", twin.algorithm, bounds.size(),
-                                         twin.fields.size()));
-    }
     for (std::size_t f = 0; f < twin.fields.size(); ++f) {
       keep_worst(worst[f], twin, f, expected, got, std::move(bounds[f]), start, count);
     }
@@ -531,13 +541,46 @@ void add_divergence(const SteppedTwin& twin, const Candidate& candidate, const B
               result);
 }
 
+// A read-only field handed back as loaded: the largest change of a valid value (a NaN where the
+// loaded value was a number counts as infinite), bound 0; the detail counts the values changed.
+Check read_only_unchanged(const FieldDecl& field, std::size_t index, const LedgerRun& run) {
+  const std::vector<double>& loaded = run.initial.fields.at(index);
+  const std::vector<double>& handed_back = run.final.fields.at(index);
+  double largest = 0.0;
+  std::size_t changed = 0;
+  for (std::size_t value = 0; value < loaded.size(); ++value) {
+    if (!run.initial.grid.is_valid(value / std::size_t(field.components))) continue;
+    const bool same = loaded[value] == handed_back[value] || (std::isnan(loaded[value]) && std::isnan(handed_back[value]));
+    if (same) continue;
+    ++changed;
+    const double change = std::abs(handed_back[value] - loaded[value]);
+    largest = std::max(largest, std::isnan(change) ? std::numeric_limits<double>::infinity() : change);
+  }
+  return bounded_check("", largest, 0.0, std::nullopt,
+                       fmt::format("largest change of the read-only input {} ({}), {} of {} values changed: a model "
+                                   "reads it and hands it back as loaded",
+                                   field.name, field.unit, changed, loaded.size()));
+}
+
+// The twin's ledger terms and, for each read-only field, state.<field>.unchanged.
+std::vector<LedgerTerm> ledger_terms(const SteppedTwin& twin) {
+  std::vector<LedgerTerm> terms = twin.ledger;
+  for (std::size_t f = 0; f < twin.fields.size(); ++f) {
+    if (!twin.fields[f].read_only) continue;
+    terms.push_back({fmt::format("state.{}.unchanged", twin.fields[f].name),
+                     [field = twin.fields[f], f](const LedgerRun& run) { return read_only_unchanged(field, f, run); },
+                     /*reads_records=*/false});
+  }
+  return terms;
+}
+
 // `booked`: the references' records, where the algorithm books some beside its state; a run
 // without records of its own (an outside model hands over its state alone) cannot be read by terms
 // that need them, and they are not applicable there.
 void add_ledger_checks(const SteppedTwin& twin, const BackendRun& run, const std::string& backend, CaseResult& result,
                        const std::vector<LedgerRecord>& booked = {}) {
-  for (const LedgerTerm& term : twin.ledger) {
-    if (run.ledger.empty() && !booked.empty()) {
+  for (const LedgerTerm& term : ledger_terms(twin)) {
+    if (run.ledger.empty() && !booked.empty() && term.reads_records) {
       result.checks.push_back(not_applicable_check(
           term.check + "." + backend,
           fmt::format("{} reads the records the model books beside its state, which {} does not give", term.check,
@@ -686,7 +729,7 @@ std::vector<int> shadow_starts(int iterations, int checkpoints) {
 
 std::vector<std::string> gpu_check_names(const SteppedTwin& twin, const nlohmann::json& expect) {
   std::vector<std::string> names = {"determinism.gpu"};
-  for (const LedgerTerm& term : twin.ledger) names.push_back(term.check + ".gpu");
+  for (const LedgerTerm& term : ledger_terms(twin)) names.push_back(term.check + ".gpu");
   for (const FieldDecl& field : twin.fields) {
     names.push_back(fmt::format("parity.shadow.{}.gpu_vs_float", field.name));
     names.push_back(fmt::format("parity.shadow.{}.multi.gpu_vs_float", field.name));

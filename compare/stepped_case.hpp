@@ -79,6 +79,9 @@ struct LedgerRun {
 struct LedgerTerm {
   std::string check;  // e.g. mass.relative_drift
   std::function<Check(const LedgerRun& run)> evaluate;
+  // Whether it reads the records (else the states alone): a backend that books none (an outside
+  // model) has such a term as not applicable where the references book some.
+  bool reads_records = true;
 };
 
 // One backend's end of run, for the algorithm's own checks and pictures.
@@ -115,7 +118,8 @@ struct SteppedTwin {
   // truth, and parity.descriptors.gpu_vs_double would grade that); empty: it is, and that check grades
   // it. Where it is set the descriptors show the references alone, and a note says why.
   std::string gpu_not_described;
-  // The bounds after `count` iterations from `from` (ref<float>'s state), one per declared field.
+  // The bounds after `count` iterations from `from` (ref<float>'s state), one per declared field
+  // that is not read-only, in order (the runner bounds a read-only field at 0).
   std::function<std::vector<ShadowBound>(const State& from, int count)> shadow_bounds;
   std::vector<LedgerTerm> ledger;
   // Optional: the algorithm's own checks and pictures of the backends' ends (ends[0] ref<double>,

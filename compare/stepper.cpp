@@ -64,6 +64,7 @@ void check_state_decl(const StateDecl& decl, const std::string& algorithm) {
     if (!seen.insert(field.name).second) throw where("declared twice");
     if (field.unit.empty()) throw where("no unit (dimensionless is \"1\")");
     if (field.meaning.empty()) throw where("no meaning");
+    if (field.read_only && field.conserved) throw where("read-only and conserved: the model never changes it");
     if (field.extent == Extent::cell ? field.components != 1 : field.components < 1) {
       throw where(fmt::format("{} components for extent {}", field.components, extent_name(field.extent)));
     }

@@ -12,6 +12,8 @@
 //     ref<float>'s state loads into a float GPU twin without a rounding (the shadow steps need
 //     both to start from the same bits).
 //   - Invalid (no-data) cells are part of the arrays; their values are unspecified and never compared.
+//   - A read-only field (FieldDecl::read_only) is an input of the model: a stepper reads it on each
+//     set_state and hands it back as loaded.
 //   - A stepper counts its iterations: set_state(state, done) says how many lie behind `state`,
 //     and update(n) runs the next n, numbered from there (an alternating method reads the number).
 // Landlab's components and CSDMS's Basic Model Interface are the models: fields declared once with
@@ -41,6 +43,10 @@ struct FieldDecl {
   Extent extent = Extent::cell;
   int components = 1;         // values a cell: 1 for Extent::cell
   bool conserved = false;     // whether the model conserves its total (alone or in a ledger)
+  // An input the model reads and hands back unchanged (Jákó's hardness map): it travels with the
+  // state so that an outside implementation receives it as it receives the terrain, and the runner
+  // holds every backend to returning it bit for bit (state.<name>.unchanged.<backend>).
+  bool read_only = false;
   std::string standard_name;  // CSDMS standard name where one exists (topographic__elevation)
   // Names of the components (pipe L, R, ...; layer 0, 1, ...), used in file names; empty: 0, 1, ...
   std::vector<std::string> component_names = {};

@@ -4,8 +4,14 @@
 // iteration counts; and two runs give the same bits.
 #include <gtest/gtest.h>
 
+#include "compare/algorithm.hpp"
 #include "compare/checks/error_model.hpp"
 #include "compare/checks/field.hpp"
+#include "compare/inputs.hpp"
+#include "compare/stepped_case.hpp"
+#include "compare/steppers/height.hpp"
+#include "core/errors.hpp"
+#include "core/params.hpp"
 #include "core/params/thermal.hpp"
 #include "core/rng.hpp"
 #include "gpu/erosion/thermal.hpp"
@@ -107,6 +113,64 @@ TEST_F(ThermalJakoGpu, FollowsTheReferenceUnderAHardnessMap) {
   const auto uniform = gt::reference::thermal_jako_erosion(field, gt::thermal_jako_constants(params, field.cast<double>()),
                                                            iterations);
   EXPECT_GT(gt::field_difference(reference, uniform).max_abs, 0.1f) << "the hardness map should change the result";
+}
+
+TEST_F(ThermalJakoGpu, SetHardnessReplacesTheMap) {
+  const auto field = masked_terrain();
+  gt::ThermalJakoParams params;
+  params.talus_angle_deg = 20.0;
+  params.hardness_talus = 0.4;
+  const auto uniform = gt::thermal_jako_constants(params, field.cast<double>());
+  auto mapped = uniform;
+  mapped.hardness.resize(field.size());
+  for (std::size_t c = 0; c < field.size(); ++c) mapped.hardness[c] = 0.25 * double((c * 3) % 7);
+  const int iterations = 12;
+  gt::gpu::ThermalJakoErosion gpu(field.width, field.height, uniform, iterations);
+  gpu.set_hardness(mapped.hardness);
+  gpu.load(field);
+  gpu.run();
+  const auto reference = gt::reference::thermal_jako_erosion(field, mapped, iterations);
+  EXPECT_EQ(gt::field_difference(reference, gpu.result()).differing_bits, 0u);
+  EXPECT_GT(gt::field_difference(reference, gt::reference::thermal_jako_erosion(field, uniform, iterations)).max_abs,
+            0.1f)
+      << "the map should change the result";
+}
+
+// The harness's steppers (and so an outside caller of the references through the BMI) take R from
+// the state they load, not from the case they were prepared for: loaded with another map, ref<float>
+// and the GPU give that map's terrain, bit for bit alike; a map outside eq. 2.32's range is refused.
+TEST_F(ThermalJakoGpu, TheSteppersReadTheHardnessTheStateLoads) {
+  const gt::Algorithm& algorithm = gt::find_algorithm("erosion.thermal_jako");
+  gt::LoadedInput input;
+  input.heights = masked_terrain().cast<double>();
+  const nlohmann::json params = {{"iterations", 8}, {"talus_angle", 20.0}, {"hardness_talus", 0.4}, {"rate", 0.5}};
+  const auto prepared = algorithm.prepare(gt::resolve_params(algorithm.name, *algorithm.params, params), input);
+  const auto& twin = std::get<gt::SteppedTwin>(prepared.kind);
+  ASSERT_EQ(twin.fields.size(), 2u);
+  ASSERT_EQ(twin.fields[1].name, "hardness");
+  gt::State loaded = twin.initial;
+  for (std::size_t c = 0; c < loaded.fields[1].size(); ++c) loaded.fields[1][c] = 0.5 * double((c * 3) % 5);
+  gt::ThermalJakoParams jako;
+  jako.talus_angle_deg = 20.0;
+  jako.hardness_talus = 0.4;
+  jako.rate = 0.5;
+  auto constants = gt::thermal_jako_constants(jako, input.heights);
+  constants.hardness = loaded.fields[1];
+  for (std::size_t c = 0; c < constants.hardness.size(); ++c) {
+    if (!input.heights.is_valid(c)) constants.hardness[c] = 1.0;  // no-data cells: R = 1
+  }
+  const auto expected = gt::reference::thermal_jako_erosion(masked_terrain(), constants, 8);
+  for (const auto& make : {twin.reference_float, twin.make_gpu}) {
+    auto stepper = make();
+    stepper->set_state(loaded, 0);
+    stepper->update(8);
+    const gt::State after = stepper->get_state();
+    EXPECT_EQ(after.fields[1], loaded.fields[1]) << "R handed back as loaded";
+    EXPECT_EQ(gt::field_difference(gt::heights_of<float>(after), expected).differing_bits, 0u);
+    gt::State negative = loaded;
+    negative.fields[1][input.heights.index(10, 10)] = -0.5;
+    EXPECT_THROW(stepper->set_state(negative, 0), gt::InputError);
+  }
 }
 
 class ThermalGpuSpec : public gt::testing::GlTest {};

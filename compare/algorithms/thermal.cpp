@@ -22,6 +22,7 @@
 #include "compare/checks/threshold.hpp"
 #include "compare/steppers/height.hpp"
 #include "core/errors.hpp"
+#include "core/mutant.hpp"
 #include "core/params/thermal.hpp"
 #include "gpu/erosion/thermal.hpp"
 #include "gpu/erosion/thermal_jako.hpp"
@@ -260,26 +261,43 @@ PreparedTwin prepare_thermal(const nlohmann::json& resolved, const Heightmap& gi
   return {.kind = std::move(twin), .extra_checks = in_turn(moved, add_talus_spec)};
 }
 
-// The "hardness" input field as R per cell (each finite, >= 0, and rate·R <= 1: a cell moves at
-// most half its largest drop), and what was decided, said.
+// The "hardness" input field as the state's R per cell (1 everywhere without one), and what was
+// decided, said.
 std::vector<double> hardness_map(const LoadedInput& loaded, double rate, std::vector<std::string>& notes) {
+  const Heightmap& input = loaded.heights;
   const auto field = loaded.fields.find("hardness");
   if (field == loaded.fields.end()) {
     notes.push_back("no hardness field: R = 1 in every cell (eq. 2.32's rate and eq. 2.33's talus C_a + C_i)");
-    return {};
+    return std::vector<double>(input.size(), 1.0);
   }
-  const auto& values = field->second.values;
-  for (std::size_t c = 0; c < values.size(); ++c) {
-    if (!(values[c] >= 0.0) || rate * values[c] > 1.0) {
-      throw InputError(fmt::format("erosion.thermal_jako: the hardness field holds {} at cell ({}, {}); R must be >= 0 "
-                                   "and rate·R at most 1 (rate = {}: a cell moves rate·R of half its largest drop)",
-                                   values[c], c % std::size_t(field->second.width), c / std::size_t(field->second.width),
-                                   rate));
-    }
-  }
-  const auto [least, most] = std::minmax_element(values.begin(), values.end());
+  std::vector<double> hardness = jako_hardness(field->second.values, input.valid, input.width, rate, "erosion.thermal_jako");
+  const auto [least, most] = std::minmax_element(hardness.begin(), hardness.end());
   notes.push_back(fmt::format("hardness R from the input field 'hardness', {:.6g} .. {:.6g}", *least, *most));
-  return values;
+  return hardness;
+}
+
+// The state's second field: R, read by both twins on every load and handed back unchanged.
+FieldDecl hardness_field() {
+  return {.name = "hardness",
+          .unit = "1",
+          .meaning = "R(x, y) of eqs. 2.32-2.33, an input: the cell's rate × R, the talus toward it C_a·R + C_i",
+          .read_only = true};
+}
+
+// The R a state loads, checked (an outside caller may load any map).
+std::vector<double> loaded_hardness(const State& loaded, double rate) {
+  return jako_hardness(loaded.fields.at(1), loaded.grid.valid, loaded.grid.width, rate,
+                       "erosion.thermal_jako's loaded hardness");
+}
+
+template <class Real>
+std::unique_ptr<Stepper> jako_reference_stepper(const ThermalConstants& prepared, double rate) {
+  auto constants = std::make_shared<ThermalConstants>(prepared);
+  return std::make_unique<HeightStepper<Real>>(
+      [constants](const Grid<Real>& heights, int, int count) {
+        return reference::thermal_jako_erosion(heights, *constants, count);
+      },
+      [constants, rate](State& loaded) { constants->hardness = loaded_hardness(loaded, rate); });
 }
 
 PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const LoadedInput& loaded) {
@@ -291,21 +309,23 @@ PreparedTwin prepare_thermal_jako(const nlohmann::json& resolved, const LoadedIn
   constants.hardness = hardness_map(loaded, params.rate, notes);
   constexpr double additions_per_iteration = 16.0;  // 8 outflows subtracted, 8 inflows added
   SteppedTwin twin = thermal_twin("erosion.thermal_jako", input, params.iterations, additions_per_iteration);
-  twin.reference_double = [=] {
-    return std::make_unique<HeightStepper<double>>([=](const Grid<double>& heights, int, int count) {
-      return reference::thermal_jako_erosion(heights, constants, count);
-    });
-  };
-  twin.reference_float = [=] {
-    return std::make_unique<HeightStepper<float>>([=](const Grid<float>& heights, int, int count) {
-      return reference::thermal_jako_erosion(heights, constants, count);
-    });
-  };
+  twin.fields.push_back(hardness_field());
+  twin.initial.fields.push_back(constants.hardness);
+  twin.reference_double = [=] { return jako_reference_stepper<double>(constants, params.rate); };
+  twin.reference_float = [=] { return jako_reference_stepper<float>(constants, params.rate); };
   twin.make_gpu = [=, width = input.width, height = input.height]() -> std::unique_ptr<Stepper> {
     auto gpu = std::make_shared<gpu::ThermalJakoErosion>(width, height, constants, params.iterations);
+    const ReadInputs set_hardness = [gpu, rate = params.rate](State& loaded) {
+      // Mutant erosion.thermal_jako.gpu_rate_folded_into_hardness (GPU): the adapter folds the rate
+      // into the map it holds (R <- rate·R), which it then steps with and hands back.
+      if (mutant_active("erosion.thermal_jako.gpu_rate_folded_into_hardness")) {
+        for (double& hardness : loaded.fields.at(1)) hardness *= rate;
+      }
+      gpu->set_hardness(loaded_hardness(loaded, rate));
+    };
     return std::make_unique<GpuHeightStepper>([gpu](const Grid<float>& heights) { gpu->load(heights); },
                                               [gpu](int, int count) { gpu->step(count); },
-                                              [gpu] { return gpu->result(); });
+                                              [gpu] { return gpu->result(); }, set_hardness);
   };
   const CaseRun moved = moved_ledger(
       input, params.iterations, additions_per_iteration,
@@ -378,9 +398,10 @@ Algorithm thermal_jako_algorithm() {
           .expect_shape = field_spec_shape(),
           // Measured 438 B a cell (1024² vs 256², 64 iterations, both backends, 8 shadow checkpoints),
           // before the per-cell constants: 9 doubles on the host, rounded copies in the float and
-          // interval runs (9 floats, 9 pairs of doubles) and on the GPU (9 floats): 288 B more.
+          // interval runs (9 floats, 9 pairs of doubles) and on the GPU (9 floats): 288 B more; R in
+          // the state (a double in each of about 20 states the runner keeps or steps): 160 B more.
           .memory = [](const nlohmann::json&, const LoadedInput& input) {
-            return memory_for(static_cast<double>(input.heights.size()), "cells", 800 + descriptor_bytes_per_cell);
+            return memory_for(static_cast<double>(input.heights.size()), "cells", 950 + descriptor_bytes_per_cell);
           }};
 }
 

@@ -16,7 +16,9 @@
 // probe cone and on the volcano, which is not symmetric) and spec.talus_eq_4_10 (eq. 4.10's
 // threshold, which both twins read from core/params/thermal.cpp). The hardness map's two
 // (hardness_of_the_cell, both twins; gpu_limit_of_opposite_pipe, the GPU alone) run on the probe
-// cone and on the volcano, each with a banded hardness field.
+// cone and on the volcano, each with a banded hardness field; so does gpu_rate_folded_into_hardness,
+// a GPU adapter that changes the read-only input it was handed (killed by
+// state.hardness.unchanged.gpu, the runner's check of a read-only field, and by the shadow step).
 #include "compare/mutants/mutants.hpp"
 
 namespace gt {
@@ -83,6 +85,10 @@ std::vector<Mutant> thermal_mutants() {
       {"erosion.thermal_jako.gpu_limit_of_opposite_pipe", MutantKind::one_twin,
        "thermal_jako_outflow.comp compares each drop with the threshold of the pipe pointing the other way: the same "
        "length, another neighbour's hardness",
+       hardness},
+      {"erosion.thermal_jako.gpu_rate_folded_into_hardness", MutantKind::one_twin,
+       "the GPU stepper folds the rate into the hardness map it was loaded with (R <- rate·R in its copy), then steps "
+       "with that map and hands it back",
        hardness},
   };
 }

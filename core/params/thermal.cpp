@@ -6,6 +6,9 @@
 #include <limits>
 #include <numbers>
 
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
 #include "core/mutant.hpp"
 
 namespace gt {
@@ -142,6 +145,21 @@ std::vector<std::array<double, 9>> jako_cell_constants(const ThermalConstants& c
     }
   }
   return cells;
+}
+
+std::vector<double> jako_hardness(const std::vector<double>& map, const std::vector<std::uint8_t>& valid, int width,
+                                  double rate, const std::string& who) {
+  std::vector<double> hardness = map;
+  for (std::size_t c = 0; c < hardness.size(); ++c) {
+    if (!valid.empty() && valid[c] == 0) {
+      hardness[c] = 1.0;
+    } else if (!std::isfinite(hardness[c]) || hardness[c] < 0.0 || rate * hardness[c] > 1.0) {
+      throw InputError(fmt::format("{}: the hardness field holds {} at cell ({}, {}); R must be finite, >= 0 and "
+                                   "rate·R at most 1 (rate = {}: a cell moves rate·R of half its largest drop)",
+                                   who, hardness[c], c % std::size_t(width), c / std::size_t(width), rate));
+    }
+  }
+  return hardness;
 }
 
 Heightmap normalise_heights(const Heightmap& heights) {

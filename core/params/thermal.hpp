@@ -17,6 +17,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/grid.hpp"
@@ -74,6 +76,13 @@ struct ThermalConstants {
 // 2.32. Both twins take their thresholds from here, so the mutants of Jákó's parameters
 // (talus_degree_off, hardness_of_the_cell) live here too.
 std::vector<std::array<double, 9>> jako_cell_constants(const ThermalConstants& constants, int width, int height);
+
+// Jákó's R per cell from a hardness map on a grid of `valid` cells (empty: all valid): the map's
+// values where valid, each checked (finite, >= 0 and rate·R <= 1: a cell moves at most half its largest
+// drop), and R = 1 at no-data cells, whose values are unspecified (an outside model hands NaN).
+// Throws InputError naming the first cell that fails, and `who`.
+std::vector<double> jako_hardness(const std::vector<double>& map, const std::vector<std::uint8_t>& valid, int width,
+                                  double rate, const std::string& who);
 
 // T_α = tan(π/180·α) / (width·d_z), eq. 4.10 of seed 000 taken literally. The digest shows it is a
 // factor 2 steeper than the geometry implies (effective angle atan(tan α / 2)); kept for parity.

@@ -41,28 +41,37 @@ UniformBuffer block_buffer(int width, int height) {
 }
 
 // Every cell's thresholds and rate, each rounded once from double, as the reference rounds them.
-StorageBuffer cell_constants_buffer(const ThermalConstants& constants, int width, int height) {
+std::vector<float> rounded_cell_constants(const ThermalConstants& constants, int width, int height) {
   const auto exact = jako_cell_constants(constants, width, height);
   std::vector<float> rounded;
   rounded.reserve(exact.size() * floats_per_cell);
   for (const auto& cell : exact) {
     for (const double value : cell) rounded.push_back(static_cast<float>(value));
   }
-  StorageBuffer buffer(rounded.size() * sizeof(float));
-  buffer.upload(rounded.data(), rounded.size() * sizeof(float));
-  return buffer;
+  return rounded;
 }
 
 }  // namespace
 
 ThermalJakoErosion::ThermalJakoErosion(int width, int height, const ThermalConstants& constants, int iterations)
-    : iterations_(iterations),
+    : width_(width),
+      height_(height),
+      iterations_(iterations),
       outflow_program_(thermal_jako_program("erosion/thermal_jako_outflow.comp")),
       gather_program_(thermal_jako_program("erosion/thermal_jako_gather.comp")),
       block_(block_buffer(width, height)),
-      cell_constants_(cell_constants_buffer(constants, width, height)),
+      constants_(constants),
+      cell_constants_(static_cast<std::size_t>(width) * height * floats_per_cell * sizeof(float)),
       outflows_(static_cast<std::size_t>(width) * height * 8 * sizeof(float)),
-      heights_(width, height) {}
+      heights_(width, height) {
+  set_hardness(constants.hardness);
+}
+
+void ThermalJakoErosion::set_hardness(const std::vector<double>& hardness) {
+  constants_.hardness = hardness;
+  const std::vector<float> rounded = rounded_cell_constants(constants_, width_, height_);
+  cell_constants_.upload(rounded.data(), rounded.size() * sizeof(float));
+}
 
 void ThermalJakoErosion::load(const Grid<float>& heights) { heights_.load(heights); }
 

@@ -2,7 +2,8 @@
 //
 // ThermalJakoErosion(width, height, constants, iterations) compiles
 //   gpu/shaders/erosion/thermal_jako_outflow.comp and thermal_jako_gather.comp.
-// load(heights) uploads; run() dispatches all iterations (not synchronised); step(count) `count` of
+// set_hardness(R) replaces the hardness map (one R a cell, row-major; empty: R = 1) and uploads the
+//   cells' constants again; load(heights) uploads; run() dispatches all iterations (not synchronised); step(count) `count` of
 //   them from the current state (run() is step(iterations)); result() downloads.
 //
 // Inputs:  width, height, constants (thermal_jako_constants()), iterations; heights: Grid<float> of
@@ -15,6 +16,8 @@
 // Twin:    reference/erosion/thermal_jako.hpp.
 #pragma once
 
+#include <vector>
+
 #include "core/grid.hpp"
 #include "core/params/thermal.hpp"
 #include "gpu/buffer.hpp"
@@ -26,16 +29,20 @@ namespace gt::gpu {
 class ThermalJakoErosion {
  public:
   ThermalJakoErosion(int width, int height, const ThermalConstants& constants, int iterations);
+  void set_hardness(const std::vector<double>& hardness);
   void load(const Grid<float>& heights);
   void run();
   void step(int count);
   Grid<float> result() const;
 
  private:
+  int width_;
+  int height_;
   int iterations_;
   ComputeProgram outflow_program_;
   ComputeProgram gather_program_;
   UniformBuffer block_;
+  ThermalConstants constants_;
   StorageBuffer cell_constants_;
   StorageBuffer outflows_;
   HeightfieldBuffers heights_;

@@ -8,6 +8,7 @@ import subprocess
 import sys
 import tempfile
 
+import numpy
 import pytest
 
 import groundtruth
@@ -121,6 +122,25 @@ def test_the_reference_behind_the_bmi_passes_its_own_round_trip(precision, versu
         assert seen[f"parity.shadow.{field}.external_vs_{versus}"] == "pass", field
     # The BMI hands over the state alone: ledger terms that read the model's own records do not apply.
     assert seen["determinism.external"] == "pass"
+
+
+def test_the_jako_reference_behind_the_bmi_steps_the_hardness_map_it_is_handed():
+    """Jákó's hardness map is a read-only field of the state: the harness hands it to an outside
+    model with the terrain, so the reference behind the BMI, checked with a banded map, steps that
+    map (bit for bit against ref<double>, whose terrain the map changes) and hands it back as set."""
+    bands = numpy.repeat([[0.0, 0.5, 1.0, 1.5]], 61, axis=0).repeat(22, axis=1)[:, :87]
+    params = dict(iterations=12, talus_angle=20, hardness_talus=0.3, rate=0.5, quick=True)
+    reference = groundtruth.bmi.Reference("erosion.thermal_jako")
+    result = groundtruth.check(reference, "erosion.thermal_jako", VOLCANO, fields={"hardness": bands}, **params)
+    assert result.status == "pass", result.failed() or result.error
+    seen = statuses(result)
+    for name in ("parity.shadow.terrain.external_vs_double", "parity.shadow.hardness.external_vs_double",
+                 "state.hardness.unchanged.external", "state.hardness.unchanged.cpu"):
+        assert seen[name] == "pass", name
+    numpy.testing.assert_array_equal(result.fields["hardness"]["external"], bands)
+    uniform = groundtruth.run("erosion.thermal_jako", VOLCANO, backend="cpu", **params)
+    assert numpy.abs(uniform.fields["terrain"]["cpu"] - result.fields["terrain"]["cpu"]).max() > 0.1, \
+        "the map should change the terrain, or the parity above would not show that the model read it"
 
 
 def test_the_readme_examples_run_as_written():
