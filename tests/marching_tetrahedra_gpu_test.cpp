@@ -27,8 +27,10 @@
 #include "gpu/buffer.hpp"
 #include "gpu/cave/exclusive_scan.hpp"
 #include "gpu/cave/marching_tetrahedra.hpp"
+#include "gpu/cave/normals.hpp"
 #include "reference/cave/density.hpp"
 #include "reference/cave/marching_tetrahedra.hpp"
+#include "reference/cave/normals.hpp"
 #include "tests/support/gl_test.hpp"
 
 namespace {
@@ -123,6 +125,19 @@ TEST_P(GpuMarchingTetrahedra, GivesTheFloatReferenceMeshBitForBit) {
   const FloatMesh expected = reference_mesh(params);
   ASSERT_GT(expected.triangles.size(), 100u) << "a nearly empty block proves little";
   EXPECT_TRUE(same_mesh(expected, gpu_mesh(params)));
+}
+
+// The seed's central-difference normals (gpu/cave/normals.hpp) at the mesh's vertices: the same
+// float operations as reference/cave/normals.hpp's central_difference_normals<float> (each shifted
+// coordinate one addition, each noise point one multiplication, the normalisation's sqrt and
+// divisions correctly rounded on llvmpipe), so the same bits.
+TEST_P(GpuMarchingTetrahedra, CentralDifferenceNormalsAreTheFloatReferencesBitForBit) {
+  const Block& block = GetParam();
+  const auto params = cave_params(block.origin, {12, 12, 12}, block.solid, block.kernel);
+  const FloatMesh mesh = reference_mesh(params);
+  const auto gpu_normals = gt::gpu::central_difference_normals(mesh.positions, params);
+  EXPECT_EQ(gpu_normals, ref::central_difference_normals<float>(mesh, params));
+  EXPECT_TRUE(gt::gpu::central_difference_normals({}, params).empty());
 }
 
 INSTANTIATE_TEST_SUITE_P(Blocks12, GpuMarchingTetrahedra, ::testing::ValuesIn(blocks),

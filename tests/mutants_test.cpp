@@ -158,6 +158,11 @@ TEST(Mutants, ErosionThermalIsKilled) {
                          "erosion.thermal.mutant_probe.cone: spec.first_iteration_cells.cpu"}) {
     EXPECT_TRUE(killed_by(mutation, "erosion.thermal.mirrored_slope", at)) << at;
   }
+  // The runner's check of a read-only input, on the probe and the volcano.
+  for (const char* at : {"erosion.thermal_jako.hardness.mutant_probe.cone: state.hardness.unchanged.gpu",
+                         "erosion.thermal_jako.hardness.volcano: state.hardness.unchanged.gpu"}) {
+    EXPECT_TRUE(killed_by(mutation, "erosion.thermal_jako.gpu_rate_folded_into_hardness", at)) << at;
+  }
 }
 // Beneš's dissolution erosion: each one-twin bug is seen by a one-step shadow check on the volcano
 // (a real DEM) as well as on a probe; the pair examples catch eq. 2.9's halving, the material
@@ -195,6 +200,7 @@ TEST(Mutants, CaveFamilyIsKilled) {
     EXPECT_TRUE(killed_by(mutation, mutant, "volume.mesh_vs_pl.cpu")) << mutant;
   }
   EXPECT_TRUE(killed_by(mutation, "cave.marching_tetrahedra.gpu_midpoint_off", "parity.max_abs.gpu_vs_float"));
+  EXPECT_TRUE(killed_by(mutation, "cave.marching_tetrahedra.gpu_normals_forward_difference", "parity.normals.gpu_vs_float"));
   expect_killed_near_the_bound(mutation, "cave.marching_tetrahedra.float_density_off_above_bound",
                                "parity.density.float_vs_double");
 }

@@ -20,6 +20,10 @@
 //                                    linear interpolant's crossing (the midpoint at the pad or with
 //                                    midpoint placement); the count of vertices that are not (must be 0)
 //   normals.angle_*.cpu              seed's central differences vs the analytic gradient (degrees)
+//   parity.normals.gpu_vs_float      the GPU's central differences (gpu/cave/normals.hpp) vs
+//                                    ref<float>'s at the GPU mesh's vertices: largest angle / its
+//                                    per-vertex bound (<= 1), fixed from ref<float>'s differences
+//                                    and the noise module's GPU-vs-float model (add_gpu_normals_check)
 //   parity.density.float_vs_double   max |density_float − density| against ε, the a-priori bound
 //                                    of the float density (density_precision: the noise module's
 //                                    float model, or one rounding of a volume's values), fixed
@@ -87,6 +91,7 @@
 #include "core/params/cave.hpp"
 #include "core/params/noise.hpp"
 #include "gpu/cave/marching_tetrahedra.hpp"
+#include "gpu/cave/normals.hpp"
 #include "gpu/timing.hpp"
 #include "reference/cave/density.hpp"
 #include "reference/cave/marching_cubes.hpp"
@@ -325,6 +330,64 @@ void add_normal_checks(const Block& block, const Mesh& mesh, CaseResult& result)
   result.checks.push_back(informative_check("normals.angle_max.cpu", largest, model));
 }
 
+// The GPU's central-difference normals (gpu/cave/normals.hpp) against ref<float>'s at the GPU mesh's
+// vertices, angle by angle against a bound per vertex fixed from ref<float>'s differences before
+// the GPU's are read. Both evaluate the density at the same float points (p ± step and the product
+// by float(1/scale) are correctly rounded on both sides), so each of the six samples differs by at
+// most a, the noise module's GPU-vs-float bound (noise_arithmetic_bound: the same float operations
+// in the same order), and each difference d_c by 2a plus the rounding of the subtraction on both
+// sides (u·|d_c| each): the unnormalised vectors differ by δ <= 2√3·a + 2u·|d|, so their directions
+// by at most asin(δ/|d|) with d ref<float>'s; the normalisation adds at most 6u (GLSL's division
+// within 2.5 ulp and the reference's 0.5, on three components), a common scale (the square root)
+// none. A vertex with |d| <= δ (a flat spot of the density) is not graded.
+void add_gpu_normals_check(const Block& block, const TriangleMesh<float>& gpu_mesh, CaseResult& result) {
+  const CaveParams& params = block.params;
+  constexpr double step = 1.0;  // the seed's ND
+  NoiseParams noise = noise_defaults(NoiseBasis::simplex3, Fractal::none);
+  noise.kernel_radius_squared = params.kernel_radius_squared;
+  const double per_sample = noise_arithmetic_bound(noise);
+  const double u = unit_roundoff_float;
+  const Permutation permutation = seeded_permutation(params.seed);
+  std::vector<double> bounds;
+  bounds.reserve(gpu_mesh.positions.size());
+  for (const auto& position : gpu_mesh.positions) {
+    double squared = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      std::array<float, 3> plus = position, minus = position;
+      plus[axis] = position[axis] + float(step);
+      minus[axis] = position[axis] - float(step);
+      const float difference = reference::cave_density_at<float>(permutation, params, plus[0], plus[1], plus[2]) -
+                               reference::cave_density_at<float>(permutation, params, minus[0], minus[1], minus[2]);
+      squared += double(difference) * double(difference);
+    }
+    const double length = std::sqrt(squared);
+    const double gap = 2.0 * std::sqrt(3.0) * per_sample + 2.0 * u * length;
+    bounds.push_back(length > gap ? std::asin(gap / length) + 6.0 * u : std::numeric_limits<double>::infinity());
+  }
+  const auto gpu_normals = gpu::central_difference_normals(gpu_mesh.positions, params, step);
+  const auto float_normals = reference::central_difference_normals<float>(gpu_mesh, params, step);
+  const std::vector<double> angles = reference::normal_angles(gpu_normals, float_normals);
+  double worst_ratio = 0.0, largest_angle = 0.0;
+  std::size_t ungraded = 0, differing = 0;
+  for (std::size_t v = 0; v < angles.size(); ++v) {
+    if (gpu_normals[v] != float_normals[v]) ++differing;
+    largest_angle = std::max(largest_angle, angles[v]);
+    if (std::isinf(bounds[v])) {
+      ++ungraded;
+      continue;
+    }
+    worst_ratio = std::max(worst_ratio, angles[v] / bounds[v]);
+  }
+  result.checks.push_back(bounded_check(
+      "parity.normals.gpu_vs_float", worst_ratio, 1.0, std::nullopt,
+      fmt::format("largest angle / its bound between the GPU's central-difference normals (step {:g}, the seed's ND) "
+                  "and ref<float>'s at the GPU mesh's {} vertices; bound per vertex asin(δ/|d|) + 6u from ref<float>'s "
+                  "differences d, δ = 2√3·a + 2u·|d|, a = {:.3g} per sample (the noise module's GPU-vs-float model); {} "
+                  "vertices differ in any bit, the largest angle is {:.3g}°, {} vertices on a flat spot of the density "
+                  "are not graded",
+                  step, angles.size(), per_sample, differing, largest_angle * 180.0 / M_PI, ungraded)));
+}
+
 // Mesh `single` (float arithmetic: ref<float> or the GPU) against ref<double>.
 void add_vs_double(const BlockMeshes& meshes, const TriangleMesh<float>& single,
                    const std::string& name, CaseResult& result) {
@@ -552,10 +615,12 @@ void run_gpu_half(const Block& block, const BlockMeshes& meshes, const RunOption
                              "parity.hausdorff.gpu_vs_double", "parity.vertex_model.gpu_vs_double", "determinism.gpu"}) {
       result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
     }
+    if (!block.volume) result.checks.push_back(skipped_check("parity.normals.gpu_vs_float", options.gpu_unavailable_reason));
     return;
   }
   const TriangleMesh<float> gpu_mesh = run_gpu(block, meshes.density_float, options, result);
   add_gpu_vs_float(gpu_mesh, meshes.single, result);
+  if (!block.volume) add_gpu_normals_check(block, gpu_mesh, result);  // normals of the seed's noise
   if (same_mesh(gpu_mesh, meshes.single)) {
     repeat_float_vs_double_as_gpu(result);
   } else {
