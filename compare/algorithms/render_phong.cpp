@@ -15,7 +15,8 @@
 //                    with look = cave only: the seed's cave, a block of block_size_* cells at
 //                    block_origin_* of its density (scale 10, threshold 0, kernel 0.6, Perlin's
 //                    table, capped with air) meshed by the reference marching tetrahedra, normals from
-//                    the analytic noise gradient (reference/render/cave_look.hpp cave_scene), seen by
+//                    the analytic noise gradient or, normals = central, the seed's central differences
+//                    (reference/render/cave_look.hpp cave_scene), seen by
 //                    the fixed camera from inside (an eye in rock or outside the block is refused)
 //   look             plain (one albedo: the seed's Phong), cave (seed 004's full look: colour strip
 //                    by solid noise, moss, bump), terrain (height ramp and rock by slope, up_axis up)
@@ -55,6 +56,8 @@ constexpr Choice<reference::Look> look_choices[] = {
 constexpr Choice<reference::Vec3> up_axis_choices[] = {
     {"x", {1.0, 0.0, 0.0}}, {"y", {0.0, 1.0, 0.0}}, {"z", {0.0, 0.0, 1.0}}};
 constexpr Choice<bool> generated_choices[] = {{"cave", false}, {"quad", true}};
+constexpr Choice<reference::CaveNormals> normal_choices[] = {{"analytic", reference::CaveNormals::analytic},
+                                                             {"central", reference::CaveNormals::central_difference}};
 
 const ParamSpecs& phong_specs() {
   static const ParamSpecs specs = param_specs(phong_render_param_table());
@@ -164,7 +167,8 @@ PhongCase prepared_case(const nlohmann::json& resolved, const LoadedInput& input
                        "cave");
     }
     const CaveParams block = cave_block(params);
-    scene = reference::cave_scene(block, fixed_camera(params), {}, light_power > 0.0 ? light_power : 25.0);
+    scene = reference::cave_scene(block, fixed_camera(params), {}, light_power > 0.0 ? light_power : 25.0,
+                                  params.normals);
     scene.look = look;  // plain: the block in one diffuse hue
     description = fmt::format("the seed's cave, block of {}x{}x{} cells at ({}, {}, {})", block.size[0], block.size[1],
                               block.size[2], block.origin[0], block.origin[1], block.origin[2]);
@@ -288,6 +292,9 @@ const ParamTable<PhongRenderParams>& phong_render_param_table() {
       integer_param("block_size_x", element(&P::block_size, 0), 1, 160, "lattice", "generated cave: cells along x"),
       integer_param("block_size_y", element(&P::block_size, 1), 1, 160, "lattice", "generated cave: cells along y"),
       integer_param("block_size_z", element(&P::block_size, 2), 1, 160, "lattice", "generated cave: cells along z"),
+      choice_param("normals", &P::normals, normal_choices, "1",
+                   "generated cave: the vertices' normals, analytic (the simplex gradient, exact) or central (the "
+                   "seed's central differences of Listing 3.3, ND = 1), both in double"),
 
   };
   return table;

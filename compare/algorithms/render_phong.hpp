@@ -39,6 +39,7 @@ struct PhongRenderParams {
   bool quad = false;               // generated = quad, else the seed's cave
   std::array<int, 3> block_origin{-24, -24, -24};  // of the generated cave, lattice units
   std::array<int, 3> block_size{48, 48, 48};
+  reference::CaveNormals normals = reference::CaveNormals::analytic;  // of the generated cave's vertices
 };
 const ParamTable<PhongRenderParams>& phong_render_param_table();
 

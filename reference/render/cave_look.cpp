@@ -134,7 +134,8 @@ Vec3 cave_bumped_normal(const CaveLook& look, const Vec3& p, const Vec3& n) {
   return (1.0 / std::sqrt(dot(m, m))) * m;
 }
 
-PhongScene cave_scene(const CaveParams& block, const Camera& camera, const CaveLook& look, double light_power) {
+PhongScene cave_scene(const CaveParams& block, const Camera& camera, const CaveLook& look, double light_power,
+                      CaveNormals normals) {
   if (!(light_power > 0.0) || !std::isfinite(light_power)) throw InputError("cave scene: the light power must be positive");
   for (int axis = 0; axis < 3; ++axis) {
     const double low = block.origin[axis], high = double(block.origin[axis]) + block.size[axis];
@@ -155,7 +156,8 @@ PhongScene cave_scene(const CaveParams& block, const Camera& camera, const CaveL
                                                 {block.origin[0], block.origin[1], block.origin[2]});
   if (mesh.triangles.empty()) throw InputError("cave scene: the block has no cave surface");
   PhongScene scene = phong_scene(mesh, camera, Look::cave);
-  scene.normals = gradient_normals<double>(scene.mesh, block);
+  scene.normals = normals == CaveNormals::analytic ? gradient_normals<double>(scene.mesh, block)
+                                                   : central_difference_normals<double>(scene.mesh, block);
   scene.cave = look;
   scene.light_power = light_power;
   return scene;

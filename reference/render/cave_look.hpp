@@ -140,16 +140,19 @@ Vec3 cave_bumped_normal(const CaveLook& look, const Vec3& p, const Vec3& facing_
 
 // A camera inside a block of the seed's cave (render.phong's generated cave, compare/algorithms/render_phong.cpp).
 //
-// cave_scene(block, camera, look, light_power) meshes `block` (CaveParams: the seed's density,
+// cave_scene(block, camera, look, light_power, normals) meshes `block` (CaveParams: the seed's density,
 // marching_tetrahedra<double> in reference/cave, welded, wound into the air) and gives its vertices
-// the normals of the analytic simplex gradient (reference/cave/normals.hpp gradient_normals: the
-// seed takes its normals from the noise gradient, §2.8, and the analytic one is exact), then a
+// normals of the noise (reference/cave/normals.hpp, in double): `analytic`, the simplex gradient
+// (gradient_normals: exact, the default), or `central_difference`, the seed's own Listing 3.3 with
+// ND = 1 (central_difference_normals: what the seed's shader draws, §2.8), then a
 // PhongScene with look = cave, `look`, the given light power (the seed's LIGHTPOWER; opengl-tutorial's
 // default is 50) and `camera`. Throws InputError when the eye lies outside the block, or in rock
 // (density below the threshold: such a camera sees the inside of the rock) or when the block has
 // no surface.
 struct PhongScene;
 struct Camera;
-PhongScene cave_scene(const CaveParams& block, const Camera& camera, const CaveLook& look, double light_power);
+enum class CaveNormals { analytic, central_difference };
+PhongScene cave_scene(const CaveParams& block, const Camera& camera, const CaveLook& look, double light_power,
+                      CaveNormals normals = CaveNormals::analytic);
 
 }  // namespace gt::reference
