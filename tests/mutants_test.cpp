@@ -145,6 +145,8 @@ TEST(Mutants, ErosionPipeBothTwinsIsKilled) {
     EXPECT_TRUE(killed_by(mutation, mutant, "erosion.pipe.flux.volcano: spec.step.terrain.cpu")) << mutant;
   }
   EXPECT_TRUE(killed_by(mutation, "erosion.pipe.rates_swapped", "spec.step.sediment.cpu"));
+  EXPECT_TRUE(killed_by(mutation, "erosion.pipe.maccormack_correction_negated",
+                        "erosion.pipe.ab.maccormack.volcano_open.b: spec.step.sediment.cpu"));
   EXPECT_TRUE(
       killed_by(mutation, "erosion.pipe.regolith_deepest", "erosion.pipe.seed001.volcano: spec.step.regolith.cpu"));
   expect_killed_near_the_bound(mutation, "erosion.pipe.capacity_off_above_bound", "spec.step.terrain.cpu");

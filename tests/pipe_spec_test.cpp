@@ -143,9 +143,10 @@ TEST(PipeSpec, ReferenceStepPassesOnBothBordersAndSeed001sVariant) {
       expect_all_pass(spec_checks("", seed001_params(boundary, weighting)), 7);
     }
     // 8 pipes (anisotropic cells: the diagonals' shares along x and y differ) and Mei's
-    // semi-Lagrangian transport, each alone and together.
+    // semi-Lagrangian transport or MacCormack's correction of it, each alone and together.
     for (const int pipes : {4, 8}) {
-      for (const auto transport : {gt::SedimentTransport::flux, gt::SedimentTransport::semi_lagrangian}) {
+      for (const auto transport : {gt::SedimentTransport::flux, gt::SedimentTransport::semi_lagrangian,
+                                   gt::SedimentTransport::maccormack}) {
         HydraulicParams params = basin_params(boundary);
         params.pipe_count = pipes;
         params.transport = transport;
@@ -173,6 +174,12 @@ TEST(PipeSpec, ConservingBugsOfBothTwinsFail) {
   const auto open = basin_params(gt::PipeBoundary::open);
   EXPECT_EQ(named(spec_checks("erosion.pipe.gravity_in_cgs", open), "spec.step.outflow.cpu").status, gt::Outcome::fail);
   EXPECT_EQ(named(spec_checks("erosion.pipe.half_rain", open), "spec.step.water.cpu").status, gt::Outcome::fail);
+  // MacCormack's correction subtracted in both twins: only the transported fields move.
+  HydraulicParams maccormack = open;
+  maccormack.transport = gt::SedimentTransport::maccormack;
+  const auto negated = spec_checks("erosion.pipe.maccormack_correction_negated", maccormack);
+  EXPECT_EQ(named(negated, "spec.step.sediment.cpu").status, gt::Outcome::fail);
+  EXPECT_EQ(named(negated, "spec.step.water.cpu").status, gt::Outcome::pass);
   // In seed 001's variant, where the code's raw tilt takes no span, the rates still show.
   const auto variant = seed001_params(gt::PipeBoundary::closed, gt::DiffusionWeighting::water);
   EXPECT_EQ(named(spec_checks("erosion.pipe.rates_swapped", variant), "spec.step.terrain.cpu").status, gt::Outcome::fail);

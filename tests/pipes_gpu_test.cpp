@@ -314,7 +314,12 @@ INSTANTIATE_TEST_SUITE_P(
                       OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::closed,
                                   Variant::regolith_water_diffusion, 4, gt::TiltDifferences::central, false},
                       OneStepCase{SedimentTransport::semi_lagrangian, PipeBoundary::open,
-                                  Variant::regolith_water_diffusion, 8, gt::TiltDifferences::seed001_code, false}),
+                                  Variant::regolith_water_diffusion, 8, gt::TiltDifferences::seed001_code, false},
+                      // MacCormack's correction of the backtrace (one more pass): both borders, the
+                      // regolith beside the sediment, 8 pipes.
+                      OneStepCase{SedimentTransport::maccormack, PipeBoundary::closed, Variant::plain},
+                      OneStepCase{SedimentTransport::maccormack, PipeBoundary::open, Variant::regolith_uniform_diffusion},
+                      OneStepCase{SedimentTransport::maccormack, PipeBoundary::open, Variant::plain, 8}),
     [](const ::testing::TestParamInfo<OneStepCase>& info) { return case_name(info.param); });
 
 TEST_F(PipesGpu, ThermalStepMatchesTheFloatReference) {

@@ -156,10 +156,11 @@ TEST(PipeShadowModel, BothReferencesStayInsideTheIntervalsOnAProbe) {
   params.evaporation_rate = 0.05;
   params.regolith_depth = 0.02;
   params.sediment_diffusion = 0.05;
-  for (auto transport : {gt::SedimentTransport::flux, gt::SedimentTransport::semi_lagrangian}) {
+  for (auto transport : {gt::SedimentTransport::flux, gt::SedimentTransport::semi_lagrangian,
+                         gt::SedimentTransport::maccormack}) {
     params.transport = transport;
     expect_references_inside(gt::dry_pipe_state(terrain), params, forcing, 30,
-                             transport == gt::SedimentTransport::flux ? "probe, flux" : "probe, semi-Lagrangian");
+                             std::string("probe, ") + gt::sediment_transport_name(transport));
   }
 }
 

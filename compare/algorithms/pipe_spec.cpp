@@ -19,6 +19,8 @@
 //   semi-Lagr.  (2.24-2.25) what left through exterior pipes is gone; each cell takes the bilinear
 //               value at x − (u, v)·Δt of what stayed, corners off the grid or on no data reading
 //               the cell itself
+//   MacCormack  (Selle et al. 2008) that value φ̂ sampled the same way at x + (u, v)·Δt (φ̌); the
+//               cell takes φ̂ + ½(φ − φ̌), φ what stayed, clamped to the four φ that φ̂ read
 //   flux form   each pipe carries the share f_k·Δt/(d_A·l_x·l_y) of the eroded s (and of r: what the
 //               cell's water moved); a cell keeps s·(1 − min(1, Σ shares)) and gains its neighbours'
 //   diffusion   (seed 001 §3.8, w > 0) s (and r with regolith_diffusion) to the 4 axis neighbours
@@ -202,7 +204,9 @@ std::vector<Real> carried_with_water(const Cells<Real>& cells, const std::vector
 // Mei's semi-Lagrangian transport (eqs. 2.24-2.25): the share that left through exterior pipes
 // is gone; then each cell takes the bilinear value of what stayed at x − (u, v)·Δt (in cells; at
 // most the grid's width + height away), a corner off the grid or on no data reading the cell
-// itself.
+// itself. With MacCormack's correction (Selle et al. 2008) that value φ̂ is traced forward, to
+// x + (u, v)·Δt, by the same rule (φ̌), and the cell takes φ̂ + ½(φ − φ̌), φ what stayed,
+// clamped to the least and largest of the four values of φ that φ̂ was interpolated from.
 template <class Real>
 std::vector<Real> backtraced(const Cells<Real>& cells, const std::vector<Real>& field,
                              const std::vector<Fluxes<Real>>& outflow, const std::vector<Real>& added,
@@ -224,22 +228,37 @@ std::vector<Real> backtraced(const Cells<Real>& cells, const std::vector<Real>& 
     const Real below = floor(offset);
     return std::pair{below, offset - below};  // the lower cell and the weight of the upper one
   };
-  std::vector<Real> moved = field;
-  cells.each([&](int x, int y, std::size_t cell) {
+  struct Sample {
+    Real value, lowest, highest;
+  };
+  // `source` bilinearly at the cell moved by `towards`·(u, v)·Δt (−1 back, +1 forward).
+  const auto sample = [&](const std::vector<Real>& source, int x, int y, std::size_t cell, int towards) {
+    const auto along = [towards](const Real& velocity) { return towards < 0 ? -velocity : velocity; };
     const auto [below_x, upper_x] =
-        bracket(-flowing.velocity_x.values[cell] * Real(params.time_step / terrain.cell_size_x));
+        bracket(along(flowing.velocity_x.values[cell]) * Real(params.time_step / terrain.cell_size_x));
     const auto [below_y, upper_y] =
-        bracket(-flowing.velocity_y.values[cell] * Real(params.time_step / terrain.cell_size_y));
+        bracket(along(flowing.velocity_y.values[cell]) * Real(params.time_step / terrain.cell_size_y));
     const int corner_x = x + static_cast<int>(below_x), corner_y = y + static_cast<int>(below_y);
     const auto at = [&](int dx, int dy) {
       const int cx = corner_x + dx, cy = corner_y + dy;
-      return cells.wet(cx, cy) ? staying[terrain.index(cx, cy)] : staying[cell];
+      return cells.wet(cx, cy) ? source[terrain.index(cx, cy)] : source[cell];
     };
     const Real lower_row = (Real(1) - upper_x) * at(0, 0) + upper_x * at(1, 0);
     const Real upper_row = (Real(1) - upper_x) * at(0, 1) + upper_x * at(1, 1);
-    moved[cell] = (Real(1) - upper_y) * lower_row + upper_y * upper_row;
+    return Sample{(Real(1) - upper_y) * lower_row + upper_y * upper_row,
+                  min(min(at(0, 0), at(1, 0)), min(at(0, 1), at(1, 1))),
+                  max(max(at(0, 0), at(1, 0)), max(at(0, 1), at(1, 1)))};
+  };
+  std::vector<Real> moved = field;
+  cells.each([&](int x, int y, std::size_t cell) { moved[cell] = sample(staying, x, y, cell, -1).value; });
+  if (params.transport != SedimentTransport::maccormack) return moved;
+  std::vector<Real> corrected = moved;
+  cells.each([&](int x, int y, std::size_t cell) {
+    const Real returned = sample(moved, x, y, cell, +1).value;
+    const Sample read = sample(staying, x, y, cell, -1);
+    corrected[cell] = max(read.lowest, min(read.highest, moved[cell] + Real(0.5) * (staying[cell] - returned)));
   });
-  return moved;
+  return corrected;
 }
 
 // Seed 001 §3.8's diffusion to the 4 axis neighbours that take part: each gets σ_k of the cell's

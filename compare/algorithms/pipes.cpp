@@ -45,8 +45,8 @@
 //                  M_0 = Σ(|b_0| + s_0 + r_0)·l_x·l_y. Flux transport conserves: bounds 1e-12 (cpu, as
 //                  the water) and 1e-6 (gpu); cpu_float informative (the float trap of plain float
 //                  storage: the GPU stores heights as base + change, gpu/erosion/pipes.hpp).
-//                  Semi-Lagrangian transport does not conserve (the method's property, no model of how
-//                  much): informative.
+//                  Semi-Lagrangian and MacCormack transport do not conserve (the methods' property, no
+//                  model of how much): informative, so the ledger shows what each creates or destroys.
 //   mass.material_drift_of_moved   the same drift divided by the material moved (Σ|b_T − b_0|·l_x·l_y +
 //                  what is suspended or left): informative.
 //   stability.max_cfl              the largest Δt·|u|/l_x or Δt·|v|/l_y of the run: at most 1 by the K
@@ -312,11 +312,13 @@ std::vector<LedgerTerm> pipe_ledger_terms(const PipeScenario& scenario) {
                                     "height's float spacing lost); " + material_detail);
          }
          // Semi-Lagrangian transport creates and destroys material by construction (bilinear
-         // backtrace of a field that is not divergence-free); how much depends on the flow, and no
-         // error model bounds it, so the drift is reported, not graded.
+         // backtrace of a field that is not divergence-free), and MacCormack's correction on top of
+         // it (and its limiter) too; how much depends on the flow, and no error model bounds it, so
+         // the drift is reported, not graded.
          if (!conserving) {
            return informative_check("", errors(run).max_material,
-                                    material_detail + "; semi-Lagrangian transport is not conservative");
+                                    fmt::format("{}; {} transport is not conservative", material_detail,
+                                                sediment_transport_name(scenario.constants.transport)));
          }
          return bounded_check("", errors(run).max_material, run.backend == "gpu" ? gpu_material_bound : cpu_material_bound,
                               std::nullopt, material_detail + "; flux transport conserves");
@@ -328,8 +330,9 @@ std::vector<LedgerTerm> pipe_ledger_terms(const PipeScenario& scenario) {
          return informative_check(
              "", std::abs(material_drift(ledger.back(), ledger.front())) / moved,
              conserving ? "final drift / material moved (eroded, deposited, suspended, out)"
-                        : "final drift / material moved; semi-Lagrangian transport creates or destroys material (the "
-                          "method's property)");
+                        : fmt::format("final drift / material moved; {} transport creates or destroys material (the "
+                                      "method's property)",
+                                      sediment_transport_name(scenario.constants.transport)));
        }},
   };
 }

@@ -30,7 +30,18 @@ std::vector<Mutant> pipe_mutants() {
   const std::vector<std::string> semi_lagrangian_probe_and_dem = {"erosion.pipe.mutant_probe.semi_lagrangian",
                                                                   "erosion.pipe.semi_lagrangian.volcano_open"};
   const std::vector<std::string> flux_probe_and_volcano = {"erosion.pipe.mutant_probe.flux", "erosion.pipe.flux.volcano"};
+  // MacCormack transport: its probe, and the volcano's A/B pair (whose B side runs it).
+  const std::vector<std::string> maccormack_probe_and_dem = {"erosion.pipe.mutant_probe.maccormack",
+                                                             "erosion.pipe.ab.maccormack.volcano_open.b"};
   return {
+      {"erosion.pipe.gpu_maccormack_unhalved", MutantKind::one_twin,
+       "pipes_maccormack.comp adds the whole difference φ − φ̌ to the backtrace instead of half of it",
+       maccormack_probe_and_dem},
+      {"erosion.pipe.maccormack_correction_negated", MutantKind::both_twins,
+       "both twins subtract MacCormack's correction ½(φ − φ̌) from the backtrace instead of adding it (reference and "
+       "pipes_maccormack.comp); the limiter keeps the result in range, and no ledger bounds a transport that does not "
+       "conserve",
+       maccormack_probe_and_dem},
       {"erosion.pipe.gpu_drops_bottom_pipe", MutantKind::one_twin,
        "pipes_outflow.comp never gives the B pipe a flux (a loop bound or a skipped direction)", flux_probe_and_dem},
       {"erosion.pipe.gpu_velocity_without_half", MutantKind::one_twin,

@@ -20,7 +20,8 @@ void require(bool condition, const std::string& what) {
 }
 
 constexpr Choice<SedimentTransport> transport_choices[] = {{"semi_lagrangian", SedimentTransport::semi_lagrangian},
-                                                           {"flux", SedimentTransport::flux}};
+                                                           {"flux", SedimentTransport::flux},
+                                                           {"maccormack", SedimentTransport::maccormack}};
 constexpr Choice<PipeBoundary> boundary_choices[] = {{"closed", PipeBoundary::closed}, {"open", PipeBoundary::open}};
 constexpr Choice<TiltDifferences> tilt_choices[] = {{"central", TiltDifferences::central},
                                                     {"seed001_code", TiltDifferences::seed001_code}};
@@ -68,7 +69,10 @@ const ParamTable<HydraulicParams>& hydraulic_param_table() {
       choice_param("pipes", &P::pipe_count, pipe_count_choices, "count",
                    "virtual pipes per cell: 4 (L, R, T, B; Mei) or 8 (and the diagonals, length sqrt(l_x² + l_y²))"),
       choice_param("transport", &P::transport, transport_choices, "",
-                   "sediment transport: Mei's semi-Lagrangian backtrace (not conservative) or with the pipe outflows"),
+                   "sediment transport: Mei's semi-Lagrangian backtrace (not conservative), with the pipe outflows, or "
+                   "MacCormack's correction of the backtrace, limited to the values it read (Selle et al. 2008; not "
+                   "conservative)"),
+
       choice_param("boundary", &P::boundary, boundary_choices, "",
                    "grid border and no-data cells: closed walls or open (water and sediment leave and are counted)"),
       real_param("sediment_diffusion", &P::sediment_diffusion, 0.0, 0.25, "1",

@@ -46,13 +46,13 @@
 
 namespace gt {
 
-enum class SedimentTransport { semi_lagrangian, flux };
+enum class SedimentTransport { semi_lagrangian, flux, maccormack };
 enum class PipeBoundary { closed, open };
 // Seed 001 §3.5: sin α from central differences over the distance, or its code's raw differences.
 enum class TiltDifferences { central, seed001_code };
 
-// "semi_lagrangian", "flux", "closed", "open", "central", "seed001_code": the names of the `transport`,
-// `boundary` and `tilt_differences` parameters (diffusion_weighting_name: core/params/diffusion_weighting.hpp).
+// "semi_lagrangian", "flux", "maccormack", "closed", "open", "central", "seed001_code": the names of
+// the `transport`, `boundary` and `tilt_differences` parameters (diffusion_weighting_name: core/params/diffusion_weighting.hpp).
 const char* sediment_transport_name(SedimentTransport transport);
 const char* pipe_boundary_name(PipeBoundary boundary);
 const char* tilt_differences_name(TiltDifferences differences);

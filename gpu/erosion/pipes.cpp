@@ -11,6 +11,8 @@
 //   pipes_flow.comp      3, 4, 5, 5b, 6a  d_B, velocity, erosion/deposition, regolith exchange,
 //                        what leaves each cell
 //   pipes_sediment.comp  6, 7      transport (gather or backtrace) of s and r, and evaporation
+//   pipes_maccormack.comp 6        MacCormack's correction of the backtrace (only with that
+//                                  transport), written to a buffer swapped with s (and r)
 //   pipes_diffusion.comp 6b        diffusion of s and r (seed 001 §3.8; only when w > 0; r only with
 //                                  regolith_diffusion)
 //   pipes_thermal_outflow.comp, pipes_thermal_gather.comp
@@ -96,6 +98,8 @@ enum Binding : GLuint {
   regolith_staying_binding = 13,
   regolith_sent_binding = 14,
   thermal_outflows_binding = 15,
+  corrected_binding = 16,
+  regolith_corrected_binding = 17,
 };
 
 // Mirror of `PipeBlock` in gpu/shaders/erosion/pipes_block.glsl (std140).
@@ -373,6 +377,8 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
       regolith_staying_(16),
       regolith_sent_(16),
       thermal_outflows_(16),
+      corrected_(16),
+      regolith_corrected_(16),
       source_cells_(16),
       source_list_(16) {
   const auto& terrain = initial.terrain;
@@ -381,6 +387,9 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
   layout_.values.clear();
   if (has_diffusion(constants_)) {
     diffusion_program_.emplace(pipe_program("erosion/pipes_diffusion.comp", stage_defines(constants_)));
+  }
+  if (constants_.transport == SedimentTransport::maccormack) {
+    maccormack_program_.emplace(pipe_program("erosion/pipes_maccormack.comp", stage_defines(constants_)));
   }
   if (constants_.thermal_step) {
     thermal_outflow_program_.emplace(pipe_program("erosion/pipes_thermal_outflow.comp"));
@@ -453,6 +462,10 @@ void PipeErosion::upload(const PipeState<double>& state) {
     regolith_sent_ = StorageBuffer::from(zero_vectors);
   }
   if (constants_.thermal_step) thermal_outflows_ = StorageBuffer::from(std::vector<float>(8 * cells, 0.0f));
+  if (maccormack_program_) {
+    corrected_ = StorageBuffer::from(zeros);
+    if (has_regolith(constants_)) regolith_corrected_ = StorageBuffer::from(zeros);
+  }
   flows_ = PipeFlows{};
   steps_done_ = 0;
   ledger_.clear();
@@ -462,7 +475,8 @@ void PipeErosion::upload(const PipeState<double>& state) {
 std::size_t PipeErosion::pipe_values_per_cell() const { return static_cast<std::size_t>(constants_.pipe_count); }
 
 int PipeErosion::passes_per_step() const {
-  return 4 + (sources_program_ ? 1 : 0) + (diffusion_program_ ? 1 : 0) + (thermal_outflow_program_ ? 2 : 0);
+  return 4 + (sources_program_ ? 1 : 0) + (maccormack_program_ ? 1 : 0) + (diffusion_program_ ? 1 : 0) +
+         (thermal_outflow_program_ ? 2 : 0);
 }
 
 void PipeErosion::bind() const {
@@ -482,6 +496,8 @@ void PipeErosion::bind() const {
   regolith_staying_.bind(regolith_staying_binding);
   regolith_sent_.bind(regolith_sent_binding);
   thermal_outflows_.bind(thermal_outflows_binding);
+  corrected_.bind(corrected_binding);
+  regolith_corrected_.bind(regolith_corrected_binding);
 }
 
 void PipeErosion::step() {
@@ -499,6 +515,12 @@ void PipeErosion::step() {
   pass(flow_program_);
   std::swap(delta_, delta_next_);
   pass(sediment_program_);
+  if (maccormack_program_) {
+    pass(*maccormack_program_);
+    std::swap(sediment_, corrected_);
+    if (has_regolith(constants_)) std::swap(regolith_, regolith_corrected_);
+    bind();
+  }
   if (diffusion_program_) {
     pass(*diffusion_program_);
     std::swap(sediment_, staying_);

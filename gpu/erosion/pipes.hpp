@@ -22,8 +22,8 @@
 // Outputs: state(): downloaded (waits for the GPU); terrain reconstructed in double as b0 + Δb (an
 //          exact sum unless |Δb| < 2^-29·|b0|, then within 2^-53 of b). ledger(): entry 0 describes the
 //          initial state, entry n the state after step n (only with keep_ledger).
-//          passes_per_step(): compute dispatches per step: 4, +1 with point sources, +1 with sediment
-//          diffusion, +2 with the thermal step.
+//          passes_per_step(): compute dispatches per step: 4, +1 with point sources, +1 with
+//          MacCormack, +1 with sediment diffusion, +2 with the thermal step.
 // Units:   as the reference: b, d, s in metres, flux in m³/s, velocity in m/s; ledger volumes in m³.
 // Throws:  InputError, the reference's messages: the constructor refuses grids of another size than
 //          the terrain, a mask without a valid cell, non-finite values (also after rounding to float),
@@ -92,8 +92,8 @@ class PipeErosion {
   PipeState<double> state() const;
   // Entry 0 describes the initial state; entry n the state after step n (only with keep_ledger).
   const std::vector<PipeLedgerEntry>& ledger() const { return ledger_; }
-  // Compute dispatches per step: 4, +1 with point sources, +1 with sediment diffusion, +2 with the
-  // thermal step.
+  // Compute dispatches per step: 4, +1 with point sources, +1 with MacCormack, +1 with sediment
+  // diffusion, +2 with the thermal step.
   int passes_per_step() const;
   int steps_done() const { return steps_done_; }
 
@@ -126,6 +126,7 @@ class PipeErosion {
   ComputeProgram outflow_program_;
   ComputeProgram flow_program_;
   ComputeProgram sediment_program_;
+  std::optional<ComputeProgram> maccormack_program_;  // only with MacCormack transport
   std::optional<ComputeProgram> diffusion_program_;  // only with sediment diffusion
   std::optional<ComputeProgram> thermal_outflow_program_;  // only with the thermal step
   std::optional<ComputeProgram> thermal_gather_program_;
@@ -143,6 +144,8 @@ class PipeErosion {
   StorageBuffer regolith_staying_;  // 16 bytes unless the regolith stage runs
   StorageBuffer regolith_sent_;     // likewise
   StorageBuffer thermal_outflows_;  // 8 per cell with the thermal step, else 16 bytes
+  StorageBuffer corrected_;           // MacCormack's s, swapped with sediment_; else 16 bytes
+  StorageBuffer regolith_corrected_;  // likewise for r
   StorageBuffer source_cells_;
   StorageBuffer source_list_;
 

@@ -22,6 +22,10 @@
 //              or flux form: each pipe carries s_A·f_k·Δt/(d_A·l_x·l_y), the share of the cell's
 //              water it moved (diagonal pipes too); what one cell sends, the neighbour receives as
 //              the same number.
+//              or MacCormack (Selle et al. 2008): φ̂ the semi-Lagrangian result, φ̌ = φ̂ traced
+//              forward, x + (u, v)·Δt, with the same bilinear rule; s = φ̂ + ½(s_A − φ̌), clamped to
+//              the four corners of s_A that φ̂ was interpolated from (the limiter: without it the
+//              correction overshoots, below 0 too, which the step check refuses).
 //              The regolith moves with the water the same way (seed 001 §3.9).
 //   6b diffusion (seed 001 §3.8; only when w > 0), of s and r from the state after 6 (r only with
 //              regolith_diffusion, the thesis; seed 001's code diffuses s alone): each cell
@@ -333,13 +337,15 @@ Real PipeErosion<Real>::tilt_sine(int x, int y) const {
 }
 
 template <class Real>
-Real PipeErosion<Real>::backtraced_sediment(const std::vector<Real>& source, int x, int y) const {
+typename PipeErosion<Real>::Traced PipeErosion<Real>::traced_sediment(const std::vector<Real>& source, int x, int y,
+                                                                     int direction) const {
   const auto& terrain = state_.terrain;
   const std::size_t cell = terrain.index(x, y);
   const Real reach = static_cast<Real>(terrain.width + terrain.height);
-  const auto taps_x = axis_taps(-state_.velocity_x.values[cell] *
+  const auto along = [direction](const Real& velocity) { return direction < 0 ? -velocity : velocity; };
+  const auto taps_x = axis_taps(along(state_.velocity_x.values[cell]) *
                                     static_cast<Real>(constants_.time_step / constants_.length_x), reach);
-  const auto taps_y = axis_taps(-state_.velocity_y.values[cell] *
+  const auto taps_y = axis_taps(along(state_.velocity_y.values[cell]) *
                                     static_cast<Real>(constants_.time_step / constants_.length_y), reach);
   auto corner = [&](int dx, int dy) {
     const int cx = x + taps_x.low + dx;
@@ -348,7 +354,9 @@ Real PipeErosion<Real>::backtraced_sediment(const std::vector<Real>& source, int
   };
   const Real lower_row = taps_x.low_weight * corner(0, 0) + taps_x.high_weight * corner(1, 0);
   const Real upper_row = taps_x.low_weight * corner(0, 1) + taps_x.high_weight * corner(1, 1);
-  return taps_y.low_weight * lower_row + taps_y.high_weight * upper_row;
+  return {taps_y.low_weight * lower_row + taps_y.high_weight * upper_row,
+          min(min(corner(0, 0), corner(1, 0)), min(corner(0, 1), corner(1, 1))),
+          max(max(corner(0, 0), corner(1, 0)), max(corner(0, 1), corner(1, 1)))};
 }
 
 template <class Real>
@@ -581,7 +589,31 @@ void PipeErosion<Real>::transport_semi_lagrangian(std::vector<Real>& field, Comp
   }
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
-      if (terrain.is_valid(x, y)) field[terrain.index(x, y)] = backtraced_sediment(scratch_, x, y);
+      if (terrain.is_valid(x, y)) field[terrain.index(x, y)] = traced_sediment(scratch_, x, y, -1).value;
+    }
+  }
+  if (constants_.transport == SedimentTransport::maccormack) maccormack_correction(field);
+}
+
+// MacCormack's correction of the semi-Lagrangian step `field` (Selle et al. 2008): the forward
+// result φ̂ traced back forward to each cell gives φ̌, and the cell takes φ̂ + ½(φ − φ̌), φ what
+// stayed (scratch_); the limiter clamps that to the range of the four corners φ̂ was interpolated
+// from, where the correction would overshoot (always on: unlimited, it makes negative sediment).
+template <class Real>
+void PipeErosion<Real>::maccormack_correction(std::vector<Real>& field) {
+  const auto& terrain = state_.terrain;
+  const bool negated = mutant_active("erosion.pipe.maccormack_correction_negated");
+  forward_ = field;
+  for (int y = 0; y < terrain.height; ++y) {
+    for (int x = 0; x < terrain.width; ++x) {
+      const std::size_t cell = terrain.index(x, y);
+      if (!terrain.is_valid(cell)) continue;
+      const Real returned = traced_sediment(forward_, x, y, +1).value;
+      const Real correction = Real(0.5) * (scratch_[cell] - returned);
+      // Mutant erosion.pipe.maccormack_correction_negated (both twins): the correction subtracted.
+      const Real corrected = negated ? forward_[cell] - correction : forward_[cell] + correction;
+      const Traced source = traced_sediment(scratch_, x, y, -1);
+      field[cell] = max(source.lowest, min(source.highest, corrected));
     }
   }
 }

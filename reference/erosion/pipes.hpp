@@ -63,7 +63,14 @@ class PipeErosion {
   Fluxes carried_shares(std::size_t cell) const;
   Real exterior_share(std::size_t cell, const Fluxes& shares) const;
   Real tilt_sine(int x, int y) const;
-  Real backtraced_sediment(const std::vector<Real>& source, int x, int y) const;
+  // The bilinear value of `source` at the cell moved by direction·(u, v)·Δt (direction −1: Mei's
+  // backtrace; +1: MacCormack's trace forward) and the least and largest of the four corners read.
+  struct Traced {
+    Real value;
+    Real lowest;
+    Real highest;
+  };
+  Traced traced_sediment(const std::vector<Real>& source, int x, int y, int direction) const;
   Fluxes diffusion_shares(int x, int y) const;
 
   void add_water();
@@ -75,6 +82,7 @@ class PipeErosion {
   void gather_sent(std::vector<Real>& field, CompensatedSum& boundary_out, int pipes);
   void transport_with_fluxes(std::vector<Real>& field, CompensatedSum& boundary_out);
   void transport_semi_lagrangian(std::vector<Real>& field, CompensatedSum& boundary_out);
+  void maccormack_correction(std::vector<Real>& field);
   void transport(std::vector<Real>& field, CompensatedSum& boundary_out);
   void diffuse(std::vector<Real>& field);
   void evaporate();
@@ -89,6 +97,7 @@ class PipeErosion {
   std::vector<Real> water_before_flow_;        // d_A of the current step
   std::vector<unsigned char> drained_;         // K < 1 this step: the pipes took all of d_A
   std::vector<Real> scratch_;                  // next terrain or sediment of the current step
+  std::vector<Real> forward_;                  // MacCormack: the semi-Lagrangian result it corrects
   std::vector<Fluxes> sent_;                   // sediment or regolith leaving through each pipe, m
   PipeFlows flows_;
   double step_max_cfl_ = 0.0;

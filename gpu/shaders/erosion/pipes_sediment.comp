@@ -3,13 +3,15 @@
 //   flux form (TRANSPORT_FLUX): s = staying + Σ what the neighbours sent this cell through the 4
 //     or 8 pipes, the same numbers they lost, summed (L + R) + (T + B) [+ ((TL + BR) + (TR + BL))];
 //   semi-Lagrangian: s(x) = staying(x - (u, v)·Δt), bilinear, a corner off the grid or on a
-//     no-data cell reading the cell itself; weights ceil(p) - p and p - floor(p);
+//     no-data cell reading the cell itself; weights ceil(p) - p and p - floor(p)
+//     (erosion/pipes_trace.glsl); with TRANSPORT_MACCORMACK the result φ̂ that
+//     pipes_maccormack.comp then corrects;
 //   the regolith (REGOLITH, seed 001 §3.9) the same way, from its own buffers;
 //   evaporation d = d_B·(1 - K_e·Δt) (the diffusion pass, when there is one, reads d_B, not d).
 // Inputs:  PipeBlock (uniform binding 0), cells (1), water (4: d_B), velocity (6), staying (8),
 //          sent (9), regolith_staying (13), regolith_sent (14) (pipes_block.glsl).
 // Outputs: sediment (7), regolith (12), water (4: d after evaporation).
-// Twin:    reference/erosion/pipes.cpp (transport_*, gather_sent, backtraced_sediment, evaporate).
+// Twin:    reference/erosion/pipes.cpp (transport_*, gather_sent, traced_sediment, evaporate).
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/grid.glsl"
 #include "erosion/pipes_block.glsl"
@@ -34,49 +36,7 @@ float gathered(ivec2 cell, uint index, uint flags, int carried) {
   return total;
 }
 #else
-struct AxisTaps {
-  int low;
-  float low_weight;
-  float high_weight;
-};
-
-// Linear interpolation along one axis at a displacement of `displacement` cells, clamped to
-// ±reach; a NaN displacement gives NaN weights (the step check then reports it).
-AxisTaps axis_taps(float displacement) {
-  if (is_nan_bits(displacement)) {
-    float not_a_number = uintBitsToFloat(0x7fc00000u);
-    return AxisTaps(0, not_a_number, not_a_number);
-  }
-  // std::clamp(v, lo, hi) = v < lo ? lo : (hi < v ? hi : v)
-  precise float offset = displacement < -reach ? -reach : (reach < displacement ? reach : displacement);
-  precise float low = floor(offset);
-  precise float high = ceil(offset);
-  if (low == high) return AxisTaps(int(low), 1.0, 0.0);
-  precise float low_weight = high - offset;
-  precise float high_weight = offset - low;
-  return AxisTaps(int(low), low_weight, high_weight);
-}
-
-float kept_at(uint index, int carried) {
-  return carried == carried_sediment ? staying[index] : regolith_staying[index];
-}
-
-float corner(ivec2 cell, uint index, ivec2 offset, int carried) {
-  ivec2 target = cell + offset;
-  if (!inside_grid(target, grid_size)) return kept_at(index, carried);
-  uint target_index = cell_index(target, grid_size);
-  return cell_valid(cells[target_index].flags) ? kept_at(target_index, carried) : kept_at(index, carried);
-}
-
-float backtraced(ivec2 cell, uint index, AxisTaps taps_x, AxisTaps taps_y, int carried) {
-  ivec2 low = ivec2(taps_x.low, taps_y.low);
-  precise float lower_row = taps_x.low_weight * corner(cell, index, low, carried) +
-                            taps_x.high_weight * corner(cell, index, low + ivec2(1, 0), carried);
-  precise float upper_row = taps_x.low_weight * corner(cell, index, low + ivec2(0, 1), carried) +
-                            taps_x.high_weight * corner(cell, index, low + ivec2(1, 1), carried);
-  precise float value = taps_y.low_weight * lower_row + taps_y.high_weight * upper_row;
-  return value;
-}
+#include "erosion/pipes_trace.glsl"
 #endif
 
 void main() {
@@ -101,9 +61,9 @@ void main() {
   precise float displacement_y = -speed.y * backtrace_y;
   AxisTaps taps_x = axis_taps(displacement_x);
   AxisTaps taps_y = axis_taps(displacement_y);
-  sediment[index] = backtraced(cell, index, taps_x, taps_y, carried_sediment);
+  sediment[index] = traced(cell, index, taps_x, taps_y, from_staying).value;
 #ifdef REGOLITH
-  regolith[index] = backtraced(cell, index, taps_x, taps_y, carried_regolith);
+  regolith[index] = traced(cell, index, taps_x, taps_y, from_regolith_staying).value;
 #endif
 #endif
 
