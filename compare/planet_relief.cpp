@@ -183,7 +183,11 @@ void add_spectrum_checks(const RegionRelief& planet, bool earth_like, const std:
 void add_fidelity_checks(const RegionRelief& planet, bool earth_like, const std::optional<ReferenceRelief>& given,
                          const RunOptions& options, CaseResult& result) {
   const auto samples = planet_samples(planet.sphere, planet.elevation);
-  const GlobalRelief relief = weighted_relief(samples, 0.0, 101, 0.1);
+  constexpr double bin_width = 0.1;  // elevation units
+  const double step = planet.lattice_step;
+  const GlobalRelief relief =
+      step > 0.0 ? weighted_relief(samples, 0.0, 101, step * std::ceil(bin_width / step), planet.lattice_offset - step / 2)
+                 : weighted_relief(samples, 0.0, 101, bin_width);
   const double bimodality = bimodality_coefficient(samples);
   std::string reason;
   const auto& earth = given ? given : etopo_relief(options.dataset_dir, reason);

@@ -53,6 +53,11 @@ struct RegionRelief {
   const CubeSphere& sphere;
   const std::vector<double>& positions;
   const std::vector<double>& elevation;
+  // Where every elevation is k·lattice_step + lattice_offset (the fault-line planet's integer
+  // votes), the histogram's bins hold whole lattice steps and their edges lie halfway between
+  // two values; 0: the elevation is continuous.
+  double lattice_step = 0.0;
+  double lattice_offset = 0.0;
 };
 
 void add_fidelity_checks(const RegionRelief& planet, bool earth_like, const std::optional<ReferenceRelief>& given,

@@ -4,6 +4,7 @@
 // the roundings of a few sines and sums (1e-12), and Debian's ETOPO 1° (datasets/fetch.sh).
 #include <netcdf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -134,6 +135,24 @@ TEST(GlobalRelief, BimodalityCoefficientOfKnownDistributions) {
   const GlobalRelief weighted = weighted_relief({{-1.0, 3.0}, {1.0, 1.0}}, 0.0, 3, 1.0);
   EXPECT_DOUBLE_EQ(weighted.land_fraction, 0.25);
   EXPECT_DOUBLE_EQ(weighted.valid_area, 4.0);
+}
+
+// Elevations on a lattice (the fault-line planet's Δ·votes) alias with bins that are not a multiple
+// of its step: 0.1-wide bins over values 0.08·k hold one or two values by turns. Bins of two steps
+// with an edge halfway between two values hold two each, so a flat distribution stays flat.
+TEST(GlobalRelief, LatticeElevationsFillBinsOfWholeStepsEvenly) {
+  const double step = 0.08;
+  std::vector<AreaSample> lattice;
+  for (int k = -30; k <= 29; ++k) lattice.push_back({step * k, 1.0});
+  const auto spread = [](const GlobalRelief& relief) {
+    const auto [least, most] = std::minmax_element(relief.histogram.begin(), relief.histogram.end());
+    return *most - *least;
+  };
+  const GlobalRelief aligned = weighted_relief(lattice, 0.0, 11, 2.0 * step, -step / 2.0);
+  EXPECT_EQ(aligned.histogram.size(), 30u);
+  EXPECT_NEAR(spread(aligned), 0.0, 1e-15);
+  EXPECT_NEAR(aligned.histogram.front(), 2.0 / 60.0, 1e-15);
+  EXPECT_GT(spread(weighted_relief(lattice, 0.0, 11, 0.1)), 0.9 / 60.0) << "the aliasing the edge removes";
 }
 
 std::string refusal_of(const fs::path& file) {

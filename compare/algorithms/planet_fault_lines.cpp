@@ -179,7 +179,9 @@ void run_fault_lines(const FaultPlanetParams& params, const std::optional<Refere
       "votes.uncertain_planes.float", pairs,
       "(region, plane) pairs whose dot lies within the float dot's error of 0: where a float twin may vote otherwise"));
   const std::vector<double> elevation = elevation_of(truth, params.step);
-  add_fidelity_checks({sphere, positions, elevation}, false, given, options, result);
+  // Votes change by 2 with every plane, so Δ·votes lies on the lattice 2Δ·k + Δ·(faults mod 2).
+  add_fidelity_checks({sphere, positions, elevation, 2.0 * params.step, params.step * double(params.faults % 2)}, false,
+                      given, options, result);
   write_elevation_maps({sphere, positions, elevation},
                        reference::nearest_sites(positions, planet_map_directions()), options, result);
   if (!options.gpu_available) {

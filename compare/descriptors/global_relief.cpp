@@ -124,7 +124,8 @@ GlobalRelief global_relief(const GlobalGrid& grid, double sea_level, int points,
   return weighted_relief(area_samples(grid), sea_level, points, bin_width);
 }
 
-GlobalRelief weighted_relief(std::vector<AreaSample> cells, double sea_level, int points, double bin_width) {
+GlobalRelief weighted_relief(std::vector<AreaSample> cells, double sea_level, int points, double bin_width,
+                             double bin_edge) {
   check_relief_options(points, bin_width);
   if (cells.empty()) throw InputError("global relief: no sample");
   std::sort(cells.begin(), cells.end(), [](const AreaSample& a, const AreaSample& b) { return a.elevation < b.elevation; });
@@ -152,7 +153,7 @@ GlobalRelief weighted_relief(std::vector<AreaSample> cells, double sea_level, in
   relief.hypsometry.back() = relief.max;
 
   relief.bin_width = bin_width;
-  relief.histogram_start = std::floor(relief.min / bin_width) * bin_width;
+  relief.histogram_start = bin_edge + std::floor((relief.min - bin_edge) / bin_width) * bin_width;
   relief.histogram.assign(static_cast<std::size_t>(std::floor((relief.max - relief.histogram_start) / bin_width)) + 1, 0.0);
   for (const auto& [height, area] : cells) {
     relief.histogram[static_cast<std::size_t>(std::floor((height - relief.histogram_start) / bin_width))] +=

@@ -14,6 +14,9 @@
 //   hypsometry          the elevation below which each area fraction lies, at fractions 0, 1/(n-1),
 //                       ..., 1 (n = points; the first is min, the last max): the hypsometric curve
 //   histogram           area shares of bins of bin_width from floor(min / bin_width)·bin_width up
+//                       (or, given a bin edge, from the edge on that grid of bins at or below min:
+//                       elevations on a lattice k·q + o bin without aliasing when bin_width is a
+//                       multiple of q and an edge sits at o − q/2, halfway between two of them)
 // Throws InputError when no cell is valid, points < 2 or bin_width <= 0.
 #pragma once
 
@@ -50,7 +53,7 @@ GlobalRelief global_relief(const GlobalGrid& grid, double sea_level = 0.0, int p
 // The same figures of any surface given as (elevation, area) samples with areas > 0 (a generated
 // planet's regions and their solid angles); valid_area is the sum of the areas.
 GlobalRelief weighted_relief(std::vector<AreaSample> samples, double sea_level = 0.0, int points = 101,
-                             double bin_width = 500.0);
+                             double bin_width = 500.0, double bin_edge = 0.0);
 
 // The grid as a function on the unit sphere, for spherical_spectrum.hpp: at direction (x, y, z) the
 // cell whose centre is nearest in latitude asin(z) and in longitude atan2(y, x) (taken round the
