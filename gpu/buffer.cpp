@@ -60,4 +60,19 @@ void StorageBuffer::bind_range(GLuint binding, std::size_t offset, std::size_t b
                     static_cast<GLsizeiptr>(bytes));
 }
 
+std::int64_t storage_block_limit() {
+  GLint64 limit = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+  return limit;
+}
+
+StorageBuffer limited_storage(std::size_t bytes, const std::string& what, std::int64_t limit) {
+  if (bytes > static_cast<std::size_t>(limit)) {
+    throw std::runtime_error(fmt::format("{} need {} bytes, more than this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE of {} "
+                                         "bytes; use a smaller block",
+                                         what, bytes, limit));
+  }
+  return StorageBuffer(bytes);
+}
+
 }  // namespace gt

@@ -12,6 +12,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -73,6 +75,14 @@ class StorageBuffer : public GlBuffer {
   // std::out_of_range.
   void bind_range(GLuint binding, std::size_t offset, std::size_t bytes) const;
 };
+
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE of the current context: the most bytes one storage block may address.
+std::int64_t storage_block_limit();
+
+// A storage buffer of `bytes`, or std::runtime_error when that exceeds `limit` (storage_block_limit()):
+// "<what> need <bytes> bytes, more than this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE of <limit> bytes; use
+// a smaller block", `what` naming the twin and the contents.
+StorageBuffer limited_storage(std::size_t bytes, const std::string& what, std::int64_t limit);
 
 // A GL_UNIFORM_BUFFER holding one std140 block, bound to `layout(std140, binding = N) uniform`.
 class UniformBuffer : public GlBuffer {

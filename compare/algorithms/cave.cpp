@@ -347,25 +347,18 @@ void add_gpu_normals_check(const Block& block, const TriangleMesh<float>& gpu_me
   noise.kernel_radius_squared = params.kernel_radius_squared;
   const double per_sample = noise_arithmetic_bound(noise);
   const double u = unit_roundoff_float;
-  const Permutation permutation = seeded_permutation(params.seed);
+  const auto differences = reference::central_differences<float>(gpu_mesh, params, step);
   std::vector<double> bounds;
-  bounds.reserve(gpu_mesh.positions.size());
-  for (const auto& position : gpu_mesh.positions) {
+  bounds.reserve(differences.size());
+  for (const auto& difference : differences) {
     double squared = 0.0;
-    for (int axis = 0; axis < 3; ++axis) {
-      std::array<float, 3> plus = position, minus = position;
-      plus[axis] = position[axis] + float(step);
-      minus[axis] = position[axis] - float(step);
-      const float difference = reference::cave_density_at<float>(permutation, params, plus[0], plus[1], plus[2]) -
-                               reference::cave_density_at<float>(permutation, params, minus[0], minus[1], minus[2]);
-      squared += double(difference) * double(difference);
-    }
+    for (const float component : difference) squared += double(component) * double(component);
     const double length = std::sqrt(squared);
     const double gap = 2.0 * std::sqrt(3.0) * per_sample + 2.0 * u * length;
     bounds.push_back(length > gap ? std::asin(gap / length) + 6.0 * u : std::numeric_limits<double>::infinity());
   }
   const auto gpu_normals = gpu::central_difference_normals(gpu_mesh.positions, params, step);
-  const auto float_normals = reference::central_difference_normals<float>(gpu_mesh, params, step);
+  const auto float_normals = reference::unit_normals(differences);
   const std::vector<double> angles = reference::normal_angles(gpu_normals, float_normals);
   double worst_ratio = 0.0, largest_angle = 0.0;
   std::size_t ungraded = 0, differing = 0;

@@ -32,13 +32,15 @@ inline State height_state(const Grid<double>& heights) { return {StateGrid::of(h
 // Hands a loaded state's read-only fields to the model; it may keep (or, mutated, hand back) them.
 using ReadInputs = std::function<void(State& loaded)>;
 
-// The state a height stepper holds: the terrain it steps, and the loaded state's other fields.
+// What a height stepper holds beside the terrain it steps: the loaded state's grid and its other
+// fields (the terrain's slot left empty: the stepper keeps the heights in its own type).
 class HeldInputs {
  public:
   explicit HeldInputs(ReadInputs read_inputs) : read_inputs_(std::move(read_inputs)) {}
   void load(const State& state) {
     loaded_ = state;
     if (read_inputs_) read_inputs_(loaded_);
+    loaded_.fields.at(0).clear();
   }
   // The state with `heights` as its terrain and the inputs as held.
   State with_terrain(const Grid<double>& heights) const {

@@ -133,25 +133,15 @@ std::size_t checked_cube_total(const CaveParams& params) {
   return cubes;
 }
 
-std::int64_t storage_block_limit() {
-  GLint64 limit = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
-  return limit;
-}
-
 std::size_t storage_offset_alignment() {
   GLint alignment = 0;
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
   return static_cast<std::size_t>(std::max(alignment, 1));
 }
 
-StorageBuffer limited_storage(std::size_t bytes, const char* contents, std::int64_t limit) {
-  if (bytes > static_cast<std::size_t>(limit)) {
-    throw std::runtime_error(fmt::format("GPU marching tetrahedra: the {} need {} bytes, more than this GL's "
-                                         "GL_MAX_SHADER_STORAGE_BLOCK_SIZE of {} bytes; use a smaller block",
-                                         contents, bytes, limit));
-  }
-  return StorageBuffer(bytes);
+// The block's storage for `contents`, named in the refusal as before.
+StorageBuffer block_storage(std::size_t bytes, const char* contents, std::int64_t limit) {
+  return limited_storage(bytes, fmt::format("GPU marching tetrahedra: the {}", contents), limit);
 }
 
 // `buffer` when it holds at least `bytes`, else a new buffer of that size.
@@ -241,12 +231,12 @@ MarchingTetrahedra::MarchingTetrahedra(const CaveParams& block, EdgePlacement pl
       placement_(placement),
       block_(UniformBuffer::from(block_of(block, placement))),
       noise_(source == DensitySource::noise ? std::optional(noise_pass(block.seed)) : std::nullopt),
-      density_(limited_storage(sample_total_ * sizeof(float), "density samples", storage_block_limit_)),
-      triangle_offsets_(limited_storage((cube_total_ + 1) * sizeof(std::uint32_t), "per-cube triangle offsets",
+      density_(block_storage(sample_total_ * sizeof(float), "density samples", storage_block_limit_)),
+      triangle_offsets_(block_storage((cube_total_ + 1) * sizeof(std::uint32_t), "per-cube triangle offsets",
                                         storage_block_limit_)),
-      vertex_offsets_(limited_storage((cube_total_ + 1) * sizeof(std::uint32_t), "per-cube vertex offsets",
+      vertex_offsets_(block_storage((cube_total_ + 1) * sizeof(std::uint32_t), "per-cube vertex offsets",
                                       storage_block_limit_)),
-      cube_rock_(limited_storage(cube_total_ * sizeof(std::uint32_t), "per-cube rock corners", storage_block_limit_)),
+      cube_rock_(block_storage(cube_total_ * sizeof(std::uint32_t), "per-cube rock corners", storage_block_limit_)),
       cube_cases_(cube_cases_bytes),
       count_program_(cave_program("cave/count.comp")),
       emit_program_(cave_program("cave/emit.comp")),

@@ -4,7 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <stdexcept>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -49,16 +49,11 @@ std::vector<std::array<float, 3>> central_difference_normals(const std::vector<s
                                .kernel_radius_squared = static_cast<float>(params.kernel_radius_squared)};
   const UniformBuffer uniforms = UniformBuffer::from(block);
   const std::size_t bytes = positions.size() * sizeof(positions[0]);
-  GLint64 limit = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
-  if (bytes > static_cast<std::size_t>(limit)) {
-    throw std::runtime_error(fmt::format("GPU cave normals: {} vertices need {} bytes, more than this GL's "
-                                         "GL_MAX_SHADER_STORAGE_BLOCK_SIZE of {} bytes; use a smaller block",
-                                         positions.size(), bytes, limit));
-  }
-  StorageBuffer position_buffer(bytes);
+  const std::int64_t limit = storage_block_limit();
+  const std::string what = fmt::format("GPU cave normals: {} vertices", positions.size());
+  StorageBuffer position_buffer = limited_storage(bytes, what, limit);
   position_buffer.upload(positions.data(), bytes);
-  StorageBuffer normal_buffer(bytes);
+  const StorageBuffer normal_buffer = limited_storage(bytes, what, limit);
   const StorageBuffer permutation = StorageBuffer::from(doubled_permutation(seeded_permutation(params.seed)));
   uniforms.bind(block_binding);
   position_buffer.bind(positions_binding);

@@ -36,15 +36,27 @@ std::array<Real, 3> central_difference(const Permutation& perm, const CaveParams
 }  // namespace
 
 template <class Real>
+std::vector<std::array<Real, 3>> central_differences(const TriangleMesh<Real>& mesh, const CaveParams& params,
+                                                     double step) {
+  const Permutation perm = seeded_permutation(params.seed);
+  std::vector<std::array<Real, 3>> differences;
+  differences.reserve(mesh.positions.size());
+  for (const auto& position : mesh.positions) {
+    differences.push_back(central_difference(perm, params, position, static_cast<Real>(step)));
+  }
+  return differences;
+}
+
+template <class Real>
+std::vector<std::array<Real, 3>> unit_normals(std::vector<std::array<Real, 3>> vectors) {
+  for (auto& vector : vectors) vector = normalised(vector);
+  return vectors;
+}
+
+template <class Real>
 std::vector<std::array<Real, 3>> central_difference_normals(const TriangleMesh<Real>& mesh, const CaveParams& params,
                                                             double step) {
-  const Permutation perm = seeded_permutation(params.seed);
-  std::vector<std::array<Real, 3>> normals;
-  normals.reserve(mesh.positions.size());
-  for (const auto& position : mesh.positions) {
-    normals.push_back(normalised(central_difference(perm, params, position, static_cast<Real>(step))));
-  }
-  return normals;
+  return unit_normals(central_differences(mesh, params, step));
 }
 
 template <class Real>
@@ -79,6 +91,9 @@ std::vector<double> normal_angles(const std::vector<std::array<Real, 3>>& a, con
 }
 
 #define GT_INSTANTIATE_CAVE_NORMALS(Real)                                                                          \
+  template std::vector<std::array<Real, 3>> central_differences(const TriangleMesh<Real>&, const CaveParams&,        \
+                                                                double);                                           \
+  template std::vector<std::array<Real, 3>> unit_normals(std::vector<std::array<Real, 3>>);                         \
   template std::vector<std::array<Real, 3>> central_difference_normals(const TriangleMesh<Real>&, const CaveParams&, \
                                                                        double);                                    \
   template std::vector<std::array<Real, 3>> gradient_normals(const TriangleMesh<Real>&, const CaveParams&);        \

@@ -6,6 +6,8 @@
 //   shifted coordinate computed in Real as p_c ± Real(step). The seed drops the factor 1/(2·step)
 //   and does not normalise (its shader does); here the result is normalised, n / sqrt((n_x² + n_y²)
 //   + n_z²), so the two kinds compare directly. A zero difference gives the zero vector.
+// central_differences<Real>(mesh, params, step = 1.0): those n before normalising (the error model of
+//   the GPU twin's normals reads their lengths); unit_normals(vectors): each normalised as above.
 // gradient_normals<Real>(mesh, params): the analytic gradient of the simplex noise,
 //   ∇f from simplex3_gradient at p·Real(1/scale) (the chain factor 1/scale > 0 does not change the
 //   direction), normalised the same way.
@@ -36,6 +38,13 @@ namespace gt::reference {
 template <class Real>
 std::vector<std::array<Real, 3>> central_difference_normals(const TriangleMesh<Real>& mesh, const CaveParams& params,
                                                             double step = 1.0);
+
+template <class Real>
+std::vector<std::array<Real, 3>> central_differences(const TriangleMesh<Real>& mesh, const CaveParams& params,
+                                                     double step = 1.0);
+
+template <class Real>
+std::vector<std::array<Real, 3>> unit_normals(std::vector<std::array<Real, 3>> vectors);
 
 template <class Real>
 std::vector<std::array<Real, 3>> gradient_normals(const TriangleMesh<Real>& mesh, const CaveParams& params);
