@@ -20,7 +20,8 @@
 //               value at x − (u, v)·Δt of what stayed, corners off the grid or on no data reading
 //               the cell itself
 //   MacCormack  (Selle et al. 2008) that value φ̂ sampled the same way at x + (u, v)·Δt (φ̌); the
-//               cell takes φ̂ + ½(φ − φ̌), φ what stayed, clamped to the four φ that φ̂ read
+//               cell takes φ̂ + ½(φ − φ̌), φ what stayed, clamped to the range of φ over the cell
+//               and its 8 neighbours
 //   flux form   each pipe carries the share f_k·Δt/(d_A·l_x·l_y) of the eroded s (and of r: what the
 //               cell's water moved); a cell keeps s·(1 − min(1, Σ shares)) and gains its neighbours'
 //   diffusion   (seed 001 §3.8, w > 0) s (and r with regolith_diffusion) to the 4 axis neighbours
@@ -206,7 +207,7 @@ std::vector<Real> carried_with_water(const Cells<Real>& cells, const std::vector
 // most the grid's width + height away), a corner off the grid or on no data reading the cell
 // itself. With MacCormack's correction (Selle et al. 2008) that value φ̂ is traced forward, to
 // x + (u, v)·Δt, by the same rule (φ̌), and the cell takes φ̂ + ½(φ − φ̌), φ what stayed,
-// clamped to the least and largest of the four values of φ that φ̂ was interpolated from.
+// clamped to the least and largest φ of the cell and its 8 neighbours (no data: the cell's own).
 template <class Real>
 std::vector<Real> backtraced(const Cells<Real>& cells, const std::vector<Real>& field,
                              const std::vector<Fluxes<Real>>& outflow, const std::vector<Real>& added,
@@ -228,9 +229,6 @@ std::vector<Real> backtraced(const Cells<Real>& cells, const std::vector<Real>& 
     const Real below = floor(offset);
     return std::pair{below, offset - below};  // the lower cell and the weight of the upper one
   };
-  struct Sample {
-    Real value, lowest, highest;
-  };
   // `source` bilinearly at the cell moved by `towards`·(u, v)·Δt (−1 back, +1 forward).
   const auto sample = [&](const std::vector<Real>& source, int x, int y, std::size_t cell, int towards) {
     const auto along = [towards](const Real& velocity) { return towards < 0 ? -velocity : velocity; };
@@ -245,18 +243,23 @@ std::vector<Real> backtraced(const Cells<Real>& cells, const std::vector<Real>& 
     };
     const Real lower_row = (Real(1) - upper_x) * at(0, 0) + upper_x * at(1, 0);
     const Real upper_row = (Real(1) - upper_x) * at(0, 1) + upper_x * at(1, 1);
-    return Sample{(Real(1) - upper_y) * lower_row + upper_y * upper_row,
-                  min(min(at(0, 0), at(1, 0)), min(at(0, 1), at(1, 1))),
-                  max(max(at(0, 0), at(1, 0)), max(at(0, 1), at(1, 1)))};
+    return (Real(1) - upper_y) * lower_row + upper_y * upper_row;
   };
   std::vector<Real> moved = field;
-  cells.each([&](int x, int y, std::size_t cell) { moved[cell] = sample(staying, x, y, cell, -1).value; });
+  cells.each([&](int x, int y, std::size_t cell) { moved[cell] = sample(staying, x, y, cell, -1); });
   if (params.transport != SedimentTransport::maccormack) return moved;
   std::vector<Real> corrected = moved;
   cells.each([&](int x, int y, std::size_t cell) {
-    const Real returned = sample(moved, x, y, cell, +1).value;
-    const Sample read = sample(staying, x, y, cell, -1);
-    corrected[cell] = max(read.lowest, min(read.highest, moved[cell] + Real(0.5) * (staying[cell] - returned)));
+    const Real returned = sample(moved, x, y, cell, +1);
+    Real lowest = staying[cell], highest = staying[cell];
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const Real around = cells.wet(x + dx, y + dy) ? staying[terrain.index(x + dx, y + dy)] : staying[cell];
+        lowest = min(lowest, around);
+        highest = max(highest, around);
+      }
+    }
+    corrected[cell] = max(lowest, min(highest, moved[cell] + Real(0.5) * (staying[cell] - returned)));
   });
   return corrected;
 }

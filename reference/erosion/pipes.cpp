@@ -24,8 +24,13 @@
 //              the same number.
 //              or MacCormack (Selle et al. 2008): φ̂ the semi-Lagrangian result, φ̌ = φ̂ traced
 //              forward, x + (u, v)·Δt, with the same bilinear rule; s = φ̂ + ½(s_A − φ̌), clamped to
-//              the four corners of s_A that φ̂ was interpolated from (the limiter: without it the
-//              correction overshoots, below 0 too, which the step check refuses).
+//              the least and largest s_A of the cell and its 8 neighbours (the limiter: without it
+//              the correction overshoots, below 0 too, which the step check refuses). Decision:
+//              Selle clamps to the four corners the backtrace read; which four switches where the
+//              displacement crosses a whole cell, so an ulp of velocity there moved the result by the
+//              corners' spread and two honest twins disagreed. The 3×3 range holds those corners
+//              (the K scaling keeps the displacement within a cell), does not depend on the
+//              velocity, and keeps the scheme's result a continuous function of it.
 //              The regolith moves with the water the same way (seed 001 §3.9).
 //   6b diffusion (seed 001 §3.8; only when w > 0), of s and r from the state after 6 (r only with
 //              regolith_diffusion, the thesis; seed 001's code diffuses s alone): each cell
@@ -337,8 +342,7 @@ Real PipeErosion<Real>::tilt_sine(int x, int y) const {
 }
 
 template <class Real>
-typename PipeErosion<Real>::Traced PipeErosion<Real>::traced_sediment(const std::vector<Real>& source, int x, int y,
-                                                                     int direction) const {
+Real PipeErosion<Real>::traced_sediment(const std::vector<Real>& source, int x, int y, int direction) const {
   const auto& terrain = state_.terrain;
   const std::size_t cell = terrain.index(x, y);
   const Real reach = static_cast<Real>(terrain.width + terrain.height);
@@ -354,9 +358,7 @@ typename PipeErosion<Real>::Traced PipeErosion<Real>::traced_sediment(const std:
   };
   const Real lower_row = taps_x.low_weight * corner(0, 0) + taps_x.high_weight * corner(1, 0);
   const Real upper_row = taps_x.low_weight * corner(0, 1) + taps_x.high_weight * corner(1, 1);
-  return {taps_y.low_weight * lower_row + taps_y.high_weight * upper_row,
-          min(min(corner(0, 0), corner(1, 0)), min(corner(0, 1), corner(1, 1))),
-          max(max(corner(0, 0), corner(1, 0)), max(corner(0, 1), corner(1, 1)))};
+  return taps_y.low_weight * lower_row + taps_y.high_weight * upper_row;
 }
 
 template <class Real>
@@ -589,7 +591,7 @@ void PipeErosion<Real>::transport_semi_lagrangian(std::vector<Real>& field, Comp
   }
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
-      if (terrain.is_valid(x, y)) field[terrain.index(x, y)] = traced_sediment(scratch_, x, y, -1).value;
+      if (terrain.is_valid(x, y)) field[terrain.index(x, y)] = traced_sediment(scratch_, x, y, -1);
     }
   }
   if (constants_.transport == SedimentTransport::maccormack) maccormack_correction(field);
@@ -597,8 +599,8 @@ void PipeErosion<Real>::transport_semi_lagrangian(std::vector<Real>& field, Comp
 
 // MacCormack's correction of the semi-Lagrangian step `field` (Selle et al. 2008): the forward
 // result φ̂ traced back forward to each cell gives φ̌, and the cell takes φ̂ + ½(φ − φ̌), φ what
-// stayed (scratch_); the limiter clamps that to the range of the four corners φ̂ was interpolated
-// from, where the correction would overshoot (always on: unlimited, it makes negative sediment).
+// stayed (scratch_); the limiter clamps that to the range of φ over the cell and its 8 neighbours
+// (always on: unlimited, it makes negative sediment).
 template <class Real>
 void PipeErosion<Real>::maccormack_correction(std::vector<Real>& field) {
   const auto& terrain = state_.terrain;
@@ -608,12 +610,19 @@ void PipeErosion<Real>::maccormack_correction(std::vector<Real>& field) {
     for (int x = 0; x < terrain.width; ++x) {
       const std::size_t cell = terrain.index(x, y);
       if (!terrain.is_valid(cell)) continue;
-      const Real returned = traced_sediment(forward_, x, y, +1).value;
+      const Real returned = traced_sediment(forward_, x, y, +1);
       const Real correction = Real(0.5) * (scratch_[cell] - returned);
       // Mutant erosion.pipe.maccormack_correction_negated (both twins): the correction subtracted.
       const Real corrected = negated ? forward_[cell] - correction : forward_[cell] + correction;
-      const Traced source = traced_sediment(scratch_, x, y, -1);
-      field[cell] = max(source.lowest, min(source.highest, corrected));
+      Real lowest = scratch_[cell], highest = scratch_[cell];
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + moore_offsets[k].dx, ny = y + moore_offsets[k].dy;
+        const Real around = terrain.inside(nx, ny) && terrain.is_valid(nx, ny) ? scratch_[terrain.index(nx, ny)]
+                                                                                : scratch_[cell];
+        lowest = min(lowest, around);
+        highest = max(highest, around);
+      }
+      field[cell] = max(lowest, min(highest, corrected));
     }
   }
 }

@@ -64,13 +64,8 @@ class PipeErosion {
   Real exterior_share(std::size_t cell, const Fluxes& shares) const;
   Real tilt_sine(int x, int y) const;
   // The bilinear value of `source` at the cell moved by direction·(u, v)·Δt (direction −1: Mei's
-  // backtrace; +1: MacCormack's trace forward) and the least and largest of the four corners read.
-  struct Traced {
-    Real value;
-    Real lowest;
-    Real highest;
-  };
-  Traced traced_sediment(const std::vector<Real>& source, int x, int y, int direction) const;
+  // backtrace; +1: MacCormack's trace forward).
+  Real traced_sediment(const std::vector<Real>& source, int x, int y, int direction) const;
   Fluxes diffusion_shares(int x, int y) const;
 
   void add_water();

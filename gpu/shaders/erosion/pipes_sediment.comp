@@ -61,9 +61,9 @@ void main() {
   precise float displacement_y = -speed.y * backtrace_y;
   AxisTaps taps_x = axis_taps(displacement_x);
   AxisTaps taps_y = axis_taps(displacement_y);
-  sediment[index] = traced(cell, index, taps_x, taps_y, from_staying).value;
+  sediment[index] = traced(cell, index, taps_x, taps_y, from_staying);
 #ifdef REGOLITH
-  regolith[index] = traced(cell, index, taps_x, taps_y, from_regolith_staying).value;
+  regolith[index] = traced(cell, index, taps_x, taps_y, from_regolith_staying);
 #endif
 #endif
 

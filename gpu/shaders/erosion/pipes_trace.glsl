@@ -7,7 +7,7 @@
 // Guarded: two pipe passes include it.
 // Inputs:  PipeBlock (reach), cells (1), sediment (7), staying (8), regolith (12),
 //          regolith_staying (13) (erosion/pipes_block.glsl).
-// Outputs: axis_taps(), traced(): the value and the least and largest corner read.
+// Outputs: axis_taps(), corner(), traced(): the bilinear value.
 // Twin:    reference/erosion/pipes.cpp (axis_taps, traced_sediment).
 #ifndef GT_EROSION_PIPES_TRACE_GLSL
 #define GT_EROSION_PIPES_TRACE_GLSL
@@ -51,22 +51,14 @@ float corner(ivec2 cell, uint index, ivec2 offset, int source) {
   return cell_valid(cells[target_index].flags) ? source_at(target_index, source) : source_at(index, source);
 }
 
-struct Traced {
-  float value;
-  float lowest;
-  float highest;
-};
-
-Traced traced(ivec2 cell, uint index, AxisTaps taps_x, AxisTaps taps_y, int source) {
+float traced(ivec2 cell, uint index, AxisTaps taps_x, AxisTaps taps_y, int source) {
   ivec2 low = ivec2(taps_x.low, taps_y.low);
-  float c00 = corner(cell, index, low, source);
-  float c10 = corner(cell, index, low + ivec2(1, 0), source);
-  float c01 = corner(cell, index, low + ivec2(0, 1), source);
-  float c11 = corner(cell, index, low + ivec2(1, 1), source);
-  precise float lower_row = taps_x.low_weight * c00 + taps_x.high_weight * c10;
-  precise float upper_row = taps_x.low_weight * c01 + taps_x.high_weight * c11;
+  precise float lower_row = taps_x.low_weight * corner(cell, index, low, source) +
+                            taps_x.high_weight * corner(cell, index, low + ivec2(1, 0), source);
+  precise float upper_row = taps_x.low_weight * corner(cell, index, low + ivec2(0, 1), source) +
+                            taps_x.high_weight * corner(cell, index, low + ivec2(1, 1), source);
   precise float value = taps_y.low_weight * lower_row + taps_y.high_weight * upper_row;
-  return Traced(value, ref_min(ref_min(c00, c10), ref_min(c01, c11)), ref_max(ref_max(c00, c10), ref_max(c01, c11)));
+  return value;
 }
 
 #endif
