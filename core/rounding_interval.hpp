@@ -13,9 +13,11 @@
 // gives a non-negative float), so a sum of max(0, ·) terms stays ≥ 0 and a quotient by it is
 // bounded on one side. max and min are monotone and exact on intervals: a branch that switches
 // between two values that meet there (max(0, ·), K = min(1, ·)) is covered whichever way either
-// twin takes it. floor and ceil give their value exactly: their use here, the bilinear weights
-// ceil(p) − p and p − floor(p), carries p's interval, and the interpolation is continuous where
-// floor(p) switches. A constant converted from double (static_cast<Real>(c)) holds c and its float.
+// twin takes it. floor and ceil give their value's floor and ceil exactly; where p's interval holds
+// a whole number, another implementation may take the floor on its other side, so a piecewise
+// formula on floor(p) (the bilinear weights ceil(p) − p and p − floor(p)) is evaluated on every piece
+// floor_range names and the pieces joined with hull (reference/erosion/pipes.cpp's tracing).
+// A constant converted from double (static_cast<Real>(c)) holds c and its float.
 // Comparisons read the values alone: a branch that jumps where one rounding can switch it (a talus
 // threshold, a cell dry in one twin and wet by an ulp in the other) is not covered, which the error
 // models that use this say. A product with an exact 0 is exact (0·∞ is taken as 0: a dry cell's
@@ -26,6 +28,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <utility>
 
 namespace gt {
 
@@ -125,6 +128,13 @@ inline RoundingInterval sqrt(const RoundingInterval& a) {
 }
 
 inline RoundingInterval floor(const RoundingInterval& a) { return RoundingInterval::exact(std::floor(a.value)); }
+// The least and largest floor of a number an implementation may hold within a: one piece each of a
+// formula that switches at whole numbers.
+inline std::pair<double, double> floor_range(const RoundingInterval& a) { return {std::floor(a.low), std::floor(a.high)}; }
+// The interval holding both a and b, with a's value: two pieces either implementation may take.
+inline RoundingInterval hull(const RoundingInterval& a, const RoundingInterval& b) {
+  return RoundingInterval::of(a.value, std::min(a.low, b.low), std::max(a.high, b.high));
+}
 inline RoundingInterval ceil(const RoundingInterval& a) { return RoundingInterval::exact(std::ceil(a.value)); }
 inline bool isnan(const RoundingInterval& a) { return std::isnan(a.value); }
 

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "compare/checks/pipe_error_model.hpp"
+#include "compare/inputs.hpp"
 #include "core/io/heightmap_io.hpp"
 #include "core/params/hydraulic.hpp"
 #include "core/rounding_interval.hpp"
@@ -174,6 +175,24 @@ TEST(PipeShadowModel, BothReferencesStayInsideTheIntervalsOnARealDem) {
   params.time_step = 0.05;
   params.boundary = gt::PipeBoundary::open;
   expect_references_inside(initial, params, {}, 40, "volcano");
+}
+
+// The Jacksboro DEM (74×92 m cells) under 0.1 m of water at Δt = 1 s: the K scaling drives draining
+// cells to a displacement of exactly one cell a step, where one rounding decides which side of the
+// whole cell the backtrace's floor lands on, and the two implementations read different corners. The
+// model joins the bilinear pieces on both sides (core/rounding_interval.hpp: floor_range); with the
+// floor taken as exact, ref<double> fell outside it here (and the GPU in an honest run).
+TEST(PipeShadowModel, BothReferencesStayInsideTheIntervalsWhereDisplacementsMeetWholeCells) {
+  const auto jacksboro = gt::load_input({{"file", "real/jacksboro_fault_dem.npz"}}, nullptr, GT_DATASET_DIR).heights;
+  auto initial = gt::dry_pipe_state(jacksboro);
+  for (auto& depth : initial.water.values) depth = 0.1;
+  HydraulicParams params;
+  params.time_step = 1.0;
+  params.capacity = 0.1;
+  for (auto transport : {gt::SedimentTransport::semi_lagrangian, gt::SedimentTransport::maccormack}) {
+    params.transport = transport;
+    expect_references_inside(initial, params, {}, 24, std::string("jacksboro, ") + gt::sediment_transport_name(transport));
+  }
 }
 
 }  // namespace

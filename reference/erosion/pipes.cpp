@@ -99,6 +99,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -240,11 +242,17 @@ double volume(const Grid<Real>& field, const Grid<Real>& terrain, double cell_ar
   return sum.value();
 }
 
-// Linear interpolation along one axis at a displacement of `offset` cells: the cells floor(offset)
-// and ceil(offset) with weights ceil − offset and offset − floor, each one rounded operation, so a
-// mirrored displacement gives the mirrored weights exactly; an integral offset takes its one cell.
-// The offset is clamped to ±`reach` cells (beyond the grid every corner reads the cell itself); a
-// NaN offset gives NaN weights, which the check after the step reports.
+// The displacement of `velocity` over a step in cells of `length`, clamped to ±`reach` cells
+// (beyond the grid every corner reads the cell itself).
+template <class Real>
+Real axis_offset(const Real& velocity, double time_step, double length, const Real& reach) {
+  return std::clamp(velocity * static_cast<Real>(time_step / length), -reach, reach);
+}
+
+// Linear interpolation along one axis at an offset of `offset` cells, between the cells `low` and
+// low + 1 with weights (low + 1) − offset and offset − low, each one rounded operation, so a
+// mirrored displacement gives the mirrored weights exactly; an offset of exactly `low` takes its one
+// cell. A NaN offset gives NaN weights, which the check after the step reports.
 template <class Real>
 struct AxisTaps {
   int low = 0;
@@ -253,14 +261,51 @@ struct AxisTaps {
 };
 
 template <class Real>
-AxisTaps<Real> axis_taps(Real displacement, Real reach) {
-  const Real not_a_number = std::numeric_limits<Real>::quiet_NaN();
-  if (isnan(displacement)) return {0, not_a_number, not_a_number};
-  const Real offset = std::clamp(displacement, -reach, reach);
-  const Real low = floor(offset);
-  const Real high = ceil(offset);
-  if (low == high) return {static_cast<int>(low), Real(1), Real(0)};
-  return {static_cast<int>(low), high - offset, offset - low};
+bool is_exactly(const Real& offset, int cell) {
+  if constexpr (std::is_same_v<Real, RoundingInterval>) {
+    return offset.width() == 0.0 && offset.value == cell;
+  } else {
+    return offset == static_cast<Real>(cell);
+  }
+}
+
+template <class Real>
+AxisTaps<Real> axis_taps(const Real& offset, int low) {
+  if (isnan(offset)) return {0, std::numeric_limits<Real>::quiet_NaN(), std::numeric_limits<Real>::quiet_NaN()};
+  if (is_exactly(offset, low)) return {low, Real(1), Real(0)};
+  return {low, static_cast<Real>(low + 1) - offset, offset - static_cast<Real>(low)};
+}
+
+// The lower cell of the bilinear piece at `offset`: floor(offset) (0 for NaN, whose weights are NaN).
+template <class Real>
+int lower_cell(const Real& offset) {
+  return isnan(offset) ? 0 : static_cast<int>(floor(offset));
+}
+
+// Every lower cell another implementation may take where this one takes lower_cell (error model,
+// Real = RoundingInterval): the floors over the offset's interval, so a displacement within
+// rounding of a whole cell (at rest, or a draining cell the K scaling moves exactly one cell a step)
+// has the bilinear pieces on both sides of it.
+inline std::pair<int, int> lower_cells(const RoundingInterval& offset) {
+  if (isnan(offset)) return {0, 0};
+  const auto [least, largest] = floor_range(offset);
+  return {static_cast<int>(least), static_cast<int>(largest)};
+}
+
+// `source` bilinearly between the corners the taps name from (x, y); a corner off the grid or on a
+// no-data cell reads the cell (x, y) itself.
+template <class Real>
+Real bilinear(const Grid<Real>& terrain, const std::vector<Real>& source, int x, int y, const AxisTaps<Real>& taps_x,
+              const AxisTaps<Real>& taps_y) {
+  const std::size_t cell = terrain.index(x, y);
+  auto corner = [&](int dx, int dy) {
+    const int cx = x + taps_x.low + dx;
+    const int cy = y + taps_y.low + dy;
+    return terrain.inside(cx, cy) && terrain.is_valid(cx, cy) ? source[terrain.index(cx, cy)] : source[cell];
+  };
+  const Real lower_row = taps_x.low_weight * corner(0, 0) + taps_x.high_weight * corner(1, 0);
+  const Real upper_row = taps_x.low_weight * corner(0, 1) + taps_x.high_weight * corner(1, 1);
+  return taps_y.low_weight * lower_row + taps_y.high_weight * upper_row;
 }
 
 }  // namespace
@@ -346,19 +391,33 @@ Real PipeErosion<Real>::traced_sediment(const std::vector<Real>& source, int x, 
   const auto& terrain = state_.terrain;
   const std::size_t cell = terrain.index(x, y);
   const Real reach = static_cast<Real>(terrain.width + terrain.height);
-  const auto along = [direction](const Real& velocity) { return direction < 0 ? -velocity : velocity; };
-  const auto taps_x = axis_taps(along(state_.velocity_x.values[cell]) *
-                                    static_cast<Real>(constants_.time_step / constants_.length_x), reach);
-  const auto taps_y = axis_taps(along(state_.velocity_y.values[cell]) *
-                                    static_cast<Real>(constants_.time_step / constants_.length_y), reach);
-  auto corner = [&](int dx, int dy) {
-    const int cx = x + taps_x.low + dx;
-    const int cy = y + taps_y.low + dy;
-    return terrain.inside(cx, cy) && terrain.is_valid(cx, cy) ? source[terrain.index(cx, cy)] : source[cell];
+  const auto offset = [&](const Grid<Real>& velocity, double length) {
+    const Real& speed = velocity.values[cell];
+    return axis_offset(direction < 0 ? -speed : speed, constants_.time_step, length, reach);
   };
-  const Real lower_row = taps_x.low_weight * corner(0, 0) + taps_x.high_weight * corner(1, 0);
-  const Real upper_row = taps_x.low_weight * corner(0, 1) + taps_x.high_weight * corner(1, 1);
-  return taps_y.low_weight * lower_row + taps_y.high_weight * upper_row;
+  const Real offset_x = offset(state_.velocity_x, constants_.length_x);
+  const Real offset_y = offset(state_.velocity_y, constants_.length_y);
+  const auto piece = [&](int low_x, int low_y) {
+    return bilinear(terrain, source, x, y, axis_taps(offset_x, low_x), axis_taps(offset_y, low_y));
+  };
+  const Real traced = piece(lower_cell(offset_x), lower_cell(offset_y));
+  if constexpr (std::is_same_v<Real, RoundingInterval>) {
+    const auto [first_x, last_x] = lower_cells(offset_x);
+    const auto [first_y, last_y] = lower_cells(offset_y);
+    // An offset whose interval spans more than two whole cells has lost its displacement to rounding.
+    constexpr int most_floors = 3;
+    if (last_x - first_x >= most_floors || last_y - first_y >= most_floors) {
+      constexpr double infinity = std::numeric_limits<double>::infinity();
+      return RoundingInterval::of(traced.value, -infinity, infinity);
+    }
+    RoundingInterval pieces = traced;
+    for (int low_y = first_y; low_y <= last_y; ++low_y) {
+      for (int low_x = first_x; low_x <= last_x; ++low_x) pieces = hull(pieces, piece(low_x, low_y));
+    }
+    return pieces;
+  } else {
+    return traced;
+  }
 }
 
 template <class Real>
