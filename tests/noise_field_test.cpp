@@ -11,6 +11,7 @@
 #include "tests/support/refusal.hpp"
 
 #include "compare/checks/field.hpp"
+#include "compare/checks/noise_error_model.hpp"
 #include "core/errors.hpp"
 #include "core/params/noise.hpp"
 #include "gpu/noise/noise_field.hpp"
@@ -33,6 +34,7 @@ struct Kind {
 void PrintTo(const Kind& kind, std::ostream* out) { *out << kind.name; }
 
 gt::NoiseParams params_of(const Kind& kind, nlohmann::json given, int width = 45, int height = 37) {
+  if (kind.fractal != Fractal::none && kind.basis != NoiseBasis::perlin3) given["basis"] = gt::noise_basis_name(kind.basis);
   const auto specs = kind.fractal == Fractal::none ? gt::noise_param_specs(kind.basis) : gt::fractal_param_specs(kind.fractal);
   return gt::noise_params_from_json(kind.basis, kind.fractal, gt::resolve_params(kind.name, specs, given), width, height);
 }
@@ -46,6 +48,12 @@ const Kind kinds[] = {
     {NoiseBasis::perlin3, Fractal::fbm, "fbm"},
     {NoiseBasis::perlin3, Fractal::ridged, "ridged"},
     {NoiseBasis::perlin3, Fractal::hetero_terrain, "hetero_terrain"},
+    {NoiseBasis::voronoi_f1, Fractal::none, "voronoi_f1"},
+    {NoiseBasis::voronoi_f4, Fractal::none, "voronoi_f4"},
+    {NoiseBasis::voronoi_f2f1, Fractal::none, "voronoi_f2f1"},
+    {NoiseBasis::voronoi_crackle, Fractal::none, "voronoi_crackle"},
+    {NoiseBasis::cell_noise, Fractal::none, "cell_noise"},
+    {NoiseBasis::voronoi_f2, Fractal::hetero_terrain, "hetero_terrain_voronoi_f2"},
 };
 
 class NoiseFieldGpu : public gt::testing::GlTestWithParam<Kind> {};
@@ -111,6 +119,40 @@ TEST_P(NoiseOriginReduction, IsAPeriodOfTheNoise) {
 
 INSTANTIATE_TEST_SUITE_P(Kinds, NoiseOriginReduction, ::testing::ValuesIn(kinds),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// The cellular bases jump where a coordinate crosses a lattice plane. On a grid whose samples meet
+// planes in exact arithmetic (origin (0.3, −2.7), step 0.3) ref<float>'s coordinate lands an ulp on
+// the other side of some: every sample where ref<float> and ref<double> then differ by more than the
+// precision bound was marked from the coordinates alone, and the marks are a small part of the grid.
+TEST(NoisePrecision, TheCellularJumpsAreFoundFromTheCoordinatesBeforeTheTwinsRun) {
+  // Voronoi distances jump only where the k-th nearest of the 27 cells' points lies beyond
+  // distance 1, so F4 shows fewer jumps than cell noise, which jumps at every plane.
+  const struct {
+    Kind kind;
+    int fewest_jumps;
+  } grids[] = {{{NoiseBasis::cell_noise, Fractal::none, "cell_noise"}, 50},
+               {{NoiseBasis::voronoi_f4, Fractal::none, "voronoi_f4"}, 5},
+               {{NoiseBasis::cell_noise, Fractal::fbm, "fbm_cell_noise"}, 50}};
+  for (const auto& [kind, fewest_jumps] : grids) {
+    const auto params = params_of(kind, {{"step", 0.3}, {"origin_x", 0.3}, {"origin_y", -2.7}, {"origin_z", 0.5}}, 160, 128);
+    const auto marked = gt::lattice_jump_samples(params);
+    ASSERT_EQ(marked.size(), std::size_t{160 * 128}) << kind.name;
+    const auto truth = gt::reference::noise_field<double>(params, params.sampling.origin);
+    const auto in_float = gt::reference::noise_field<float>(params, gt::reduced_origin(params));
+    const double bound = gt::noise_precision_bound(params, gt::largest_coordinate(params));
+    int jumps = 0, unmarked_jumps = 0, marks = 0;
+    for (std::size_t sample = 0; sample < marked.size(); ++sample) {
+      marks += marked[sample];
+      if (std::abs(truth.values[sample] - static_cast<double>(in_float.values[sample])) <= bound) continue;
+      ++jumps;
+      unmarked_jumps += marked[sample] == 0 ? 1 : 0;
+    }
+    EXPECT_GE(jumps, fewest_jumps) << kind.name << ": too few jumps on this grid, the test proves little";
+    EXPECT_EQ(unmarked_jumps, 0) << kind.name;
+    EXPECT_LT(marks, static_cast<int>(marked.size()) / 5) << kind.name;
+  }
+  EXPECT_TRUE(gt::lattice_jump_samples(params_of(kinds[3], {{"step", 0.3}, {"origin_x", 0.3}})).empty());
+}
 
 TEST(NoiseParams, BadFractalParametersAreRefused) {
   const Kind fbm{NoiseBasis::perlin3, Fractal::fbm, "noise.fbm"};

@@ -1,7 +1,7 @@
 // The noise family's own checks that compare the double reference with something outside it
 // (compare/algorithms/noise.cpp): spec.lattice_gradient (Perlin 2002's and Gustavson 2005's
-// gradient tables at lattice vertices) and spec.octave_sum (Musgrave's fractal sums written out
-// with closed-form weights). Each passes on the references as written and fails under the
+// gradient tables at lattice vertices), spec.octave_sum (Musgrave's fractal sums written out
+// with closed-form weights) and spec.cellular (the cellular bases written out from their definition). Each passes on the references as written and fails under the
 // both-twins mutant it exists to kill (issue 11), so neither can pass whatever the reference does.
 #include <string>
 #include <vector>
@@ -82,6 +82,12 @@ const Probe probes[] = {
     {"noise.fbm", R"({"step": 0.1, "octaves": 3.5, "lacunarity": 2.7, "gain": 0.6})", "spec.octave_sum.cpu",
      "noise.fbm.gain_before_sample"},
     {"noise.ridged", R"({"step": 0.1, "octaves": 4})", "spec.octave_sum.cpu", "noise.ridged.unclamped_weight"},
+    {"noise.voronoi_f2", R"({"step": 0.1})", "spec.cellular.cpu", "noise.voronoi.squared_distance"},
+    {"noise.voronoi_crackle", R"({"step": 0.1, "seed": 5, "origin_z": 3.3})", "spec.cellular.cpu",
+     "noise.voronoi.squared_distance"},
+    {"noise.cell_noise", R"({"step": 0.3})", "spec.cellular.cpu", "noise.cell.value_from_jitter_hash"},
+    {"noise.hetero_terrain", R"({"step": 0.1, "basis": "voronoi_f1"})", "spec.cellular.cpu",
+     "noise.voronoi.squared_distance"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Noise, NoiseSpecCheck, ::testing::ValuesIn(probes));
@@ -90,6 +96,11 @@ INSTANTIATE_TEST_SUITE_P(Noise, NoiseSpecCheck, ::testing::ValuesIn(probes));
 // defaults (lacunarity 3: the running product rounds, the closed form does not) and a fraction.
 TEST(NoiseSpecCheck, HeteroTerrainFollowsItsFormula) {
   EXPECT_EQ(outcome_of("noise.hetero_terrain", {{"step", 0.1}, {"lacunarity", 3.0}, {"octaves", 3.4}},
+                       "spec.octave_sum.cpu"),
+            gt::Outcome::pass);
+  // Over cell noise, on a grid whose points meet lattice planes (the octave points p·3^k and the
+  // running products may fall on either side: those points are left out).
+  EXPECT_EQ(outcome_of("noise.hetero_terrain", {{"step", 0.3}, {"origin_x", 0.3}, {"origin_y", -2.7}, {"basis", "cell_noise"}},
                        "spec.octave_sum.cpu"),
             gt::Outcome::pass);
 }

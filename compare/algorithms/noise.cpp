@@ -21,6 +21,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -46,7 +48,7 @@ double float_grid_extent(const NoiseParams& params) {
 }
 
 // A bound on |value| of the function: its terms' scale times the octaves' weights.
-double value_scale(const NoiseParams& params) { return traits_of(params.basis).arithmetic_terms * octave_sums(params).first; }
+double value_scale(const NoiseParams& params) { return traits_of(params.basis).largest_value * octave_sums(params).first; }
 
 // Seed 001's tile blends four values with weights that sum to 1, so each sample's error carries
 // over at most once; the blend itself rounds the weights (c = i·(1/W) and 1 − c, both twins alike)
@@ -82,11 +84,16 @@ FieldTwin::GeneratedField noise_bounds(const NoiseParams& params) {
   const double arithmetic = noise_arithmetic_bound(params) + tile_blend_bound(params);
   // float_grid_extent reaches one grid further along x and y where the field is tileable.
   const double precision = noise_precision_bound(params, float_grid_extent(params)) + tile_blend_bound(params);
-  return {{arithmetic, arithmetic, "same float operations in the same order, no division: 8u per term"},
+  return {{arithmetic, arithmetic,
+           is_cellular(params.basis) ? "same float operations in the same order, the square root's licence apart"
+                                     : "same float operations in the same order, no division: 8u per term"},
           {precision, precision,
            fmt::format("float coordinates up to |x| = {:.4g} (2u·|x|·lipschitz), arithmetic, and {:.3g} for "
                        "simplex corners the kernel switches at boundaries: an upper bound, no warn band",
-                       float_grid_extent(params), switched_contribution(params) * weights)}};
+                       float_grid_extent(params), switched_contribution(params) * weights)},
+          lattice_jump_samples(params),
+          "where a rounding may move a coordinate across a lattice plane and the cellular basis jumps there (found "
+          "from the coordinates before any twin ran)"};
 }
 
 // Terrain synthesis: height = base + amplitude·value, in the twin's own precision (so the float
@@ -156,18 +163,39 @@ void add_lattice_spec(const NoiseParams& params, const nlohmann::json& expect, C
                                                     count, size, expected)));
 }
 
-// Basis functions and normalised fBm stay inside [-1, 1] (the seeds' claim) and have mean 0 (their
-// gradient sets are symmetric). The mean of N_eff ≈ (extent in lattice units)² roughly
+// The largest |value| of a basis (and of normalised fBm over it). The lattice noises stay inside
+// [-1, 1] (the seeds' claim); the texture variant's decoded gradients are 256/255 too long and
+// biased by up to 1/255·0.44 (reference/noise/perlin_texture.hpp): [-1.0056, 1.0056]. The cellular
+// bases (reference/noise/cellular.hpp): F1 <= sqrt(3) (the own cell's point), so 2·F1 − 1 <= 2.4641;
+// F2..F4 and F2 − F1 <= sqrt(4.25) (the own cell's and the three nearest face neighbours' points),
+// so <= 3.1232; crackle and cell noise stay in [-1, 1].
+double largest_basis_value(NoiseBasis basis) {
+  switch (basis) {
+    case NoiseBasis::perlin3_texture: return 256.0 / 255.0 + 0.0017;
+    case NoiseBasis::voronoi_f1: return 2.0 * std::sqrt(3.0) - 1.0;
+    case NoiseBasis::voronoi_f2:
+    case NoiseBasis::voronoi_f3:
+    case NoiseBasis::voronoi_f4:
+    case NoiseBasis::voronoi_f2f1: return 2.0 * std::sqrt(4.25) - 1.0;
+    default: return 1.0;
+  }
+}
+
+// Basis functions and normalised fBm stay inside their range and, but for the Voronoi distances,
+// have mean 0 (gradient sets and cell values are symmetric). The mean of N_eff ≈ (extent in lattice units)² roughly
 // independent cells has standard deviation σ/sqrt(N_eff): bound 4σ/sqrt(N_eff).
 void add_distribution_checks(const NoiseParams& params, const Grid<double>& field, CaseResult& result) {
   if (params.fractal == Fractal::ridged || params.fractal == Fractal::hetero_terrain) return;
   const auto totals = field_totals(field);
   const double largest = std::max(std::abs(totals.low), std::abs(totals.high));
-  // The texture variant's decoded gradients are 256/255 too long and biased by up to 1/255·0.44
-  // (reference/noise/perlin_texture.hpp): its range is [-1.0056, 1.0056].
-  const double limit = params.basis == NoiseBasis::perlin3_texture ? 256.0 / 255.0 + 0.0017 : 1.0;
+  const double limit = largest_basis_value(params.basis);
   result.checks.push_back(bounded_check("spec.range.cpu", largest, limit, std::nullopt,
                                         fmt::format("max |value| <= {:.4g}", limit)));
+  if (is_cellular(params.basis) && params.basis != NoiseBasis::cell_noise) {
+    result.checks.push_back(not_applicable_check(
+        "spec.mean.cpu", "distances to feature points are not centred: 2·F − 1 has no mean of 0 to hold"));
+    return;
+  }
   const double cells = static_cast<double>(totals.cells);
   const double mean = totals.sum / cells;
   const double deviation = std::sqrt(std::max(0.0, totals.sum_squares / cells - mean * mean));
@@ -306,6 +334,78 @@ void add_lattice_gradient_check(const NoiseParams& params, CaseResult& result) {
                   perlin ? "g" : "scale·r²⁴·g", lattice_high - lattice_low + 1, dimension, lattice_low, lattice_high)));
 }
 
+// The cellular bases written out from their definition (reference/noise/cellular.hpp states it; this
+// transcription is the check's own): every feature point of the 27 cells around floor(p) placed in
+// absolute coordinates, their distances to p sorted, Blender's signed variant of the basis.
+double transcribed_cellular(const Permutation& perm, NoiseBasis basis, const std::array<double, 4>& point) {
+  const auto entry = [&perm](int index) { return static_cast<int>(perm[static_cast<unsigned>(index) & 255u]); };
+  const auto hash = [&entry](int x, int y, int z) { return entry(entry(entry(x) + (y & 255)) + (z & 255)); };
+  const std::array<int, 3> cell = {static_cast<int>(std::floor(point[0])), static_cast<int>(std::floor(point[1])),
+                                   static_cast<int>(std::floor(point[2]))};
+  if (basis == NoiseBasis::cell_noise) return (entry(hash(cell[0], cell[1], cell[2]) + 128) + 0.5) / 128.0 - 1.0;
+  std::vector<double> distances;
+  for (int dz = -1; dz <= 1; ++dz) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::array<int, 3> neighbour = {cell[0] + dx, cell[1] + dy, cell[2] + dz};
+        const int h = hash(neighbour[0], neighbour[1], neighbour[2]);
+        double squared = 0.0;
+        for (int axis = 0; axis < 3; ++axis) {
+          const double feature = neighbour[axis] + (entry(h + 85 * axis) + 0.5) / 256.0;
+          squared += (point[axis] - feature) * (point[axis] - feature);
+        }
+        distances.push_back(std::sqrt(squared));
+      }
+    }
+  }
+  std::sort(distances.begin(), distances.end());
+  switch (basis) {
+    case NoiseBasis::voronoi_f2: return 2.0 * distances[1] - 1.0;
+    case NoiseBasis::voronoi_f3: return 2.0 * distances[2] - 1.0;
+    case NoiseBasis::voronoi_f4: return 2.0 * distances[3] - 1.0;
+    case NoiseBasis::voronoi_f2f1: return 2.0 * (distances[1] - distances[0]) - 1.0;
+    case NoiseBasis::voronoi_crackle: return 2.0 * std::min(1.0, 10.0 * (distances[1] - distances[0])) - 1.0;
+    default: return 2.0 * distances[0] - 1.0;
+  }
+}
+
+// spec.cellular.cpu: the double reference's basis against transcribed_cellular at up to 400 grid
+// points (the basis alone where a fractal sums it). Error model: both evaluate the same double
+// point, so the same 27 cells; they differ by rounding only. The transcription's p − (n + j) rounds
+// twice on coordinates up to |p| + 2, the reference's (p − floor p) − (o + j) once more: 4u·(|p| + 2)
+// per axis and distance, plus the rest of the distance's arithmetic, 11u·2.062 (traits_of); the
+// signed variants multiply a distance's error by 2 (F_k), 4 (F2 − F1) or 40 (crackle), plus
+// 8u of rounding on the result. Cell noise is exact in both.
+void add_cellular_check(const NoiseParams& params, CaseResult& result) {
+  if (!is_cellular(params.basis)) return;
+  NoiseParams basis_params = params;
+  basis_params.fractal = Fractal::none;
+  constexpr double u = 0x1p-53;
+  const double distance_error = u * (4.0 * (largest_coordinate(params) + 2.0) + 11.0 * 2.062);
+  const double bound = params.basis == NoiseBasis::cell_noise ? 0.0
+                                                               : traits_of(params.basis).lipschitz * distance_error + 8.0 * u;
+  const Permutation perm = seeded_permutation(params.seed);
+  const auto& sampling = params.sampling;
+  const int stride = std::max(1, static_cast<int>(std::sqrt(double(sampling.width) * sampling.height / 400.0)));
+  double worst = 0.0;
+  for (int j = 0; j < sampling.height; j += stride) {
+    for (int i = 0; i < sampling.width; i += stride) {
+      std::array<double, 4> point = sampling.origin;
+      point[0] += i * sampling.step;
+      point[1] += j * sampling.step;
+      worst = std::max(worst, std::abs(reference::noise_at(basis_params, point) -
+                                       transcribed_cellular(perm, params.basis, point)));
+    }
+  }
+  result.checks.push_back(bounded_check(
+      "spec.cellular.cpu", worst, bound, std::nullopt,
+      fmt::format("largest |ref<double> − the definition written out| ({}: {}) over the grid's points; bound: the two "
+                  "evaluations' roundings",
+                  noise_basis_name(params.basis),
+                  params.basis == NoiseBasis::cell_noise ? "the cell's value from its hash, exact in both"
+                                                         : "the 27 cells' feature points, their distances sorted")));
+}
+
 // Musgrave's fractal sums written out from their published formulas (reference/noise/fractal.hpp
 // states them; this transcription is the check's own): octave k samples the basis b at p·λ^k with
 // weights as closed-form powers, where the twins keep running products.
@@ -354,6 +454,23 @@ double octave_sum(const NoiseParams& params, const std::array<double, 4>& point)
   return reference::noise_at(basis_params, point);
 }
 
+// Whether a point's octave points, formed as octave_sum forms them (p·λ^k) and as the references do
+// (running products), lie in different lattice cells at some octave: a cellular basis jumps between
+// them, by up to its whole range.
+bool octave_cells_differ(const NoiseParams& params, const std::array<double, 4>& point) {
+  if (!is_cellular(params.basis)) return false;
+  const auto& fractal = params.fractal_params;
+  std::array<double, 3> running = {point[0], point[1], point[2]};
+  for (int octave = 0; octave < static_cast<int>(std::ceil(fractal.octaves)); ++octave) {
+    const double frequency = std::pow(fractal.lacunarity, octave);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (std::floor(point[axis] * frequency) != std::floor(running[axis])) return true;
+      running[axis] = running[axis] * fractal.lacunarity;
+    }
+  }
+  return false;
+}
+
 // spec.octave_sum: the double reference's fractal sum against octave_sum at up to 400 grid points.
 // Error model: the two differ only by rounding. The octave point p·λ^k is rounded once here and k
 // times by the running product (relative (k + 1)·u, u = 2^-53), weights likewise; octave_sums gives
@@ -371,17 +488,26 @@ void add_octave_sum_check(const NoiseParams& params, CaseResult& result) {
   const auto& sampling = params.sampling;
   const int stride = std::max(1, static_cast<int>(std::sqrt(double(sampling.width) * sampling.height / 400.0)));
   double worst = 0.0;
+  int left_out = 0, compared = 0;
   for (int j = 0; j < sampling.height; j += stride) {
     for (int i = 0; i < sampling.width; i += stride) {
       std::array<double, 4> point = sampling.origin;
       point[0] += i * sampling.step;
       point[1] += j * sampling.step;
+      if (octave_cells_differ(params, point)) {
+        ++left_out;
+        continue;
+      }
+      ++compared;
       worst = std::max(worst, std::abs(reference::noise_at(params, point) - octave_sum(params, point)));
     }
   }
+  const std::string jumps =
+      left_out == 0 ? "" : fmt::format("; {} of {} points left out, where the two octave points lie in different lattice "
+                                       "cells and the cellular basis jumps between them", left_out, left_out + compared);
   result.checks.push_back(bounded_check("spec.octave_sum.cpu", worst, bound, std::nullopt,
                                         "fractal sum vs Musgrave's formula written out with closed-form weights "
-                                        "(rounding of running products vs powers)"));
+                                        "(rounding of running products vs powers)" + jumps));
 }
 
 struct WalkPoint {
@@ -452,6 +578,12 @@ Check walk_acceptance_check(const std::string& name, const std::vector<WalkPoint
 
 void add_walk(const NoiseParams& params, const nlohmann::json& expect, const RunOptions& options, CaseResult& result) {
   if (!expect.contains("walk")) return;
+  if (is_cellular(params.basis)) {
+    result.checks.push_back(not_applicable_check(
+        "parity.walk_model", "a cellular basis jumps by up to its range where a rounding moves a coordinate across a "
+                             "lattice plane, which grows likelier with |x|: a walk's largest error would be a jump"));
+    return;
+  }
   if (options.progress != nullptr) options.progress->stage("walk away from the origin");
   NoiseParams direct = params, remedied = params;
   direct.reduce_origin = false;
@@ -509,6 +641,7 @@ PreparedTwin prepare_noise(NoiseBasis basis, Fractal fractal, const nlohmann::js
     add_gradient_check(params, result);
     add_lattice_gradient_check(params, result);
     add_octave_sum_check(params, result);
+    add_cellular_check(params, result);
     if (!expect.is_object()) return;
     add_point_spec(params, expect, result);
     add_lattice_spec(params, expect, result);
@@ -535,6 +668,21 @@ constexpr NoiseAlgorithm noise_table[] = {
     {"noise.perlin3", NoiseBasis::perlin3, Fractal::none, "improved Perlin noise, 3-D", "Perlin 2002 via seed 002 §4.4.3"},
     {"noise.perlin3_texture", NoiseBasis::perlin3_texture, Fractal::none,
      "texture-based GLSL Perlin noise with its inexact gradient decode", "Gustavson 2004 via seed 004 §2.1"},
+    {"noise.voronoi_f1", NoiseBasis::voronoi_f1, Fractal::none,
+     "Voronoi F1: 2·(distance to the nearest feature point) − 1, one point per lattice cell",
+     "Worley 1996 as Blender's VORONOI_F1 (seed 001 §3.18)"},
+    {"noise.voronoi_f2", NoiseBasis::voronoi_f2, Fractal::none, "Voronoi F2: the second nearest feature point",
+     "Worley 1996 as Blender's VORONOI_F2 (seed 001 §3.18)"},
+    {"noise.voronoi_f3", NoiseBasis::voronoi_f3, Fractal::none, "Voronoi F3: the third nearest feature point",
+     "Worley 1996 as Blender's VORONOI_F3 (seed 001 §3.18)"},
+    {"noise.voronoi_f4", NoiseBasis::voronoi_f4, Fractal::none, "Voronoi F4: the fourth nearest feature point",
+     "Worley 1996 as Blender's VORONOI_F4 (seed 001 §3.18)"},
+    {"noise.voronoi_f2f1", NoiseBasis::voronoi_f2f1, Fractal::none, "Voronoi F2 − F1: the cells' borders",
+     "Worley 1996 as Blender's VORONOI_F2F1 (seed 001 §3.18)"},
+    {"noise.voronoi_crackle", NoiseBasis::voronoi_crackle, Fractal::none,
+     "Voronoi crackle: min(1, 10·(F2 − F1)), thin dark cracks", "Blender's VORONOI_CRACKLE (seed 001 §3.18)"},
+    {"noise.cell_noise", NoiseBasis::cell_noise, Fractal::none, "cell noise: one random value per lattice cell",
+     "Blender's CELLNOISE (seed 001 §3.18)"},
     {"noise.fbm", NoiseBasis::perlin3, Fractal::fbm, "fractal Brownian motion, normalised by the sum of weights",
      "seed 002 §4.4.3 normalizedOctaveNoise3D; seed 004 §2.2.4"},
     {"noise.ridged", NoiseBasis::perlin3, Fractal::ridged, "Musgrave's ridged multifractal", "Musgrave 1994 (Blender)"},

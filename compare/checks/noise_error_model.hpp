@@ -10,9 +10,15 @@
 //     magnitude and each carries a few roundings: 8u·terms (times the fractal's weights);
 //   kernel 0.6: corners the kernel reaches beyond their simplex switch when a rounding moves a
 //     coordinate across a boundary (switched_contribution).
+//   cellular bases: continuous between lattice planes (the sorted distances are 1-Lipschitz), and
+//     a jump of up to their whole range where a rounding moves a coordinate across one, which no
+//     bound covers: those samples are found before any twin runs (lattice_jump_samples) and left
+//     out of the comparisons with ref<double>.
 #pragma once
 
+#include <cstdint>
 #include <utility>
+#include <vector>
 
 #include "core/params/noise.hpp"
 
@@ -23,13 +29,14 @@ struct NoiseTraits {
   double arithmetic_terms;  // output scale x corner contributions
   double scale;             // output scale of a simplex sum (70, 32, 27); 0 for Perlin
   double gradient_length;   // |g| of the simplex gradient set: sqrt(2) in 3-D, sqrt(3) in 4-D
+  double largest_value;     // a bound on |value| (the blend's and the scaling's roundings scale with it)
 };
 
 // Largest gradient norms over 10^6 uniform random points of [0, 256)^d with Perlin's table, from
 // the double references' analytic gradients (central differences, h = 1e-6, over 2·10^5 points for
 // simplex4 and the texture variant), rounded up by 25 %: simplex2 7.33 -> 9.2; simplex3 6.38
 // (kernel 0.6; 2.90 with 0.5) -> 8.0; simplex4 11.07 (0.6; 2.90 with 0.5) -> 13.9; perlin3 3.12
-// and the texture variant 3.10 -> 3.9.
+// and the texture variant 3.10 -> 3.9. The cellular bases' are derived in noise_error_model.cpp.
 NoiseTraits traits_of(NoiseBasis basis);
 
 // Σ_k weight_k and Σ_k weight_k·lacunarity^k of a fractal sum (1 and 1 for a single function):
@@ -46,6 +53,16 @@ double switched_contribution(const NoiseParams& params);
 // The arithmetic term alone: 8u·terms·Σweights. It is also the GPU-vs-float bound (the same float
 // operations in the same order, no division).
 double noise_arithmetic_bound(const NoiseParams& params);
+
+// The samples (row-major, 1 = left out) of a cellular basis, alone or in a fractal sum, whose value
+// may jump between ref<double> and a float implementation: where, at some octave k and axis of one
+// of the sample's points (four where tileable), the float twins' coordinate (formed as they form
+// it: float(reduced origin) + float(i)·float(step), times float(lacunarity) per octave, shifted back
+// by the reduction's period) and ref<double>'s have different floors, or ref<double>'s lies within
+// (3 + k)·u·extent·lacunarity^k of a lattice plane without lying on it (another implementation's
+// rounding may put it on the other side; extent: the float twins' largest |coordinate|, u = 2^-24).
+// Empty for the continuous bases.
+std::vector<std::uint8_t> lattice_jump_samples(const NoiseParams& params);
 
 // The float-vs-double bound of `params`' function at float coordinates up to |x| = extent: the
 // three terms above, summed (strict; an upper bound).

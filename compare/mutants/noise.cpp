@@ -28,6 +28,13 @@ std::vector<Mutant> noise_mutants() {
       {"noise.fbm.gpu_octave_shift", MutantKind::one_twin,
        "GLSL fBm starts at p·lacunarity: every octave one lacunarity too high",
        {"noise.fbm.perlin3"}},
+      {"noise.voronoi.gpu_jitter_uncentred", MutantKind::one_twin,
+       "GLSL places each cell's feature point at P/256 instead of (P + 1/2)/256: every point half a 1/256 step "
+       "towards the cell's corner",
+       {"noise.voronoi_f1.near_origin", "terrain.hetero_terrain.voronoi_f2f1"}},
+      {"noise.cell.gpu_unit_interval", MutantKind::one_twin,
+       "GLSL cell noise returns the unsigned value (P + 1/2)/256 instead of 2·that − 1",
+       {"noise.cell_noise.near_origin"}},
       // The calibrated pair of the float precision model (parity.max_abs.float_vs_double: 4.42e-05
       // on this case): both float twins' samples 2^-13 high (1.22e-04, 2.8 times the bound) are
       // killed; 2^-17 high (7.6e-06 on top of the honest 4.1e-06) survive.
@@ -61,6 +68,14 @@ std::vector<Mutant> noise_mutants() {
       {"noise.ridged.unclamped_weight", MutantKind::both_twins,
        "the ridged multifractal's weight feedback signal·gain is not clamped to [0, 1] in both twins",
        {"noise.ridged.perlin3"}},
+      {"noise.voronoi.squared_distance", MutantKind::both_twins,
+       "both twins rank and return squared distances to the feature points (Blender's \"distance squared\" metric "
+       "taken for the Euclidean one)",
+       {"noise.voronoi_f2.near_origin", "terrain.hetero_terrain.voronoi_f2f1"}},
+      {"noise.cell.value_from_jitter_hash", MutantKind::both_twins,
+       "both twins read cell noise's value from the entry of the feature point's x jitter, P[h], instead of its own, "
+       "P[h + 128]",
+       {"noise.cell_noise.near_origin"}},
   };
 }
 

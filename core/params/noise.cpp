@@ -39,8 +39,12 @@ std::array<double, 4> reduced_simplex_origin(const std::array<double, 4>& origin
   return reduced;
 }
 
-constexpr Choice<NoiseBasis> fractal_basis_choices[] = {{"perlin3", NoiseBasis::perlin3},
-                                                        {"simplex3", NoiseBasis::simplex3}};
+constexpr Choice<NoiseBasis> fractal_basis_choices[] = {
+    {"perlin3", NoiseBasis::perlin3},           {"simplex3", NoiseBasis::simplex3},
+    {"voronoi_f1", NoiseBasis::voronoi_f1},     {"voronoi_f2", NoiseBasis::voronoi_f2},
+    {"voronoi_f3", NoiseBasis::voronoi_f3},     {"voronoi_f4", NoiseBasis::voronoi_f4},
+    {"voronoi_f2f1", NoiseBasis::voronoi_f2f1}, {"voronoi_crackle", NoiseBasis::voronoi_crackle},
+    {"cell_noise", NoiseBasis::cell_noise}};
 constexpr const char* origin_names[] = {"origin_x", "origin_y", "origin_z", "origin_w"};
 
 // Where the samples lie: the permutation, the step and the origin on each of `dimension` axes.
@@ -124,8 +128,28 @@ const char* noise_basis_name(NoiseBasis basis) {
     case NoiseBasis::simplex4: return "simplex4";
     case NoiseBasis::perlin3: return "perlin3";
     case NoiseBasis::perlin3_texture: return "perlin3_texture";
+    case NoiseBasis::voronoi_f1: return "voronoi_f1";
+    case NoiseBasis::voronoi_f2: return "voronoi_f2";
+    case NoiseBasis::voronoi_f3: return "voronoi_f3";
+    case NoiseBasis::voronoi_f4: return "voronoi_f4";
+    case NoiseBasis::voronoi_f2f1: return "voronoi_f2f1";
+    case NoiseBasis::voronoi_crackle: return "voronoi_crackle";
+    case NoiseBasis::cell_noise: return "cell_noise";
   }
   return "?";
+}
+
+bool is_cellular(NoiseBasis basis) {
+  switch (basis) {
+    case NoiseBasis::voronoi_f1:
+    case NoiseBasis::voronoi_f2:
+    case NoiseBasis::voronoi_f3:
+    case NoiseBasis::voronoi_f4:
+    case NoiseBasis::voronoi_f2f1:
+    case NoiseBasis::voronoi_crackle:
+    case NoiseBasis::cell_noise: return true;
+    default: return false;
+  }
 }
 
 ParamTable<NoiseParams> noise_param_table(NoiseBasis basis, Fractal fractal) {

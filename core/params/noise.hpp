@@ -24,11 +24,27 @@
 
 namespace gt {
 
-enum class NoiseBasis { simplex2, simplex3, simplex4, perlin3, perlin3_texture };
+// The cellular bases (voronoi_*, cell_noise) are Blender's (seed 001 §3.18), 3-D, and jump where a
+// coordinate crosses a lattice plane (reference/noise/cellular.hpp).
+enum class NoiseBasis {
+  simplex2,
+  simplex3,
+  simplex4,
+  perlin3,
+  perlin3_texture,
+  voronoi_f1,
+  voronoi_f2,
+  voronoi_f3,
+  voronoi_f4,
+  voronoi_f2f1,
+  voronoi_crackle,
+  cell_noise
+};
 enum class Fractal { none, fbm, ridged, hetero_terrain };
 
 int noise_dimension(NoiseBasis basis);
 const char* noise_basis_name(NoiseBasis basis);
+bool is_cellular(NoiseBasis basis);
 
 struct NoiseSampling {
   int width = 0;

@@ -34,6 +34,19 @@ struct NoiseFieldBlock {
 constexpr int local_size = 16;  // local_size_x/y of noise_field.comp
 constexpr GLuint block_binding = 0, values_binding = 1, permutation_binding = 5;
 
+// gt_voronoi's feature number (gpu/shaders/noise/cellular.glsl): 1..4 for F_k, 5 for F2 − F1,
+// 6 for crackle.
+int voronoi_feature(NoiseBasis basis) {
+  switch (basis) {
+    case NoiseBasis::voronoi_f2: return 2;
+    case NoiseBasis::voronoi_f3: return 3;
+    case NoiseBasis::voronoi_f4: return 4;
+    case NoiseBasis::voronoi_f2f1: return 5;
+    case NoiseBasis::voronoi_crackle: return 6;
+    default: return 1;
+  }
+}
+
 // The GLSL expression of the basis at a vec3 q. The kernel is a literal of the float the
 // reference uses (9 significant digits round-trip a float): fractal.glsl, which calls the basis,
 // comes before the parameter block.
@@ -42,7 +55,9 @@ std::string basis_call(const NoiseParams& params, const std::string& q) {
     case NoiseBasis::simplex3:
       return fmt::format("gt_simplex3({}, {:.9g})", q, static_cast<float>(params.kernel_radius_squared));
     case NoiseBasis::perlin3_texture: return "gt_perlin3_texture(" + q + ")";
-    default: return "gt_perlin3(" + q + ")";
+    case NoiseBasis::perlin3: return "gt_perlin3(" + q + ")";
+    case NoiseBasis::cell_noise: return "gt_cell_noise(" + q + ")";
+    default: return fmt::format("gt_voronoi({}, {})", q, voronoi_feature(params.basis));
   }
 }
 

@@ -1,6 +1,6 @@
 // Sampling a noise function or fractal sum on a grid; see noise_field.hpp. The dispatch on
-// NoiseBasis and Fractal is here; the functions are in simplex.cpp, perlin.cpp, perlin_texture.cpp
-// and fractal.hpp.
+// NoiseBasis and Fractal is here; the functions are in simplex.cpp, perlin.cpp, perlin_texture.cpp,
+// cellular.cpp and fractal.hpp.
 //
 // Memory traffic per sample (ref<double>, the performance table's floor column): 16 B written
 // (the grid's zero fill and the value), nothing read but the permutation tables.
@@ -12,6 +12,7 @@
 #include "core/mutant.hpp"
 #include "core/noise/perlin_texture_table.hpp"
 #include "core/noise/permutation.hpp"
+#include "reference/noise/cellular.hpp"
 #include "reference/noise/fractal.hpp"
 #include "reference/noise/perlin.hpp"
 #include "reference/noise/perlin_texture.hpp"
@@ -66,7 +67,8 @@ class Evaluator {
     switch (params_.basis) {
       case NoiseBasis::simplex3: return simplex3(permutation_, x, y, z, kernel_);
       case NoiseBasis::perlin3_texture: return perlin3_texture(texture_, x, y, z);
-      default: return perlin3(permutation_, x, y, z);
+      case NoiseBasis::perlin3: return perlin3(permutation_, x, y, z);
+      default: return cellular(permutation_, params_.basis, x, y, z);
     }
   }
 

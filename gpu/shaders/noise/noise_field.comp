@@ -16,6 +16,7 @@ layout(local_size_x = 16, local_size_y = 16) in;
 #include "noise/simplex.glsl"
 #include "noise/perlin.glsl"
 #include "noise/perlin_texture.glsl"
+#include "noise/cellular.glsl"
 #ifdef FRACTAL_BASIS
 #include "noise/fractal.glsl"
 #endif
