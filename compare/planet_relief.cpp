@@ -44,19 +44,28 @@ double triangle_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
   return 2.0 * std::abs(std::atan2(numerator, denominator));
 }
 
-std::vector<AreaSample> planet_samples(const CubeSphere& sphere, const std::vector<double>& elevation) {
+std::vector<AreaSample> planet_samples(const RegionRelief& planet) {
+  const auto areas = cell_solid_angles(planet.sphere, planet.warp);
   std::vector<AreaSample> samples;
-  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
-    Vec3 corners[4];
-    for (int corner = 0; corner < 4; ++corner) corners[corner] = sphere_position(sphere.local_position(region, corner % 2, corner / 2));
-    const double area = triangle_solid_angle(corners[0], corners[1], corners[3]) +
-                        triangle_solid_angle(corners[0], corners[3], corners[2]);
-    samples.push_back({elevation[region], area});
-  }
+  for (std::size_t region = 0; region < areas.size(); ++region) samples.push_back({planet.elevation[region], areas[region]});
   return samples;
 }
 
 }  // namespace
+
+std::vector<double> cell_solid_angles(const CubeSphere& sphere, CubeWarp cube_warp) {
+  std::vector<double> areas;
+  areas.reserve(sphere.region_count());
+  for (std::size_t region = 0; region < sphere.region_count(); ++region) {
+    Vec3 corners[4];
+    for (int corner = 0; corner < 4; ++corner) {
+      corners[corner] = sphere_position(sphere.local_position(region, corner % 2, corner / 2), cube_warp);
+    }
+    areas.push_back(triangle_solid_angle(corners[0], corners[1], corners[3]) +
+                    triangle_solid_angle(corners[0], corners[3], corners[2]));
+  }
+  return areas;
+}
 
 ReferenceRelief reference_relief(const GlobalGrid& grid, const std::string& name) {
   const auto samples = area_samples(grid);
@@ -182,7 +191,7 @@ void add_spectrum_checks(const RegionRelief& planet, bool earth_like, const std:
 
 void add_fidelity_checks(const RegionRelief& planet, bool earth_like, const std::optional<ReferenceRelief>& given,
                          const RunOptions& options, CaseResult& result) {
-  const auto samples = planet_samples(planet.sphere, planet.elevation);
+  const auto samples = planet_samples(planet);
   constexpr double bin_width = 0.1;  // elevation units
   const double step = planet.lattice_step;
   const GlobalRelief relief =

@@ -58,7 +58,12 @@ struct RegionRelief {
   // two values; 0: the elevation is continuous.
   double lattice_step = 0.0;
   double lattice_offset = 0.0;
+  CubeWarp warp{};  // the cube sphere's warp, which sets the cells' areas
 };
+
+// Each cell's solid angle on the unit sphere through `cube_warp`: its two triangles between its
+// corners' positions (Van Oosterom & Strackee 1983), region order; the cells sum to 4π.
+std::vector<double> cell_solid_angles(const CubeSphere& sphere, CubeWarp cube_warp);
 
 void add_fidelity_checks(const RegionRelief& planet, bool earth_like, const std::optional<ReferenceRelief>& given,
                          const RunOptions& options, CaseResult& result);

@@ -16,15 +16,25 @@ namespace {
 
 // Local coordinates survive a round trip through the sphere up to a few roundings of numbers of
 // magnitude 1: tan, atan, the normalisation and the division by the largest component, each within
-// an ulp or two of double, amplified at most by the warp's slope (θ / (tan θ · cos²θ) < 1.7).
+// an ulp or two of double, amplified at most by the inverse warp's slope (tan θ / θ: 1.36 for the
+// optimised warp, 4/π for eq. 3.4's, 1 for none): 1e-13 is some 450 ulp.
 constexpr double round_trip_tolerance = 1e-13;
 
+// The three warps of the planet's `warp` parameter.
+const CubeWarp warps[] = {CubeWarp{}, CubeWarp{std::atan(1.0)}, no_warp};
+
 TEST(CubeSphere, WarpAndUnwarpAreInversesThatFixTheCentreAndTheEdges) {
-  EXPECT_EQ(warp(0.0), 0.0);
-  EXPECT_NEAR(warp(1.0), 1.0, 1e-15);
-  EXPECT_NEAR(warp(-1.0), -1.0, 1e-15);
+  for (const CubeWarp cube_warp : warps) {
+    EXPECT_EQ(warp(0.0, cube_warp), 0.0);
+    EXPECT_NEAR(warp(1.0, cube_warp), 1.0, 1e-15);
+    EXPECT_NEAR(warp(-1.0, cube_warp), -1.0, 1e-15);
+    for (double t = -1.0; t <= 1.0; t += 0.125) EXPECT_NEAR(unwarp(warp(t, cube_warp), cube_warp), t, 1e-15) << t;
+  }
   EXPECT_NEAR(std::tan(warp_angle), 1.1822866855, 1e-10) << "the code's hard-coded tan θ";
-  for (double t = -1.0; t <= 1.0; t += 0.125) EXPECT_NEAR(unwarp(warp(t)), t, 1e-15) << t;
+  // Eq. 3.4: tan(πt/4) moves a third of the way along a face's half to tan(π/12) = 2 − √3.
+  EXPECT_NEAR(warp(1.0 / 3.0, CubeWarp{std::atan(1.0)}), 2.0 - std::sqrt(3.0), 1e-15);
+  EXPECT_EQ(warp(0.3, no_warp), 0.3);
+  EXPECT_EQ(unwarp(0.3, no_warp), 0.3);
 }
 
 TEST(CubeSphere, FacesHaveTheCodesNormalsAndAxes) {
@@ -97,12 +107,12 @@ TEST(CubeSphere, WrapAcrossAll24DirectedEdgesReturns) {
 TEST(CubeSphere, LocalPositionsSurviveTheSphereRoundTrip) {
   std::mt19937_64 random(20260514);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (const bool warped : {true, false}) {
+  for (const CubeWarp cube_warp : warps) {
     for (int sample = 0; sample < 6000; ++sample) {
       const LocalPosition local{static_cast<CubeFace>(sample % cube_face_count), unit(random), unit(random)};
-      const Vec3 position = sphere_position(local, warped);
+      const Vec3 position = sphere_position(local, cube_warp);
       EXPECT_NEAR(length(position), 1.0, 1e-15);
-      const LocalPosition back = local_position_of(position, warped);
+      const LocalPosition back = local_position_of(position, cube_warp);
       ASSERT_EQ(back.face, local.face) << local.a << ", " << local.b;
       EXPECT_NEAR(back.a, local.a, round_trip_tolerance);
       EXPECT_NEAR(back.b, local.b, round_trip_tolerance);

@@ -186,6 +186,10 @@ TEST(Mutants, NoiseFamilyIsKilled) {
   const json mutation = expect_every_mutant_killed({"noise.*"});
   expect_killed_near_the_bound(mutation, "noise.perlin3.float_off_above_bound", "parity.max_abs.float_vs_double");
   EXPECT_TRUE(killed_by(mutation, "noise.perlin3.unit_interval", "spec.mean.cpu"));
+  for (const char* mutant : {"noise.voronoi.squared_distance", "noise.cell.value_from_jitter_hash"}) {
+    EXPECT_TRUE(killed_by(mutation, mutant, "spec.cellular.cpu")) << mutant;
+  }
+  EXPECT_TRUE(killed_by(mutation, "noise.cell.gpu_unit_interval", "parity.max_abs.gpu_vs_float"));
 }
 // The mesh invariants each kill a case-table bug of both twins; the vertex model its calibrated pair.
 TEST(Mutants, CaveFamilyIsKilled) {
@@ -221,6 +225,8 @@ TEST(Mutants, PlanetFamilyIsKilled) {
   expect_killed_near_the_bound(mutation, "planet.smoothing.float_off_above_bound", "parity.elevation.float_vs_double");
   expect_killed_near_the_bound(mutation, "planet.noise.gpu_off_above_bound", "parity.noise.gpu_vs_float");
   EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.unwarp_over_tan", "topology.round_trip"));
+  EXPECT_TRUE(killed_by(mutation, "planet.cube_sphere.tangent_eighth_turn", "spec.cell_area_ratio.cpu"));
+  EXPECT_TRUE(killed_by(mutation, "planet.jitter.gpu_no_warp_as_tangent", "parity.positions.gpu_vs_float"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.thesis_rate_as_code", "planet.rate_formula.thesis_e2: spec.rate_bounds.cpu"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_last_seed_missing", "partition.empty_plates.gpu"));
   EXPECT_TRUE(killed_by(mutation, "planet.plates.gpu_counts_visits", "partition.unassigned.gpu"));

@@ -106,6 +106,27 @@ TEST_P(PlanetJitterGpu, OffsetsAreTheReferenceBitsAndPositionsWithinTansLicence)
 
 INSTANTIATE_TEST_SUITE_P(Jitters, PlanetJitterGpu, ::testing::Values(0.0, 0.5, 1.0));
 
+// The warps of the `warp` parameter reach the GPU: its centroids lie within the position bound of
+// ref<float>'s through the same warp (the optimised warp's bound holds for the others, whose slopes
+// are smaller), and away from those of the optimised warp by far more.
+class PlanetWarpGpu : public gt::testing::GlTestWithParam<gt::PlanetWarp> {};
+
+TEST_P(PlanetWarpGpu, CentroidsFollowTheWarpAsked) {
+  auto params = planet_params(9, 5, 0.5, 17);
+  params.warp = GetParam();
+  const gt::CubeSphere sphere(params.resolution);
+  gt::gpu::PlanetGenerator gpu(sphere, params);
+  const auto on_gpu = gpu.jitter();
+  EXPECT_LE(max_abs_difference(on_gpu.positions, gt::reference::jitter_regions<float>(sphere, params).positions),
+            position_bound());
+  auto optimised = params;
+  optimised.warp = gt::PlanetWarp::optimised;
+  EXPECT_GT(max_abs_difference(on_gpu.positions, gt::reference::jitter_regions<float>(sphere, optimised).positions), 0.01);
+}
+
+INSTANTIATE_TEST_SUITE_P(Warps, PlanetWarpGpu, ::testing::Values(gt::PlanetWarp::none, gt::PlanetWarp::tangent),
+                         [](const auto& info) { return std::string(gt::planet_warp_name(info.param)); });
+
 // ---------------------------------------------------------------------------------------------
 // Steps 2–3: integers and exact float comparisons of the same draws, so region for region.
 
@@ -391,7 +412,8 @@ TEST_F(PlanetChainGpu, RenderedPlanetMatchesTheReferencePixelForPixel) {
                                                 std::vector<double>(elevation.begin(), elevation.end()));
   const auto view_projection =
       gt::reference::multiply(gt::reference::projection_matrix(camera), gt::reference::view_matrix(camera));
-  const gt::gpu::PlanetRenderer renderer(mesh, view_projection, sphere, positions, elevation, camera.width, camera.height);
+  const gt::gpu::PlanetRenderer renderer(mesh, view_projection, sphere, gt::CubeWarp{}, positions, elevation, camera.width,
+                                         camera.height);
   renderer.run();
   const gt::gpu::PlanetPixels gpu = renderer.image();
   ASSERT_EQ(gpu.regions.size(), cpu.regions.size());

@@ -62,6 +62,7 @@
 #include <cmath>
 #include <deque>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -125,7 +126,7 @@ bool uses_legacy(const PlanetParams& params) {
 
 // ---- topology and partition invariants -----------------------------------------------------
 
-void add_topology_checks(const CubeSphere& sphere, CaseResult& result) {
+void add_topology_checks(const CubeSphere& sphere, CubeWarp cube_warp, CaseResult& result) {
   std::size_t asymmetric = 0, wrong_count = 0;
   double round_trip = 0.0;
   const int resolution = sphere.resolution();
@@ -141,7 +142,7 @@ void add_topology_checks(const CubeSphere& sphere, CaseResult& result) {
     const bool corner = (x == 0 || x == resolution - 1) && (y == 0 || y == resolution - 1);
     wrong_count += valid == (corner ? 7 : 8) ? 0 : 1;
     const LocalPosition local = sphere.local_position(region, 0.3, 0.8);
-    const LocalPosition back = local_position_of(sphere_position(local));
+    const LocalPosition back = local_position_of(sphere_position(local, cube_warp), cube_warp);
     round_trip = std::max({round_trip, back.face == local.face ? 0.0 : 1.0, std::abs(back.a - local.a), std::abs(back.b - local.b)});
   }
   result.checks.push_back(bounded_check("topology.asymmetric_neighbours", double(asymmetric), 0.0, std::nullopt,
@@ -149,17 +150,71 @@ void add_topology_checks(const CubeSphere& sphere, CaseResult& result) {
   result.checks.push_back(bounded_check("topology.neighbour_count", double(wrong_count), 0.0, std::nullopt,
                                         "regions with other than 7 valid neighbours (the 24 corner cells) or 8"));
   // tan, atan, the normalisation and the division by the largest component, each within an ulp or
-  // two of double, amplified at most by the warp's slope (< 1.7): 1e-13 (tests/cube_sphere_test.cpp).
+  // two of double, amplified at most by the inverse warp's slope tan θ/θ (1.36 for the optimised
+  // warp, 4/π for eq. 3.4's, 1 for none): 1e-13, some 450 ulp (tests/cube_sphere_test.cpp).
   result.checks.push_back(bounded_check("topology.round_trip", round_trip, 1e-13, std::nullopt,
                                         "largest |Δa|, |Δb| of (face, a, b) -> direction -> (face, a, b) at offset "
                                         "(0.3, 0.8) in every cell; a changed face counts 1"));
 }
 
+// The largest over the smallest value of the warp's area element on a face, f'(u)·f'(v)/(1 + f(u)² +
+// f(v)²)^(3/2) (the solid angle of d(face space) through f, normalised), on a 2001² grid of
+// [-1, 1]², written from the seed's formulas here (θ transcribed from eq. 3.4 and 3.5, not taken
+// from the cube sphere the cells come from): the limit of the cells' area ratio as R grows. f(t) =
+// tan(θt)/tan θ, f'(t) = θ/(tan θ·cos²(θt)); f(t) = t for none.
+double area_element_ratio(PlanetWarp warp) {
+  const double angle = warp == PlanetWarp::none      ? 0.0
+                       : warp == PlanetWarp::tangent ? std::numbers::pi / 4.0  // eq. 3.4
+                                                     : 0.868734829276;         // eq. 3.5, Zucker and Higashi's θ
+  const auto value = [angle](double t) { return angle == 0.0 ? t : std::tan(angle * t) / std::tan(angle); };
+  const auto slope = [angle](double t) {
+    return angle == 0.0 ? 1.0 : angle / (std::tan(angle) * std::cos(angle * t) * std::cos(angle * t));
+  };
+  constexpr int steps = 2000;
+  double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= steps; ++i) {
+    const double u = -1.0 + 2.0 * i / steps;
+    for (int j = 0; j <= steps; ++j) {
+      const double v = -1.0 + 2.0 * j / steps;
+      const double density = slope(u) * slope(v) / std::pow(1.0 + value(u) * value(u) + value(v) * value(v), 1.5);
+      largest = std::max(largest, density);
+      smallest = std::min(smallest, density);
+    }
+  }
+  return largest / smallest;
+}
+
+// spec.cell_area_ratio.cpu: the largest cell's solid angle over the smallest's (the seed's reason for
+// the optimised warp, §2.7: more equal cells) against the warp's own limit. A cell is an equal
+// square of face space, so its solid angle is that square times the mean of the area element over
+// it, and the ratio of two such means lies below the element's largest over its smallest value,
+// whatever R. The grid's extremes miss the element's by at most an eighth of its second derivative
+// times the squared spacing (10⁻⁶; the element's second derivatives stay below 10 and its values
+// above 0.19 on a face): 10⁻⁴ relative covers it.
+void add_cell_area_check(const CubeSphere& sphere, PlanetWarp warp, CaseResult& result) {
+  const auto areas = cell_solid_angles(sphere, cube_warp(warp));
+  const auto [smallest, largest] = std::minmax_element(areas.begin(), areas.end());
+  double total = 0.0, squares = 0.0;
+  for (double area : areas) {
+    total += area;
+    squares += area * area;
+  }
+  const double mean = total / double(areas.size());
+  const double variation = std::sqrt(std::max(0.0, squares / double(areas.size()) - mean * mean)) / mean;
+  const double limit = area_element_ratio(warp);
+  result.checks.push_back(bounded_check(
+      "spec.cell_area_ratio.cpu", *largest / *smallest, limit * (1.0 + 1e-4), std::nullopt,
+      fmt::format("largest over smallest cell solid angle through the {} warp (their coefficient of variation {:.3f}); "
+                  "bound: the warp's area element, largest over smallest value, {:.4f} (none 3^1.5, eq. 3.4's √2, eq. "
+                  "3.5's about 1.305)",
+                  planet_warp_name(warp), variation, limit)));
+}
+
 // The planet as a closed mesh (core/planet/sphere_mesh.hpp) through the mesh checks of
 // compare/checks/mesh.hpp, with its genus (0) and its vertex count (6R² + 2: the cube's corners
 // and edges welded) held to what a sphere must have.
-void add_mesh_checks(const CubeSphere& sphere, CaseResult& result) {
-  const Mesh mesh = sphere_mesh(sphere);
+void add_mesh_checks(const CubeSphere& sphere, CubeWarp cube_warp, CaseResult& result) {
+  const Mesh mesh = sphere_mesh(sphere, cube_warp);
   const MeshReport report = check_mesh(mesh);
   for (auto& check : mesh_checks(report, "planet", true)) result.checks.push_back(std::move(check));
   result.checks.push_back(bounded_check("topology.mesh_genus", std::abs(report.openmesh.genus), 0.0, std::nullopt,
@@ -514,7 +569,8 @@ std::vector<float> add_gpu_checks(const CubeSphere& sphere, const PlanetParams& 
 // the GPU can tell apart: its own float rounding, 2^-19 per squared chord (8 operations, each within
 // 2^-24 of a magnitude <= 4), twice, plus the positions' error e (the GPU's and ref<float>'s from
 // ref<double>, per component) moving each squared chord by at most 2·|p − w|·√3·e <= 4√3·e.
-void add_voronoi_checks(const CubeSphere& sphere, const Planet<double>& truth, const std::vector<float>& positions,
+void add_voronoi_checks(const CubeSphere& sphere, CubeWarp cube_warp, const Planet<double>& truth,
+                        const std::vector<float>& positions,
                         const std::vector<Vector3<double>>& directions,
                         const std::vector<reference::NearestSite>& nearest, CaseResult& result) {
   std::vector<Vector3<float>> queries;
@@ -536,8 +592,8 @@ void add_voronoi_checks(const CubeSphere& sphere, const Planet<double>& truth, c
     return missed;
   };
   std::size_t agreeing = 0, agreeing_3x3 = 0;
-  const std::size_t missed = misses(gpu::PlanetVoronoi(sphere, 2).labels(positions, queries), agreeing);
-  const std::size_t missed_3x3 = misses(gpu::PlanetVoronoi(sphere, 1).labels(positions, queries), agreeing_3x3);
+  const std::size_t missed = misses(gpu::PlanetVoronoi(sphere, 2, cube_warp).labels(positions, queries), agreeing);
+  const std::size_t missed_3x3 = misses(gpu::PlanetVoronoi(sphere, 1, cube_warp).labels(positions, queries), agreeing_3x3);
   result.checks.push_back(bounded_check(
       "parity.voronoi.gpu_vs_cpu", double(missed), 0.0, std::nullopt,
       fmt::format("of {} map directions, those whose 5×5 cell-grid label (Algorithm 1) is farther than the exact "
@@ -554,7 +610,7 @@ void add_voronoi_checks(const CubeSphere& sphere, const Planet<double>& truth, c
 // The planet drawn by both twins as the seed's demo draws it: the mesh, the per-pixel Voronoi and
 // the palette, from ref<float>'s centroids and elevations on the GPU and ref<double>'s on the CPU.
 // A camera 2.8 radii from the centre at azimuth 35° and elevation 25°, 45° field of view, 384².
-void add_render_checks(const CubeSphere& sphere, const Planet<double>& truth, const Planet<float>& single,
+void add_render_checks(const CubeSphere& sphere, CubeWarp cube_warp, const Planet<double>& truth, const Planet<float>& single,
                        const RunOptions& options, CaseResult& result) {
   constexpr double azimuth = 35.0 * std::numbers::pi / 180.0, elevation = 25.0 * std::numbers::pi / 180.0;
   reference::Camera camera;
@@ -563,7 +619,7 @@ void add_render_checks(const CubeSphere& sphere, const Planet<double>& truth, co
   camera.near = 1.0;
   camera.far = 5.0;
   camera.width = camera.height = 384;
-  const Mesh mesh = sphere_mesh(sphere);
+  const Mesh mesh = sphere_mesh(sphere, cube_warp);
   const auto cpu = reference::render_planet(mesh, camera, truth.regions.positions, truth.elevation.smoothed);
   if (!options.gpu_available) {
     compare_rendered_images(camera.width, camera.height, cpu.image.rgb, nullptr, options, result);
@@ -573,7 +629,8 @@ void add_render_checks(const CubeSphere& sphere, const Planet<double>& truth, co
   }
   const reference::Matrix4 view_projection =
       reference::multiply(reference::projection_matrix(camera), reference::view_matrix(camera));
-  const gpu::PlanetRenderer renderer(mesh, view_projection, sphere, single.regions.positions, single.elevation.smoothed,
+  const gpu::PlanetRenderer renderer(mesh, view_projection, sphere, cube_warp, single.regions.positions,
+                                     single.elevation.smoothed,
                                      camera.width, camera.height);
   renderer.run();
   const gpu::PlanetPixels image = renderer.image();
@@ -647,8 +704,9 @@ void write_maps(const CubeSphere& sphere, const PlanetParams& params, const Plan
 void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>& given, const nlohmann::json& expect,
                 const RunOptions& options, CaseResult& result) {
   const CubeSphere sphere(params.resolution);
-  result.input = fmt::format("cube sphere R = {} ({} regions), {} plates, seed {}", params.resolution,
-                             sphere.region_count(), params.plates, params.seed);
+  const CubeWarp warp = cube_warp(params.warp);
+  result.input = fmt::format("cube sphere R = {} ({} regions, {} warp), {} plates, seed {}", params.resolution,
+                             sphere.region_count(), planet_warp_name(params.warp), params.plates, params.seed);
   result.width = 6 * params.resolution;
   result.height = params.resolution;
   const PlanetParams twins = twin_params(params);
@@ -657,8 +715,9 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
                                        "with the synchronous rule and Jacobi smoothing on the same draws",
                                        plate_rule_name(params.plate_rule), smoothing_name(params.smoothing)));
   }
-  add_topology_checks(sphere, result);
-  add_mesh_checks(sphere, result);
+  add_topology_checks(sphere, warp, result);
+  add_mesh_checks(sphere, warp, result);
+  add_cell_area_check(sphere, params.warp, result);
   if (options.progress) options.progress->stage("CPU reference (double)");
   Planet<double> planet;
   try {
@@ -678,18 +737,19 @@ void run_planet(const PlanetParams& params, const std::optional<ReferenceRelief>
   if (options.progress) options.progress->stage("CPU reference (float)");
   const Planet<float> single = generate<float>(sphere, twins);
   add_float_parity(sphere, twins, truth, single, result);
-  add_fidelity_checks({sphere, planet.regions.positions, planet.elevation.smoothed},
+  add_fidelity_checks({.sphere = sphere, .positions = planet.regions.positions, .elevation = planet.elevation.smoothed,
+                       .warp = warp},
                       expect.is_object() && expect.value("earth_like", false), given, options, result);
   const auto directions = planet_map_directions();
   const auto nearest = reference::nearest_sites(planet.regions.positions, directions);
   write_maps(sphere, params, planet, nearest, options, result);
-  add_render_checks(sphere, truth, single, options, result);
+  add_render_checks(sphere, warp, truth, single, options, result);
   if (!options.gpu_available) {
     for (const auto& name : gpu_check_names()) result.checks.push_back(skipped_check(name, options.gpu_unavailable_reason));
     return;
   }
   const auto gpu_positions = add_gpu_checks(sphere, twins, truth, single, options, result);
-  add_voronoi_checks(sphere, truth, gpu_positions, directions, nearest, result);
+  add_voronoi_checks(sphere, warp, truth, gpu_positions, directions, nearest, result);
 }
 
 PreparedTwin prepare_planet(const nlohmann::json& resolved, const LoadedInput& input) {

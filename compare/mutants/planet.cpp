@@ -133,6 +133,12 @@ std::vector<Mutant> planet_mutants() {
        "the planet mesh gives a new corner the vertex count after adding it as its index, one past its own: the "
        "last corner's triangles name a vertex that does not exist",
        probe},
+      {"planet.jitter.gpu_no_warp_as_tangent", MutantKind::one_twin,
+       "jitter.comp places the centroids through eq. 3.4's tan(πt/4) when no warp is asked",
+       {"planet.warp.none"}},
+      {"planet.cube_sphere.tangent_eighth_turn", MutantKind::both_twins,
+       "eq. 3.4's plain tangent warp takes θ = π/8 instead of π/4 (core/params/planet.cpp, which both twins share)",
+       {"planet.warp.tangent"}},
       {"planet.cube_sphere.unwarp_over_tan", MutantKind::both_twins,
        "the inverse warp divides by tan θ instead of θ (core/planet/cube_sphere.cpp, which both twins share)", probe},
       {"planet.cube_sphere.overshoot_doubled", MutantKind::both_twins,

@@ -23,8 +23,22 @@ constexpr Choice<PlateBases> plate_bases_choices[] = {{"uniform", PlateBases::un
                                                       {"bimodal", PlateBases::bimodal}};
 constexpr Choice<Smoothing> smoothing_choices[] = {
     {"jacobi", Smoothing::jacobi}, {"legacy", Smoothing::legacy}, {"off", Smoothing::off}};
+constexpr Choice<PlanetWarp> warp_choices[] = {
+    {"none", PlanetWarp::none}, {"tangent", PlanetWarp::tangent}, {"optimised", PlanetWarp::optimised}};
 
 }  // namespace
+
+CubeWarp cube_warp(PlanetWarp warp) {
+  switch (warp) {
+    case PlanetWarp::none: return no_warp;
+    // Mutant planet.cube_sphere.tangent_eighth_turn (both twins share this): θ = π/8 for eq. 3.4's π/4.
+    case PlanetWarp::tangent: return {std::atan(1.0) * (mutant_active("planet.cube_sphere.tangent_eighth_turn") ? 0.5 : 1.0)};
+    case PlanetWarp::optimised: break;
+  }
+  return {warp_angle};
+}
+
+const char* planet_warp_name(PlanetWarp warp) { return choice_name(warp_choices, warp); }
 
 const char* plate_rule_name(PlateRule rule) { return choice_name(plate_rule_choices, rule); }
 
@@ -51,6 +65,9 @@ const ParamTable<PlanetParams>& planet_param_table() {
                     "counter-RNG seed of every draw (§9.2); also the Perlin permutation's (0 = Perlin's reference "
                     "table)"),
       real_param("jitter", &P::jitter, 0.0, 1.0, "1", "j of eq. 5.1: 0 = cell centres, 1 = anywhere in the cell"),
+      choice_param("warp", &P::warp, warp_choices, "",
+                   "cube-to-sphere warp: none (the identity), tangent (eq. 3.4, tan(πt/4)) or optimised (eq. 3.5, "
+                   "θ = 0.868734829276)"),
       integer_param("plates", &P::plates, 1, 500, "count", "plateNumber: at most 6R²"),
       real_param("expansion_range", &P::expansion_range, 0.0, 5.0, "1",
                  "e: plate rates uniform in [max(0, 1 − e), 1 + e] rings per cycle (the code's formula)"),

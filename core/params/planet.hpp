@@ -74,6 +74,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/param_table.hpp"
+#include "core/planet/cube_sphere.hpp"
 
 namespace gt {
 
@@ -85,6 +86,10 @@ enum class PressureFormula { code, thesis };
 enum class RateFormula { code, thesis };
 enum class Smoothing { jacobi, legacy, off };
 enum class PlateBases { uniform, bimodal };
+// The cube-to-sphere warp (seed 002 §2.7): none (the identity, the seed's baseline), the plain
+// tangent warp of eq. 3.4 (θ = π/4) or the optimised one of eq. 3.5 (θ = 0.868734829276, the
+// code's and the thesis's).
+enum class PlanetWarp { none, tangent, optimised };
 
 // The `stream` counters of §9.2.
 enum PlanetStream : std::uint32_t {
@@ -104,6 +109,7 @@ struct PlanetParams {
   int resolution = 50;          // R: 6R² regions
   std::uint32_t seed = 1;
   double jitter = 1.0;          // j in [0, 1]
+  PlanetWarp warp = PlanetWarp::optimised;
   int plates = 50;              // P, at most 6R²
   double expansion_range = 0.5; // e
   RateFormula rate_formula = RateFormula::code;
@@ -142,6 +148,10 @@ PlateRateBounds plate_rate_bounds(const PlanetParams& params);
 const ParamTable<PlanetParams>& planet_param_table();
 const ParamSpecs& planet_param_specs();
 PlanetParams planet_params_from_json(const nlohmann::json& resolved);
+
+// The warp's θ as the cube sphere takes it (core/planet/cube_sphere.hpp).
+CubeWarp cube_warp(PlanetWarp warp);
+const char* planet_warp_name(PlanetWarp warp);
 
 const char* plate_rule_name(PlateRule rule);
 const char* smoothing_name(Smoothing smoothing);

@@ -57,24 +57,29 @@ LocalPosition local_of_face_space(CubeFace face, double u, double v) { return {f
 
 const FaceMatrix& face_matrix(CubeFace face) { return face_matrices[static_cast<std::size_t>(face)]; }
 
-double warp(double t) { return std::tan(warp_angle * t) / std::tan(warp_angle); }
+double warp(double t, CubeWarp cube_warp) {
+  const double angle = cube_warp.angle;
+  return angle == 0.0 ? t : std::tan(angle * t) / std::tan(angle);
+}
 
 // Mutant planet.cube_sphere.unwarp_over_tan (both twins share this): divided by tan θ instead of θ.
-double unwarp(double u) {
-  const double divisor = mutant_active("planet.cube_sphere.unwarp_over_tan") ? std::tan(warp_angle) : warp_angle;
-  return std::atan(u * std::tan(warp_angle)) / divisor;
+double unwarp(double u, CubeWarp cube_warp) {
+  const double angle = cube_warp.angle;
+  if (angle == 0.0) return u;
+  const double divisor = mutant_active("planet.cube_sphere.unwarp_over_tan") ? std::tan(angle) : angle;
+  return std::atan(u * std::tan(angle)) / divisor;
 }
 
 Vec3 cube_point(const LocalPosition& local) {
   return to_cube(local.face, {2.0 * local.a - 1.0, 1.0 - 2.0 * local.b, 1.0});
 }
 
-Vec3 sphere_position(const LocalPosition& local, bool warped) {
+Vec3 sphere_position(const LocalPosition& local, CubeWarp cube_warp) {
   const double u = 2.0 * local.a - 1.0, v = 1.0 - 2.0 * local.b;
-  return normalised(to_cube(local.face, warped ? Vec3{warp(u), warp(v), 1.0} : Vec3{u, v, 1.0}));
+  return normalised(to_cube(local.face, Vec3{warp(u, cube_warp), warp(v, cube_warp), 1.0}));
 }
 
-LocalPosition local_position_of(const Vec3& direction, bool warped) {
+LocalPosition local_position_of(const Vec3& direction, CubeWarp cube_warp) {
   const double largest = std::max({std::abs(direction[0]), std::abs(direction[1]), std::abs(direction[2])});
   if (!(largest > 0.0) || !std::isfinite(largest)) {
     throw std::invalid_argument(fmt::format("cube sphere: the direction ({}, {}, {}) names no point of the sphere",
@@ -82,8 +87,7 @@ LocalPosition local_position_of(const Vec3& direction, bool warped) {
   }
   const CubeFace face = face_of(direction);
   const Vec3 face_space = to_face_space(face, (1.0 / largest) * direction);
-  return warped ? local_of_face_space(face, unwarp(face_space[0]), unwarp(face_space[1]))
-                : local_of_face_space(face, face_space[0], face_space[1]);
+  return local_of_face_space(face, unwarp(face_space[0], cube_warp), unwarp(face_space[1], cube_warp));
 }
 
 std::optional<LocalPosition> wrap(const LocalPosition& local) {

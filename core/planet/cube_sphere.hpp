@@ -1,6 +1,6 @@
 // The cube-sphere surface of seed 002 (digest 002_planets.md §2.7, §3.3–3.4, §9.1, §9.4): the six
 // faces of the cube [-1, 1]³, each an R×R grid of cells holding one region, projected onto the unit
-// sphere through the optimised tangent warp. A core type: both planet twins index regions this way,
+// sphere through a warp (the optimised tangent warp unless the planet asks for another). A core type: both planet twins index regions this way,
 // and the neighbour table is computed once here and uploaded (§9.1), so that the wrap arithmetic
 // stays off the parity surface.
 //
@@ -11,7 +11,9 @@
 // cube point P_face·(u, v, 1), with the code's signed permutations P (facePermutationMatrix; the
 // thesis's illustrative P differs, §3.4).
 // Warp (eq. 3.5): f(t) = tan(θt)/tan θ, θ = 0.868734829276, inverse atan(u·tan θ)/θ (the thesis
-// prints a wrong inverse, §2.7 [E]); position = normalise(P·(f(u), f(v), 1)) (eq. 4.3, 4.4).
+// prints a wrong inverse, §2.7 [E]); position = normalise(P·(f(u), f(v), 1)) (eq. 4.3, 4.4). The
+// same formula with θ = π/4 is the plain tangent warp (eq. 3.4), and θ = 0 stands for no warp, the
+// identity (the limit of both formulas, which are 0/0 there, so it is written as such).
 // Direction -> local (eq. 4.5, 4.6): the face is the component of largest magnitude, ties to z, then
 // x, then y (one rule where the code compares == ±1 and its shader > 0.99999, §9.4); (u, v, 1) =
 // Pᵀ·(p / max|p|), then unwarped (the code's CPU path forgot the unwarp, §3.4 [C]).
@@ -54,15 +56,21 @@ using RegionNeighbours = std::array<std::int32_t, 8>;
 using FaceMatrix = std::array<std::array<int, 3>, 3>;
 const FaceMatrix& face_matrix(CubeFace face);
 
-double warp(double t);    // f(t) = tan(θt) / tan θ: [-1, 1] -> [-1, 1]
-double unwarp(double u);  // f⁻¹(u) = atan(u tan θ) / θ
+// The warp's θ: warp_angle (eq. 3.5) by default, π/4 the plain tangent warp (eq. 3.4), 0 none.
+struct CubeWarp {
+  double angle = warp_angle;
+};
+inline constexpr CubeWarp no_warp{0.0};
+
+double warp(double t, CubeWarp cube_warp = {});    // f(t) = tan(θt) / tan θ: [-1, 1] -> [-1, 1]
+double unwarp(double u, CubeWarp cube_warp = {});  // f⁻¹(u) = atan(u tan θ) / θ
 
 // The point on the cube [-1, 1]³ of a local position (no warp).
 Vec3 cube_point(const LocalPosition& local);
-// The unit-sphere position of a local position, warped unless `warped` is false.
-Vec3 sphere_position(const LocalPosition& local, bool warped = true);
-// The local position of a direction (any non-zero vector), unwarped unless `warped` is false.
-LocalPosition local_position_of(const Vec3& direction, bool warped = true);
+// The unit-sphere position of a local position, through the warp.
+Vec3 sphere_position(const LocalPosition& local, CubeWarp cube_warp = {});
+// The local position of a direction (any non-zero vector), through the warp's inverse.
+LocalPosition local_position_of(const Vec3& direction, CubeWarp cube_warp = {});
 // Algorithm 2: the position on its own face when a or b lies outside [0, 1] by at most one edge
 // crossing; none over a corner. A position inside its face is returned unchanged.
 std::optional<LocalPosition> wrap(const LocalPosition& local);

@@ -15,7 +15,7 @@
 
 namespace gt {
 
-Mesh sphere_mesh(const CubeSphere& sphere) {
+Mesh sphere_mesh(const CubeSphere& sphere, CubeWarp cube_warp) {
   const int resolution = sphere.resolution();
   Mesh mesh;
   std::map<std::array<int, 3>, std::uint32_t> welded;
@@ -36,8 +36,8 @@ Mesh sphere_mesh(const CubeSphere& sphere) {
     const auto [found, inserted] =
         welded.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()) + index_shift);
     if (inserted) {
-      const Vec3 warped{warp(double(lattice[0]) / resolution), warp(double(lattice[1]) / resolution),
-                        warp(double(lattice[2]) / resolution)};
+      const Vec3 warped{warp(double(lattice[0]) / resolution, cube_warp), warp(double(lattice[1]) / resolution, cube_warp),
+                        warp(double(lattice[2]) / resolution, cube_warp)};
       mesh.positions.push_back(normalised(warped));
     }
     return found->second;

@@ -162,8 +162,9 @@ UniformBuffer block_buffer(const PlanetParams& params) {
   block.seed = params.seed;
   block.resolution = params.resolution;
   block.jitter = static_cast<float>(params.jitter);
-  block.warp_angle = static_cast<float>(warp_angle);
-  block.tan_warp_angle = static_cast<float>(std::tan(warp_angle));
+  const CubeWarp warp = cube_warp(params.warp);
+  block.warp_angle = static_cast<float>(warp.angle);
+  block.tan_warp_angle = static_cast<float>(std::tan(warp.angle));
   block.rate_low = rates.low;
   block.rate_high = rates.high;
   block.elevation_range = static_cast<float>(params.elevation_range);

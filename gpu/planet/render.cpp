@@ -43,12 +43,12 @@ std::uint8_t quantised(float channel) {
 }  // namespace
 
 PlanetRenderer::PlanetRenderer(const Mesh& mesh, const std::array<double, 16>& view_projection,
-                               const CubeSphere& sphere, const std::vector<float>& positions,
+                               const CubeSphere& sphere, CubeWarp cube_warp, const std::vector<float>& positions,
                                const std::vector<float>& elevation, int width, int height)
     : target_(GL_RGBA32F, width, height, "planet image"),
       index_count_(mesh.triangles.size() * 3),
       program_(GraphicsProgram::load("planet/render.vert", "planet/render.frag")),
-      block_(voronoi_block(sphere.resolution(), 0)),
+      block_(voronoi_block(sphere.resolution(), 0, cube_warp)),
       vertices_(StorageBuffer::from(vertex_positions(mesh))),
       indices_(StorageBuffer::from(mesh.triangles)),
       neighbours_(StorageBuffer::from(sphere.neighbour_table())),

@@ -3,13 +3,13 @@
 // The cube-sphere mesh through the reference's P·V (rounded to float once), each fragment the region
 // nearest its direction by Algorithm 1's 5×5 search and that region's elevation in the palette
 // (gpu/shaders/planet/render.{vert,frag}).
-// PlanetRenderer(mesh, view_projection, sphere, positions, elevation, width, height) uploads the
+// PlanetRenderer(mesh, view_projection, sphere, cube_warp, positions, elevation, width, height) uploads the
 //   mesh, the neighbour table, the centroids and the elevations and makes an RGBA32F target
 //   (gpu/render/offscreen_target.hpp: depth LESS, no culling).
 // run() clears and draws (not synchronised: bracket with glFinish to time it).
 // image() downloads.
 //
-// Inputs:  mesh (the cube sphere's), view_projection (row-major P·V in double), sphere, positions
+// Inputs:  mesh (the cube sphere's), view_projection (row-major P·V in double), sphere and its warp, positions
 //          (3 per region), elevation (1 per region), width and height in pixels. Needs a current
 //          GlContext.
 // Outputs: PlanetPixels: RGB8 rows top first (each channel round(255·c), as the reference quantises)
@@ -44,7 +44,7 @@ struct PlanetPixels {
 class PlanetRenderer {
  public:
   PlanetRenderer(const Mesh& mesh, const std::array<double, 16>& view_projection, const CubeSphere& sphere,
-                 const std::vector<float>& positions, const std::vector<float>& elevation, int width, int height);
+                 CubeWarp cube_warp, const std::vector<float>& positions, const std::vector<float>& elevation, int width, int height);
   PlanetRenderer(const PlanetRenderer&) = delete;
   PlanetRenderer& operator=(const PlanetRenderer&) = delete;
   ~PlanetRenderer();

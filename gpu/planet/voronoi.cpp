@@ -48,7 +48,7 @@ void check_voronoi_block(const GlProgram& program) {
                        {"tan_warp_angle", offsetof(VoronoiBlock, tan_warp_angle)}});
 }
 
-UniformBuffer voronoi_block(int resolution, std::size_t direction_count) {
+UniformBuffer voronoi_block(int resolution, std::size_t direction_count, CubeWarp cube_warp) {
   VoronoiBlock block{};
   for (int face = 0; face < cube_face_count; ++face) {
     const FaceMatrix& matrix = face_matrix(static_cast<CubeFace>(face));
@@ -58,13 +58,14 @@ UniformBuffer voronoi_block(int resolution, std::size_t direction_count) {
   }
   block.resolution = resolution;
   block.direction_count = static_cast<std::int32_t>(direction_count);
-  block.warp_angle = static_cast<float>(warp_angle);
-  block.tan_warp_angle = static_cast<float>(std::tan(warp_angle));
+  block.warp_angle = static_cast<float>(cube_warp.angle);
+  block.tan_warp_angle = static_cast<float>(std::tan(cube_warp.angle));
   return UniformBuffer::from(block);
 }
 
-PlanetVoronoi::PlanetVoronoi(const CubeSphere& sphere, int rings)
+PlanetVoronoi::PlanetVoronoi(const CubeSphere& sphere, int rings, CubeWarp cube_warp)
     : resolution_(sphere.resolution()),
+      warp_(cube_warp),
       region_count_(sphere.region_count()),
       program_(voronoi_program(rings)),
       neighbours_(StorageBuffer::from(sphere.neighbour_table())) {}
@@ -75,7 +76,7 @@ std::vector<std::int32_t> PlanetVoronoi::labels(const std::vector<float>& positi
     throw std::invalid_argument(fmt::format("Voronoi: {} position values for {} regions", positions.size(), region_count_));
   }
   if (directions.empty()) return {};
-  const auto uniforms = voronoi_block(resolution_, directions.size());
+  const auto uniforms = voronoi_block(resolution_, directions.size(), warp_);
   std::vector<float> direction_values;
   for (const auto& direction : directions) direction_values.insert(direction_values.end(), direction.begin(), direction.end());
   const auto position_buffer = StorageBuffer::from(padded_xyz(positions));

@@ -3,10 +3,12 @@
 // For each query direction, the nearest centroid among the 3×3 (rings = 1, the seed's shader) or 5×5
 // (rings = 2, its thesis) block of cells around the cell holding the direction, through the cube
 // sphere's neighbour table. Shader: gpu/shaders/planet/voronoi.comp.
-// PlanetVoronoi(sphere, rings) compiles the pass and uploads the neighbour table.
+// PlanetVoronoi(sphere, rings, cube_warp) compiles the pass and uploads the neighbour table; the cell
+//   of a direction is found through the inverse of the warp the centroids were placed with.
 // labels(positions, directions) uploads positions and directions and returns one region per direction.
-// voronoi_block(resolution, direction_count) -> the std140 block of planet/voronoi_search.glsl
-//   (binding 0): the face matrices, R, θ and tan θ rounded to float once, and the number of queries
+// voronoi_block(resolution, direction_count, cube_warp) -> the std140 block of
+//   planet/voronoi_search.glsl (binding 0): the face matrices, R, the warp's θ and tan θ rounded to
+//   float once (θ = 0: no warp), and the number of queries
 //   (voronoi.comp's; 0 for the renderer).
 // check_voronoi_block(program): checks a program's VoronoiBlock (voronoi.comp's, the renderer's)
 //   against voronoi_block's C++ mirror.
@@ -32,9 +34,9 @@
 
 namespace gt::gpu {
 
-// The std140 block of planet/voronoi_search.glsl (binding 0): the face matrices, R, θ and tan θ
-// rounded to float once, and the number of queries (voronoi.comp's; 0 for the renderer).
-UniformBuffer voronoi_block(int resolution, std::size_t direction_count);
+// The std140 block of planet/voronoi_search.glsl (binding 0): the face matrices, R, the warp's θ and
+// tan θ rounded to float once, and the number of queries (voronoi.comp's; 0 for the renderer).
+UniformBuffer voronoi_block(int resolution, std::size_t direction_count, CubeWarp cube_warp);
 // Checks a program's VoronoiBlock (voronoi.comp's, the renderer's) against voronoi_block's C++
 // mirror (GlProgram::check_block: std::runtime_error on a mismatch).
 void check_voronoi_block(const GlProgram& program);
@@ -44,11 +46,12 @@ std::vector<float> padded_xyz(const std::vector<float>& xyz);
 
 class PlanetVoronoi {
  public:
-  PlanetVoronoi(const CubeSphere& sphere, int rings);
+  PlanetVoronoi(const CubeSphere& sphere, int rings, CubeWarp cube_warp = {});
   std::vector<std::int32_t> labels(const std::vector<float>& positions, const std::vector<Vector3<float>>& directions);
 
  private:
   int resolution_;
+  CubeWarp warp_;
   std::size_t region_count_;
   ComputeProgram program_;
   StorageBuffer neighbours_;

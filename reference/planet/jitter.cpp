@@ -30,11 +30,12 @@ Real calibrated(Real component) {
   return component;
 }
 
-// f(t) = tan(θt)/tan θ, with tan θ rounded to Real once.
+// f(t) = tan(θt)/tan θ, with θ and tan θ rounded to Real once; t itself for no warp (θ = 0).
 template <class Real>
-Real warped(Real t) {
-  const Real angle = static_cast<Real>(warp_angle);
-  return std::tan(angle * t) / static_cast<Real>(std::tan(warp_angle));
+Real warped(Real t, CubeWarp cube_warp) {
+  if (cube_warp.angle == 0.0) return t;
+  const Real angle = static_cast<Real>(cube_warp.angle);
+  return std::tan(angle * t) / static_cast<Real>(std::tan(cube_warp.angle));
 }
 
 }  // namespace
@@ -43,6 +44,7 @@ template <class Real>
 JitteredRegions<Real> jitter_regions(const CubeSphere& sphere, const PlanetParams& params) {
   const std::size_t count = sphere.region_count();
   const int resolution = sphere.resolution();
+  const CubeWarp warp = cube_warp(params.warp);
   JitteredRegions<Real> regions;
   regions.offsets.resize(2 * count);
   regions.positions.resize(3 * count);
@@ -52,7 +54,7 @@ JitteredRegions<Real> jitter_regions(const CubeSphere& sphere, const PlanetParam
     const std::size_t cell = region % (std::size_t(resolution) * resolution);
     const Real a = (static_cast<Real>(cell % resolution) + offset_a) / static_cast<Real>(resolution);
     const Real b = (static_cast<Real>(cell / resolution) + offset_b) / static_cast<Real>(resolution);
-    const Vector3<Real> face_space{warped(Real(2) * a - Real(1)), warped(Real(1) - Real(2) * b), Real(1)};
+    const Vector3<Real> face_space{warped(Real(2) * a - Real(1), warp), warped(Real(1) - Real(2) * b, warp), Real(1)};
     const FaceMatrix& matrix = face_matrix(static_cast<CubeFace>(region / (std::size_t(resolution) * resolution)));
     Vector3<Real> cube{};
     for (int row = 0; row < 3; ++row) {

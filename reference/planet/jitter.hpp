@@ -6,12 +6,13 @@
 // per region, unit length).
 //   offset = 0.5 + (U − 0.5)·j per axis;
 //   a = (x + offset_a)/R, b = (y + offset_b)/R (eq. 4.1 corrected, erratum 4);
-//   u = 2a − 1, v = 1 − 2b; w = P_face·(f(u), f(v), 1) with f(t) = tan(θt)/tan θ (eq. 3.5, 4.3);
+//   u = 2a − 1, v = 1 − 2b; w = P_face·(f(u), f(v), 1) with f(t) = tan(θt)/tan θ (eq. 3.5, 4.3; θ of
+//   the `warp` parameter, f(t) = t for none);
 //   position = w·(1/sqrt(w·w)).
 // Real = double is the truth; Real = float repeats the shader's operations in that order (tan θ
 // rounded to float once).
 //
-// Inputs:  the cube sphere (R cells along a face's edge) and the planet's parameters (jitter j, seed).
+// Inputs:  the cube sphere (R cells along a face's edge) and the planet's parameters (jitter j, warp, seed).
 // Outputs: JitteredRegions (core/planet/planet_state.hpp): offsets and positions.
 // Units:   offsets in cells, positions dimensionless.
 // Throws:  nothing.

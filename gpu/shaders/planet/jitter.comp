@@ -4,7 +4,8 @@
 // reference/planet/jitter.cpp, in its order:
 //   offset_axis = 0.5 + (U(i, axis, jitter) − 0.5)·j          (axis 0 = a, 1 = b)
 //   a = (x + offset_a)/R, b = (y + offset_b)/R                 (eq. 4.1 corrected, erratum 4)
-//   w = P_face·(f(2a − 1), f(1 − 2b), 1), f(t) = tan(θ·t)/tan θ (eq. 3.5, 4.3; erratum 8's y flip)
+//   w = P_face·(f(2a − 1), f(1 − 2b), 1), f(t) = tan(θ·t)/tan θ (eq. 3.4/3.5, 4.3; erratum 8's y
+//   flip), f(t) = t for no warp (θ = 0)
 //   position = w·(1/sqrt(dot3(w, w)))
 // θ and tan θ come rounded once to float. The offsets are exact twins (no division, no builtin);
 // the positions differ from the reference by GLSL's tan (sin/cos-based, implementation-defined
@@ -21,7 +22,17 @@ float jittered_offset(uint region, uint axis) {
   return offset;
 }
 
+// f(t) = tan(θt)/tan θ; t itself for no warp (θ = 0, where the formula is 0/0).
+// Mutant NO_WARP_AS_TANGENT (this twin alone): with no warp asked, eq. 3.4's tan(πt/4) all the same.
 float warped(float t) {
+#ifdef GT_MUTANT_PLANET_JITTER_GPU_NO_WARP_AS_TANGENT
+  if (warp_angle == 0.0) {
+    precise float tangent = tan(0.785398163 * t);
+    return tangent;
+  }
+#else
+  if (warp_angle == 0.0) return t;
+#endif
   precise float angle = warp_angle * t;
   precise float value = tan(angle) / tan_warp_angle;
   return value;

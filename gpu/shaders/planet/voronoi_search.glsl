@@ -2,7 +2,7 @@
 // shared by gpu/shaders/planet/voronoi.comp (per query direction) and render.frag (per pixel):
 //   1. the cell holding the direction: the face of its largest component (ties to z, then x, then
 //      y, as core/planet/cube_sphere.hpp), (u, v) = (Pᵀ·w).xy / (Pᵀ·w).z, unwarped by
-//      atan(u·tan θ)/θ, a = (u + 1)/2, b = (1 − v)/2, cell = clamp(floor(a·R), 0, R − 1);
+//      atan(u·tan θ)/θ (u itself for no warp, θ = 0), a = (u + 1)/2, b = (1 − v)/2, cell = clamp(floor(a·R), 0, R − 1);
 //   2. the nearest centroid (squared chord distance, the first found on ties) among that cell, its
 //      8 neighbours and, with SEARCH_RINGS 2, their neighbours: the 3×3 or 5×5 block of Algorithm 1
 //      (the seed's shader searches 3×3, its thesis 5×5), found through the shared neighbour table,
@@ -53,7 +53,7 @@ int region_of(vec3 w) {
   int face = face_of(w);
   vec3 face_space = to_face_space(face, w);
   vec2 uv = face_space.xy / face_space.z;
-  vec2 unwarped = atan(uv * tan_warp_angle) / warp_angle;
+  vec2 unwarped = warp_angle == 0.0 ? uv : atan(uv * tan_warp_angle) / warp_angle;  // no warp: θ = 0
   int x = cell_index((unwarped.x + 1.0) * 0.5);
   int y = cell_index((1.0 - unwarped.y) * 0.5);
   return (face * resolution + y) * resolution + x;
@@ -66,7 +66,8 @@ vec3 site_of(int region) {
   int face = region / (resolution * resolution);
   int cell = region % (resolution * resolution);
   vec2 local = (vec2(cell % resolution, cell / resolution) + 0.5) / float(resolution);
-  vec2 warped = tan(warp_angle * vec2(2.0 * local.x - 1.0, 1.0 - 2.0 * local.y)) / tan_warp_angle;
+  vec2 face_space = vec2(2.0 * local.x - 1.0, 1.0 - 2.0 * local.y);
+  vec2 warped = warp_angle == 0.0 ? face_space : tan(warp_angle * face_space) / tan_warp_angle;
   vec3 cube = vec3(0.0);
   for (int row = 0; row < 3; ++row) cube[row] = dot(vec3(face_rows[3 * face + row].xyz), vec3(warped, 1.0));
   return normalize(cube);
