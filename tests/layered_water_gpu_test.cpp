@@ -172,7 +172,7 @@ TEST_P(LayeredWaterGpu, EveryWaterPassIsTheFloatReferenceBitForBit) {
   auto expected = gt::no_conversions(params.bedrock_types.size());
   auto actual = gt::no_conversions(params.bedrock_types.size());
 
-  gt::reference::water_sources(ground, water, params, expected);
+  gt::reference::water_sources(ground, water, params, 0, expected);
   flow.sources(ground_buffers, water_buffers, 0, actual);
   expect_same_state(ground, water, ground_buffers, water_buffers, "sources");
   expect_same_conversions(expected, actual, "sources");
@@ -254,6 +254,32 @@ TEST_P(LayeredWaterGpu, WholeIterationsFollowTheReferenceAndRepeat) {
   bool flooded = false;
   for (std::size_t c = 0; c < ground.cells(); ++c) flooded |= water.wetness[c] > 1.0f && ground.vegetation[c] == 0.0f;
   EXPECT_TRUE(flooded);
+}
+
+// The water schedule: at iteration 2, past rain_steps = 2 and at drain_step = 2, the drain empties
+// every column (the river's source then refills, with the river), no rain falls, and the GPU books
+// the same sunk amounts as ref<float>; at iteration 1 rain still falls on both.
+TEST_P(LayeredWaterGpu, TheDrainAndTheRainsLastStepAreTheFloatReferenceBitForBit) {
+  LayeredParams params = params_for(GetParam());
+  params.rain_steps = 2;
+  params.drain_step = 2;
+  auto ground = random_ground(params);
+  auto water = random_water(ground.cells());
+  gt::gpu::LayeredGroundBuffers ground_buffers(ground, params);
+  gt::gpu::LayeredWaterBuffers water_buffers(ground_buffers, water);
+  const gt::gpu::LayeredWaterFlow flow;
+  auto expected = gt::no_conversions(params.bedrock_types.size());
+  auto actual = gt::no_conversions(params.bedrock_types.size());
+  for (std::uint32_t step : {1u, 2u}) {
+    gt::reference::water_sources(ground, water, params, step, expected);
+    flow.sources(ground_buffers, water_buffers, step, actual);
+    expect_same_state(ground, water, ground_buffers, water_buffers, "sources at step " + std::to_string(step));
+    expect_same_conversions(expected, actual, "sources at step " + std::to_string(step));
+  }
+  EXPECT_GT(expected.water_sunk, 0.0);
+  std::size_t wet = 0;
+  for (float depth : water.water) wet += depth > 0.0f ? 1 : 0;
+  EXPECT_LE(wet, 1u) << "the drain leaves at most the river's source wet";
 }
 
 TEST_P(LayeredWaterGpu, RefusesWaterOfAnotherSizeAndAMissingWaterBuffer) {

@@ -145,7 +145,7 @@ TEST(LayeredWater, TheRiverHoldsItsSourceAndItsSinksEmpty) {
   const double area = 1.0;
   const double start = gt::layered_water_ledger(water, area).water;
   for (int step = 0; step < 10; ++step) {
-    ref::water_sources(ground, water, params, conversions);
+    ref::water_sources(ground, water, params, static_cast<std::uint32_t>(step), conversions);
     EXPECT_EQ(water.water[gt::river_source_cell(32, 32)], 2.0);
     for (int x = 0; x < 32; ++x) EXPECT_EQ(water.water[ground.cell(x, 30)], 0.0);
     ref::water_flow(ground, water, params);
@@ -156,6 +156,40 @@ TEST(LayeredWater, TheRiverHoldsItsSourceAndItsSinksEmpty) {
   EXPECT_GT(conversions.water_sunk, 0.0);
   const double end = gt::layered_water_ledger(water, area).water;
   EXPECT_NEAR(end - start, conversions.water_added - conversions.water_sunk, 1e-12 * (start + conversions.water_added));
+}
+
+// Seed 001's Fig. 5.5 adds and removes water by hand: rain on the first rain_steps iterations, and
+// the code's "Drain water" at the start of iteration drain_step, which empties every column of its
+// water and what it carries, booked as sunk; the ledger closes across both.
+TEST(LayeredWater, RainFallsOnItsStepsAndTheDrainEmptiesEveryColumn) {
+  LayeredParams params;
+  params.rain_rate = 0.01;
+  params.rain_steps = 3;
+  params.drain_step = 5;
+  auto ground = gt::make_layered_ground<double>(cone(16, 5.0, 1.0), loam_profile(), params);
+  auto water = gt::make_layered_water<double>(ground.cells(), 0.2);
+  for (std::size_t c = 0; c < ground.cells(); ++c) water.carried_at(0, c) = 0.01;
+  auto conversions = gt::no_conversions(params.bedrock_types.size());
+  const double area = 1.0;
+  const double start = gt::layered_water_ledger(water, area).water;
+  const double rain = params.time_step * params.rain_rate;
+  for (std::uint32_t step = 0; step < 8; ++step) {
+    const double before = water.water[0];
+    ref::water_sources(ground, water, params, step, conversions);
+    if (step == 5) {
+      for (std::size_t c = 0; c < ground.cells(); ++c) {
+        EXPECT_EQ(water.water[c], 0.0);
+        EXPECT_EQ(water.carried_at(0, c), 0.0);
+      }
+    } else {
+      EXPECT_EQ(water.water[0], step < 3 ? before + rain : before) << step;
+    }
+  }
+  EXPECT_NEAR(conversions.water_added, 3.0 * rain * area * static_cast<double>(ground.cells()), 1e-12);
+  EXPECT_NEAR(conversions.water_sunk, start + conversions.water_added, 1e-12 * start);
+  EXPECT_NEAR(conversions.sunk[static_cast<std::size_t>(gt::carried_component(0))],
+              0.01 * area * static_cast<double>(ground.cells()), 1e-12);
+  EXPECT_EQ(gt::layered_water_ledger(water, area).water, 0.0);
 }
 
 TEST(LayeredForceErosion, WaterStrengthIsTheWorkedNumber) {

@@ -397,10 +397,17 @@ std::vector<std::string> setup_notes(const LayeredSetup& setup) {
           ? fmt::format("sediment diffusion with {} weights (σ = {}{})", diffusion_weighting_name(params.diffusion_weighting),
                         params.sediment_diffusion, params.regolith_diffusion ? ", the regolith too" : ", not the regolith")
           : std::string("no sediment diffusion");
-  notes.push_back(fmt::format("water: {} m on every column at the start, rain {} m/s{}; the water processes run each "
-                              "step (pipe flow, force erosion, dissolution with K_r = {} m, {}, wetness and the flood "
-                              "death)",
-                              params.initial_water, params.rain_rate, river, params.regolith_depth, diffusion));
+  const std::string rain_steps =
+      params.rain_steps > 0 && params.rain_rate > 0.0 ? fmt::format(" on the first {} steps", params.rain_steps) : "";
+  const std::string drain =
+      params.drain_step > 0
+          ? fmt::format(", every column drained of its water and what it carries at the start of step {}", params.drain_step)
+          : "";
+  notes.push_back(fmt::format("water: {} m on every column at the start, rain {} m/s{}{}{}; the water processes run "
+                              "each step (pipe flow, force erosion, dissolution with K_r = {} m, {}, wetness and the "
+                              "flood death)",
+                              params.initial_water, params.rain_rate, rain_steps, river, drain, params.regolith_depth,
+                              diffusion));
   return notes;
 }
 

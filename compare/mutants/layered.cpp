@@ -27,6 +27,7 @@ std::vector<Mutant> layered_mutants() {
   const std::vector<std::string> cone = {"erosion.layered.mutant_probe.cone"};
   const std::vector<std::string> cliff = {"erosion.layered.mutant_probe.cliff"};
   const std::vector<std::string> rain = {"erosion.layered.mutant_probe.rain"};
+  const std::vector<std::string> schedule = {"erosion.layered.mutant_probe.water_schedule"};
   const std::vector<std::string> river = {"erosion.layered.mutant_probe.river"};
   return {
       {"erosion.layered.gpu_gather_reversed", MutantKind::one_twin,
@@ -91,6 +92,10 @@ std::vector<Mutant> layered_mutants() {
        "the pipe flow sends what the water carries out of each column with the water, but no column gathers it", rain},
       {"erosion.layered.rain_uncounted", MutantKind::both_twins,
        "the rain falls on every column, and the ledger is never told", rain},
+      {"erosion.layered.drain_water_uncounted", MutantKind::both_twins,
+       "the drain empties every column, and the ledger is told of the sediment but not of the water", schedule},
+      {"erosion.layered.gpu_rain_past_its_steps", MutantKind::one_twin,
+       "water_sources.comp lets the rain fall on every step, past rain_steps", schedule},
       {"erosion.layered.breakdown_uncounted", MutantKind::both_twins,
        "force erosion breaks larger fragments into smaller suspended ones without counting the conversion", rain},
       {"erosion.layered.impact_never_delivered", MutantKind::both_twins,

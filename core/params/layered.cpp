@@ -112,6 +112,14 @@ bool has_water(const LayeredParams& params) {
   return params.initial_water > 0.0 || params.rain_rate > 0.0 || params.river;
 }
 
+bool rains(const LayeredParams& params, std::uint32_t step) {
+  return params.rain_steps == 0 || step < static_cast<std::uint32_t>(params.rain_steps);
+}
+
+bool drains(const LayeredParams& params, std::uint32_t step) {
+  return params.drain_step > 0 && step == static_cast<std::uint32_t>(params.drain_step);
+}
+
 // Type 2 ("granite") forms no soil in the code (rate 0); its composition, never used, is all boulders.
 std::vector<BedrockType> seed001_bedrock_types() {
   // The code's Ab and Bb rows (§3.12 [code]; Bb stored negated there).
@@ -187,6 +195,11 @@ const ParamTable<LayeredParams>& layered_param_table() {
                  "bedrock turns into subsoil only under less soil than this (code: 4.0)"),
       real_param("initial_water", &P::initial_water, 0.0, 1e3, "m", "water on every column at the start (code: 0.2)"),
       real_param("rain_rate", &P::rain_rate, 0.0, 10.0, "m/s", "water added to every column each step"),
+      integer_param("rain_steps", &P::rain_steps, 0, 1e9, "count",
+                    "rain falls on the first this many iterations only (0: on every one)"),
+      integer_param("drain_step", &P::drain_step, 0, 1e9, "count",
+                    "at the start of this iteration (counted from 0) every column's water and what it carries is "
+                    "removed, the code's \"Drain water\" (0: never)"),
       boolean_param("river", &P::river,
                     "the code's river: column (W/2, H/16) held at river_depth, rows y >= 15H/16 a sink"),
       real_param("river_depth", &P::river_depth, 0.0, 20.0, "m", "water depth of the river's source column"),

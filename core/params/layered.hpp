@@ -141,6 +141,9 @@ struct LayeredParams {
   // rain_rate or river; `has_water`).
   double initial_water = 0.0;     // depth on every column at the start, m
   double rain_rate = 0.0;         // added to every column each step, m/s
+  int rain_steps = 0;             // rain falls on iterations 0 .. rain_steps − 1 (counted from 0); 0: on every one
+  int drain_step = 0;             // at the start of this iteration every column loses its water and what it
+                                  // carries (the code's "Drain water", §3.19), booked as sunk; 0: never
   bool river = false;             // the code's river: column (W/2, H/16) set to river_depth each step,
                                   // rows y ≥ 15H/16 emptied (a sink), water and what it carries
   double river_depth = 1.0;       // m
@@ -179,6 +182,10 @@ struct LayeredParams {
 
 // Whether any water is given: initial_water > 0, rain_rate > 0 or the river.
 bool has_water(const LayeredParams& params);
+// The water schedule (both twins): whether rain falls on iteration `step` (counted from 0), and
+// whether every column drains at its start.
+bool rains(const LayeredParams& params, std::uint32_t step);
+bool drains(const LayeredParams& params, std::uint32_t step);
 
 // Throws InputError ("erosion.layered: ...") naming the first bad value: a scalar outside its
 // declared range (check_param_ranges over layered_param_table()), no bedrock type, a bedrock type's

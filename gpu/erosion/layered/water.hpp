@@ -2,8 +2,9 @@
 //
 // LayeredWaterFlow() compiles gpu/shaders/erosion/layered/water_sources.comp, water_flux.comp and
 //   water_move.comp.
-// sources(ground, water, step, conversions) runs the sources pass and counts what the rain and the
-//   river added and what the sinks took.
+// sources(ground, water, step, conversions) runs the drain at iteration drain_step (the sources
+//   pass with DRAIN_ALL), then the sources pass, and counts what the rain and the river added and
+//   what the sinks and the drain took.
 // flow(ground, water, step) runs the flux pass, the snapshot copy and the move pass.
 //
 // Inputs:  ground (LayeredGroundBuffers), water (LayeredWaterBuffers), step. Needs a current GlContext.
@@ -31,6 +32,7 @@ class LayeredWaterFlow {
 
  private:
   ComputeProgram sources_;
+  ComputeProgram drain_;
   ComputeProgram flux_;
   ComputeProgram move_;
 };

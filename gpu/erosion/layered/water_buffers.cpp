@@ -67,6 +67,8 @@ LayeredWaterBlock make_block(const LayeredGround<float>& shape, const LayeredPar
   block.sediment_diffusion = static_cast<float>(params.sediment_diffusion);
   block.diffusion_water = params.diffusion_weighting == DiffusionWeighting::water ? 1 : 0;
   block.regolith_diffusion = params.regolith_diffusion ? 1 : 0;
+  block.rain_steps = params.rain_steps;
+  block.drain_step = params.drain_step;
   return block;
 }
 
@@ -193,7 +195,9 @@ ComputeProgram layered_water_program(const std::string& shader, const std::vecto
                        {"impact_scale", offsetof(LayeredWaterBlock, impact_scale)},
                        {"sediment_diffusion", offsetof(LayeredWaterBlock, sediment_diffusion)},
                        {"diffusion_water", offsetof(LayeredWaterBlock, diffusion_water)},
-                       {"regolith_diffusion", offsetof(LayeredWaterBlock, regolith_diffusion)}});
+                       {"regolith_diffusion", offsetof(LayeredWaterBlock, regolith_diffusion)},
+                       {"rain_steps", offsetof(LayeredWaterBlock, rain_steps)},
+                       {"drain_step", offsetof(LayeredWaterBlock, drain_step)}});
   return program;
 }
 

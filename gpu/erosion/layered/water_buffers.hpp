@@ -74,7 +74,9 @@ struct LayeredWaterBlock {
   float sediment_diffusion;
   std::int32_t diffusion_water;
   std::int32_t regolith_diffusion;
-  std::int32_t padding;  // std140 rounds the block up to 16 bytes
+  std::int32_t rain_steps;
+  std::int32_t drain_step;
+  std::int32_t padding[3];  // std140 rounds the block up to 16 bytes
 };
 
 // Floats per column of the records scratch: the most any water pass writes (impact erosion's 48).

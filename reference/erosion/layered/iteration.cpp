@@ -17,7 +17,7 @@ namespace gt::reference {
 template <class Real>
 void layered_iteration(LayeredGround<Real>& ground, const LayeredParams& params, std::uint32_t step,
                        LayeredConversions& conversions, LayeredWater<Real>* water) {
-  if (water != nullptr) water_sources(ground, *water, params, conversions);
+  if (water != nullptr) water_sources(ground, *water, params, step, conversions);
   creep_step(ground, params, step, conversions);
   if (params.talus) talus_step(ground, params, step, conversions);
   if (water != nullptr) {

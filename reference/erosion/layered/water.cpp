@@ -92,10 +92,29 @@ Real moved(const std::vector<Real>& before, std::size_t offset, std::size_t c, c
 
 template <class Real>
 void water_sources(const LayeredGround<Real>& ground, LayeredWater<Real>& water, const LayeredParams& params,
-                   LayeredConversions& conversions) {
+                   std::uint32_t step, LayeredConversions& conversions) {
   const double area = ground.cell_size_x * ground.cell_size_y;
+  // A sink: the column loses its water and what it carries, booked as sunk.
+  const auto sink = [&](std::size_t c) {
+    conversions.water_sunk += static_cast<double>(water.water[c]) * area;
+    water.water[c] = 0;
+    for (int kind = 0; kind < carried_kind_count; ++kind) {
+      // Mutant: the sinks take the sediment without saying so.
+      if (!mutant_active("erosion.layered.sinks_uncounted")) {
+        conversions.sunk[static_cast<std::size_t>(carried_component(kind))] +=
+            static_cast<double>(water.carried_at(kind, c)) * area;
+      }
+      water.carried_at(kind, c) = 0;
+    }
+  };
+  if (drains(params, step)) {
+    const double water_sunk_before = conversions.water_sunk;
+    for (std::size_t c = 0; c < ground.cells(); ++c) sink(c);
+    // Mutant (both twins): the drain's water is not booked.
+    if (mutant_active("erosion.layered.drain_water_uncounted")) conversions.water_sunk = water_sunk_before;
+  }
   const auto rain = static_cast<Real>(params.time_step * params.rain_rate);
-  if (rain > Real(0)) {
+  if (rain > Real(0) && rains(params, step)) {
     for (std::size_t c = 0; c < ground.cells(); ++c) water.water[c] += rain;
     // Counted once a step: the cells' equal shares summed one by one would drift by ~cells·u.
     if (!mutant_active("erosion.layered.rain_uncounted")) {
@@ -110,19 +129,7 @@ void water_sources(const LayeredGround<Real>& ground, LayeredWater<Real>& water,
   water.water[source] = depth;
   for (int y = 0; y < ground.height; ++y) {
     if (!river_sink_row(y, ground.height)) continue;
-    for (int x = 0; x < ground.width; ++x) {
-      const std::size_t c = ground.cell(x, y);
-      conversions.water_sunk += static_cast<double>(water.water[c]) * area;
-      water.water[c] = 0;
-      for (int kind = 0; kind < carried_kind_count; ++kind) {
-        // Mutant: the sinks take the sediment without saying so.
-        if (!mutant_active("erosion.layered.sinks_uncounted")) {
-          conversions.sunk[static_cast<std::size_t>(carried_component(kind))] +=
-              static_cast<double>(water.carried_at(kind, c)) * area;
-        }
-        water.carried_at(kind, c) = 0;
-      }
-    }
+    for (int x = 0; x < ground.width; ++x) sink(ground.cell(x, y));
   }
 }
 
@@ -165,7 +172,7 @@ void water_flow(const LayeredGround<Real>& ground, LayeredWater<Real>& water, co
 }
 
 #define GT_LAYERED_WATER_FLOW_INSTANTIATE(Real)                                                                 \
-  template void water_sources(const LayeredGround<Real>&, LayeredWater<Real>&, const LayeredParams&,          \
+  template void water_sources(const LayeredGround<Real>&, LayeredWater<Real>&, const LayeredParams&, std::uint32_t, \
                               LayeredConversions&);                                                           \
   template void water_flow(const LayeredGround<Real>&, LayeredWater<Real>&, const LayeredParams&);
 GT_LAYERED_WATER_FLOW_INSTANTIATE(float)

@@ -1,7 +1,9 @@
 // Water sources, sinks and pipe flow on seed 001's layered ground (digest 001 §3.3, §3.7, §3.19), CPU reference.
 //
-// water_sources(ground, water, params, conversions), per column (step 1 of §4):
-//   rain: w ← w + Δt·rain_rate (the thesis's "add a constant to every column"; the code's rain is a
+// water_sources(ground, water, params, step, conversions), per column (step 1 of §4), in this order:
+//   drain (the code's one-shot "Drain water", at the start of iteration drain_step): every column
+//   loses its water and what the water carries. Rain, on iterations below rain_steps (all with 0):
+//   w ← w + Δt·rain_rate (the thesis's "add a constant to every column"; the code's rain is a
 //   one-shot operator, made a rate here so that rain falls through a run). River (the code's river
 //   mode): the source column (W/2, H/16) gets w ← river_depth; every column of a sink row
 //   (y ≥ 15H/16) loses its water and what the water carries.
@@ -20,9 +22,11 @@
 //      of eq. 2.2's w̄).
 //
 // Inputs:  ground (its surface h, read only), water (LayeredWater<Real>: w, fluxes, carried kinds),
-//          params (rain_rate, the river, Δt, g, cell sizes).
+//          params (rain_rate, rain_steps, drain_step, the river, Δt, g, cell sizes); step: the iteration,
+//          counted from 0.
 // Outputs: water changed in place; water_sources counts in `conversions` (m³): water_added (rain, and
-//          the river's rise), water_sunk (the sinks, and the river's fall), sunk[i] per component.
+//          the river's rise), water_sunk (the sinks and the drain, and the river's fall), sunk[i] per
+//          component.
 // Units:   m, m/s, m³/s; conversions in m³.
 // Throws:  nothing.
 // Twin:    gpu/erosion/layered/water.hpp (LayeredWaterFlow) with gpu/shaders/erosion/layered/water_sources.comp,
@@ -37,6 +41,8 @@
 //     Regolith moves with the water like the sediment (thesis and code agree).
 #pragma once
 
+#include <cstdint>
+
 #include "core/layered/layered_ground.hpp"
 #include "core/layered/layered_water.hpp"
 #include "core/params/layered.hpp"
@@ -45,7 +51,7 @@ namespace gt::reference {
 
 template <class Real>
 void water_sources(const LayeredGround<Real>& ground, LayeredWater<Real>& water, const LayeredParams& params,
-                   LayeredConversions& conversions);
+                   std::uint32_t step, LayeredConversions& conversions);
 
 template <class Real>
 void water_flow(const LayeredGround<Real>& ground, LayeredWater<Real>& water, const LayeredParams& params);

@@ -57,6 +57,8 @@ layout(std140, binding = 1) uniform LayeredWaterBlock {
   float sediment_diffusion;      // σ (§3.8)
   int diffusion_water;           // 1: the code's weights by water depth
   int regolith_diffusion;        // 1: the regolith diffuses too
+  int rain_steps;                // rain on iterations below it; 0: on every one
+  int drain_step;                // the iteration at whose start every column drains; 0: never
 };
 
 layout(std430, binding = 10) buffer LayeredWaterState { float water_state[]; };
