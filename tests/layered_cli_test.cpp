@@ -32,7 +32,7 @@ TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
       run_groundtruth({"run", "erosion.layered.mutant_probe.*", "--out", out.string()}, folder.path());
   ASSERT_EQ(result.status, 0) << result;
   const auto report = report_of(out);
-  ASSERT_EQ(report["cases"].size(), 4u);  // cone, cliff, and the water's: rain, river
+  ASSERT_EQ(report["cases"].size(), 5u);  // cone, cliff, and the water's: rain, river, the water schedule
   for (const auto& layered : report["cases"]) {
     EXPECT_EQ(layered["status"], "pass") << layered["name"];
     const auto names = check_names(layered);
@@ -46,7 +46,8 @@ TEST(LayeredCli, TheProbesPassWithTheirLedgersAndPictures) {
                              "ledger.png", "soil_topsoil_org_cpu.npy", "mask_org.npy"}) {
       EXPECT_TRUE(fs::exists(out / name / file)) << name << ": " << file;
     }
-    const bool wet = name.find("rain") != std::string::npos || name.find("river") != std::string::npos;
+    const bool wet = name.find("rain") != std::string::npos || name.find("river") != std::string::npos ||
+                     name.find("water") != std::string::npos;
     EXPECT_EQ(std::find(names.begin(), names.end(), "ledger.water.cpu") != names.end(), wet) << name;
     EXPECT_EQ(fs::exists(out / name / "water_cpu.npy"), wet) << name;
   }

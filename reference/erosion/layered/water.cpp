@@ -171,9 +171,9 @@ void water_flow(const LayeredGround<Real>& ground, LayeredWater<Real>& water, co
   water.previous_water = depth_before;
 }
 
-#define GT_LAYERED_WATER_FLOW_INSTANTIATE(Real)                                                                 \
+#define GT_LAYERED_WATER_FLOW_INSTANTIATE(Real)                                                              \
   template void water_sources(const LayeredGround<Real>&, LayeredWater<Real>&, const LayeredParams&, std::uint32_t, \
-                              LayeredConversions&);                                                           \
+                              LayeredConversions&);                                                                \
   template void water_flow(const LayeredGround<Real>&, LayeredWater<Real>&, const LayeredParams&);
 GT_LAYERED_WATER_FLOW_INSTANTIATE(float)
 GT_LAYERED_WATER_FLOW_INSTANTIATE(double)
