@@ -125,6 +125,11 @@ Check materials_term(const LedgerRun& run, const LedgerModel& model) {
   std::size_t worst_material = 0;
   for (std::size_t m = 0; m < start.size(); ++m) {
     const double drift = std::abs(end[m] - start[m] - converted.at(layered_converted_key(m))) / total;
+    // A material whose volume is NaN is the worst drift there is: a comparison would skip it.
+    if (std::isnan(drift)) {
+      worst = drift, worst_material = m;
+      break;
+    }
     if (drift > worst) worst = drift, worst_material = m;
   }
   return bounded_check("", worst, model.bound(run.backend), std::nullopt,
