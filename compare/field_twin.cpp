@@ -119,7 +119,8 @@ struct PrecisionTruth {
 PrecisionTruth precision_truth(const FieldTwin::GeneratedField& declared, const Grid<double>& truth) {
   PrecisionTruth kept{truth, declared.precision};
   const auto& excused = declared.precision_excused;
-  const auto left_out = static_cast<std::size_t>(std::count(excused.begin(), excused.end(), std::uint8_t{1}));
+  const auto left_out =
+      static_cast<std::size_t>(std::count_if(excused.begin(), excused.end(), [](std::uint8_t mark) { return mark != 0; }));
   if (left_out == 0) return kept;
   if (!kept.field.has_mask()) kept.field.valid.assign(kept.field.size(), 1);
   for (std::size_t sample = 0; sample < excused.size(); ++sample) {

@@ -58,6 +58,7 @@
 // histograms of the planet and the Earth; their spherical power spectra; both elevation maps as
 // EXR/NPY fields; the planet drawn by both twins (cpu.png, gpu.png, their difference).
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <deque>
@@ -166,17 +167,18 @@ double area_element_ratio(PlanetWarp warp) {
   const double angle = warp == PlanetWarp::none      ? 0.0
                        : warp == PlanetWarp::tangent ? std::numbers::pi / 4.0  // eq. 3.4
                                                      : 0.868734829276;         // eq. 3.5, Zucker and Higashi's θ
-  const auto value = [angle](double t) { return angle == 0.0 ? t : std::tan(angle * t) / std::tan(angle); };
-  const auto slope = [angle](double t) {
-    return angle == 0.0 ? 1.0 : angle / (std::tan(angle) * std::cos(angle * t) * std::cos(angle * t));
-  };
+  // f and f' at the grid's coordinates, once per axis value.
   constexpr int steps = 2000;
+  std::array<double, steps + 1> value{}, slope{};
+  for (int i = 0; i <= steps; ++i) {
+    const double t = -1.0 + 2.0 * i / steps;
+    value[i] = angle == 0.0 ? t : std::tan(angle * t) / std::tan(angle);
+    slope[i] = angle == 0.0 ? 1.0 : angle / (std::tan(angle) * std::cos(angle * t) * std::cos(angle * t));
+  }
   double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
   for (int i = 0; i <= steps; ++i) {
-    const double u = -1.0 + 2.0 * i / steps;
     for (int j = 0; j <= steps; ++j) {
-      const double v = -1.0 + 2.0 * j / steps;
-      const double density = slope(u) * slope(v) / std::pow(1.0 + value(u) * value(u) + value(v) * value(v), 1.5);
+      const double density = slope[i] * slope[j] / std::pow(1.0 + value[i] * value[i] + value[j] * value[j], 1.5);
       largest = std::max(largest, density);
       smallest = std::min(smallest, density);
     }
