@@ -90,7 +90,7 @@ class PipeErosion {
   std::vector<std::pair<std::size_t, Real>> source_depths_;  // cell, Δt·rate/(l_x·l_y), m
   std::vector<unsigned char> exterior_pipes_;  // bit k (all 8 pipes): pipe k leads off the grid or to no data
   std::vector<Real> water_before_flow_;        // d_A of the current step
-  std::vector<unsigned char> drained_;         // K < 1 this step: the pipes took all of d_A
+  std::vector<unsigned char> drained_;         // bit 0: K < 1 this step, the pipes took all of d_A (pipes.cpp)
   std::vector<Real> scratch_;                  // next terrain or sediment of the current step
   std::vector<Real> forward_;                  // MacCormack: the semi-Lagrangian result it corrects
   std::vector<Fluxes> sent_;                   // sediment or regolith leaving through each pipe, m
