@@ -11,6 +11,12 @@
 //               sides exterior); C > s: b −= k_s·(C − s), s += the same; else b += k_d·(s − C),
 //               s −= the same; k = min(1, K·Δt)
 //               with seed 001's code's tilt: the raw differences b(x+1) − b(x−1) in place of ∇b
+//   layers      (Šťava et al. 2008, eqs. 2.27-2.29, Algorithm 1; layers = N ≥ 1) T_k = C_k·(the same
+//               tilt, speed and ramp), C_0 = K_c for the bedrock; from the top layer down, while the
+//               capacity left after the layers above (T_k − Σ_{i>k} b_i, start thicknesses) exceeds s
+//               (as printed: falls below it): k_s times that gap comes out of layer k, which the water
+//               gets through only by emptying it; the bedrock gives without limit. s > T_N: k_d·(s − T_N)
+//               settles on layer N. b and s change by the total, as Mei's
 //   regolith    (seed 001 §3.9, K_r > 0) r_max = min(d_B, K_r); r < r_max: b −= k_re·(r_max − r),
 //               r += the same; else b += k_rd·(r − r_max), r −= the same
 //   8 pipes     the diagonals TL, BR, TR, BL of length l_d = √(l_x² + l_y²), the same A; the net flux
@@ -299,6 +305,47 @@ std::vector<Real> diffused(const Cells<Real>& cells, const std::vector<Real>& fi
 
 }  // namespace
 
+// Šťava's layers at one cell (see the top): the layers of `state` at `cell` (the start's thicknesses)
+// lose what the walk takes and the top one gains the deposit; returns taken − deposited.
+template <class Real, class CapacityOf>
+Real layers_exchange(PipeState<Real>& state, std::size_t cell, const CapacityOf& capacity_of, const Real& suspended,
+                     const Real& dissolving, const Real& depositing, const HydraulicParams& params) {
+  const bool as_printed = params.layer_erosion == LayerErosion::as_printed;
+  const auto constant_of = [&](int layer) { return layer == 0 ? params.capacity : params.layer_capacity[layer - 1]; };
+  // The gap that drives erosion of a layer whose capacity left is `left`, 0 where it does not erode.
+  const auto erosion_gap = [&](const Real& left) {
+    if (as_printed) return left < suspended ? suspended - left : Real(0);
+    return left > suspended ? left - suspended : Real(0);
+  };
+  Real taken(0.0);
+  Real buried_above(0.0);
+  bool through = true;  // the water got through every layer above
+  for (int layer = params.layers; layer >= 1 && through; --layer) {
+    Real& thickness = state.layers[static_cast<std::size_t>(layer - 1)].values[cell];
+    const Real gap = erosion_gap(capacity_of(constant_of(layer)) - buried_above);
+    if (!(gap > Real(0.0))) {
+      through = false;
+    } else if (dissolving * gap < thickness) {
+      thickness = thickness - dissolving * gap;
+      taken = taken + dissolving * gap;
+      through = false;
+    } else {
+      taken = taken + thickness;
+      buried_above = buried_above + thickness;
+      thickness = Real(0.0);
+    }
+  }
+  if (through) taken = taken + dissolving * erosion_gap(capacity_of(params.capacity) - buried_above);
+  const Real top_capacity = capacity_of(constant_of(params.layers));
+  if (suspended > top_capacity) {
+    Real& top = state.layers[static_cast<std::size_t>(params.layers - 1)].values[cell];
+    const Real settled = depositing * (suspended - top_capacity);
+    top = top + settled;
+    taken = taken - settled;
+  }
+  return taken;
+}
+
 template <class Real>
 PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicParams& params,
                                const HydraulicForcing& forcing) {
@@ -349,9 +396,14 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
     const Real v = next.velocity_y.values[cell];
     const Real ramp = params.depth_ramp > 0.0 ? min(Real(1), flowed[cell] / Real(params.depth_ramp)) : Real(1);
     const Real tilt = max(Real(params.min_tilt_sine), tilt_sine(cells, params.tilt_differences, x, y));
-    const Real capacity = Real(params.capacity) * tilt * sqrt(u * u + v * v) * ramp;
+    const Real speed = sqrt(u * u + v * v);
+    const auto capacity_of = [&](double constant) { return Real(constant) * tilt * speed * ramp; };
     const Real suspended = start.sediment.values[cell];
-    const Real taken = capacity > suspended ? dissolving * (capacity - suspended) : -(depositing * (suspended - capacity));
+    const Real taken = params.layers == 0
+                           ? (capacity_of(params.capacity) > suspended
+                                  ? dissolving * (capacity_of(params.capacity) - suspended)
+                                  : -(depositing * (suspended - capacity_of(params.capacity))))
+                           : layers_exchange(next, cell, capacity_of, suspended, dissolving, depositing, params);
     Real bed = start.terrain.values[cell] - taken;
     sediment[cell] = suspended + taken;
     if (regolith) {

@@ -14,9 +14,12 @@
 //                  width and height); 0 = none. A source on a no-data cell is refused.
 //   checkpoints    how many states along the run the shadow steps start from and the GPU is
 //                  compared with ref<double> at.
+//   layer_thickness_k   with `layers` ≥ k: layer k's initial thickness on every valid cell, m, unless
+//                  the input carries a field layer_k (m, ≥ 0), which gives it cell by cell.
 //
 // The state (compare/stepper.hpp): terrain b, water d, sediment s, regolith r (m), velocity_x u
-// and velocity_y v (m/s), outflow f per pipe (m³/s, cell × pipe); compare/stepped_case.hpp runs the
+// and velocity_y v (m/s), outflow f per pipe (m³/s, cell × pipe), with layers layer_1 .. layer_N (m;
+// Šťava 2008, part of b: the material ledger holds them); compare/stepped_case.hpp runs the
 // three twins over it (checkpoints, shadow steps, end-of-run distances, determinism, field files,
 // pictures of every field, descriptors) and grades each field's one-step shadow value by value
 // (the shadow_length steps' distance shown, not graded) against pipe_shadow_bounds
@@ -69,6 +72,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -164,7 +168,47 @@ void set_forcing(const PipeCaseParams& given, PipeScenario& scenario) {
   }
 }
 
-PipeScenario make_scenario(const nlohmann::json& resolved, const Heightmap& input) {
+// Šťava's layers: each layer_k input field, checked, or layer_thickness_k on every valid cell.
+void set_layers(const PipeCaseParams& given, const std::map<std::string, Heightmap>& fields, PipeScenario& scenario) {
+  auto& state = scenario.initial;
+  for (int k = 1; k <= given.hydraulic.layers; ++k) {
+    const std::string name = fmt::format("layer_{}", k);
+    Grid<double>& layer = state.layers[static_cast<std::size_t>(k - 1)];
+    const auto field = fields.find(name);
+    if (field == fields.end()) {
+      const double thickness = given.layer_thickness[static_cast<std::size_t>(k - 1)];
+      for (std::size_t cell = 0; cell < layer.size(); ++cell) {
+        if (state.terrain.is_valid(cell)) layer.values[cell] = thickness;
+      }
+      scenario.notes.push_back(fmt::format("{}: {} m on every valid cell (layer_thickness_{}; no input field {})", name,
+                                           thickness, k, name));
+      continue;
+    }
+    for (std::size_t cell = 0; cell < layer.size(); ++cell) {
+      if (!state.terrain.is_valid(cell)) continue;
+      const double thickness = field->second.values[cell];
+      if (!(thickness >= 0.0)) {
+        throw InputError(fmt::format("erosion.pipe: the input field {} holds {} m at cell (x={}, y={}); a layer's "
+                                     "thickness must be >= 0",
+                                     name, thickness, cell % static_cast<std::size_t>(layer.width),
+                                     cell / static_cast<std::size_t>(layer.width)));
+      }
+      layer.values[cell] = thickness;
+    }
+    const FieldTotals totals = field_totals(layer);
+    scenario.notes.push_back(fmt::format("{} from the input field {}: {:.4g} to {:.4g} m", name, name, totals.low,
+                                         totals.high));
+  }
+  for (const auto& [name, field] : fields) {
+    if (name.starts_with("layer_") && std::stoi(name.substr(6)) > given.hydraulic.layers) {
+      throw InputError(fmt::format("erosion.pipe: the input field {} names a layer above layers = {}", name,
+                                   given.hydraulic.layers));
+    }
+  }
+}
+
+PipeScenario make_scenario(const nlohmann::json& resolved, const Heightmap& input,
+                           const std::map<std::string, Heightmap>& fields = {}) {
   if (input.size() == 0) throw InputError("erosion.pipe erodes a heightmap: the case needs an input");
   if (count_valid(input) == 0) throw InputError("erosion.pipe: the terrain's mask covers every cell");
   check_finite(input, "erosion.pipe: terrain");
@@ -172,8 +216,9 @@ PipeScenario make_scenario(const nlohmann::json& resolved, const Heightmap& inpu
   PipeScenario scenario;
   scenario.params = given.hydraulic;
   scenario.constants = pipe_constants(scenario.params, input);
-  scenario.initial = dry_pipe_state(input);
+  scenario.initial = dry_pipe_state(input, scenario.params.layers);
   scenario.checkpoints = std::min(given.checkpoints, std::max(scenario.params.steps, 1));
+  set_layers(given, fields, scenario);
   set_initial_water(given, scenario);
   set_forcing(given, scenario);
   return scenario;
@@ -394,8 +439,9 @@ std::vector<ShadowBound> pipe_field_bounds(const State& from, int steps, const P
   const PipeConstants& constants = scenario.constants;
   const auto start = pipe_state_of<double>(from, constants.pipe_count);
   const PipeShadowScales scales = pipe_shadow_scales(start, constants);
-  const std::array<double, 7> scale_of_field{scales.relief, scales.depth, scales.sediment, scales.regolith,
-                                             scales.speed,  scales.speed, scales.flux};
+  std::vector<double> scale_of_field{scales.relief, scales.depth, scales.sediment, scales.regolith,
+                                     scales.speed,  scales.speed, scales.flux};
+  scale_of_field.insert(scale_of_field.end(), scales.layers.begin(), scales.layers.end());
   if (steps > 1) {
     std::vector<ShadowBound> shown;
     for (double scale : scale_of_field) shown.push_back({.scale = scale, .graded = false, .why_not_graded = multi_step_not_graded});
@@ -445,7 +491,7 @@ CaseRun spec_step_check(std::shared_ptr<const PipeScenario> scenario) {
 }
 
 PreparedTwin prepare_pipe(const nlohmann::json& resolved, const LoadedInput& input) {
-  auto scenario = std::make_shared<const PipeScenario>(make_scenario(resolved, input.heights));
+  auto scenario = std::make_shared<const PipeScenario>(make_scenario(resolved, input.heights, input.fields));
   const PipeConstants& constants = scenario->constants;
   SteppedTwin twin{.algorithm = "erosion.pipe",
                    .fields = pipe_fields(constants),
@@ -548,6 +594,13 @@ const ParamTable<PipeCaseParams>& pipe_case_param_table() {
         integer_param("checkpoints", &C::checkpoints, 1, 1000, "count",
                       "states along the run from which the GPU takes shadow steps beside ref<float>, "
                       "and at which it is compared with ref<double>"),
+        real_param("layer_thickness_1", element(&C::layer_thickness, 0), 0.0, 1e4, "m",
+                   "layer 1's initial thickness on every cell (with layers >= 1), unless the input field layer_1 "
+                   "gives it"),
+        real_param("layer_thickness_2", element(&C::layer_thickness, 1), 0.0, 1e4, "m",
+                   "layer 2's initial thickness (layers >= 2), unless the input field layer_2 gives it"),
+        real_param("layer_thickness_3", element(&C::layer_thickness, 2), 0.0, 1e4, "m",
+                   "layer 3's initial thickness (layers = 3), unless the input field layer_3 gives it"),
     };
     rows.insert(rows.end(), scenario.begin(), scenario.end());
     return rows;
@@ -562,6 +615,9 @@ Algorithm pipe_algorithm() {
           .params = &pipe_specs(),
           .prepare = prepare_pipe,
           .kind = CaseKind::stepped,
+          .input_fields = {{"layer_1", "m", "Šťava's layer 1 (on the bedrock): initial thickness, >= 0 (layers >= 1)"},
+                           {"layer_2", "m", "layer 2's initial thickness, >= 0 (layers >= 2)"},
+                           {"layer_3", "m", "layer 3's initial thickness, >= 0 (layers = 3, the top)"}},
           .benchmark = benchmark_pipes,
           // Counted in reference/erosion/pipes.cpp (step() as the table times it, ledger included)
           // and gpu/erosion/pipes.cpp, at the benchmark's parameters (4 pipes, flux transport).
@@ -578,9 +634,12 @@ Algorithm pipe_algorithm() {
           .memory = [](const nlohmann::json& resolved, const LoadedInput& input) {
             const double cells = static_cast<double>(input.heights.size());
             const auto given = params_from_json(pipe_case_param_table(), resolved);
-            return memory_for(cells, "cells", 1100 + 600 + descriptor_bytes_per_cell) +
+            // Each of Šťava's layers: a double in the three twins' states, the GPU's float, the
+            // interval model's three doubles and the field files' copy, 120 B a cell (counted).
+            const double layers = given.hydraulic.layers;
+            return memory_for(cells, "cells", 1100 + 600 + 120.0 * layers + descriptor_bytes_per_cell) +
                    memory_for(cells * given.checkpoints, "cell-checkpoints",
-                              2.0 * 8.0 * (6.0 + given.hydraulic.pipe_count) + 20.0);
+                              2.0 * 8.0 * (6.0 + given.hydraulic.pipe_count + layers) + 20.0);
           }};
 }
 

@@ -3,6 +3,8 @@
 // source and the checkpoints (see pipes.cpp for their meaning).
 #pragma once
 
+#include <array>
+
 #include "core/param_table.hpp"
 #include "core/params/hydraulic.hpp"
 
@@ -22,6 +24,8 @@ struct PipeCaseParams {
   double source_x = 0.5;       // shares of the width and height
   double source_y = 0.5;
   int checkpoints = 16;
+  // Šťava's layers' initial thicknesses where no input field layer_k gives them, m.
+  std::array<double, max_pipe_layers> layer_thickness{0.5, 0.5, 0.5};
 };
 
 // The declarations (core/param_table.hpp: erosion.pipe's, then the scenario's).

@@ -48,6 +48,7 @@ template <class Real>
 PipeShadowScales pipe_shadow_scales(const PipeState<Real>& start, const PipeConstants& constants) {
   PipeShadowScales scales;
   const auto& terrain = start.terrain;
+  scales.layers.assign(start.layers.size(), 0.0);
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
       const std::size_t cell = terrain.index(x, y);
@@ -56,6 +57,9 @@ PipeShadowScales pipe_shadow_scales(const PipeState<Real>& start, const PipeCons
       scales.depth = std::max(scales.depth, static_cast<double>(start.water.values[cell]));
       scales.sediment = std::max(scales.sediment, static_cast<double>(start.sediment.values[cell]));
       scales.regolith = std::max(scales.regolith, static_cast<double>(start.regolith.values[cell]));
+      for (std::size_t k = 0; k < start.layers.size(); ++k) {
+        scales.layers[k] = std::max(scales.layers[k], static_cast<double>(start.layers[k].values[cell]));
+      }
       scales.speed = std::max({scales.speed, std::abs(static_cast<double>(start.velocity_x.values[cell])),
                                std::abs(static_cast<double>(start.velocity_y.values[cell]))});
       for (int k = 0; k < constants.pipe_count; ++k) {

@@ -81,6 +81,7 @@ struct PipeShadowScales {
   double regolith = 0.0;  // max r, m
   double flux = 0.0;      // max f, m³/s
   double speed = 0.0;     // max(|u|, |v|), m/s
+  std::vector<double> layers;  // max b_k of each of Šťava's layers, m
 };
 
 template <class Real>

@@ -81,6 +81,9 @@ std::vector<Check> pipe_spec_checks(const PipeState<double>& start, const PipeCo
   grade_grid("water", [](const auto& state) -> const auto& { return state.water; });
   grade_grid("sediment", [](const auto& state) -> const auto& { return state.sediment; });
   if (params.regolith_depth > 0.0) grade_grid("regolith", [](const auto& state) -> const auto& { return state.regolith; });
+  for (std::size_t k = 0; k < static_cast<std::size_t>(params.layers); ++k) {
+    grade_grid(fmt::format("layer_{}", k + 1), [k](const auto& state) -> const auto& { return state.layers[k]; });
+  }
   grade_grid("velocity_x", [](const auto& state) -> const auto& { return state.velocity_x; });
   grade_grid("velocity_y", [](const auto& state) -> const auto& { return state.velocity_y; });
   SpecWorst outflow;

@@ -1,6 +1,7 @@
 // spec.step.<field>.cpu: one step of ref<double> held value by value to the host spec of the pipe
 // step (compare/algorithms/pipe_spec.hpp), for the fields terrain, water, sediment, regolith (where
-// the parameters have it), velocity_x, velocity_y and outflow (each cell's 4 or 8 pipes).
+// the parameters have it), Šťava's layer_1 .. layer_N (with layers = N), velocity_x, velocity_y and
+// outflow (each cell's 4 or 8 pipes).
 //
 // Error model: ref<double>'s step and the spec's, both from the same start, are each within their
 // rounding-interval width of the exact step (core/rounding_interval.hpp: both are run once more in
@@ -13,7 +14,7 @@
 //
 // Inputs:  start (a state ref<double> reached), the twins' constants (what ref<double> steps with), params (what the spec
 //          steps with), forcing, and the number of the step graded (for the text).
-// Outputs: six checks, seven with regolith, named as above.
+// Outputs: six checks, one more with regolith and one per layer, named as above.
 #pragma once
 
 #include <vector>

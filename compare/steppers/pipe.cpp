@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "gpu/erosion/pipes.hpp"
 
 namespace gt {
@@ -83,7 +85,7 @@ class PipeGpuStepper : public Stepper {
 StateDecl pipe_fields(const PipeConstants& constants) {
   std::vector<std::string> pipes;
   for (int pipe = 0; pipe < constants.pipe_count; ++pipe) pipes.emplace_back(pipe_name(pipe));
-  return {{.name = "terrain", .unit = "m", .meaning = "terrain height b", .conserved = true,
+  StateDecl fields{{.name = "terrain", .unit = "m", .meaning = "terrain height b", .conserved = true,
            .standard_name = "topographic__elevation"},
           {.name = "water", .unit = "m", .meaning = "water depth d", .conserved = true,
            .standard_name = "surface_water__depth"},
@@ -97,6 +99,14 @@ StateDecl pipe_fields(const PipeConstants& constants) {
            .extent = Extent::cell_pipe,
            .components = constants.pipe_count,
            .component_names = pipes}};
+  for (int k = 1; k <= constants.layer_count; ++k) {
+    fields.push_back({.name = fmt::format("layer_{}", k),
+                      .unit = "m",
+                      .meaning = fmt::format("thickness b_{} of layer {} of {} on the bedrock (Šťava 2008; part of the "
+                                             "terrain height, layer {} on top)",
+                                             k, k, constants.layer_count, constants.layer_count)});
+  }
+  return fields;
 }
 
 template <class Real>
@@ -107,6 +117,7 @@ State pipe_state(const PipeState<Real>& pipe, int pipes) {
   outflow.reserve(pipe.outflow.size() * static_cast<std::size_t>(pipes));
   for (const auto& cell : pipe.outflow) outflow.insert(outflow.end(), cell.begin(), cell.begin() + pipes);
   state.fields.push_back(std::move(outflow));
+  for (const auto& layer : pipe.layers) state.fields.emplace_back(layer.values.begin(), layer.values.end());
   return state;
 }
 
@@ -126,6 +137,11 @@ PipeState<Real> pipe_state_of(const State& state, int pipes) {
   const auto& outflow = state.fields[f];
   for (std::size_t cell = 0; cell < pipe.outflow.size(); ++cell) {
     for (int k = 0; k < pipes; ++k) pipe.outflow[cell][k] = static_cast<Real>(outflow[cell * pipes + k]);
+  }
+  // The fields after the outflow are the layers, bottom first.
+  for (std::size_t layer = f + 1; layer < state.fields.size(); ++layer) {
+    Grid<Real>& thickness = pipe.layers.emplace_back(state.grid.blank<Real>(Real(0), "m"));
+    thickness.values.assign(state.fields[layer].begin(), state.fields[layer].end());
   }
   return pipe;
 }

@@ -11,6 +11,7 @@
 //            regolith   m     loosened bed material r (seed 001 §3.9)
 //            velocity_x, velocity_y   m/s   water velocity u, v
 //            outflow    m³/s  the flux through each pipe in use (cell x pipe: L, R, T, B, diagonals)
+//            layer_1 .. layer_N   m   with `layers` = N ≥ 1: Šťava's layer thicknesses, bottom first
 //          Ledger records, one a step from the load (record 0 the state loaded), PipeLedgerEntry's
 //          members by name (records_of, entries_of).
 // Conventions: loading a state starts a new run and ledger from it; the model's iteration number

@@ -26,12 +26,15 @@ constexpr Choice<PipeBoundary> boundary_choices[] = {{"closed", PipeBoundary::cl
 constexpr Choice<TiltDifferences> tilt_choices[] = {{"central", TiltDifferences::central},
                                                     {"seed001_code", TiltDifferences::seed001_code}};
 constexpr Choice<int> pipe_count_choices[] = {{"4", 4}, {"8", 8}};
+constexpr Choice<LayerErosion> layer_erosion_choices[] = {{"capacity_above_sediment", LayerErosion::capacity_above_sediment},
+                                                          {"as_printed", LayerErosion::as_printed}};
 
 }  // namespace
 
 const char* sediment_transport_name(SedimentTransport transport) { return choice_name(transport_choices, transport); }
 const char* pipe_boundary_name(PipeBoundary boundary) { return choice_name(boundary_choices, boundary); }
 const char* tilt_differences_name(TiltDifferences differences) { return choice_name(tilt_choices, differences); }
+const char* layer_erosion_name(LayerErosion erosion) { return choice_name(layer_erosion_choices, erosion); }
 
 double tilt_span(TiltDifferences differences, int sides, double length) {
   // Mutant erosion.pipe.tilt_unhalved: a central difference divided by l, not 2l (both twins' spans).
@@ -92,6 +95,17 @@ const ParamTable<HydraulicParams>& hydraulic_param_table() {
                     "Jákó & Tóth 2011's combined step: one iteration of their thermal erosion after each pipe step"),
       real_param("thermal_talus_angle", &P::thermal_talus_angle, 0.0, 89.0, "degree", "talus angle of the thermal step"),
       real_param("thermal_rate", &P::thermal_rate, 0.0, 1.0, "1", "Jákó's rate Δt·C_t·R of the thermal step"),
+      integer_param("layers", &P::layers, 0, max_pipe_layers, "count",
+                    "Šťava et al. 2008 (seed 000 §2.5): layers of material on the bedrock, each with its own capacity "
+                    "C_k (state fields layer_1 .. layer_N, m; layer N on top takes the deposits); 0 = Mei's single "
+                    "material"),
+      real_param("layer_capacity_1", element(&P::layer_capacity, 0), 0.0, 1e3, "s",
+                 "C_1 of layer 1 (on the bedrock): T_1 = C_1·sin α·|v|·l(d) (eq. 2.28); the bedrock's is K_c"),
+      real_param("layer_capacity_2", element(&P::layer_capacity, 1), 0.0, 1e3, "s", "C_2 of layer 2 (eq. 2.28)"),
+      real_param("layer_capacity_3", element(&P::layer_capacity, 2), 0.0, 1e3, "s", "C_3 of layer 3 (eq. 2.28)"),
+      choice_param("layer_erosion", &P::layer_erosion, layer_erosion_choices, "",
+                   "Algorithm 1's condition to erode layer k: T̂_k > s (the prose: capacity left after the layers "
+                   "above) or as the thesis prints it, T̂_k < s"),
   };
   return table;
 }
@@ -111,6 +125,12 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   require(evaporated_share <= 1.0,
           fmt::format("evaporation_rate·time_step = {}·{} = {} exceeds 1 (more than all the water per step)",
                       params.evaporation_rate, params.time_step, evaporated_share));
+  require(params.layers == 0 || (params.regolith_depth == 0.0 && !params.thermal_step),
+          fmt::format("layers = {} with {}: the seeds do not say which layer the regolith loosens or the thermal step "
+                      "moves; use layers = 0 or switch those off",
+                      params.layers, params.thermal_step ? "the thermal step" : "regolith (regolith_depth > 0)"));
+  require(params.layers > 0 || params.layer_erosion == LayerErosion::capacity_above_sediment,
+          "layer_erosion = as_printed needs layers >= 1 (Algorithm 1 walks the layers above the bedrock)");
   require(terrain.cell_size_x > 0.0 && terrain.cell_size_y > 0.0,
           fmt::format("cell size {} x {} m must be > 0", terrain.cell_size_x, terrain.cell_size_y));
 
@@ -153,11 +173,14 @@ PipeConstants pipe_constants(const HydraulicParams& params, const Heightmap& ter
   constants.thermal_step = params.thermal_step;
   constants.thermal = thermal_jako_constants(
       {.iterations = 1, .talus_angle_deg = params.thermal_talus_angle, .rate = params.thermal_rate}, terrain);
+  constants.layer_count = params.layers;
+  for (int k = 0; k < params.layers; ++k) constants.layer_capacity[k] = params.layer_capacity[k];
+  constants.layer_erosion = params.layer_erosion;
   return constants;
 }
 
 template <class Real>
-PipeState<Real> dry_pipe_state(const Grid<Real>& terrain) {
+PipeState<Real> dry_pipe_state(const Grid<Real>& terrain, int layers) {
   auto zero_like = [&terrain] {
     Grid<Real> field = terrain;
     std::fill(field.values.begin(), field.values.end(), Real(0));
@@ -171,11 +194,12 @@ PipeState<Real> dry_pipe_state(const Grid<Real>& terrain) {
   state.velocity_x = zero_like();
   state.velocity_y = zero_like();
   state.regolith = zero_like();
+  for (int k = 0; k < layers; ++k) state.layers.push_back(zero_like());
   return state;
 }
 
-template PipeState<float> dry_pipe_state(const Grid<float>&);
-template PipeState<double> dry_pipe_state(const Grid<double>&);
+template PipeState<float> dry_pipe_state(const Grid<float>&, int);
+template PipeState<double> dry_pipe_state(const Grid<double>&, int);
 
 template <class To, class From>
 PipeState<To> cast_pipe_state(const PipeState<From>& state) {
@@ -272,6 +296,13 @@ void check_pipe_input(const PipeState<Real>& state, const HydraulicForcing& forc
   require_field(state.regolith, terrain, "regolith", true);
   require_field(state.velocity_x, terrain, "x velocity", false);
   require_field(state.velocity_y, terrain, "y velocity", false);
+  require(state.layers.size() == static_cast<std::size_t>(constants.layer_count),
+          fmt::format("the state holds {} layers, the parameters ask for {}", state.layers.size(), constants.layer_count));
+  for (std::size_t k = 0; k < state.layers.size(); ++k) {
+    const std::string name = fmt::format("layer_{}", k + 1);
+    require_same_size(state.layers[k], terrain, name.c_str());
+    require_field(state.layers[k], terrain, name.c_str(), true);
+  }
   require_fluxes(state, constants.pipe_count);
   require_forcing(terrain, forcing, constants);
 }

@@ -30,6 +30,14 @@
 //     |b(x−1) − b(x+1)| (as if l = 1 and without halving) in the same sqrt(q/(1 + q)); at an exterior
 //     neighbour both take the one-sided difference, the code variant over 1 too (not doubled: the
 //     seed's code wraps periodically and never meets a border), and 0 with both sides exterior.
+//   - Šťava et al. 2008's layers (digest 000 §3.5, eqs. 2.27-2.29, Algorithm 1): `layers` = N ≤ 3
+//     layers of thickness b_1..b_N (state field, m) lie on the bedrock, layer N on top; the terrain
+//     b stays the ground's height (eq. 2.27: the bedrock's surface plus Σ b_k), so the flow, the
+//     tilt and the material ledger are unchanged. Layer k's capacity constant is C_k
+//     (`layer_capacity_k`, s), the bedrock's K_c (`capacity`). The law and its decisions are at the
+//     top of reference/erosion/pipes.cpp. `layer_erosion` = as_printed takes Algorithm 1's printed
+//     condition T̂_k < s. With layers, regolith and the thermal step are refused: the seeds do not
+//     say which layer they loosen or move.
 //   - `pipes` (issue 3): 4 pipes (Mei) or 8, the diagonal pipes of length l_d = sqrt(l_x² + l_y²)
 //     with the same cross-section A. A choice of the names "4" and "8" (JSON case files write
 //     "pipes": "8"), so the parameter system itself refuses any other count.
@@ -50,12 +58,18 @@ enum class SedimentTransport { semi_lagrangian, flux, maccormack };
 enum class PipeBoundary { closed, open };
 // Seed 001 §3.5: sin α from central differences over the distance, or its code's raw differences.
 enum class TiltDifferences { central, seed001_code };
+// Algorithm 1's condition to erode layer k: T̂_k > s (the prose: the water has capacity left) or as
+// the thesis prints it, T̂_k < s (digest 000 §3.5's note).
+enum class LayerErosion { capacity_above_sediment, as_printed };
+// The most layers above the bedrock (state fields layer_1 .. layer_3).
+inline constexpr int max_pipe_layers = 3;
 
 // "semi_lagrangian", "flux", "maccormack", "closed", "open", "central", "seed001_code": the names of
 // the `transport`, `boundary` and `tilt_differences` parameters (diffusion_weighting_name: core/params/diffusion_weighting.hpp).
 const char* sediment_transport_name(SedimentTransport transport);
 const char* pipe_boundary_name(PipeBoundary boundary);
 const char* tilt_differences_name(TiltDifferences differences);
+const char* layer_erosion_name(LayerErosion erosion);  // "capacity_above_sediment", "as_printed"
 
 // Pipe k of a cell leads to (x + dx, y + dy): L, R, T, B = 0..3 (Mei: T is +y), then the diagonals
 // TL, BR, TR, BL = 4..7 (used with 8 pipes only); pipe k and pipe k^1 are opposite.
@@ -96,6 +110,10 @@ struct HydraulicParams {
   bool thermal_step = false;
   double thermal_talus_angle = 30.0;    // degrees
   double thermal_rate = 0.5;            // Jákó's rate = Δt·C_t·R per iteration, in [0, 1]
+  // Šťava et al. 2008's layers above the bedrock (0 = Mei's single material).
+  int layers = 0;
+  std::array<double, max_pipe_layers> layer_capacity{0.2, 0.4, 0.8};  // C_1..C_3, s (layer 1 lowest)
+  LayerErosion layer_erosion = LayerErosion::capacity_above_sediment;
 };
 
 // The declarations (core/param_table.hpp), their ParamSpecs, and the struct from resolve_params' output.
@@ -146,6 +164,9 @@ struct PipeConstants {
   bool regolith_diffusion = true;              // stage 6b diffuses r too (with w > 0 and K_r > 0)
   bool thermal_step = false;
   ThermalConstants thermal;                    // thermal_jako_constants() on the terrain's grid
+  int layer_count = 0;                         // N layers above the bedrock, 0..max_pipe_layers
+  std::array<double, max_pipe_layers> layer_capacity{};  // C_1..C_N, s
+  LayerErosion layer_erosion = LayerErosion::capacity_above_sediment;
 };
 
 // Constants for `params` on the grid of `terrain` (its cell sizes). Throws InputError for values a
@@ -170,11 +191,13 @@ struct PipeState {
   Grid<Real> velocity_x;                    // u, m/s, +x
   Grid<Real> velocity_y;                    // v, m/s, +y
   Grid<Real> regolith;                      // r, m of loosened bed material (seed 001 §3.9)
+  std::vector<Grid<Real>> layers;           // b_1..b_N, m: layer thicknesses, bottom first (Šťava 2008)
 };
 
-// A state with the geometry and mask of `terrain`, dry, no sediment or regolith, no flux, at rest.
+// A state with the geometry and mask of `terrain`, dry, no sediment or regolith, no flux, at rest,
+// and `layers` layers of thickness 0.
 template <class Real>
-PipeState<Real> dry_pipe_state(const Grid<Real>& terrain);
+PipeState<Real> dry_pipe_state(const Grid<Real>& terrain, int layers = 0);
 
 // Every field and flux of `state` rounded once to To.
 template <class To, class From>
@@ -187,6 +210,7 @@ PipeState<To> map_pipe_state(const PipeState<From>& state, Value value) {
                        state.sediment.template map<To>(value),   {},
                        state.velocity_x.template map<To>(value), state.velocity_y.template map<To>(value),
                        state.regolith.template map<To>(value)};
+  for (const auto& layer : state.layers) mapped.layers.push_back(layer.template map<To>(value));
   mapped.outflow.reserve(state.outflow.size());
   for (const auto& fluxes : state.outflow) {
     auto& mapped_fluxes = mapped.outflow.emplace_back();
@@ -197,7 +221,8 @@ PipeState<To> map_pipe_state(const PipeState<From>& state, Value value) {
 
 // What both twins refuse before they run (InputError, "erosion.pipe: ..."): fields of another size
 // than the terrain, a mask without a valid cell, non-finite values on valid cells (in Real: a value
-// that rounds to infinity is refused too), negative water, sediment, regolith or flux, flux through
+// that rounds to infinity is refused too), negative water, sediment, regolith, layer or flux, another
+// number of layers than the constants' layer_count, flux through
 // diagonal pipes with 4 pipes, a rain map of another size or with negative or non-finite rates, and
 // sources off the grid, on no-data cells or with a negative or non-finite rate or depth.
 template <class Real>

@@ -15,6 +15,17 @@
 //   5 erosion  C = K_c·max(sin α, min_tilt_sine)·|v|·l(d_B), l(d) = min(1, d/K_w) (2.20-2.21)
 //              C > s: b −= k_s·(C − s), s += k_s·(C − s);  else b += k_d·(s − C), s −= k_d·(s − C)
 //              with k = min(1, K·Δt)                                  (2.22, 2.23 with Mei's sign)
+//   5' layers  (Šťava et al. 2008, digest 000 §3.5, eqs. 2.27-2.29 and Algorithm 1; only with N =
+//              `layers` ≥ 1) layers b_1..b_N on the bedrock, N on top; the tilt, the speed and the ramp
+//              of stage 5 give T_k = C_k·max(sin α, T_α)·|v|·l(d_B) for each layer (2.28; C_0 = K_c,
+//              the bedrock). Erosion walks the column from the top (Algorithm 1), every comparison
+//              with the step's s and the layers' thicknesses at the step's start:
+//                above = 0; for k = N .. 0: T̂_k = T_k − above (2.29); stop unless T̂_k > s;
+//                  take k_s·(T̂_k − s), at most b_k (the bedrock, k = 0, without limit); stop unless
+//                  that took all of b_k (the water did not get through); above += b_k
+//              as_printed: the condition T̂_k < s and the amount k_s·(s − T̂_k), the rest alike.
+//              Deposition: s > T_N puts k_d·(s − T_N) on the top layer N (2.23; "only into the top
+//              layer"). b −= taken − deposited, s += the same. With N = 0 this is stage 5 exactly.
 //   5b regolith (seed 001 §3.9, eqs. 2.3-2.7; only when K_r > 0): r_max = min(d_B, K_r);
 //              r < r_max: b −= k_re·(r_max − r), r += the same;  r > r_max: b += k_rd·(r − r_max),
 //              r −= the same
@@ -43,6 +54,16 @@
 //   8 thermal (Jákó & Tóth's combined step; only when thermal_step): one iteration of
 //              reference/erosion/thermal_jako.hpp on b
 // Decisions where the source is vague:
+//   - Šťava's layers. The digest's note reads Algorithm 1's printed T̂_k < s as inverted against its
+//     prose; the default is the prose (erode while capacity is left), the printed one a variant.
+//     Neither the thesis nor the paper gives Erode()'s amount: here the same k_s·gap as Mei's, limited
+//     to the layer. T̂_k is compared with the s of the step's start, so with k_s = 1 the water that
+//     took all of b_N and part of b_(N−1) holds T_(N−1) exactly: the capacity of the layer it erodes.
+//     The walk stops at a layer it did not empty; an empty layer (b_k = 0) passes the water on.
+//     Deposition and erosion are separate rules, each from its own condition (the thesis lists them
+//     apart): with the prose's condition they never meet (s > T_N stops the walk at the top); as
+//     printed both act where s > T_N. The bedrock has no thickness: the terrain b minus Σ b_k is its
+//     surface. Regolith and the thermal step are refused with layers (core/params/hydraulic.cpp).
 //   - Exterior pipes: a pipe leading off the grid or into a no-data cell (a diagonal pipe too: its
 //     diagonal neighbour is off the grid or no data, whatever the axis neighbours are). Closed
 //     boundary: its flux is 0 (walls). Open boundary: the exterior is a dry cell at the cell's own
@@ -191,6 +212,7 @@ void clear_no_data_cells(PipeState<Real>& state) {
   for (std::size_t cell = 0; cell < state.terrain.size(); ++cell) {
     if (state.terrain.is_valid(cell)) continue;
     state.water.values[cell] = state.sediment.values[cell] = state.regolith.values[cell] = Real(0);
+    for (auto& layer : state.layers) layer.values[cell] = Real(0);
     state.velocity_x.values[cell] = state.velocity_y.values[cell] = Real(0);
     state.outflow[cell] = {};
   }
@@ -561,14 +583,54 @@ void PipeErosion<Real>::update_velocity() {
   }
 }
 
+namespace {
+
+// What the cell's water takes from the ground (> 0) or leaves on it (< 0) in one step, Šťava's
+// layered law (stage 5' above; with no layers Mei's eqs. 2.22-2.23): `capacities` T_0..T_N of the
+// bedrock and the layers, `thickness` b_1..b_N (the cell's, updated), `suspended` s.
+template <class Real>
+Real layered_exchange(const std::array<Real, max_pipe_layers + 1>& capacities, std::array<Real*, max_pipe_layers> thickness,
+                      int layer_count, Real suspended, Real dissolving, Real deposition, LayerErosion condition) {
+  const bool printed = condition == LayerErosion::as_printed;
+  // Mutant erosion.pipe.layers_above_ignored (both twins): T̂_k = T_k, eq. 2.29 left out.
+  const bool above_ignored = mutant_active("erosion.pipe.layers_above_ignored");
+  Real taken_total = Real(0);
+  Real above = Real(0);  // Σ b_i over the layers above k, at the step's start
+  for (int k = layer_count; k >= 0; --k) {
+    const Real reach = above_ignored ? capacities[k] : capacities[k] - above;  // T̂_k
+    if (!(printed ? reach < suspended : reach > suspended)) break;
+    const Real gap = printed ? suspended - reach : reach - suspended;
+    const Real wanted = dissolving * gap;
+    if (k == 0) {
+      taken_total = taken_total + wanted;
+      break;
+    }
+    Real& layer = *thickness[k - 1];
+    const Real held = layer;
+    const Real taken = min(wanted, held);
+    layer = held - taken;
+    taken_total = taken_total + taken;
+    if (taken < held) break;
+    above = above + held;
+  }
+  const Real top = capacities[layer_count];
+  const Real deposited = suspended > top ? deposition * (suspended - top) : Real(0);
+  if (layer_count > 0) *thickness[layer_count - 1] = *thickness[layer_count - 1] + deposited;
+  return taken_total - deposited;
+}
+
+}  // namespace
+
 template <class Real>
 void PipeErosion<Real>::erode_and_deposit() {
   const auto& terrain = state_.terrain;
   auto& sediment = state_.sediment.values;
-  const Real capacity_constant = static_cast<Real>(constants_.capacity);
   const Real depth_ramp = static_cast<Real>(constants_.depth_ramp);
   const Real dissolving = static_cast<Real>(constants_.dissolving_fraction);
   const Real deposition = static_cast<Real>(constants_.deposition_fraction);
+  const int layer_count = constants_.layer_count;
+  std::array<Real, max_pipe_layers + 1> capacity_constants{static_cast<Real>(constants_.capacity)};
+  for (int k = 1; k <= layer_count; ++k) capacity_constants[k] = static_cast<Real>(constants_.layer_capacity[k - 1]);
   // Mutant erosion.pipe.sediment_gain_doubled: the sediment gains twice what the bed loses.
   const bool sediment_gain_doubled = mutant_active("erosion.pipe.sediment_gain_doubled");
   for (int y = 0; y < terrain.height; ++y) {
@@ -580,10 +642,15 @@ void PipeErosion<Real>::erode_and_deposit() {
       const Real v = state_.velocity_y.values[cell];
       const Real depth = state_.water.values[cell];
       const Real ramp = depth_ramp > Real(0) ? min(Real(1), depth / depth_ramp) : Real(1);
-      const Real capacity = capacity_constant * tilt_sine(x, y) * sqrt(u * u + v * v) * ramp;
+      const Real tilt = tilt_sine(x, y);
+      const Real speed = sqrt(u * u + v * v);
+      std::array<Real, max_pipe_layers + 1> capacities{};
+      for (int k = 0; k <= layer_count; ++k) capacities[k] = capacity_constants[k] * tilt * speed * ramp;
+      std::array<Real*, max_pipe_layers> thickness{};
+      for (int k = 0; k < layer_count; ++k) thickness[k] = &state_.layers[k].values[cell];
       const Real suspended = sediment[cell];
-      const Real moved = capacity > suspended ? dissolving * (capacity - suspended)
-                                              : -(deposition * (suspended - capacity));
+      const Real moved = layered_exchange(capacities, thickness, layer_count, suspended, dissolving, deposition,
+                                          constants_.layer_erosion);
       scratch_[cell] = terrain.values[cell] - moved;
       sediment[cell] = suspended + (sediment_gain_doubled ? Real(2) * moved : moved);
     }
@@ -791,6 +858,10 @@ void PipeErosion<Real>::check_state() const {
       for (int k = 0; k < pipe_count(); ++k) {
         const Real flux = state_.outflow[cell][k];
         if (!acceptable(flux, true)) report(fmt::format("outflow {}", pipe_name(k)), flux);
+      }
+      for (std::size_t k = 0; k < state_.layers.size(); ++k) {
+        const Real thickness = state_.layers[k].values[cell];
+        if (!acceptable(thickness, true)) report(fmt::format("layer_{}", k + 1), thickness);
       }
     }
   }
