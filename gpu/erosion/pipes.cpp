@@ -23,7 +23,8 @@
 // output, swapped with s), what it sends down each pipe (one or two vec4 as the outflow), and the
 // same three for the regolith r (allocated only when K_r > 0). Variants are compiled in with
 // defines: PIPES_8, TRANSPORT_FLUX, REGOLITH, REGOLITH_DIFFUSION (r diffused too: the thesis, not
-// seed 001's code), DIFFUSION_WATER. seed 001's code tilt (tilt_differences) needs no define: it is
+// seed 001's code), DIFFUSION_WATER, LAYERS=N (Šťava's layers, 0 without: their thicknesses, N
+// floats a cell, are read and written in place by pipes_flow.comp) and LAYERS_AS_PRINTED. seed 001's code tilt (tilt_differences) needs no define: it is
 // the spans of the tilt's differences in the parameter block, 1 instead of l and 2l.
 //
 // The float trap and its solution. ref<float> stores b as a float: an erosion amount a
@@ -100,6 +101,7 @@ enum Binding : GLuint {
   thermal_outflows_binding = 15,
   corrected_binding = 16,
   regolith_corrected_binding = 17,
+  layers_binding = 18,
 };
 
 // Mirror of `PipeBlock` in gpu/shaders/erosion/pipes_block.glsl (std140).
@@ -132,7 +134,8 @@ struct PipeBlock {
   float talus_limit_cardinal[4];
   float talus_limit_diagonal[4];
   float thermal_rate;
-  std::uint32_t tail_padding[3];
+  std::uint32_t padding[3];
+  float layer_capacity[4];
 };
 
 // Mirror of `CellConstants` (std430).
@@ -174,7 +177,8 @@ ComputeProgram pipe_program(const char* shader, const std::vector<std::string>& 
                        {"diagonal_share", offsetof(PipeBlock, diagonal_share)},
                        {"talus_limit_cardinal", offsetof(PipeBlock, talus_limit_cardinal)},
                        {"talus_limit_diagonal", offsetof(PipeBlock, talus_limit_diagonal)},
-                       {"thermal_rate", offsetof(PipeBlock, thermal_rate)}});
+                       {"thermal_rate", offsetof(PipeBlock, thermal_rate)},
+                       {"layer_capacity", offsetof(PipeBlock, layer_capacity)}});
   program.check_block("Cells", sizeof(CellConstants),
                       {{"cells[0].base", offsetof(CellConstants, base)},
                        {"cells[0].rain", offsetof(CellConstants, rain)},
@@ -273,6 +277,7 @@ PipeBlock block_for(const PipeConstants& constants, int width, int height, std::
     block.talus_limit_diagonal[k] = static_cast<float>(thermal.talus_slope * thermal.length_diagonal);
   }
   block.thermal_rate = static_cast<float>(thermal.request_factor);
+  for (int k = 0; k < constants.layer_count; ++k) block.layer_capacity[k] = static_cast<float>(constants.layer_capacity[k]);
   return block;
 }
 
@@ -293,6 +298,8 @@ std::vector<std::string> stage_defines(const PipeConstants& constants) {
   if (has_regolith(constants)) defines.push_back("REGOLITH");
   if (diffuses_regolith(constants)) defines.push_back("REGOLITH_DIFFUSION");
   if (constants.diffusion_weighting == DiffusionWeighting::water) defines.push_back("DIFFUSION_WATER");
+  defines.push_back(fmt::format("LAYERS={}", constants.layer_count));
+  if (constants.layer_erosion == LayerErosion::as_printed) defines.push_back("LAYERS_AS_PRINTED");
   return defines;
 }
 
@@ -348,6 +355,7 @@ struct PipeErosion::Download {
   std::vector<float> regolith;       // r
   std::vector<float> sent;           // flux form: sent per pipe (as outflow); semi-Lagrangian: [0] = left the grid
   std::vector<float> regolith_sent;  // the same for r (empty without the regolith stage)
+  std::vector<float> layers;         // Šťava's b_1..b_N per cell (empty without layers)
 };
 
 PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& constants,
@@ -380,7 +388,8 @@ PipeErosion::PipeErosion(const PipeState<double>& initial, const PipeConstants& 
       corrected_(16),
       regolith_corrected_(16),
       source_cells_(16),
-      source_list_(16) {
+      source_list_(16),
+      layers_(16) {
   const auto& terrain = initial.terrain;
   flags_ = cell_flags(terrain);
   layout_ = terrain;
@@ -462,6 +471,17 @@ void PipeErosion::upload(const PipeState<double>& state) {
     regolith_sent_ = StorageBuffer::from(zero_vectors);
   }
   if (constants_.thermal_step) thermal_outflows_ = StorageBuffer::from(std::vector<float>(8 * cells, 0.0f));
+  const auto layer_count = static_cast<std::size_t>(constants_.layer_count);
+  if (layer_count > 0) {
+    std::vector<float> thicknesses(layer_count * cells, 0.0f);
+    for (std::size_t cell = 0; cell < cells; ++cell) {
+      if (!terrain.is_valid(cell)) continue;
+      for (std::size_t k = 0; k < layer_count; ++k) {
+        thicknesses[layer_count * cell + k] = static_cast<float>(state.layers[k].values[cell]);
+      }
+    }
+    layers_ = StorageBuffer::from(thicknesses);
+  }
   if (maccormack_program_) {
     corrected_ = StorageBuffer::from(zeros);
     if (has_regolith(constants_)) regolith_corrected_ = StorageBuffer::from(zeros);
@@ -498,6 +518,7 @@ void PipeErosion::bind() const {
   thermal_outflows_.bind(thermal_outflows_binding);
   corrected_.bind(corrected_binding);
   regolith_corrected_.bind(regolith_corrected_binding);
+  layers_.bind(layers_binding);
 }
 
 void PipeErosion::step() {
@@ -550,6 +571,8 @@ PipeErosion::Download PipeErosion::download() const {
                   sediment_.download<float>(cells),          regolith_.download<float>(cells),
                   sent_.download<float>(per_cell * cells),    {}};
   if (has_regolith(constants_)) fields.regolith_sent = regolith_sent_.download<float>(per_cell * cells);
+  const auto layer_count = static_cast<std::size_t>(constants_.layer_count);
+  if (layer_count > 0) fields.layers = layers_.download<float>(layer_count * cells);
   return fields;
 }
 
@@ -573,6 +596,8 @@ PipeState<double> PipeErosion::state() const {
   state.velocity_x = from(fields.velocity, 2, 0);
   state.velocity_y = from(fields.velocity, 2, 1);
   state.regolith = from(fields.regolith, 1, 0);
+  const auto layer_count = static_cast<std::size_t>(constants_.layer_count);
+  for (std::size_t k = 0; k < layer_count; ++k) state.layers.push_back(from(fields.layers, layer_count, k));
   const std::size_t per_cell = pipe_values_per_cell();
   state.outflow.resize(base_.size());
   for (std::size_t cell = 0; cell < base_.size(); ++cell) {
@@ -669,6 +694,11 @@ void PipeErosion::check_state(const Download& fields) const {
       for (int k = 0; k < constants_.pipe_count; ++k) {
         const double flux = fields.outflow[pipe_values_per_cell() * cell + k];
         if (!acceptable(flux, true)) report(fmt::format("outflow {}", pipe_name(k)), flux);
+      }
+      const auto layer_count = static_cast<std::size_t>(constants_.layer_count);
+      for (std::size_t k = 0; k < layer_count; ++k) {
+        const double thickness = fields.layers[layer_count * cell + k];
+        if (!acceptable(thickness, true)) report(fmt::format("layer_{}", k + 1), thickness);
       }
     }
   }

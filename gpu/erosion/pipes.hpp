@@ -17,7 +17,7 @@
 // state(), ledger(), passes_per_step(), steps_done(): below.
 //
 // Inputs:  initial, state: PipeState<double> (terrain b, water d, sediment s, regolith, flux,
-//          velocity); constants from pipe_constants(); forcing: rain map and point sources. Needs a
+//          velocity, Šťava's layers); constants from pipe_constants(); forcing: rain map and point sources. Needs a
 //          current GlContext.
 // Outputs: state(): downloaded (waits for the GPU); terrain reconstructed in double as b0 + Δb (an
 //          exact sum unless |Δb| < 2^-29·|b0|, then within 2^-53 of b). ledger(): entry 0 describes the
@@ -148,6 +148,7 @@ class PipeErosion {
   StorageBuffer regolith_corrected_;  // likewise for r
   StorageBuffer source_cells_;
   StorageBuffer source_list_;
+  StorageBuffer layers_;              // Šťava's b_1..b_N per cell (with layers), else 16 bytes
 
   PipeFlows flows_;
   int steps_done_ = 0;

@@ -15,7 +15,7 @@
 // reference repeats the shaders operation by operation.
 // Inputs:  declares PipeBlock (uniform binding 0) and the buffers cells (1), delta (2), delta_next (3),
 //          water (4), outflow (5), velocity (6), sediment (7), staying (8), sent (9), regolith (12),
-//          regolith_staying (13), regolith_sent (14), thermal_outflows (15).
+//          regolith_staying (13), regolith_sent (14), thermal_outflows (15), layers (18).
 // Outputs: the pipe helpers (pipe offsets, exterior, terrain_difference, ref_max/ref_min) the
 //          pipes_*.comp passes use.
 // Twin:    reference/erosion/pipes.cpp; host: gpu/erosion/pipes.cpp.
@@ -59,6 +59,7 @@ layout(std140, binding = 0) uniform PipeBlock {
   vec4 talus_limit_cardinal;  // thermal step: T·l for its pipes 0-3, (-1,0) (0,1) (1,0) (0,-1)
   vec4 talus_limit_diagonal;  // T·l for its pipes 4-7, (-1,-1) (-1,1) (1,1) (1,-1)
   float thermal_rate;         // Jákó's rate Δt·C_t·R per iteration
+  vec4 layer_capacity;        // Šťava's C_1, C_2, C_3 (s) of the layers above the bedrock (LAYERS)
 };
 
 // Per-cell constants, uploaded once: the base height b0, the rain depth Δt·(r + r_map) added per
@@ -92,6 +93,10 @@ layout(std430, binding = 13) buffer RegolithStaying { float regolith_staying[]; 
 layout(std430, binding = 14) buffer RegolithSent { vec4 regolith_sent[]; };
 // The thermal step's 8 outflows per cell as two vec4 (its pipes 0-3, then 4-7).
 layout(std430, binding = 15) buffer ThermalOutflows { vec4 thermal_outflows[]; };
+// Bindings 16 and 17: MacCormack's corrected s and r (pipes_maccormack.comp). Šťava's layer
+// thicknesses b_1..b_LAYERS per cell, bottom first (only with LAYERS; read and written by the cell's
+// own invocation of pipes_flow.comp alone).
+layout(std430, binding = 18) buffer Layers { float layers[]; };
 
 const ivec2 pipe_offsets[8] = ivec2[8](ivec2(-1, 0), ivec2(1, 0), ivec2(0, 1), ivec2(0, -1),
                                        ivec2(-1, 1), ivec2(1, -1), ivec2(1, 1), ivec2(-1, -1));

@@ -7,6 +7,10 @@
 //   5 erosion   C = K_c·max(sin α, T)·|v|·min(1, d_B/K_w); the terrain change Δb and s move by
 //               k_s·(C - s) or -k_d·(s - C); sin α from central differences of b0 + Δb
 //               over the block's spans (2l, or 1 for seed 001's code: raw differences)
+//   5' layers   (LAYERS = N ≥ 1, Šťava et al. 2008, eqs. 2.27-2.29, Algorithm 1) T_k = C_k·(tilt, speed,
+//               ramp as stage 5), C_0 = K_c; from layer N down while T̂_k = T_k − Σ_{i>k} b_i > s
+//               (LAYERS_AS_PRINTED: < s) take min(k_s·gap, b_k) (the bedrock without limit), going on
+//               only through an emptied layer; s > T_N puts k_d·(s − T_N) on layer N
 //   5b regolith (REGOLITH, seed 001 §3.9) r_max = min(d_B, K_r); r < r_max: Δb and r move by
 //               k_re·(r_max - r); else by -k_rd·(r - r_max)
 //   6a shares   what each pipe (4 or 8) carries, s_A·f_k·Δt/(d_A·l_x·l_y) (flux transport: `sent`, the
@@ -15,9 +19,9 @@
 // Reads neighbours' Δb (the tilt) and fluxes; writes its own d_B, velocity, Δb into the next
 // buffer, staying and sent. TRANSPORT_FLUX selects the flux form.
 // Inputs:  PipeBlock (uniform binding 0), cells (1), delta (2), water (4: d_A, drained), outflow (5),
-//          sediment (7), regolith (12) (pipes_block.glsl).
+//          sediment (7), regolith (12), layers (18) (pipes_block.glsl).
 // Outputs: water (4: d_B), delta_next (3), velocity (6), staying (8), sent (9), regolith_staying (13),
-//          regolith_sent (14).
+//          regolith_sent (14), layers (18).
 // Twin:    reference/erosion/pipes.cpp (update_water_depth, update_velocity, erode_and_deposit,
 //          carried_shares, transport_*).
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -99,6 +103,60 @@ vec4[2] inflows(ivec2 cell, uint flags) {
   return in_flux;
 }
 
+// What the water takes from the cell's ground (> 0) or leaves on it (< 0): Šťava's walk over the
+// LAYERS layers (stage 5'), the layers of cell `index` updated in place; with LAYERS = 0 Mei's
+// stage 5 (k_s·(C − s) or −k_d·(s − C)). The reference's layered_exchange, operation by operation.
+float layered_exchange(uint index, float tilt, float speed, float ramp, float suspended) {
+  precise float capacities[LAYERS + 1];
+  capacities[0] = capacity_constant * tilt * speed * ramp;
+  for (int k = 1; k <= LAYERS; ++k) capacities[k] = layer_capacity[k - 1] * tilt * speed * ramp;
+  precise float taken_total = 0.0;
+  precise float above = 0.0;
+  for (int k = LAYERS; k >= 0; --k) {
+#ifdef GT_MUTANT_EROSION_PIPE_LAYERS_ABOVE_IGNORED
+    precise float reach = capacities[k];  // mutant (both twins): T̂_k = T_k, eq. 2.29 left out
+#else
+    precise float reach = capacities[k] - above;
+#endif
+#ifdef LAYERS_AS_PRINTED
+    if (!(reach < suspended)) break;
+    precise float gap = suspended - reach;
+#else
+    if (!(reach > suspended)) break;
+    precise float gap = reach - suspended;
+#endif
+    precise float wanted = dissolving * gap;
+    if (k == 0) {
+      taken_total = taken_total + wanted;
+      break;
+    }
+#if LAYERS > 0
+    uint slot = uint(LAYERS) * index + uint(k - 1);
+    float held = layers[slot];
+    precise float taken = ref_min(wanted, held);
+    precise float left = held - taken;
+    layers[slot] = left;
+    taken_total = taken_total + taken;
+    if (taken < held) break;
+    above = above + held;
+#endif
+  }
+  float top = capacities[LAYERS];
+  precise float deposited = 0.0;
+  if (suspended > top) deposited = deposition * (suspended - top);
+#if LAYERS > 0
+#ifdef GT_MUTANT_EROSION_PIPE_GPU_DEPOSIT_ON_BOTTOM_LAYER
+  uint top_slot = uint(LAYERS) * index;  // mutant: the deposit settles on layer 1, not on the top
+#else
+  uint top_slot = uint(LAYERS) * index + uint(LAYERS - 1);
+#endif
+  precise float settled = layers[top_slot] + deposited;
+  layers[top_slot] = settled;
+#endif
+  precise float moved = taken_total - deposited;
+  return moved;
+}
+
 void main() {
   ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
   if (!inside_grid(cell, grid_size)) return;
@@ -144,14 +202,10 @@ void main() {
   // 5 erosion and deposition
   precise float ramp = 1.0;
   if (depth_ramp > 0.0) ramp = ref_min(1.0, depth / depth_ramp);
-  precise float capacity = capacity_constant * tilt_sine(cell, index, flags) * sqrt(u * u + v * v) * ramp;
+  precise float tilt = tilt_sine(cell, index, flags);
+  precise float speed = sqrt(u * u + v * v);
   precise float suspended = sediment[index];
-  precise float moved;
-  if (capacity > suspended) {
-    moved = dissolving * (capacity - suspended);
-  } else {
-    moved = -(deposition * (suspended - capacity));
-  }
+  precise float moved = layered_exchange(index, tilt, speed, ramp, suspended);
   precise float changed = delta[index] - moved;
 #ifdef GT_MUTANT_EROSION_PIPE_SEDIMENT_GAIN_DOUBLED
   precise float carried = suspended + 2.0 * moved;  // mutant: s gains twice what b loses
