@@ -123,6 +123,8 @@ TEST(Mutants, ErosionPipeOneTwinIsKilled) {
   const json mutation = expect_every_mutant_killed({"erosion.pipe.gpu_*", "erosion.pipe.velocity_*"}, 5, 0);
   expect_killed_near_the_bound(mutation, "erosion.pipe.velocity_off_above_bound",
                                "erosion.pipe.mutant_probe.flux: parity.shadow.velocity_x.gpu_vs_float");
+  EXPECT_TRUE(killed_by(mutation, "erosion.pipe.gpu_deposit_on_bottom_layer",
+                        "erosion.pipe.ab.layer_erosion.volcano.a: parity.shadow.layer_1.gpu_vs_float"));
   for (const auto& mutant : mutation.value("mutants", json::array())) {
     if (mutant.at("kind") != "one-twin" || mutant.at("must_survive").get<bool>()) continue;
     bool on_a_dem = false;
@@ -149,6 +151,9 @@ TEST(Mutants, ErosionPipeBothTwinsIsKilled) {
                         "erosion.pipe.ab.maccormack.volcano_open.b: spec.step.sediment.cpu"));
   EXPECT_TRUE(
       killed_by(mutation, "erosion.pipe.regolith_deepest", "erosion.pipe.seed001.volcano: spec.step.regolith.cpu"));
+  // Šťava's walk without eq. 2.29 conserves material: the spec of the step sees it, on the volcano too.
+  EXPECT_TRUE(killed_by(mutation, "erosion.pipe.layers_above_ignored",
+                        "erosion.pipe.ab.layer_erosion.volcano.a: spec.step.layer_1.cpu"));
   expect_killed_near_the_bound(mutation, "erosion.pipe.capacity_off_above_bound", "spec.step.terrain.cpu");
 }
 TEST(Mutants, ErosionThermalIsKilled) {

@@ -99,6 +99,16 @@ std::vector<Mutant> pipe_mutants() {
        "r_max = max(d_B, K_r) instead of min (ref regolith_exchange, pipes_flow.comp): the water loosens the bed "
        "down to its own depth, material still conserved",
        {"erosion.pipe.seed001.volcano"}},
+      // Šťava's layers: a GPU-only bug of where the deposit settles, on the probe of three layers and
+      // on the volcano; and eq. 2.29 left out of both twins' walk, which conserves material: only the
+      // spec of the step sees it.
+      {"erosion.pipe.gpu_deposit_on_bottom_layer", MutantKind::one_twin,
+       "pipes_flow.comp puts the deposit k_d·(s − T_N) on layer 1 instead of the top layer N",
+       {"erosion.pipe.layers.mutant_probe", "erosion.pipe.ab.layer_erosion.volcano.a"}},
+      {"erosion.pipe.layers_above_ignored", MutantKind::both_twins,
+       "both twins compare T_k with s instead of T̂_k = T_k − Σ_{i>k} b_i (eq. 2.29 left out; ref layered_exchange, "
+       "pipes_flow.comp): the water erodes deeper layers at their full capacity, material still conserved",
+       {"erosion.pipe.layers.mutant_probe", "erosion.pipe.ab.layer_erosion.volcano.a"}},
       // The calibrated pair of the spec step's error model (rounding-interval widths at double's
       // unit): on the probe a capacity 2^-41 too large lands at 5.3 times the bound of
       // spec.step.terrain.cpu (2^-40: 10 times, 2^-38: 42 times) and must be killed; 2^-52, one
