@@ -162,6 +162,49 @@ TEST(PipeSpec, ReferenceStepPassesOnBothBordersAndSeed001sVariant) {
   }
 }
 
+// Šťava's three layers on the basin, thin enough that the water empties the top ones within the
+// six steps, under Algorithm 1 as meant and as printed (the basin's start sediment lets the printed
+// condition act); without eq. 2.29 (a bug of both twins that conserves material) the layers fail.
+HydraulicParams layered_params(gt::LayerErosion condition) {
+  HydraulicParams params = basin_params(gt::PipeBoundary::open);
+  params.layers = 3;
+  params.layer_capacity = {0.1, 0.2, 0.4};
+  params.layer_erosion = condition;
+  return params;
+}
+
+std::vector<gt::Check> layered_spec_checks(const std::string& mutant, gt::LayerErosion condition) {
+  gt::set_active_mutant(mutant);
+  const auto params = layered_params(condition);
+  const auto terrain = basin();
+  const auto constants = gt::pipe_constants(params, terrain);
+  auto start = gt::dry_pipe_state(terrain, 3);
+  for (auto& depth : start.water.values) depth = 0.02;
+  for (auto& suspended : start.sediment.values) suspended = 0.002;
+  for (std::size_t k = 0; k < 3; ++k) {
+    for (std::size_t cell = 0; cell < terrain.size(); ++cell) start.layers[k].values[cell] = 0.02 * (1.0 + double(k)) * noise(int(cell), 0, 31);
+  }
+  gt::reference::PipeErosion<double> truth(start, constants, basin_forcing());
+  truth.run(6);
+  auto checks = gt::pipe_spec_checks(truth.state(), constants, params, basin_forcing(), 7);
+  gt::set_active_mutant("");
+  return checks;
+}
+
+TEST(PipeSpec, LayeredStepPassesAsMeantAndAsPrintedAndFailsWithoutEquation229) {
+  expect_all_pass(layered_spec_checks("", gt::LayerErosion::capacity_above_sediment), 9);
+  // As printed the walk stops at the top layer unless the sediment exceeds its capacity and empties
+  // it: the buried layers are left as they were, exactly (a bound of 0 there).
+  const auto printed = layered_spec_checks("", gt::LayerErosion::as_printed);
+  ASSERT_EQ(printed.size(), 9u);
+  for (const auto& check : printed) EXPECT_EQ(check.status, gt::Outcome::pass) << check.name << ": " << check.detail;
+  EXPECT_GT(*named(printed, "spec.step.layer_3.cpu").threshold, 0.0);
+  const auto checks = layered_spec_checks("erosion.pipe.layers_above_ignored", gt::LayerErosion::capacity_above_sediment);
+  EXPECT_EQ(named(checks, "spec.step.layer_1.cpu").status, gt::Outcome::fail);
+  EXPECT_EQ(named(checks, "spec.step.terrain.cpu").status, gt::Outcome::fail);
+  EXPECT_EQ(named(checks, "spec.step.water.cpu").status, gt::Outcome::pass);
+}
+
 // MacCormack on the Jacksboro DEM (74 m x 92 m cells, 0.1 m of water, Δt = 1 s): by step 11 cells
 // drain at the K cap, one cell a step, where the displacement lands an ulp either side of a whole
 // cell in ref<double> and in the spec. A limiter over the four corners the backtrace read switched

@@ -6,7 +6,10 @@
 // the float trap at 500 m; seed 001's regolith layer and sediment diffusion (both weightings), its
 // code's undiffused regolith and raw-difference tilt; the 8-pipe option (issue 3): the K scaling
 // over 8 pipes, the flux gain and velocity of the diagonals, water and material balances, a more
-// isotropic spread on a cone, mirror symmetry along the diagonal, the refusal of other pipe counts.
+// isotropic spread on a cone, mirror symmetry along the diagonal, the refusal of other pipe counts;
+// Šťava et al. 2008's layers (digest 000 §3.5): Algorithm 1 as printed worked by hand on still
+// water, deposits on the top layer only, the walk with k_s = 1 and equal capacities reducing to
+// Mei's law, buried layers and the bedrock only losing, and the refusals.
 //
 // Rounding bounds below use u = 2^-53 (double) or 2^-24 (float), the unit roundoff: one rounded
 // operation changes a value v by at most u·|v|.
@@ -954,6 +957,161 @@ TEST(PipesReference, PipeCountIsFourOrEight) {
   diagonal_flux.outflow[7][5] = 0.5;
   EXPECT_NE(refusal([&] { PipeErosion<double>(diagonal_flux, gt::pipe_constants(quiet_params(1), terrain)); })
                 .find("through pipe BR at cell 7: with 4 pipes it must be 0"),
+            std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Šťava et al. 2008's layers (reference/erosion/pipes.cpp, stage 5').
+
+// Still water on a flat 4 x 4 grid at 2 m with 0.1 m of sediment: every capacity is 0 (no speed),
+// so the walk and the deposit can be worked by hand. Layers 1 and 2 hold 0.5 m and 0.01 m.
+PipeState<double> still_layered_state() {
+  const auto terrain = field(4, 4, 1.0, 1.0, [](int, int) { return 2.0; });
+  const auto water = field(4, 4, 1.0, 1.0, [](int, int) { return 1.0; });
+  auto state = wet_state<double>(terrain, water);
+  std::fill(state.sediment.values.begin(), state.sediment.values.end(), 0.1);
+  state.layers = {field(4, 4, 1.0, 1.0, [](int, int) { return 0.5; }),
+                  field(4, 4, 1.0, 1.0, [](int, int) { return 0.01; })};
+  return state;
+}
+
+HydraulicParams still_layered_params(gt::LayerErosion condition) {
+  auto params = quiet_params(1);
+  params.layers = 2;
+  params.layer_erosion = condition;
+  params.dissolving_rate = 4.0;  // k_s = 4·0.05 = 0.2
+  params.deposition_rate = 4.0;  // k_d = 0.2
+  return params;
+}
+
+TEST(PipesReference, LayersAsPrintedErodeStillWaterWorkedByHand) {
+  // As printed, T̂_k < s erodes. Layer 2: T̂ = 0 < 0.1, k_s·0.1 = 0.02 > 0.01: emptied, the water
+  // gets through; layer 1: T̂ = 0 − 0.01, gap 0.11, k_s·0.11 = 0.022 < 0.5 taken, and the walk
+  // stops there. The deposit k_d·(s − T_2) = 0.02 lands on layer 2. So b = 2 − (0.032 − 0.02) and
+  // s = 0.112, layer 2 = 0.02, layer 1 = 0.478.
+  const auto state = still_layered_state();
+  PipeErosion<double> erosion(state, gt::pipe_constants(still_layered_params(gt::LayerErosion::as_printed),
+                                                        state.terrain));
+  erosion.step();
+  const auto& after = erosion.state();
+  EXPECT_DOUBLE_EQ(after.layers[1].at(2, 2), 0.02);
+  EXPECT_DOUBLE_EQ(after.layers[0].at(2, 2), 0.478);
+  EXPECT_DOUBLE_EQ(after.terrain.at(2, 2), 1.988);
+  EXPECT_DOUBLE_EQ(after.sediment.at(2, 2), 0.112);
+}
+
+TEST(PipesReference, LayersTakeDepositsOnTheTopLayerOnly) {
+  // As the prose means it, s > T_2 = 0 stops the walk at the top and deposits k_d·s = 0.02 there.
+  const auto state = still_layered_state();
+  PipeErosion<double> erosion(
+      state, gt::pipe_constants(still_layered_params(gt::LayerErosion::capacity_above_sediment), state.terrain));
+  erosion.step();
+  const auto& after = erosion.state();
+  EXPECT_DOUBLE_EQ(after.layers[1].at(2, 2), 0.03);
+  EXPECT_EQ(after.layers[0].at(2, 2), 0.5);
+  EXPECT_DOUBLE_EQ(after.terrain.at(2, 2), 2.02);
+  EXPECT_DOUBLE_EQ(after.sediment.at(2, 2), 0.08);
+}
+
+// A cone with rain and 5 cm of water whose flanks carry three layers of 2 mm, 1 mm and 0.5 mm.
+Grid<double> layered_cone() {
+  return field(24, 24, 2.0, 2.0, [](int x, int y) {
+    return std::max(0.0, 8.0 - 0.7 * std::hypot(x - 11.5, y - 11.5)) + 0.05 * noise(x, y, 3);
+  });
+}
+
+HydraulicParams layered_cone_params(int steps) {
+  auto params = quiet_params(steps);
+  params.rain_rate = 0.002;
+  params.capacity = 0.05;
+  params.dissolving_rate = 1.0;
+  params.deposition_rate = 0.5;
+  params.layers = 3;
+  params.layer_capacity = {0.1, 0.2, 0.4};
+  return params;
+}
+
+PipeState<double> layered_cone_state(const Grid<double>& terrain, std::array<double, 3> thickness) {
+  auto state = wet_state<double>(terrain, field(24, 24, 2.0, 2.0, [](int, int) { return 0.05; }));
+  for (double layer : thickness) state.layers.push_back(field(24, 24, 2.0, 2.0, [layer](int, int) { return layer; }));
+  return state;
+}
+
+TEST(PipesReference, LayersWithWholeStepErosionAndEqualCapacitiesAreMeisLaw) {
+  // With k_s = 1 the walk takes b_N, b_(N−1), ... then k_s·(T − Σb − s): T − s in all, Mei's
+  // k_s·(C − s), whatever the thicknesses, when every C_k = K_c; deposition is Mei's too. The
+  // terrain and the sediment then follow Mei's run, apart from the roundings of the walk's sums:
+  // per step a few u·|T| (T < 1 m here) of the amount moved, which the flow carries on; bounded as
+  // the GPU's growth model does (n steps × 32 roundings of the field's scale, in double's unit).
+  const auto terrain = layered_cone();
+  auto params = layered_cone_params(10);
+  params.dissolving_rate = 20.0;  // k_s = min(1, 20·0.05) = 1
+  params.layer_capacity = {params.capacity, params.capacity, params.capacity};
+  PipeErosion<double> layered(layered_cone_state(terrain, {0.002, 0.001, 0.0005}), gt::pipe_constants(params, terrain));
+  layered.run(params.steps);
+  auto mei_params = params;
+  mei_params.layers = 0;
+  const auto mei = simulate<double>(terrain, field(24, 24, 2.0, 2.0, [](int, int) { return 0.05; }), mei_params);
+  const double bound = params.steps * 32.0 * double_roundoff * largest_value(terrain);
+  EXPECT_LE(largest_difference(layered.state().terrain, mei.state().terrain), bound);
+  EXPECT_LE(largest_difference(layered.state().sediment, mei.state().sediment), bound);
+  EXPECT_GT(largest_difference(layered.state().terrain, terrain), 1e3 * bound) << "the run should erode";
+  // And the layers did not stand in for Mei's ground: the top layers were emptied somewhere.
+  EXPECT_EQ(*std::min_element(layered.state().layers[2].values.begin(), layered.state().layers[2].values.end()), 0.0);
+}
+
+TEST(PipesReference, BuriedLayersAndTheBedrockOnlyLose) {
+  // Algorithm 1 takes from the layers and the bedrock and puts deposits on the top layer only: step
+  // by step no cell's layer 1 or 2 grows, and the bedrock surface b − Σb_k does not rise beyond
+  // the roundings of b and the layers it is formed from (4u of |b| + Σb_k). The top layer grows
+  // somewhere, and the water reaches the bedrock somewhere.
+  const auto terrain = layered_cone();
+  const auto params = layered_cone_params(40);
+  PipeErosion<double> erosion(layered_cone_state(terrain, {0.002, 0.001, 0.0005}), gt::pipe_constants(params, terrain));
+  auto bedrock = [](const PipeState<double>& state, std::size_t cell) {
+    double rock = state.terrain.values[cell];
+    for (const auto& layer : state.layers) rock -= layer.values[cell];
+    return rock;
+  };
+  bool top_grew = false, bedrock_eroded = false;
+  for (int step = 0; step < params.steps; ++step) {
+    const PipeState<double> before = erosion.state();
+    erosion.step();
+    const auto& after = erosion.state();
+    for (std::size_t cell = 0; cell < terrain.size(); ++cell) {
+      ASSERT_LE(after.layers[0].values[cell], before.layers[0].values[cell]) << "step " << step << " cell " << cell;
+      ASSERT_LE(after.layers[1].values[cell], before.layers[1].values[cell]) << "step " << step << " cell " << cell;
+      const double scale = std::abs(after.terrain.values[cell]) + 0.01;
+      ASSERT_LE(bedrock(after, cell), bedrock(before, cell) + 4.0 * double_roundoff * scale) << "step " << step;
+      top_grew = top_grew || after.layers[2].values[cell] > before.layers[2].values[cell];
+      bedrock_eroded = bedrock_eroded || bedrock(after, cell) < bedrock(before, cell) - 1e-9;
+    }
+  }
+  EXPECT_TRUE(top_grew);
+  EXPECT_TRUE(bedrock_eroded);
+}
+
+TEST(PipesReference, LayersRefuseWhatTheSeedsDoNotDefine) {
+  using gt::testing::refusal;
+  const auto terrain = layered_cone();
+  auto with_regolith = layered_cone_params(1);
+  with_regolith.regolith_depth = 0.01;
+  EXPECT_NE(refusal([&] { gt::pipe_constants(with_regolith, terrain); }).find("which layer"), std::string::npos);
+  auto with_thermal = layered_cone_params(1);
+  with_thermal.thermal_step = true;
+  EXPECT_NE(refusal([&] { gt::pipe_constants(with_thermal, terrain); }).find("thermal step"), std::string::npos);
+  auto printed_without_layers = quiet_params(1);
+  printed_without_layers.layer_erosion = gt::LayerErosion::as_printed;
+  EXPECT_NE(refusal([&] { gt::pipe_constants(printed_without_layers, terrain); }).find("needs layers >= 1"),
+            std::string::npos);
+  const auto constants = gt::pipe_constants(layered_cone_params(1), terrain);
+  auto two_layers = layered_cone_state(terrain, {0.002, 0.001, 0.0005});
+  two_layers.layers.pop_back();
+  EXPECT_NE(refusal([&] { PipeErosion<double>(two_layers, constants); }).find("holds 2 layers, the parameters ask for 3"),
+            std::string::npos);
+  auto negative = layered_cone_state(terrain, {0.002, 0.001, 0.0005});
+  negative.layers[1].at(3, 4) = -1e-3;
+  EXPECT_NE(refusal([&] { PipeErosion<double>(negative, constants); }).find("layer_2 at cell (x=3, y=4)"),
             std::string::npos);
 }
 
