@@ -984,33 +984,33 @@ HydraulicParams still_layered_params(gt::LayerErosion condition) {
   return params;
 }
 
+// still_layered_state() after one step under `condition`.
+PipeState<double> still_layered_step(gt::LayerErosion condition) {
+  const auto state = still_layered_state();
+  PipeErosion<double> erosion(state, gt::pipe_constants(still_layered_params(condition), state.terrain));
+  erosion.step();
+  return erosion.state();
+}
+
+// Cell (2, 2) of a still_layered_step: its two layers, terrain and sediment, each within a few ulps.
+void expect_column(const PipeState<double>& after, double layer_1, double layer_2, double terrain, double sediment) {
+  EXPECT_DOUBLE_EQ(after.layers[0].at(2, 2), layer_1);
+  EXPECT_DOUBLE_EQ(after.layers[1].at(2, 2), layer_2);
+  EXPECT_DOUBLE_EQ(after.terrain.at(2, 2), terrain);
+  EXPECT_DOUBLE_EQ(after.sediment.at(2, 2), sediment);
+}
+
 TEST(PipesReference, LayersAsPrintedErodeStillWaterWorkedByHand) {
   // As printed, T̂_k < s erodes. Layer 2: T̂ = 0 < 0.1, k_s·0.1 = 0.02 > 0.01: emptied, the water
   // gets through; layer 1: T̂ = 0 − 0.01, gap 0.11, k_s·0.11 = 0.022 < 0.5 taken, and the walk
   // stops there. The deposit k_d·(s − T_2) = 0.02 lands on layer 2. So b = 2 − (0.032 − 0.02) and
   // s = 0.112, layer 2 = 0.02, layer 1 = 0.478.
-  const auto state = still_layered_state();
-  PipeErosion<double> erosion(state, gt::pipe_constants(still_layered_params(gt::LayerErosion::as_printed),
-                                                        state.terrain));
-  erosion.step();
-  const auto& after = erosion.state();
-  EXPECT_DOUBLE_EQ(after.layers[1].at(2, 2), 0.02);
-  EXPECT_DOUBLE_EQ(after.layers[0].at(2, 2), 0.478);
-  EXPECT_DOUBLE_EQ(after.terrain.at(2, 2), 1.988);
-  EXPECT_DOUBLE_EQ(after.sediment.at(2, 2), 0.112);
+  expect_column(still_layered_step(gt::LayerErosion::as_printed), 0.478, 0.02, 1.988, 0.112);
 }
 
 TEST(PipesReference, LayersTakeDepositsOnTheTopLayerOnly) {
   // As the prose means it, s > T_2 = 0 stops the walk at the top and deposits k_d·s = 0.02 there.
-  const auto state = still_layered_state();
-  PipeErosion<double> erosion(
-      state, gt::pipe_constants(still_layered_params(gt::LayerErosion::capacity_above_sediment), state.terrain));
-  erosion.step();
-  const auto& after = erosion.state();
-  EXPECT_DOUBLE_EQ(after.layers[1].at(2, 2), 0.03);
-  EXPECT_EQ(after.layers[0].at(2, 2), 0.5);
-  EXPECT_DOUBLE_EQ(after.terrain.at(2, 2), 2.02);
-  EXPECT_DOUBLE_EQ(after.sediment.at(2, 2), 0.08);
+  expect_column(still_layered_step(gt::LayerErosion::capacity_above_sediment), 0.5, 0.03, 2.02, 0.08);
 }
 
 // A cone with rain and 5 cm of water whose flanks carry three layers of 2 mm, 1 mm and 0.5 mm.

@@ -199,8 +199,9 @@ void set_layers(const PipeCaseParams& given, const std::map<std::string, Heightm
     scenario.notes.push_back(fmt::format("{} from the input field {}: {:.4g} to {:.4g} m", name, name, totals.low,
                                          totals.high));
   }
-  for (const auto& [name, field] : fields) {
-    if (name.starts_with("layer_") && std::stoi(name.substr(6)) > given.hydraulic.layers) {
+  for (int k = given.hydraulic.layers + 1; k <= max_pipe_layers; ++k) {
+    const std::string name = fmt::format("layer_{}", k);
+    if (fields.contains(name)) {
       throw InputError(fmt::format("erosion.pipe: the input field {} names a layer above layers = {}", name,
                                    given.hydraulic.layers));
     }

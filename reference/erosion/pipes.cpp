@@ -587,13 +587,13 @@ namespace {
 
 // What the cell's water takes from the ground (> 0) or leaves on it (< 0) in one step, Šťava's
 // layered law (stage 5' above; with no layers Mei's eqs. 2.22-2.23): `capacities` T_0..T_N of the
-// bedrock and the layers, `thickness` b_1..b_N (the cell's, updated), `suspended` s.
+// bedrock and the layers, `thickness` b_1..b_N (the cell's, updated), `suspended` s; above_ignored:
+// the mutant erosion.pipe.layers_above_ignored (both twins: T̂_k = T_k, eq. 2.29 left out).
 template <class Real>
 Real layered_exchange(const std::array<Real, max_pipe_layers + 1>& capacities, std::array<Real*, max_pipe_layers> thickness,
-                      int layer_count, Real suspended, Real dissolving, Real deposition, LayerErosion condition) {
+                      int layer_count, Real suspended, Real dissolving, Real deposition, LayerErosion condition,
+                      bool above_ignored) {
   const bool printed = condition == LayerErosion::as_printed;
-  // Mutant erosion.pipe.layers_above_ignored (both twins): T̂_k = T_k, eq. 2.29 left out.
-  const bool above_ignored = mutant_active("erosion.pipe.layers_above_ignored");
   Real taken_total = Real(0);
   Real above = Real(0);  // Σ b_i over the layers above k, at the step's start
   for (int k = layer_count; k >= 0; --k) {
@@ -633,6 +633,7 @@ void PipeErosion<Real>::erode_and_deposit() {
   for (int k = 1; k <= layer_count; ++k) capacity_constants[k] = static_cast<Real>(constants_.layer_capacity[k - 1]);
   // Mutant erosion.pipe.sediment_gain_doubled: the sediment gains twice what the bed loses.
   const bool sediment_gain_doubled = mutant_active("erosion.pipe.sediment_gain_doubled");
+  const bool above_ignored = mutant_active("erosion.pipe.layers_above_ignored");
   for (int y = 0; y < terrain.height; ++y) {
     for (int x = 0; x < terrain.width; ++x) {
       const std::size_t cell = terrain.index(x, y);
@@ -650,7 +651,7 @@ void PipeErosion<Real>::erode_and_deposit() {
       for (int k = 0; k < layer_count; ++k) thickness[k] = &state_.layers[k].values[cell];
       const Real suspended = sediment[cell];
       const Real moved = layered_exchange(capacities, thickness, layer_count, suspended, dissolving, deposition,
-                                          constants_.layer_erosion);
+                                          constants_.layer_erosion, above_ignored);
       scratch_[cell] = terrain.values[cell] - moved;
       sediment[cell] = suspended + (sediment_gain_doubled ? Real(2) * moved : moved);
     }
