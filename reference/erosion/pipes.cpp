@@ -585,10 +585,31 @@ void PipeErosion<Real>::update_velocity() {
 
 namespace {
 
+// Error model (Real = RoundingInterval): whether another implementation may find a and b the other
+// way round, their intervals overlapping; never for float and double, nor for two exact values.
+template <class Real>
+bool may_compare_otherwise(const Real& a, const Real& b) {
+  if constexpr (std::is_same_v<Real, RoundingInterval>) {
+    return a.low <= b.high && b.low <= a.high && (a.width() > 0.0 || b.width() > 0.0);
+  } else {
+    return false;
+  }
+}
+
+// Error model: `value` joined with what the branch not taken gives (hull, keeping value's value).
+template <class Real>
+void join_other_branch(Real& value, const Real& other) {
+  if constexpr (std::is_same_v<Real, RoundingInterval>) value = hull(value, other);
+}
+
 // What the cell's water takes from the ground (> 0) or leaves on it (< 0) in one step, Šťava's
 // layered law (stage 5' above; with no layers Mei's eqs. 2.22-2.23): `capacities` T_0..T_N of the
 // bedrock and the layers, `thickness` b_1..b_N (the cell's, updated), `suspended` s; above_ignored:
 // the mutant erosion.pipe.layers_above_ignored (both twins: T̂_k = T_k, eq. 2.29 left out).
+// In the error model a comparison another implementation may take the other way joins the branch
+// not taken: where a walk stops at T̂_k ≈ s the other may take k_s·gap (gap within rounding of 0),
+// and where s ≈ T_N deposit k_d·(s − T_N); so the exchange's bound covers both sides of each
+// switch (Mei's law, the walk with N = 0, switches between erosion and deposition at C = s).
 template <class Real>
 Real layered_exchange(const std::array<Real, max_pipe_layers + 1>& capacities, std::array<Real*, max_pipe_layers> thickness,
                       int layer_count, Real suspended, Real dissolving, Real deposition, LayerErosion condition,
@@ -598,23 +619,32 @@ Real layered_exchange(const std::array<Real, max_pipe_layers + 1>& capacities, s
   Real above = Real(0);  // Σ b_i over the layers above k, at the step's start
   for (int k = layer_count; k >= 0; --k) {
     const Real reach = above_ignored ? capacities[k] : capacities[k] - above;  // T̂_k
-    if (!(printed ? reach < suspended : reach > suspended)) break;
+    const bool erodes = printed ? reach < suspended : reach > suspended;
     const Real gap = printed ? suspended - reach : reach - suspended;
     const Real wanted = dissolving * gap;
     if (k == 0) {
-      taken_total = taken_total + wanted;
+      if (erodes) taken_total = taken_total + wanted;
+      if (!erodes && may_compare_otherwise(reach, suspended)) join_other_branch(taken_total, taken_total + wanted);
       break;
     }
     Real& layer = *thickness[k - 1];
     const Real held = layer;
     const Real taken = min(wanted, held);
+    if (!erodes) {
+      if (may_compare_otherwise(reach, suspended)) {
+        join_other_branch(layer, held - taken);
+        join_other_branch(taken_total, taken_total + taken);
+      }
+      break;
+    }
     layer = held - taken;
     taken_total = taken_total + taken;
     if (taken < held) break;
     above = above + held;
   }
   const Real top = capacities[layer_count];
-  const Real deposited = suspended > top ? deposition * (suspended - top) : Real(0);
+  Real deposited = suspended > top ? deposition * (suspended - top) : Real(0);
+  if (may_compare_otherwise(suspended, top)) join_other_branch(deposited, deposition * (suspended - top));
   if (layer_count > 0) *thickness[layer_count - 1] = *thickness[layer_count - 1] + deposited;
   return taken_total - deposited;
 }
