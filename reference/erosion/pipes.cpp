@@ -585,12 +585,13 @@ void PipeErosion<Real>::update_velocity() {
 
 namespace {
 
-// Error model (Real = RoundingInterval): whether another implementation may find a and b the other
-// way round, their intervals overlapping; never for float and double, nor for two exact values.
+// Error model (Real = RoundingInterval): whether another implementation may hold a > b, some value
+// of a's interval above some value of b's; never for float and double (their branch is the one
+// they take). Asked where this implementation found a > b false.
 template <class Real>
-bool may_compare_otherwise(const Real& a, const Real& b) {
+bool may_be_greater(const Real& a, const Real& b) {
   if constexpr (std::is_same_v<Real, RoundingInterval>) {
-    return a.low <= b.high && b.low <= a.high && (a.width() > 0.0 || b.width() > 0.0);
+    return a.high > b.low;
   } else {
     return false;
   }
@@ -624,14 +625,16 @@ Real layered_exchange(const std::array<Real, max_pipe_layers + 1>& capacities, s
     const Real wanted = dissolving * gap;
     if (k == 0) {
       if (erodes) taken_total = taken_total + wanted;
-      if (!erodes && may_compare_otherwise(reach, suspended)) join_other_branch(taken_total, taken_total + wanted);
+      if (!erodes && (printed ? may_be_greater(suspended, reach) : may_be_greater(reach, suspended))) {
+        join_other_branch(taken_total, taken_total + wanted);
+      }
       break;
     }
     Real& layer = *thickness[k - 1];
     const Real held = layer;
     const Real taken = min(wanted, held);
     if (!erodes) {
-      if (may_compare_otherwise(reach, suspended)) {
+      if (printed ? may_be_greater(suspended, reach) : may_be_greater(reach, suspended)) {
         join_other_branch(layer, held - taken);
         join_other_branch(taken_total, taken_total + taken);
       }
@@ -644,7 +647,7 @@ Real layered_exchange(const std::array<Real, max_pipe_layers + 1>& capacities, s
   }
   const Real top = capacities[layer_count];
   Real deposited = suspended > top ? deposition * (suspended - top) : Real(0);
-  if (may_compare_otherwise(suspended, top)) join_other_branch(deposited, deposition * (suspended - top));
+  if (!(suspended > top) && may_be_greater(suspended, top)) join_other_branch(deposited, deposition * (suspended - top));
   if (layer_count > 0) *thickness[layer_count - 1] = *thickness[layer_count - 1] + deposited;
   return taken_total - deposited;
 }
