@@ -621,20 +621,20 @@ Real layered_exchange(const std::array<Real, max_pipe_layers + 1>& capacities, s
   for (int k = layer_count; k >= 0; --k) {
     const Real reach = above_ignored ? capacities[k] : capacities[k] - above;  // T̂_k
     const bool erodes = printed ? reach < suspended : reach > suspended;
+    const bool erodes_elsewhere =
+        !erodes && (printed ? may_be_greater(suspended, reach) : may_be_greater(reach, suspended));
     const Real gap = printed ? suspended - reach : reach - suspended;
     const Real wanted = dissolving * gap;
     if (k == 0) {
       if (erodes) taken_total = taken_total + wanted;
-      if (!erodes && (printed ? may_be_greater(suspended, reach) : may_be_greater(reach, suspended))) {
-        join_other_branch(taken_total, taken_total + wanted);
-      }
+      if (erodes_elsewhere) join_other_branch(taken_total, taken_total + wanted);
       break;
     }
     Real& layer = *thickness[k - 1];
     const Real held = layer;
     const Real taken = min(wanted, held);
     if (!erodes) {
-      if (printed ? may_be_greater(suspended, reach) : may_be_greater(reach, suspended)) {
+      if (erodes_elsewhere) {
         join_other_branch(layer, held - taken);
         join_other_branch(taken_total, taken_total + taken);
       }
@@ -646,8 +646,9 @@ Real layered_exchange(const std::array<Real, max_pipe_layers + 1>& capacities, s
     above = above + held;
   }
   const Real top = capacities[layer_count];
-  Real deposited = suspended > top ? deposition * (suspended - top) : Real(0);
-  if (!(suspended > top) && may_be_greater(suspended, top)) join_other_branch(deposited, deposition * (suspended - top));
+  const bool deposits = suspended > top;
+  Real deposited = deposits ? deposition * (suspended - top) : Real(0);
+  if (!deposits && may_be_greater(suspended, top)) join_other_branch(deposited, deposition * (suspended - top));
   if (layer_count > 0) *thickness[layer_count - 1] = *thickness[layer_count - 1] + deposited;
   return taken_total - deposited;
 }
