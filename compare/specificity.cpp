@@ -24,13 +24,17 @@ using report_detail::case_anchor;
 using report_detail::escape_markup;
 
 // One parameter's plausible values: a real or integer interval (log-uniform when `logarithmic`),
-// or choices drawn alike.
+// or choices drawn alike. `clears`: parameters left at their defaults when this one is drawn other
+// than "0" (settings the algorithm refuses beside it); `needs`: a parameter drawn before it without
+// which it is left at its default (drawn "0": a setting the algorithm refuses alone).
 struct Plausible {
   std::string parameter;
   double low = 0.0;
   double high = 0.0;
   bool logarithmic = false;
   std::vector<std::string> choices;  // non-empty: one of these
+  std::vector<std::string> clears = {};
+  std::string needs = {};
 };
 
 struct SpecificityAlgorithm {
@@ -41,10 +45,20 @@ struct SpecificityAlgorithm {
 Plausible linear(std::string name, double low, double high) { return {std::move(name), low, high, false, {}}; }
 Plausible logarithmic(std::string name, double low, double high) { return {std::move(name), low, high, true, {}}; }
 Plausible one_of(std::string name, std::vector<std::string> choices) { return {std::move(name), 0, 0, false, std::move(choices)}; }
+Plausible clearing(Plausible plausible, std::vector<std::string> cleared) {
+  plausible.clears = std::move(cleared);
+  return plausible;
+}
+Plausible needing(std::string needed, Plausible plausible) {
+  plausible.needs = std::move(needed);
+  return plausible;
+}
 
 // The plausible sub-ranges: what a user sets on purpose, each inside the declared range. Left out:
 // settings the algorithm refuses in combination (droplets' disjoint ordering needs a spacing
-// beyond twice the lifetime) and those that only draw pictures.
+// beyond twice the lifetime) and those that only draw pictures; where one setting refuses others
+// (Šťava's layers beside regolith and the thermal step) it clears them. New parameters go last, so
+// the draws of those before them stay what they were.
 const std::vector<SpecificityAlgorithm>& plausible_table() {
   static const std::vector<SpecificityAlgorithm> table = {
       {"erosion.thermal",
@@ -61,7 +75,13 @@ const std::vector<SpecificityAlgorithm>& plausible_table() {
         linear("dissolving_rate", 0.1, 2.0), linear("deposition_rate", 0.1, 2.0), one_of("pipes", {"4", "8"}),
         one_of("transport", {"flux", "semi_lagrangian"}), one_of("boundary", {"closed", "open"}),
         linear("sediment_diffusion", 0.0, 0.1), linear("regolith_depth", 0.0, 0.05),
-        logarithmic("initial_depth", 0.01, 0.5), one_of("thermal_step", {"false", "true"})}},
+        logarithmic("initial_depth", 0.01, 0.5), one_of("thermal_step", {"false", "true"}),
+        clearing(one_of("layers", {"0", "0", "1", "2", "3"}), {"regolith_depth", "thermal_step"}),
+        logarithmic("layer_capacity_1", 0.01, 1.0), logarithmic("layer_capacity_2", 0.01, 1.0),
+        logarithmic("layer_capacity_3", 0.01, 1.0), logarithmic("layer_thickness_1", 1e-3, 0.5),
+        logarithmic("layer_thickness_2", 1e-3, 0.5), logarithmic("layer_thickness_3", 1e-3, 0.5),
+        needing("layers", one_of("layer_erosion", {"capacity_above_sediment", "capacity_above_sediment",
+                                                   "capacity_above_sediment", "as_printed"}))}},
       {"erosion.particle",
        {linear("iterations", 2, 10), linear("lifetime", 10, 60), linear("erosion_strength", 0.05, 0.4),
         linear("deposition_strength", 0.05, 0.4), linear("drag", 0.05, 0.5), logarithmic("capacity_factor", 1e-3, 0.05),
@@ -128,12 +148,20 @@ Sweep make_specificity(const std::vector<std::string>& patterns, int sets, std::
     if (!named_by_any(patterns, entry.algorithm)) continue;
     for (int set = 0; set < sets; ++set) {
       std::vector<std::string> assignments;
+      std::vector<std::string> cleared;
       for (std::size_t p = 0; p < entry.parameters.size(); ++p) {
         const Plausible& plausible = entry.parameters[p];
         const ParamSpec& spec = find_spec(entry.algorithm, *find_algorithm(entry.algorithm).params, plausible.parameter);
         const std::string value = drawn_value(plausible, spec, draw(seed, a, set, p));
         assignments.push_back(plausible.parameter + "=" + value);
+        if (value != "0") cleared.insert(cleared.end(), plausible.clears.begin(), plausible.clears.end());
+        if (!plausible.needs.empty() && std::ranges::find(assignments, plausible.needs + "=0") != assignments.end()) {
+          cleared.push_back(plausible.parameter);
+        }
       }
+      std::erase_if(assignments, [&](const std::string& assignment) {
+        return std::ranges::find(cleared, assignment.substr(0, assignment.find('='))) != cleared.end();
+      });
       for (const std::string& input : specificity_inputs()) {
         AdHocCase variant{.algorithm = entry.algorithm, .input = input, .assignments = assignments};
         variant.name = fmt::format("specificity.{}.{}.set_{:02}", entry.algorithm, ad_hoc_input_name(variant), set);

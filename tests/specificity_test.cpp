@@ -1,6 +1,7 @@
 // `groundtruth specificity` (compare/specificity.hpp, issue 38): the draws are reproducible and
 // inside the declared ranges, the tally counts a failed or erring run as a false alarm and names
 // it, and the command runs end to end on honest code.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -55,6 +56,20 @@ TEST(Specificity, DrawsAreReproducibleAndWithinTheDeclaredRanges) {
   EXPECT_EQ(pipe.variants[0].assignments, pipe.variants[1].assignments);
   EXPECT_NE(pipe.variants[0].assignments, pipe.variants[2].assignments);
   EXPECT_EQ(pipe.variants[0].name, "specificity.erosion.pipe.volcano.set_00");
+  // Šťava's layers clear what the pipe model refuses beside them (regolith, the thermal step), and
+  // the printed condition, refused without layers, is drawn only with them; some sets have layers.
+  int layered = 0;
+  for (const auto& variant : gt::make_specificity({"erosion.pipe"}, 40, 3).variants) {
+    const auto& given = variant.assignments;
+    const bool layers = std::ranges::find(given, "layers=0") == given.end();
+    layered += layers ? 1 : 0;
+    for (const auto& assignment : given) {
+      const std::string name = assignment.substr(0, assignment.find('='));
+      if (layers) EXPECT_TRUE(name != "regolith_depth" && name != "thermal_step") << variant.name << ": " << assignment;
+      if (!layers) EXPECT_NE(name, "layer_erosion") << variant.name;
+    }
+  }
+  EXPECT_GT(layered, 0);
 }
 
 TEST(Specificity, UnknownPatternsAndCountsAreRefused) {
