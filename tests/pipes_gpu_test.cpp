@@ -283,7 +283,9 @@ TEST_P(PipesGpuOneStep, MatchesTheFloatReference) {
   }
   EXPECT_LT(eroded, 0.0) << "the step should erode somewhere";
   // As printed, saturated water erodes with k_s > k_d at least what it deposits: no cell rises.
-  if (GetParam().variant != Variant::layers_as_printed) EXPECT_GT(deposited, 0.0) << "and deposit somewhere";
+  if (GetParam().variant != Variant::layers_as_printed) {
+    EXPECT_GT(deposited, 0.0) << "and deposit somewhere";
+  }
 
   // The ledgers: the same float quantities summed the same way; the terrain within the bound above
   // plus the double ledger's own rounding.

@@ -399,11 +399,11 @@ PipeState<Real> pipe_spec_step(const PipeState<Real>& start, const HydraulicPara
     const Real speed = sqrt(u * u + v * v);
     const auto capacity_of = [&](double constant) { return Real(constant) * tilt * speed * ramp; };
     const Real suspended = start.sediment.values[cell];
-    const Real taken = params.layers == 0
-                           ? (capacity_of(params.capacity) > suspended
-                                  ? dissolving * (capacity_of(params.capacity) - suspended)
-                                  : -(depositing * (suspended - capacity_of(params.capacity))))
-                           : layers_exchange(next, cell, capacity_of, suspended, dissolving, depositing, params);
+    const Real capacity = capacity_of(params.capacity);
+    const Real taken = params.layers == 0 ? (capacity > suspended ? dissolving * (capacity - suspended)
+                                                                  : -(depositing * (suspended - capacity)))
+                                          : layers_exchange(next, cell, capacity_of, suspended, dissolving, depositing,
+                                                            params);
     Real bed = start.terrain.values[cell] - taken;
     sediment[cell] = suspended + taken;
     if (regolith) {

@@ -160,15 +160,13 @@ void set_forcing(const PipeCaseParams& given, PipeScenario& scenario) {
   if (given.source_rate > 0.0) {
     const int x = static_cast<int>(std::lround(given.source_x * (terrain.width - 1)));
     const int y = static_cast<int>(std::lround(given.source_y * (terrain.height - 1)));
-    if (!terrain.is_valid(x, y)) {
-      throw InputError(fmt::format("erosion.pipe: the point source at cell (x={}, y={}) lies on a no-data cell", x, y));
-    }
     scenario.forcing.sources.push_back({x, y, given.source_rate});
     scenario.notes.push_back(fmt::format("point source: {} m³/s at cell (x={}, y={})", given.source_rate, x, y));
   }
 }
 
-// Šťava's layers: each layer_k input field, checked, or layer_thickness_k on every valid cell.
+// Šťava's layers: each layer_k input field (make_scenario checks its values), or layer_thickness_k
+// on every valid cell.
 void set_layers(const PipeCaseParams& given, const std::map<std::string, Heightmap>& fields, PipeScenario& scenario) {
   auto& state = scenario.initial;
   for (int k = 1; k <= given.hydraulic.layers; ++k) {
@@ -185,15 +183,7 @@ void set_layers(const PipeCaseParams& given, const std::map<std::string, Heightm
       continue;
     }
     for (std::size_t cell = 0; cell < layer.size(); ++cell) {
-      if (!state.terrain.is_valid(cell)) continue;
-      const double thickness = field->second.values[cell];
-      if (!(thickness >= 0.0)) {
-        throw InputError(fmt::format("erosion.pipe: the input field {} holds {} m at cell (x={}, y={}); a layer's "
-                                     "thickness must be >= 0",
-                                     name, thickness, cell % static_cast<std::size_t>(layer.width),
-                                     cell / static_cast<std::size_t>(layer.width)));
-      }
-      layer.values[cell] = thickness;
+      if (state.terrain.is_valid(cell)) layer.values[cell] = field->second.values[cell];
     }
     const FieldTotals totals = field_totals(layer);
     scenario.notes.push_back(fmt::format("{} from the input field {}: {:.4g} to {:.4g} m", name, name, totals.low,
@@ -222,6 +212,8 @@ PipeScenario make_scenario(const nlohmann::json& resolved, const Heightmap& inpu
   set_layers(given, fields, scenario);
   set_initial_water(given, scenario);
   set_forcing(given, scenario);
+  // The twins' own refusals (a negative layer from an input field among them), before any runs.
+  check_pipe_input(scenario.initial, scenario.forcing, scenario.constants);
   return scenario;
 }
 

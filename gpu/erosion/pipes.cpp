@@ -24,8 +24,9 @@
 // same three for the regolith r (allocated only when K_r > 0). Variants are compiled in with
 // defines: PIPES_8, TRANSPORT_FLUX, REGOLITH, REGOLITH_DIFFUSION (r diffused too: the thesis, not
 // seed 001's code), DIFFUSION_WATER, LAYERS=N (Šťava's layers, 0 without: their thicknesses, N
-// floats a cell, are read and written in place by pipes_flow.comp) and LAYERS_AS_PRINTED. seed 001's code tilt (tilt_differences) needs no define: it is
-// the spans of the tilt's differences in the parameter block, 1 instead of l and 2l.
+// floats a cell, are read and written in place by pipes_flow.comp) and LAYERS_AS_PRINTED. Seed
+// 001's code tilt (tilt_differences) needs no define: it is the spans of the tilt's differences in
+// the parameter block, 1 instead of l and 2l.
 //
 // The float trap and its solution. ref<float> stores b as a float: an erosion amount a
 // below half the float spacing of b (2^-15 m = 3.05e-5 m between floats at 500 m, so a < 1.5e-5 m)
@@ -471,7 +472,7 @@ void PipeErosion::upload(const PipeState<double>& state) {
     regolith_sent_ = StorageBuffer::from(zero_vectors);
   }
   if (constants_.thermal_step) thermal_outflows_ = StorageBuffer::from(std::vector<float>(8 * cells, 0.0f));
-  const auto layer_count = static_cast<std::size_t>(constants_.layer_count);
+  const std::size_t layer_count = layer_values_per_cell();
   if (layer_count > 0) {
     std::vector<float> thicknesses(layer_count * cells, 0.0f);
     for (std::size_t cell = 0; cell < cells; ++cell) {
@@ -493,6 +494,7 @@ void PipeErosion::upload(const PipeState<double>& state) {
 }
 
 std::size_t PipeErosion::pipe_values_per_cell() const { return static_cast<std::size_t>(constants_.pipe_count); }
+std::size_t PipeErosion::layer_values_per_cell() const { return static_cast<std::size_t>(constants_.layer_count); }
 
 int PipeErosion::passes_per_step() const {
   return 4 + (sources_program_ ? 1 : 0) + (maccormack_program_ ? 1 : 0) + (diffusion_program_ ? 1 : 0) +
@@ -571,7 +573,7 @@ PipeErosion::Download PipeErosion::download() const {
                   sediment_.download<float>(cells),          regolith_.download<float>(cells),
                   sent_.download<float>(per_cell * cells),    {}};
   if (has_regolith(constants_)) fields.regolith_sent = regolith_sent_.download<float>(per_cell * cells);
-  const auto layer_count = static_cast<std::size_t>(constants_.layer_count);
+  const std::size_t layer_count = layer_values_per_cell();
   if (layer_count > 0) fields.layers = layers_.download<float>(layer_count * cells);
   return fields;
 }
@@ -596,7 +598,7 @@ PipeState<double> PipeErosion::state() const {
   state.velocity_x = from(fields.velocity, 2, 0);
   state.velocity_y = from(fields.velocity, 2, 1);
   state.regolith = from(fields.regolith, 1, 0);
-  const auto layer_count = static_cast<std::size_t>(constants_.layer_count);
+  const std::size_t layer_count = layer_values_per_cell();
   for (std::size_t k = 0; k < layer_count; ++k) state.layers.push_back(from(fields.layers, layer_count, k));
   const std::size_t per_cell = pipe_values_per_cell();
   state.outflow.resize(base_.size());
@@ -695,7 +697,7 @@ void PipeErosion::check_state(const Download& fields) const {
         const double flux = fields.outflow[pipe_values_per_cell() * cell + k];
         if (!acceptable(flux, true)) report(fmt::format("outflow {}", pipe_name(k)), flux);
       }
-      const auto layer_count = static_cast<std::size_t>(constants_.layer_count);
+      const std::size_t layer_count = layer_values_per_cell();
       for (std::size_t k = 0; k < layer_count; ++k) {
         const double thickness = fields.layers[layer_count * cell + k];
         if (!acceptable(thickness, true)) report(fmt::format("layer_{}", k + 1), thickness);

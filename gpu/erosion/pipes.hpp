@@ -101,6 +101,8 @@ class PipeErosion {
   struct Download;
   // Floats per cell of the outflow and sent buffers: 4, or 8 with the diagonal pipes.
   std::size_t pipe_values_per_cell() const;
+  // Floats per cell of the layers buffer: Šťava's layer count (0 without layers).
+  std::size_t layer_values_per_cell() const;
   Download download() const;
   void bind() const;
   void record_step();

@@ -155,6 +155,24 @@ constexpr int opposite(int pipe) { return pipe ^ 1; }
 // implementation may take the other branch.
 constexpr unsigned char drained_by_k = 1u, drained_either_way = 2u;
 
+// Error model (Real = RoundingInterval): whether another implementation may hold a > b, some value
+// of a's interval above some value of b's; never for float and double (their branch is the one
+// they take). Asked where this implementation found a > b false.
+template <class Real>
+bool may_be_greater(const Real& a, const Real& b) {
+  if constexpr (std::is_same_v<Real, RoundingInterval>) {
+    return a.high > b.low;
+  } else {
+    return false;
+  }
+}
+
+// Error model: `value` joined with what the branch not taken gives (hull, keeping value's value).
+template <class Real>
+void join_other_branch(Real& value, const Real& other) {
+  if constexpr (std::is_same_v<Real, RoundingInterval>) value = hull(value, other);
+}
+
 template <class Real>
 using PipeValues = std::array<Real, all_pipes>;
 
@@ -528,13 +546,12 @@ void PipeErosion<Real>::update_water_depth() {
       if (!terrain.is_valid(cell)) continue;
       const auto& out = state_.outflow[cell];
       const Real kept = max(Real(0), water_before_flow_[cell] - pipe_sum(out, pipe_count()) / area_per_time);
-      Real remaining = (drained_[cell] & drained_by_k) != 0 ? Real(0) : kept;
+      const bool drained = (drained_[cell] & drained_by_k) != 0;
+      Real remaining = drained ? Real(0) : kept;
       // Error model: where K's interval straddles 1 another implementation may take the other
       // branch; both are near 0 (K ≈ 1 sends about all of d_A), but the kept residual is a rounding
       // of d_A, not of the inflow alone.
-      if constexpr (std::is_same_v<Real, RoundingInterval>) {
-        if ((drained_[cell] & drained_either_way) != 0) remaining = hull(remaining, hull(kept, Real(0)));
-      }
+      if ((drained_[cell] & drained_either_way) != 0) join_other_branch(remaining, drained ? kept : Real(0));
       state_.water.values[cell] = remaining + pipe_sum(inflows(x, y), pipe_count()) / area_per_time;
       for (int k = 0; k < pipe_count(); ++k) {
         if (exterior(cell, k)) {
@@ -584,24 +601,6 @@ void PipeErosion<Real>::update_velocity() {
 }
 
 namespace {
-
-// Error model (Real = RoundingInterval): whether another implementation may hold a > b, some value
-// of a's interval above some value of b's; never for float and double (their branch is the one
-// they take). Asked where this implementation found a > b false.
-template <class Real>
-bool may_be_greater(const Real& a, const Real& b) {
-  if constexpr (std::is_same_v<Real, RoundingInterval>) {
-    return a.high > b.low;
-  } else {
-    return false;
-  }
-}
-
-// Error model: `value` joined with what the branch not taken gives (hull, keeping value's value).
-template <class Real>
-void join_other_branch(Real& value, const Real& other) {
-  if constexpr (std::is_same_v<Real, RoundingInterval>) value = hull(value, other);
-}
 
 // What the cell's water takes from the ground (> 0) or leaves on it (< 0) in one step, Šťava's
 // layered law (stage 5' above; with no layers Mei's eqs. 2.22-2.23): `capacities` T_0..T_N of the
