@@ -18,6 +18,7 @@
 #include "compare/report/images.hpp"
 #include "compare/report/plots.hpp"
 #include "compare/timing.hpp"
+#include "core/errors.hpp"
 #include "core/params/thermal.hpp"
 #include "core/sum.hpp"
 #include "gpu/timing.hpp"
@@ -401,6 +402,38 @@ void add_race_statistics(const DropletTwin& twin, const Grid<float>& truth, cons
   add_race_by_spacing(twin, options, result);
 }
 
+// Race ordering: what of the case is order-independent, graded. The race's result depends on which
+// droplet writes last; each droplet's kernel at the case's parameters does not. Batch ordering runs
+// that kernel with every droplet of a pass reading the pass's start heights and adding integer quanta
+// (core/params/droplets.hpp), so one iteration of the case's droplets from its input in batch is
+// defined to the bit: the GPU against ref<float>, bound 0. Where the case's spacing lets a pass's
+// droplets, blind to each other, pile more into one cell than the GPU's counters hold, the iteration
+// runs at apart_spacing, where no two droplets of a pass meet. The race's own in-place arithmetic is
+// the disjoint cases' to grade (the same shader code with the races ruled out by spacing).
+Check race_kernel_in_batch(const DropletTwin& twin) {
+  const std::string name = "parity.batch_kernel.gpu_vs_float";
+  std::string refused;
+  for (const int spacing : {twin.setup.spacing, std::max(twin.setup.spacing, twin.apart_spacing)}) {
+    const DropletSetup batch{spacing, DropletOrdering::batch};
+    Grid<float> expected;
+    try {
+      expected = twin.reference_float(twin.input.cast<float>(), 0, 1, batch).heights;
+    } catch (const RunawayRun& runaway) {
+      refused += fmt::format("{}at spacing {}: {}", refused.empty() ? "" : "; ", spacing, runaway.what());
+      continue;
+    }
+    const FieldDifference difference = field_difference(expected, gpu_run(twin, batch, 1));
+    return bounded_check(
+        name, double(difference.differing_bits), 0.0, std::nullopt,
+        fmt::format("texels differing in any bit after one iteration of this case's droplets (its input and "
+                    "parameters, spacing {}{}) in batch ordering, the order-independent form of the kernel the race "
+                    "runs: GPU against ref<float>, every bit equal (max |difference| {:.3g} in the twins' heights)",
+                    spacing, refused.empty() ? "" : "; batch refused the case's spacing: " + refused,
+                    difference.max_abs));
+  }
+  return not_applicable_check(name, "batch ordering cannot count this case's changes " + refused);
+}
+
 // Batch ordering: how far its result lands from the sequential truth (ref<double>), and ref<float>'s
 // largest change of a cell in a pass.
 void add_batch_checks(const DropletTwin& twin, const std::vector<BackendEnd>& ends, CaseResult& result) {
@@ -487,6 +520,7 @@ void finish(const DropletTwin& twin, const std::vector<BackendEnd>& ends, const 
   if (ends.size() < 3) return;
   if (twin.setup.ordering == DropletOrdering::batch) add_whole_run_parity(ends[1], ends[2], result);
   if (twin.setup.ordering == DropletOrdering::race) {
+    result.checks.push_back(race_kernel_in_batch(twin));
     add_race_statistics(twin, twin.own.twin_heights<float>(ends[1].final), options, result);
   }
 }
@@ -495,8 +529,8 @@ void finish(const DropletTwin& twin, const std::vector<BackendEnd>& ends, const 
 std::vector<std::string> finish_gpu_checks(const DropletTwin& twin) {
   if (twin.setup.ordering == DropletOrdering::batch) return {"parity.cells_differing.gpu_vs_float"};
   if (twin.setup.ordering == DropletOrdering::disjoint) return {};
-  std::vector<std::string> names = {"race.erosion_correlation.gpu_vs_float", "race.relative_rms.gpu_vs_float",
-                                    "race.material_moved_ratio.gpu_vs_float"};
+  std::vector<std::string> names = {"parity.batch_kernel.gpu_vs_float", "race.erosion_correlation.gpu_vs_float",
+                                    "race.relative_rms.gpu_vs_float", "race.material_moved_ratio.gpu_vs_float"};
   for (const int spacing : race_spacings) names.push_back(fmt::format("race.relative_rms.spacing_{}.gpu_vs_float", spacing));
   return names;
 }

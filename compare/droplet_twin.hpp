@@ -33,6 +33,10 @@
 //   race.*                                    race: the GPU against the sequential ref<float> over 5
 //                                             or more runs, and by spacing 16..1 (reported: no error
 //                                             model gives a race's distance before the run)
+//   parity.batch_kernel.gpu_vs_float          race: what is order-independent, graded: one iteration of
+//                                             the case's droplets in batch ordering, GPU against
+//                                             ref<float>, bound 0 (at apart_spacing where the case's
+//                                             spacing piles more into a cell than batch can count)
 // Pictures and files beside the runner's: Hydra's depth and sediment maps of ref<double>'s run
 // (depth_cpu.png, sediment_cpu.png, eroded_at_droplet_cpu, deposited_at_droplet_cpu), the batch
 // result against the truth (batch_vs_sequential.png), the race by spacing (race_by_spacing.png).
@@ -105,6 +109,9 @@ struct DropletTwin {
   DropletSetup setup;     // the case's
   int iterations = 0;
   int lifetime = 0;
+  // The smallest spacing at which no two droplets of a pass read or write a common texel (twice the
+  // droplet's reach, plus 1): disjoint ordering's least spacing.
+  int apart_spacing = 0;
   // Float roundings per droplet step that can move material between the terrain and the sediment
   // (stores and sediment updates): the sequential float ledger's error model.
   double roundings_per_step = 0.0;

@@ -341,6 +341,7 @@ void expect_droplet_suite_meets_the_acceptance_bounds(const std::string& algorit
   ASSERT_EQ(run.status, 0) << run;
   const json report = read_json(out / "report.json");
   int cases = 0;
+  int graded_races = 0;
   for (const auto& report_case : report.at("cases")) {
     SCOPED_TRACE(report_case.at("name").get<std::string>());
     EXPECT_EQ(report_case.at("algorithm"), algorithm);
@@ -376,9 +377,44 @@ void expect_droplet_suite_meets_the_acceptance_bounds(const std::string& algorit
         ASSERT_NE(distance, nullptr) << spacing;
         EXPECT_GT(distance->at("value").get<double>(), 0.0) << "racing droplets differ from the sequential truth";
       }
+      // What of a race is order-independent: the case's droplets in batch, bit for bit (not
+      // applicable only where batch cannot count a pass's changes even with the droplets apart).
+      const json* kernel = find_check(report_case, "parity.batch_kernel.gpu_vs_float");
+      ASSERT_NE(kernel, nullptr);
+      EXPECT_EQ(kernel->at("status"), "pass");
+      if (kernel->at("value").is_number()) {
+        EXPECT_EQ(kernel->at("value").get<double>(), 0.0);
+        ++graded_races;
+      }
     }
   }
   EXPECT_GE(cases, 10);
+  EXPECT_GE(graded_races, 3);
+}
+
+// A race case grades what of it is order-independent: one iteration of its droplets in batch
+// ordering, GPU against ref<float> bit for bit. Honest, every bit equal; with a GPU-only bug in the
+// droplets' motion, the check fails and so does the case, though the race itself has no bound.
+TEST(CliRun, ARaceCaseGradesItsDropletsInBatchAndAMotionBugFailsThere) {
+  const TempDir work;
+  const auto kernel_check = [&](const std::vector<std::string>& extra, int expected_status) {
+    const fs::path out = work / fmt::format("report{}", extra.size());
+    std::vector<std::string> args = {"run", "erosion.particle.mutant_probe.race", "--require-gpu", "--out", out.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult run = run_groundtruth(args, work.path());
+    EXPECT_EQ(run.status, expected_status) << run;
+    const json report = read_json(out / "report.json");
+    const json* check = find_check(report.at("cases").at(0), "parity.batch_kernel.gpu_vs_float");
+    return check == nullptr ? json() : *check;
+  };
+  const json honest = kernel_check({}, 0);
+  ASSERT_TRUE(honest.is_object());
+  EXPECT_EQ(honest.at("status"), "pass");
+  EXPECT_EQ(honest.at("value").get<double>(), 0.0);
+  const json mutated = kernel_check({"--mutant", "erosion.particle.fall_through_acceleration"}, 1);
+  ASSERT_TRUE(mutated.is_object());
+  EXPECT_EQ(mutated.at("status"), "fail");
+  EXPECT_GT(mutated.at("value").get<double>(), 0.0);
 }
 
 TEST(CliRun, ParticleSuiteMeetsTheAcceptanceBounds) {

@@ -106,13 +106,18 @@ TEST(Mutants, ErosionLayeredHToZIsKilled) { expect_every_mutant_killed({"erosion
 
 // apply_scaled passes ledger.closure (the excess is booked as the apply pass's rounding): the
 // bound on that rounding must kill it. capacity_doubled conserves material: only the hand-derived
-// droplet sees it.
+// droplet sees it. A race case's one graded GPU check, its droplets in batch, kills GPU bugs there.
 TEST(Mutants, ErosionDropletsAreKilled) {
   const json mutation = expect_every_mutant_killed({"erosion.particle.*", "erosion.beyer.*"});
   EXPECT_TRUE(killed_by(mutation, "erosion.beyer.apply_scaled", "ledger.apply_rounding.cpu_float")) << mutation.dump(2);
   expect_killed_near_the_bound(mutation, "erosion.beyer.apply_scaled_above_bound", "ledger.apply_rounding.cpu_float");
   EXPECT_TRUE(killed_by(mutation, "erosion.beyer.capacity_doubled", "spec.droplet.sediment.cpu"));
   EXPECT_TRUE(killed_by(mutation, "erosion.particle.step_by_velocity", "spec.droplet.positions.cpu"));
+  // In race ordering, where the race itself has no bound: the droplets in batch, on a real DEM too.
+  EXPECT_TRUE(killed_by(mutation, "erosion.particle.fall_through_acceleration",
+                        "erosion.particle.race.volcano: parity.batch_kernel.gpu_vs_float"));
+  EXPECT_TRUE(killed_by(mutation, "erosion.beyer.gradient_swapped_corners",
+                        "erosion.beyer.race.volcano: parity.batch_kernel.gpu_vs_float"));
 }
 
 // The pipe model in two, each well inside ctest's 300 s on a loaded 2-core machine (as one it took

@@ -60,6 +60,7 @@ DropletTwin beyer_twin(const Heightmap& given, bool normalised, const BeyerConst
   twin.setup = {constants.spacing, constants.ordering};
   twin.iterations = constants.iterations;
   twin.lifetime = constants.lifetime;
+  twin.apart_spacing = 2 * beyer_reach(constants) + 1;
   // A step erodes with the brush (a store and a sediment update per sample) or deposits on 4
   // samples (a store each, one sediment update): each sample, a distinct cell, written once.
   twin.roundings_per_step = 2.0 * brush_samples(constants);

@@ -85,6 +85,7 @@ DropletTwin particle_twin(const Heightmap& given, bool normalised, const Particl
   twin.setup = {constants.spacing, constants.ordering};
   twin.iterations = constants.iterations;
   twin.lifetime = constants.lifetime;
+  twin.apart_spacing = 2 * droplet_reach(constants.lifetime) + 1;
   twin.roundings_per_step = 7.0;  // 4 corner stores + 1 deposit + 2 sediment updates
   // A step erodes (each of 4 distinct corners, or the texel, once) or deposits (at the texel):
   // one write to a cell at most.

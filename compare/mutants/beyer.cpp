@@ -4,7 +4,9 @@
 //
 // one_twin: bugs in beyer_droplets.comp only, killed by the batch ordering's bit-for-bit parity
 // (parity.shadow.terrain[.multi] and parity.cells_differing: the GPU against ref<float>, bound 0);
-// brush_unnormalised also by the disjoint ordering's same-arithmetic bound (parity.shadow.terrain).
+// brush_unnormalised also by the disjoint ordering's same-arithmetic bound (parity.shadow.terrain);
+// gradient_swapped_corners also in race ordering, on the race probe and on the volcano (a real DEM),
+// by the race's graded batch iteration (parity.batch_kernel: what of a race is order-independent).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by the droplet ledger
 // (ledger.*: material neither created nor lost where the model does not say so), or, for a
@@ -28,7 +30,7 @@ std::vector<Mutant> beyer_mutants() {
       {"erosion.beyer.gradient_swapped_corners", MutantKind::one_twin,
        "beyer_droplets.comp takes eq. 2.35's y component from the corner pairs swapped: (h11 - h10)(1-u) + "
        "(h01 - h00)u",
-       probe},
+       {"erosion.beyer.mutant_probe.batch", "erosion.beyer.mutant_probe.race", "erosion.beyer.race.volcano"}},
       {"erosion.beyer.brush_unnormalised", MutantKind::one_twin,
        "beyer_droplets.comp erodes amount·w at each brush sample, not amount·w/Σw (eq. 2.42's normalisation lost)",
        {"erosion.beyer.mutant_probe.batch", "erosion.beyer.disjoint.cone"}},

@@ -5,7 +5,9 @@
 // one_twin: bugs in particle_droplets.comp only, killed by the batch ordering's bit-for-bit parity
 // (parity.shadow.terrain[.multi], parity.cells_differing, for colour parity.colour.* and for the
 // flow map parity.flow.*: the GPU against ref<float>, bound 0) and, on the disjoint cone, by the
-// disjoint ordering's rounding bound (parity.shadow.terrain).
+// disjoint ordering's rounding bound (parity.shadow.terrain); fall_through_acceleration also in race
+// ordering, on the race probe and on the volcano (a real DEM), by the race's graded batch iteration
+// (parity.batch_kernel: what of a race is order-independent).
 //
 // both_twins: the same bug in ref<double>, ref<float> and the GPU, killed by checks against what
 // was asked: the hand-derived droplet of the ramp (spec.droplet.*), the droplet ledger (ledger.*:
@@ -23,7 +25,8 @@ std::vector<Mutant> particle_mutants() {
       {"erosion.particle.fall_through_acceleration", MutantKind::one_twin,
        "particle_droplets.comp accelerates as Algorithm 4 is printed (if/else-if fall-through) instead of upstream's "
        "nested branches: a droplet moving +x whose drop ahead exceeds drop_max accelerates towards -x",
-       {"erosion.particle.mutant_probe.batch", "erosion.particle.mutant_probe.colour"}},
+       {"erosion.particle.mutant_probe.batch", "erosion.particle.mutant_probe.colour",
+        "erosion.particle.mutant_probe.race", "erosion.particle.race.volcano"}},
       {"erosion.particle.deposit_beside", MutantKind::one_twin,
        "particle_droplets.comp deposits at the texel to the droplet's +x side instead of its own",
        {"erosion.particle.mutant_probe.batch", "erosion.particle.disjoint.cone"}},
