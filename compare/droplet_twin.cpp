@@ -617,9 +617,9 @@ SteppedTwin droplet_stepped_twin(std::shared_ptr<const DropletTwin> twin) {
   };
   if (twin->setup.ordering == DropletOrdering::race) stepped.gpu_nondeterminism = "the GPU's droplets of a pass race for cells";
   stepped.gpu_not_described =
-      "the GPU is held to ref<float> (bit for bit, within rounding or by the race figures); against ref<double> a "
-      "droplet's discrete path parts from the truth's at the first rounding that moves its texel (and batch and race "
-      "order the droplets otherwise), so the descriptors' GPU-to-double parity would grade that";
+      "the GPU is held to ref<float> (bit for bit, within rounding, or racing by its droplets in batch); against "
+      "ref<double> a droplet's discrete path parts from the truth's at the first rounding that moves its texel (and "
+      "batch and race order the droplets otherwise), so the descriptors' GPU-to-double parity would grade that";
   stepped.shadow_bounds = [twin](const State&, int count) { return std::vector<ShadowBound>{shadow_bound(*twin, count)}; };
   stepped.ledger = ledger_terms(twin);
   stepped.finish = [twin](const std::vector<BackendEnd>& ends, const nlohmann::json&, const RunOptions& options,
